@@ -1,0 +1,124 @@
+//! Static admissibility over the continuum by constraint generation (formulation §3, §5).
+//!
+//! At fixed (η, μ) the margin LP is solved over a small working set of joints; the most
+//! violated activation functions over the whole arch are found by the 1-D scan
+//! ([`crate::scan`]) and their joints added, until the continuum agrees with the
+//! working set. Infeasibility on a subset of joints proves infeasibility for the arch.
+
+use crate::arch::{Arch, JointLayout, Radians};
+use crate::lp::{self, LpOutcome};
+use crate::scan::State;
+use crate::settings::Settings;
+use crate::statics::{actions, JointMode, Reactions};
+
+/// The result of the margin problem at one (η, μ).
+#[derive(Debug, Clone)]
+pub struct Margin {
+    /// The reactions that maximise the margin.
+    pub x: Reactions,
+    /// The least normalised slack min(−φ / ‖∇ₓφ‖) of x over the whole arch: the
+    /// state is admissible iff this is ≥ 0.
+    pub margin: f64,
+    /// The LP's margin over the working set (an upper bound on the best continuum margin).
+    pub lp_margin: f64,
+    /// Constraint-generation rounds used.
+    pub rounds: usize,
+}
+
+/// A growing set of joint angles whose activation functions enter the LP.
+#[derive(Debug, Clone)]
+pub struct WorkingSet {
+    joints: Vec<Radians>,
+}
+
+impl WorkingSet {
+    /// The springings and a few spread joints of the arch.
+    pub fn initial(arch: &Arch) -> WorkingSet {
+        let joints = match arch.layout() {
+            JointLayout::Continuous => {
+                let (a, b) = (arch.beta_right(), arch.beta_left());
+                (0..=8).map(|i| if i == 8 { b } else { a + (b - a) * i as f64 / 8.0 }).collect()
+            }
+            JointLayout::Discrete(j) => {
+                let stride = (j.len() / 8).max(1);
+                let mut v: Vec<Radians> = j.iter().step_by(stride).copied().collect();
+                if v.last() != j.last() {
+                    v.push(*j.last().unwrap());
+                }
+                v
+            }
+        };
+        WorkingSet { joints }
+    }
+
+    /// Adds `beta` unless a joint within `tol` is already present; true when added.
+    pub fn add(&mut self, beta: Radians, tol: f64) -> bool {
+        if self.joints.iter().any(|b| (b - beta).abs() <= tol) {
+            false
+        } else {
+            self.joints.push(beta);
+            true
+        }
+    }
+
+    /// The joints.
+    pub fn joints(&self) -> &[Radians] {
+        &self.joints
+    }
+}
+
+/// ‖∇ₓφ‖ of `mode` at `beta`.
+pub fn grad_norm(arch: &Arch, eta: f64, mu: f64, mode: JointMode, beta: Radians) -> f64 {
+    actions(arch, eta, beta).activation(mode, 0, eta, mu).grad_norm()
+}
+
+/// Maximises the admissibility margin over the continuum at (η, μ) restricted to
+/// the activation functions `modes`, growing `ws` as needed.
+pub fn max_margin(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    modes: &[JointMode],
+    ws: &mut WorkingSet,
+    settings: &Settings,
+) -> Result<Margin, LpOutcome> {
+    let cap = arch.span();
+    let mut rounds = 0;
+    loop {
+        rounds += 1;
+        let rows: Vec<_> = ws
+            .joints()
+            .iter()
+            .flat_map(|&beta| {
+                let a = actions(arch, eta, beta);
+                modes.iter().map(move |&m| a.activation(m, 0, eta, mu))
+            })
+            .collect();
+        let (x, s) = lp::max_margin(&rows, cap, settings.lp_tol)?;
+        let state = State { arch, eta, mu, x };
+        let peaks = state.peaks(settings);
+        let tol = settings.sep_tol * (1.0 + x.iter().map(|v| v.abs()).sum::<f64>());
+        let mut margin = f64::INFINITY;
+        let mut added = false;
+        let mut worst: Vec<(f64, Radians)> = Vec::new();
+        for p in peaks.iter().filter(|p| modes.contains(&p.contact.mode)) {
+            let slack = -p.value / grad_norm(arch, eta, mu, p.contact.mode, p.contact.beta);
+            margin = margin.min(slack);
+            if slack < s - tol {
+                worst.push((slack, p.contact.beta));
+            }
+        }
+        worst.sort_by(|a, b| a.0.total_cmp(&b.0));
+        for &(_, beta) in worst.iter().take(4) {
+            added |= ws.add(beta, settings.same_joint * 1e-3);
+        }
+        if !added || rounds >= settings.max_rounds {
+            return Ok(Margin {
+                x,
+                margin: margin.min(s),
+                lp_margin: s,
+                rounds,
+            });
+        }
+    }
+}

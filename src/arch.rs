@@ -1,0 +1,288 @@
+//! The arch being analysed: springings, joint layout and weight model, validated once.
+//!
+//! Lengths are divided by the mean radius r; angles are in radians, measured
+//! counter-clockwise from the horizontal through the centre of the circle
+//! (formulation §2). The right springing is at `beta_right`, the left at
+//! `beta_left > beta_right`; a symmetric arch of opening α has β_R = −α, β_L = π + α.
+
+use serde::Serialize;
+use std::f64::consts::PI;
+use thiserror::Error;
+
+/// An angle in radians, counter-clockwise from the horizontal through the centre.
+pub type Radians = f64;
+
+/// Bad input: the only errors of this crate. Each message names the argument,
+/// its valid range and the value received.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum InputError {
+    /// A numeric argument outside its valid range (or NaN).
+    #[error("invalid value for {arg}: {value} (valid range: {range})")]
+    OutOfRange {
+        /// The argument, as the user spells it (e.g. `--mu`).
+        arg: &'static str,
+        /// The value received, formatted.
+        value: String,
+        /// The valid range, in words.
+        range: String,
+    },
+    /// Arguments that are individually valid but inconsistent.
+    #[error("invalid {arg}: {reason}")]
+    Inconsistent {
+        /// The argument(s) concerned.
+        arg: &'static str,
+        /// What is wrong.
+        reason: String,
+    },
+}
+
+/// How the self-weight of a piece of arch is applied (formulation §3).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum WeightModel {
+    /// Uniformly along the centreline (Heyman's assumption; the default).
+    Centreline,
+    /// At the true centroid of each annular sector (Milankovitch): the weight
+    /// moment arm is scaled by ρ = 1 + η²/12.
+    Centroid,
+}
+
+impl WeightModel {
+    /// The centroid factor ρ(η): 1 for the centreline model, 1 + η²/12 for the true centroid.
+    pub fn rho(self, eta: f64) -> f64 {
+        match self {
+            WeightModel::Centreline => 1.0,
+            WeightModel::Centroid => 1.0 + eta * eta / 12.0,
+        }
+    }
+
+    /// dρ/dη.
+    pub fn drho_deta(self, eta: f64) -> f64 {
+        match self {
+            WeightModel::Centreline => 0.0,
+            WeightModel::Centroid => eta / 6.0,
+        }
+    }
+
+    /// The name used on the command line and in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            WeightModel::Centreline => "centreline",
+            WeightModel::Centroid => "centroid",
+        }
+    }
+}
+
+/// Where joints may open.
+#[derive(Debug, Clone, PartialEq)]
+pub enum JointLayout {
+    /// Any angle in [β_R, β_L] (continuous arch).
+    Continuous,
+    /// Only at these angles, strictly increasing, first β_R and last β_L (given stereotomy).
+    Discrete(Vec<Radians>),
+}
+
+/// A validated circular arch. Build it with [`Arch::new`] (or the helpers), which
+/// rejects anything that does not describe a real arch.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Arch {
+    beta_right: Radians,
+    beta_left: Radians,
+    layout: JointLayout,
+    weight: WeightModel,
+}
+
+fn check_finite(arg: &'static str, value: f64, range: &str) -> Result<(), InputError> {
+    if value.is_finite() {
+        Ok(())
+    } else {
+        Err(InputError::OutOfRange {
+            arg,
+            value: format!("{value}"),
+            range: range.to_string(),
+        })
+    }
+}
+
+impl Arch {
+    /// A continuous arch between the springings `beta_right < beta_left`, with
+    /// `beta_left − beta_right ≤ 2π` (an arch cannot overlap itself).
+    pub fn new(
+        beta_right: Radians,
+        beta_left: Radians,
+        weight: WeightModel,
+    ) -> Result<Arch, InputError> {
+        check_finite("--beta-right", beta_right, "a finite angle in radians")?;
+        check_finite("--beta-left", beta_left, "a finite angle in radians")?;
+        if beta_left <= beta_right {
+            return Err(InputError::Inconsistent {
+                arg: "--beta-right/--beta-left",
+                reason: format!(
+                    "the right springing must come first: need beta_right < beta_left, got {beta_right} >= {beta_left}"
+                ),
+            });
+        }
+        if beta_left - beta_right > 2.0 * PI {
+            return Err(InputError::Inconsistent {
+                arg: "--beta-right/--beta-left",
+                reason: format!(
+                    "the arch would overlap itself: need beta_left - beta_right <= 2*pi, got {}",
+                    beta_left - beta_right
+                ),
+            });
+        }
+        Ok(Arch {
+            beta_right,
+            beta_left,
+            layout: JointLayout::Continuous,
+            weight,
+        })
+    }
+
+    /// A continuous symmetric arch of opening `alpha` (β_R = −α, β_L = π + α),
+    /// with −π/2 < α < π/2. α = 0 is the semicircle.
+    pub fn symmetric(alpha: Radians, weight: WeightModel) -> Result<Arch, InputError> {
+        if !(alpha.is_finite() && alpha > -PI / 2.0 && alpha < PI / 2.0) {
+            return Err(InputError::OutOfRange {
+                arg: "--alpha",
+                value: format!("{alpha}"),
+                range: "(-pi/2, pi/2) radians, i.e. (-90, 90) degrees".to_string(),
+            });
+        }
+        Arch::new(-alpha, PI + alpha, weight)
+    }
+
+    /// The same springings with `blocks` equal voussoirs (joints at the `blocks + 1`
+    /// equally spaced angles), 1 ≤ blocks ≤ 100 000.
+    pub fn with_blocks(self, blocks: usize) -> Result<Arch, InputError> {
+        if !(1..=100_000).contains(&blocks) {
+            return Err(InputError::OutOfRange {
+                arg: "--blocks",
+                value: blocks.to_string(),
+                range: "whole numbers 1 to 100000".to_string(),
+            });
+        }
+        let (a, b) = (self.beta_right, self.beta_left);
+        let joints = (0..=blocks)
+            .map(|i| {
+                if i == blocks {
+                    b
+                } else {
+                    a + (b - a) * i as f64 / blocks as f64
+                }
+            })
+            .collect();
+        Ok(Arch {
+            layout: JointLayout::Discrete(joints),
+            ..self
+        })
+    }
+
+    /// The same springings with joints at the given angles (radians). Angles must be
+    /// finite, strictly increasing and inside [β_R, β_L]; the springings are added
+    /// when they are not listed.
+    pub fn with_joints(self, angles: &[Radians]) -> Result<Arch, InputError> {
+        let (a, b) = (self.beta_right, self.beta_left);
+        let mut joints = Vec::with_capacity(angles.len() + 2);
+        for &beta in angles {
+            if !(beta.is_finite() && beta >= a && beta <= b) {
+                return Err(InputError::OutOfRange {
+                    arg: "--joints",
+                    value: format!("{beta}"),
+                    range: format!("angles in [beta_right, beta_left] = [{a}, {b}] radians"),
+                });
+            }
+        }
+        if angles.windows(2).any(|w| w[1] <= w[0]) {
+            return Err(InputError::Inconsistent {
+                arg: "--joints",
+                reason: "joint angles must be strictly increasing".to_string(),
+            });
+        }
+        if angles.first() != Some(&a) {
+            joints.push(a);
+        }
+        joints.extend_from_slice(angles);
+        if angles.last() != Some(&b) {
+            joints.push(b);
+        }
+        Ok(Arch {
+            layout: JointLayout::Discrete(joints),
+            ..self
+        })
+    }
+
+    /// Right springing β_R.
+    pub fn beta_right(&self) -> Radians {
+        self.beta_right
+    }
+    /// Left springing β_L.
+    pub fn beta_left(&self) -> Radians {
+        self.beta_left
+    }
+    /// Angular span β_L − β_R (also the total weight in units of γ t d r).
+    pub fn span(&self) -> Radians {
+        self.beta_left - self.beta_right
+    }
+    /// Joint layout.
+    pub fn layout(&self) -> &JointLayout {
+        &self.layout
+    }
+    /// Weight model.
+    pub fn weight(&self) -> WeightModel {
+        self.weight
+    }
+    /// True when the springings are mirror images about the vertical axis
+    /// (β_R + β_L = π) and the joint layout is mirror-symmetric too.
+    pub fn is_symmetric(&self) -> bool {
+        let tol = 1e-12 * (1.0 + self.span());
+        let springs = (self.beta_right + self.beta_left - PI).abs() <= tol;
+        springs
+            && match &self.layout {
+                JointLayout::Continuous => true,
+                JointLayout::Discrete(j) => j
+                    .iter()
+                    .zip(j.iter().rev())
+                    .all(|(a, b)| (a + b - PI).abs() <= tol),
+            }
+    }
+    /// The mirror image about the vertical axis (β ↦ π − β).
+    pub fn mirrored(&self) -> Arch {
+        let layout = match &self.layout {
+            JointLayout::Continuous => JointLayout::Continuous,
+            JointLayout::Discrete(j) => JointLayout::Discrete(j.iter().rev().map(|b| PI - b).collect()),
+        };
+        Arch {
+            beta_right: PI - self.beta_left,
+            beta_left: PI - self.beta_right,
+            layout,
+            weight: self.weight,
+        }
+    }
+}
+
+/// Validates a thickness ratio η = t/r: finite, 0 < η < 2.
+pub fn check_eta(eta: f64) -> Result<f64, InputError> {
+    if eta.is_finite() && eta > 0.0 && eta < 2.0 {
+        Ok(eta)
+    } else {
+        Err(InputError::OutOfRange {
+            arg: "--eta",
+            value: format!("{eta}"),
+            range: "0 < eta < 2 (thickness / mean radius)".to_string(),
+        })
+    }
+}
+
+/// Validates a friction coefficient μ: μ > 0, `f64::INFINITY` allowed (no sliding).
+pub fn check_mu(mu: f64) -> Result<f64, InputError> {
+    if !mu.is_nan() && mu > 0.0 {
+        Ok(mu)
+    } else {
+        Err(InputError::OutOfRange {
+            arg: "--mu",
+            value: format!("{mu}"),
+            range: "mu > 0 (inf allowed: no sliding)".to_string(),
+        })
+    }
+}

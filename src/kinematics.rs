@@ -1,0 +1,78 @@
+//! Kinematics of a pattern (formulation §4): the compatibility matrix B and the
+//! external power of self-weight L_e, both linear in the rates λ of the pattern's
+//! contacts, and the mirror map used for symmetric representatives.
+//!
+//! Blocks are the rigid pieces between consecutive active joints; the pieces
+//! between a springing and the first/last active joint are at rest.
+
+use crate::arch::{Arch, Radians};
+use crate::contact::Contact;
+use crate::statics::JointMode;
+use std::f64::consts::PI;
+
+/// The contribution of one unit rate of `mode` at `beta` to (V_x(O), V_y(O), ψ) of
+/// everything after the joint (formulation §4): one column of B.
+pub fn column(mode: JointMode, beta: Radians, eta: f64) -> [f64; 3] {
+    let (s, c) = beta.sin_cos();
+    let (re, ri) = (1.0 + 0.5 * eta, 1.0 - 0.5 * eta);
+    match mode {
+        JointMode::HingeExtrados => [-re * s, re * c, -1.0],
+        JointMode::HingeIntrados => [ri * s, -ri * c, 1.0],
+        JointMode::SlidePlus => [c, s, 0.0],
+        JointMode::SlideMinus => [-c, -s, 0.0],
+    }
+}
+
+/// The coefficients p with L_e = p · λ for the given contacts (any order).
+///
+/// L_e = −Σ_m [W_m V_y,m + ψ_m (W G_x)_m] over the blocks m between consecutive
+/// distinct active joints, with W_m = β_{m+1} − β_m and
+/// (W G_x)_m = ρ (sin β_{m+1} − sin β_m) (ρ = 1 for centreline weight,
+/// 1 + η²/12 for the true centroid).
+pub fn power(arch: &Arch, eta: f64, contacts: &[Contact]) -> Vec<f64> {
+    let rho = arch.weight().rho(eta);
+    let mut joints: Vec<Radians> = contacts.iter().map(|c| c.beta).collect();
+    joints.sort_by(f64::total_cmp);
+    joints.dedup();
+    // For each joint angle, the sum over all blocks after it of (W, W·G_x).
+    let blocks: Vec<(Radians, f64, f64)> = joints
+        .windows(2)
+        .map(|w| (w[0], w[1] - w[0], rho * (w[1].sin() - w[0].sin())))
+        .collect();
+    contacts
+        .iter()
+        .map(|c| {
+            let col = column(c.mode, c.beta, eta);
+            -blocks
+                .iter()
+                .filter(|(start, _, _)| *start >= c.beta)
+                .map(|(_, w, wgx)| w * col[1] + wgx * col[2])
+                .sum::<f64>()
+        })
+        .collect()
+}
+
+/// B λ: the velocity of the left springing, which compatibility requires to vanish.
+pub fn compatibility_residual(eta: f64, contacts: &[Contact], rates: &[f64]) -> [f64; 3] {
+    let mut r = [0.0; 3];
+    for (c, &l) in contacts.iter().zip(rates) {
+        let col = column(c.mode, c.beta, eta);
+        for i in 0..3 {
+            r[i] += l * col[i];
+        }
+    }
+    r
+}
+
+/// Index of the mirror image (π − β, mirrored mode) of each contact within the same
+/// list, or `None` when some contact has no mirror image in the list.
+pub fn mirror_indices(contacts: &[Contact], tol: f64) -> Option<Vec<usize>> {
+    contacts
+        .iter()
+        .map(|c| {
+            contacts.iter().position(|d| {
+                d.mode == c.mode.mirrored() && (d.beta - (PI - c.beta)).abs() <= tol
+            })
+        })
+        .collect()
+}

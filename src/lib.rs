@@ -1,0 +1,57 @@
+//! # arch-enum
+//!
+//! Exact limit analysis of circular masonry arches with **limited friction** by
+//! active-set enumeration.
+//!
+//! An arch of mean radius r (all lengths divided by r), thickness ratio η = t/r and
+//! springings β_R < β_L (radians, counter-clockwise from the horizontal through the
+//! centre) carries its self-weight. Joints are radial; they may hinge at the
+//! extrados or intrados (no tension) or slide (Coulomb friction μ, non-associative:
+//! no dilatancy). The least thickness η*(μ) is the least η for which a statically
+//! admissible state of the redundant reactions x = (h, v, w) exists and carries a
+//! compatible mechanism on its active contacts.
+//!
+//! | module | formulation (`shared/spec/formulation.md`) |
+//! |---|---|
+//! | [`arch`] | §2 geometry, input validation |
+//! | [`statics`] | §3 N, T, M, activation functions and exact derivatives |
+//! | [`scan`] | §3 maxima of φ over the continuum |
+//! | [`admissibility`] | §5 static LP by constraint generation |
+//! | [`lp`] | the only module using good_lp / HiGHS |
+//! | [`kinematics`] | §4 compatibility B and external power L_e |
+//! | [`mechanism`] | §4–5 kinematic LP, mechanism cone |
+//! | [`refine`] | §5 Newton on a pattern's square system |
+//! | [`limit`] | §5 η*(μ): bracket, enumerate, verify |
+//! | [`mode`] | §5 collapse-mode names from the pattern |
+//! | [`curve`] | η*(μ) sampled over μ |
+//!
+//! ```
+//! use arch_enum::{Arch, WeightModel, Settings, solve, Outcome};
+//! // Couplet–Heyman: semicircle, infinite friction.
+//! let arch = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();
+//! let sol = solve(&arch, f64::INFINITY, &Settings::default()).unwrap();
+//! let Outcome::Limit(ls) = sol.outcome else { panic!("no limit state") };
+//! assert!((ls.eta - 0.1074).abs() < 1e-4);
+//! ```
+#![deny(missing_docs)]
+
+pub mod admissibility;
+pub mod arch;
+pub mod contact;
+pub mod curve;
+pub mod kinematics;
+pub mod limit;
+pub mod lp;
+pub mod mechanism;
+pub mod mode;
+pub mod refine;
+pub mod scan;
+pub mod settings;
+pub mod statics;
+
+pub use arch::{Arch, InputError, JointLayout, Radians, WeightModel};
+pub use contact::{Contact, Location};
+pub use limit::{least_friction, solve, LimitState, Outcome, Solution};
+pub use mode::Mode;
+pub use settings::Settings;
+pub use statics::JointMode;

@@ -1,0 +1,371 @@
+//! The least thickness η*(μ) of an arch at one friction coefficient (formulation §5).
+//!
+//! 1. **Bracket.** The continuum margin s(η) of the best state (constraint-generation
+//!    LP, [`crate::admissibility`]) is increasing in η; η* is its root, bracketed by
+//!    Illinois regula falsi safeguarded by (geometric) bisection.
+//! 2. **Candidates.** At the upper end of the bracket, the local maxima of every φ whose
+//!    normalised slack is within `candidate_rel` of the LP margin are the candidate
+//!    active contacts.
+//! 3. **Enumeration.** Every subset of 4 and 5 candidates, and the whole candidate set,
+//!    is a pattern; Newton ([`crate::refine`]) solves its system exactly.
+//! 4. **Verification.** In increasing η, a refined state must be statically admissible
+//!    over the whole arch (scan, `adm_tol`) and its active set must carry a mechanism
+//!    (kinematic LP, [`crate::mechanism`]). The first that passes is the limit state.
+
+use crate::admissibility::{grad_norm, max_margin, Margin, WorkingSet};
+use crate::arch::{check_mu, Arch, InputError};
+use crate::contact::{Contact, Peak};
+use crate::lp::LpOutcome;
+use crate::mechanism::{self, Mechanism};
+use crate::mode::{classify, Mode};
+use crate::refine::{solve_pattern, NewtonFailure};
+use crate::scan::State;
+use crate::settings::Settings;
+use crate::statics::{JointMode, Reactions};
+use itertools::Itertools;
+
+/// A verified limit state (incipient collapse) at friction μ.
+#[derive(Debug, Clone)]
+pub struct LimitState {
+    /// Friction coefficient μ (∞ allowed).
+    pub mu: f64,
+    /// The least thickness ratio η*(μ).
+    pub eta: f64,
+    /// Reactions x = (h, v, w) at the right springing.
+    pub x: Reactions,
+    /// The active pattern: every contact with φ = 0 at this state, by increasing β.
+    pub pattern: Vec<Contact>,
+    /// The collapse mode named from the pattern.
+    pub mode: Mode,
+    /// A mechanism on the pattern.
+    pub mechanism: Mechanism,
+    /// Newton residual of the pattern's system (scaled).
+    pub newton_residual: f64,
+    /// Greatest φ over the whole arch, scaled by 1 + ‖x‖₁ (≤ `adm_tol`).
+    pub max_phi: f64,
+    /// The LP bracket [η_lo, η_hi] of η* (η_lo infeasible, η_hi feasible).
+    pub bracket: (f64, f64),
+}
+
+/// What the solver found at one μ.
+#[derive(Debug, Clone)]
+pub enum Outcome {
+    /// A verified limit state.
+    Limit(LimitState),
+    /// No thickness η < 2 admits equilibrium.
+    NoEquilibrium {
+        /// The least friction coefficient that admits equilibrium at some
+        /// (unbounded) thickness, when μ is below it.
+        mu_ms: Option<f64>,
+        /// Why, in words.
+        reason: String,
+    },
+    /// The solver could not verify a limit state; η* lies in the bracket.
+    Unresolved {
+        /// Lower end of the bracket (no admissible state).
+        eta_lo: f64,
+        /// Upper end of the bracket (admissible state).
+        eta_hi: f64,
+        /// What failed.
+        reason: String,
+    },
+}
+
+/// One enumerated pattern and what became of it (for `solve --explain`).
+#[derive(Debug, Clone)]
+pub struct Candidate {
+    /// The contacts of the pattern, as started.
+    pub contacts: Vec<Contact>,
+    /// Refined η, when Newton converged.
+    pub eta: Option<f64>,
+    /// Kept or rejected, and why.
+    pub verdict: String,
+}
+
+/// The answer of [`solve`]: the outcome and the enumeration log.
+#[derive(Debug, Clone)]
+pub struct Solution {
+    /// The arch solved.
+    pub arch: Arch,
+    /// Friction coefficient μ.
+    pub mu: f64,
+    /// The outcome.
+    pub outcome: Outcome,
+    /// Every pattern tried, in the order verified.
+    pub candidates: Vec<Candidate>,
+}
+
+fn scale_of(x: &Reactions) -> f64 {
+    1.0 + x.iter().map(|v| v.abs()).sum::<f64>()
+}
+
+fn margin_at(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    modes: &[JointMode],
+    ws: &mut WorkingSet,
+    settings: &Settings,
+) -> Result<Margin, String> {
+    max_margin(arch, eta, mu, modes, ws, settings).map_err(|e| match e {
+        LpOutcome::Infeasible => "margin LP infeasible".to_string(),
+        LpOutcome::Failed(m) => m,
+    })
+}
+
+/// Root of an increasing function f on [lo, hi] with f(lo) < 0 ≤ f(hi): Illinois
+/// regula falsi with geometric bisection as a safeguard. `eval` returns f and the
+/// payload kept for the upper end. Stops when hi − lo ≤ rel · hi.
+fn bracket_root<T: Clone>(
+    mut lo: (f64, f64),
+    mut hi: (f64, f64, T),
+    rel: f64,
+    max_iter: usize,
+    mut eval: impl FnMut(f64) -> Result<(f64, T), String>,
+) -> Result<((f64, f64), (f64, f64, T)), String> {
+    let mut side = 0i32;
+    let (mut flo, mut fhi) = (lo.1, hi.1);
+    for it in 0..max_iter {
+        if hi.0 - lo.0 <= rel * hi.0 {
+            break;
+        }
+        let width = hi.0 - lo.0;
+        let secant = hi.0 - fhi * (hi.0 - lo.0) / (fhi - flo);
+        let bisect = if lo.0 > 0.0 && hi.0 / lo.0 > 4.0 {
+            (lo.0 * hi.0).sqrt()
+        } else if lo.0 <= 0.0 {
+            hi.0 / 8.0
+        } else {
+            0.5 * (lo.0 + hi.0)
+        };
+        let t = if it % 3 == 2 || !(secant > lo.0 && secant < hi.0) {
+            bisect
+        } else {
+            // keep the secant point away from the ends
+            secant.clamp(lo.0 + 1e-3 * width, hi.0 - 1e-3 * width)
+        };
+        let (f, payload) = eval(t)?;
+        if f >= 0.0 {
+            hi = (t, f, payload);
+            fhi = f;
+            if side == 1 {
+                flo *= 0.5;
+            }
+            side = 1;
+        } else {
+            lo = (t, f);
+            flo = f;
+            if side == -1 {
+                fhi *= 0.5;
+            }
+            side = -1;
+        }
+    }
+    Ok((lo, hi))
+}
+
+/// The least friction coefficient μ_ms for which some state satisfies |T| ≤ μN at
+/// every joint (the friction-only problem, formulation §6), to relative precision
+/// `settings.bracket_rel`. `None` when no finite μ suffices.
+pub fn least_friction(arch: &Arch, settings: &Settings) -> Result<Option<f64>, String> {
+    let modes = [JointMode::SlidePlus, JointMode::SlideMinus];
+    let mut ws = WorkingSet::initial(arch);
+    let mut f = |mu: f64| -> Result<(f64, ()), String> {
+        let m = margin_at(arch, 1.0, mu, &modes, &mut ws, settings)?;
+        Ok((m.margin, ()))
+    };
+    let mut hi = 1.0;
+    let mut fhi = f(hi)?.0;
+    while fhi < 0.0 {
+        hi *= 4.0;
+        if hi > 1e8 {
+            return Ok(None);
+        }
+        fhi = f(hi)?.0;
+    }
+    let f0 = f(0.0)?.0;
+    if f0 >= 0.0 {
+        return Ok(Some(0.0));
+    }
+    let (_, hi) = bracket_root((0.0, f0), (hi, fhi, ()), settings.bracket_rel * 1e-4, 200, f)?;
+    Ok(Some(hi.0))
+}
+
+/// Solves for the least thickness η*(μ) of `arch` at friction `mu` (`f64::INFINITY`:
+/// no sliding). Bad input is an `Err`; what the solver found (a limit state, no
+/// equilibrium, or an unresolved bracket) is inside the `Solution`.
+pub fn solve(arch: &Arch, mu: f64, settings: &Settings) -> Result<Solution, InputError> {
+    let mu = check_mu(mu)?;
+    let mut candidates = Vec::new();
+    let outcome = solve_inner(arch, mu, settings, &mut candidates);
+    Ok(Solution {
+        arch: arch.clone(),
+        mu,
+        outcome,
+        candidates,
+    })
+}
+
+fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidate>) -> Outcome {
+    let modes = JointMode::active_at(mu);
+    let mut ws = WorkingSet::initial(arch);
+    let eta_max = 2.0 * (1.0 - 1e-9);
+    let top = match margin_at(arch, eta_max, mu, modes, &mut ws, settings) {
+        Ok(m) => m,
+        Err(e) => return unresolved(0.0, 2.0, e),
+    };
+    if top.margin < 0.0 {
+        return no_equilibrium(arch, mu, settings);
+    }
+    let bottom = match margin_at(arch, 0.0, mu, modes, &mut ws, settings) {
+        Ok(m) => m,
+        Err(e) => return unresolved(0.0, 2.0, e),
+    };
+    let bracket = bracket_root(
+        (0.0, bottom.margin.min(-f64::MIN_POSITIVE)),
+        (eta_max, top.margin, top),
+        settings.bracket_rel,
+        200,
+        |eta| {
+            let m = margin_at(arch, eta, mu, modes, &mut ws, settings)?;
+            Ok((m.margin, m))
+        },
+    );
+    let (lo, hi) = match bracket {
+        Ok(b) => b,
+        Err(e) => return unresolved(0.0, 2.0, e),
+    };
+    let (eta_lo, eta_hi, m_hi) = (lo.0, hi.0, hi.2);
+
+    // Candidate contacts at the upper end of the bracket.
+    let state = State { arch, eta: eta_hi, mu, x: m_hi.x };
+    let scale = scale_of(&m_hi.x);
+    let mut peaks: Vec<(f64, Peak)> = state
+        .near_active(settings, f64::NEG_INFINITY)
+        .into_iter()
+        .map(|p| {
+            let slack = -p.value / grad_norm(arch, eta_hi, mu, p.contact.mode, p.contact.beta);
+            (slack, p)
+        })
+        .filter(|(slack, _)| *slack <= m_hi.margin.max(0.0) + settings.candidate_rel * scale)
+        .collect();
+    peaks.sort_by(|a, b| a.0.total_cmp(&b.0));
+    peaks.truncate(settings.max_candidates);
+    let cand: Vec<Contact> = peaks.iter().map(|(_, p)| p.contact).collect();
+
+    // Enumerate patterns and refine each.
+    let mut subsets: Vec<Vec<Contact>> = Vec::new();
+    for k in [4, 5] {
+        if cand.len() > k {
+            subsets.extend(cand.iter().copied().combinations(k));
+        }
+    }
+    subsets.push(cand.clone());
+    let mut refined = Vec::new();
+    for s in subsets {
+        match solve_pattern(arch, mu, &s, m_hi.x, eta_hi, settings) {
+            Ok(r) => refined.push((s, r)),
+            Err(f) => log.push(Candidate {
+                contacts: s,
+                eta: None,
+                verdict: match f {
+                    NewtonFailure::Underdetermined => "rejected: fewer conditions than unknowns".into(),
+                    NewtonFailure::LeftDomain => "rejected: Newton left the domain".into(),
+                    NewtonFailure::NoConvergence(r) => format!("rejected: Newton did not converge (residual {r:.2e})"),
+                },
+            }),
+        }
+    }
+    refined.sort_by(|a, b| a.1.eta.total_cmp(&b.1.eta));
+
+    let mut found: Option<LimitState> = None;
+    let mut last_eta = f64::NAN;
+    for (s, r) in refined {
+        let push = |log: &mut Vec<Candidate>, verdict: String| {
+            log.push(Candidate { contacts: s.clone(), eta: Some(r.eta), verdict })
+        };
+        if found.is_some() {
+            push(log, "not needed: a limit state of lower or equal eta was verified".into());
+            continue;
+        }
+        let st = State { arch, eta: r.eta, mu, x: r.x };
+        let sc = scale_of(&r.x);
+        let worst = st.max_violation(settings) / sc;
+        if worst > settings.adm_tol {
+            push(log, format!("rejected: not admissible over the arch (max phi = {worst:.2e})"));
+            continue;
+        }
+        if r.eta == last_eta {
+            push(log, "same state as a pattern already checked".into());
+            continue;
+        }
+        last_eta = r.eta;
+        let mut pattern: Vec<Contact> = st
+            .near_active(settings, -settings.adm_tol * 10.0 * sc)
+            .into_iter()
+            .map(|p| p.contact)
+            .collect();
+        pattern.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.mode.cmp(&b.mode)));
+        match mechanism::find(arch, r.eta, mu, &r.x, &pattern, settings) {
+            Ok(Some(mech)) => {
+                push(log, format!("kept: admissible (max phi = {worst:.2e}), mechanism with {} dof", mech.dof));
+                let mode = classify(&pattern, 0.5 * (arch.beta_right() + arch.beta_left()), settings.same_joint);
+                found = Some(LimitState {
+                    mu,
+                    eta: r.eta,
+                    x: r.x,
+                    pattern,
+                    mode,
+                    mechanism: mech,
+                    newton_residual: r.residual,
+                    max_phi: worst,
+                    bracket: (eta_lo, eta_hi),
+                });
+            }
+            Ok(None) => push(log, "rejected: admissible, but no non-associative mechanism on its active set".into()),
+            Err(e) => push(log, format!("rejected: kinematic LP failed ({e:?})")),
+        }
+    }
+    match found {
+        Some(ls) => {
+            let tol = 1e-6 * eta_hi + 1e-12;
+            if ls.eta < eta_lo - tol || ls.eta > eta_hi + tol {
+                unresolved(
+                    eta_lo,
+                    eta_hi,
+                    format!("the verified pattern gives eta = {} outside the LP bracket", ls.eta),
+                )
+            } else {
+                Outcome::Limit(ls)
+            }
+        }
+        None => unresolved(eta_lo, eta_hi, "no enumerated pattern gave a verified limit state".into()),
+    }
+}
+
+fn unresolved(eta_lo: f64, eta_hi: f64, reason: String) -> Outcome {
+    Outcome::Unresolved { eta_lo, eta_hi, reason }
+}
+
+fn no_equilibrium(arch: &Arch, mu: f64, settings: &Settings) -> Outcome {
+    match least_friction(arch, settings) {
+        Ok(Some(mu_ms)) if mu < mu_ms => Outcome::NoEquilibrium {
+            mu_ms: Some(mu_ms),
+            reason: format!(
+                "mu = {mu} is below mu_ms = {mu_ms:.10}: no thickness can stand (purely sliding collapse)"
+            ),
+        },
+        Ok(Some(mu_ms)) => Outcome::NoEquilibrium {
+            mu_ms: Some(mu_ms),
+            reason: "no thickness eta < 2 admits equilibrium for this opening".into(),
+        },
+        Ok(None) => Outcome::NoEquilibrium {
+            mu_ms: None,
+            reason: "no friction coefficient admits equilibrium for this opening".into(),
+        },
+        Err(e) => Outcome::NoEquilibrium {
+            mu_ms: None,
+            reason: format!("no thickness eta < 2 admits equilibrium (mu_ms not computed: {e})"),
+        },
+    }
+}

@@ -1,0 +1,90 @@
+//! The LP back end: the only module that talks to good_lp / HiGHS.
+//!
+//! Two small LPs are solved here:
+//! * the static margin LP in x = (h, v, w): maximise the margin s of a finite set of
+//!   activation functions, each row scaled to unit gradient norm so that s is a
+//!   distance in x-space (formulation §5, static LP);
+//! * the kinematic LP in the rates λ of a pattern: B λ = 0, L_e ≥ 0, Σ λ = 1, λ ≥ 0
+//!   (formulation §4–5).
+
+use crate::statics::{Affine, Reactions};
+use good_lp::{highs, variable, Expression, ProblemVariables, Solution, SolverModel};
+
+/// Why an LP returned no solution.
+#[derive(Debug, Clone, PartialEq)]
+pub enum LpOutcome {
+    /// The LP is infeasible (normal rejection path of the enumeration).
+    Infeasible,
+    /// HiGHS reported anything else (unbounded, numerical failure): the message.
+    Failed(String),
+}
+
+fn configure(problem: good_lp::solvers::highs::HighsProblem, tol: f64) -> good_lp::solvers::highs::HighsProblem {
+    problem
+        .set_option("primal_feasibility_tolerance", tol)
+        .set_option("dual_feasibility_tolerance", tol)
+        .set_option("output_flag", false)
+        .set_threads(1)
+}
+
+/// Maximises s subject to `row(x) + s·‖∇row‖ ≤ 0` for every row and `s ≤ s_cap`.
+/// Returns the optimal x and s. The LP is always feasible (s may be very negative).
+pub fn max_margin(rows: &[Affine], s_cap: f64, tol: f64) -> Result<(Reactions, f64), LpOutcome> {
+    let mut vars = ProblemVariables::new();
+    let h = vars.add(variable());
+    let v = vars.add(variable());
+    let w = vars.add(variable());
+    let s = vars.add(variable().max(s_cap));
+    let mut problem = configure(vars.maximise(s).using(highs), tol);
+    for row in rows {
+        let norm = row.grad_norm();
+        let scale = if norm > 0.0 { 1.0 / norm } else { 1.0 };
+        let mut e = Expression::with_capacity(4);
+        e.add_mul(row.g[0] * scale, h);
+        e.add_mul(row.g[1] * scale, v);
+        e.add_mul(row.g[2] * scale, w);
+        e.add_mul(if norm > 0.0 { 1.0 } else { 0.0 }, s);
+        problem = problem.with(e.leq(-row.c * scale));
+    }
+    match problem.solve() {
+        Ok(sol) => Ok(([sol.value(h), sol.value(v), sol.value(w)], sol.value(s))),
+        Err(good_lp::ResolutionError::Infeasible) => Err(LpOutcome::Infeasible),
+        Err(e) => Err(LpOutcome::Failed(e.to_string())),
+    }
+}
+
+/// Maximises `objective · λ` subject to Σ_j λ_j c_j = 0 for the 3-vectors `columns`,
+/// `power · λ ≥ 0`, Σ λ = 1, λ ≥ 0. Returns λ, or `Infeasible` when no such rates exist.
+pub fn kinematic(
+    columns: &[[f64; 3]],
+    power: &[f64],
+    objective: &[f64],
+    tol: f64,
+) -> Result<Vec<f64>, LpOutcome> {
+    let mut vars = ProblemVariables::new();
+    let lambda: Vec<_> = columns.iter().map(|_| vars.add(variable().min(0.0))).collect();
+    let mut obj = Expression::with_capacity(lambda.len());
+    for (&l, &c) in lambda.iter().zip(objective) {
+        obj.add_mul(c, l);
+    }
+    let mut problem = configure(vars.maximise(obj).using(highs), tol);
+    for i in 0..3 {
+        let mut e = Expression::with_capacity(lambda.len());
+        for (&l, col) in lambda.iter().zip(columns) {
+            e.add_mul(col[i], l);
+        }
+        problem = problem.with(e.eq(0.0));
+    }
+    let mut p = Expression::with_capacity(lambda.len());
+    let mut total = Expression::with_capacity(lambda.len());
+    for (&l, &c) in lambda.iter().zip(power) {
+        p.add_mul(c, l);
+        total.add_mul(1.0, l);
+    }
+    problem = problem.with(p.geq(0.0)).with(total.eq(1.0));
+    match problem.solve() {
+        Ok(sol) => Ok(lambda.iter().map(|&l| sol.value(l).max(0.0)).collect()),
+        Err(good_lp::ResolutionError::Infeasible) => Err(LpOutcome::Infeasible),
+        Err(e) => Err(LpOutcome::Failed(e.to_string())),
+    }
+}

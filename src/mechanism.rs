@@ -1,0 +1,120 @@
+//! The collapse mechanism of a pattern (formulation §4–5): non-negative rates on the
+//! pattern's contacts with B λ = 0, L_e ≥ 0, Σ λ = 1, found by the kinematic LP.
+//!
+//! Mechanisms are not unique: the cone {λ ≥ 0 : B λ = 0} of a 5-joint pattern has
+//! dimension ≥ 2. We report its dimension, a representative in its relative interior
+//! (the mean of the extreme rays found), and, for a mirror-symmetric pattern of a
+//! symmetric arch, the symmetric representative.
+
+use crate::arch::Arch;
+use crate::contact::Contact;
+use crate::kinematics::{column, compatibility_residual, mirror_indices, power};
+use crate::lp::{self, LpOutcome};
+use crate::settings::Settings;
+use crate::statics::{actions, Reactions};
+use nalgebra::DMatrix;
+
+/// A kinematically admissible mechanism on a pattern.
+#[derive(Debug, Clone)]
+pub struct Mechanism {
+    /// The contacts of the pattern, in order of increasing β.
+    pub contacts: Vec<Contact>,
+    /// The rate of each contact (same order), non-negative, summing to 1.
+    pub rates: Vec<f64>,
+    /// Dimension of the mechanism cone {λ ≥ 0 : B λ = 0} on the pattern.
+    pub dof: usize,
+    /// External power of self-weight L_e of these rates (≥ 0).
+    pub power: f64,
+    /// True when `rates` is mirror-symmetric (symmetric arch and pattern).
+    pub symmetric: bool,
+    /// ‖B λ‖∞: velocity left at the left springing (should be 0).
+    pub compatibility: f64,
+    /// Σ |φ_i| λ_i over the pattern at the static state (should be 0).
+    pub complementarity: f64,
+    /// μ Σ N_k (s⁺_k + s⁻_k): frictional dissipation, equal to L_e at a limit state.
+    pub dissipation: f64,
+}
+
+/// Finds a mechanism on `contacts` (the active set of the static state x at η, μ),
+/// or `Ok(None)` when the kinematic LP is infeasible.
+pub fn find(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    x: &Reactions,
+    contacts: &[Contact],
+    settings: &Settings,
+) -> Result<Option<Mechanism>, LpOutcome> {
+    let mut cs = contacts.to_vec();
+    cs.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.mode.cmp(&b.mode)));
+    let n = cs.len();
+    let cols: Vec<[f64; 3]> = cs.iter().map(|c| column(c.mode, c.beta, eta)).collect();
+    let p = power(arch, eta, &cs);
+    let first = match lp::kinematic(&cols, &p, &vec![0.0; n], settings.lp_tol) {
+        Ok(l) => l,
+        Err(LpOutcome::Infeasible) => return Ok(None),
+        Err(e) => return Err(e),
+    };
+    let mut rays = vec![first];
+    for i in 0..n {
+        if rays.iter().any(|r| r[i] > settings.rate_tol) {
+            continue;
+        }
+        let mut obj = vec![0.0; n];
+        obj[i] = 1.0;
+        let l = lp::kinematic(&cols, &p, &obj, settings.lp_tol)?;
+        if l[i] > settings.rate_tol {
+            rays.push(l);
+        }
+    }
+    let mut rates = vec![0.0; n];
+    for r in &rays {
+        for i in 0..n {
+            rates[i] += r[i] / rays.len() as f64;
+        }
+    }
+    let support: Vec<usize> = (0..n).filter(|&i| rates[i] > settings.rate_tol).collect();
+    let b = DMatrix::from_fn(3, support.len(), |r, c| cols[support[c]][r]);
+    let rank = if support.is_empty() { 0 } else { b.rank(1e-10) };
+    let dof = support.len() - rank;
+
+    let mut symmetric = false;
+    if arch.is_symmetric() {
+        if let Some(mirror) = mirror_indices(&cs, settings.same_joint) {
+            let sym: Vec<f64> = (0..n).map(|i| 0.5 * (rates[i] + rates[mirror[i]])).collect();
+            rates = sym;
+            symmetric = true;
+        }
+    }
+    let total: f64 = rates.iter().sum();
+    rates.iter_mut().for_each(|r| *r /= total);
+    // Rates that are zero up to the LP tolerance are reported as exactly zero.
+    rates.iter_mut().for_each(|r| {
+        if *r <= settings.rate_tol {
+            *r = 0.0
+        }
+    });
+
+    let residual = compatibility_residual(eta, &cs, &rates);
+    let compatibility = residual.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let power_value: f64 = p.iter().zip(&rates).map(|(a, b)| a * b).sum();
+    let mut complementarity = 0.0;
+    let mut dissipation = 0.0;
+    for (c, &l) in cs.iter().zip(&rates) {
+        let a = actions(arch, eta, c.beta);
+        complementarity += a.activation(c.mode, 0, eta, mu).at(x).abs() * l;
+        if !c.mode.is_hinge() {
+            dissipation += mu * a.n[0].at(x) * l;
+        }
+    }
+    Ok(Some(Mechanism {
+        contacts: cs,
+        rates,
+        dof,
+        power: power_value,
+        symmetric,
+        compatibility,
+        complementarity,
+        dissipation,
+    }))
+}

@@ -1,0 +1,94 @@
+//! Collapse-mode names, derived from the active pattern alone by documented rules
+//! (never from the opening or μ).
+//!
+//! Let the *middle* of the arch be β_m = (β_R + β_L)/2 and call a joint *detached*
+//! when both hinge functions are active there (N = 0, formulation §3). Then, in order:
+//! 1. no sliding contact: `overturning` if some joint is detached, else `purely_rotational`;
+//! 2. no hinge contact: `purely_sliding`;
+//! 3. a springing carries a hinge and a sliding contact: `rotational_sliding_shoulders`;
+//! 4. a hinge lies strictly closer to β_m than every sliding joint (rotation at the
+//!    crown, sliding further out): `mixed_sliding_rotational`;
+//! 5. every hinge lies farther from β_m than every sliding joint (rotation at the
+//!    shoulders, sliding near the crown): `mixed_rotational_sliding`;
+//! 6. otherwise `mixed_interleaved`, a descriptive name outside the contract's list.
+
+use crate::contact::{Contact, Location};
+use serde::Serialize;
+
+/// The collapse mode of a pattern.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Mode {
+    /// Hinges only (Couplet–Heyman).
+    PurelyRotational,
+    /// Hinges and sliding, with rotation at the crown.
+    MixedSlidingRotational,
+    /// Hinges and sliding, with rotation at the shoulders and sliding nearer the crown.
+    MixedRotationalSliding,
+    /// Rotation and sliding together at a springing.
+    RotationalSlidingShoulders,
+    /// Sliding only.
+    PurelySliding,
+    /// Hinges only, with complete separation (N = 0) at some joint.
+    Overturning,
+    /// Hinges and sliding interleaved in a way none of the names above fits.
+    MixedInterleaved,
+}
+
+impl Mode {
+    /// The name used in JSON and tables.
+    pub fn name(self) -> &'static str {
+        match self {
+            Mode::PurelyRotational => "purely_rotational",
+            Mode::MixedSlidingRotational => "mixed_sliding_rotational",
+            Mode::MixedRotationalSliding => "mixed_rotational_sliding",
+            Mode::RotationalSlidingShoulders => "rotational_sliding_shoulders",
+            Mode::PurelySliding => "purely_sliding",
+            Mode::Overturning => "overturning",
+            Mode::MixedInterleaved => "mixed_interleaved",
+        }
+    }
+    /// True for the names fixed by the command-line contract.
+    pub fn is_standard(self) -> bool {
+        self != Mode::MixedInterleaved
+    }
+}
+
+/// Names the mode of `pattern` (see the module documentation for the rules).
+/// `same_joint` is the angle tolerance under which two contacts share a joint.
+pub fn classify(pattern: &[Contact], beta_mid: f64, same_joint: f64) -> Mode {
+    let hinges: Vec<&Contact> = pattern.iter().filter(|c| c.mode.is_hinge()).collect();
+    let slides: Vec<&Contact> = pattern.iter().filter(|c| !c.mode.is_hinge()).collect();
+    let detached = hinges.iter().any(|a| {
+        hinges
+            .iter()
+            .any(|b| a.mode != b.mode && (a.beta - b.beta).abs() <= same_joint)
+    });
+    if slides.is_empty() {
+        return if detached { Mode::Overturning } else { Mode::PurelyRotational };
+    }
+    if hinges.is_empty() {
+        return Mode::PurelySliding;
+    }
+    let shoulder_both = hinges.iter().any(|h| {
+        h.at == Location::Springing
+            && slides
+                .iter()
+                .any(|s| s.at == Location::Springing && (s.beta - h.beta).abs() <= same_joint)
+    });
+    if shoulder_both {
+        return Mode::RotationalSlidingShoulders;
+    }
+    let dist = |c: &&Contact| (c.beta - beta_mid).abs();
+    let hinge_in = hinges.iter().map(dist).fold(f64::INFINITY, f64::min);
+    let hinge_out = hinges.iter().map(dist).fold(0.0, f64::max);
+    let slide_in = slides.iter().map(dist).fold(f64::INFINITY, f64::min);
+    let slide_out = slides.iter().map(dist).fold(0.0, f64::max);
+    if hinge_in < slide_in - same_joint {
+        Mode::MixedSlidingRotational
+    } else if hinge_in > slide_out + same_joint || (hinge_out > slide_out && hinge_in > slide_in) {
+        Mode::MixedRotationalSliding
+    } else {
+        Mode::MixedInterleaved
+    }
+}

@@ -1,0 +1,179 @@
+//! Separation over the continuum: the local maxima of each activation function
+//! φ(β) over the joints of the arch for a given state x (formulation §3).
+//!
+//! For a continuous arch each φ is sampled on `Settings::scan_points` equally spaced
+//! angles, a sign change of dφ/dβ in a cell brackets an interior maximum that is then
+//! refined by safeguarded Newton on dφ/dβ = 0 with the exact d²φ/dβ²; the springings
+//! are maxima when φ decreases into the arch. For a discrete arch the listed joints
+//! are evaluated directly.
+
+use crate::arch::{Arch, JointLayout, Radians};
+use crate::contact::{Contact, Location, Peak};
+use crate::settings::Settings;
+use crate::statics::{actions, JointMode, Reactions};
+
+/// A state to scan: reactions x at thickness η and friction μ.
+#[derive(Debug, Clone, Copy)]
+pub struct State<'a> {
+    /// The arch.
+    pub arch: &'a Arch,
+    /// Thickness ratio η.
+    pub eta: f64,
+    /// Friction coefficient μ (∞: no sliding).
+    pub mu: f64,
+    /// Reactions x = (h, v, w).
+    pub x: Reactions,
+}
+
+impl State<'_> {
+    /// φ of `mode` and its first two β-derivatives at `beta`.
+    pub fn phi(&self, mode: JointMode, beta: Radians) -> [f64; 3] {
+        let a = actions(self.arch, self.eta, beta);
+        [0, 1, 2].map(|k| a.activation(mode, k, self.eta, self.mu).at(&self.x))
+    }
+
+    /// The local maxima of every active activation function over the joints of the arch.
+    pub fn peaks(&self, settings: &Settings) -> Vec<Peak> {
+        match self.arch.layout() {
+            JointLayout::Continuous => self.continuous_peaks(settings),
+            JointLayout::Discrete(joints) => self.discrete_peaks(joints, false),
+        }
+    }
+
+    /// Every contact (mode at a joint) whose value is at least `floor`; for a
+    /// continuous arch, the local maxima above `floor`.
+    pub fn near_active(&self, settings: &Settings, floor: f64) -> Vec<Peak> {
+        let mut out = match self.arch.layout() {
+            JointLayout::Continuous => self.continuous_peaks(settings),
+            JointLayout::Discrete(joints) => self.discrete_peaks(joints, true),
+        };
+        out.retain(|p| p.value >= floor);
+        out.sort_by(|a, b| b.value.total_cmp(&a.value));
+        out
+    }
+
+    /// The greatest φ over the whole arch and every active mode.
+    pub fn max_violation(&self, settings: &Settings) -> f64 {
+        self.peaks(settings)
+            .iter()
+            .map(|p| p.value)
+            .fold(f64::NEG_INFINITY, f64::max)
+    }
+
+    fn location(&self, beta: Radians) -> Location {
+        if beta == self.arch.beta_right() || beta == self.arch.beta_left() {
+            Location::Springing
+        } else {
+            Location::Interior
+        }
+    }
+
+    fn discrete_peaks(&self, joints: &[Radians], all: bool) -> Vec<Peak> {
+        let modes = JointMode::active_at(self.mu);
+        let mut values = vec![[0.0; 4]; joints.len()];
+        for (j, &beta) in joints.iter().enumerate() {
+            let a = actions(self.arch, self.eta, beta);
+            for (k, &mode) in modes.iter().enumerate() {
+                values[j][k] = a.activation(mode, 0, self.eta, self.mu).at(&self.x);
+            }
+        }
+        let mut out = Vec::new();
+        for (k, &mode) in modes.iter().enumerate() {
+            for (j, &beta) in joints.iter().enumerate() {
+                let v = values[j][k];
+                let left_ok = j == 0 || values[j - 1][k] <= v;
+                let right_ok = j + 1 == joints.len() || values[j + 1][k] < v;
+                if all || (left_ok && right_ok) {
+                    out.push(Peak {
+                        contact: Contact {
+                            beta,
+                            mode,
+                            at: self.location(beta),
+                            free: false,
+                        },
+                        value: v,
+                    });
+                }
+            }
+        }
+        out
+    }
+
+    fn continuous_peaks(&self, settings: &Settings) -> Vec<Peak> {
+        let (a, b) = (self.arch.beta_right(), self.arch.beta_left());
+        let n = settings.scan_points.max(3);
+        let modes = JointMode::active_at(self.mu);
+        // φ and dφ/dβ on the grid, per mode.
+        let grid: Vec<Radians> = (0..n)
+            .map(|i| if i + 1 == n { b } else { a + (b - a) * i as f64 / (n - 1) as f64 })
+            .collect();
+        let mut d1 = vec![[0.0; 4]; n];
+        let mut d0 = vec![[0.0; 4]; n];
+        for (i, &beta) in grid.iter().enumerate() {
+            let act = actions(self.arch, self.eta, beta);
+            for (k, &mode) in modes.iter().enumerate() {
+                d0[i][k] = act.activation(mode, 0, self.eta, self.mu).at(&self.x);
+                d1[i][k] = act.activation(mode, 1, self.eta, self.mu).at(&self.x);
+            }
+        }
+        let mut out = Vec::new();
+        for (k, &mode) in modes.iter().enumerate() {
+            let push = |out: &mut Vec<Peak>, beta: Radians, value: f64, at: Location| {
+                out.push(Peak {
+                    contact: Contact {
+                        beta,
+                        mode,
+                        at,
+                        free: at == Location::Interior,
+                    },
+                    value,
+                })
+            };
+            if d1[0][k] <= 0.0 {
+                push(&mut out, a, d0[0][k], Location::Springing);
+            }
+            if d1[n - 1][k] >= 0.0 {
+                push(&mut out, b, d0[n - 1][k], Location::Springing);
+            }
+            for i in 0..n - 1 {
+                if d1[i][k] > 0.0 && d1[i + 1][k] <= 0.0 {
+                    let beta = self.refine_max(mode, grid[i], grid[i + 1], d1[i][k], d1[i + 1][k]);
+                    if beta > a && beta < b {
+                        let v = self.phi(mode, beta)[0];
+                        push(&mut out, beta, v, Location::Interior);
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// Root of dφ/dβ in [lo, hi] where it goes from positive to non-positive:
+    /// Newton with the exact second derivative, safeguarded by bisection.
+    fn refine_max(&self, mode: JointMode, mut lo: Radians, mut hi: Radians, _flo: f64, fhi: f64) -> Radians {
+        if fhi == 0.0 {
+            return hi;
+        }
+        let mut beta = 0.5 * (lo + hi);
+        for _ in 0..100 {
+            let [_, f, df] = self.phi(mode, beta);
+            if f > 0.0 {
+                lo = beta;
+            } else {
+                hi = beta;
+            }
+            let newton = if df < 0.0 { beta - f / df } else { f64::NAN };
+            let next = if newton > lo && newton < hi {
+                newton
+            } else {
+                0.5 * (lo + hi)
+            };
+            let step = (next - beta).abs();
+            beta = next;
+            if step <= 4.0 * f64::EPSILON * (1.0 + beta.abs()) || hi - lo <= 4.0 * f64::EPSILON * (1.0 + beta.abs()) {
+                break;
+            }
+        }
+        beta
+    }
+}

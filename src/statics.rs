@@ -1,0 +1,194 @@
+//! Statics of the arch (formulation §3): internal actions N, T, M at a radial joint as
+//! affine functions of the redundant reactions x = (h, v, w) at the right springing,
+//! their exact β-derivatives, and the four activation functions.
+//!
+//! Forces are divided by γ t d r and moments by γ t d r²; N is positive in compression.
+
+use crate::arch::{Arch, Radians};
+use serde::Serialize;
+
+/// The redundant reactions x = (h, v, w) at the right springing.
+pub type Reactions = [f64; 3];
+
+/// An affine function of x: `g · x + c`.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Affine {
+    /// Gradient with respect to (h, v, w).
+    pub g: [f64; 3],
+    /// Constant term (the value at x = 0).
+    pub c: f64,
+}
+
+impl Affine {
+    /// Evaluates the function at x.
+    #[inline]
+    pub fn at(&self, x: &Reactions) -> f64 {
+        self.g[0] * x[0] + self.g[1] * x[1] + self.g[2] * x[2] + self.c
+    }
+    /// `a·self + b·other`.
+    #[inline]
+    pub fn combine(a: f64, p: &Affine, b: f64, q: &Affine) -> Affine {
+        Affine {
+            g: [
+                a * p.g[0] + b * q.g[0],
+                a * p.g[1] + b * q.g[1],
+                a * p.g[2] + b * q.g[2],
+            ],
+            c: a * p.c + b * q.c,
+        }
+    }
+    /// Euclidean norm of the gradient.
+    pub fn grad_norm(&self) -> f64 {
+        (self.g[0] * self.g[0] + self.g[1] * self.g[1] + self.g[2] * self.g[2]).sqrt()
+    }
+}
+
+/// The four activation functions of a joint (formulation §3), each ≤ 0 when admissible.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum JointMode {
+    /// φ_E = M − ηN/2: hinge at the extrados (rate ϑ⁺).
+    HingeExtrados,
+    /// φ_I = −M − ηN/2: hinge at the intrados (rate ϑ⁻).
+    HingeIntrados,
+    /// φ_S+ = T − μN: sliding in the positive sense (rate s⁺).
+    SlidePlus,
+    /// φ_S− = −T − μN: sliding in the negative sense (rate s⁻).
+    SlideMinus,
+}
+
+impl JointMode {
+    /// All four modes.
+    pub const ALL: [JointMode; 4] = [
+        JointMode::HingeExtrados,
+        JointMode::HingeIntrados,
+        JointMode::SlidePlus,
+        JointMode::SlideMinus,
+    ];
+    /// The hinge modes only (infinite friction).
+    pub const HINGES: [JointMode; 2] = [JointMode::HingeExtrados, JointMode::HingeIntrados];
+
+    /// The modes that can activate at friction μ (no sliding when μ = ∞).
+    pub fn active_at(mu: f64) -> &'static [JointMode] {
+        if mu.is_finite() {
+            &Self::ALL
+        } else {
+            &Self::HINGES
+        }
+    }
+    /// The name used in JSON and tables.
+    pub fn name(self) -> &'static str {
+        match self {
+            JointMode::HingeExtrados => "hinge_extrados",
+            JointMode::HingeIntrados => "hinge_intrados",
+            JointMode::SlidePlus => "slide_plus",
+            JointMode::SlideMinus => "slide_minus",
+        }
+    }
+    /// True for the two hinge modes.
+    pub fn is_hinge(self) -> bool {
+        matches!(self, JointMode::HingeExtrados | JointMode::HingeIntrados)
+    }
+    /// The mode of the mirror-image contact (β ↦ π − β): hinges keep their side,
+    /// sliding changes sense.
+    pub fn mirrored(self) -> JointMode {
+        match self {
+            JointMode::SlidePlus => JointMode::SlideMinus,
+            JointMode::SlideMinus => JointMode::SlidePlus,
+            m => m,
+        }
+    }
+}
+
+/// N, T, M at one angle as affine functions of x, with their first and second
+/// β-derivatives (index = order of the derivative), and ∂M/∂η for the centroid model.
+#[derive(Debug, Clone, Copy)]
+pub struct Actions {
+    /// N, dN/dβ, d²N/dβ².
+    pub n: [Affine; 3],
+    /// T, dT/dβ, d²T/dβ².
+    pub t: [Affine; 3],
+    /// M, dM/dβ, d²M/dβ².
+    pub m: [Affine; 3],
+    /// ∂M/∂η and its first two β-derivatives (zero for the centreline model).
+    pub dm_deta: [f64; 3],
+}
+
+/// Internal actions at angle `beta` of `arch` at thickness `eta` (formulation §3):
+///
+/// N = h sin β + v cos β − (β − β_R) cos β,
+/// T = h cos β − v sin β + (β − β_R) sin β,
+/// M = −h (sin β − sin β_R) + v (cos β_R − cos β) + w + (β − β_R) cos β − ρ (sin β − sin β_R),
+///
+/// with ρ = 1 (centreline weight) or 1 + η²/12 (true centroid).
+pub fn actions(arch: &Arch, eta: f64, beta: Radians) -> Actions {
+    let br = arch.beta_right();
+    let (s, c) = beta.sin_cos();
+    let (sr, cr) = br.sin_cos();
+    let d = beta - br;
+    let rho = arch.weight().rho(eta);
+    let drho = arch.weight().drho_deta(eta);
+
+    let n0 = Affine { g: [s, c, 0.0], c: -d * c };
+    let t0 = Affine { g: [c, -s, 0.0], c: d * s };
+    let m0 = Affine {
+        g: [-(s - sr), cr - c, 1.0],
+        c: d * c - rho * (s - sr),
+    };
+    // dN = T − cos β, dT = −N + sin β, dM = −T + (1 − ρ) cos β
+    let n1 = Affine { g: t0.g, c: t0.c - c };
+    let t1 = Affine { g: [-s, -c, 0.0], c: -n0.c + s };
+    let m1 = Affine { g: [-c, s, 0.0], c: -t0.c + (1.0 - rho) * c };
+    // d²N = 2 sin β − N, d²T = 2 cos β − T, d²M = N − ρ sin β
+    let n2 = Affine { g: [-s, -c, 0.0], c: -n0.c + 2.0 * s };
+    let t2 = Affine { g: [-c, s, 0.0], c: -t0.c + 2.0 * c };
+    let m2 = Affine { g: n0.g, c: n0.c - rho * s };
+    Actions {
+        n: [n0, n1, n2],
+        t: [t0, t1, t2],
+        m: [m0, m1, m2],
+        dm_deta: [-drho * (s - sr), -drho * c, drho * s],
+    }
+}
+
+impl Actions {
+    /// The activation function of `mode` (derivative `order` 0, 1 or 2 in β) as an
+    /// affine function of x at thickness `eta` and friction `mu`.
+    #[inline]
+    pub fn activation(&self, mode: JointMode, order: usize, eta: f64, mu: f64) -> Affine {
+        let (n, t, m) = (&self.n[order], &self.t[order], &self.m[order]);
+        match mode {
+            JointMode::HingeExtrados => Affine::combine(1.0, m, -0.5 * eta, n),
+            JointMode::HingeIntrados => Affine::combine(-1.0, m, -0.5 * eta, n),
+            JointMode::SlidePlus => Affine::combine(1.0, t, -mu, n),
+            JointMode::SlideMinus => Affine::combine(-1.0, t, -mu, n),
+        }
+    }
+
+    /// ∂/∂η of the activation function of `mode` (β-derivative `order`) at x.
+    #[inline]
+    pub fn activation_d_eta(&self, mode: JointMode, order: usize, x: &Reactions) -> f64 {
+        let n = self.n[order].at(x);
+        match mode {
+            JointMode::HingeExtrados => -0.5 * n + self.dm_deta[order],
+            JointMode::HingeIntrados => -0.5 * n - self.dm_deta[order],
+            _ => 0.0,
+        }
+    }
+
+    /// ∂/∂μ of the activation function of `mode` (β-derivative `order`) at x.
+    #[inline]
+    pub fn activation_d_mu(&self, mode: JointMode, order: usize, x: &Reactions) -> f64 {
+        match mode {
+            JointMode::SlidePlus | JointMode::SlideMinus => -self.n[order].at(x),
+            _ => 0.0,
+        }
+    }
+}
+
+/// The values (N, T, M) at angle `beta` for reactions x.
+pub fn internal_forces(arch: &Arch, eta: f64, x: &Reactions, beta: Radians) -> (f64, f64, f64) {
+    let a = actions(arch, eta, beta);
+    (a.n[0].at(x), a.t[0].at(x), a.m[0].at(x))
+}
+
