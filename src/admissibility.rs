@@ -72,6 +72,17 @@ pub fn grad_norm(arch: &Arch, eta: f64, mu: f64, mode: JointMode, beta: Radians)
     actions(arch, eta, beta).activation(mode, 0, eta, mu).grad_norm()
 }
 
+/// How far constraint generation goes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Goal {
+    /// Only decide feasibility: stop as soon as the LP margin is negative (no state is
+    /// admissible: a subset of joints already rules it out) or the LP state is
+    /// admissible over the whole arch.
+    Decide,
+    /// Find the best continuum margin to `sep_tol`.
+    Optimise,
+}
+
 /// Maximises the admissibility margin over the continuum at (η, μ) restricted to
 /// the activation functions `modes`, growing `ws` as needed.
 pub fn max_margin(
@@ -80,6 +91,7 @@ pub fn max_margin(
     mu: f64,
     modes: &[JointMode],
     ws: &mut WorkingSet,
+    goal: Goal,
     settings: &Settings,
 ) -> Result<Margin, LpOutcome> {
     let cap = arch.span();
@@ -108,11 +120,12 @@ pub fn max_margin(
                 worst.push((slack, p.contact.beta));
             }
         }
+        let decided = goal == Goal::Decide && (s < 0.0 || margin >= 0.0);
         worst.sort_by(|a, b| a.0.total_cmp(&b.0));
         for &(_, beta) in worst.iter().take(4) {
             added |= ws.add(beta, settings.same_joint * 1e-3);
         }
-        if !added || rounds >= settings.max_rounds {
+        if decided || !added || rounds >= settings.max_rounds {
             return Ok(Margin {
                 x,
                 margin: margin.min(s),

@@ -12,7 +12,7 @@
 //!    over the whole arch (scan, `adm_tol`) and its active set must carry a mechanism
 //!    (kinematic LP, [`crate::mechanism`]). The first that passes is the limit state.
 
-use crate::admissibility::{grad_norm, max_margin, Margin, WorkingSet};
+use crate::admissibility::{grad_norm, max_margin, Goal, Margin, WorkingSet};
 use crate::arch::{check_mu, Arch, InputError};
 use crate::contact::{Contact, Peak};
 use crate::lp::LpOutcome;
@@ -107,7 +107,7 @@ fn margin_at(
     ws: &mut WorkingSet,
     settings: &Settings,
 ) -> Result<Margin, String> {
-    max_margin(arch, eta, mu, modes, ws, settings).map_err(|e| match e {
+    max_margin(arch, eta, mu, modes, ws, Goal::Decide, settings).map_err(|e| match e {
         LpOutcome::Infeasible => "margin LP infeasible".to_string(),
         LpOutcome::Failed(m) => m,
     })
@@ -125,7 +125,8 @@ fn bracket_root<T: Clone>(
 ) -> Result<((f64, f64), (f64, f64, T)), String> {
     let mut side = 0i32;
     let (mut flo, mut fhi) = (lo.1, hi.1);
-    for it in 0..max_iter {
+    let mut widths = [f64::INFINITY; 3];
+    for _ in 0..max_iter {
         if hi.0 - lo.0 <= rel * hi.0 {
             break;
         }
@@ -138,13 +139,18 @@ fn bracket_root<T: Clone>(
         } else {
             0.5 * (lo.0 + hi.0)
         };
-        let t = if it % 3 == 2 || !(secant > lo.0 && secant < hi.0) {
+        widths = [widths[1], widths[2], width];
+        let stalled = widths[2] > 0.5 * widths[0];
+        let t = if stalled || !(secant > lo.0 && secant < hi.0) {
             bisect
         } else {
             // keep the secant point away from the ends
             secant.clamp(lo.0 + 1e-3 * width, hi.0 - 1e-3 * width)
         };
         let (f, payload) = eval(t)?;
+        if stalled {
+            widths = [f64::INFINITY; 3];
+        }
         if f >= 0.0 {
             hi = (t, f, payload);
             fhi = f;
