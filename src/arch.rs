@@ -92,13 +92,22 @@ pub struct Arch {
     weight: WeightModel,
 }
 
+/// Formats a number for messages: plain for ordinary magnitudes, scientific otherwise.
+pub fn fmt_value(v: f64) -> String {
+    if v != 0.0 && v.is_finite() && (v.abs() < 1e-4 || v.abs() >= 1e7) {
+        format!("{v:e}")
+    } else {
+        format!("{v}")
+    }
+}
+
 fn check_finite(arg: &'static str, value: f64, range: &str) -> Result<(), InputError> {
     if value.is_finite() {
         Ok(())
     } else {
         Err(InputError::OutOfRange {
             arg,
-            value: format!("{value}"),
+            value: fmt_value(value),
             range: range.to_string(),
         })
     }
@@ -132,8 +141,9 @@ impl Arch {
             });
         }
         Ok(Arch {
-            beta_right,
-            beta_left,
+            // + 0.0 turns a negative zero (alpha = 0) into +0.
+            beta_right: beta_right + 0.0,
+            beta_left: beta_left + 0.0,
             layout: JointLayout::Continuous,
             weight,
         })
@@ -145,7 +155,7 @@ impl Arch {
         if !(alpha.is_finite() && alpha > -PI / 2.0 && alpha < PI / 2.0) {
             return Err(InputError::OutOfRange {
                 arg: "--alpha",
-                value: format!("{alpha}"),
+                value: fmt_value(alpha),
                 range: "(-pi/2, pi/2) radians, i.e. (-90, 90) degrees".to_string(),
             });
         }
@@ -188,7 +198,7 @@ impl Arch {
             if !(beta.is_finite() && beta >= a && beta <= b) {
                 return Err(InputError::OutOfRange {
                     arg: "--joints",
-                    value: format!("{beta}"),
+                    value: fmt_value(beta),
                     range: format!("angles in [beta_right, beta_left] = [{a}, {b}] radians"),
                 });
             }
@@ -268,7 +278,7 @@ pub fn check_eta(eta: f64) -> Result<f64, InputError> {
     } else {
         Err(InputError::OutOfRange {
             arg: "--eta",
-            value: format!("{eta}"),
+            value: fmt_value(eta),
             range: "0 < eta < 2 (thickness / mean radius)".to_string(),
         })
     }
@@ -281,7 +291,7 @@ pub fn check_mu(mu: f64) -> Result<f64, InputError> {
     } else {
         Err(InputError::OutOfRange {
             arg: "--mu",
-            value: format!("{mu}"),
+            value: fmt_value(mu),
             range: "mu > 0 (inf allowed: no sliding)".to_string(),
         })
     }

@@ -19,14 +19,14 @@ pub fn mu_grid(mu_min: f64, mu_max: f64, points: usize) -> Result<Vec<f64>, Inpu
     if !(mu_min.is_finite() && mu_min > 0.0) {
         return Err(InputError::OutOfRange {
             arg: "--mu-min",
-            value: format!("{mu_min}"),
+            value: crate::arch::fmt_value(mu_min),
             range: "0 < mu-min < inf".into(),
         });
     }
     if !(mu_max.is_finite() && mu_max >= mu_min) {
         return Err(InputError::OutOfRange {
             arg: "--mu-max",
-            value: format!("{mu_max}"),
+            value: crate::arch::fmt_value(mu_max),
             range: format!("mu-min ({mu_min}) <= mu-max < inf"),
         });
     }

@@ -24,6 +24,7 @@
 //! | [`limit`] | §5 η*(μ): bracket, enumerate, verify |
 //! | [`mode`] | §5 collapse-mode names from the pattern |
 //! | [`curve`] | η*(μ) sampled over μ |
+//! | [`render`], [`cli`] | text and JSON output, the command line (thin layers) |
 //!
 //! ```
 //! use arch_enum::{Arch, WeightModel, Settings, solve, Outcome};
@@ -41,10 +42,12 @@ pub mod contact;
 pub mod curve;
 pub mod kinematics;
 pub mod limit;
+pub mod cli;
 pub mod lp;
 pub mod mechanism;
 pub mod mode;
 pub mod refine;
+pub mod render;
 pub mod scan;
 pub mod settings;
 pub mod statics;

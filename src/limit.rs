@@ -21,7 +21,7 @@ use crate::mode::{classify, Mode};
 use crate::refine::{solve_pattern, NewtonFailure};
 use crate::scan::State;
 use crate::settings::Settings;
-use crate::statics::{JointMode, Reactions};
+use crate::statics::{magnitude, JointMode, Reactions};
 use itertools::Itertools;
 
 /// A verified limit state (incipient collapse) at friction μ.
@@ -41,9 +41,11 @@ pub struct LimitState {
     pub mechanism: Mechanism,
     /// Newton residual of the pattern's system (scaled).
     pub newton_residual: f64,
-    /// Greatest φ over the whole arch, scaled by 1 + ‖x‖₁ (≤ `adm_tol`).
+    /// Greatest φ over the whole arch relative to its magnitude (≤ `adm_tol`).
     pub max_phi: f64,
-    /// The LP bracket [η_lo, η_hi] of η* (η_lo infeasible, η_hi feasible).
+    /// The bracket [η_lo, η_hi] found before refinement: at η_hi a state was verified
+    /// admissible over the whole arch; η_lo was judged infeasible by the LP (to
+    /// HiGHS's tolerance, so for very shallow arches η* may lie slightly below it).
     pub bracket: (f64, f64),
 }
 
@@ -57,6 +59,12 @@ pub enum Outcome {
         /// The least friction coefficient that admits equilibrium at some
         /// (unbounded) thickness, when μ is below it.
         mu_ms: Option<f64>,
+        /// Why, in words.
+        reason: String,
+    },
+    /// Every thickness η > 0 admits equilibrium: there is no collapse to find (e.g. a
+    /// discrete arch with at most three joints, which is statically determinate).
+    NoCollapse {
         /// Why, in words.
         reason: String,
     },
@@ -227,6 +235,11 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
         Ok(m) => m,
         Err(e) => return unresolved(0.0, 2.0, e),
     };
+    if bottom.margin >= -settings.adm_tol * scale_of(&bottom.x) {
+        return Outcome::NoCollapse {
+            reason: "a state is admissible at vanishing thickness, so the arch stands at every eta > 0".into(),
+        };
+    }
     let bracket = bracket_root(
         (0.0, bottom.margin.min(-f64::MIN_POSITIVE)),
         (eta_max, top.margin, top),
@@ -295,8 +308,12 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
             continue;
         }
         let st = State { arch, eta: r.eta, mu, x: r.x };
-        let sc = scale_of(&r.x);
-        let worst = st.max_violation(settings) / sc;
+        let mag = |m: JointMode| magnitude(m, r.eta, mu, &r.x, settings.magnitude_floor);
+        let peaks = st.peaks(settings);
+        let worst = peaks
+            .iter()
+            .map(|p| p.value / mag(p.contact.mode))
+            .fold(f64::NEG_INFINITY, f64::max);
         if worst > settings.adm_tol {
             push(log, format!("rejected: not admissible over the arch (max phi = {worst:.2e})"));
             continue;
@@ -306,9 +323,9 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
             continue;
         }
         last_eta = r.eta;
-        let mut pattern: Vec<Contact> = st
-            .near_active(settings, -settings.adm_tol * 10.0 * sc)
-            .into_iter()
+        let mut pattern: Vec<Contact> = peaks
+            .iter()
+            .filter(|p| p.value >= -10.0 * settings.adm_tol * mag(p.contact.mode))
             .map(|p| p.contact)
             .collect();
         pattern.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.mode.cmp(&b.mode)));
@@ -334,12 +351,15 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
     }
     match found {
         Some(ls) => {
-            let tol = 1e-6 * eta_hi + 1e-12;
-            if ls.eta < eta_lo - tol || ls.eta > eta_hi + tol {
+            // η_hi carries a state verified admissible by exact evaluation over the
+            // whole arch, so η* ≤ η_hi: a verified pattern above it is not the least.
+            // (The lower end comes from the LP's infeasibility decision, accurate only
+            // to HiGHS's tolerance, and a verified state below it is simply better.)
+            if ls.eta > eta_hi * (1.0 + 1e-9) {
                 unresolved(
                     eta_lo,
                     eta_hi,
-                    format!("the verified pattern gives eta = {} outside the LP bracket", ls.eta),
+                    format!("the least verified pattern gives eta = {} above an admissible state at {eta_hi}", ls.eta),
                 )
             } else {
                 Outcome::Limit(ls)
@@ -358,7 +378,7 @@ fn no_equilibrium(arch: &Arch, mu: f64, settings: &Settings) -> Outcome {
         Ok(Some(mu_ms)) if mu < mu_ms => Outcome::NoEquilibrium {
             mu_ms: Some(mu_ms),
             reason: format!(
-                "mu = {mu} is below mu_ms = {mu_ms:.10}: no thickness can stand (purely sliding collapse)"
+                "mu = {} is below mu_ms = {mu_ms:.10}: no thickness can stand (purely sliding collapse)", crate::arch::fmt_value(mu)
             ),
         },
         Ok(Some(mu_ms)) => Outcome::NoEquilibrium {

@@ -8,9 +8,14 @@
 /// Solver settings. `Settings::default()` is what the CLI uses.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Settings {
-    /// Static admissibility: a state is admissible when every φ ≤ `adm_tol` · scale
-    /// over the whole arch. Default 1e-12.
+    /// Static admissibility: a state is admissible when every φ ≤ `adm_tol` times
+    /// its natural magnitude ([`crate::statics::magnitude`]) over the whole arch.
+    /// Default 1e-12.
     pub adm_tol: f64,
+    /// Smallest factor used by [`crate::statics::magnitude`]: below η (or μ) of this
+    /// size tolerances stop shrinking with η, because the rounding error of M, N, T
+    /// does not. Default 1e-3.
+    pub magnitude_floor: f64,
     /// Constraint generation stops when the continuum violation exceeds the working
     /// set's by at most `sep_tol` · scale. Default 1e-13.
     pub sep_tol: f64,
@@ -45,6 +50,7 @@ impl Default for Settings {
     fn default() -> Self {
         Settings {
             adm_tol: 1e-12,
+            magnitude_floor: 1e-3,
             sep_tol: 1e-13,
             scan_points: 96,
             bracket_rel: 1e-8,

@@ -192,3 +192,13 @@ pub fn internal_forces(arch: &Arch, eta: f64, x: &Reactions, beta: Radians) -> (
     (a.n[0].at(x), a.t[0].at(x), a.m[0].at(x))
 }
 
+
+/// The natural magnitude of the activation function of `mode` at reactions x, used
+/// to make tolerances relative (formulation §6): (1 + ‖x‖₁) times η for hinges and
+/// min(μ, 1) for sliding, neither below `floor` (which keeps tolerances above the
+/// rounding error of M, T, N, whose terms are of size ‖x‖).
+pub fn magnitude(mode: JointMode, eta: f64, mu: f64, x: &Reactions, floor: f64) -> f64 {
+    let base = 1.0 + x.iter().map(|v| v.abs()).sum::<f64>();
+    let factor = if mode.is_hinge() { eta } else { mu.min(1.0) };
+    base * factor.max(floor)
+}

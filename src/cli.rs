@@ -1,0 +1,234 @@
+//! The command-line interface: argument parsing, one library call, rendering, and
+//! the single place where outcomes become exit codes (0 ok, 1 no answer, 2 bad input).
+
+use crate::arch::{Arch, InputError, WeightModel};
+use crate::curve::{mu_grid, sample};
+use crate::limit::{least_friction, solve, Outcome};
+use crate::render::{json, table};
+use crate::settings::Settings;
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use std::ffi::OsString;
+use std::io::Write;
+
+/// Exit status: success.
+pub const EXIT_OK: i32 = 0;
+/// Exit status: the question has no answer for these inputs (no equilibrium, unresolved).
+pub const EXIT_NO_ANSWER: i32 = 1;
+/// Exit status: bad input.
+pub const EXIT_BAD_INPUT: i32 = 2;
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "arch-enum",
+    version,
+    about = "Exact limit analysis of circular masonry arches with limited friction",
+    long_about = "Exact limit analysis of circular masonry arches with limited friction.\n\n\
+Lengths are divided by the mean radius r (eta = t/r); angles are radians measured \
+counter-clockwise from the horizontal through the centre (a symmetric arch of opening \
+alpha has beta_R = -alpha, beta_L = pi + alpha).",
+    after_help = "Examples:\n  arch-enum solve --alpha 0 --mu inf          Couplet-Heyman semicircle\n  \
+arch-enum solve --alpha-deg 30 --mu 0.8 --json\n  \
+arch-enum solve --beta-right -0.2 --beta-left 3.0 --mu 0.5 --explain\n  \
+arch-enum curve --alpha 0 --mu-min 0.31 --mu-max 1 --points 12"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// The least thickness eta*(mu), the collapse mode, the active pattern, the reactions and a mechanism.
+    #[command(after_help = "Example:\n  arch-enum solve --alpha 0 --mu 0.35\n  arch-enum solve --alpha 0.5 --blocks 12 --mu inf --json")]
+    Solve {
+        #[command(flatten)]
+        arch: ArchArgs,
+        /// Friction coefficient mu = tan(phi) > 0; `inf` for no sliding.
+        #[arg(long, allow_negative_numbers = true)]
+        mu: f64,
+        /// List every pattern tried and why it was kept or rejected.
+        #[arg(long)]
+        explain: bool,
+        /// Print one JSON document instead of tables.
+        #[arg(long)]
+        json: bool,
+    },
+    /// eta*(mu) sampled at geometrically spaced mu, one row per mu, with the mode.
+    #[command(after_help = "Example:\n  arch-enum curve --alpha 0 --points 10\n  arch-enum curve --alpha 1 --mu-min 1 --mu-max 100 --json")]
+    Curve {
+        #[command(flatten)]
+        arch: ArchArgs,
+        /// Smallest mu (default: just above mu_ms, the least friction admitting equilibrium).
+        #[arg(long, allow_negative_numbers = true)]
+        mu_min: Option<f64>,
+        /// Largest mu (default: 10 * mu_min).
+        #[arg(long, allow_negative_numbers = true)]
+        mu_max: Option<f64>,
+        /// Number of samples (1 to 100000).
+        #[arg(long, default_value_t = 20)]
+        points: usize,
+        /// Print one JSON document instead of tables.
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+enum WeightArg {
+    /// Self-weight along the centreline (Heyman).
+    Centreline,
+    /// Self-weight at the true centroid of each piece (Milankovitch).
+    Centroid,
+}
+
+#[derive(Args, Debug)]
+struct ArchArgs {
+    /// Opening of a symmetric arch in radians, -pi/2 < alpha < pi/2 (0: semicircle).
+    #[arg(long, allow_negative_numbers = true, group = "shape")]
+    alpha: Option<f64>,
+    /// Opening of a symmetric arch in degrees, -90 < alpha-deg < 90.
+    #[arg(long, allow_negative_numbers = true, group = "shape")]
+    alpha_deg: Option<f64>,
+    /// Right springing angle of an unsymmetric arch (radians); needs --beta-left.
+    #[arg(long, allow_negative_numbers = true, group = "shape", requires = "beta_left")]
+    beta_right: Option<f64>,
+    /// Left springing angle (radians), beta_right < beta_left <= beta_right + 2 pi.
+    #[arg(long, allow_negative_numbers = true, requires = "beta_right")]
+    beta_left: Option<f64>,
+    /// N equal voussoirs: joints only at the N + 1 equally spaced angles (1 to 100000).
+    #[arg(long, conflicts_with = "joints")]
+    blocks: Option<usize>,
+    /// Explicit joint angles in radians, comma-separated, increasing, within the springings.
+    #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
+    joints: Option<Vec<f64>>,
+    /// Where self-weight acts.
+    #[arg(long, value_enum, default_value = "centreline")]
+    weight: WeightArg,
+}
+
+impl ArchArgs {
+    fn build(&self) -> Result<Arch, InputError> {
+        let weight = match self.weight {
+            WeightArg::Centreline => WeightModel::Centreline,
+            WeightArg::Centroid => WeightModel::Centroid,
+        };
+        let arch = match (self.alpha, self.alpha_deg, self.beta_right, self.beta_left) {
+            (Some(a), _, _, _) => Arch::symmetric(a, weight)?,
+            (_, Some(d), _, _) => Arch::symmetric(d.to_radians(), weight).map_err(|_| InputError::OutOfRange {
+                arg: "--alpha-deg",
+                value: crate::arch::fmt_value(d),
+                range: "(-90, 90) degrees".into(),
+            })?,
+            (_, _, Some(r), Some(l)) => Arch::new(r, l, weight)?,
+            _ => {
+                return Err(InputError::Inconsistent {
+                    arg: "--alpha/--alpha-deg/--beta-right/--beta-left",
+                    reason: "describe the arch with --alpha A, --alpha-deg D, or --beta-right B1 --beta-left B2".into(),
+                })
+            }
+        };
+        match (&self.blocks, &self.joints) {
+            (Some(n), _) => arch.with_blocks(*n),
+            (_, Some(j)) => arch.with_joints(j),
+            _ => Ok(arch),
+        }
+    }
+}
+
+fn emit(out: &mut dyn Write, text: &str) {
+    // A closed pipe (e.g. `| head`) is not an error of ours.
+    let _ = out.write_all(text.as_bytes());
+    let _ = out.flush();
+}
+
+fn to_json<T: serde::Serialize>(value: &T) -> String {
+    let mut s = serde_json::to_string_pretty(value).expect("results serialise to JSON");
+    s.push('\n');
+    s
+}
+
+fn bad_input(e: &InputError, json_out: bool, out: &mut dyn Write, err: &mut dyn Write) -> i32 {
+    emit(err, &format!("error: {e}\n"));
+    if json_out {
+        emit(out, &to_json(&json::ErrorJson { status: "bad_input", message: e.to_string() }));
+    }
+    EXIT_BAD_INPUT
+}
+
+/// Runs the command line `args` (including the program name), writing results to
+/// `out` and diagnostics to `err`; returns the exit status.
+pub fn run<I, T>(args: I, out: &mut dyn Write, err: &mut dyn Write) -> i32
+where
+    I: IntoIterator<Item = T>,
+    T: Into<OsString> + Clone,
+{
+    let cli = match Cli::try_parse_from(args) {
+        Ok(c) => c,
+        Err(e) => {
+            let code = if e.use_stderr() { EXIT_BAD_INPUT } else { EXIT_OK };
+            let text = e.render().to_string();
+            if e.use_stderr() {
+                emit(err, &text);
+            } else {
+                emit(out, &text);
+            }
+            return code;
+        }
+    };
+    let settings = Settings::default();
+    match cli.command {
+        Command::Solve { arch, mu, explain, json: json_out } => {
+            let sol = match arch.build().and_then(|a| solve(&a, mu, &settings)) {
+                Ok(s) => s,
+                Err(e) => return bad_input(&e, json_out, out, err),
+            };
+            if json_out {
+                emit(out, &to_json(&json::solve(&sol, explain)));
+            } else {
+                emit(out, &table::solve(&sol, explain));
+            }
+            match &sol.outcome {
+                Outcome::Limit(_) => EXIT_OK,
+                Outcome::NoEquilibrium { reason, .. }
+                | Outcome::Unresolved { reason, .. }
+                | Outcome::NoCollapse { reason } => {
+                    if json_out {
+                        emit(err, &format!("{}: {reason}\n", json::status(&sol.outcome)));
+                    }
+                    EXIT_NO_ANSWER
+                }
+            }
+        }
+        Command::Curve { arch, mu_min, mu_max, points, json: json_out } => {
+            let arch = match arch.build() {
+                Ok(a) => a,
+                Err(e) => return bad_input(&e, json_out, out, err),
+            };
+            for (name, v) in [("--mu-min", mu_min), ("--mu-max", mu_max)] {
+                if let Some(v) = v {
+                    if !(v.is_finite() && v > 0.0) {
+                        let e = InputError::OutOfRange { arg: name, value: crate::arch::fmt_value(v), range: "0 < mu < inf".into() };
+                        return bad_input(&e, json_out, out, err);
+                    }
+                }
+            }
+            let mu_ms = least_friction(&arch, &settings).ok().flatten();
+            let lo = mu_min.unwrap_or_else(|| mu_ms.map_or(0.01, |m| (m * (1.0 + 1e-9)).max(1e-6)));
+            let hi = mu_max.unwrap_or(10.0 * lo);
+            let grid = match mu_grid(lo, hi, points) {
+                Ok(g) => g,
+                Err(e) => return bad_input(&e, json_out, out, err),
+            };
+            let pts = match sample(&arch, &grid, &settings) {
+                Ok(p) => p,
+                Err(e) => return bad_input(&e, json_out, out, err),
+            };
+            if json_out {
+                emit(out, &to_json(&json::curve(&arch, mu_ms, &pts)));
+            } else {
+                emit(out, &table::curve(&arch, mu_ms, &pts));
+            }
+            EXIT_OK
+        }
+    }
+}

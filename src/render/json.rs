@@ -1,0 +1,254 @@
+//! The JSON shapes of the command-line contract (`shared/spec/cli.md`).
+//! Angles in radians; `null` stands for +∞.
+
+use crate::arch::{Arch, JointLayout};
+use crate::contact::Contact;
+use crate::curve::CurvePoint;
+use crate::limit::{Candidate, LimitState, Outcome, Solution};
+use serde::Serialize;
+
+/// The arch as described in every JSON document.
+#[derive(Debug, Serialize)]
+pub struct ArchJson {
+    beta_right: f64,
+    beta_left: f64,
+    weight: &'static str,
+    joints: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    joint_angles: Option<Vec<f64>>,
+    symmetric: bool,
+}
+
+impl ArchJson {
+    /// Describes `arch`.
+    pub fn new(arch: &Arch) -> ArchJson {
+        let (joints, joint_angles) = match arch.layout() {
+            JointLayout::Continuous => ("continuous", None),
+            JointLayout::Discrete(j) => ("discrete", Some(j.clone())),
+        };
+        ArchJson {
+            beta_right: arch.beta_right(),
+            beta_left: arch.beta_left(),
+            weight: arch.weight().name(),
+            joints,
+            joint_angles,
+            symmetric: arch.is_symmetric(),
+        }
+    }
+}
+
+#[derive(Debug, Serialize)]
+struct Reactions {
+    h: f64,
+    v: f64,
+    w: f64,
+}
+
+#[derive(Debug, Serialize)]
+struct Rate {
+    beta: f64,
+    kind: &'static str,
+    rate: f64,
+}
+
+#[derive(Debug, Serialize)]
+struct MechanismJson {
+    rates: Vec<Rate>,
+    dof: usize,
+    power: f64,
+    dissipation: f64,
+    symmetric: bool,
+    compatibility_residual: f64,
+    complementarity_residual: f64,
+}
+
+#[derive(Debug, Serialize)]
+struct Checks {
+    newton_residual: f64,
+    max_phi: f64,
+    eta_bracket: [f64; 2],
+}
+
+#[derive(Debug, Serialize)]
+struct CandidateJson {
+    pattern: Vec<Contact>,
+    eta: Option<f64>,
+    verdict: String,
+}
+
+/// The `solve --json` document.
+#[derive(Debug, Serialize)]
+pub struct SolveJson {
+    status: &'static str,
+    arch: ArchJson,
+    mu: f64,
+    friction_angle_deg: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    eta: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    mode: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pattern: Option<Vec<Contact>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    reactions: Option<Reactions>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    mechanism: Option<MechanismJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    checks: Option<Checks>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    mu_ms: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    eta_bracket: Option<[f64; 2]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    message: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    candidates: Option<Vec<CandidateJson>>,
+}
+
+/// The status word of an outcome.
+pub fn status(outcome: &Outcome) -> &'static str {
+    match outcome {
+        Outcome::Limit(_) => "ok",
+        Outcome::NoEquilibrium { .. } => "no_equilibrium",
+        Outcome::Unresolved { .. } => "unresolved",
+        Outcome::NoCollapse { .. } => "no_collapse",
+    }
+}
+
+fn limit_parts(ls: &LimitState) -> (Vec<Contact>, Reactions, MechanismJson, Checks) {
+    let m = &ls.mechanism;
+    (
+        ls.pattern.clone(),
+        Reactions { h: ls.x[0], v: ls.x[1], w: ls.x[2] },
+        MechanismJson {
+            rates: m
+                .contacts
+                .iter()
+                .zip(&m.rates)
+                .map(|(c, &rate)| Rate { beta: c.beta, kind: c.mode.name(), rate })
+                .collect(),
+            dof: m.dof,
+            power: m.power,
+            dissipation: m.dissipation,
+            symmetric: m.symmetric,
+            compatibility_residual: m.compatibility,
+            complementarity_residual: m.complementarity,
+        },
+        Checks {
+            newton_residual: ls.newton_residual,
+            max_phi: ls.max_phi,
+            eta_bracket: [ls.bracket.0, ls.bracket.1],
+        },
+    )
+}
+
+/// Builds the `solve --json` document; `explain` adds the enumeration log.
+pub fn solve(sol: &Solution, explain: bool) -> SolveJson {
+    let mut doc = SolveJson {
+        status: status(&sol.outcome),
+        arch: ArchJson::new(&sol.arch),
+        mu: sol.mu,
+        friction_angle_deg: sol.mu.atan().to_degrees(),
+        eta: None,
+        mode: None,
+        pattern: None,
+        reactions: None,
+        mechanism: None,
+        checks: None,
+        mu_ms: None,
+        eta_bracket: None,
+        message: None,
+        candidates: explain.then(|| candidates(&sol.candidates)),
+    };
+    match &sol.outcome {
+        Outcome::Limit(ls) => {
+            let (p, r, m, c) = limit_parts(ls);
+            doc.eta = Some(ls.eta);
+            doc.mode = Some(ls.mode.name());
+            doc.pattern = Some(p);
+            doc.reactions = Some(r);
+            doc.mechanism = Some(m);
+            doc.checks = Some(c);
+        }
+        Outcome::NoCollapse { reason } => {
+            doc.message = Some(reason.clone());
+        }
+        Outcome::NoEquilibrium { mu_ms, reason } => {
+            doc.mu_ms = *mu_ms;
+            doc.message = Some(reason.clone());
+        }
+        Outcome::Unresolved { eta_lo, eta_hi, reason } => {
+            doc.eta_bracket = Some([*eta_lo, *eta_hi]);
+            doc.message = Some(reason.clone());
+        }
+    }
+    doc
+}
+
+fn candidates(c: &[Candidate]) -> Vec<CandidateJson> {
+    c.iter()
+        .map(|c| CandidateJson {
+            pattern: c.contacts.clone(),
+            eta: c.eta,
+            verdict: c.verdict.clone(),
+        })
+        .collect()
+}
+
+#[derive(Debug, Serialize)]
+struct CurveRow {
+    mu: f64,
+    friction_angle_deg: f64,
+    status: &'static str,
+    eta: Option<f64>,
+    mode: Option<&'static str>,
+    pattern: Option<Vec<Contact>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    message: Option<String>,
+}
+
+/// The `curve --json` document.
+#[derive(Debug, Serialize)]
+pub struct CurveJson {
+    arch: ArchJson,
+    mu_min: Option<f64>,
+    points: Vec<CurveRow>,
+}
+
+/// Builds the `curve --json` document. `mu_ms` is the least friction admitting
+/// equilibrium (`None` when no finite μ does).
+pub fn curve(arch: &Arch, mu_ms: Option<f64>, points: &[CurvePoint]) -> CurveJson {
+    CurveJson {
+        arch: ArchJson::new(arch),
+        mu_min: mu_ms,
+        points: points
+            .iter()
+            .map(|p| {
+                let (eta, mode, pattern, message) = match &p.outcome {
+                    Outcome::Limit(ls) => (Some(ls.eta), Some(ls.mode.name()), Some(ls.pattern.clone()), None),
+                    Outcome::NoEquilibrium { reason, .. }
+                    | Outcome::Unresolved { reason, .. }
+                    | Outcome::NoCollapse { reason } => (None, None, None, Some(reason.clone())),
+                };
+                CurveRow {
+                    mu: p.mu,
+                    friction_angle_deg: p.mu.atan().to_degrees(),
+                    status: status(&p.outcome),
+                    eta,
+                    mode,
+                    pattern,
+                    message,
+                }
+            })
+            .collect(),
+    }
+}
+
+/// The document printed for bad input under `--json`.
+#[derive(Debug, Serialize)]
+pub struct ErrorJson {
+    /// Always `"bad_input"`.
+    pub status: &'static str,
+    /// The message naming the argument and its valid range.
+    pub message: String,
+}

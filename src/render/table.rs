@@ -1,0 +1,217 @@
+//! Human-readable tables: pure functions returning text.
+
+use crate::arch::{Arch, JointLayout};
+use crate::contact::Contact;
+use crate::curve::CurvePoint;
+use crate::limit::{Outcome, Solution};
+use std::f64::consts::PI;
+use std::fmt::Write;
+
+/// Formats μ (∞ for infinite friction).
+pub fn fmt_mu(mu: f64) -> String {
+    if mu.is_infinite() {
+        "inf".to_string()
+    } else if (1e-4..1e7).contains(&mu) {
+        format!("{mu:.10}")
+    } else {
+        format!("{mu:e}")
+    }
+}
+
+/// One line describing the arch.
+pub fn describe_arch(arch: &Arch) -> String {
+    let shape = if arch.is_symmetric() {
+        let alpha = 0.0 - arch.beta_right();
+        format!("symmetric arch, opening alpha = {alpha:.10} rad ({:.4} deg)", alpha.to_degrees())
+    } else {
+        format!(
+            "unsymmetric arch, springings beta_R = {:.10} rad, beta_L = {:.10} rad",
+            arch.beta_right(),
+            arch.beta_left()
+        )
+    };
+    let joints = match arch.layout() {
+        JointLayout::Continuous => "continuous joints".to_string(),
+        JointLayout::Discrete(j) => format!("{} voussoirs ({} joints)", j.len() - 1, j.len()),
+    };
+    format!("{shape}; {joints}; weight along the {}", match arch.weight() {
+        crate::arch::WeightModel::Centreline => "centreline",
+        crate::arch::WeightModel::Centroid => "true centroid (Milankovitch)",
+    })
+}
+
+fn middle_name(arch: &Arch) -> &'static str {
+    if arch.is_symmetric() {
+        "crown"
+    } else {
+        "middle"
+    }
+}
+
+/// A table of the contacts of a pattern, with optional rates.
+pub fn pattern_table(arch: &Arch, pattern: &[Contact], rates: Option<&[f64]>) -> String {
+    let mid = 0.5 * (arch.beta_right() + arch.beta_left());
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "  {:>2}  {:>14}  {:>10}  {:>14}  {:<15} {:<10}{}",
+        "#",
+        "beta [rad]",
+        "beta [deg]",
+        format!("from {} [deg]", middle_name(arch)),
+        "kind",
+        "at",
+        if rates.is_some() { "  rate" } else { "" }
+    );
+    for (i, c) in pattern.iter().enumerate() {
+        let _ = write!(
+            s,
+            "  {:>2}  {:>14.10}  {:>10.5}  {:>14.5}  {:<15} {:<10}",
+            i + 1,
+            c.beta,
+            c.beta.to_degrees(),
+            (c.beta - mid).to_degrees(),
+            c.mode.name(),
+            match c.at {
+                crate::contact::Location::Springing => "springing",
+                crate::contact::Location::Interior => "interior",
+            }
+        );
+        if let Some(r) = rates {
+            let _ = write!(s, "  {:.6}", r[i]);
+        }
+        s.push('\n');
+    }
+    s
+}
+
+/// The human-readable answer of `solve`.
+pub fn solve(sol: &Solution, explain: bool) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "{}", describe_arch(&sol.arch));
+    let _ = writeln!(
+        s,
+        "friction            mu = {}  (friction angle {:.6} deg)",
+        fmt_mu(sol.mu),
+        sol.mu.atan().to_degrees()
+    );
+    match &sol.outcome {
+        Outcome::Limit(ls) => {
+            let _ = writeln!(s, "least thickness     eta* = t/r = {:.12}", ls.eta);
+            let _ = writeln!(s, "collapse mode       {}", ls.mode.name());
+            let _ = writeln!(s, "active pattern ({} contacts):", ls.pattern.len());
+            s.push_str(&pattern_table(&sol.arch, &ls.pattern, None));
+            let _ = writeln!(
+                s,
+                "reactions at the right springing (units of gamma t d r, r^2):\n  h = {:.12}   v = {:.12}   w = {:.12}",
+                ls.x[0], ls.x[1], ls.x[2]
+            );
+            let m = &ls.mechanism;
+            let _ = writeln!(
+                s,
+                "mechanism: cone of dimension {} on the pattern; {} representative (rates sum to 1):",
+                m.dof,
+                if m.symmetric { "symmetric" } else { "interior" }
+            );
+            s.push_str(&pattern_table(&sol.arch, &m.contacts, Some(&m.rates)));
+            let _ = writeln!(
+                s,
+                "  external power L_e = {:.3e}   frictional dissipation = {:.3e}",
+                m.power, m.dissipation
+            );
+            let _ = writeln!(
+                s,
+                "checks: Newton residual {:.1e}; max phi over the arch {:.1e}; |B lambda| {:.1e}; complementarity {:.1e}",
+                ls.newton_residual, ls.max_phi, m.compatibility, m.complementarity
+            );
+            let _ = writeln!(s, "        LP bracket of eta*: [{:.12}, {:.12}]", ls.bracket.0, ls.bracket.1);
+        }
+        Outcome::NoEquilibrium { reason, .. } => {
+            let _ = writeln!(s, "no equilibrium: {reason}");
+        }
+        Outcome::NoCollapse { reason } => {
+            let _ = writeln!(s, "no collapse: {reason}");
+        }
+        Outcome::Unresolved { eta_lo, eta_hi, reason } => {
+            let _ = writeln!(s, "unresolved: {reason}; eta* lies in [{eta_lo:.12}, {eta_hi:.12}]");
+        }
+    }
+    if explain {
+        let _ = writeln!(s, "\npatterns tried ({}):", sol.candidates.len());
+        for c in &sol.candidates {
+            let joints: Vec<String> = c
+                .contacts
+                .iter()
+                .map(|k| format!("{}@{:.6}", short(k), k.beta))
+                .collect();
+            let eta = c.eta.map_or("-".to_string(), |e| format!("{e:.12}"));
+            let _ = writeln!(s, "  [{}] eta = {eta}: {}", joints.join(" "), c.verdict);
+        }
+    }
+    s
+}
+
+fn short(c: &Contact) -> &'static str {
+    match c.mode {
+        crate::statics::JointMode::HingeExtrados => "E",
+        crate::statics::JointMode::HingeIntrados => "I",
+        crate::statics::JointMode::SlidePlus => "S+",
+        crate::statics::JointMode::SlideMinus => "S-",
+    }
+}
+
+/// The human-readable table of `curve`.
+pub fn curve(arch: &Arch, mu_ms: Option<f64>, points: &[CurvePoint]) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "{}", describe_arch(arch));
+    match mu_ms {
+        Some(m) => {
+            let _ = writeln!(s, "least friction for equilibrium mu_ms = {m:.12}");
+        }
+        None => {
+            let _ = writeln!(s, "no finite friction coefficient admits equilibrium");
+        }
+    }
+    let _ = writeln!(
+        s,
+        "{:>16}  {:>10}  {:>16}  {:<28} pattern (kind@beta deg)",
+        "mu", "phi [deg]", "eta*", "mode"
+    );
+    for p in points {
+        let phi = p.mu.atan() * 180.0 / PI;
+        match &p.outcome {
+            Outcome::Limit(ls) => {
+                let joints: Vec<String> = ls
+                    .pattern
+                    .iter()
+                    .map(|c| format!("{}@{:.3}", short(c), c.beta.to_degrees()))
+                    .collect();
+                let _ = writeln!(
+                    s,
+                    "{:>16}  {:>10.5}  {:>16.12}  {:<28} {}",
+                    fmt_mu(p.mu),
+                    phi,
+                    ls.eta,
+                    ls.mode.name(),
+                    joints.join(" ")
+                );
+            }
+            Outcome::NoEquilibrium { .. } => {
+                let _ = writeln!(s, "{:>16}  {:>10.5}  {:>16}  {:<28}", fmt_mu(p.mu), phi, "-", "no_equilibrium");
+            }
+            Outcome::NoCollapse { .. } => {
+                let _ = writeln!(s, "{:>16}  {:>10.5}  {:>16}  {:<28}", fmt_mu(p.mu), phi, "0", "no_collapse");
+            }
+            Outcome::Unresolved { eta_lo, eta_hi, .. } => {
+                let _ = writeln!(
+                    s,
+                    "{:>16}  {:>10.5}  {:>16}  unresolved in [{eta_lo:.10}, {eta_hi:.10}]",
+                    fmt_mu(p.mu),
+                    phi,
+                    "?"
+                );
+            }
+        }
+    }
+    s
+}
