@@ -64,6 +64,14 @@ impl WeightModel {
         }
     }
 
+    /// d²ρ/dη².
+    pub fn d2rho_deta2(self, _eta: f64) -> f64 {
+        match self {
+            WeightModel::Centreline => 0.0,
+            WeightModel::Centroid => 1.0 / 6.0,
+        }
+    }
+
     /// The name used on the command line and in JSON.
     pub fn name(self) -> &'static str {
         match self {

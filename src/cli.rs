@@ -65,7 +65,7 @@ enum Command {
         #[arg(long, allow_negative_numbers = true)]
         mu_max: Option<f64>,
         /// Number of samples (1 to 100000).
-        #[arg(long, default_value_t = 20)]
+        #[arg(long, default_value_t = 20, allow_negative_numbers = true)]
         points: usize,
         /// Print one JSON document instead of tables.
         #[arg(long)]
@@ -96,7 +96,7 @@ struct ArchArgs {
     #[arg(long, allow_negative_numbers = true, requires = "beta_right")]
     beta_left: Option<f64>,
     /// N equal voussoirs: joints only at the N + 1 equally spaced angles (1 to 100000).
-    #[arg(long, conflicts_with = "joints")]
+    #[arg(long, conflicts_with = "joints", allow_negative_numbers = true)]
     blocks: Option<usize>,
     /// Explicit joint angles in radians, comma-separated, increasing, within the springings.
     #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]

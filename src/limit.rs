@@ -274,7 +274,7 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
 
     // Enumerate patterns and refine each.
     let mut subsets: Vec<Vec<Contact>> = Vec::new();
-    for k in [4, 5] {
+    for k in 2..=5 {
         if cand.len() > k {
             subsets.extend(cand.iter().copied().combinations(k));
         }
@@ -288,7 +288,8 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
                 contacts: s,
                 eta: None,
                 verdict: match f {
-                    NewtonFailure::Underdetermined => "rejected: fewer conditions than unknowns".into(),
+                    NewtonFailure::Empty => "rejected: empty pattern".into(),
+                    NewtonFailure::NegativeMultiplier => "rejected: a KKT multiplier is negative (not a least thickness)".into(),
                     NewtonFailure::LeftDomain => "rejected: Newton left the domain".into(),
                     NewtonFailure::NoConvergence(r) => format!("rejected: Newton did not converge (residual {r:.2e})"),
                 },

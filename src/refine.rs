@@ -4,9 +4,19 @@
 //!   dφ_i/dβ(β_i; x, η) = 0        for every free (interior, continuous) contact,
 //!
 //! in the unknowns z = (h, v, w, η, free β_i), with the exact derivatives of
-//! [`crate::statics`]. Square systems are solved exactly; an over-determined but
-//! consistent system (symmetry) by Gauss–Newton, which keeps quadratic convergence
-//! at a zero residual. Linear steps use an SVD with column equilibration.
+//! [`crate::statics`].
+//!
+//! With four or more contacts this fixes the state (a vertex; an over-determined but
+//! consistent system, as symmetry gives, is solved by Gauss–Newton, which keeps
+//! quadratic convergence at a zero residual). With fewer, the continuum's curvature
+//! matters: the least η sits where the envelope of the active tangencies is
+//! stationary, and the system is completed by the optimality (KKT) conditions of
+//! min η subject to φ_i ≤ 0 with multipliers y_i:
+//!
+//!   Σ y_i ∇ₓφ_i = 0,   1 + Σ y_i ∂φ_i/∂η = 0,
+//!
+//! which are square again (unknowns y_i added). Linear steps use an SVD with column
+//! equilibration (minimum-norm steps where the Jacobian is rank-deficient).
 
 use crate::arch::Arch;
 use crate::contact::Contact;
@@ -23,6 +33,9 @@ pub struct Refined {
     pub eta: f64,
     /// The contacts with their refined angles.
     pub contacts: Vec<Contact>,
+    /// KKT multipliers of the contacts when the optimality conditions were used
+    /// (fewer than four contacts), else empty.
+    pub multipliers: Vec<f64>,
     /// Final residual ‖F‖∞, scaled by 1 + ‖x‖₁.
     pub residual: f64,
     /// Newton iterations used.
@@ -32,28 +45,135 @@ pub struct Refined {
 /// Why Newton did not converge.
 #[derive(Debug, Clone, PartialEq)]
 pub enum NewtonFailure {
-    /// Fewer equations than unknowns: the pattern does not fix the state.
-    Underdetermined,
+    /// The pattern is empty.
+    Empty,
     /// The iterate left the domain (η ∉ (0, 2) or a joint outside the arch).
     LeftDomain,
     /// No convergence within the iteration limit (residual reached).
     NoConvergence(f64),
+    /// Converged, but a KKT multiplier is negative: not a least thickness.
+    NegativeMultiplier,
 }
 
-fn residual(arch: &Arch, mu: f64, contacts: &[Contact], x: &Reactions, eta: f64) -> Vec<f64> {
-    let mut f = Vec::with_capacity(2 * contacts.len());
-    for c in contacts {
-        let a = actions(arch, eta, c.beta);
-        f.push(a.activation(c.mode, 0, eta, mu).at(x));
-        if c.free {
-            f.push(a.activation(c.mode, 1, eta, mu).at(x));
-        }
+/// The unknowns, flattened: x (3), η, free β (k), then y (m) in KKT form.
+struct System<'a> {
+    arch: &'a Arch,
+    mu: f64,
+    contacts: Vec<Contact>,
+    free: Vec<usize>,
+    kkt: bool,
+}
+
+impl System<'_> {
+    fn n_unknowns(&self) -> usize {
+        4 + self.free.len() + if self.kkt { self.contacts.len() } else { 0 }
     }
-    f
+
+    fn unpack(&self, z: &[f64]) -> (Reactions, f64, Vec<Contact>) {
+        let mut cs = self.contacts.clone();
+        for (j, &i) in self.free.iter().enumerate() {
+            cs[i].beta = z[4 + j];
+        }
+        ([z[0], z[1], z[2]], z[3], cs)
+    }
+
+    fn multipliers<'z>(&self, z: &'z [f64]) -> &'z [f64] {
+        &z[4 + self.free.len()..]
+    }
+
+    /// Residual F(z) and, when `jac` is given, its Jacobian.
+    fn eval(&self, z: &[f64], mut jac: Option<&mut DMatrix<f64>>) -> Vec<f64> {
+        let (x, eta, cs) = self.unpack(z);
+        let mu = self.mu;
+        let y = if self.kkt { self.multipliers(z) } else { &[][..] };
+        let col_y = 4 + self.free.len();
+        let mut f = Vec::new();
+        let mut stat = [0.0; 3];
+        let mut norm_eq = 1.0;
+        let mut col_beta = 4;
+        let n_rows = cs.len() + self.free.len();
+        for (i, c) in cs.iter().enumerate() {
+            let a = actions(self.arch, eta, c.beta);
+            let f0 = a.activation(c.mode, 0, eta, mu);
+            let f1 = a.activation(c.mode, 1, eta, mu);
+            let row = f.len();
+            f.push(f0.at(&x));
+            if c.free {
+                f.push(f1.at(&x));
+            }
+            // ∂(∇ₓφ)/∂η: −½∇ₓN for hinges, 0 for sliding.
+            let dg_deta = |order: usize| -> [f64; 3] {
+                if c.mode.is_hinge() {
+                    a.n[order].g.map(|v| -0.5 * v)
+                } else {
+                    [0.0; 3]
+                }
+            };
+            let d_eta0 = a.activation_d_eta(c.mode, 0, &x);
+            if self.kkt {
+                for k in 0..3 {
+                    stat[k] += y[i] * f0.g[k];
+                }
+                norm_eq += y[i] * d_eta0;
+            }
+            if let Some(j) = jac.as_deref_mut() {
+                for k in 0..3 {
+                    j[(row, k)] = f0.g[k];
+                }
+                j[(row, 3)] = d_eta0;
+                if c.free {
+                    let f2 = a.activation(c.mode, 2, eta, mu);
+                    j[(row, col_beta)] = f1.at(&x);
+                    for k in 0..3 {
+                        j[(row + 1, k)] = f1.g[k];
+                    }
+                    j[(row + 1, 3)] = a.activation_d_eta(c.mode, 1, &x);
+                    j[(row + 1, col_beta)] = f2.at(&x);
+                }
+                if self.kkt {
+                    let (ds, dn) = (n_rows, n_rows + 3);
+                    let g_eta = dg_deta(0);
+                    for k in 0..3 {
+                        // stationarity rows
+                        j[(ds + k, 3)] += y[i] * g_eta[k];
+                        j[(ds + k, col_y + i)] = f0.g[k];
+                        if c.free {
+                            j[(ds + k, col_beta)] += y[i] * f1.g[k];
+                        }
+                        // normalisation row, ∂/∂x
+                        j[(dn, k)] += y[i] * g_eta[k];
+                    }
+                    let d2 = self.arch.weight().d2rho_deta2(eta) * -(c.beta.sin() - self.arch.beta_right().sin());
+                    let d2 = match c.mode {
+                        crate::statics::JointMode::HingeExtrados => d2,
+                        crate::statics::JointMode::HingeIntrados => -d2,
+                        _ => 0.0,
+                    };
+                    j[(dn, 3)] += y[i] * d2;
+                    if c.free {
+                        j[(dn, col_beta)] += y[i] * a.activation_d_eta(c.mode, 1, &x);
+                    }
+                    j[(dn, col_y + i)] = d_eta0;
+                }
+            }
+            if c.free {
+                col_beta += 1;
+            }
+        }
+        if self.kkt {
+            f.extend_from_slice(&stat);
+            f.push(norm_eq);
+        }
+        f
+    }
 }
 
-fn scale_of(x: &Reactions) -> f64 {
-    1.0 + x.iter().map(|v| v.abs()).sum::<f64>()
+fn scale_of(x: &[f64]) -> f64 {
+    1.0 + x[..3].iter().map(|v| v.abs()).sum::<f64>()
+}
+
+fn inf_norm(f: &[f64]) -> f64 {
+    f.iter().fold(0.0f64, |m, v| m.max(v.abs()))
 }
 
 /// Solves the system of `contacts` at friction `mu` from the starting point (x0, η0).
@@ -65,89 +185,60 @@ pub fn solve_pattern(
     eta0: f64,
     settings: &Settings,
 ) -> Result<Refined, NewtonFailure> {
+    if contacts.is_empty() {
+        return Err(NewtonFailure::Empty);
+    }
     let free: Vec<usize> = (0..contacts.len()).filter(|&i| contacts[i].free).collect();
-    let n_unknowns = 4 + free.len();
-    let n_eq = contacts.len() + free.len();
-    if n_eq < n_unknowns {
-        return Err(NewtonFailure::Underdetermined);
+    let kkt = contacts.len() < 4;
+    let sys = System { arch, mu, contacts: contacts.to_vec(), free, kkt };
+    let mut z: Vec<f64> = x0.to_vec();
+    z.push(eta0);
+    z.extend(sys.free.iter().map(|&i| contacts[i].beta));
+    if kkt {
+        z.extend(initial_multipliers(arch, mu, contacts, &x0, eta0));
     }
     let (lo, hi) = (arch.beta_right(), arch.beta_left());
-    let mut cs = contacts.to_vec();
-    let mut x = x0;
-    let mut eta = eta0;
-    let mut f = residual(arch, mu, &cs, &x, eta);
-    let norm = |f: &[f64]| f.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    let mut fnorm = norm(&f) / scale_of(&x);
-    for iter in 0..settings.newton_max_iter {
+    let n = sys.n_unknowns();
+    let n_eq = contacts.len() + sys.free.len() + if kkt { 4 } else { 0 };
+    let mut f = sys.eval(&z, None);
+    let mut fnorm = inf_norm(&f) / scale_of(&z);
+    let mut iterations = 0;
+    let converged = loop {
         if fnorm <= settings.newton_tol {
-            return Ok(Refined { x, eta, contacts: cs, residual: fnorm, iterations: iter });
+            break true;
         }
-        // Jacobian.
-        let mut jac = DMatrix::<f64>::zeros(n_eq, n_unknowns);
-        let mut row = 0;
-        let mut col_beta = 4;
-        for c in &cs {
-            let a = actions(arch, eta, c.beta);
-            let f0 = a.activation(c.mode, 0, eta, mu);
-            let f1 = a.activation(c.mode, 1, eta, mu);
-            for k in 0..3 {
-                jac[(row, k)] = f0.g[k];
-            }
-            jac[(row, 3)] = a.activation_d_eta(c.mode, 0, &x);
-            if c.free {
-                jac[(row, col_beta)] = f1.at(&x);
-                let f2 = a.activation(c.mode, 2, eta, mu);
-                for k in 0..3 {
-                    jac[(row + 1, k)] = f1.g[k];
-                }
-                jac[(row + 1, 3)] = a.activation_d_eta(c.mode, 1, &x);
-                jac[(row + 1, col_beta)] = f2.at(&x);
-                row += 2;
-                col_beta += 1;
-            } else {
-                row += 1;
-            }
+        if iterations >= settings.newton_max_iter {
+            break fnorm <= 1e3 * settings.newton_tol;
         }
-        // Column equilibration, then least-squares step by SVD.
-        let mut colscale = vec![1.0; n_unknowns];
-        for j in 0..n_unknowns {
+        iterations += 1;
+        let mut jac = DMatrix::<f64>::zeros(n_eq, n);
+        sys.eval(&z, Some(&mut jac));
+        let mut colscale = vec![1.0; n];
+        for (j, cs) in colscale.iter_mut().enumerate() {
             let s = jac.column(j).norm();
             if s > 0.0 {
-                colscale[j] = 1.0 / s;
+                *cs = 1.0 / s;
                 jac.column_mut(j).scale_mut(1.0 / s);
             }
         }
         let rhs = DVector::from_iterator(n_eq, f.iter().map(|v| -v));
         let svd = jac.svd(true, true);
         let smax = svd.singular_values.max();
-        let step = match svd.solve(&rhs, smax * 1e-13) {
-            Ok(s) => s,
-            Err(_) => return Err(NewtonFailure::NoConvergence(fnorm)),
+        let Ok(step) = svd.solve(&rhs, smax * 1e-13) else {
+            return Err(NewtonFailure::NoConvergence(fnorm));
         };
-        // Damped update: accept the first step length that reduces the residual.
+        // Damped update: the first step length that reduces the residual.
         let mut t = 1.0;
         let mut accepted = false;
         for _ in 0..30 {
-            let mut xn = x;
-            for k in 0..3 {
-                xn[k] += t * step[k] * colscale[k];
-            }
-            let etan = eta + t * step[3] * colscale[3];
-            let mut csn = cs.clone();
-            for (j, &i) in free.iter().enumerate() {
-                csn[i].beta += t * step[4 + j] * colscale[4 + j];
-            }
-            let inside = etan > 0.0
-                && etan < 2.0
-                && csn.iter().all(|c| c.beta > lo && c.beta < hi || !c.free);
+            let zn: Vec<f64> = z.iter().enumerate().map(|(j, v)| v + t * step[j] * colscale[j]).collect();
+            let inside = zn[3] > 0.0 && zn[3] < 2.0 && zn[4..4 + sys.free.len()].iter().all(|&b| b > lo && b < hi);
             if inside {
-                let fn_ = residual(arch, mu, &csn, &xn, etan);
-                let nn = norm(&fn_) / scale_of(&xn);
-                if nn < fnorm || nn <= settings.newton_tol {
-                    x = xn;
-                    eta = etan;
-                    cs = csn;
-                    f = fn_;
+                let fnew = sys.eval(&zn, None);
+                let nn = inf_norm(&fnew) / scale_of(&zn);
+                if nn < fnorm {
+                    z = zn;
+                    f = fnew;
                     fnorm = nn;
                     accepted = true;
                     break;
@@ -156,20 +247,38 @@ pub fn solve_pattern(
             t *= 0.5;
         }
         if !accepted {
+            // Stagnation at the rounding level counts as convergence.
             if fnorm <= 1e3 * settings.newton_tol {
-                return Ok(Refined { x, eta, contacts: cs, residual: fnorm, iterations: iter });
+                break true;
             }
-            let any_outside = !(eta > 0.0 && eta < 2.0);
-            return Err(if any_outside {
-                NewtonFailure::LeftDomain
-            } else {
-                NewtonFailure::NoConvergence(fnorm)
-            });
+            let out = !(z[3] > 0.0 && z[3] < 2.0);
+            return Err(if out { NewtonFailure::LeftDomain } else { NewtonFailure::NoConvergence(fnorm) });
         }
+    };
+    if !converged {
+        return Err(NewtonFailure::NoConvergence(fnorm));
     }
-    if fnorm <= settings.newton_tol * 1e3 {
-        Ok(Refined { x, eta, contacts: cs, residual: fnorm, iterations: settings.newton_max_iter })
-    } else {
-        Err(NewtonFailure::NoConvergence(fnorm))
+    let (x, eta, cs) = sys.unpack(&z);
+    let multipliers = if kkt { sys.multipliers(&z).to_vec() } else { Vec::new() };
+    if multipliers.iter().any(|&y| y < 0.0) {
+        return Err(NewtonFailure::NegativeMultiplier);
     }
+    Ok(Refined { x, eta, contacts: cs, multipliers, residual: fnorm, iterations })
+}
+
+/// Least-squares multipliers of [∇ₓφ_i; ∂φ_i/∂η] y = [0; −1] at the starting point.
+fn initial_multipliers(arch: &Arch, mu: f64, contacts: &[Contact], x: &Reactions, eta: f64) -> Vec<f64> {
+    let m = contacts.len();
+    let a = DMatrix::from_fn(4, m, |r, i| {
+        let act = actions(arch, eta, contacts[i].beta);
+        if r < 3 {
+            act.activation(contacts[i].mode, 0, eta, mu).g[r]
+        } else {
+            act.activation_d_eta(contacts[i].mode, 0, x)
+        }
+    });
+    let b = DVector::from_vec(vec![0.0, 0.0, 0.0, -1.0]);
+    let svd = a.svd(true, true);
+    let tol = svd.singular_values.max() * 1e-12;
+    svd.solve(&b, tol).map(|y| y.iter().copied().collect()).unwrap_or_else(|_| vec![1.0; m])
 }

@@ -29,7 +29,7 @@ pub struct Settings {
     /// A local maximum of φ is a candidate active contact when its slack is below
     /// `candidate_rel` · scale at the upper end of the bracket. Default 1e-5.
     pub candidate_rel: f64,
-    /// At most this many candidate contacts enter the enumeration. Default 9.
+    /// At most this many candidate contacts enter the enumeration. Default 8.
     pub max_candidates: usize,
     /// Newton on a pattern's square system stops when the scaled residual is below
     /// `newton_tol`. Default 1e-14.
@@ -55,7 +55,7 @@ impl Default for Settings {
             scan_points: 96,
             bracket_rel: 1e-8,
             candidate_rel: 1e-5,
-            max_candidates: 9,
+            max_candidates: 8,
             newton_tol: 1e-14,
             newton_max_iter: 40,
             same_joint: 1e-7,

@@ -1,1 +1,8 @@
+//! The one integration-test binary (one link on 2 cores); modules by subject.
 
+mod cli;
+mod dense_grid;
+mod hard_cases;
+mod invariants;
+mod model;
+mod reference;

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Installs what a clean machine lacks to build arch-enum: HiGHS (through good_lp's
+# `highs` feature) is compiled from source and needs cmake, and highs-sys runs bindgen,
+# which needs libclang.
+set -euo pipefail
+need=()
+command -v cmake >/dev/null 2>&1 || need+=(cmake)
+dpkg -s libclang-dev >/dev/null 2>&1 || need+=(libclang-dev)
+if [ "${#need[@]}" -gt 0 ]; then
+  echo "setup: installing ${need[*]}" >&2
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${need[@]}" >/dev/null
+fi

@@ -1,0 +1,146 @@
+//! The binary, driven as a user would: JSON contract, exit codes, error messages,
+//! and a digit-stable snapshot of `solve --json`.
+
+use assert_cmd::Command;
+use serde_json::Value;
+
+fn arch_enum() -> Command {
+    Command::cargo_bin("arch-enum").unwrap()
+}
+
+fn json_of(args: &[&str]) -> (Value, i32) {
+    let out = arch_enum().args(args).arg("--json").output().unwrap();
+    let v: Value = serde_json::from_slice(&out.stdout)
+        .unwrap_or_else(|e| panic!("stdout is not one JSON document ({e}): {}", String::from_utf8_lossy(&out.stdout)));
+    (v, out.status.code().unwrap())
+}
+
+/// Rounds every float to 10 significant digits, so snapshots are machine-independent.
+fn round(v: &Value) -> Value {
+    match v {
+        Value::Number(n) if n.is_f64() => {
+            let x = n.as_f64().unwrap();
+            let r: f64 = format!("{x:.9e}").parse().unwrap();
+            // values that are zero up to rounding of O(1) quantities
+            let r = if r.abs() < 1e-13 { 0.0 } else { r };
+            serde_json::json!(r)
+        }
+        Value::Array(a) => Value::Array(a.iter().map(round).collect()),
+        Value::Object(o) => Value::Object(o.iter().map(|(k, v)| (k.clone(), round(v))).collect()),
+        other => other.clone(),
+    }
+}
+
+#[test]
+fn solve_json_contract() {
+    let (v, code) = json_of(&["solve", "--alpha", "0", "--mu", "0.35"]);
+    assert_eq!(code, 0);
+    assert_eq!(v["status"], "ok");
+    for key in ["arch", "mu", "eta", "mode", "pattern", "reactions", "mechanism"] {
+        assert!(v.get(key).is_some(), "missing {key}");
+    }
+    for key in ["beta_right", "beta_left", "weight", "joints"] {
+        assert!(v["arch"].get(key).is_some(), "missing arch.{key}");
+    }
+    for j in v["pattern"].as_array().unwrap() {
+        assert!(j["beta"].is_f64());
+        let kind = j["kind"].as_str().unwrap();
+        assert!(["hinge_extrados", "hinge_intrados", "slide_plus", "slide_minus"].contains(&kind));
+        assert!(["springing", "interior"].contains(&j["at"].as_str().unwrap()));
+    }
+    for key in ["h", "v", "w"] {
+        assert!(v["reactions"][key].is_f64());
+    }
+    for key in ["rates", "dof", "power"] {
+        assert!(v["mechanism"].get(key).is_some());
+    }
+    // snapshot, without the machine-dependent LP bracket
+    let mut snap = round(&v);
+    snap["checks"] = Value::Null;
+    insta::with_settings!({ snapshot_path => "../../snapshots", prepend_module_to_snapshot => false }, {
+        insta::assert_json_snapshot!("solve_alpha0_mu0.35", snap);
+    });
+}
+
+#[test]
+fn infinite_mu_is_null_in_json() {
+    let (v, code) = json_of(&["solve", "--alpha", "0", "--mu", "inf"]);
+    assert_eq!(code, 0);
+    assert!(v["mu"].is_null());
+    assert_eq!(v["mode"], "purely_rotational");
+}
+
+#[test]
+fn no_equilibrium_exit_1() {
+    let (v, code) = json_of(&["solve", "--alpha", "0", "--mu", "0.3"]);
+    assert_eq!(code, 1);
+    assert_eq!(v["status"], "no_equilibrium");
+    assert!(v["message"].as_str().unwrap().contains("mu_ms = 0.309215"));
+    let out = arch_enum().args(["solve", "--alpha", "0", "--mu", "0.3"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("mu_ms = 0.309215"));
+}
+
+#[test]
+fn curve_rows() {
+    let (v, code) = json_of(&["curve", "--alpha", "0", "--mu-min", "0.32", "--mu-max", "0.5", "--points", "4"]);
+    assert_eq!(code, 0);
+    let pts = v["points"].as_array().unwrap();
+    assert_eq!(pts.len(), 4);
+    let etas: Vec<f64> = pts.iter().map(|p| p["eta"].as_f64().unwrap()).collect();
+    assert!(etas.windows(2).all(|w| w[0] >= w[1]), "{etas:?}");
+    assert_eq!(pts[3]["mode"], "purely_rotational");
+    assert!((v["mu_min"].as_f64().unwrap() - 0.30921544).abs() < 5e-9);
+}
+
+/// Every argument's bad values: exit 2 and a message naming the argument and the range.
+#[test]
+fn bad_input_table() {
+    let cases: &[(&[&str], &str)] = &[
+        (&["solve", "--alpha", "0", "--mu", "nan"], "--mu"),
+        (&["solve", "--alpha", "0", "--mu", "0"], "--mu"),
+        (&["solve", "--alpha", "0", "--mu", "-1"], "--mu"),
+        (&["solve", "--alpha", "0", "--mu", "abc"], "--mu"),
+        (&["solve", "--alpha", "nan", "--mu", "1"], "--alpha"),
+        (&["solve", "--alpha", "2", "--mu", "1"], "--alpha"),
+        (&["solve", "--alpha", "-1.6", "--mu", "1"], "--alpha"),
+        (&["solve", "--alpha", "inf", "--mu", "1"], "--alpha"),
+        (&["solve", "--alpha-deg", "95", "--mu", "1"], "--alpha-deg"),
+        (&["solve", "--beta-right", "1", "--beta-left", "0.5", "--mu", "1"], "--beta-right"),
+        (&["solve", "--beta-right", "0", "--beta-left", "7", "--mu", "1"], "--beta-right"),
+        (&["solve", "--beta-right", "0", "--mu", "1"], "--beta-left"),
+        (&["solve", "--alpha", "0", "--blocks", "0", "--mu", "1"], "--blocks"),
+        (&["solve", "--alpha", "0", "--blocks", "-3", "--mu", "1"], "--blocks"),
+        (&["solve", "--alpha", "0", "--joints", "0.5,0.4", "--mu", "1"], "--joints"),
+        (&["solve", "--alpha", "0", "--joints", "4.0", "--mu", "1"], "--joints"),
+        (&["solve", "--alpha", "0", "--weight", "heavy", "--mu", "1"], "--weight"),
+        (&["solve", "--mu", "1"], "--alpha"),
+        (&["solve", "--alpha", "0", "--mu", "1", "--frobnicate"], "--frobnicate"),
+        (&["curve", "--alpha", "0", "--mu-min", "-1"], "--mu-min"),
+        (&["curve", "--alpha", "0", "--mu-min", "1", "--mu-max", "0.5"], "--mu-max"),
+        (&["curve", "--alpha", "0", "--points", "0"], "--points"),
+    ];
+    for (args, name) in cases {
+        let out = arch_enum().args(*args).output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(name), "{args:?}: message does not name {name}: {err}");
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+    }
+}
+
+#[test]
+fn bad_input_json_document() {
+    let (v, code) = json_of(&["solve", "--alpha", "0", "--mu", "-2"]);
+    assert_eq!(code, 2);
+    assert_eq!(v["status"], "bad_input");
+    assert!(v["message"].as_str().unwrap().contains("--mu"));
+}
+
+#[test]
+fn explain_lists_candidates() {
+    let out = arch_enum().args(["solve", "--alpha", "0", "--mu", "0.35", "--explain"]).output().unwrap();
+    let s = String::from_utf8_lossy(&out.stdout);
+    assert!(s.contains("patterns tried"));
+    assert!(s.contains("kept: admissible"));
+}

@@ -1,0 +1,105 @@
+//! Numerically hard cases as named regression tests, each saying why it is hard.
+//! Each must give a verified limit state or an honest outcome — never a panic.
+
+use crate::invariants::check_limit_state;
+use arch_enum::{solve, Arch, LimitState, Mode, Outcome, Settings, WeightModel};
+use std::f64::consts::PI;
+
+fn outcome(arch: &Arch, mu: f64) -> Outcome {
+    solve(arch, mu, &Settings::default()).unwrap().outcome
+}
+
+fn limit(arch: &Arch, mu: f64) -> LimitState {
+    match outcome(arch, mu) {
+        Outcome::Limit(ls) => {
+            check_limit_state(arch, &ls);
+            ls
+        }
+        other => panic!("{arch:?}, mu = {mu}: {other:?}"),
+    }
+}
+
+/// Very shallow segment: η* ~ 5e-7, so φ is a difference of O(1) terms that cancel
+/// to 1e-7; absolute tolerances would accept wrong patterns.
+#[test]
+fn very_shallow_segment() {
+    let arch = Arch::symmetric(-1.5, WeightModel::Centreline).unwrap();
+    let ls = limit(&arch, f64::INFINITY);
+    assert!(ls.eta > 0.0 && ls.eta < 1e-6, "{}", ls.eta);
+    assert_eq!(ls.mode, Mode::PurelyRotational);
+    assert_eq!(ls.pattern.len(), 5, "{:?}", ls.pattern);
+}
+
+/// α = 1.15 at μ = ∞: the limit is an overturning mode with N = 0 at the crown, where
+/// both hinge functions are active at once and the tangency conditions degenerate.
+#[test]
+fn overturning_horseshoe() {
+    let arch = Arch::symmetric(1.15, WeightModel::Centreline).unwrap();
+    let ls = limit(&arch, f64::INFINITY);
+    assert_eq!(ls.mode, Mode::Overturning);
+    let crown: Vec<_> = ls.pattern.iter().filter(|c| (c.beta - PI / 2.0).abs() < 1e-6).collect();
+    assert_eq!(crown.len(), 2, "E and I at the crown: {:?}", ls.pattern);
+    let (n, _, _) = crate::model::ntm(arch.beta_right(), 1.0, ls.x, PI / 2.0);
+    assert!(n.abs() < 1e-10, "N at the crown = {n}");
+}
+
+/// μ = 1e12 must give the infinite-friction answer (sliding functions are active in
+/// the LP but far from binding).
+#[test]
+fn huge_friction_equals_infinite() {
+    let arch = Arch::symmetric(0.3, WeightModel::Centreline).unwrap();
+    let a = limit(&arch, 1e12);
+    let b = limit(&arch, f64::INFINITY);
+    assert!((a.eta - b.eta).abs() < 1e-13, "{} vs {}", a.eta, b.eta);
+}
+
+/// Just above μ_ms the arch needs almost the thickness of the sliding corner; just
+/// below, nothing stands.
+#[test]
+fn just_around_mu_ms() {
+    let arch = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();
+    let mu_ms = arch_enum::least_friction(&arch, &Settings::default()).unwrap().unwrap();
+    let ls = limit(&arch, mu_ms * (1.0 + 1e-6));
+    assert!(ls.eta > 0.2 && ls.eta < 0.2007, "{}", ls.eta);
+    assert!(matches!(outcome(&arch, mu_ms * (1.0 - 1e-6)), Outcome::NoEquilibrium { .. }));
+}
+
+/// Horseshoe arches beyond a certain opening cannot stand at any thickness η < 2.
+#[test]
+fn opening_too_large_to_stand() {
+    let arch = Arch::symmetric(1.35, WeightModel::Centreline).unwrap();
+    assert!(matches!(outcome(&arch, f64::INFINITY), Outcome::NoEquilibrium { .. }));
+}
+
+/// Discrete arches with very few blocks: with two or three voussoirs a thrust line
+/// through the joint centres exists, so the arch stands at every thickness.
+#[test]
+fn very_few_blocks() {
+    let arch = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();
+    for n in [1, 2, 3] {
+        let out = outcome(&arch.clone().with_blocks(n).unwrap(), f64::INFINITY);
+        assert!(matches!(out, Outcome::NoCollapse { .. }), "{n} blocks: {out:?}");
+    }
+    let ls = limit(&arch.clone().with_blocks(4).unwrap(), f64::INFINITY);
+    assert!(ls.eta > 0.0 && ls.eta < 0.10742645);
+}
+
+/// Ten thousand voussoirs: the scan is over 10 001 listed joints, and the answer must
+/// approach the continuous one from below.
+#[test]
+fn many_blocks() {
+    let arch = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();
+    let c = limit(&arch, f64::INFINITY).eta;
+    let d = limit(&arch.clone().with_blocks(10_000).unwrap(), f64::INFINITY).eta;
+    assert!(d <= c && c - d < 1e-7, "{d} vs {c}");
+}
+
+/// One springing far below the other: strongly unsymmetric.
+#[test]
+fn strongly_unsymmetric() {
+    let arch = Arch::new(-0.9, PI + 0.1, WeightModel::Centreline).unwrap();
+    let ls = limit(&arch, f64::INFINITY);
+    assert!(!ls.mechanism.symmetric);
+    let ls = limit(&arch, 2.0);
+    assert!(ls.eta > 0.0);
+}
