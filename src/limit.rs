@@ -18,7 +18,7 @@ use crate::contact::{Contact, Peak};
 use crate::lp::LpOutcome;
 use crate::mechanism::{self, Mechanism};
 use crate::mode::{classify, Mode};
-use crate::refine::{solve_pattern, NewtonFailure};
+use crate::refine::{solve_pattern, NewtonFailure, Refined};
 use crate::scan::State;
 use crate::settings::Settings;
 use crate::statics::{magnitude, JointMode, Reactions};
@@ -31,6 +31,10 @@ pub struct LimitState {
     pub mu: f64,
     /// The least thickness ratio η*(μ).
     pub eta: f64,
+    /// The least η with a statically admissible state. Equal to `eta` unless that
+    /// state carries no mechanism without dilatancy (non-associative gap), in which
+    /// case the limit state lies above it.
+    pub eta_static: f64,
     /// Reactions x = (h, v, w) at the right springing.
     pub x: Reactions,
     /// The active pattern: every contact with φ = 0 at this state, by increasing β.
@@ -256,33 +260,100 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
     };
     let (eta_lo, eta_hi, m_hi) = (lo.0, hi.0, hi.2);
 
-    // Candidate contacts at the upper end of the bracket.
-    let state = State { arch, eta: eta_hi, mu, x: m_hi.x };
-    let scale = scale_of(&m_hi.x);
+    // Candidate contacts at the upper end of the bracket, then the enumeration.
+    let cand = candidates_at(arch, mu, eta_hi, &m_hi.x, Some(m_hi.margin.max(0.0)), settings);
+    let sizes: Vec<usize> = (2..=5).collect();
+    let first = enumerate(arch, mu, &cand, &sizes, m_hi.x, eta_hi, (eta_lo, eta_hi), settings, log);
+    if let Some(ls) = first.limit {
+        // η_hi carries a state verified admissible by exact evaluation over the whole
+        // arch, so η* ≤ η_hi: a verified pattern above it is not the least. (The lower
+        // end comes from the LP's infeasibility decision, accurate only to HiGHS's
+        // tolerance, and a verified state below it is simply better.)
+        return if ls.eta > eta_hi * (1.0 + 1e-9) {
+            unresolved(
+                eta_lo,
+                eta_hi,
+                format!("the least verified pattern gives eta = {} above an admissible state at {eta_hi}", ls.eta),
+            )
+        } else {
+            Outcome::Limit(ls)
+        };
+    }
+    let Some(st) = first.least_static else {
+        return unresolved(eta_lo, eta_hi, "no enumerated pattern gave a verified limit state".into());
+    };
+    // Non-associative gap: the least admissible state carries no mechanism without
+    // dilatancy. A limit state then needs a larger η and another active set: widen the
+    // pool to the best local maxima at that state, whatever their slack, and enumerate
+    // determined patterns (four or five contacts).
+    let pool = candidates_at(arch, mu, st.eta, &st.x, None, settings);
+    let second = enumerate(arch, mu, &pool, &[4, 5], st.x, st.eta, (eta_lo, eta_hi), settings, log);
+    match second.limit {
+        Some(mut ls) if ls.eta >= st.eta * (1.0 - 1e-12) => {
+            ls.eta_static = st.eta;
+            Outcome::Limit(ls)
+        }
+        _ => unresolved(
+            st.eta,
+            f64::INFINITY,
+            format!(
+                "the least admissible state (eta = {}) has no non-associative mechanism, and no enumerated pattern gave a limit state above it",
+                st.eta
+            ),
+        ),
+    }
+}
+
+/// Local maxima of φ at the state (η, x) that may be active contacts, best first: with
+/// `margin` given, those whose normalised slack is within `candidate_rel` of it; with
+/// `None`, simply the best ones. At most `max_candidates`.
+fn candidates_at(arch: &Arch, mu: f64, eta: f64, x: &Reactions, margin: Option<f64>, settings: &Settings) -> Vec<Contact> {
+    let state = State { arch, eta, mu, x: *x };
+    let limit = margin.map_or(f64::INFINITY, |m| m + settings.candidate_rel * scale_of(x));
     let mut peaks: Vec<(f64, Peak)> = state
         .near_active(settings, f64::NEG_INFINITY)
         .into_iter()
-        .map(|p| {
-            let slack = -p.value / grad_norm(arch, eta_hi, mu, p.contact.mode, p.contact.beta);
-            (slack, p)
-        })
-        .filter(|(slack, _)| *slack <= m_hi.margin.max(0.0) + settings.candidate_rel * scale)
+        .map(|p| (-p.value / grad_norm(arch, eta, mu, p.contact.mode, p.contact.beta), p))
+        .filter(|(slack, _)| *slack <= limit)
         .collect();
     peaks.sort_by(|a, b| a.0.total_cmp(&b.0));
     peaks.truncate(settings.max_candidates);
-    let cand: Vec<Contact> = peaks.iter().map(|(_, p)| p.contact).collect();
+    peaks.into_iter().map(|(_, p)| p.contact).collect()
+}
 
-    // Enumerate patterns and refine each.
+/// What one enumeration found.
+struct Enumeration {
+    /// The verified limit state of least η.
+    limit: Option<LimitState>,
+    /// The least-η statically admissible refined state (with or without mechanism).
+    least_static: Option<Refined>,
+}
+
+/// Refines every subset of `cand` of the given sizes (and the whole set), then
+/// verifies in increasing η: static admissibility over the arch, then a mechanism on
+/// the active set. Logs every pattern.
+#[allow(clippy::too_many_arguments)]
+fn enumerate(
+    arch: &Arch,
+    mu: f64,
+    cand: &[Contact],
+    sizes: &[usize],
+    x0: Reactions,
+    eta0: f64,
+    bracket: (f64, f64),
+    settings: &Settings,
+    log: &mut Vec<Candidate>,
+) -> Enumeration {
     let mut subsets: Vec<Vec<Contact>> = Vec::new();
-    for k in 2..=5 {
+    for &k in sizes {
         if cand.len() > k {
             subsets.extend(cand.iter().copied().combinations(k));
         }
     }
-    subsets.push(cand.clone());
+    subsets.push(cand.to_vec());
     let mut refined = Vec::new();
     for s in subsets {
-        match solve_pattern(arch, mu, &s, m_hi.x, eta_hi, settings) {
+        match solve_pattern(arch, mu, &s, x0, eta0, settings) {
             Ok(r) => refined.push((s, r)),
             Err(f) => log.push(Candidate {
                 contacts: s,
@@ -298,13 +369,13 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
     }
     refined.sort_by(|a, b| a.1.eta.total_cmp(&b.1.eta));
 
-    let mut found: Option<LimitState> = None;
+    let mut out = Enumeration { limit: None, least_static: None };
     let mut last_eta = f64::NAN;
     for (s, r) in refined {
         let push = |log: &mut Vec<Candidate>, verdict: String| {
             log.push(Candidate { contacts: s.clone(), eta: Some(r.eta), verdict })
         };
-        if found.is_some() {
+        if out.limit.is_some() {
             push(log, "not needed: a limit state of lower or equal eta was verified".into());
             continue;
         }
@@ -318,6 +389,9 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
         if worst > settings.adm_tol {
             push(log, format!("rejected: not admissible over the arch (max phi = {worst:.2e})"));
             continue;
+        }
+        if out.least_static.is_none() {
+            out.least_static = Some(r.clone());
         }
         if r.eta == last_eta {
             push(log, "same state as a pattern already checked".into());
@@ -334,40 +408,24 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
             Ok(Some(mech)) => {
                 push(log, format!("kept: admissible (max phi = {worst:.2e}), mechanism with {} dof", mech.dof));
                 let mode = classify(&pattern, 0.5 * (arch.beta_right() + arch.beta_left()), settings.same_joint);
-                found = Some(LimitState {
+                out.limit = Some(LimitState {
                     mu,
                     eta: r.eta,
+                    eta_static: r.eta,
                     x: r.x,
                     pattern,
                     mode,
                     mechanism: mech,
                     newton_residual: r.residual,
                     max_phi: worst,
-                    bracket: (eta_lo, eta_hi),
+                    bracket,
                 });
             }
             Ok(None) => push(log, "rejected: admissible, but no non-associative mechanism on its active set".into()),
             Err(e) => push(log, format!("rejected: kinematic LP failed ({e:?})")),
         }
     }
-    match found {
-        Some(ls) => {
-            // η_hi carries a state verified admissible by exact evaluation over the
-            // whole arch, so η* ≤ η_hi: a verified pattern above it is not the least.
-            // (The lower end comes from the LP's infeasibility decision, accurate only
-            // to HiGHS's tolerance, and a verified state below it is simply better.)
-            if ls.eta > eta_hi * (1.0 + 1e-9) {
-                unresolved(
-                    eta_lo,
-                    eta_hi,
-                    format!("the least verified pattern gives eta = {} above an admissible state at {eta_hi}", ls.eta),
-                )
-            } else {
-                Outcome::Limit(ls)
-            }
-        }
-        None => unresolved(eta_lo, eta_hi, "no enumerated pattern gave a verified limit state".into()),
-    }
+    out
 }
 
 fn unresolved(eta_lo: f64, eta_hi: f64, reason: String) -> Outcome {

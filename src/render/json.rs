@@ -64,6 +64,7 @@ struct MechanismJson {
 
 #[derive(Debug, Serialize)]
 struct Checks {
+    eta_static: f64,
     newton_residual: f64,
     max_phi: f64,
     eta_bracket: [f64; 2],
@@ -135,6 +136,7 @@ fn limit_parts(ls: &LimitState) -> (Vec<Contact>, Reactions, MechanismJson, Chec
             complementarity_residual: m.complementarity,
         },
         Checks {
+            eta_static: ls.eta_static,
             newton_residual: ls.newton_residual,
             max_phi: ls.max_phi,
             eta_bracket: [ls.bracket.0, ls.bracket.1],

@@ -98,6 +98,13 @@ pub fn solve(sol: &Solution, explain: bool) -> String {
     match &sol.outcome {
         Outcome::Limit(ls) => {
             let _ = writeln!(s, "least thickness     eta* = t/r = {:.12}", ls.eta);
+            if ls.eta_static < ls.eta {
+                let _ = writeln!(
+                    s,
+                    "note                the least admissible state (eta = {:.12}) has no mechanism\n                    without dilatancy: the limit state lies above it (non-associative gap)",
+                    ls.eta_static
+                );
+            }
             let _ = writeln!(s, "collapse mode       {}", ls.mode.name());
             let _ = writeln!(s, "active pattern ({} contacts):", ls.pattern.len());
             s.push_str(&pattern_table(&sol.arch, &ls.pattern, None));

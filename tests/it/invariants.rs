@@ -68,7 +68,8 @@ fn mu_strategy() -> impl Strategy<Value = f64> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
+    // 24 cases per property in CI; PROPTEST_CASES=N for a longer run.
+    #![proptest_config(ProptestConfig { cases: std::env::var("PROPTEST_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(24), ..ProptestConfig::default() })]
 
     #[test]
     fn limit_states_verify_and_eta_decreases_with_mu(alpha in -1.2f64..1.1, mu in 0.2f64..3.0, factor in 1.05f64..3.0) {
