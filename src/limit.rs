@@ -263,7 +263,7 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
     // Candidate contacts at the upper end of the bracket, then the enumeration.
     let cand = candidates_at(arch, mu, eta_hi, &m_hi.x, Some(m_hi.margin.max(0.0)), settings);
     let sizes: Vec<usize> = (2..=5).collect();
-    let first = enumerate(arch, mu, &cand, &sizes, m_hi.x, eta_hi, (eta_lo, eta_hi), settings, log);
+    let first = enumerate(arch, mu, &cand, &sizes, m_hi.x, eta_hi, (eta_lo, eta_hi), eta_hi * (1.0 + 1e-9), settings, log);
     if let Some(ls) = first.limit {
         // η_hi carries a state verified admissible by exact evaluation over the whole
         // arch, so η* ≤ η_hi: a verified pattern above it is not the least. (The lower
@@ -287,7 +287,7 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
     // pool to the best local maxima at that state, whatever their slack, and enumerate
     // determined patterns (four or five contacts).
     let pool = candidates_at(arch, mu, st.eta, &st.x, None, settings);
-    let second = enumerate(arch, mu, &pool, &[4, 5], st.x, st.eta, (eta_lo, eta_hi), settings, log);
+    let second = enumerate(arch, mu, &pool, &[4, 5], st.x, st.eta, (eta_lo, eta_hi), 0.0, settings, log);
     match second.limit {
         Some(mut ls) if ls.eta >= st.eta * (1.0 - 1e-12) => {
             ls.eta_static = st.eta;
@@ -330,8 +330,10 @@ struct Enumeration {
 }
 
 /// Refines every subset of `cand` of the given sizes (and the whole set), then
-/// verifies in increasing η: static admissibility over the arch, then a mechanism on
-/// the active set. Logs every pattern.
+/// verifies: static admissibility over the whole arch, then a mechanism on the
+/// active set. Groups go largest first (the whole set, then subsets by decreasing
+/// size); every admissible state has η at least the static least thickness, so once
+/// a limit state at most `stop_at` is verified, later groups are not tried.
 #[allow(clippy::too_many_arguments)]
 fn enumerate(
     arch: &Arch,
@@ -341,18 +343,51 @@ fn enumerate(
     x0: Reactions,
     eta0: f64,
     bracket: (f64, f64),
+    stop_at: f64,
     settings: &Settings,
     log: &mut Vec<Candidate>,
 ) -> Enumeration {
-    let mut subsets: Vec<Vec<Contact>> = Vec::new();
-    for &k in sizes {
+    let mut groups: Vec<Vec<Vec<Contact>>> = vec![vec![cand.to_vec()]];
+    let mut sizes = sizes.to_vec();
+    sizes.sort_unstable_by(|a, b| b.cmp(a));
+    for k in sizes {
         if cand.len() > k {
-            subsets.extend(cand.iter().copied().combinations(k));
+            groups.push(cand.iter().copied().combinations(k).collect());
         }
     }
-    subsets.push(cand.to_vec());
+    let mut out = Enumeration { limit: None, least_static: None };
+    for group in groups {
+        if out.limit.as_ref().is_some_and(|l| l.eta <= stop_at) {
+            for s in group {
+                log.push(Candidate {
+                    contacts: s,
+                    eta: None,
+                    verdict: "not tried: a limit state at the static least thickness is verified".into(),
+                });
+            }
+            continue;
+        }
+        verify_group(arch, mu, group, x0, eta0, bracket, settings, log, &mut out);
+    }
+    out
+}
+
+/// Refines each pattern of `group`, then verifies them in increasing η, keeping the
+/// least verified limit state and the least admissible state in `out`.
+#[allow(clippy::too_many_arguments)]
+fn verify_group(
+    arch: &Arch,
+    mu: f64,
+    group: Vec<Vec<Contact>>,
+    x0: Reactions,
+    eta0: f64,
+    bracket: (f64, f64),
+    settings: &Settings,
+    log: &mut Vec<Candidate>,
+    out: &mut Enumeration,
+) {
     let mut refined = Vec::new();
-    for s in subsets {
+    for s in group {
         match solve_pattern(arch, mu, &s, x0, eta0, settings) {
             Ok(r) => refined.push((s, r)),
             Err(f) => log.push(Candidate {
@@ -368,14 +403,12 @@ fn enumerate(
         }
     }
     refined.sort_by(|a, b| a.1.eta.total_cmp(&b.1.eta));
-
-    let mut out = Enumeration { limit: None, least_static: None };
     let mut last_eta = f64::NAN;
     for (s, r) in refined {
         let push = |log: &mut Vec<Candidate>, verdict: String| {
             log.push(Candidate { contacts: s.clone(), eta: Some(r.eta), verdict })
         };
-        if out.limit.is_some() {
+        if out.limit.as_ref().is_some_and(|l| l.eta <= r.eta) {
             push(log, "not needed: a limit state of lower or equal eta was verified".into());
             continue;
         }
@@ -390,7 +423,7 @@ fn enumerate(
             push(log, format!("rejected: not admissible over the arch (max phi = {worst:.2e})"));
             continue;
         }
-        if out.least_static.is_none() {
+        if out.least_static.as_ref().is_none_or(|l| r.eta < l.eta) {
             out.least_static = Some(r.clone());
         }
         if r.eta == last_eta {
@@ -425,7 +458,6 @@ fn enumerate(
             Err(e) => push(log, format!("rejected: kinematic LP failed ({e:?})")),
         }
     }
-    out
 }
 
 fn unresolved(eta_lo: f64, eta_hi: f64, reason: String) -> Outcome {

@@ -24,6 +24,7 @@ fn configure(problem: good_lp::solvers::highs::HighsProblem, tol: f64) -> good_l
         .set_option("primal_feasibility_tolerance", tol)
         .set_option("dual_feasibility_tolerance", tol)
         .set_option("output_flag", false)
+        .set_option("presolve", "off")
         .set_threads(1)
 }
 
