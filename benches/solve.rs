@@ -7,18 +7,51 @@ use std::hint::black_box;
 fn bench_solve(c: &mut Criterion) {
     let s = Settings::default();
     let cases: Vec<(&str, Arch, f64)> = vec![
-        ("semicircle_mu_inf", Arch::symmetric(0.0, WeightModel::Centreline).unwrap(), f64::INFINITY),
-        ("semicircle_mu_0.35_mixed", Arch::symmetric(0.0, WeightModel::Centreline).unwrap(), 0.35),
-        ("alpha1_mu_2_mixed", Arch::symmetric(1.0, WeightModel::Centreline).unwrap(), 2.0),
-        ("alpha1.15_mu_inf_overturning", Arch::symmetric(1.15, WeightModel::Centreline).unwrap(), f64::INFINITY),
-        ("shallow_alpha-1.2_mu_inf", Arch::symmetric(-1.2, WeightModel::Centreline).unwrap(), f64::INFINITY),
-        ("discrete_100_blocks_mu_0.35", Arch::symmetric(0.0, WeightModel::Centreline).unwrap().with_blocks(100).unwrap(), 0.35),
-        ("below_mu_ms_no_equilibrium", Arch::symmetric(0.0, WeightModel::Centreline).unwrap(), 0.3),
+        (
+            "semicircle_mu_inf",
+            Arch::symmetric(0.0, WeightModel::Centreline).unwrap(),
+            f64::INFINITY,
+        ),
+        (
+            "semicircle_mu_0.35_mixed",
+            Arch::symmetric(0.0, WeightModel::Centreline).unwrap(),
+            0.35,
+        ),
+        (
+            "alpha1_mu_2_mixed",
+            Arch::symmetric(1.0, WeightModel::Centreline).unwrap(),
+            2.0,
+        ),
+        (
+            "alpha1.15_mu_inf_overturning",
+            Arch::symmetric(1.15, WeightModel::Centreline).unwrap(),
+            f64::INFINITY,
+        ),
+        (
+            "shallow_alpha-1.2_mu_inf",
+            Arch::symmetric(-1.2, WeightModel::Centreline).unwrap(),
+            f64::INFINITY,
+        ),
+        (
+            "discrete_100_blocks_mu_0.35",
+            Arch::symmetric(0.0, WeightModel::Centreline)
+                .unwrap()
+                .with_blocks(100)
+                .unwrap(),
+            0.35,
+        ),
+        (
+            "below_mu_ms_no_equilibrium",
+            Arch::symmetric(0.0, WeightModel::Centreline).unwrap(),
+            0.3,
+        ),
     ];
     let mut g = c.benchmark_group("solve");
     g.sample_size(20);
     for (name, arch, mu) in &cases {
-        g.bench_function(*name, |b| b.iter(|| solve(black_box(arch), black_box(*mu), &s).unwrap()));
+        g.bench_function(*name, |b| {
+            b.iter(|| solve(black_box(arch), black_box(*mu), &s).unwrap())
+        });
     }
     g.finish();
 }

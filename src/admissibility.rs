@@ -37,7 +37,15 @@ impl WorkingSet {
         let joints = match arch.layout() {
             JointLayout::Continuous => {
                 let (a, b) = (arch.beta_right(), arch.beta_left());
-                (0..=8).map(|i| if i == 8 { b } else { a + (b - a) * i as f64 / 8.0 }).collect()
+                (0..=8)
+                    .map(|i| {
+                        if i == 8 {
+                            b
+                        } else {
+                            a + (b - a) * i as f64 / 8.0
+                        }
+                    })
+                    .collect()
             }
             JointLayout::Discrete(j) => {
                 let stride = (j.len() / 8).max(1);
@@ -69,7 +77,9 @@ impl WorkingSet {
 
 /// ‖∇ₓφ‖ of `mode` at `beta`.
 pub fn grad_norm(arch: &Arch, eta: f64, mu: f64, mode: JointMode, beta: Radians) -> f64 {
-    actions(arch, eta, beta).activation(mode, 0, eta, mu).grad_norm()
+    actions(arch, eta, beta)
+        .activation(mode, 0, eta, mu)
+        .grad_norm()
 }
 
 /// How far constraint generation goes.

@@ -268,7 +268,9 @@ impl Arch {
     pub fn mirrored(&self) -> Arch {
         let layout = match &self.layout {
             JointLayout::Continuous => JointLayout::Continuous,
-            JointLayout::Discrete(j) => JointLayout::Discrete(j.iter().rev().map(|b| PI - b).collect()),
+            JointLayout::Discrete(j) => {
+                JointLayout::Discrete(j.iter().rev().map(|b| PI - b).collect())
+            }
         };
         Arch {
             beta_right: PI - self.beta_left,

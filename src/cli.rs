@@ -39,7 +39,9 @@ struct Cli {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// The least thickness eta*(mu), the collapse mode, the active pattern, the reactions and a mechanism.
-    #[command(after_help = "Example:\n  arch-enum solve --alpha 0 --mu 0.35\n  arch-enum solve --alpha 0.5 --blocks 12 --mu inf --json")]
+    #[command(
+        after_help = "Example:\n  arch-enum solve --alpha 0 --mu 0.35\n  arch-enum solve --alpha 0.5 --blocks 12 --mu inf --json"
+    )]
     Solve {
         #[command(flatten)]
         arch: ArchArgs,
@@ -54,7 +56,9 @@ enum Command {
         json: bool,
     },
     /// eta*(mu) sampled at geometrically spaced mu, one row per mu, with the mode.
-    #[command(after_help = "Example:\n  arch-enum curve --alpha 0 --points 10\n  arch-enum curve --alpha 1 --mu-min 1 --mu-max 100 --json")]
+    #[command(
+        after_help = "Example:\n  arch-enum curve --alpha 0 --points 10\n  arch-enum curve --alpha 1 --mu-min 1 --mu-max 100 --json"
+    )]
     Curve {
         #[command(flatten)]
         arch: ArchArgs,
@@ -90,7 +94,12 @@ struct ArchArgs {
     #[arg(long, allow_negative_numbers = true, group = "shape")]
     alpha_deg: Option<f64>,
     /// Right springing angle of an unsymmetric arch (radians); needs --beta-left.
-    #[arg(long, allow_negative_numbers = true, group = "shape", requires = "beta_left")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        group = "shape",
+        requires = "beta_left"
+    )]
     beta_right: Option<f64>,
     /// Left springing angle (radians), beta_right < beta_left <= beta_right + 2 pi.
     #[arg(long, allow_negative_numbers = true, requires = "beta_right")]
@@ -150,7 +159,13 @@ fn to_json<T: serde::Serialize>(value: &T) -> String {
 fn bad_input(e: &InputError, json_out: bool, out: &mut dyn Write, err: &mut dyn Write) -> i32 {
     emit(err, &format!("error: {e}\n"));
     if json_out {
-        emit(out, &to_json(&json::ErrorJson { status: "bad_input", message: e.to_string() }));
+        emit(
+            out,
+            &to_json(&json::ErrorJson {
+                status: "bad_input",
+                message: e.to_string(),
+            }),
+        );
     }
     EXIT_BAD_INPUT
 }
@@ -165,7 +180,11 @@ where
     let cli = match Cli::try_parse_from(args) {
         Ok(c) => c,
         Err(e) => {
-            let code = if e.use_stderr() { EXIT_BAD_INPUT } else { EXIT_OK };
+            let code = if e.use_stderr() {
+                EXIT_BAD_INPUT
+            } else {
+                EXIT_OK
+            };
             let text = e.render().to_string();
             if e.use_stderr() {
                 emit(err, &text);
@@ -177,7 +196,12 @@ where
     };
     let settings = Settings::default();
     match cli.command {
-        Command::Solve { arch, mu, explain, json: json_out } => {
+        Command::Solve {
+            arch,
+            mu,
+            explain,
+            json: json_out,
+        } => {
             let sol = match arch.build().and_then(|a| solve(&a, mu, &settings)) {
                 Ok(s) => s,
                 Err(e) => return bad_input(&e, json_out, out, err),
@@ -199,7 +223,13 @@ where
                 }
             }
         }
-        Command::Curve { arch, mu_min, mu_max, points, json: json_out } => {
+        Command::Curve {
+            arch,
+            mu_min,
+            mu_max,
+            points,
+            json: json_out,
+        } => {
             let arch = match arch.build() {
                 Ok(a) => a,
                 Err(e) => return bad_input(&e, json_out, out, err),
@@ -207,7 +237,11 @@ where
             for (name, v) in [("--mu-min", mu_min), ("--mu-max", mu_max)] {
                 if let Some(v) = v {
                     if !(v.is_finite() && v > 0.0) {
-                        let e = InputError::OutOfRange { arg: name, value: crate::arch::fmt_value(v), range: "0 < mu < inf".into() };
+                        let e = InputError::OutOfRange {
+                            arg: name,
+                            value: crate::arch::fmt_value(v),
+                            range: "0 < mu < inf".into(),
+                        };
                         return bad_input(&e, json_out, out, err);
                     }
                 }

@@ -53,7 +53,11 @@ pub fn mu_grid(mu_min: f64, mu_max: f64, points: usize) -> Result<Vec<f64>, Inpu
 }
 
 /// Solves η*(μ) at every μ of `mus`.
-pub fn sample(arch: &Arch, mus: &[f64], settings: &Settings) -> Result<Vec<CurvePoint>, InputError> {
+pub fn sample(
+    arch: &Arch,
+    mus: &[f64],
+    settings: &Settings,
+) -> Result<Vec<CurvePoint>, InputError> {
     mus.iter()
         .map(|&mu| {
             Ok(CurvePoint {

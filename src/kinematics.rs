@@ -70,9 +70,9 @@ pub fn mirror_indices(contacts: &[Contact], tol: f64) -> Option<Vec<usize>> {
     contacts
         .iter()
         .map(|c| {
-            contacts.iter().position(|d| {
-                d.mode == c.mode.mirrored() && (d.beta - (PI - c.beta)).abs() <= tol
-            })
+            contacts
+                .iter()
+                .position(|d| d.mode == c.mode.mirrored() && (d.beta - (PI - c.beta)).abs() <= tol)
         })
         .collect()
 }

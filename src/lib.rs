@@ -38,11 +38,11 @@
 
 pub mod admissibility;
 pub mod arch;
+pub mod cli;
 pub mod contact;
 pub mod curve;
 pub mod kinematics;
 pub mod limit;
-pub mod cli;
 pub mod lp;
 pub mod mechanism;
 pub mod mode;

@@ -125,6 +125,9 @@ fn margin_at(
     })
 }
 
+/// The ends of a bracket: (η, f) below the root, (η, f, payload) at or above it.
+type Bracket<T> = ((f64, f64), (f64, f64, T));
+
 /// Root of an increasing function f on [lo, hi] with f(lo) < 0 ≤ f(hi): Illinois
 /// regula falsi with geometric bisection as a safeguard. `eval` returns f and the
 /// payload kept for the upper end. Stops when hi − lo ≤ rel · hi.
@@ -134,7 +137,7 @@ fn bracket_root<T: Clone>(
     rel: f64,
     max_iter: usize,
     mut eval: impl FnMut(f64) -> Result<(f64, T), String>,
-) -> Result<((f64, f64), (f64, f64, T)), String> {
+) -> Result<Bracket<T>, String> {
     let mut side = 0i32;
     let (mut flo, mut fhi) = (lo.1, hi.1);
     let mut widths = [f64::INFINITY; 3];
@@ -205,7 +208,13 @@ pub fn least_friction(arch: &Arch, settings: &Settings) -> Result<Option<f64>, S
     if f0 >= 0.0 {
         return Ok(Some(0.0));
     }
-    let (_, hi) = bracket_root((0.0, f0), (hi, fhi, ()), settings.bracket_rel * 1e-4, 200, f)?;
+    let (_, hi) = bracket_root(
+        (0.0, f0),
+        (hi, fhi, ()),
+        settings.bracket_rel * 1e-4,
+        200,
+        f,
+    )?;
     Ok(Some(hi.0))
 }
 
@@ -241,7 +250,9 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
     };
     if bottom.margin >= -settings.adm_tol * scale_of(&bottom.x) {
         return Outcome::NoCollapse {
-            reason: "a state is admissible at vanishing thickness, so the arch stands at every eta > 0".into(),
+            reason:
+                "a state is admissible at vanishing thickness, so the arch stands at every eta > 0"
+                    .into(),
         };
     }
     let bracket = bracket_root(
@@ -261,9 +272,27 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
     let (eta_lo, eta_hi, m_hi) = (lo.0, hi.0, hi.2);
 
     // Candidate contacts at the upper end of the bracket, then the enumeration.
-    let cand = candidates_at(arch, mu, eta_hi, &m_hi.x, Some(m_hi.margin.max(0.0)), settings);
+    let cand = candidates_at(
+        arch,
+        mu,
+        eta_hi,
+        &m_hi.x,
+        Some(m_hi.margin.max(0.0)),
+        settings,
+    );
     let sizes: Vec<usize> = (2..=5).collect();
-    let first = enumerate(arch, mu, &cand, &sizes, m_hi.x, eta_hi, (eta_lo, eta_hi), eta_hi * (1.0 + 1e-9), settings, log);
+    let first = enumerate(
+        arch,
+        mu,
+        &cand,
+        &sizes,
+        m_hi.x,
+        eta_hi,
+        (eta_lo, eta_hi),
+        eta_hi * (1.0 + 1e-9),
+        settings,
+        log,
+    );
     if let Some(ls) = first.limit {
         // η_hi carries a state verified admissible by exact evaluation over the whole
         // arch, so η* ≤ η_hi: a verified pattern above it is not the least. (The lower
@@ -280,14 +309,29 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
         };
     }
     let Some(st) = first.least_static else {
-        return unresolved(eta_lo, eta_hi, "no enumerated pattern gave a verified limit state".into());
+        return unresolved(
+            eta_lo,
+            eta_hi,
+            "no enumerated pattern gave a verified limit state".into(),
+        );
     };
     // Non-associative gap: the least admissible state carries no mechanism without
     // dilatancy. A limit state then needs a larger η and another active set: widen the
     // pool to the best local maxima at that state, whatever their slack, and enumerate
     // determined patterns (four or five contacts).
     let pool = candidates_at(arch, mu, st.eta, &st.x, None, settings);
-    let second = enumerate(arch, mu, &pool, &[4, 5], st.x, st.eta, (eta_lo, eta_hi), 0.0, settings, log);
+    let second = enumerate(
+        arch,
+        mu,
+        &pool,
+        &[4, 5],
+        st.x,
+        st.eta,
+        (eta_lo, eta_hi),
+        0.0,
+        settings,
+        log,
+    );
     match second.limit {
         Some(mut ls) if ls.eta >= st.eta * (1.0 - 1e-12) => {
             ls.eta_static = st.eta;
@@ -307,13 +351,30 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
 /// Local maxima of φ at the state (η, x) that may be active contacts, best first: with
 /// `margin` given, those whose normalised slack is within `candidate_rel` of it; with
 /// `None`, simply the best ones. At most `max_candidates`.
-fn candidates_at(arch: &Arch, mu: f64, eta: f64, x: &Reactions, margin: Option<f64>, settings: &Settings) -> Vec<Contact> {
-    let state = State { arch, eta, mu, x: *x };
+fn candidates_at(
+    arch: &Arch,
+    mu: f64,
+    eta: f64,
+    x: &Reactions,
+    margin: Option<f64>,
+    settings: &Settings,
+) -> Vec<Contact> {
+    let state = State {
+        arch,
+        eta,
+        mu,
+        x: *x,
+    };
     let limit = margin.map_or(f64::INFINITY, |m| m + settings.candidate_rel * scale_of(x));
     let mut peaks: Vec<(f64, Peak)> = state
         .near_active(settings, f64::NEG_INFINITY)
         .into_iter()
-        .map(|p| (-p.value / grad_norm(arch, eta, mu, p.contact.mode, p.contact.beta), p))
+        .map(|p| {
+            (
+                -p.value / grad_norm(arch, eta, mu, p.contact.mode, p.contact.beta),
+                p,
+            )
+        })
         .filter(|(slack, _)| *slack <= limit)
         .collect();
     peaks.sort_by(|a, b| a.0.total_cmp(&b.0));
@@ -355,14 +416,18 @@ fn enumerate(
             groups.push(cand.iter().copied().combinations(k).collect());
         }
     }
-    let mut out = Enumeration { limit: None, least_static: None };
+    let mut out = Enumeration {
+        limit: None,
+        least_static: None,
+    };
     for group in groups {
         if out.limit.as_ref().is_some_and(|l| l.eta <= stop_at) {
             for s in group {
                 log.push(Candidate {
                     contacts: s,
                     eta: None,
-                    verdict: "not tried: a limit state at the static least thickness is verified".into(),
+                    verdict: "not tried: a limit state at the static least thickness is verified"
+                        .into(),
                 });
             }
             continue;
@@ -395,9 +460,13 @@ fn verify_group(
                 eta: None,
                 verdict: match f {
                     NewtonFailure::Empty => "rejected: empty pattern".into(),
-                    NewtonFailure::NegativeMultiplier => "rejected: a KKT multiplier is negative (not a least thickness)".into(),
+                    NewtonFailure::NegativeMultiplier => {
+                        "rejected: a KKT multiplier is negative (not a least thickness)".into()
+                    }
                     NewtonFailure::LeftDomain => "rejected: Newton left the domain".into(),
-                    NewtonFailure::NoConvergence(r) => format!("rejected: Newton did not converge (residual {r:.2e})"),
+                    NewtonFailure::NoConvergence(r) => {
+                        format!("rejected: Newton did not converge (residual {r:.2e})")
+                    }
                 },
             }),
         }
@@ -406,13 +475,25 @@ fn verify_group(
     let mut last_eta = f64::NAN;
     for (s, r) in refined {
         let push = |log: &mut Vec<Candidate>, verdict: String| {
-            log.push(Candidate { contacts: s.clone(), eta: Some(r.eta), verdict })
+            log.push(Candidate {
+                contacts: s.clone(),
+                eta: Some(r.eta),
+                verdict,
+            })
         };
         if out.limit.as_ref().is_some_and(|l| l.eta <= r.eta) {
-            push(log, "not needed: a limit state of lower or equal eta was verified".into());
+            push(
+                log,
+                "not needed: a limit state of lower or equal eta was verified".into(),
+            );
             continue;
         }
-        let st = State { arch, eta: r.eta, mu, x: r.x };
+        let st = State {
+            arch,
+            eta: r.eta,
+            mu,
+            x: r.x,
+        };
         let mag = |m: JointMode| magnitude(m, r.eta, mu, &r.x, settings.magnitude_floor);
         let peaks = st.peaks(settings);
         let worst = peaks
@@ -420,7 +501,10 @@ fn verify_group(
             .map(|p| p.value / mag(p.contact.mode))
             .fold(f64::NEG_INFINITY, f64::max);
         if worst > settings.adm_tol {
-            push(log, format!("rejected: not admissible over the arch (max phi = {worst:.2e})"));
+            push(
+                log,
+                format!("rejected: not admissible over the arch (max phi = {worst:.2e})"),
+            );
             continue;
         }
         if out.least_static.as_ref().is_none_or(|l| r.eta < l.eta) {
@@ -439,8 +523,18 @@ fn verify_group(
         pattern.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.mode.cmp(&b.mode)));
         match mechanism::find(arch, r.eta, mu, &r.x, &pattern, settings) {
             Ok(Some(mech)) => {
-                push(log, format!("kept: admissible (max phi = {worst:.2e}), mechanism with {} dof", mech.dof));
-                let mode = classify(&pattern, 0.5 * (arch.beta_right() + arch.beta_left()), settings.same_joint);
+                push(
+                    log,
+                    format!(
+                        "kept: admissible (max phi = {worst:.2e}), mechanism with {} dof",
+                        mech.dof
+                    ),
+                );
+                let mode = classify(
+                    &pattern,
+                    0.5 * (arch.beta_right() + arch.beta_left()),
+                    settings.same_joint,
+                );
                 out.limit = Some(LimitState {
                     mu,
                     eta: r.eta,
@@ -454,14 +548,21 @@ fn verify_group(
                     bracket,
                 });
             }
-            Ok(None) => push(log, "rejected: admissible, but no non-associative mechanism on its active set".into()),
+            Ok(None) => push(
+                log,
+                "rejected: admissible, but no non-associative mechanism on its active set".into(),
+            ),
             Err(e) => push(log, format!("rejected: kinematic LP failed ({e:?})")),
         }
     }
 }
 
 fn unresolved(eta_lo: f64, eta_hi: f64, reason: String) -> Outcome {
-    Outcome::Unresolved { eta_lo, eta_hi, reason }
+    Outcome::Unresolved {
+        eta_lo,
+        eta_hi,
+        reason,
+    }
 }
 
 fn no_equilibrium(arch: &Arch, mu: f64, settings: &Settings) -> Outcome {

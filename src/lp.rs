@@ -19,7 +19,10 @@ pub enum LpOutcome {
     Failed(String),
 }
 
-fn configure(problem: good_lp::solvers::highs::HighsProblem, tol: f64) -> good_lp::solvers::highs::HighsProblem {
+fn configure(
+    problem: good_lp::solvers::highs::HighsProblem,
+    tol: f64,
+) -> good_lp::solvers::highs::HighsProblem {
     problem
         .set_option("primal_feasibility_tolerance", tol)
         .set_option("dual_feasibility_tolerance", tol)
@@ -63,7 +66,10 @@ pub fn kinematic(
     tol: f64,
 ) -> Result<Vec<f64>, LpOutcome> {
     let mut vars = ProblemVariables::new();
-    let lambda: Vec<_> = columns.iter().map(|_| vars.add(variable().min(0.0))).collect();
+    let lambda: Vec<_> = columns
+        .iter()
+        .map(|_| vars.add(variable().min(0.0)))
+        .collect();
     let mut obj = Expression::with_capacity(lambda.len());
     for (&l, &c) in lambda.iter().zip(objective) {
         obj.add_mul(c, l);

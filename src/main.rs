@@ -1,6 +1,10 @@
 //! The `arch-enum` binary: a thin shell over [`arch_enum::cli::run`].
 
 fn main() {
-    let code = arch_enum::cli::run(std::env::args_os(), &mut std::io::stdout(), &mut std::io::stderr());
+    let code = arch_enum::cli::run(
+        std::env::args_os(),
+        &mut std::io::stdout(),
+        &mut std::io::stderr(),
+    );
     std::process::exit(code);
 }

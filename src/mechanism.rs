@@ -81,7 +81,9 @@ pub fn find(
     let mut symmetric = false;
     if arch.is_symmetric() {
         if let Some(mirror) = mirror_indices(&cs, settings.same_joint) {
-            let sym: Vec<f64> = (0..n).map(|i| 0.5 * (rates[i] + rates[mirror[i]])).collect();
+            let sym: Vec<f64> = (0..n)
+                .map(|i| 0.5 * (rates[i] + rates[mirror[i]]))
+                .collect();
             rates = sym;
             symmetric = true;
         }

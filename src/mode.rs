@@ -65,7 +65,11 @@ pub fn classify(pattern: &[Contact], beta_mid: f64, same_joint: f64) -> Mode {
             .any(|b| a.mode != b.mode && (a.beta - b.beta).abs() <= same_joint)
     });
     if slides.is_empty() {
-        return if detached { Mode::Overturning } else { Mode::PurelyRotational };
+        return if detached {
+            Mode::Overturning
+        } else {
+            Mode::PurelyRotational
+        };
     }
     if hinges.is_empty() {
         return Mode::PurelySliding;

@@ -85,7 +85,11 @@ impl System<'_> {
     fn eval(&self, z: &[f64], mut jac: Option<&mut DMatrix<f64>>) -> Vec<f64> {
         let (x, eta, cs) = self.unpack(z);
         let mu = self.mu;
-        let y = if self.kkt { self.multipliers(z) } else { &[][..] };
+        let y = if self.kkt {
+            self.multipliers(z)
+        } else {
+            &[][..]
+        };
         let col_y = 4 + self.free.len();
         let mut f = Vec::new();
         let mut stat = [0.0; 3];
@@ -111,8 +115,8 @@ impl System<'_> {
             };
             let d_eta0 = a.activation_d_eta(c.mode, 0, &x);
             if self.kkt {
-                for k in 0..3 {
-                    stat[k] += y[i] * f0.g[k];
+                for (st, g) in stat.iter_mut().zip(f0.g) {
+                    *st += y[i] * g;
                 }
                 norm_eq += y[i] * d_eta0;
             }
@@ -143,7 +147,8 @@ impl System<'_> {
                         // normalisation row, ∂/∂x
                         j[(dn, k)] += y[i] * g_eta[k];
                     }
-                    let d2 = self.arch.weight().d2rho_deta2(eta) * -(c.beta.sin() - self.arch.beta_right().sin());
+                    let d2 = self.arch.weight().d2rho_deta2(eta)
+                        * -(c.beta.sin() - self.arch.beta_right().sin());
                     let d2 = match c.mode {
                         crate::statics::JointMode::HingeExtrados => d2,
                         crate::statics::JointMode::HingeIntrados => -d2,
@@ -190,16 +195,61 @@ pub fn solve_pattern(
     }
     let free: Vec<usize> = (0..contacts.len()).filter(|&i| contacts[i].free).collect();
     let kkt = contacts.len() < 4;
-    let sys = System { arch, mu, contacts: contacts.to_vec(), free, kkt };
+    let sys = System {
+        arch,
+        mu,
+        contacts: contacts.to_vec(),
+        free,
+        kkt,
+    };
     let mut z: Vec<f64> = x0.to_vec();
     z.push(eta0);
     z.extend(sys.free.iter().map(|&i| contacts[i].beta));
     if kkt {
         z.extend(initial_multipliers(arch, mu, contacts, &x0, eta0));
     }
+    let (z, fnorm, iterations) = newton(&sys, z, settings)?;
+    // Restart once from the solution rounded to 9 significant digits: the LP's
+    // starting point differs in its last bits from run to run (good_lp builds rows
+    // from hash maps), and this makes the converged digits a function of the input.
+    let snapped: Vec<f64> = z.iter().map(|&v| round_sig(v, 9)).collect();
+    let (z, fnorm, iterations) = match newton(&sys, snapped, settings) {
+        Ok((zs, fs, is)) => (zs, fs, iterations + is),
+        Err(_) => (z, fnorm, iterations),
+    };
+    let (x, eta, cs) = sys.unpack(&z);
+    let multipliers = if kkt {
+        sys.multipliers(&z).to_vec()
+    } else {
+        Vec::new()
+    };
+    if multipliers.iter().any(|&y| y < 0.0) {
+        return Err(NewtonFailure::NegativeMultiplier);
+    }
+    Ok(Refined {
+        x,
+        eta,
+        contacts: cs,
+        multipliers,
+        residual: fnorm,
+        iterations,
+    })
+}
+
+/// Damped Gauss–Newton from `z0`; returns the solution, its scaled residual and the
+/// iterations used.
+fn newton(
+    sys: &System,
+    z0: Vec<f64>,
+    settings: &Settings,
+) -> Result<(Vec<f64>, f64, usize), NewtonFailure> {
+    let arch = sys.arch;
+    let contacts = &sys.contacts;
+    let kkt = sys.kkt;
     let (lo, hi) = (arch.beta_right(), arch.beta_left());
     let n = sys.n_unknowns();
     let n_eq = contacts.len() + sys.free.len() + if kkt { 4 } else { 0 };
+    let mut z = z0;
     let mut f = sys.eval(&z, None);
     let mut fnorm = inf_norm(&f) / scale_of(&z);
     let mut iterations = 0;
@@ -231,8 +281,14 @@ pub fn solve_pattern(
         let mut t = 1.0;
         let mut accepted = false;
         for _ in 0..30 {
-            let zn: Vec<f64> = z.iter().enumerate().map(|(j, v)| v + t * step[j] * colscale[j]).collect();
-            let inside = zn[3] > 0.0 && zn[3] < 2.0 && zn[4..4 + sys.free.len()].iter().all(|&b| b > lo && b < hi);
+            let zn: Vec<f64> = z
+                .iter()
+                .enumerate()
+                .map(|(j, v)| v + t * step[j] * colscale[j])
+                .collect();
+            let inside = zn[3] > 0.0
+                && zn[3] < 2.0
+                && zn[4..4 + sys.free.len()].iter().all(|&b| b > lo && b < hi);
             if inside {
                 let fnew = sys.eval(&zn, None);
                 let nn = inf_norm(&fnew) / scale_of(&zn);
@@ -252,22 +308,38 @@ pub fn solve_pattern(
                 break true;
             }
             let out = !(z[3] > 0.0 && z[3] < 2.0);
-            return Err(if out { NewtonFailure::LeftDomain } else { NewtonFailure::NoConvergence(fnorm) });
+            return Err(if out {
+                NewtonFailure::LeftDomain
+            } else {
+                NewtonFailure::NoConvergence(fnorm)
+            });
         }
     };
-    if !converged {
-        return Err(NewtonFailure::NoConvergence(fnorm));
+    if converged {
+        Ok((z, fnorm, iterations))
+    } else {
+        Err(NewtonFailure::NoConvergence(fnorm))
     }
-    let (x, eta, cs) = sys.unpack(&z);
-    let multipliers = if kkt { sys.multipliers(&z).to_vec() } else { Vec::new() };
-    if multipliers.iter().any(|&y| y < 0.0) {
-        return Err(NewtonFailure::NegativeMultiplier);
+}
+
+/// `v` rounded to `digits` significant decimal digits.
+fn round_sig(v: f64, digits: i32) -> f64 {
+    if v == 0.0 || !v.is_finite() {
+        return v;
     }
-    Ok(Refined { x, eta, contacts: cs, multipliers, residual: fnorm, iterations })
+    let e = digits - 1 - v.abs().log10().floor() as i32;
+    let p = 10f64.powi(e);
+    (v * p).round() / p
 }
 
 /// Least-squares multipliers of [∇ₓφ_i; ∂φ_i/∂η] y = [0; −1] at the starting point.
-fn initial_multipliers(arch: &Arch, mu: f64, contacts: &[Contact], x: &Reactions, eta: f64) -> Vec<f64> {
+fn initial_multipliers(
+    arch: &Arch,
+    mu: f64,
+    contacts: &[Contact],
+    x: &Reactions,
+    eta: f64,
+) -> Vec<f64> {
     let m = contacts.len();
     let a = DMatrix::from_fn(4, m, |r, i| {
         let act = actions(arch, eta, contacts[i].beta);
@@ -280,5 +352,7 @@ fn initial_multipliers(arch: &Arch, mu: f64, contacts: &[Contact], x: &Reactions
     let b = DVector::from_vec(vec![0.0, 0.0, 0.0, -1.0]);
     let svd = a.svd(true, true);
     let tol = svd.singular_values.max() * 1e-12;
-    svd.solve(&b, tol).map(|y| y.iter().copied().collect()).unwrap_or_else(|_| vec![1.0; m])
+    svd.solve(&b, tol)
+        .map(|y| y.iter().copied().collect())
+        .unwrap_or_else(|_| vec![1.0; m])
 }

@@ -105,7 +105,13 @@ impl State<'_> {
         let modes = JointMode::active_at(self.mu);
         // φ and dφ/dβ on the grid, per mode.
         let grid: Vec<Radians> = (0..n)
-            .map(|i| if i + 1 == n { b } else { a + (b - a) * i as f64 / (n - 1) as f64 })
+            .map(|i| {
+                if i + 1 == n {
+                    b
+                } else {
+                    a + (b - a) * i as f64 / (n - 1) as f64
+                }
+            })
             .collect();
         let mut d1 = vec![[0.0; 4]; n];
         let mut d0 = vec![[0.0; 4]; n];
@@ -150,7 +156,14 @@ impl State<'_> {
 
     /// Root of dφ/dβ in [lo, hi] where it goes from positive to non-positive:
     /// Newton with the exact second derivative, safeguarded by bisection.
-    fn refine_max(&self, mode: JointMode, mut lo: Radians, mut hi: Radians, _flo: f64, fhi: f64) -> Radians {
+    fn refine_max(
+        &self,
+        mode: JointMode,
+        mut lo: Radians,
+        mut hi: Radians,
+        _flo: f64,
+        fhi: f64,
+    ) -> Radians {
         if fhi == 0.0 {
             return hi;
         }
@@ -170,7 +183,9 @@ impl State<'_> {
             };
             let step = (next - beta).abs();
             beta = next;
-            if step <= 4.0 * f64::EPSILON * (1.0 + beta.abs()) || hi - lo <= 4.0 * f64::EPSILON * (1.0 + beta.abs()) {
+            if step <= 4.0 * f64::EPSILON * (1.0 + beta.abs())
+                || hi - lo <= 4.0 * f64::EPSILON * (1.0 + beta.abs())
+            {
                 break;
             }
         }

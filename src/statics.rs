@@ -129,20 +129,44 @@ pub fn actions(arch: &Arch, eta: f64, beta: Radians) -> Actions {
     let rho = arch.weight().rho(eta);
     let drho = arch.weight().drho_deta(eta);
 
-    let n0 = Affine { g: [s, c, 0.0], c: -d * c };
-    let t0 = Affine { g: [c, -s, 0.0], c: d * s };
+    let n0 = Affine {
+        g: [s, c, 0.0],
+        c: -d * c,
+    };
+    let t0 = Affine {
+        g: [c, -s, 0.0],
+        c: d * s,
+    };
     let m0 = Affine {
         g: [-(s - sr), cr - c, 1.0],
         c: d * c - rho * (s - sr),
     };
     // dN = T − cos β, dT = −N + sin β, dM = −T + (1 − ρ) cos β
-    let n1 = Affine { g: t0.g, c: t0.c - c };
-    let t1 = Affine { g: [-s, -c, 0.0], c: -n0.c + s };
-    let m1 = Affine { g: [-c, s, 0.0], c: -t0.c + (1.0 - rho) * c };
+    let n1 = Affine {
+        g: t0.g,
+        c: t0.c - c,
+    };
+    let t1 = Affine {
+        g: [-s, -c, 0.0],
+        c: -n0.c + s,
+    };
+    let m1 = Affine {
+        g: [-c, s, 0.0],
+        c: -t0.c + (1.0 - rho) * c,
+    };
     // d²N = 2 sin β − N, d²T = 2 cos β − T, d²M = N − ρ sin β
-    let n2 = Affine { g: [-s, -c, 0.0], c: -n0.c + 2.0 * s };
-    let t2 = Affine { g: [-c, s, 0.0], c: -t0.c + 2.0 * c };
-    let m2 = Affine { g: n0.g, c: n0.c - rho * s };
+    let n2 = Affine {
+        g: [-s, -c, 0.0],
+        c: -n0.c + 2.0 * s,
+    };
+    let t2 = Affine {
+        g: [-c, s, 0.0],
+        c: -t0.c + 2.0 * c,
+    };
+    let m2 = Affine {
+        g: n0.g,
+        c: n0.c - rho * s,
+    };
     Actions {
         n: [n0, n1, n2],
         t: [t0, t1, t2],
@@ -191,7 +215,6 @@ pub fn internal_forces(arch: &Arch, eta: f64, x: &Reactions, beta: Radians) -> (
     let a = actions(arch, eta, beta);
     (a.n[0].at(x), a.t[0].at(x), a.m[0].at(x))
 }
-
 
 /// The natural magnitude of the activation function of `mode` at reactions x, used
 /// to make tolerances relative (formulation §6): (1 + ‖x‖₁) times η for hinges and

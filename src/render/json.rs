@@ -120,13 +120,21 @@ fn limit_parts(ls: &LimitState) -> (Vec<Contact>, Reactions, MechanismJson, Chec
     let m = &ls.mechanism;
     (
         ls.pattern.clone(),
-        Reactions { h: ls.x[0], v: ls.x[1], w: ls.x[2] },
+        Reactions {
+            h: ls.x[0],
+            v: ls.x[1],
+            w: ls.x[2],
+        },
         MechanismJson {
             rates: m
                 .contacts
                 .iter()
                 .zip(&m.rates)
-                .map(|(c, &rate)| Rate { beta: c.beta, kind: c.mode.name(), rate })
+                .map(|(c, &rate)| Rate {
+                    beta: c.beta,
+                    kind: c.mode.name(),
+                    rate,
+                })
                 .collect(),
             dof: m.dof,
             power: m.power,
@@ -179,7 +187,11 @@ pub fn solve(sol: &Solution, explain: bool) -> SolveJson {
             doc.mu_ms = *mu_ms;
             doc.message = Some(reason.clone());
         }
-        Outcome::Unresolved { eta_lo, eta_hi, reason } => {
+        Outcome::Unresolved {
+            eta_lo,
+            eta_hi,
+            reason,
+        } => {
             doc.eta_bracket = Some([*eta_lo, *eta_hi]);
             doc.message = Some(reason.clone());
         }
@@ -227,7 +239,12 @@ pub fn curve(arch: &Arch, mu_ms: Option<f64>, points: &[CurvePoint]) -> CurveJso
             .iter()
             .map(|p| {
                 let (eta, mode, pattern, message) = match &p.outcome {
-                    Outcome::Limit(ls) => (Some(ls.eta), Some(ls.mode.name()), Some(ls.pattern.clone()), None),
+                    Outcome::Limit(ls) => (
+                        Some(ls.eta),
+                        Some(ls.mode.name()),
+                        Some(ls.pattern.clone()),
+                        None,
+                    ),
                     Outcome::NoEquilibrium { reason, .. }
                     | Outcome::Unresolved { reason, .. }
                     | Outcome::NoCollapse { reason } => (None, None, None, Some(reason.clone())),

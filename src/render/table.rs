@@ -22,7 +22,10 @@ pub fn fmt_mu(mu: f64) -> String {
 pub fn describe_arch(arch: &Arch) -> String {
     let shape = if arch.is_symmetric() {
         let alpha = 0.0 - arch.beta_right();
-        format!("symmetric arch, opening alpha = {alpha:.10} rad ({:.4} deg)", alpha.to_degrees())
+        format!(
+            "symmetric arch, opening alpha = {alpha:.10} rad ({:.4} deg)",
+            alpha.to_degrees()
+        )
     } else {
         format!(
             "unsymmetric arch, springings beta_R = {:.10} rad, beta_L = {:.10} rad",
@@ -34,10 +37,13 @@ pub fn describe_arch(arch: &Arch) -> String {
         JointLayout::Continuous => "continuous joints".to_string(),
         JointLayout::Discrete(j) => format!("{} voussoirs ({} joints)", j.len() - 1, j.len()),
     };
-    format!("{shape}; {joints}; weight along the {}", match arch.weight() {
-        crate::arch::WeightModel::Centreline => "centreline",
-        crate::arch::WeightModel::Centroid => "true centroid (Milankovitch)",
-    })
+    format!(
+        "{shape}; {joints}; weight along the {}",
+        match arch.weight() {
+            crate::arch::WeightModel::Centreline => "centreline",
+            crate::arch::WeightModel::Centroid => "true centroid (Milankovitch)",
+        }
+    )
 }
 
 fn middle_name(arch: &Arch) -> &'static str {
@@ -131,7 +137,11 @@ pub fn solve(sol: &Solution, explain: bool) -> String {
                 "checks: Newton residual {:.1e}; max phi over the arch {:.1e}; |B lambda| {:.1e}; complementarity {:.1e}",
                 ls.newton_residual, ls.max_phi, m.compatibility, m.complementarity
             );
-            let _ = writeln!(s, "        LP bracket of eta*: [{:.12}, {:.12}]", ls.bracket.0, ls.bracket.1);
+            let _ = writeln!(
+                s,
+                "        LP bracket of eta*: [{:.12}, {:.12}]",
+                ls.bracket.0, ls.bracket.1
+            );
         }
         Outcome::NoEquilibrium { reason, .. } => {
             let _ = writeln!(s, "no equilibrium: {reason}");
@@ -139,8 +149,15 @@ pub fn solve(sol: &Solution, explain: bool) -> String {
         Outcome::NoCollapse { reason } => {
             let _ = writeln!(s, "no collapse: {reason}");
         }
-        Outcome::Unresolved { eta_lo, eta_hi, reason } => {
-            let _ = writeln!(s, "unresolved: {reason}; eta* lies in [{eta_lo:.12}, {eta_hi:.12}]");
+        Outcome::Unresolved {
+            eta_lo,
+            eta_hi,
+            reason,
+        } => {
+            let _ = writeln!(
+                s,
+                "unresolved: {reason}; eta* lies in [{eta_lo:.12}, {eta_hi:.12}]"
+            );
         }
     }
     if explain {
@@ -204,10 +221,24 @@ pub fn curve(arch: &Arch, mu_ms: Option<f64>, points: &[CurvePoint]) -> String {
                 );
             }
             Outcome::NoEquilibrium { .. } => {
-                let _ = writeln!(s, "{:>16}  {:>10.5}  {:>16}  {:<28}", fmt_mu(p.mu), phi, "-", "no_equilibrium");
+                let _ = writeln!(
+                    s,
+                    "{:>16}  {:>10.5}  {:>16}  {:<28}",
+                    fmt_mu(p.mu),
+                    phi,
+                    "-",
+                    "no_equilibrium"
+                );
             }
             Outcome::NoCollapse { .. } => {
-                let _ = writeln!(s, "{:>16}  {:>10.5}  {:>16}  {:<28}", fmt_mu(p.mu), phi, "0", "no_collapse");
+                let _ = writeln!(
+                    s,
+                    "{:>16}  {:>10.5}  {:>16}  {:<28}",
+                    fmt_mu(p.mu),
+                    phi,
+                    "0",
+                    "no_collapse"
+                );
             }
             Outcome::Unresolved { eta_lo, eta_hi, .. } => {
                 let _ = writeln!(

@@ -10,8 +10,12 @@ fn arch_enum() -> Command {
 
 fn json_of(args: &[&str]) -> (Value, i32) {
     let out = arch_enum().args(args).arg("--json").output().unwrap();
-    let v: Value = serde_json::from_slice(&out.stdout)
-        .unwrap_or_else(|e| panic!("stdout is not one JSON document ({e}): {}", String::from_utf8_lossy(&out.stdout)));
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap_or_else(|e| {
+        panic!(
+            "stdout is not one JSON document ({e}): {}",
+            String::from_utf8_lossy(&out.stdout)
+        )
+    });
     (v, out.status.code().unwrap())
 }
 
@@ -36,7 +40,15 @@ fn solve_json_contract() {
     let (v, code) = json_of(&["solve", "--alpha", "0", "--mu", "0.35"]);
     assert_eq!(code, 0);
     assert_eq!(v["status"], "ok");
-    for key in ["arch", "mu", "eta", "mode", "pattern", "reactions", "mechanism"] {
+    for key in [
+        "arch",
+        "mu",
+        "eta",
+        "mode",
+        "pattern",
+        "reactions",
+        "mechanism",
+    ] {
         assert!(v.get(key).is_some(), "missing {key}");
     }
     for key in ["beta_right", "beta_left", "weight", "joints"] {
@@ -45,7 +57,13 @@ fn solve_json_contract() {
     for j in v["pattern"].as_array().unwrap() {
         assert!(j["beta"].is_f64());
         let kind = j["kind"].as_str().unwrap();
-        assert!(["hinge_extrados", "hinge_intrados", "slide_plus", "slide_minus"].contains(&kind));
+        assert!([
+            "hinge_extrados",
+            "hinge_intrados",
+            "slide_plus",
+            "slide_minus"
+        ]
+        .contains(&kind));
         assert!(["springing", "interior"].contains(&j["at"].as_str().unwrap()));
     }
     for key in ["h", "v", "w"] {
@@ -76,14 +94,19 @@ fn no_equilibrium_exit_1() {
     assert_eq!(code, 1);
     assert_eq!(v["status"], "no_equilibrium");
     assert!(v["message"].as_str().unwrap().contains("mu_ms = 0.309215"));
-    let out = arch_enum().args(["solve", "--alpha", "0", "--mu", "0.3"]).output().unwrap();
+    let out = arch_enum()
+        .args(["solve", "--alpha", "0", "--mu", "0.3"])
+        .output()
+        .unwrap();
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stdout).contains("mu_ms = 0.309215"));
 }
 
 #[test]
 fn curve_rows() {
-    let (v, code) = json_of(&["curve", "--alpha", "0", "--mu-min", "0.32", "--mu-max", "0.5", "--points", "4"]);
+    let (v, code) = json_of(&[
+        "curve", "--alpha", "0", "--mu-min", "0.32", "--mu-max", "0.5", "--points", "4",
+    ]);
     assert_eq!(code, 0);
     let pts = v["points"].as_array().unwrap();
     assert_eq!(pts.len(), 4);
@@ -106,25 +129,71 @@ fn bad_input_table() {
         (&["solve", "--alpha", "-1.6", "--mu", "1"], "--alpha"),
         (&["solve", "--alpha", "inf", "--mu", "1"], "--alpha"),
         (&["solve", "--alpha-deg", "95", "--mu", "1"], "--alpha-deg"),
-        (&["solve", "--beta-right", "1", "--beta-left", "0.5", "--mu", "1"], "--beta-right"),
-        (&["solve", "--beta-right", "0", "--beta-left", "7", "--mu", "1"], "--beta-right"),
+        (
+            &[
+                "solve",
+                "--beta-right",
+                "1",
+                "--beta-left",
+                "0.5",
+                "--mu",
+                "1",
+            ],
+            "--beta-right",
+        ),
+        (
+            &[
+                "solve",
+                "--beta-right",
+                "0",
+                "--beta-left",
+                "7",
+                "--mu",
+                "1",
+            ],
+            "--beta-right",
+        ),
         (&["solve", "--beta-right", "0", "--mu", "1"], "--beta-left"),
-        (&["solve", "--alpha", "0", "--blocks", "0", "--mu", "1"], "--blocks"),
-        (&["solve", "--alpha", "0", "--blocks", "-3", "--mu", "1"], "--blocks"),
-        (&["solve", "--alpha", "0", "--joints", "0.5,0.4", "--mu", "1"], "--joints"),
-        (&["solve", "--alpha", "0", "--joints", "4.0", "--mu", "1"], "--joints"),
-        (&["solve", "--alpha", "0", "--weight", "heavy", "--mu", "1"], "--weight"),
+        (
+            &["solve", "--alpha", "0", "--blocks", "0", "--mu", "1"],
+            "--blocks",
+        ),
+        (
+            &["solve", "--alpha", "0", "--blocks", "-3", "--mu", "1"],
+            "--blocks",
+        ),
+        (
+            &["solve", "--alpha", "0", "--joints", "0.5,0.4", "--mu", "1"],
+            "--joints",
+        ),
+        (
+            &["solve", "--alpha", "0", "--joints", "4.0", "--mu", "1"],
+            "--joints",
+        ),
+        (
+            &["solve", "--alpha", "0", "--weight", "heavy", "--mu", "1"],
+            "--weight",
+        ),
         (&["solve", "--mu", "1"], "--alpha"),
-        (&["solve", "--alpha", "0", "--mu", "1", "--frobnicate"], "--frobnicate"),
+        (
+            &["solve", "--alpha", "0", "--mu", "1", "--frobnicate"],
+            "--frobnicate",
+        ),
         (&["curve", "--alpha", "0", "--mu-min", "-1"], "--mu-min"),
-        (&["curve", "--alpha", "0", "--mu-min", "1", "--mu-max", "0.5"], "--mu-max"),
+        (
+            &["curve", "--alpha", "0", "--mu-min", "1", "--mu-max", "0.5"],
+            "--mu-max",
+        ),
         (&["curve", "--alpha", "0", "--points", "0"], "--points"),
     ];
     for (args, name) in cases {
         let out = arch_enum().args(*args).output().unwrap();
         let err = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
-        assert!(err.contains(name), "{args:?}: message does not name {name}: {err}");
+        assert!(
+            err.contains(name),
+            "{args:?}: message does not name {name}: {err}"
+        );
         assert!(!err.contains("panicked"), "{args:?}: {err}");
     }
 }
@@ -139,7 +208,10 @@ fn bad_input_json_document() {
 
 #[test]
 fn explain_lists_candidates() {
-    let out = arch_enum().args(["solve", "--alpha", "0", "--mu", "0.35", "--explain"]).output().unwrap();
+    let out = arch_enum()
+        .args(["solve", "--alpha", "0", "--mu", "0.35", "--explain"])
+        .output()
+        .unwrap();
     let s = String::from_utf8_lossy(&out.stdout);
     assert!(s.contains("patterns tried"));
     assert!(s.contains("kept: admissible"));

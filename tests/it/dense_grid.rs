@@ -29,15 +29,25 @@ fn mixed_branch_matches_dense_grid() {
         for (n, g) in [(400.0, g1), (1000.0, g2)] {
             let gap = exact - g;
             // discrete arches are never weaker than the continuous one ...
-            assert!(gap > -2.0 * bisect_tol, "mu = {mu}, n = {n}: exact {exact} below grid {g}");
+            assert!(
+                gap > -2.0 * bisect_tol,
+                "mu = {mu}, n = {n}: exact {exact} below grid {g}"
+            );
             // ... and the grid misses a tangency point by at most half a spacing h = pi/n,
             // which lowers phi there by at most |phi''| h^2 / 8 and eta* by at most
             // |phi''| h^2 / (4 N); |phi''| / N < 4 on these states, so gap < h^2.
             let h = PI / n;
-            assert!(gap < h * h, "mu = {mu}, n = {n}: gap {gap} exceeds h^2 = {}", h * h);
+            assert!(
+                gap < h * h,
+                "mu = {mu}, n = {n}: gap {gap} exceeds h^2 = {}",
+                h * h
+            );
         }
         // the crate's discrete solver on the same stereotomy agrees with the grid LP
         let d = eta_of(&arch.clone().with_blocks(400).unwrap(), mu);
-        assert!((d - g1).abs() < 1e-8, "mu = {mu}: discrete solve {d} vs grid LP {g1}");
+        assert!(
+            (d - g1).abs() < 1e-8,
+            "mu = {mu}: discrete solve {d} vs grid LP {g1}"
+        );
     }
 }

@@ -37,7 +37,11 @@ fn overturning_horseshoe() {
     let arch = Arch::symmetric(1.15, WeightModel::Centreline).unwrap();
     let ls = limit(&arch, f64::INFINITY);
     assert_eq!(ls.mode, Mode::Overturning);
-    let crown: Vec<_> = ls.pattern.iter().filter(|c| (c.beta - PI / 2.0).abs() < 1e-6).collect();
+    let crown: Vec<_> = ls
+        .pattern
+        .iter()
+        .filter(|c| (c.beta - PI / 2.0).abs() < 1e-6)
+        .collect();
     assert_eq!(crown.len(), 2, "E and I at the crown: {:?}", ls.pattern);
     let (n, _, _) = crate::model::ntm(arch.beta_right(), 1.0, ls.x, PI / 2.0);
     assert!(n.abs() < 1e-10, "N at the crown = {n}");
@@ -58,17 +62,25 @@ fn huge_friction_equals_infinite() {
 #[test]
 fn just_around_mu_ms() {
     let arch = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();
-    let mu_ms = arch_enum::least_friction(&arch, &Settings::default()).unwrap().unwrap();
+    let mu_ms = arch_enum::least_friction(&arch, &Settings::default())
+        .unwrap()
+        .unwrap();
     let ls = limit(&arch, mu_ms * (1.0 + 1e-6));
     assert!(ls.eta > 0.2 && ls.eta < 0.2007, "{}", ls.eta);
-    assert!(matches!(outcome(&arch, mu_ms * (1.0 - 1e-6)), Outcome::NoEquilibrium { .. }));
+    assert!(matches!(
+        outcome(&arch, mu_ms * (1.0 - 1e-6)),
+        Outcome::NoEquilibrium { .. }
+    ));
 }
 
 /// Horseshoe arches beyond a certain opening cannot stand at any thickness η < 2.
 #[test]
 fn opening_too_large_to_stand() {
     let arch = Arch::symmetric(1.35, WeightModel::Centreline).unwrap();
-    assert!(matches!(outcome(&arch, f64::INFINITY), Outcome::NoEquilibrium { .. }));
+    assert!(matches!(
+        outcome(&arch, f64::INFINITY),
+        Outcome::NoEquilibrium { .. }
+    ));
 }
 
 /// Discrete arches with very few blocks: with two or three voussoirs a thrust line
@@ -78,7 +90,10 @@ fn very_few_blocks() {
     let arch = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();
     for n in [1, 2, 3] {
         let out = outcome(&arch.clone().with_blocks(n).unwrap(), f64::INFINITY);
-        assert!(matches!(out, Outcome::NoCollapse { .. }), "{n} blocks: {out:?}");
+        assert!(
+            matches!(out, Outcome::NoCollapse { .. }),
+            "{n} blocks: {out:?}"
+        );
     }
     let ls = limit(&arch.clone().with_blocks(4).unwrap(), f64::INFINITY);
     assert!(ls.eta > 0.0 && ls.eta < 0.10742645);

@@ -19,7 +19,11 @@ pub fn ntm(beta_r: f64, rho: f64, x: [f64; 3], beta: f64) -> (f64, f64, f64) {
 /// The four activation functions (E, I, S+, S−) at β; sliding ones are −∞ for μ = ∞.
 pub fn phis(beta_r: f64, rho: f64, eta: f64, mu: f64, x: [f64; 3], beta: f64) -> [f64; 4] {
     let (n, t, m) = ntm(beta_r, rho, x, beta);
-    let s = if mu.is_finite() { [t - mu * n, -t - mu * n] } else { [f64::NEG_INFINITY; 2] };
+    let s = if mu.is_finite() {
+        [t - mu * n, -t - mu * n]
+    } else {
+        [f64::NEG_INFINITY; 2]
+    };
     [m - eta * n / 2.0, -m - eta * n / 2.0, s[0], s[1]]
 }
 
@@ -35,11 +39,16 @@ pub fn sample_joints(arch: &Arch, n: usize) -> Vec<f64> {
     }
 }
 
-/// Greatest activation over `n` sampled joints, relative to the state's magnitude
-/// (1 + |x|)·min(η, μ, 1).
+/// The magnitude of the activation functions of a state: (1 + |x|₁)·min(η, μ, 1),
+/// but not below 1e-3 (M, N and T are sums of terms of size |x|).
+pub fn scale(ls: &LimitState) -> f64 {
+    (1.0 + ls.x.iter().map(|v| v.abs()).sum::<f64>()) * ls.eta.min(ls.mu).clamp(1e-3, 1.0)
+}
+
+/// Greatest activation over `n` sampled joints, relative to [`scale`].
 pub fn max_rel_violation(arch: &Arch, ls: &LimitState, n: usize) -> f64 {
     let rho = arch.weight().rho(ls.eta);
-    let scale = (1.0 + ls.x.iter().map(|v| v.abs()).sum::<f64>()) * ls.eta.min(ls.mu).min(1.0).max(1e-3);
+    let scale = scale(ls);
     sample_joints(arch, n)
         .iter()
         .flat_map(|&b| phis(arch.beta_right(), rho, ls.eta, ls.mu, ls.x, b))
@@ -78,11 +87,16 @@ pub fn grid_feasible(beta_r: f64, joints: &[f64], eta: f64, mu: f64) -> bool {
         let ct = d * s;
         let gm = [-(s - beta_r.sin()), beta_r.cos() - c, 1.0];
         let cm = d * c - (s - beta_r.sin());
-        let mut rows = vec![
-            (gm.map(|_| 0.0), 0.0); 0
-        ];
+        let mut rows = Vec::with_capacity(4);
         let comb = |a: f64, g1: [f64; 3], c1: f64, k: f64, g2: [f64; 3], c2: f64| {
-            ([a * g1[0] + k * g2[0], a * g1[1] + k * g2[1], a * g1[2] + k * g2[2]], a * c1 + k * c2)
+            (
+                [
+                    a * g1[0] + k * g2[0],
+                    a * g1[1] + k * g2[1],
+                    a * g1[2] + k * g2[2],
+                ],
+                a * c1 + k * c2,
+            )
         };
         rows.push(comb(1.0, gm, cm, -eta / 2.0, gn, cn));
         rows.push(comb(-1.0, gm, cm, -eta / 2.0, gn, cn));
@@ -102,9 +116,14 @@ pub fn grid_feasible(beta_r: f64, joints: &[f64], eta: f64, mu: f64) -> bool {
 /// η* of the arch discretised into `n` equal voussoirs, by bisection on the
 /// fixed-grid LP (to `tol` absolute).
 pub fn grid_eta(beta_r: f64, beta_l: f64, n: usize, mu: f64, tol: f64) -> f64 {
-    let joints: Vec<f64> = (0..=n).map(|i| beta_r + (beta_l - beta_r) * i as f64 / n as f64).collect();
+    let joints: Vec<f64> = (0..=n)
+        .map(|i| beta_r + (beta_l - beta_r) * i as f64 / n as f64)
+        .collect();
     let (mut lo, mut hi) = (0.0, 1.99);
-    assert!(grid_feasible(beta_r, &joints, hi, mu), "grid LP infeasible at eta = 1.99");
+    assert!(
+        grid_feasible(beta_r, &joints, hi, mu),
+        "grid LP infeasible at eta = 1.99"
+    );
     while hi - lo > tol {
         let mid = 0.5 * (lo + hi);
         if grid_feasible(beta_r, &joints, mid, mu) {

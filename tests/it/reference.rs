@@ -3,7 +3,9 @@
 //! 2002 for the true-centroid value, printed to 4). Tolerances match the printed digits:
 //! half a unit in the last printed place.
 
-use arch_enum::{least_friction, solve, Arch, JointMode, LimitState, Outcome, Settings, WeightModel};
+use arch_enum::{
+    least_friction, solve, Arch, JointMode, LimitState, Outcome, Settings, WeightModel,
+};
 use std::f64::consts::PI;
 
 fn limit(alpha: f64, mu: f64, weight: WeightModel) -> LimitState {
@@ -71,9 +73,16 @@ fn infinite_friction_is_the_limit_of_large_friction() {
 #[test]
 fn least_friction_mu_ms() {
     let s = Settings::default();
-    let m0 = least_friction(&Arch::symmetric(0.0, WeightModel::Centreline).unwrap(), &s).unwrap().unwrap();
+    let m0 = least_friction(&Arch::symmetric(0.0, WeightModel::Centreline).unwrap(), &s)
+        .unwrap()
+        .unwrap();
     assert_digits("mu_ms (alpha = 0)", m0, 0.30921544, 8);
-    let m6 = least_friction(&Arch::symmetric(PI / 6.0, WeightModel::Centreline).unwrap(), &s).unwrap().unwrap();
+    let m6 = least_friction(
+        &Arch::symmetric(PI / 6.0, WeightModel::Centreline).unwrap(),
+        &s,
+    )
+    .unwrap()
+    .unwrap();
     assert_digits("mu_ms (alpha = pi/6)", m6, 0.73904014, 8);
 }
 
