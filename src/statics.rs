@@ -154,7 +154,7 @@ pub fn actions(arch: &Arch, eta: f64, beta: Radians) -> Actions {
         g: [-c, s, 0.0],
         c: -t0.c + (1.0 - rho) * c,
     };
-    // d²N = 2 sin β − N, d²T = 2 cos β − T, d²M = N − ρ sin β
+    // d²N = 2 sin β − N, d²T = 2 cos β − T, d²M = N − (2 − ρ) sin β
     let n2 = Affine {
         g: [-s, -c, 0.0],
         c: -n0.c + 2.0 * s,
@@ -165,7 +165,7 @@ pub fn actions(arch: &Arch, eta: f64, beta: Radians) -> Actions {
     };
     let m2 = Affine {
         g: n0.g,
-        c: n0.c - rho * s,
+        c: n0.c - (2.0 - rho) * s,
     };
     Actions {
         n: [n0, n1, n2],

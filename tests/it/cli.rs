@@ -223,8 +223,17 @@ fn readme_commands_match_ci() {
     let root = env!("CARGO_MANIFEST_DIR");
     let readme = std::fs::read_to_string(format!("{root}/README.md")).unwrap();
     let ci = std::fs::read_to_string(format!("{root}/.ci/run")).unwrap();
-    let block: Vec<&str> = readme.split("```sh\n").nth(1).unwrap().lines().take(2).collect();
+    let block: Vec<&str> = readme
+        .split("```sh\n")
+        .nth(1)
+        .unwrap()
+        .lines()
+        .take(2)
+        .collect();
     let test_cmd = block[1].split('#').next().unwrap().trim();
     assert_eq!(test_cmd, "bash scripts/test.sh");
-    assert!(ci.lines().any(|l| l.trim() == test_cmd), ".ci/run does not run `{test_cmd}`");
+    assert!(
+        ci.lines().any(|l| l.trim() == test_cmd),
+        ".ci/run does not run `{test_cmd}`"
+    );
 }

@@ -3,6 +3,7 @@
 mod cli;
 mod dense_grid;
 mod hard_cases;
+mod identities;
 mod invariants;
 mod model;
 mod reference;

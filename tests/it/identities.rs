@@ -1,0 +1,83 @@
+//! Exact identities of the formulation, checked on random data (proptest):
+//! the exact β- and η-derivatives of the activation functions against central finite
+//! differences, and the virtual-work identity φᵀλ = L_e − μ Σ N (s⁺ + s⁻) for every
+//! compatible λ (formulation §6), which ties the signs of statics, B and L_e together.
+
+use arch_enum::contact::{Contact, Location};
+use arch_enum::kinematics::{column, power};
+use arch_enum::statics::actions;
+use arch_enum::{Arch, JointMode, WeightModel};
+use nalgebra::DMatrix;
+use proptest::prelude::*;
+
+fn weight(centroid: bool) -> WeightModel {
+    if centroid {
+        WeightModel::Centroid
+    } else {
+        WeightModel::Centreline
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+    #[test]
+    fn derivatives_match_finite_differences(
+        alpha in -1.2f64..1.2, t in 0.05f64..0.95, eta in 0.01f64..1.5, mu in 0.1f64..3.0,
+        h in -2.0f64..2.0, v in -2.0f64..2.0, w in -1.0f64..1.0, centroid in any::<bool>(), k in 0usize..4,
+    ) {
+        let arch = Arch::symmetric(alpha, weight(centroid)).unwrap();
+        let beta = arch.beta_right() + t * arch.span();
+        let x = [h, v, w];
+        let mode = JointMode::ALL[k];
+        let phi = |b: f64, e: f64, order: usize| actions(&arch, e, b).activation(mode, order, e, mu).at(&x);
+        let d = 1e-5;
+        for order in 0..2 {
+            let fd = (phi(beta + d, eta, order) - phi(beta - d, eta, order)) / (2.0 * d);
+            let exact = phi(beta, eta, order + 1);
+            prop_assert!((fd - exact).abs() < 1e-7 * (1.0 + exact.abs()), "d/dbeta of order {order}: fd {fd} vs {exact}");
+            let fd_eta = (phi(beta, eta + d, order) - phi(beta, eta - d, order)) / (2.0 * d);
+            let exact_eta = actions(&arch, eta, beta).activation_d_eta(mode, order, &x);
+            prop_assert!((fd_eta - exact_eta).abs() < 1e-7 * (1.0 + exact_eta.abs()), "d/deta of order {order}: fd {fd_eta} vs {exact_eta}");
+        }
+    }
+
+    #[test]
+    fn virtual_work_identity(
+        alpha in -1.2f64..1.2, eta in 0.01f64..1.5, mu in 0.1f64..3.0,
+        h in -2.0f64..2.0, v in -2.0f64..2.0, w in -1.0f64..1.0, centroid in any::<bool>(),
+        ts in proptest::collection::vec(0.0f64..1.0, 4..7), ks in proptest::collection::vec(0usize..4, 7),
+    ) {
+        let arch = Arch::symmetric(alpha, weight(centroid)).unwrap();
+        let x = [h, v, w];
+        let contacts: Vec<Contact> = ts.iter().zip(&ks).map(|(&t, &k)| Contact {
+            beta: arch.beta_right() + t * arch.span(),
+            mode: JointMode::ALL[k],
+            at: Location::Interior,
+            free: false,
+        }).collect();
+        // a compatible lambda: the null vector of the first four columns of B, by
+        // cofactors (any sign: the identity is linear), zero on the other contacts
+        let b = DMatrix::from_fn(3, contacts.len(), |r, c| column(contacts[c].mode, contacts[c].beta, eta)[r]);
+        let mut lambda = vec![0.0; contacts.len()];
+        for (i, l) in lambda.iter_mut().enumerate().take(4) {
+            let cols: Vec<usize> = (0..4).filter(|&j| j != i).collect();
+            let minor = nalgebra::Matrix3::from_fn(|r, c| b[(r, cols[c])]);
+            *l = if i % 2 == 0 { 1.0 } else { -1.0 } * minor.determinant();
+        }
+        let bl = &b * nalgebra::DVector::from_vec(lambda.clone());
+        prop_assert!(bl.norm() < 1e-12 * (1.0 + lambda.iter().map(|v| v.abs()).sum::<f64>()));
+        let p = power(&arch, eta, &contacts);
+        let le: f64 = p.iter().zip(&lambda).map(|(a, l)| a * l).sum();
+        let mut phi_l = 0.0;
+        let mut diss = 0.0;
+        for (c, &l) in contacts.iter().zip(&lambda) {
+            let a = actions(&arch, eta, c.beta);
+            phi_l += a.activation(c.mode, 0, eta, mu).at(&x) * l;
+            if !c.mode.is_hinge() {
+                diss += mu * a.n[0].at(&x) * l;
+            }
+        }
+        prop_assert!((phi_l - (le - diss)).abs() < 1e-10, "phi'lambda = {phi_l}, L_e - mu sum N s = {}", le - diss);
+    }
+}
