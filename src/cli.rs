@@ -62,7 +62,7 @@ enum Command {
     Curve {
         #[command(flatten)]
         arch: ArchArgs,
-        /// Smallest mu (default: just above mu_ms, the least friction admitting equilibrium).
+        /// Smallest mu (default: mu_ms (1 + 1e-6), just above the least friction admitting equilibrium).
         #[arg(long, allow_negative_numbers = true)]
         mu_min: Option<f64>,
         /// Largest mu (default: 10 * mu_min).
@@ -247,7 +247,7 @@ where
                 }
             }
             let mu_ms = least_friction(&arch, &settings).ok().flatten();
-            let lo = mu_min.unwrap_or_else(|| mu_ms.map_or(0.01, |m| (m * (1.0 + 1e-9)).max(1e-6)));
+            let lo = mu_min.unwrap_or_else(|| mu_ms.map_or(0.01, |m| (m * (1.0 + 1e-6)).max(1e-6)));
             let hi = mu_max.unwrap_or(10.0 * lo);
             let grid = match mu_grid(lo, hi, points) {
                 Ok(g) => g,

@@ -573,9 +573,20 @@ fn no_equilibrium(arch: &Arch, mu: f64, settings: &Settings) -> Outcome {
                 "mu = {} is below mu_ms = {mu_ms:.10}: no thickness can stand (purely sliding collapse)", crate::arch::fmt_value(mu)
             ),
         },
+        Ok(Some(mu_ms)) if mu < mu_ms * (1.0 + 1e-6) => Outcome::Unresolved {
+            eta_lo: 0.0,
+            eta_hi: 2.0,
+            reason: format!(
+                "mu = {} is within 1e-6 (relative) of mu_ms = {mu_ms:.10}, closer than the LP resolves admissibility",
+                crate::arch::fmt_value(mu)
+            ),
+        },
         Ok(Some(mu_ms)) => Outcome::NoEquilibrium {
             mu_ms: Some(mu_ms),
-            reason: "no thickness eta < 2 admits equilibrium for this opening".into(),
+            reason: format!(
+                "mu = {} is above mu_ms = {mu_ms:.10}, but no thickness eta < 2 admits equilibrium at this friction",
+                crate::arch::fmt_value(mu)
+            ),
         },
         Ok(None) => Outcome::NoEquilibrium {
             mu_ms: None,
