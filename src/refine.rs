@@ -24,6 +24,18 @@ use crate::settings::Settings;
 use crate::statics::{actions, Reactions};
 use nalgebra::{DMatrix, DVector};
 
+/// Which parameters are unknowns of a system, and what its KKT completion minimises.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Unknowns {
+    /// The thickness problem at fixed μ: unknown η; KKT minimises η.
+    Eta,
+    /// The friction-only problem (sliding contacts only): unknown μ; KKT minimises μ.
+    Mu,
+    /// A corner: both η and μ unknown (no KKT completion; the union of two
+    /// patterns determines the state).
+    EtaMu,
+}
+
 /// A converged solution of a pattern's system.
 #[derive(Debug, Clone)]
 pub struct Refined {
@@ -31,6 +43,8 @@ pub struct Refined {
     pub x: Reactions,
     /// Thickness ratio η.
     pub eta: f64,
+    /// Friction coefficient μ.
+    pub mu: f64,
     /// The contacts with their refined angles.
     pub contacts: Vec<Contact>,
     /// KKT multipliers of the contacts when the optimality conditions were used
@@ -47,7 +61,7 @@ pub struct Refined {
 pub enum NewtonFailure {
     /// The pattern is empty.
     Empty,
-    /// The iterate left the domain (η ∉ (0, 2) or a joint outside the arch).
+    /// The iterate left the domain (η ∉ (0, 2), μ ≤ 0 or a joint outside the arch).
     LeftDomain,
     /// No convergence within the iteration limit (residual reached).
     NoConvergence(f64),
@@ -55,47 +69,129 @@ pub enum NewtonFailure {
     NegativeMultiplier,
 }
 
-/// The unknowns, flattened: x (3), η, free β (k), then y (m) in KKT form.
+/// The unknowns, flattened: x (3), the parameters (η and/or μ), free β (k), then
+/// y (m) in KKT form.
 struct System<'a> {
     arch: &'a Arch,
+    eta: f64,
     mu: f64,
+    unknowns: Unknowns,
     contacts: Vec<Contact>,
     free: Vec<usize>,
     kkt: bool,
 }
 
+/// Partial derivatives of one activation function (β-derivative `order`) with
+/// respect to the parameter p ∈ {η, μ}: the value ∂φ/∂p, its x-gradient and ∂²φ/∂p².
+fn d_param(
+    arch: &Arch,
+    a: &crate::statics::Actions,
+    c: &Contact,
+    order: usize,
+    x: &Reactions,
+    eta: f64,
+    p_is_eta: bool,
+) -> (f64, [f64; 3], f64) {
+    use crate::statics::JointMode::*;
+    if p_is_eta {
+        if !c.mode.is_hinge() {
+            return (0.0, [0.0; 3], 0.0);
+        }
+        let d2 = -arch.weight().d2rho_deta2(eta) * {
+            let (s, sr) = (c.beta.sin(), arch.beta_right().sin());
+            match order {
+                0 => s - sr,
+                1 => c.beta.cos(),
+                _ => -s,
+            }
+        };
+        let sign = if c.mode == HingeExtrados { 1.0 } else { -1.0 };
+        (
+            a.activation_d_eta(c.mode, order, x),
+            a.n[order].g.map(|v| -0.5 * v),
+            sign * d2,
+        )
+    } else {
+        if c.mode.is_hinge() {
+            return (0.0, [0.0; 3], 0.0);
+        }
+        (
+            a.activation_d_mu(c.mode, order, x),
+            a.n[order].g.map(|v| -v),
+            0.0,
+        )
+    }
+}
+
 impl System<'_> {
-    fn n_unknowns(&self) -> usize {
-        4 + self.free.len() + if self.kkt { self.contacts.len() } else { 0 }
+    fn params(&self) -> &'static [bool] {
+        // true = η, false = μ, in the order of the unknown vector
+        match self.unknowns {
+            Unknowns::Eta => &[true],
+            Unknowns::Mu => &[false],
+            Unknowns::EtaMu => &[true, false],
+        }
     }
 
-    fn unpack(&self, z: &[f64]) -> (Reactions, f64, Vec<Contact>) {
+    fn col_beta(&self) -> usize {
+        3 + self.params().len()
+    }
+
+    fn n_unknowns(&self) -> usize {
+        self.col_beta() + self.free.len() + if self.kkt { self.contacts.len() } else { 0 }
+    }
+
+    fn n_equations(&self) -> usize {
+        self.contacts.len() + self.free.len() + if self.kkt { 4 } else { 0 }
+    }
+
+    fn unpack(&self, z: &[f64]) -> (Reactions, f64, f64, Vec<Contact>) {
+        let (mut eta, mut mu) = (self.eta, self.mu);
+        for (k, &is_eta) in self.params().iter().enumerate() {
+            if is_eta {
+                eta = z[3 + k];
+            } else {
+                mu = z[3 + k];
+            }
+        }
         let mut cs = self.contacts.clone();
         for (j, &i) in self.free.iter().enumerate() {
-            cs[i].beta = z[4 + j];
+            cs[i].beta = z[self.col_beta() + j];
         }
-        ([z[0], z[1], z[2]], z[3], cs)
+        ([z[0], z[1], z[2]], eta, mu, cs)
     }
 
     fn multipliers<'z>(&self, z: &'z [f64]) -> &'z [f64] {
-        &z[4 + self.free.len()..]
+        &z[self.col_beta() + self.free.len()..]
+    }
+
+    fn inside(&self, z: &[f64]) -> bool {
+        let (lo, hi) = (self.arch.beta_right(), self.arch.beta_left());
+        let (_, eta, mu, _) = self.unpack(z);
+        let cb = self.col_beta();
+        eta > 0.0
+            && eta < 2.0
+            && mu > 0.0
+            && z[cb..cb + self.free.len()]
+                .iter()
+                .all(|&b| b > lo && b < hi)
     }
 
     /// Residual F(z) and, when `jac` is given, its Jacobian.
     fn eval(&self, z: &[f64], mut jac: Option<&mut DMatrix<f64>>) -> Vec<f64> {
-        let (x, eta, cs) = self.unpack(z);
-        let mu = self.mu;
+        let (x, eta, mu, cs) = self.unpack(z);
         let y = if self.kkt {
             self.multipliers(z)
         } else {
             &[][..]
         };
-        let col_y = 4 + self.free.len();
-        let mut f = Vec::new();
+        let params = self.params();
+        let col_y = self.col_beta() + self.free.len();
+        let (ds, dn) = (cs.len() + self.free.len(), cs.len() + self.free.len() + 3);
+        let mut f = Vec::with_capacity(self.n_equations());
         let mut stat = [0.0; 3];
         let mut norm_eq = 1.0;
-        let mut col_beta = 4;
-        let n_rows = cs.len() + self.free.len();
+        let mut col_beta = self.col_beta();
         for (i, c) in cs.iter().enumerate() {
             let a = actions(self.arch, eta, c.beta);
             let f0 = a.activation(c.mode, 0, eta, mu);
@@ -105,61 +201,54 @@ impl System<'_> {
             if c.free {
                 f.push(f1.at(&x));
             }
-            // ∂(∇ₓφ)/∂η: −½∇ₓN for hinges, 0 for sliding.
-            let dg_deta = |order: usize| -> [f64; 3] {
-                if c.mode.is_hinge() {
-                    a.n[order].g.map(|v| -0.5 * v)
-                } else {
-                    [0.0; 3]
-                }
-            };
-            let d_eta0 = a.activation_d_eta(c.mode, 0, &x);
+            // the KKT objective is the first (only) parameter
+            let objective = d_param(self.arch, &a, c, 0, &x, eta, params[0]);
             if self.kkt {
                 for (st, g) in stat.iter_mut().zip(f0.g) {
                     *st += y[i] * g;
                 }
-                norm_eq += y[i] * d_eta0;
+                norm_eq += y[i] * objective.0;
             }
-            if let Some(j) = jac.as_deref_mut() {
-                for k in 0..3 {
-                    j[(row, k)] = f0.g[k];
-                }
-                j[(row, 3)] = d_eta0;
+            let Some(j) = jac.as_deref_mut() else {
                 if c.free {
-                    let f2 = a.activation(c.mode, 2, eta, mu);
-                    j[(row, col_beta)] = f1.at(&x);
-                    for k in 0..3 {
-                        j[(row + 1, k)] = f1.g[k];
-                    }
-                    j[(row + 1, 3)] = a.activation_d_eta(c.mode, 1, &x);
-                    j[(row + 1, col_beta)] = f2.at(&x);
+                    col_beta += 1;
                 }
-                if self.kkt {
-                    let (ds, dn) = (n_rows, n_rows + 3);
-                    let g_eta = dg_deta(0);
-                    for k in 0..3 {
-                        // stationarity rows
-                        j[(ds + k, 3)] += y[i] * g_eta[k];
-                        j[(ds + k, col_y + i)] = f0.g[k];
-                        if c.free {
-                            j[(ds + k, col_beta)] += y[i] * f1.g[k];
-                        }
-                        // normalisation row, ∂/∂x
-                        j[(dn, k)] += y[i] * g_eta[k];
-                    }
-                    let d2 = self.arch.weight().d2rho_deta2(eta)
-                        * -(c.beta.sin() - self.arch.beta_right().sin());
-                    let d2 = match c.mode {
-                        crate::statics::JointMode::HingeExtrados => d2,
-                        crate::statics::JointMode::HingeIntrados => -d2,
-                        _ => 0.0,
-                    };
-                    j[(dn, 3)] += y[i] * d2;
+                continue;
+            };
+            for k in 0..3 {
+                j[(row, k)] = f0.g[k];
+            }
+            for (k, &is_eta) in params.iter().enumerate() {
+                j[(row, 3 + k)] = d_param(self.arch, &a, c, 0, &x, eta, is_eta).0;
+                if c.free {
+                    j[(row + 1, 3 + k)] = d_param(self.arch, &a, c, 1, &x, eta, is_eta).0;
+                }
+            }
+            if c.free {
+                let f2 = a.activation(c.mode, 2, eta, mu);
+                j[(row, col_beta)] = f1.at(&x);
+                for k in 0..3 {
+                    j[(row + 1, k)] = f1.g[k];
+                }
+                j[(row + 1, col_beta)] = f2.at(&x);
+            }
+            if self.kkt {
+                let (dp0, dp_grad, dpp) = objective;
+                for k in 0..3 {
+                    // stationarity rows Σ y ∇ₓφ = 0
+                    j[(ds + k, 3)] += y[i] * dp_grad[k];
+                    j[(ds + k, col_y + i)] = f0.g[k];
                     if c.free {
-                        j[(dn, col_beta)] += y[i] * a.activation_d_eta(c.mode, 1, &x);
+                        j[(ds + k, col_beta)] += y[i] * f1.g[k];
                     }
-                    j[(dn, col_y + i)] = d_eta0;
+                    // normalisation row 1 + Σ y ∂φ/∂p = 0, ∂/∂x
+                    j[(dn, k)] += y[i] * dp_grad[k];
                 }
+                j[(dn, 3)] += y[i] * dpp;
+                if c.free {
+                    j[(dn, col_beta)] += y[i] * d_param(self.arch, &a, c, 1, &x, eta, params[0]).0;
+                }
+                j[(dn, col_y + i)] = dp0;
             }
             if c.free {
                 col_beta += 1;
@@ -181,7 +270,8 @@ fn inf_norm(f: &[f64]) -> f64 {
     f.iter().fold(0.0f64, |m, v| m.max(v.abs()))
 }
 
-/// Solves the system of `contacts` at friction `mu` from the starting point (x0, η0).
+/// Solves the system of `contacts` at friction `mu` (the thickness problem, unknown η)
+/// from the starting point (x0, η0).
 pub fn solve_pattern(
     arch: &Arch,
     mu: f64,
@@ -190,23 +280,49 @@ pub fn solve_pattern(
     eta0: f64,
     settings: &Settings,
 ) -> Result<Refined, NewtonFailure> {
+    solve_system(arch, contacts, x0, eta0, mu, Unknowns::Eta, settings)
+}
+
+/// Solves the system of `contacts` with the given parameters unknown, from the
+/// starting point (x0, η0, μ0). With fewer contacts than unknowns (a single unknown
+/// parameter and fewer than four contacts), the KKT conditions of minimising that
+/// parameter complete the system.
+pub fn solve_system(
+    arch: &Arch,
+    contacts: &[Contact],
+    x0: Reactions,
+    eta0: f64,
+    mu0: f64,
+    unknowns: Unknowns,
+    settings: &Settings,
+) -> Result<Refined, NewtonFailure> {
     if contacts.is_empty() {
         return Err(NewtonFailure::Empty);
     }
     let free: Vec<usize> = (0..contacts.len()).filter(|&i| contacts[i].free).collect();
-    let kkt = contacts.len() < 4;
+    let n_params = if unknowns == Unknowns::EtaMu { 2 } else { 1 };
+    // The friction-only problem has 3 effective unknowns (w does not enter T or N).
+    let needed = match unknowns {
+        Unknowns::Mu => 3,
+        _ => 3 + n_params,
+    };
+    let kkt = unknowns != Unknowns::EtaMu && contacts.len() < needed;
     let sys = System {
         arch,
-        mu,
+        eta: eta0,
+        mu: mu0,
+        unknowns,
         contacts: contacts.to_vec(),
         free,
         kkt,
     };
     let mut z: Vec<f64> = x0.to_vec();
-    z.push(eta0);
+    for &is_eta in sys.params() {
+        z.push(if is_eta { eta0 } else { mu0 });
+    }
     z.extend(sys.free.iter().map(|&i| contacts[i].beta));
     if kkt {
-        z.extend(initial_multipliers(arch, mu, contacts, &x0, eta0));
+        z.extend(initial_multipliers(&sys, &x0));
     }
     let (z, fnorm, iterations) = newton(&sys, z, settings)?;
     // Restart once from the solution rounded to 9 significant digits: the LP's
@@ -217,7 +333,7 @@ pub fn solve_pattern(
         Ok((zs, fs, is)) => (zs, fs, iterations + is),
         Err(_) => (z, fnorm, iterations),
     };
-    let (x, eta, cs) = sys.unpack(&z);
+    let (x, eta, mu, cs) = sys.unpack(&z);
     let multipliers = if kkt {
         sys.multipliers(&z).to_vec()
     } else {
@@ -229,6 +345,7 @@ pub fn solve_pattern(
     Ok(Refined {
         x,
         eta,
+        mu,
         contacts: cs,
         multipliers,
         residual: fnorm,
@@ -243,22 +360,18 @@ fn newton(
     z0: Vec<f64>,
     settings: &Settings,
 ) -> Result<(Vec<f64>, f64, usize), NewtonFailure> {
-    let arch = sys.arch;
-    let contacts = &sys.contacts;
-    let kkt = sys.kkt;
-    let (lo, hi) = (arch.beta_right(), arch.beta_left());
     let n = sys.n_unknowns();
-    let n_eq = contacts.len() + sys.free.len() + if kkt { 4 } else { 0 };
+    let n_eq = sys.n_equations();
     let mut z = z0;
     let mut f = sys.eval(&z, None);
     let mut fnorm = inf_norm(&f) / scale_of(&z);
     let mut iterations = 0;
-    let converged = loop {
+    loop {
         if fnorm <= settings.newton_tol {
-            break true;
+            return Ok((z, fnorm, iterations));
         }
         if iterations >= settings.newton_max_iter {
-            break fnorm <= 1e3 * settings.newton_tol;
+            break;
         }
         iterations += 1;
         let mut jac = DMatrix::<f64>::zeros(n_eq, n);
@@ -286,10 +399,7 @@ fn newton(
                 .enumerate()
                 .map(|(j, v)| v + t * step[j] * colscale[j])
                 .collect();
-            let inside = zn[3] > 0.0
-                && zn[3] < 2.0
-                && zn[4..4 + sys.free.len()].iter().all(|&b| b > lo && b < hi);
-            if inside {
+            if sys.inside(&zn) {
                 let fnew = sys.eval(&zn, None);
                 let nn = inf_norm(&fnew) / scale_of(&zn);
                 if nn < fnorm {
@@ -303,20 +413,14 @@ fn newton(
             t *= 0.5;
         }
         if !accepted {
-            // Stagnation at the rounding level counts as convergence.
-            if fnorm <= 1e3 * settings.newton_tol {
-                break true;
-            }
-            let out = !(z[3] > 0.0 && z[3] < 2.0);
-            return Err(if out {
-                NewtonFailure::LeftDomain
-            } else {
-                NewtonFailure::NoConvergence(fnorm)
-            });
+            break;
         }
-    };
-    if converged {
+    }
+    // Stagnation at the rounding level counts as convergence.
+    if fnorm <= 1e3 * settings.newton_tol {
         Ok((z, fnorm, iterations))
+    } else if !sys.inside(&z) {
+        Err(NewtonFailure::LeftDomain)
     } else {
         Err(NewtonFailure::NoConvergence(fnorm))
     }
@@ -332,21 +436,17 @@ fn round_sig(v: f64, digits: i32) -> f64 {
     (v * p).round() / p
 }
 
-/// Least-squares multipliers of [∇ₓφ_i; ∂φ_i/∂η] y = [0; −1] at the starting point.
-fn initial_multipliers(
-    arch: &Arch,
-    mu: f64,
-    contacts: &[Contact],
-    x: &Reactions,
-    eta: f64,
-) -> Vec<f64> {
-    let m = contacts.len();
+/// Least-squares multipliers of [∇ₓφ_i; ∂φ_i/∂p] y = [0; −1] at the starting point.
+fn initial_multipliers(sys: &System, x: &Reactions) -> Vec<f64> {
+    let m = sys.contacts.len();
+    let is_eta = sys.params()[0];
     let a = DMatrix::from_fn(4, m, |r, i| {
-        let act = actions(arch, eta, contacts[i].beta);
+        let c = &sys.contacts[i];
+        let act = actions(sys.arch, sys.eta, c.beta);
         if r < 3 {
-            act.activation(contacts[i].mode, 0, eta, mu).g[r]
+            act.activation(c.mode, 0, sys.eta, sys.mu).g[r]
         } else {
-            act.activation_d_eta(contacts[i].mode, 0, x)
+            d_param(sys.arch, &act, c, 0, x, sys.eta, is_eta).0
         }
     });
     let b = DVector::from_vec(vec![0.0, 0.0, 0.0, -1.0]);
