@@ -3,7 +3,8 @@
 
 use crate::arch::{Arch, InputError, WeightModel};
 use crate::curve::{mu_grid, sample};
-use crate::limit::{least_friction, solve, Outcome};
+use crate::friction::least_friction;
+use crate::limit::{solve, Outcome};
 use crate::render::{json, table};
 use crate::settings::Settings;
 use clap::{Args, Parser, Subcommand, ValueEnum};

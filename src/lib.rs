@@ -22,6 +22,7 @@
 //! | [`mechanism`] | §4–5 kinematic LP, mechanism cone |
 //! | [`refine`] | §5 Newton on a pattern's square system |
 //! | [`limit`] | §5 η*(μ): bracket, enumerate, verify |
+//! | [`friction`] | §6 the friction-only problem, μ_ms |
 //! | [`mode`] | §5 collapse-mode names from the pattern |
 //! | [`curve`] | η*(μ) sampled over μ |
 //! | [`render`], [`cli`] | text and JSON output, the command line (thin layers) |
@@ -41,6 +42,7 @@ pub mod arch;
 pub mod cli;
 pub mod contact;
 pub mod curve;
+pub mod friction;
 pub mod kinematics;
 pub mod limit;
 pub mod lp;
@@ -54,7 +56,8 @@ pub mod statics;
 
 pub use arch::{Arch, InputError, JointLayout, Radians, WeightModel};
 pub use contact::{Contact, Location};
-pub use limit::{least_friction, solve, LimitState, Outcome, Solution};
+pub use friction::{friction_limit, least_friction, FrictionLimit};
+pub use limit::{solve, LimitState, Outcome, Solution};
 pub use mode::Mode;
 pub use settings::Settings;
 pub use statics::JointMode;

@@ -15,6 +15,7 @@
 use crate::admissibility::{grad_norm, max_margin, Goal, Margin, WorkingSet};
 use crate::arch::{check_mu, Arch, InputError};
 use crate::contact::{Contact, Peak};
+use crate::friction::least_friction;
 use crate::lp::LpOutcome;
 use crate::mechanism::{self, Mechanism};
 use crate::mode::{classify, Mode};
@@ -107,11 +108,11 @@ pub struct Solution {
     pub candidates: Vec<Candidate>,
 }
 
-fn scale_of(x: &Reactions) -> f64 {
+pub(crate) fn scale_of(x: &Reactions) -> f64 {
     1.0 + x.iter().map(|v| v.abs()).sum::<f64>()
 }
 
-fn margin_at(
+pub(crate) fn margin_at(
     arch: &Arch,
     eta: f64,
     mu: f64,
@@ -131,7 +132,7 @@ type Bracket<T> = ((f64, f64), (f64, f64, T));
 /// Root of an increasing function f on [lo, hi] with f(lo) < 0 ≤ f(hi): Illinois
 /// regula falsi with geometric bisection as a safeguard. `eval` returns f and the
 /// payload kept for the upper end. Stops when hi − lo ≤ rel · hi.
-fn bracket_root<T: Clone>(
+pub(crate) fn bracket_root<T: Clone>(
     mut lo: (f64, f64),
     mut hi: (f64, f64, T),
     rel: f64,
@@ -183,39 +184,6 @@ fn bracket_root<T: Clone>(
         }
     }
     Ok((lo, hi))
-}
-
-/// The least friction coefficient μ_ms for which some state satisfies |T| ≤ μN at
-/// every joint (the friction-only problem, formulation §6), to relative precision
-/// `settings.bracket_rel`. `None` when no finite μ suffices.
-pub fn least_friction(arch: &Arch, settings: &Settings) -> Result<Option<f64>, String> {
-    let modes = [JointMode::SlidePlus, JointMode::SlideMinus];
-    let mut ws = WorkingSet::initial(arch);
-    let mut f = |mu: f64| -> Result<(f64, ()), String> {
-        let m = margin_at(arch, 1.0, mu, &modes, &mut ws, settings)?;
-        Ok((m.margin, ()))
-    };
-    let mut hi = 1.0;
-    let mut fhi = f(hi)?.0;
-    while fhi < 0.0 {
-        hi *= 4.0;
-        if hi > 1e8 {
-            return Ok(None);
-        }
-        fhi = f(hi)?.0;
-    }
-    let f0 = f(0.0)?.0;
-    if f0 >= 0.0 {
-        return Ok(Some(0.0));
-    }
-    let (_, hi) = bracket_root(
-        (0.0, f0),
-        (hi, fhi, ()),
-        settings.bracket_rel * 1e-4,
-        200,
-        f,
-    )?;
-    Ok(Some(hi.0))
 }
 
 /// Solves for the least thickness η*(μ) of `arch` at friction `mu` (`f64::INFINITY`:
@@ -278,6 +246,7 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
         eta_hi,
         &m_hi.x,
         Some(m_hi.margin.max(0.0)),
+        modes,
         settings,
     );
     let sizes: Vec<usize> = (2..=5).collect();
@@ -319,7 +288,7 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
     // dilatancy. A limit state then needs a larger η and another active set: widen the
     // pool to the best local maxima at that state, whatever their slack, and enumerate
     // determined patterns (four or five contacts).
-    let pool = candidates_at(arch, mu, st.eta, &st.x, None, settings);
+    let pool = candidates_at(arch, mu, st.eta, &st.x, None, modes, settings);
     let second = enumerate(
         arch,
         mu,
@@ -351,12 +320,13 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
 /// Local maxima of φ at the state (η, x) that may be active contacts, best first: with
 /// `margin` given, those whose normalised slack is within `candidate_rel` of it; with
 /// `None`, simply the best ones. At most `max_candidates`.
-fn candidates_at(
+pub(crate) fn candidates_at(
     arch: &Arch,
     mu: f64,
     eta: f64,
     x: &Reactions,
     margin: Option<f64>,
+    modes: &[JointMode],
     settings: &Settings,
 ) -> Vec<Contact> {
     let state = State {
@@ -369,6 +339,7 @@ fn candidates_at(
     let mut peaks: Vec<(f64, Peak)> = state
         .near_active(settings, f64::NEG_INFINITY)
         .into_iter()
+        .filter(|p| modes.contains(&p.contact.mode))
         .map(|p| {
             (
                 -p.value / grad_norm(arch, eta, mu, p.contact.mode, p.contact.beta),

@@ -86,6 +86,26 @@ fn least_friction_mu_ms() {
     assert_digits("mu_ms (alpha = pi/6)", m6, 0.73904014, 8);
 }
 
+/// The sliding joints of the friction-limiting state: beta_T at the mu_ms corner.
+#[test]
+fn friction_limit_sliding_joints() {
+    let s = Settings::default();
+    for (alpha, beta_t) in [(0.0, 1.0710004), (PI / 6.0, 1.1453296)] {
+        let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
+        let f = arch_enum::friction_limit(&arch, &s).unwrap().unwrap();
+        assert!(f.exact);
+        let interior: Vec<f64> = f
+            .pattern
+            .iter()
+            .filter(|c| c.at == arch_enum::Location::Interior)
+            .map(|c| c.beta)
+            .collect();
+        assert_eq!(interior.len(), 2, "{:?}", f.pattern);
+        assert_digits("beta_T", interior[0], beta_t, 8);
+        assert_digits("pi - beta_T", PI - interior[1], PI - (PI - beta_t), 8);
+    }
+}
+
 #[test]
 fn below_mu_ms_there_is_no_equilibrium() {
     let arch = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();

@@ -1,0 +1,131 @@
+//! The friction-only problem (formulation §6): the least friction coefficient μ_ms for
+//! which some state satisfies |T| ≤ μN at every joint. Neither T nor N involves w or
+//! η, so this is a problem in (h, v) alone; below μ_ms no thickness can stand.
+//!
+//! The LP bracket (constraint generation over the continuum, Illinois in μ) gives the
+//! candidate sliding contacts; the pattern's system with μ unknown (and the KKT
+//! conditions of min μ when it has fewer than three contacts) is solved by Newton and
+//! verified over the whole arch, as for the thickness problem.
+
+use crate::admissibility::WorkingSet;
+use crate::arch::Arch;
+use crate::contact::Contact;
+use crate::limit::{bracket_root, candidates_at, margin_at};
+use crate::refine::{solve_system, Unknowns};
+use crate::scan::State;
+use crate::settings::Settings;
+use crate::statics::{magnitude, JointMode, Reactions};
+use itertools::Itertools;
+
+/// The sliding activation functions.
+pub const SLIDES: [JointMode; 2] = [JointMode::SlidePlus, JointMode::SlideMinus];
+
+/// The friction limit of an arch.
+#[derive(Debug, Clone)]
+pub struct FrictionLimit {
+    /// μ_ms: below it no state satisfies the friction conditions.
+    pub mu: f64,
+    /// Reactions (h, v) of the limiting state (w is irrelevant here and left as found).
+    pub x: Reactions,
+    /// The active sliding contacts, by increasing β.
+    pub pattern: Vec<Contact>,
+    /// True when μ comes from a verified exact pattern; false when only the LP bracket
+    /// (relative width `bracket_rel`) is available.
+    pub exact: bool,
+}
+
+/// Solves the friction-only problem. `Ok(None)` when no finite μ suffices.
+pub fn friction_limit(arch: &Arch, settings: &Settings) -> Result<Option<FrictionLimit>, String> {
+    let mut ws = WorkingSet::initial(arch);
+    let mut f = |mu: f64| -> Result<(f64, Reactions), String> {
+        let m = margin_at(arch, 1.0, mu, &SLIDES, &mut ws, settings)?;
+        Ok((m.margin, m.x))
+    };
+    let mut hi = 1.0;
+    let (mut fhi, mut xhi) = f(hi)?;
+    while fhi < 0.0 {
+        hi *= 4.0;
+        if hi > 1e8 {
+            return Ok(None);
+        }
+        (fhi, xhi) = f(hi)?;
+    }
+    let (f0, x0) = f(0.0)?;
+    if f0 >= 0.0 {
+        return Ok(Some(FrictionLimit {
+            mu: 0.0,
+            x: x0,
+            pattern: Vec::new(),
+            exact: true,
+        }));
+    }
+    let (_, (mu_hi, margin_hi, x_hi)) =
+        bracket_root((0.0, f0), (hi, fhi, xhi), settings.bracket_rel, 200, f)?;
+
+    let cand = candidates_at(
+        arch,
+        mu_hi,
+        1.0,
+        &x_hi,
+        Some(margin_hi.max(0.0)),
+        &SLIDES,
+        settings,
+    );
+    let mut best: Option<FrictionLimit> = None;
+    let mut patterns: Vec<Vec<Contact>> = vec![cand.clone()];
+    for k in (1..=3).rev() {
+        if cand.len() > k {
+            patterns.extend(cand.iter().copied().combinations(k));
+        }
+    }
+    for p in patterns {
+        let Ok(r) = solve_system(arch, &p, x_hi, 1.0, mu_hi, Unknowns::Mu, settings) else {
+            continue;
+        };
+        if best.as_ref().is_some_and(|b| b.mu <= r.mu) {
+            continue;
+        }
+        let st = State {
+            arch,
+            eta: 1.0,
+            mu: r.mu,
+            x: r.x,
+        };
+        let mag = |m: JointMode| magnitude(m, 1.0, r.mu, &r.x, settings.magnitude_floor);
+        let peaks: Vec<_> = st
+            .peaks(settings)
+            .into_iter()
+            .filter(|p| SLIDES.contains(&p.contact.mode))
+            .collect();
+        let worst = peaks
+            .iter()
+            .map(|p| p.value / mag(p.contact.mode))
+            .fold(f64::NEG_INFINITY, f64::max);
+        if worst > settings.adm_tol || r.mu > mu_hi * (1.0 + 1e-9) {
+            continue;
+        }
+        let mut pattern: Vec<Contact> = peaks
+            .iter()
+            .filter(|p| p.value >= -10.0 * settings.adm_tol * mag(p.contact.mode))
+            .map(|p| p.contact)
+            .collect();
+        pattern.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.mode.cmp(&b.mode)));
+        best = Some(FrictionLimit {
+            mu: r.mu,
+            x: r.x,
+            pattern,
+            exact: true,
+        });
+    }
+    Ok(Some(best.unwrap_or(FrictionLimit {
+        mu: mu_hi,
+        x: x_hi,
+        pattern: cand,
+        exact: false,
+    })))
+}
+
+/// μ_ms alone (see [`friction_limit`]).
+pub fn least_friction(arch: &Arch, settings: &Settings) -> Result<Option<f64>, String> {
+    Ok(friction_limit(arch, settings)?.map(|f| f.mu))
+}
