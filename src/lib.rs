@@ -23,6 +23,7 @@
 //! | [`refine`] | §5 Newton on a pattern's square system |
 //! | [`limit`] | §5 η*(μ): bracket, enumerate, verify |
 //! | [`friction`] | §6 the friction-only problem, μ_ms |
+//! | [`limit_curve`] | §5 the η–μ curve: branches and exact corners |
 //! | [`mode`] | §5 collapse-mode names from the pattern |
 //! | [`curve`] | η*(μ) sampled over μ |
 //! | [`render`], [`cli`] | text and JSON output, the command line (thin layers) |
@@ -45,6 +46,7 @@ pub mod curve;
 pub mod friction;
 pub mod kinematics;
 pub mod limit;
+pub mod limit_curve;
 pub mod lp;
 pub mod mechanism;
 pub mod mode;

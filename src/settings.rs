@@ -42,6 +42,8 @@ pub struct Settings {
     pub lp_tol: f64,
     /// Maximum constraint-generation rounds per LP. Default 60.
     pub max_rounds: usize,
+    /// Number of μ samples used to discover the branches of the limit curve. Default 16.
+    pub curve_samples: usize,
     /// A rate below `rate_tol` (rates sum to 1) counts as zero. Default 1e-10.
     pub rate_tol: f64,
 }
@@ -62,6 +64,7 @@ impl Default for Settings {
             lp_tol: 1e-10,
             max_rounds: 60,
             rate_tol: 1e-10,
+            curve_samples: 16,
         }
     }
 }

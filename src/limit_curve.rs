@@ -1,0 +1,321 @@
+//! The whole η–μ limit curve of an arch (formulation §5): its branches with their
+//! collapse modes and the corners where the active pattern changes, located exactly.
+//!
+//! 1. μ_ms and its sliding pattern come from the friction-only problem
+//!    ([`crate::friction`]); η*(∞) from the thickness problem without sliding.
+//! 2. η*(μ) is solved on a geometric grid from just above μ_ms to twice μ_rm, the
+//!    friction the infinite-friction state needs (max |T|/N over the arch), or to
+//!    10³ μ_ms when that state overturns (N = 0 somewhere: no finite μ_rm).
+//! 3. Between two samples whose patterns differ, the corner is the state where both
+//!    patterns' contacts are active: Newton on their union with μ as an extra unknown,
+//!    accepted when it converges between the samples and is admissible over the arch.
+//!    Otherwise the interval is bisected in μ (patterns compared) and Newton retried;
+//!    a corner still not converged is reported with `exact: false`.
+//! 4. The lowest branch ends at the corner with the vertical purely-sliding branch
+//!    (μ = μ_ms, η ≥ η_ms), solved the same way from the friction-limiting pattern.
+//!    A top branch whose pattern differs from the infinite-friction one approaches it
+//!    asymptotically: its corner is at μ = ∞.
+
+use crate::arch::Arch;
+use crate::contact::{Contact, Location};
+use crate::friction::{friction_limit, FrictionLimit};
+use crate::limit::{solve, LimitState, Outcome};
+use crate::mode::{classify, Mode};
+use crate::refine::{solve_system, Unknowns};
+use crate::scan::State;
+use crate::settings::Settings;
+use crate::statics::{internal_forces, magnitude, JointMode, Reactions};
+
+/// A branch of the limit curve: an interval of μ with one active pattern.
+#[derive(Debug, Clone)]
+pub struct Branch {
+    /// Collapse mode of the pattern.
+    pub mode: Mode,
+    /// Lower end of the μ interval.
+    pub mu_min: f64,
+    /// Upper end (∞ for a branch that extends to infinite friction).
+    pub mu_max: f64,
+    /// Least η on the branch (at `mu_max`; approached when `mu_max` is ∞).
+    pub eta_min: f64,
+    /// Greatest η (at `mu_min`; ∞ for the vertical purely-sliding branch).
+    pub eta_max: f64,
+    /// A representative pattern (from the middle of the branch).
+    pub pattern: Vec<Contact>,
+}
+
+/// A corner of the limit curve, where the active pattern changes.
+#[derive(Debug, Clone)]
+pub struct Corner {
+    /// Friction coefficient (∞ for the asymptote of a branch).
+    pub mu: f64,
+    /// Thickness ratio.
+    pub eta: f64,
+    /// Reactions of the corner state.
+    pub x: Reactions,
+    /// Every active contact at the corner, by increasing β.
+    pub joints: Vec<Contact>,
+    /// The modes of the branches it joins: [higher μ, lower μ].
+    pub between: [Mode; 2],
+    /// True when located by Newton and verified; false when only bracketed in μ.
+    pub exact: bool,
+    /// Scaled Newton residual (0 for a corner at infinity).
+    pub residual: f64,
+}
+
+/// The limit curve of an arch.
+#[derive(Debug, Clone)]
+pub struct LimitCurve {
+    /// μ_ms, below which no thickness stands (`None`: no finite μ suffices).
+    pub mu_min: Option<f64>,
+    /// Branches, by decreasing μ, the vertical purely-sliding branch last.
+    pub branches: Vec<Branch>,
+    /// Corners, by decreasing μ.
+    pub corners: Vec<Corner>,
+    /// Samples that could not be resolved (μ and the reason).
+    pub unresolved: Vec<(f64, String)>,
+    /// Number of η*(μ) solves used.
+    pub solves: usize,
+}
+
+type Signature = Vec<(JointMode, Location)>;
+
+fn signature(p: &[Contact]) -> Signature {
+    p.iter().map(|c| (c.mode, c.at)).collect()
+}
+
+#[derive(Debug, Clone)]
+struct Sample {
+    ls: LimitState,
+    sig: Signature,
+}
+
+struct Tracer<'a> {
+    arch: &'a Arch,
+    settings: &'a Settings,
+    solves: usize,
+    unresolved: Vec<(f64, String)>,
+}
+
+impl Tracer<'_> {
+    fn sample(&mut self, mu: f64) -> Option<Sample> {
+        self.solves += 1;
+        match solve(self.arch, mu, self.settings).map(|s| s.outcome) {
+            Ok(Outcome::Limit(ls)) => Some(Sample { sig: signature(&ls.pattern), ls }),
+            Ok(Outcome::NoEquilibrium { reason, .. })
+            | Ok(Outcome::Unresolved { reason, .. })
+            | Ok(Outcome::NoCollapse { reason }) => {
+                self.unresolved.push((mu, reason));
+                None
+            }
+            Err(e) => {
+                self.unresolved.push((mu, e.to_string()));
+                None
+            }
+        }
+    }
+
+    fn mode_of(&self, p: &[Contact]) -> Mode {
+        classify(p, 0.5 * (self.arch.beta_right() + self.arch.beta_left()), self.settings.same_joint)
+    }
+
+    /// Newton on the union of two patterns with η and μ unknown, from the state
+    /// (x, η, μ); verified admissible and with μ in [mu_lo, mu_hi].
+    fn corner_newton(
+        &self,
+        upper: &[Contact],
+        lower: &[Contact],
+        start: (Reactions, f64, f64),
+        mu_range: (f64, f64),
+        between: [Mode; 2],
+    ) -> Option<Corner> {
+        let mut union: Vec<Contact> = lower.to_vec();
+        for c in upper {
+            let dup = union.iter().any(|d| d.mode == c.mode && d.at == c.at && (d.beta - c.beta).abs() < 0.05);
+            if !dup {
+                union.push(*c);
+            }
+        }
+        let s = self.settings;
+        let r = solve_system(self.arch, &union, start.0, start.1, start.2, Unknowns::EtaMu, s).ok()?;
+        let tol = 1e-9;
+        if !(r.mu >= mu_range.0 * (1.0 - tol) && r.mu <= mu_range.1 * (1.0 + tol)) {
+            return None;
+        }
+        let st = State { arch: self.arch, eta: r.eta, mu: r.mu, x: r.x };
+        let mag = |m: JointMode| magnitude(m, r.eta, r.mu, &r.x, s.magnitude_floor);
+        let peaks = st.peaks(s);
+        let worst = peaks.iter().map(|p| p.value / mag(p.contact.mode)).fold(f64::NEG_INFINITY, f64::max);
+        if worst > s.adm_tol {
+            return None;
+        }
+        let mut joints: Vec<Contact> = peaks
+            .iter()
+            .filter(|p| p.value >= -10.0 * s.adm_tol * mag(p.contact.mode))
+            .map(|p| p.contact)
+            .collect();
+        joints.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.mode.cmp(&b.mode)));
+        Some(Corner { mu: r.mu, eta: r.eta, x: r.x, joints, between, exact: true, residual: r.residual })
+    }
+
+    /// The corners between samples `a` (higher μ) and `b` (lower μ) with different
+    /// patterns.
+    fn locate(&mut self, a: &Sample, b: &Sample, depth: usize) -> Vec<Corner> {
+        let between = [self.mode_of(&a.ls.pattern), self.mode_of(&b.ls.pattern)];
+        let range = (b.ls.mu, a.ls.mu);
+        for start in [&b.ls, &a.ls] {
+            if let Some(c) = self.corner_newton(&a.ls.pattern, &b.ls.pattern, (start.x, start.eta, start.mu), range, between) {
+                return vec![c];
+            }
+        }
+        let mid_mu = (a.ls.mu * b.ls.mu).sqrt();
+        if depth == 0 || a.ls.mu / b.ls.mu < 1.0 + 1e-12 {
+            return vec![Corner {
+                mu: mid_mu,
+                eta: 0.5 * (a.ls.eta + b.ls.eta),
+                x: b.ls.x,
+                joints: b.ls.pattern.clone(),
+                between,
+                exact: false,
+                residual: f64::NAN,
+            }];
+        }
+        let Some(m) = self.sample(mid_mu) else {
+            return self.locate_failed(a, b, between);
+        };
+        if m.sig == a.sig {
+            self.locate(&m, b, depth - 1)
+        } else if m.sig == b.sig {
+            self.locate(a, &m, depth - 1)
+        } else {
+            let mut v = self.locate(a, &m, depth - 1);
+            v.extend(self.locate(&m, b, depth - 1));
+            v
+        }
+    }
+
+    fn locate_failed(&self, a: &Sample, b: &Sample, between: [Mode; 2]) -> Vec<Corner> {
+        vec![Corner {
+            mu: (a.ls.mu * b.ls.mu).sqrt(),
+            eta: 0.5 * (a.ls.eta + b.ls.eta),
+            x: b.ls.x,
+            joints: b.ls.pattern.clone(),
+            between,
+            exact: false,
+            residual: f64::NAN,
+        }]
+    }
+}
+
+/// The friction an admissible state x at thickness η needs: max |T|/N over the arch
+/// (∞ when N vanishes where T does not, or N ≤ 0 somewhere).
+fn friction_needed(arch: &Arch, eta: f64, x: &Reactions, samples: usize) -> f64 {
+    let (a, b) = (arch.beta_right(), arch.beta_left());
+    let joints: Vec<f64> = match arch.layout() {
+        crate::arch::JointLayout::Discrete(j) => j.clone(),
+        crate::arch::JointLayout::Continuous => (0..=samples).map(|i| a + (b - a) * i as f64 / samples as f64).collect(),
+    };
+    let scale = 1.0 + x.iter().map(|v| v.abs()).sum::<f64>();
+    joints
+        .iter()
+        .map(|&beta| {
+            let (n, t, _) = internal_forces(arch, eta, x, beta);
+            if n <= 1e-9 * scale {
+                f64::INFINITY
+            } else {
+                t.abs() / n
+            }
+        })
+        .fold(0.0, f64::max)
+}
+
+/// Traces the limit curve of `arch`.
+pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
+    let mut tr = Tracer { arch, settings, solves: 0, unresolved: Vec::new() };
+    let fl: Option<FrictionLimit> = friction_limit(arch, settings).ok().flatten();
+    let Some(fl) = fl else {
+        return LimitCurve { mu_min: None, branches: vec![], corners: vec![], unresolved: tr.unresolved, solves: 0 };
+    };
+    let inf = tr.sample(f64::INFINITY);
+    let mu_lo = fl.mu * (1.0 + 1e-5);
+    let mu_rm = inf.as_ref().map_or(f64::INFINITY, |s| friction_needed(arch, s.ls.eta, &s.ls.x, 2000));
+    let mu_hi = if mu_rm.is_finite() { (2.0 * mu_rm).max(1.5 * mu_lo) } else { 1e3 * mu_lo.max(1e-3) };
+    let n = settings.curve_samples.max(2);
+    let mut samples: Vec<Sample> = Vec::new();
+    for i in (0..n).rev() {
+        let mu = mu_lo * (mu_hi / mu_lo).powf(i as f64 / (n - 1) as f64);
+        if let Some(s) = tr.sample(mu) {
+            samples.push(s);
+        }
+    }
+    let mut corners = Vec::new();
+    // the top: a finite pattern different from the infinite-friction one is asymptotic
+    if let (Some(top), Some(inf)) = (samples.first(), inf.as_ref()) {
+        if top.sig != inf.sig {
+            corners.push(Corner {
+                mu: f64::INFINITY,
+                eta: inf.ls.eta,
+                x: inf.ls.x,
+                joints: inf.ls.pattern.clone(),
+                between: [tr.mode_of(&top.ls.pattern), tr.mode_of(&inf.ls.pattern)],
+                exact: true,
+                residual: 0.0,
+            });
+        }
+    }
+    for w in 0..samples.len().saturating_sub(1) {
+        let (a, b) = (samples[w].clone(), samples[w + 1].clone());
+        if a.sig != b.sig {
+            corners.extend(tr.locate(&a, &b, 24));
+        }
+    }
+    // the corner with the vertical purely-sliding branch
+    if let Some(low) = samples.last() {
+        let between = [tr.mode_of(&low.ls.pattern), Mode::PurelySliding];
+        let start = (low.ls.x, low.ls.eta, low.ls.mu);
+        let c = tr
+            .corner_newton(&low.ls.pattern, &fl.pattern, start, (fl.mu * (1.0 - 1e-9), low.ls.mu), between)
+            .unwrap_or(Corner {
+                mu: fl.mu,
+                eta: low.ls.eta,
+                x: low.ls.x,
+                joints: fl.pattern.clone(),
+                between,
+                exact: false,
+                residual: f64::NAN,
+            });
+        corners.push(c);
+    }
+    corners.sort_by(|a, b| b.mu.total_cmp(&a.mu));
+
+    // branches between consecutive corners (by decreasing μ)
+    let mut branches = Vec::new();
+    let top_mu = f64::INFINITY;
+    let mut upper = (top_mu, inf.as_ref().map_or(f64::NAN, |s| s.ls.eta));
+    let mut finite_corners: Vec<&Corner> = corners.iter().filter(|c| c.mu.is_finite()).collect();
+    finite_corners.sort_by(|a, b| b.mu.total_cmp(&a.mu));
+    for c in &finite_corners {
+        let members: Vec<&Sample> = samples.iter().filter(|s| s.ls.mu < upper.0 && s.ls.mu > c.mu).collect();
+        if let Some(rep) = members.get(members.len() / 2) {
+            branches.push(Branch {
+                mode: tr.mode_of(&rep.ls.pattern),
+                mu_min: c.mu,
+                mu_max: upper.0,
+                eta_min: upper.1,
+                eta_max: c.eta,
+                pattern: rep.ls.pattern.clone(),
+            });
+        }
+        upper = (c.mu, c.eta);
+    }
+    if let Some(last) = finite_corners.last() {
+        branches.push(Branch {
+            mode: Mode::PurelySliding,
+            mu_min: fl.mu,
+            mu_max: fl.mu,
+            eta_min: last.eta,
+            eta_max: f64::INFINITY,
+            pattern: fl.pattern.clone(),
+        });
+    }
+    LimitCurve { mu_min: Some(fl.mu), branches, corners, unresolved: tr.unresolved, solves: tr.solves }
+}
