@@ -56,6 +56,15 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// The whole eta-mu limit curve: branches with their collapse modes and exact corners.
+    #[command(after_help = "Example:\n  arch-enum modes --alpha 1.0\n  arch-enum modes --alpha-deg 30 --json\n  arch-enum modes --alpha 0 --blocks 20")]
+    Modes {
+        #[command(flatten)]
+        arch: ArchArgs,
+        /// Print one JSON document instead of tables.
+        #[arg(long)]
+        json: bool,
+    },
     /// eta*(mu) sampled at geometrically spaced mu, one row per mu, with the mode.
     #[command(
         after_help = "Example:\n  arch-enum curve --alpha 0 --points 10\n  arch-enum curve --alpha 1 --mu-min 1 --mu-max 100 --json"
@@ -222,6 +231,23 @@ where
                     }
                     EXIT_NO_ANSWER
                 }
+            }
+        }
+        Command::Modes { arch, json: json_out } => {
+            let arch = match arch.build() {
+                Ok(a) => a,
+                Err(e) => return bad_input(&e, json_out, out, err),
+            };
+            let curve = crate::limit_curve::trace(&arch, &settings);
+            if json_out {
+                emit(out, &to_json(&json::modes(&arch, &curve)));
+            } else {
+                emit(out, &table::modes(&arch, &curve));
+            }
+            if curve.mu_min.is_some() {
+                EXIT_OK
+            } else {
+                EXIT_NO_ANSWER
             }
         }
         Command::Curve {

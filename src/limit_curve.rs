@@ -56,6 +56,9 @@ pub struct Corner {
     pub joints: Vec<Contact>,
     /// The modes of the branches it joins: [higher μ, lower μ].
     pub between: [Mode; 2],
+    /// The mode named from the corner's own active pattern (e.g.
+    /// `rotational_sliding_shoulders` where a springing hinges and slides at once).
+    pub mode: Mode,
     /// True when located by Newton and verified; false when only bracketed in μ.
     pub exact: bool,
     /// Scaled Newton residual (0 for a corner at infinity).
@@ -154,7 +157,8 @@ impl Tracer<'_> {
             .map(|p| p.contact)
             .collect();
         joints.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.mode.cmp(&b.mode)));
-        Some(Corner { mu: r.mu, eta: r.eta, x: r.x, joints, between, exact: true, residual: r.residual })
+        let mode = self.mode_of(&joints);
+        Some(Corner { mu: r.mu, eta: r.eta, x: r.x, joints, between, mode, exact: true, residual: r.residual })
     }
 
     /// The corners between samples `a` (higher μ) and `b` (lower μ) with different
@@ -175,6 +179,7 @@ impl Tracer<'_> {
                 x: b.ls.x,
                 joints: b.ls.pattern.clone(),
                 between,
+                mode: between[1],
                 exact: false,
                 residual: f64::NAN,
             }];
@@ -200,6 +205,7 @@ impl Tracer<'_> {
             x: b.ls.x,
             joints: b.ls.pattern.clone(),
             between,
+            mode: between[1],
             exact: false,
             residual: f64::NAN,
         }]
@@ -257,6 +263,7 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
                 x: inf.ls.x,
                 joints: inf.ls.pattern.clone(),
                 between: [tr.mode_of(&top.ls.pattern), tr.mode_of(&inf.ls.pattern)],
+                mode: tr.mode_of(&inf.ls.pattern),
                 exact: true,
                 residual: 0.0,
             });
@@ -280,6 +287,7 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
                 x: low.ls.x,
                 joints: fl.pattern.clone(),
                 between,
+                mode: Mode::PurelySliding,
                 exact: false,
                 residual: f64::NAN,
             });

@@ -271,3 +271,80 @@ pub struct ErrorJson {
     /// The message naming the argument and its valid range.
     pub message: String,
 }
+
+#[derive(Debug, Serialize)]
+struct BranchJson {
+    mode: &'static str,
+    mu_min: f64,
+    mu_max: f64,
+    eta_min: f64,
+    eta_max: f64,
+    pattern: Vec<Contact>,
+}
+
+#[derive(Debug, Serialize)]
+struct CornerJson {
+    mu: f64,
+    friction_angle_deg: f64,
+    eta: f64,
+    joints: Vec<Contact>,
+    between: [&'static str; 2],
+    mode: &'static str,
+    exact: bool,
+    residual: f64,
+}
+
+#[derive(Debug, Serialize)]
+struct UnresolvedJson {
+    mu: f64,
+    message: String,
+}
+
+/// The `modes --json` document (`null` stands for +∞).
+#[derive(Debug, Serialize)]
+pub struct ModesJson {
+    arch: ArchJson,
+    branches: Vec<BranchJson>,
+    corners: Vec<CornerJson>,
+    mu_min: Option<f64>,
+    unresolved: Vec<UnresolvedJson>,
+}
+
+/// Builds the `modes --json` document.
+pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> ModesJson {
+    ModesJson {
+        arch: ArchJson::new(arch),
+        branches: curve
+            .branches
+            .iter()
+            .map(|b| BranchJson {
+                mode: b.mode.name(),
+                mu_min: b.mu_min,
+                mu_max: b.mu_max,
+                eta_min: b.eta_min,
+                eta_max: b.eta_max,
+                pattern: b.pattern.clone(),
+            })
+            .collect(),
+        corners: curve
+            .corners
+            .iter()
+            .map(|c| CornerJson {
+                mu: c.mu,
+                friction_angle_deg: c.mu.atan().to_degrees(),
+                eta: c.eta,
+                joints: c.joints.clone(),
+                between: c.between.map(|m| m.name()),
+                mode: c.mode.name(),
+                exact: c.exact,
+                residual: c.residual,
+            })
+            .collect(),
+        mu_min: curve.mu_min,
+        unresolved: curve
+            .unresolved
+            .iter()
+            .map(|(mu, m)| UnresolvedJson { mu: *mu, message: m.clone() })
+            .collect(),
+    }
+}

@@ -253,3 +253,96 @@ pub fn curve(arch: &Arch, mu_ms: Option<f64>, points: &[CurvePoint]) -> String {
     }
     s
 }
+
+fn fmt_opt_inf(v: f64, digits: usize) -> String {
+    if v.is_infinite() {
+        "inf".to_string()
+    } else {
+        format!("{v:.digits$}")
+    }
+}
+
+/// The first interior contact of the right half of the arch whose kind passes `pick`
+/// (β_N for intrados hinges, β_T for sliding joints, as tables in papers give them).
+pub fn right_half_angle(arch: &Arch, joints: &[Contact], pick: impl Fn(&Contact) -> bool) -> Option<f64> {
+    let mid = 0.5 * (arch.beta_right() + arch.beta_left());
+    joints
+        .iter()
+        .find(|c| c.at == crate::contact::Location::Interior && c.beta < mid && pick(c))
+        .map(|c| c.beta)
+}
+
+/// The human-readable answer of `modes`: branches and corners, as in a paper.
+pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
+    use crate::statics::JointMode;
+    let mut s = String::new();
+    let _ = writeln!(s, "{}", describe_arch(arch));
+    match curve.mu_min {
+        Some(m) => {
+            let _ = writeln!(
+                s,
+                "least friction for equilibrium mu_ms = {m:.12} (friction angle {:.6} deg)",
+                m.atan().to_degrees()
+            );
+        }
+        None => {
+            let _ = writeln!(s, "no finite friction coefficient admits equilibrium");
+            return s;
+        }
+    }
+    let _ = writeln!(s, "\nbranches of the limit curve eta*(mu), by decreasing mu:");
+    let _ = writeln!(
+        s,
+        "  {:<30} {:>15} {:>15}   {:>15} {:>15}   joints (kind@beta deg)",
+        "mode", "mu from", "mu to", "eta from", "eta to"
+    );
+    for b in &curve.branches {
+        let joints: Vec<String> = b
+            .pattern
+            .iter()
+            .map(|c| format!("{}@{:.3}", short(c), c.beta.to_degrees()))
+            .collect();
+        let _ = writeln!(
+            s,
+            "  {:<30} {:>15} {:>15}   {:>15} {:>15}   {}",
+            b.mode.name(),
+            fmt_opt_inf(b.mu_max, 10),
+            fmt_opt_inf(b.mu_min, 10),
+            fmt_opt_inf(b.eta_min, 10),
+            fmt_opt_inf(b.eta_max, 10),
+            joints.join(" ")
+        );
+    }
+    let _ = writeln!(s, "\ncorners, by decreasing mu (beta_N: intrados hinge, beta_T: sliding joint, right half):");
+    let _ = writeln!(
+        s,
+        "  {:>16} {:>11} {:>16} {:>14} {:>14}  {:<52} {}",
+        "mu", "phi [deg]", "eta", "beta_N [rad]", "beta_T [rad]", "between", "exact"
+    );
+    for c in &curve.corners {
+        let bn = right_half_angle(arch, &c.joints, |c| c.mode == JointMode::HingeIntrados);
+        let bt = right_half_angle(arch, &c.joints, |c| !c.mode.is_hinge());
+        let f = |v: Option<f64>| v.map_or("-".to_string(), |b| format!("{b:.10}"));
+        let _ = writeln!(
+            s,
+            "  {:>16} {:>11} {:>16.12} {:>14} {:>14}  {:<52} {}",
+            fmt_opt_inf(c.mu, 12),
+            fmt_opt_inf(c.mu.atan().to_degrees(), 6),
+            c.eta,
+            f(bn),
+            f(bt),
+            format!("{} / {}", c.between[0].name(), c.between[1].name()),
+            if c.exact { "yes" } else { "no (bracketed)" }
+        );
+        let joints: Vec<String> = c
+            .joints
+            .iter()
+            .map(|j| format!("{}@{:.10}{}", short(j), j.beta, if j.at == crate::contact::Location::Springing { "(s)" } else { "" }))
+            .collect();
+        let _ = writeln!(s, "  {:>16} active: {} [{}]", "", joints.join(" "), c.mode.name());
+    }
+    for (mu, m) in &curve.unresolved {
+        let _ = writeln!(s, "  unresolved sample at mu = {mu}: {m}");
+    }
+    s
+}

@@ -8,7 +8,7 @@ fn arch_enum() -> Command {
     Command::cargo_bin("arch-enum").unwrap()
 }
 
-fn json_of(args: &[&str]) -> (Value, i32) {
+pub fn json_of(args: &[&str]) -> (Value, i32) {
     let out = arch_enum().args(args).arg("--json").output().unwrap();
     let v: Value = serde_json::from_slice(&out.stdout).unwrap_or_else(|e| {
         panic!(
@@ -20,7 +20,7 @@ fn json_of(args: &[&str]) -> (Value, i32) {
 }
 
 /// Rounds every float to 10 significant digits, so snapshots are machine-independent.
-fn round(v: &Value) -> Value {
+pub fn round(v: &Value) -> Value {
     match v {
         Value::Number(n) if n.is_f64() => {
             let x = n.as_f64().unwrap();

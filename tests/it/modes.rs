@@ -1,0 +1,118 @@
+//! The η–μ limit curve (`modes`): published corners to their printed digits, the hard
+//! openings' branches, and digit-stable snapshots of `modes --json` so that any change
+//! of a mode transition shows up as a snapshot diff.
+
+use crate::cli::{json_of, round};
+use arch_enum::limit_curve::{trace, LimitCurve};
+use arch_enum::{Arch, JointMode, Location, Mode, Settings, WeightModel};
+use std::f64::consts::PI;
+
+fn curve(alpha: f64) -> LimitCurve {
+    trace(&Arch::symmetric(alpha, WeightModel::Centreline).unwrap(), &Settings::default())
+}
+
+/// Asserts |value − printed| ≤ half a unit of the last of `digits` significant digits.
+fn assert_digits(what: &str, value: f64, printed: f64, digits: i32) {
+    let ulp = 10f64.powi(printed.abs().log10().floor() as i32 - digits + 1);
+    assert!((value - printed).abs() <= 0.5 * ulp, "{what}: computed {value:.12}, published {printed}");
+}
+
+fn right_interior(c: &arch_enum::limit_curve::Corner, slide: bool) -> f64 {
+    c.joints
+        .iter()
+        .find(|j| j.at == Location::Interior && j.beta < PI / 2.0 - 1e-9 && j.mode.is_hinge() != slide && (slide || j.mode == JointMode::HingeIntrados))
+        .unwrap_or_else(|| panic!("no joint in {:?}", c.joints))
+        .beta
+}
+
+/// Published corners (shared/spec/reference-values.md), 8 significant digits.
+#[test]
+fn published_corners() {
+    for (alpha, eta_rm, bn_rm, mu_rm, mu_ms, eta_ms, bn_ms, bt_ms) in [
+        (0.0, 0.10742645, 0.61965572, 0.39583204, 0.30921544, 0.20063732, 0.51463788, 1.0710004),
+        (PI / 6.0, 0.32654664, 0.45365963, 0.82361489, 0.73904014, 0.45943411, 0.44355547, 1.1453296),
+    ] {
+        let c = curve(alpha);
+        assert_eq!(c.corners.len(), 2, "alpha = {alpha}: {:?}", c.corners);
+        let (rm, ms) = (&c.corners[0], &c.corners[1]);
+        assert!(rm.exact && ms.exact);
+        assert_digits("mu_rm", rm.mu, mu_rm, 8);
+        assert_digits("eta_rm", rm.eta, eta_rm, 8);
+        assert_digits("beta_N at mu_rm", right_interior(rm, false), bn_rm, 8);
+        assert_digits("mu_ms", ms.mu, mu_ms, 8);
+        assert_digits("mu_min", c.mu_min.unwrap(), mu_ms, 8);
+        assert_digits("eta_ms", ms.eta, eta_ms, 8);
+        assert_digits("beta_N at mu_ms", right_interior(ms, false), bn_ms, 8);
+        assert_digits("beta_T at mu_ms", right_interior(ms, true), bt_ms, 8);
+        let modes: Vec<Mode> = c.branches.iter().map(|b| b.mode).collect();
+        assert_eq!(modes, [Mode::PurelyRotational, Mode::MixedSlidingRotational, Mode::PurelySliding]);
+        assert!(c.branches[0].mu_max.is_infinite());
+        assert_eq!(c.branches[2].mu_min, c.branches[2].mu_max);
+    }
+}
+
+/// alpha = 1: a mixed rotational-sliding branch (rotation at the shoulders, sliding near
+/// the crown) between the rotational and the sliding branches; the sliding joint is
+/// already active at mu_rm.
+#[test]
+fn alpha_one_mixed_rotational_sliding() {
+    let c = curve(1.0);
+    let modes: Vec<Mode> = c.branches.iter().map(|b| b.mode).collect();
+    assert_eq!(modes, [Mode::PurelyRotational, Mode::MixedRotationalSliding, Mode::PurelySliding]);
+    let rm = &c.corners[0];
+    assert!(rm.exact);
+    let bt = right_interior(rm, true);
+    let bn = right_interior(rm, false);
+    assert!(bn < bt && bt < PI / 2.0, "beta_T {bt} between the haunch {bn} and the crown");
+}
+
+/// alpha = 1.15: no horizontal branch; the mixed branch approaches the overturning
+/// limit (N = 0 at the crown) as mu -> inf, and at the corner with the purely sliding
+/// branch the shoulders rotate and slide at once.
+#[test]
+fn alpha_1_15_overturning_asymptote() {
+    let c = curve(1.15);
+    assert!(c.branches.iter().all(|b| b.mode != Mode::PurelyRotational));
+    let top = &c.corners[0];
+    assert!(top.mu.is_infinite());
+    assert_eq!(top.between[1], Mode::Overturning);
+    assert!(c.branches[0].mu_max.is_infinite());
+    assert!((c.branches[0].eta_min - top.eta).abs() < 1e-15);
+    let last = c.corners.last().unwrap();
+    assert!(last.exact);
+    assert_eq!(last.mode, Mode::RotationalSlidingShoulders);
+    assert_eq!(last.between[1], Mode::PurelySliding);
+}
+
+fn snapshot(name: &str, args: &[&str]) {
+    let mut a = vec!["modes"];
+    a.extend_from_slice(args);
+    let (v, code) = json_of(&a);
+    assert_eq!(code, 0);
+    let mut snap = round(&v);
+    for c in snap["corners"].as_array_mut().unwrap() {
+        c["residual"] = serde_json::Value::Null;
+    }
+    insta::with_settings!({ snapshot_path => "../../snapshots", prepend_module_to_snapshot => false }, {
+        insta::assert_json_snapshot!(name, snap);
+    });
+}
+
+#[test]
+fn snapshots_of_modes() {
+    for (name, alpha) in [
+        ("modes_alpha_-1.2", "-1.2"),
+        ("modes_alpha_-pi_6", "-0.5235987755982988"),
+        ("modes_alpha_-0.3", "-0.3"),
+        ("modes_alpha_0", "0"),
+        ("modes_alpha_pi_6", "0.5235987755982988"),
+        ("modes_alpha_0.8", "0.8"),
+        ("modes_alpha_1.0", "1.0"),
+        ("modes_alpha_1.1", "1.1"),
+        ("modes_alpha_1.15", "1.15"),
+    ] {
+        snapshot(name, &["--alpha", alpha]);
+    }
+    snapshot("modes_unsymmetric", &["--beta-right", "-0.3", "--beta-left", "3.2415926535897933"]);
+    snapshot("modes_discrete_20_blocks", &["--alpha", "0", "--blocks", "20"]);
+}
