@@ -1,4 +1,5 @@
-//! Wall time of one exact `solve`, by workload. Run: `cargo bench --bench solve`.
+//! Wall time of one exact `solve`, by workload, and of a whole `modes` trace.
+//! Run: `cargo bench --bench solve`.
 
 use arch_enum::{solve, Arch, Settings, WeightModel};
 use criterion::{criterion_group, criterion_main, Criterion};
@@ -56,5 +57,18 @@ fn bench_solve(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench_solve);
+fn bench_modes(c: &mut Criterion) {
+    let s = Settings::default();
+    let mut g = c.benchmark_group("modes");
+    g.sample_size(10);
+    for alpha in [0.0, 1.0, 1.15] {
+        let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
+        g.bench_function(format!("alpha_{alpha}"), |b| {
+            b.iter(|| arch_enum::limit_curve::trace(black_box(&arch), &s))
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench_solve, bench_modes);
 criterion_main!(benches);

@@ -57,7 +57,9 @@ enum Command {
         json: bool,
     },
     /// The whole eta-mu limit curve: branches with their collapse modes and exact corners.
-    #[command(after_help = "Example:\n  arch-enum modes --alpha 1.0\n  arch-enum modes --alpha-deg 30 --json\n  arch-enum modes --alpha 0 --blocks 20")]
+    #[command(
+        after_help = "Example:\n  arch-enum modes --alpha 1.0\n  arch-enum modes --alpha-deg 30 --json\n  arch-enum modes --alpha 0 --blocks 20"
+    )]
     Modes {
         #[command(flatten)]
         arch: ArchArgs,
@@ -233,7 +235,10 @@ where
                 }
             }
         }
-        Command::Modes { arch, json: json_out } => {
+        Command::Modes {
+            arch,
+            json: json_out,
+        } => {
             let arch = match arch.build() {
                 Ok(a) => a,
                 Err(e) => return bad_input(&e, json_out, out, err),

@@ -103,7 +103,10 @@ impl Tracer<'_> {
     fn sample(&mut self, mu: f64) -> Option<Sample> {
         self.solves += 1;
         match solve(self.arch, mu, self.settings).map(|s| s.outcome) {
-            Ok(Outcome::Limit(ls)) => Some(Sample { sig: signature(&ls.pattern), ls }),
+            Ok(Outcome::Limit(ls)) => Some(Sample {
+                sig: signature(&ls.pattern),
+                ls,
+            }),
             Ok(Outcome::NoEquilibrium { reason, .. })
             | Ok(Outcome::Unresolved { reason, .. })
             | Ok(Outcome::NoCollapse { reason }) => {
@@ -118,7 +121,11 @@ impl Tracer<'_> {
     }
 
     fn mode_of(&self, p: &[Contact]) -> Mode {
-        classify(p, 0.5 * (self.arch.beta_right() + self.arch.beta_left()), self.settings.same_joint)
+        classify(
+            p,
+            0.5 * (self.arch.beta_right() + self.arch.beta_left()),
+            self.settings.same_joint,
+        )
     }
 
     /// Newton on the union of two patterns with η and μ unknown, from the state
@@ -133,21 +140,40 @@ impl Tracer<'_> {
     ) -> Option<Corner> {
         let mut union: Vec<Contact> = lower.to_vec();
         for c in upper {
-            let dup = union.iter().any(|d| d.mode == c.mode && d.at == c.at && (d.beta - c.beta).abs() < 0.05);
+            let dup = union
+                .iter()
+                .any(|d| d.mode == c.mode && d.at == c.at && (d.beta - c.beta).abs() < 0.05);
             if !dup {
                 union.push(*c);
             }
         }
         let s = self.settings;
-        let r = solve_system(self.arch, &union, start.0, start.1, start.2, Unknowns::EtaMu, s).ok()?;
+        let r = solve_system(
+            self.arch,
+            &union,
+            start.0,
+            start.1,
+            start.2,
+            Unknowns::EtaMu,
+            s,
+        )
+        .ok()?;
         let tol = 1e-9;
         if !(r.mu >= mu_range.0 * (1.0 - tol) && r.mu <= mu_range.1 * (1.0 + tol)) {
             return None;
         }
-        let st = State { arch: self.arch, eta: r.eta, mu: r.mu, x: r.x };
+        let st = State {
+            arch: self.arch,
+            eta: r.eta,
+            mu: r.mu,
+            x: r.x,
+        };
         let mag = |m: JointMode| magnitude(m, r.eta, r.mu, &r.x, s.magnitude_floor);
         let peaks = st.peaks(s);
-        let worst = peaks.iter().map(|p| p.value / mag(p.contact.mode)).fold(f64::NEG_INFINITY, f64::max);
+        let worst = peaks
+            .iter()
+            .map(|p| p.value / mag(p.contact.mode))
+            .fold(f64::NEG_INFINITY, f64::max);
         if worst > s.adm_tol {
             return None;
         }
@@ -158,7 +184,16 @@ impl Tracer<'_> {
             .collect();
         joints.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.mode.cmp(&b.mode)));
         let mode = self.mode_of(&joints);
-        Some(Corner { mu: r.mu, eta: r.eta, x: r.x, joints, between, mode, exact: true, residual: r.residual })
+        Some(Corner {
+            mu: r.mu,
+            eta: r.eta,
+            x: r.x,
+            joints,
+            between,
+            mode,
+            exact: true,
+            residual: r.residual,
+        })
     }
 
     /// The corners between samples `a` (higher μ) and `b` (lower μ) with different
@@ -167,7 +202,13 @@ impl Tracer<'_> {
         let between = [self.mode_of(&a.ls.pattern), self.mode_of(&b.ls.pattern)];
         let range = (b.ls.mu, a.ls.mu);
         for start in [&b.ls, &a.ls] {
-            if let Some(c) = self.corner_newton(&a.ls.pattern, &b.ls.pattern, (start.x, start.eta, start.mu), range, between) {
+            if let Some(c) = self.corner_newton(
+                &a.ls.pattern,
+                &b.ls.pattern,
+                (start.x, start.eta, start.mu),
+                range,
+                between,
+            ) {
                 return vec![c];
             }
         }
@@ -218,7 +259,9 @@ fn friction_needed(arch: &Arch, eta: f64, x: &Reactions, samples: usize) -> f64 
     let (a, b) = (arch.beta_right(), arch.beta_left());
     let joints: Vec<f64> = match arch.layout() {
         crate::arch::JointLayout::Discrete(j) => j.clone(),
-        crate::arch::JointLayout::Continuous => (0..=samples).map(|i| a + (b - a) * i as f64 / samples as f64).collect(),
+        crate::arch::JointLayout::Continuous => (0..=samples)
+            .map(|i| a + (b - a) * i as f64 / samples as f64)
+            .collect(),
     };
     let scale = 1.0 + x.iter().map(|v| v.abs()).sum::<f64>();
     joints
@@ -236,15 +279,32 @@ fn friction_needed(arch: &Arch, eta: f64, x: &Reactions, samples: usize) -> f64 
 
 /// Traces the limit curve of `arch`.
 pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
-    let mut tr = Tracer { arch, settings, solves: 0, unresolved: Vec::new() };
+    let mut tr = Tracer {
+        arch,
+        settings,
+        solves: 0,
+        unresolved: Vec::new(),
+    };
     let fl: Option<FrictionLimit> = friction_limit(arch, settings).ok().flatten();
     let Some(fl) = fl else {
-        return LimitCurve { mu_min: None, branches: vec![], corners: vec![], unresolved: tr.unresolved, solves: 0 };
+        return LimitCurve {
+            mu_min: None,
+            branches: vec![],
+            corners: vec![],
+            unresolved: tr.unresolved,
+            solves: 0,
+        };
     };
     let inf = tr.sample(f64::INFINITY);
     let mu_lo = fl.mu * (1.0 + 1e-5);
-    let mu_rm = inf.as_ref().map_or(f64::INFINITY, |s| friction_needed(arch, s.ls.eta, &s.ls.x, 2000));
-    let mu_hi = if mu_rm.is_finite() { (2.0 * mu_rm).max(1.5 * mu_lo) } else { 1e3 * mu_lo.max(1e-3) };
+    let mu_rm = inf.as_ref().map_or(f64::INFINITY, |s| {
+        friction_needed(arch, s.ls.eta, &s.ls.x, 2000)
+    });
+    let mu_hi = if mu_rm.is_finite() {
+        (2.0 * mu_rm).max(1.5 * mu_lo)
+    } else {
+        1e3 * mu_lo.max(1e-3)
+    };
     let n = settings.curve_samples.max(2);
     let mut samples: Vec<Sample> = Vec::new();
     for i in (0..n).rev() {
@@ -280,7 +340,13 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
         let between = [tr.mode_of(&low.ls.pattern), Mode::PurelySliding];
         let start = (low.ls.x, low.ls.eta, low.ls.mu);
         let c = tr
-            .corner_newton(&low.ls.pattern, &fl.pattern, start, (fl.mu * (1.0 - 1e-9), low.ls.mu), between)
+            .corner_newton(
+                &low.ls.pattern,
+                &fl.pattern,
+                start,
+                (fl.mu * (1.0 - 1e-9), low.ls.mu),
+                between,
+            )
             .unwrap_or(Corner {
                 mu: fl.mu,
                 eta: low.ls.eta,
@@ -302,7 +368,10 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
     let mut finite_corners: Vec<&Corner> = corners.iter().filter(|c| c.mu.is_finite()).collect();
     finite_corners.sort_by(|a, b| b.mu.total_cmp(&a.mu));
     for c in &finite_corners {
-        let members: Vec<&Sample> = samples.iter().filter(|s| s.ls.mu < upper.0 && s.ls.mu > c.mu).collect();
+        let members: Vec<&Sample> = samples
+            .iter()
+            .filter(|s| s.ls.mu < upper.0 && s.ls.mu > c.mu)
+            .collect();
         if let Some(rep) = members.get(members.len() / 2) {
             branches.push(Branch {
                 mode: tr.mode_of(&rep.ls.pattern),
@@ -325,5 +394,11 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
             pattern: fl.pattern.clone(),
         });
     }
-    LimitCurve { mu_min: Some(fl.mu), branches, corners, unresolved: tr.unresolved, solves: tr.solves }
+    LimitCurve {
+        mu_min: Some(fl.mu),
+        branches,
+        corners,
+        unresolved: tr.unresolved,
+        solves: tr.solves,
+    }
 }

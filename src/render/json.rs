@@ -344,7 +344,10 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> ModesJson {
         unresolved: curve
             .unresolved
             .iter()
-            .map(|(mu, m)| UnresolvedJson { mu: *mu, message: m.clone() })
+            .map(|(mu, m)| UnresolvedJson {
+                mu: *mu,
+                message: m.clone(),
+            })
             .collect(),
     }
 }

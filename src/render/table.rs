@@ -262,13 +262,18 @@ fn fmt_opt_inf(v: f64, digits: usize) -> String {
     }
 }
 
-/// The first interior contact of the right half of the arch whose kind passes `pick`
-/// (β_N for intrados hinges, β_T for sliding joints, as tables in papers give them).
-pub fn right_half_angle(arch: &Arch, joints: &[Contact], pick: impl Fn(&Contact) -> bool) -> Option<f64> {
+/// The first interior contact of the right half of the arch (the middle joint itself
+/// excluded) whose kind passes `pick`: β_N for intrados hinges, β_T for sliding joints,
+/// as tables in papers give them.
+pub fn right_half_angle(
+    arch: &Arch,
+    joints: &[Contact],
+    pick: impl Fn(&Contact) -> bool,
+) -> Option<f64> {
     let mid = 0.5 * (arch.beta_right() + arch.beta_left());
     joints
         .iter()
-        .find(|c| c.at == crate::contact::Location::Interior && c.beta < mid && pick(c))
+        .find(|c| c.at == crate::contact::Location::Interior && c.beta < mid - 1e-6 && pick(c))
         .map(|c| c.beta)
 }
 
@@ -290,7 +295,10 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
             return s;
         }
     }
-    let _ = writeln!(s, "\nbranches of the limit curve eta*(mu), by decreasing mu:");
+    let _ = writeln!(
+        s,
+        "\nbranches of the limit curve eta*(mu), by decreasing mu:"
+    );
     let _ = writeln!(
         s,
         "  {:<30} {:>15} {:>15}   {:>15} {:>15}   joints (kind@beta deg)",
@@ -313,11 +321,14 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
             joints.join(" ")
         );
     }
-    let _ = writeln!(s, "\ncorners, by decreasing mu (beta_N: intrados hinge, beta_T: sliding joint, right half):");
     let _ = writeln!(
         s,
-        "  {:>16} {:>11} {:>16} {:>14} {:>14}  {:<52} {}",
-        "mu", "phi [deg]", "eta", "beta_N [rad]", "beta_T [rad]", "between", "exact"
+        "\ncorners, by decreasing mu (beta_N: intrados hinge, beta_T: sliding joint, right half):"
+    );
+    let _ = writeln!(
+        s,
+        "  {:>16} {:>11} {:>16} {:>14} {:>14}  {:<52} exact",
+        "mu", "phi [deg]", "eta", "beta_N [rad]", "beta_T [rad]", "between"
     );
     for c in &curve.corners {
         let bn = right_half_angle(arch, &c.joints, |c| c.mode == JointMode::HingeIntrados);
@@ -337,9 +348,26 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
         let joints: Vec<String> = c
             .joints
             .iter()
-            .map(|j| format!("{}@{:.10}{}", short(j), j.beta, if j.at == crate::contact::Location::Springing { "(s)" } else { "" }))
+            .map(|j| {
+                format!(
+                    "{}@{:.10}{}",
+                    short(j),
+                    j.beta,
+                    if j.at == crate::contact::Location::Springing {
+                        "(s)"
+                    } else {
+                        ""
+                    }
+                )
+            })
             .collect();
-        let _ = writeln!(s, "  {:>16} active: {} [{}]", "", joints.join(" "), c.mode.name());
+        let _ = writeln!(
+            s,
+            "  {:>16} active: {} [{}]",
+            "",
+            joints.join(" "),
+            c.mode.name()
+        );
     }
     for (mu, m) in &curve.unresolved {
         let _ = writeln!(s, "  unresolved sample at mu = {mu}: {m}");

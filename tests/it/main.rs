@@ -5,6 +5,6 @@ mod dense_grid;
 mod hard_cases;
 mod identities;
 mod invariants;
-mod modes;
 mod model;
+mod modes;
 mod reference;

@@ -8,19 +8,30 @@ use arch_enum::{Arch, JointMode, Location, Mode, Settings, WeightModel};
 use std::f64::consts::PI;
 
 fn curve(alpha: f64) -> LimitCurve {
-    trace(&Arch::symmetric(alpha, WeightModel::Centreline).unwrap(), &Settings::default())
+    trace(
+        &Arch::symmetric(alpha, WeightModel::Centreline).unwrap(),
+        &Settings::default(),
+    )
 }
 
 /// Asserts |value − printed| ≤ half a unit of the last of `digits` significant digits.
 fn assert_digits(what: &str, value: f64, printed: f64, digits: i32) {
     let ulp = 10f64.powi(printed.abs().log10().floor() as i32 - digits + 1);
-    assert!((value - printed).abs() <= 0.5 * ulp, "{what}: computed {value:.12}, published {printed}");
+    assert!(
+        (value - printed).abs() <= 0.5 * ulp,
+        "{what}: computed {value:.12}, published {printed}"
+    );
 }
 
 fn right_interior(c: &arch_enum::limit_curve::Corner, slide: bool) -> f64 {
     c.joints
         .iter()
-        .find(|j| j.at == Location::Interior && j.beta < PI / 2.0 - 1e-9 && j.mode.is_hinge() != slide && (slide || j.mode == JointMode::HingeIntrados))
+        .find(|j| {
+            j.at == Location::Interior
+                && j.beta < PI / 2.0 - 1e-9
+                && j.mode.is_hinge() != slide
+                && (slide || j.mode == JointMode::HingeIntrados)
+        })
         .unwrap_or_else(|| panic!("no joint in {:?}", c.joints))
         .beta
 }
@@ -29,8 +40,19 @@ fn right_interior(c: &arch_enum::limit_curve::Corner, slide: bool) -> f64 {
 #[test]
 fn published_corners() {
     for (alpha, eta_rm, bn_rm, mu_rm, mu_ms, eta_ms, bn_ms, bt_ms) in [
-        (0.0, 0.10742645, 0.61965572, 0.39583204, 0.30921544, 0.20063732, 0.51463788, 1.0710004),
-        (PI / 6.0, 0.32654664, 0.45365963, 0.82361489, 0.73904014, 0.45943411, 0.44355547, 1.1453296),
+        (
+            0.0, 0.10742645, 0.61965572, 0.39583204, 0.30921544, 0.20063732, 0.51463788, 1.0710004,
+        ),
+        (
+            PI / 6.0,
+            0.32654664,
+            0.45365963,
+            0.82361489,
+            0.73904014,
+            0.45943411,
+            0.44355547,
+            1.1453296,
+        ),
     ] {
         let c = curve(alpha);
         assert_eq!(c.corners.len(), 2, "alpha = {alpha}: {:?}", c.corners);
@@ -45,7 +67,14 @@ fn published_corners() {
         assert_digits("beta_N at mu_ms", right_interior(ms, false), bn_ms, 8);
         assert_digits("beta_T at mu_ms", right_interior(ms, true), bt_ms, 8);
         let modes: Vec<Mode> = c.branches.iter().map(|b| b.mode).collect();
-        assert_eq!(modes, [Mode::PurelyRotational, Mode::MixedSlidingRotational, Mode::PurelySliding]);
+        assert_eq!(
+            modes,
+            [
+                Mode::PurelyRotational,
+                Mode::MixedSlidingRotational,
+                Mode::PurelySliding
+            ]
+        );
         assert!(c.branches[0].mu_max.is_infinite());
         assert_eq!(c.branches[2].mu_min, c.branches[2].mu_max);
     }
@@ -58,12 +87,22 @@ fn published_corners() {
 fn alpha_one_mixed_rotational_sliding() {
     let c = curve(1.0);
     let modes: Vec<Mode> = c.branches.iter().map(|b| b.mode).collect();
-    assert_eq!(modes, [Mode::PurelyRotational, Mode::MixedRotationalSliding, Mode::PurelySliding]);
+    assert_eq!(
+        modes,
+        [
+            Mode::PurelyRotational,
+            Mode::MixedRotationalSliding,
+            Mode::PurelySliding
+        ]
+    );
     let rm = &c.corners[0];
     assert!(rm.exact);
     let bt = right_interior(rm, true);
     let bn = right_interior(rm, false);
-    assert!(bn < bt && bt < PI / 2.0, "beta_T {bt} between the haunch {bn} and the crown");
+    assert!(
+        bn < bt && bt < PI / 2.0,
+        "beta_T {bt} between the haunch {bn} and the crown"
+    );
 }
 
 /// alpha = 1.15: no horizontal branch; the mixed branch approaches the overturning
@@ -113,6 +152,78 @@ fn snapshots_of_modes() {
     ] {
         snapshot(name, &["--alpha", alpha]);
     }
-    snapshot("modes_unsymmetric", &["--beta-right", "-0.3", "--beta-left", "3.2415926535897933"]);
-    snapshot("modes_discrete_20_blocks", &["--alpha", "0", "--blocks", "20"]);
+    snapshot(
+        "modes_unsymmetric",
+        &["--beta-right", "-0.3", "--beta-left", "3.2415926535897933"],
+    );
+    snapshot(
+        "modes_discrete_20_blocks",
+        &["--alpha", "0", "--blocks", "20"],
+    );
+}
+
+/// Twelve digits, by independent routes: the corner mu_rm equals the friction the
+/// infinite-friction state needs (max |T|/N over the arch, found here with the test's
+/// own formulas and a golden-section search), the corner eta_rm equals eta*(inf), and
+/// the mu_ms corner (a union system in x, eta, mu) equals the friction-only limit (a
+/// different system in h, v, mu).
+#[test]
+fn corners_agree_with_independent_routes_to_12_digits() {
+    use crate::model::ntm;
+    let s = Settings::default();
+    for alpha in [-0.3, 0.0, PI / 6.0, 0.8] {
+        let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
+        let c = trace(&arch, &s);
+        let arch_enum::Outcome::Limit(inf) =
+            arch_enum::solve(&arch, f64::INFINITY, &s).unwrap().outcome
+        else {
+            panic!()
+        };
+        let ratio = |b: f64| {
+            let (n, t, _) = ntm(arch.beta_right(), 1.0, inf.x, b);
+            t.abs() / n
+        };
+        // dense sampling, then golden-section refinement of the best interior sample,
+        // and the springings themselves
+        let (a, bl) = (arch.beta_right(), arch.beta_left());
+        let m = 20000;
+        let best = (0..=m)
+            .map(|i| a + (bl - a) * i as f64 / m as f64)
+            .max_by(|x, y| ratio(*x).total_cmp(&ratio(*y)))
+            .unwrap();
+        let (mut lo, mut hi) = (
+            (best - (bl - a) / m as f64).max(a),
+            (best + (bl - a) / m as f64).min(bl),
+        );
+        let g = (5f64.sqrt() - 1.0) / 2.0;
+        for _ in 0..200 {
+            let (x1, x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
+            if ratio(x1) < ratio(x2) {
+                lo = x1;
+            } else {
+                hi = x2;
+            }
+        }
+        let mu_rm = ratio(0.5 * (lo + hi)).max(ratio(a)).max(ratio(bl));
+        let rm = &c.corners[0];
+        assert!(
+            (rm.mu - mu_rm).abs() <= 1e-12 * mu_rm,
+            "alpha {alpha}: corner {} vs max|T|/N {mu_rm}",
+            rm.mu
+        );
+        assert!(
+            (rm.eta - inf.eta).abs() <= 1e-12 * inf.eta,
+            "alpha {alpha}: {} vs {}",
+            rm.eta,
+            inf.eta
+        );
+        let f = arch_enum::friction_limit(&arch, &s).unwrap().unwrap();
+        let ms = c.corners.last().unwrap();
+        assert!(
+            (ms.mu - f.mu).abs() <= 1e-12 * f.mu,
+            "alpha {alpha}: {} vs {}",
+            ms.mu,
+            f.mu
+        );
+    }
 }
