@@ -249,7 +249,7 @@ where
             } else {
                 emit(out, &table::modes(&arch, &curve));
             }
-            if curve.mu_min.is_some() {
+            if !curve.branches.is_empty() {
                 EXIT_OK
             } else {
                 EXIT_NO_ANSWER

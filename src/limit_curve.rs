@@ -296,6 +296,20 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
         };
     };
     let inf = tr.sample(f64::INFINITY);
+    if inf.is_none() && tr.unresolved.len() == 1 {
+        // Admissibility is monotone in μ: if nothing stands at μ = ∞, nothing stands.
+        if let Ok(Outcome::NoEquilibrium { .. }) =
+            solve(arch, f64::INFINITY, settings).map(|s| s.outcome)
+        {
+            return LimitCurve {
+                mu_min: Some(fl.mu),
+                branches: vec![],
+                corners: vec![],
+                unresolved: tr.unresolved,
+                solves: tr.solves + 1,
+            };
+        }
+    }
     let mu_lo = fl.mu * (1.0 + 1e-5);
     let mu_rm = inf.as_ref().map_or(f64::INFINITY, |s| {
         friction_needed(arch, s.ls.eta, &s.ls.x, 2000)

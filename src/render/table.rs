@@ -295,6 +295,16 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
             return s;
         }
     }
+    if curve.branches.is_empty() {
+        let _ = writeln!(
+            s,
+            "no branch: no thickness eta < 2 admits equilibrium at any friction (the opening is too large for the arch to stand)"
+        );
+        for (mu, m) in &curve.unresolved {
+            let _ = writeln!(s, "  at mu = {}: {m}", fmt_mu(*mu));
+        }
+        return s;
+    }
     let _ = writeln!(
         s,
         "\nbranches of the limit curve eta*(mu), by decreasing mu:"

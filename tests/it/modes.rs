@@ -227,3 +227,15 @@ fn corners_agree_with_independent_routes_to_12_digits() {
         );
     }
 }
+
+/// An opening too large to stand at any thickness: no branch, exit 1, said plainly.
+#[test]
+fn opening_too_large_has_no_branch() {
+    let (v, code) = json_of(&["modes", "--alpha", "1.3"]);
+    assert_eq!(code, 1);
+    assert!(v["branches"].as_array().unwrap().is_empty());
+    assert!(v["unresolved"][0]["message"]
+        .as_str()
+        .unwrap()
+        .contains("no thickness eta < 2"));
+}
