@@ -14,7 +14,7 @@ use crate::limit::{bracket_root, candidates_at, margin_at};
 use crate::refine::{solve_system, Unknowns};
 use crate::scan::State;
 use crate::settings::Settings;
-use crate::statics::{magnitude, JointMode, Reactions};
+use crate::statics::{JointMode, Reactions};
 use itertools::Itertools;
 
 /// The sliding activation functions.
@@ -91,25 +91,11 @@ pub fn friction_limit(arch: &Arch, settings: &Settings) -> Result<Option<Frictio
             mu: r.mu,
             x: r.x,
         };
-        let mag = |m: JointMode| magnitude(m, 1.0, r.mu, &r.x, settings.magnitude_floor);
-        let peaks: Vec<_> = st
-            .peaks(settings)
-            .into_iter()
-            .filter(|p| SLIDES.contains(&p.contact.mode))
-            .collect();
-        let worst = peaks
-            .iter()
-            .map(|p| p.value / mag(p.contact.mode))
-            .fold(f64::NEG_INFINITY, f64::max);
-        if worst > settings.adm_tol || r.mu > mu_hi * (1.0 + 1e-9) {
+        let v = st.verdict(&SLIDES, settings);
+        if v.worst > settings.adm_tol || r.mu > mu_hi * (1.0 + 1e-9) {
             continue;
         }
-        let mut pattern: Vec<Contact> = peaks
-            .iter()
-            .filter(|p| p.value >= -10.0 * settings.adm_tol * mag(p.contact.mode))
-            .map(|p| p.contact)
-            .collect();
-        pattern.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.mode.cmp(&b.mode)));
+        let pattern = v.active;
         best = Some(FrictionLimit {
             mu: r.mu,
             x: r.x,

@@ -22,7 +22,7 @@ use crate::mode::{classify, Mode};
 use crate::refine::{solve_pattern, NewtonFailure, Refined};
 use crate::scan::State;
 use crate::settings::Settings;
-use crate::statics::{magnitude, JointMode, Reactions};
+use crate::statics::{JointMode, Reactions};
 use itertools::Itertools;
 
 /// A verified limit state (incipient collapse) at friction μ.
@@ -465,12 +465,8 @@ fn verify_group(
             mu,
             x: r.x,
         };
-        let mag = |m: JointMode| magnitude(m, r.eta, mu, &r.x, settings.magnitude_floor);
-        let peaks = st.peaks(settings);
-        let worst = peaks
-            .iter()
-            .map(|p| p.value / mag(p.contact.mode))
-            .fold(f64::NEG_INFINITY, f64::max);
+        let verdict = st.verdict(JointMode::active_at(mu), settings);
+        let worst = verdict.worst;
         if worst > settings.adm_tol {
             push(
                 log,
@@ -486,12 +482,7 @@ fn verify_group(
             continue;
         }
         last_eta = r.eta;
-        let mut pattern: Vec<Contact> = peaks
-            .iter()
-            .filter(|p| p.value >= -10.0 * settings.adm_tol * mag(p.contact.mode))
-            .map(|p| p.contact)
-            .collect();
-        pattern.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.mode.cmp(&b.mode)));
+        let pattern = verdict.active;
         match mechanism::find(arch, r.eta, mu, &r.x, &pattern, settings) {
             Ok(Some(mech)) => {
                 push(

@@ -24,7 +24,7 @@ use crate::mode::{classify, Mode};
 use crate::refine::{solve_system, Unknowns};
 use crate::scan::State;
 use crate::settings::Settings;
-use crate::statics::{internal_forces, magnitude, JointMode, Reactions};
+use crate::statics::{internal_forces, JointMode, Reactions};
 
 /// A branch of the limit curve: an interval of μ with one active pattern.
 #[derive(Debug, Clone)]
@@ -168,21 +168,11 @@ impl Tracer<'_> {
             mu: r.mu,
             x: r.x,
         };
-        let mag = |m: JointMode| magnitude(m, r.eta, r.mu, &r.x, s.magnitude_floor);
-        let peaks = st.peaks(s);
-        let worst = peaks
-            .iter()
-            .map(|p| p.value / mag(p.contact.mode))
-            .fold(f64::NEG_INFINITY, f64::max);
-        if worst > s.adm_tol {
+        let v = st.verdict(JointMode::active_at(r.mu), s);
+        if v.worst > s.adm_tol {
             return None;
         }
-        let mut joints: Vec<Contact> = peaks
-            .iter()
-            .filter(|p| p.value >= -10.0 * s.adm_tol * mag(p.contact.mode))
-            .map(|p| p.contact)
-            .collect();
-        joints.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.mode.cmp(&b.mode)));
+        let joints = v.active;
         let mode = self.mode_of(&joints);
         Some(Corner {
             mu: r.mu,
@@ -214,19 +204,10 @@ impl Tracer<'_> {
         }
         let mid_mu = (a.ls.mu * b.ls.mu).sqrt();
         if depth == 0 || a.ls.mu / b.ls.mu < 1.0 + 1e-12 {
-            return vec![Corner {
-                mu: mid_mu,
-                eta: 0.5 * (a.ls.eta + b.ls.eta),
-                x: b.ls.x,
-                joints: b.ls.pattern.clone(),
-                between,
-                mode: between[1],
-                exact: false,
-                residual: f64::NAN,
-            }];
+            return vec![bracketed(a, b, between)];
         }
         let Some(m) = self.sample(mid_mu) else {
-            return self.locate_failed(a, b, between);
+            return vec![bracketed(a, b, between)];
         };
         if m.sig == a.sig {
             self.locate(&m, b, depth - 1)
@@ -238,18 +219,20 @@ impl Tracer<'_> {
             v
         }
     }
+}
 
-    fn locate_failed(&self, a: &Sample, b: &Sample, between: [Mode; 2]) -> Vec<Corner> {
-        vec![Corner {
-            mu: (a.ls.mu * b.ls.mu).sqrt(),
-            eta: 0.5 * (a.ls.eta + b.ls.eta),
-            x: b.ls.x,
-            joints: b.ls.pattern.clone(),
-            between,
-            mode: between[1],
-            exact: false,
-            residual: f64::NAN,
-        }]
+/// A corner known only to lie between samples `a` and `b` (reported with
+/// `exact: false`).
+fn bracketed(a: &Sample, b: &Sample, between: [Mode; 2]) -> Corner {
+    Corner {
+        mu: (a.ls.mu * b.ls.mu).sqrt(),
+        eta: 0.5 * (a.ls.eta + b.ls.eta),
+        x: b.ls.x,
+        joints: b.ls.pattern.clone(),
+        between,
+        mode: between[1],
+        exact: false,
+        residual: f64::NAN,
     }
 }
 

@@ -192,3 +192,40 @@ impl State<'_> {
         beta
     }
 }
+
+/// What a scan of a state over the whole arch says about it.
+#[derive(Debug, Clone)]
+pub struct Verdict {
+    /// The greatest activation relative to its magnitude
+    /// ([`crate::statics::magnitude`]): admissible when ≤ `adm_tol`.
+    pub worst: f64,
+    /// Every contact with φ ≥ −10 `adm_tol` × magnitude (the active pattern), by
+    /// increasing β, then mode.
+    pub active: Vec<Contact>,
+}
+
+impl State<'_> {
+    /// Scans the state for the activation functions `modes`: its worst relative
+    /// violation and its active contacts.
+    pub fn verdict(&self, modes: &[JointMode], settings: &Settings) -> Verdict {
+        let mag = |m: JointMode| {
+            crate::statics::magnitude(m, self.eta, self.mu, &self.x, settings.magnitude_floor)
+        };
+        let peaks: Vec<Peak> = self
+            .peaks(settings)
+            .into_iter()
+            .filter(|p| modes.contains(&p.contact.mode))
+            .collect();
+        let worst = peaks
+            .iter()
+            .map(|p| p.value / mag(p.contact.mode))
+            .fold(f64::NEG_INFINITY, f64::max);
+        let mut active: Vec<Contact> = peaks
+            .iter()
+            .filter(|p| p.value >= -10.0 * settings.adm_tol * mag(p.contact.mode))
+            .map(|p| p.contact)
+            .collect();
+        active.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.mode.cmp(&b.mode)));
+        Verdict { worst, active }
+    }
+}
