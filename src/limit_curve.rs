@@ -365,11 +365,18 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
     let mut finite_corners: Vec<&Corner> = corners.iter().filter(|c| c.mu.is_finite()).collect();
     finite_corners.sort_by(|a, b| b.mu.total_cmp(&a.mu));
     for c in &finite_corners {
-        let members: Vec<&Sample> = samples
+        let members: Vec<Sample> = samples
             .iter()
             .filter(|s| s.ls.mu < upper.0 && s.ls.mu > c.mu)
+            .cloned()
             .collect();
-        if let Some(rep) = members.get(members.len() / 2) {
+        // two corners between neighbouring samples: solve once inside the branch
+        let rep = match members.get(members.len() / 2) {
+            Some(r) => Some(r.clone()),
+            None if upper.0.is_finite() => tr.sample((upper.0 * c.mu).sqrt()),
+            None => None,
+        };
+        if let Some(rep) = rep {
             branches.push(Branch {
                 mode: tr.mode_of(&rep.ls.pattern),
                 mu_min: c.mu,

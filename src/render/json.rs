@@ -88,6 +88,9 @@ pub struct SolveJson {
     eta: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     mode: Option<&'static str>,
+    /// false when the mode name is a descriptive one outside the contract's list
+    #[serde(skip_serializing_if = "Option::is_none")]
+    mode_standard: Option<bool>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pattern: Option<Vec<Contact>>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -161,6 +164,7 @@ pub fn solve(sol: &Solution, explain: bool) -> SolveJson {
         friction_angle_deg: sol.mu.atan().to_degrees(),
         eta: None,
         mode: None,
+        mode_standard: None,
         pattern: None,
         reactions: None,
         mechanism: None,
@@ -175,6 +179,7 @@ pub fn solve(sol: &Solution, explain: bool) -> SolveJson {
             let (p, r, m, c) = limit_parts(ls);
             doc.eta = Some(ls.eta);
             doc.mode = Some(ls.mode.name());
+            doc.mode_standard = Some(ls.mode.is_standard());
             doc.pattern = Some(p);
             doc.reactions = Some(r);
             doc.mechanism = Some(m);
@@ -275,6 +280,7 @@ pub struct ErrorJson {
 #[derive(Debug, Serialize)]
 struct BranchJson {
     mode: &'static str,
+    mode_standard: bool,
     mu_min: f64,
     mu_max: f64,
     eta_min: f64,
@@ -319,6 +325,7 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> ModesJson {
             .iter()
             .map(|b| BranchJson {
                 mode: b.mode.name(),
+                mode_standard: b.mode.is_standard(),
                 mu_min: b.mu_min,
                 mu_max: b.mu_max,
                 eta_min: b.eta_min,

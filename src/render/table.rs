@@ -111,7 +111,16 @@ pub fn solve(sol: &Solution, explain: bool) -> String {
                     ls.eta_static
                 );
             }
-            let _ = writeln!(s, "collapse mode       {}", ls.mode.name());
+            let _ = writeln!(
+                s,
+                "collapse mode       {}{}",
+                ls.mode.name(),
+                if ls.mode.is_standard() {
+                    ""
+                } else {
+                    "  (descriptive name: none of the standard mode names fits this pattern)"
+                }
+            );
             let _ = writeln!(s, "active pattern ({} contacts):", ls.pattern.len());
             s.push_str(&pattern_table(&sol.arch, &ls.pattern, None));
             let _ = writeln!(
