@@ -7,12 +7,39 @@ use arch_enum::{solve, Arch, Outcome, Settings, WeightModel};
 fn main() {
     let variants: Vec<(&str, Settings)> = vec![
         ("default", Settings::default()),
-        ("scan_points 48", Settings { scan_points: 48, ..Settings::default() }),
-        ("scan_points 400", Settings { scan_points: 400, ..Settings::default() }),
-        ("bracket_rel 1e-6", Settings { bracket_rel: 1e-6, ..Settings::default() }),
-        ("candidate_rel 1e-3", Settings { candidate_rel: 1e-3, ..Settings::default() }),
+        (
+            "scan_points 48",
+            Settings {
+                scan_points: 48,
+                ..Settings::default()
+            },
+        ),
+        (
+            "scan_points 400",
+            Settings {
+                scan_points: 400,
+                ..Settings::default()
+            },
+        ),
+        (
+            "bracket_rel 1e-6",
+            Settings {
+                bracket_rel: 1e-6,
+                ..Settings::default()
+            },
+        ),
+        (
+            "candidate_rel 1e-3",
+            Settings {
+                candidate_rel: 1e-3,
+                ..Settings::default()
+            },
+        ),
     ];
-    println!("| alpha | mu | eta* (default) | max relative spread over {} settings |", variants.len());
+    println!(
+        "| alpha | mu | eta* (default) | max relative spread over {} settings |",
+        variants.len()
+    );
     println!("|---:|---:|---:|---:|");
     for alpha in [-1.2, -0.3, 0.0, 0.5, 1.0, 1.15] {
         for mu in [f64::INFINITY, 3.0, 1.2, 0.5, 0.35] {
@@ -26,12 +53,22 @@ fn main() {
                 .collect();
             if etas.len() < variants.len() {
                 if !etas.is_empty() {
-                    println!("| {alpha} | {mu} | – | solved by only {} of {} settings |", etas.len(), variants.len());
+                    println!(
+                        "| {alpha} | {mu} | – | solved by only {} of {} settings |",
+                        etas.len(),
+                        variants.len()
+                    );
                 }
                 continue;
             }
-            let (lo, hi) = etas.iter().fold((f64::INFINITY, 0.0f64), |(a, b), &e| (a.min(e), b.max(e)));
-            println!("| {alpha} | {mu} | {:.15} | {:.1e} |", etas[0], (hi - lo) / etas[0]);
+            let (lo, hi) = etas
+                .iter()
+                .fold((f64::INFINITY, 0.0f64), |(a, b), &e| (a.min(e), b.max(e)));
+            println!(
+                "| {alpha} | {mu} | {:.15} | {:.1e} |",
+                etas[0],
+                (hi - lo) / etas[0]
+            );
         }
     }
 }

@@ -67,6 +67,34 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// A certificate for eta*(mu): an admissible state at eta_hi (upper bound), a Farkas certificate at eta_lo (lower bound), the limit state.
+    #[command(
+        after_help = "Example:\n  arch-enum certify --alpha 0 --mu 0.35 --out cert.json\n  arch-enum verify cert.json"
+    )]
+    Certify {
+        #[command(flatten)]
+        arch: ArchArgs,
+        /// Friction coefficient mu > 0; `inf` for no sliding.
+        #[arg(long, allow_negative_numbers = true)]
+        mu: f64,
+        /// Target relative gap (eta_hi - eta_lo)/eta_hi, 1e-15 to 1e-4; widened tenfold until provable.
+        #[arg(long, default_value_t = 1e-12, allow_negative_numbers = true)]
+        gap: f64,
+        /// Write the certificate here instead of standard output.
+        #[arg(long)]
+        out: Option<std::path::PathBuf>,
+        /// Print a JSON summary instead of text (the certificate itself is always JSON).
+        #[arg(long)]
+        json: bool,
+    },
+    /// Re-checks a certificate independently (no LP, no solver); exit 0 only if it holds.
+    Verify {
+        /// The certificate file.
+        file: std::path::PathBuf,
+        /// Print one JSON document instead of text.
+        #[arg(long)]
+        json: bool,
+    },
     /// eta*(mu) sampled at geometrically spaced mu, one row per mu, with the mode.
     #[command(
         after_help = "Example:\n  arch-enum curve --alpha 0 --points 10\n  arch-enum curve --alpha 1 --mu-min 1 --mu-max 100 --json"
@@ -253,6 +281,127 @@ where
                 EXIT_OK
             } else {
                 EXIT_NO_ANSWER
+            }
+        }
+        Command::Certify {
+            arch,
+            mu,
+            gap,
+            out: out_file,
+            json: json_out,
+        } => {
+            let arch = match arch
+                .build()
+                .and_then(|a| crate::arch::check_mu(mu).map(|_| a))
+            {
+                Ok(a) => a,
+                Err(e) => return bad_input(&e, json_out, out, err),
+            };
+            if !(gap.is_finite() && (1e-15..=1e-4).contains(&gap)) {
+                let e = InputError::OutOfRange {
+                    arg: "--gap",
+                    value: crate::arch::fmt_value(gap),
+                    range: "1e-15 <= gap <= 1e-4".into(),
+                };
+                return bad_input(&e, json_out, out, err);
+            }
+            match crate::certificate::certify(&arch, mu, gap, &settings) {
+                Ok(cert) => {
+                    let text = to_json(&cert);
+                    match out_file {
+                        Some(path) => {
+                            if let Err(e) = std::fs::write(&path, &text) {
+                                emit(
+                                    err,
+                                    &format!("error: cannot write {}: {e}\n", path.display()),
+                                );
+                                return EXIT_BAD_INPUT;
+                            }
+                            let summary = serde_json::json!({"status": "ok", "file": path.display().to_string(), "claim": cert.claim, "gap_relative": cert.gap_relative});
+                            if json_out {
+                                emit(out, &to_json(&summary));
+                            } else {
+                                emit(
+                                    out,
+                                    &format!(
+                                        "wrote {} ({:?}, relative gap {:?})\n",
+                                        path.display(),
+                                        cert.claim,
+                                        cert.gap_relative
+                                    ),
+                                );
+                            }
+                        }
+                        None => emit(out, &text),
+                    }
+                    EXIT_OK
+                }
+                Err(crate::certificate::NotCertified(reason)) => {
+                    if json_out {
+                        emit(
+                            out,
+                            &to_json(
+                                &serde_json::json!({"status": "not_certified", "message": reason}),
+                            ),
+                        );
+                    }
+                    emit(err, &format!("not certified: {reason}\n"));
+                    EXIT_NO_ANSWER
+                }
+            }
+        }
+        Command::Verify {
+            file,
+            json: json_out,
+        } => {
+            let text = match std::fs::read_to_string(&file) {
+                Ok(t) => t,
+                Err(e) => {
+                    emit(
+                        err,
+                        &format!("error: cannot read FILE {}: {e}\n", file.display()),
+                    );
+                    return EXIT_BAD_INPUT;
+                }
+            };
+            let cert: crate::certificate::Certificate = match serde_json::from_str(&text) {
+                Ok(c) => c,
+                Err(e) => {
+                    emit(
+                        err,
+                        &format!("error: FILE {} is not a certificate: {e}\n", file.display()),
+                    );
+                    return EXIT_BAD_INPUT;
+                }
+            };
+            match crate::verify::verify(&cert) {
+                Ok(report) => {
+                    if json_out {
+                        emit(
+                            out,
+                            &to_json(
+                                &serde_json::json!({"status": "holds", "checks": report.checks}),
+                            ),
+                        );
+                    } else {
+                        emit(
+                            out,
+                            &format!("certificate holds\n  {}\n", report.checks.join("\n  ")),
+                        );
+                    }
+                    EXIT_OK
+                }
+                Err(crate::verify::Rejection(reason)) => {
+                    if json_out {
+                        emit(
+                            out,
+                            &to_json(&serde_json::json!({"status": "rejected", "reason": reason})),
+                        );
+                    } else {
+                        emit(out, &format!("certificate REJECTED: {reason}\n"));
+                    }
+                    EXIT_NO_ANSWER
+                }
             }
         }
         Command::Curve {

@@ -26,6 +26,7 @@
 //! | [`limit_curve`] | §5 the η–μ curve: branches and exact corners |
 //! | [`mode`] | §5 collapse-mode names from the pattern |
 //! | [`curve`] | η*(μ) sampled over μ |
+//! | [`certificate`], [`verify`], [`interval`] | certificates and their independent re-check |
 //! | [`render`], [`cli`] | text and JSON output, the command line (thin layers) |
 //!
 //! ```
@@ -40,10 +41,12 @@
 
 pub mod admissibility;
 pub mod arch;
+pub mod certificate;
 pub mod cli;
 pub mod contact;
 pub mod curve;
 pub mod friction;
+pub mod interval;
 pub mod kinematics;
 pub mod limit;
 pub mod limit_curve;
@@ -55,6 +58,7 @@ pub mod render;
 pub mod scan;
 pub mod settings;
 pub mod statics;
+pub mod verify;
 
 pub use arch::{Arch, InputError, JointLayout, Radians, WeightModel};
 pub use contact::{Contact, Location};

@@ -1,0 +1,409 @@
+//! Certificates: checkable evidence for η*(μ) that anyone can re-check with
+//! [`crate::verify`] (no LP, no solver).
+//!
+//! # Format (version 1)
+//! A JSON object (this serde type is the schema; `null` stands for +∞ where noted):
+//!
+//! | key | meaning |
+//! |---|---|
+//! | `format`, `version` | `"arch-enum-certificate"`, `1` |
+//! | `tool` | the producing tool and version |
+//! | `arch` | `beta_right`, `beta_left` (radians), `weight` (`centreline`/`centroid`), `joint_angles` (null: continuous) |
+//! | `mu` | friction coefficient, `null` = ∞ |
+//! | `claim` | `least_thickness` or `no_equilibrium` |
+//! | `safe` | `{eta, x: [h, v, w]}`: a state admissible at η_hi over the whole arch (upper bound) |
+//! | `collapse` | `{eta, joints: [{beta, kind, y}]}`: d + 1 contacts whose non-negative Farkas combination rules out every state at η_lo (lower bound); `eta` null for the friction-only problem (d = 2) |
+//! | `limit_state` | `{eta, x, pattern: [{beta, kind, at}], rates}`: the limit state and a mechanism on its pattern |
+//! | `gap`, `gap_relative` | η_hi − η_lo and (η_hi − η_lo)/η_hi |
+//!
+//! `certify` builds the two sides around the exact limit state: the safe state is the
+//! limit state moved into the interior of the admissible set at η_hi = η*(1 + g/2) by a
+//! small LP on its active contacts (rows scaled by 1/(η_hi − η*) so that HiGHS works with
+//! O(1) numbers); the Farkas contacts are 4-subsets of the active contacts at η_lo =
+//! η*(1 − g/2), with interior tangencies also split into chords β ± δ, chosen by their
+//! float cofactors and then proved by the verifier. If a side cannot be proved at the
+//! requested relative gap g, the gap is widened tenfold (up to 1e-4) and the achieved gap
+//! is what the certificate states.
+
+use crate::arch::{Arch, JointLayout};
+use crate::contact::{Contact, Location};
+use crate::friction::friction_limit;
+use crate::limit::{solve, Outcome};
+use crate::lp;
+use crate::settings::Settings;
+use crate::statics::{actions, Affine, JointMode, Reactions};
+use crate::verify::verify;
+use itertools::Itertools;
+use serde::{Deserialize, Serialize};
+
+/// The `format` field of every certificate.
+pub const FORMAT: &str = "arch-enum-certificate";
+/// The current format version.
+pub const VERSION: u32 = 1;
+
+/// What the certificate claims.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Claim {
+    /// η*(μ) ∈ [η_lo, η_hi].
+    LeastThickness,
+    /// No thickness stands at this μ (μ < μ_ms).
+    NoEquilibrium,
+}
+
+/// The arch of a certificate.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct ArchSpec {
+    /// Right springing (radians).
+    pub beta_right: f64,
+    /// Left springing (radians).
+    pub beta_left: f64,
+    /// `centreline` or `centroid`.
+    pub weight: String,
+    /// The joints of a discrete arch; `null` for a continuous one.
+    pub joint_angles: Option<Vec<f64>>,
+}
+
+/// The upper-bound side: an admissible state at η_hi.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct SafeSide {
+    /// η_hi.
+    pub eta: f64,
+    /// Reactions (h, v, w).
+    pub x: [f64; 3],
+}
+
+/// One contact of a Farkas certificate.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct CertJoint {
+    /// Joint angle (radians).
+    pub beta: f64,
+    /// `hinge_extrados`, `hinge_intrados`, `slide_plus` or `slide_minus`.
+    pub kind: String,
+    /// Non-negative multiplier (normalised to sum 1).
+    pub y: f64,
+}
+
+/// The lower-bound side: a Farkas certificate of infeasibility.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct Farkas {
+    /// η_lo (`null` for the friction-only problem, where η does not enter).
+    pub eta: Option<f64>,
+    /// The contacts and their multipliers.
+    pub joints: Vec<CertJoint>,
+}
+
+/// A joint of the limit state's pattern.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct PatternJoint {
+    /// Joint angle.
+    pub beta: f64,
+    /// Activation function.
+    pub kind: String,
+    /// `springing` or `interior`.
+    pub at: String,
+}
+
+/// The limit state (consistency-checked, not proved).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct LimitStateCert {
+    /// η*.
+    pub eta: f64,
+    /// Reactions.
+    pub x: [f64; 3],
+    /// Active pattern.
+    pub pattern: Vec<PatternJoint>,
+    /// Mechanism rates, one per pattern joint.
+    pub rates: Vec<f64>,
+    /// Σ |φ_i| λ_i at the limit state.
+    pub complementarity_residual: f64,
+}
+
+/// A certificate (format version 1).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct Certificate {
+    /// Always [`FORMAT`].
+    pub format: String,
+    /// Always [`VERSION`] for this format.
+    pub version: u32,
+    /// Producer.
+    pub tool: String,
+    /// The arch.
+    pub arch: ArchSpec,
+    /// μ (`null` = ∞).
+    pub mu: Option<f64>,
+    /// The claim.
+    pub claim: Claim,
+    /// Upper-bound side (least-thickness claims).
+    pub safe: Option<SafeSide>,
+    /// Lower-bound side.
+    pub collapse: Option<Farkas>,
+    /// The limit state.
+    pub limit_state: Option<LimitStateCert>,
+    /// η_hi − η_lo.
+    pub gap: Option<f64>,
+    /// (η_hi − η_lo)/η_hi.
+    pub gap_relative: Option<f64>,
+}
+
+/// Why no certificate could be produced (a result, not bad input).
+#[derive(Debug, Clone, PartialEq)]
+pub struct NotCertified(pub String);
+
+fn spec(arch: &Arch) -> ArchSpec {
+    ArchSpec {
+        beta_right: arch.beta_right(),
+        beta_left: arch.beta_left(),
+        weight: arch.weight().name().into(),
+        joint_angles: match arch.layout() {
+            JointLayout::Continuous => None,
+            JointLayout::Discrete(j) => Some(j.clone()),
+        },
+    }
+}
+
+fn empty(arch: &Arch, mu: f64, claim: Claim) -> Certificate {
+    Certificate {
+        format: FORMAT.into(),
+        version: VERSION,
+        tool: format!("arch-enum {}", env!("CARGO_PKG_VERSION")),
+        arch: spec(arch),
+        mu: mu.is_finite().then_some(mu),
+        claim,
+        safe: None,
+        collapse: None,
+        limit_state: None,
+        gap: None,
+        gap_relative: None,
+    }
+}
+
+/// Float cofactor multipliers of d + 1 affine functions (gradients in the first d
+/// components), normalised to sum 1 when they share a sign, with the Farkas constant.
+fn farkas_float(rows: &[Affine], d: usize) -> Option<(Vec<f64>, f64)> {
+    let y: Vec<f64> = (0..=d)
+        .map(|i| {
+            let cols: Vec<usize> = (0..=d).filter(|&k| k != i).collect();
+            let sign = if i % 2 == 0 { 1.0 } else { -1.0 };
+            let g = |k: usize, r: usize| rows[cols[k]].g[r];
+            sign * if d == 3 {
+                nalgebra::Matrix3::from_fn(|r, k| g(k, r)).determinant()
+            } else {
+                nalgebra::Matrix2::from_fn(|r, k| g(k, r)).determinant()
+            }
+        })
+        .collect();
+    let total: f64 = y.iter().sum();
+    if total == 0.0 || !y.iter().all(|v| v * total > 0.0) {
+        return None;
+    }
+    let y: Vec<f64> = y.iter().map(|v| v / total).collect();
+    let c: f64 = y.iter().zip(rows).map(|(a, r)| a * r.c).sum();
+    (c > 0.0).then_some((y, c))
+}
+
+fn joints_of(contacts: &[Contact], y: &[f64]) -> Vec<CertJoint> {
+    contacts
+        .iter()
+        .zip(y)
+        .map(|(c, &y)| CertJoint {
+            beta: c.beta,
+            kind: c.mode.name().into(),
+            y,
+        })
+        .collect()
+}
+
+/// Searches `pool` for a (d+1)-subset with a valid float Farkas combination at (η, μ),
+/// best margin first, and returns the first that the verifier proves.
+fn find_farkas(
+    arch: &Arch,
+    pool: &[Contact],
+    eta: f64,
+    mu: f64,
+    d: usize,
+    check: impl Fn(&Farkas) -> bool,
+) -> Option<Farkas> {
+    let mut found: Vec<(f64, Vec<Contact>, Vec<f64>)> = Vec::new();
+    for sub in pool.iter().copied().combinations(d + 1) {
+        let rows: Vec<Affine> = sub
+            .iter()
+            .map(|c| actions(arch, eta, c.beta).activation(c.mode, 0, eta, mu))
+            .collect();
+        if let Some((y, c)) = farkas_float(&rows, d) {
+            let norm: f64 = y
+                .iter()
+                .zip(&rows)
+                .map(|(a, r)| a * r.c.abs())
+                .sum::<f64>()
+                .max(f64::MIN_POSITIVE);
+            found.push((c / norm, sub, y));
+        }
+    }
+    found.sort_by(|a, b| b.0.total_cmp(&a.0));
+    found.into_iter().take(12).find_map(|(_, sub, y)| {
+        let f = Farkas {
+            eta: (d == 3).then_some(eta),
+            joints: joints_of(&sub, &y),
+        };
+        check(&f).then_some(f)
+    })
+}
+
+/// Builds a certificate for `arch` at friction `mu` with relative gap target `gap`
+/// (e.g. 1e-12). The certificate is verified before it is returned.
+pub fn certify(
+    arch: &Arch,
+    mu: f64,
+    gap: f64,
+    settings: &Settings,
+) -> Result<Certificate, NotCertified> {
+    let sol = solve(arch, mu, settings).map_err(|e| NotCertified(e.to_string()))?;
+    match sol.outcome {
+        Outcome::Limit(ls) => certify_limit(arch, mu, &ls, gap, settings),
+        Outcome::NoEquilibrium { mu_ms: Some(m), .. } if mu < m => {
+            certify_no_equilibrium(arch, mu, settings)
+        }
+        Outcome::NoEquilibrium { reason, .. }
+        | Outcome::Unresolved { reason, .. }
+        | Outcome::NoCollapse { reason } => Err(NotCertified(reason)),
+    }
+}
+
+fn certify_no_equilibrium(
+    arch: &Arch,
+    mu: f64,
+    settings: &Settings,
+) -> Result<Certificate, NotCertified> {
+    let fl = friction_limit(arch, settings)
+        .map_err(NotCertified)?
+        .ok_or_else(|| NotCertified("no finite friction admits equilibrium".into()))?;
+    let mut cert = empty(arch, mu, Claim::NoEquilibrium);
+    let f = find_farkas(arch, &fl.pattern, 1.0, mu, 2, |f| {
+        let mut c = cert.clone();
+        c.collapse = Some(f.clone());
+        verify(&c).is_ok()
+    })
+    .ok_or_else(|| {
+        NotCertified(format!(
+            "no provable Farkas certificate for mu = {mu} below mu_ms = {}",
+            fl.mu
+        ))
+    })?;
+    cert.collapse = Some(f);
+    Ok(cert)
+}
+
+fn certify_limit(
+    arch: &Arch,
+    mu: f64,
+    ls: &crate::limit::LimitState,
+    gap: f64,
+    settings: &Settings,
+) -> Result<Certificate, NotCertified> {
+    let mut cert = empty(arch, mu, Claim::LeastThickness);
+    cert.limit_state = Some(LimitStateCert {
+        eta: ls.eta,
+        x: ls.x,
+        pattern: ls
+            .mechanism
+            .contacts
+            .iter()
+            .map(|c| PatternJoint {
+                beta: c.beta,
+                kind: c.mode.name().into(),
+                at: if c.at == Location::Springing {
+                    "springing".into()
+                } else {
+                    "interior".into()
+                },
+            })
+            .collect(),
+        rates: ls.mechanism.rates.clone(),
+        complementarity_residual: ls.mechanism.complementarity,
+    });
+    // the Farkas pool: active contacts, interior tangencies also as chords β ± δ
+    let mut pool: Vec<Contact> = ls.pattern.clone();
+    if matches!(arch.layout(), JointLayout::Continuous) {
+        for c in &ls.pattern {
+            if c.free {
+                for delta in [1e-2, 1e-3, 1e-4] {
+                    for b in [c.beta - delta, c.beta + delta] {
+                        if b > arch.beta_right() && b < arch.beta_left() {
+                            pool.push(Contact { beta: b, ..*c });
+                        }
+                    }
+                }
+            }
+        }
+    }
+    let mut g = gap.max(1e-15);
+    while g <= 1e-4 {
+        let eta_hi = ls.eta * (1.0 + 0.5 * g);
+        let eta_lo = ls.eta * (1.0 - 0.5 * g);
+        if let Some(x) = safe_state(arch, mu, ls, eta_hi, settings) {
+            let mut c = cert.clone();
+            c.safe = Some(SafeSide { eta: eta_hi, x });
+            let safe_ok = {
+                let mut probe = c.clone();
+                probe.claim = Claim::LeastThickness;
+                // check the safe side alone with a trivially failing lower side removed
+                crate::verify::prove_safe_only(&probe).is_ok()
+            };
+            if safe_ok {
+                let found = find_farkas(arch, &pool, eta_lo, mu, 3, |f| {
+                    let mut full = c.clone();
+                    full.collapse = Some(f.clone());
+                    full.gap = Some(eta_hi - eta_lo);
+                    full.gap_relative = Some((eta_hi - eta_lo) / eta_hi);
+                    verify(&full).is_ok()
+                });
+                if let Some(f) = found {
+                    c.collapse = Some(f);
+                    c.gap = Some(eta_hi - eta_lo);
+                    c.gap_relative = Some((eta_hi - eta_lo) / eta_hi);
+                    return Ok(c);
+                }
+            }
+        }
+        g *= 10.0;
+    }
+    Err(NotCertified(format!(
+        "no certificate could be proved at a relative gap up to 1e-4 (eta* = {})",
+        ls.eta
+    )))
+}
+
+/// The limit state moved into the interior of the admissible set at η_hi: a small LP in
+/// the displacement δ on the active contacts, rows scaled by 1/(η_hi − η*).
+fn safe_state(
+    arch: &Arch,
+    mu: f64,
+    ls: &crate::limit::LimitState,
+    eta_hi: f64,
+    settings: &Settings,
+) -> Option<Reactions> {
+    let k = 1.0 / (eta_hi - ls.eta);
+    let rows: Vec<Affine> = ls
+        .pattern
+        .iter()
+        .map(|c| {
+            let a = actions(arch, eta_hi, c.beta).activation(c.mode, 0, eta_hi, mu);
+            let at_x = a.at(&ls.x);
+            Affine {
+                g: a.g,
+                c: k * at_x,
+            }
+        })
+        .collect();
+    let (d, s) = lp::max_margin(&rows, 1.0, settings.lp_tol).ok()?;
+    if !(s > 0.0) {
+        return None;
+    }
+    Some([ls.x[0] + d[0] / k, ls.x[1] + d[1] / k, ls.x[2] + d[2] / k])
+}
+
+/// Convenience: the `JointMode` of a kind name.
+pub fn mode_of(kind: &str) -> Option<JointMode> {
+    JointMode::ALL.into_iter().find(|m| m.name() == kind)
+}
