@@ -70,5 +70,20 @@ fn bench_modes(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench_solve, bench_modes);
+fn bench_certify(c: &mut Criterion) {
+    let s = Settings::default();
+    let arch = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();
+    let cert = arch_enum::certificate::certify(&arch, 0.35, 1e-12, &s).unwrap();
+    let mut g = c.benchmark_group("certificate");
+    g.sample_size(20);
+    g.bench_function("certify_semicircle_mu_0.35", |b| {
+        b.iter(|| arch_enum::certificate::certify(black_box(&arch), 0.35, 1e-12, &s).unwrap())
+    });
+    g.bench_function("verify_semicircle_mu_0.35", |b| {
+        b.iter(|| arch_enum::verify::verify(black_box(&cert)).unwrap())
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench_solve, bench_modes, bench_certify);
 criterion_main!(benches);

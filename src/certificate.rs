@@ -397,7 +397,7 @@ fn safe_state(
         })
         .collect();
     let (d, s) = lp::max_margin(&rows, 1.0, settings.lp_tol).ok()?;
-    if !(s > 0.0) {
+    if s.is_nan() || s <= 0.0 {
         return None;
     }
     Some([ls.x[0] + d[0] / k, ls.x[1] + d[1] / k, ls.x[2] + d[2] / k])

@@ -313,7 +313,11 @@ fn prove_farkas(
     let stored_total: f64 = joints.iter().map(|j| j.y).sum();
     for (j, v) in joints.iter().zip(&y) {
         let (a, b) = (v.mid() / total, j.y / stored_total);
-        if !(stored_total > 0.0) || (a - b).abs() > 1e-6 * (1.0 + a.abs()) || j.y < 0.0 {
+        if stored_total.is_nan()
+            || stored_total <= 0.0
+            || (a - b).abs() > 1e-6 * (1.0 + a.abs())
+            || j.y < 0.0
+        {
             return reject(format!("collapse side: stored multiplier {} at beta = {} does not match the recomputed {a:.9e} (normalised)", j.y, j.beta));
         }
     }
@@ -452,7 +456,7 @@ fn check_limit_state(
             ls.eta
         ));
     }
-    if ls.rates.len() != ls.pattern.len() || ls.rates.iter().any(|&r| !(r >= 0.0)) {
+    if ls.rates.len() != ls.pattern.len() || ls.rates.iter().any(|&r| r.is_nan() || r < 0.0) {
         return reject("limit state: rates must be one non-negative number per pattern joint");
     }
     if (ls.rates.iter().sum::<f64>() - 1.0).abs() > tol {

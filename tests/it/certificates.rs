@@ -8,7 +8,8 @@ use arch_enum::{least_friction, Arch, Settings, WeightModel};
 use assert_cmd::Command;
 
 fn cert(arch: &Arch, mu: f64) -> Certificate {
-    certify(arch, mu, 1e-12, &Settings::default()).unwrap_or_else(|e| panic!("{arch:?} mu = {mu}: {e:?}"))
+    certify(arch, mu, 1e-12, &Settings::default())
+        .unwrap_or_else(|e| panic!("{arch:?} mu = {mu}: {e:?}"))
 }
 
 fn holds(c: &Certificate) {
@@ -20,7 +21,17 @@ fn holds(c: &Certificate) {
 #[test]
 fn certify_then_verify_across_openings() {
     let s = Settings::default();
-    for alpha in [-1.2, -0.5235987755982988, -0.3, 0.0, 0.5235987755982988, 0.8, 1.0, 1.1, 1.15] {
+    for alpha in [
+        -1.2,
+        -0.5235987755982988,
+        -0.3,
+        0.0,
+        0.5235987755982988,
+        0.8,
+        1.0,
+        1.1,
+        1.15,
+    ] {
         let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
         let mu_ms = least_friction(&arch, &s).unwrap().unwrap();
         for mu in [f64::INFINITY, mu_ms * 1.001, mu_ms * 1.1, mu_ms * 3.0] {
@@ -114,25 +125,53 @@ fn cli_certify_verify_roundtrip_and_exit_codes() {
     let file = dir.join("c.json");
     let out = Command::cargo_bin("arch-enum")
         .unwrap()
-        .args(["certify", "--alpha", "0.5235987755982988", "--mu", "0.8", "--out"])
+        .args([
+            "certify",
+            "--alpha",
+            "0.5235987755982988",
+            "--mu",
+            "0.8",
+            "--out",
+        ])
         .arg(&file)
         .output()
         .unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
-    let ok = Command::cargo_bin("arch-enum").unwrap().arg("verify").arg(&file).output().unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let ok = Command::cargo_bin("arch-enum")
+        .unwrap()
+        .arg("verify")
+        .arg(&file)
+        .output()
+        .unwrap();
     assert_eq!(ok.status.code(), Some(0));
     assert!(String::from_utf8_lossy(&ok.stdout).contains("certificate holds"));
     // tamper in the file: change one digit of w
-    let mut v: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&file).unwrap()).unwrap();
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&file).unwrap()).unwrap();
     let w = v["safe"]["x"][2].as_f64().unwrap();
     v["safe"]["x"][2] = serde_json::json!(w + 0.01);
     std::fs::write(&file, serde_json::to_string(&v).unwrap()).unwrap();
-    let bad = Command::cargo_bin("arch-enum").unwrap().arg("verify").arg(&file).output().unwrap();
+    let bad = Command::cargo_bin("arch-enum")
+        .unwrap()
+        .arg("verify")
+        .arg(&file)
+        .output()
+        .unwrap();
     assert_eq!(bad.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&bad.stdout).contains("REJECTED"));
     // not a certificate: exit 2
     std::fs::write(&file, "{\"hello\": 1}").unwrap();
-    let junk = Command::cargo_bin("arch-enum").unwrap().arg("verify").arg(&file).output().unwrap();
+    let junk = Command::cargo_bin("arch-enum")
+        .unwrap()
+        .arg("verify")
+        .arg(&file)
+        .output()
+        .unwrap();
     assert_eq!(junk.status.code(), Some(2));
     std::fs::remove_dir_all(&dir).ok();
 }

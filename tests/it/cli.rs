@@ -185,6 +185,13 @@ fn bad_input_table() {
             "--mu-max",
         ),
         (&["curve", "--alpha", "0", "--points", "0"], "--points"),
+        (
+            &["certify", "--alpha", "0", "--mu", "0.5", "--gap", "0.1"],
+            "--gap",
+        ),
+        (&["certify", "--alpha", "0", "--mu", "nan"], "--mu"),
+        (&["verify", "/nonexistent/certificate.json"], "FILE"),
+        (&["modes", "--alpha", "1.6"], "--alpha"),
     ];
     for (args, name) in cases {
         let out = arch_enum().args(*args).output().unwrap();
