@@ -58,6 +58,7 @@ pub mod render;
 pub mod scan;
 pub mod settings;
 pub mod statics;
+pub mod thrust_line;
 pub mod verify;
 
 pub use arch::{Arch, InputError, JointLayout, Radians, WeightModel};

@@ -1,0 +1,64 @@
+//! Shared pieces of the figures: mode colours (the same in every figure), sizes, and
+//! SVG → PNG rendering in-process with the embedded DejaVu Sans font (no system fonts).
+
+use crate::mode::Mode;
+use plotters::style::RGBColor;
+
+/// The font embedded for PNG rendering (DejaVu Sans, see `assets/fonts/DejaVu-LICENSE.txt`).
+pub const FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+
+/// Font family used in every figure.
+pub const FAMILY: &str = "DejaVu Sans";
+
+/// The colour of a collapse mode, identical across figures.
+pub fn mode_color(mode: Mode) -> RGBColor {
+    match mode {
+        Mode::PurelyRotational => RGBColor(31, 119, 180),
+        Mode::MixedSlidingRotational => RGBColor(255, 127, 14),
+        Mode::MixedRotationalSliding => RGBColor(44, 160, 44),
+        Mode::RotationalSlidingShoulders => RGBColor(148, 103, 189),
+        Mode::PurelySliding => RGBColor(214, 39, 40),
+        Mode::Overturning => RGBColor(140, 86, 75),
+        Mode::MixedInterleaved => RGBColor(127, 127, 127),
+    }
+}
+
+/// Renders an SVG document to PNG bytes, `width` pixels wide (height keeps the aspect).
+pub fn svg_to_png(svg: &str, width: u32) -> Result<Vec<u8>, String> {
+    let mut opt = resvg::usvg::Options {
+        font_family: FAMILY.to_string(),
+        ..Default::default()
+    };
+    {
+        let db = opt.fontdb_mut();
+        db.load_font_data(FONT.to_vec());
+        db.set_sans_serif_family(FAMILY);
+        db.set_serif_family(FAMILY);
+        db.set_monospace_family(FAMILY);
+    }
+    let tree = resvg::usvg::Tree::from_str(svg, &opt).map_err(|e| format!("SVG not parsed: {e}"))?;
+    let size = tree.size();
+    let scale = width as f32 / size.width();
+    let height = (size.height() * scale).ceil() as u32;
+    let mut pixmap = resvg::tiny_skia::Pixmap::new(width, height).ok_or("empty image")?;
+    pixmap.fill(resvg::tiny_skia::Color::WHITE);
+    resvg::render(&tree, resvg::tiny_skia::Transform::from_scale(scale, scale), &mut pixmap.as_mut());
+    pixmap.encode_png().map_err(|e| format!("PNG encoding failed: {e}"))
+}
+
+/// A short label for a friction coefficient with its friction angle: "0.40 (21.8°)".
+pub fn mu_label(mu: f64) -> String {
+    format!("{} ({:.1}°)", short_num(mu), mu.atan().to_degrees())
+}
+
+/// A number with 3 significant digits, plain where readable.
+pub fn short_num(v: f64) -> String {
+    if v == 0.0 {
+        "0".into()
+    } else if v.abs() >= 1e-3 && v.abs() < 1e4 {
+        let digits = (2 - v.abs().log10().floor() as i32).max(0) as usize;
+        format!("{v:.digits$}")
+    } else {
+        format!("{v:.2e}")
+    }
+}

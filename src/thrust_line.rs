@@ -1,0 +1,40 @@
+//! Lines of thrust and of friction (formulation §3): the eccentricities
+//! e_M = M/N (where the resultant cuts the joint, measured outward from the centreline)
+//! and e_T = (T/N)/μ · η/2 (the friction demand scaled so that sliding occurs at ±η/2),
+//! sampled along the arch for a state x. Plain numerics for the pictures.
+
+use crate::arch::{Arch, JointLayout, Radians};
+use crate::statics::{internal_forces, Reactions};
+
+/// Eccentricities at one joint.
+#[derive(Debug, Clone, Copy)]
+pub struct Eccentricity {
+    /// Joint angle.
+    pub beta: Radians,
+    /// N (compression positive).
+    pub n: f64,
+    /// e_M = M/N (NaN where N = 0).
+    pub e_m: f64,
+    /// e_T = (T/N)/μ · η/2 (0 at μ = ∞; NaN where N = 0).
+    pub e_t: f64,
+}
+
+/// e_M and e_T at `samples + 1` equally spaced angles (or at the listed joints of a
+/// discrete arch, plus the same dense sampling for the continuous lines).
+pub fn eccentricities(arch: &Arch, eta: f64, mu: f64, x: &Reactions, samples: usize) -> Vec<Eccentricity> {
+    let (a, b) = (arch.beta_right(), arch.beta_left());
+    let mut betas: Vec<Radians> = (0..=samples).map(|i| a + (b - a) * i as f64 / samples as f64).collect();
+    if let JointLayout::Discrete(j) = arch.layout() {
+        betas.extend_from_slice(j);
+        betas.sort_by(f64::total_cmp);
+        betas.dedup();
+    }
+    betas
+        .into_iter()
+        .map(|beta| {
+            let (n, t, m) = internal_forces(arch, eta, x, beta);
+            let e_t = if mu.is_finite() { t / n / mu * eta / 2.0 } else { 0.0 };
+            Eccentricity { beta, n, e_m: m / n, e_t }
+        })
+        .collect()
+}
