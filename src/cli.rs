@@ -95,6 +95,11 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Pictures: limit curves, the arch with its lines and mechanism, eccentricities, a margin map (SVG, or PNG with --png).
+    Plot {
+        #[command(subcommand)]
+        figure: Figure,
+    },
     /// eta*(mu) sampled at geometrically spaced mu, one row per mu, with the mode.
     #[command(
         after_help = "Example:\n  arch-enum curve --alpha 0 --points 10\n  arch-enum curve --alpha 1 --mu-min 1 --mu-max 100 --json"
@@ -114,6 +119,79 @@ enum Command {
         /// Print one JSON document instead of tables.
         #[arg(long)]
         json: bool,
+    },
+}
+
+#[derive(Args, Debug)]
+struct Output {
+    /// Output file (default: <figure>.svg, or <figure>.png with --png, in the current folder).
+    #[arg(long)]
+    out: Option<std::path::PathBuf>,
+    /// Render to PNG in-process (fonts embedded) instead of SVG.
+    #[arg(long)]
+    png: bool,
+    /// PNG width in pixels (100 to 8000).
+    #[arg(long, default_value_t = 1200)]
+    width: u32,
+}
+
+#[derive(Subcommand, Debug)]
+enum Figure {
+    /// The eta-mu limit curves of one or more symmetric openings in one figure.
+    #[command(
+        after_help = "Example:\n  arch-enum plot curve --alpha 0 --alpha 0.5236 --alpha 1.0 --png"
+    )]
+    Curve {
+        /// Opening(s) in radians, -pi/2 < alpha < pi/2; repeat for several arches.
+        #[arg(long, required = true, allow_negative_numbers = true)]
+        alpha: Vec<f64>,
+        /// Where self-weight acts.
+        #[arg(long, value_enum, default_value = "centreline")]
+        weight: WeightArg,
+        #[command(flatten)]
+        output: Output,
+    },
+    /// The arch to scale at eta*(mu) (or at --eta) with its lines of thrust and friction, and the mechanism.
+    #[command(
+        after_help = "Example:\n  arch-enum plot arch --alpha 0 --mu 0.35 --png\n  arch-enum plot arch --alpha 1.0 --mu 2 --eta 0.9"
+    )]
+    Arch {
+        #[command(flatten)]
+        arch: ArchArgs,
+        /// Friction coefficient mu > 0; `inf` for no sliding.
+        #[arg(long, allow_negative_numbers = true)]
+        mu: f64,
+        /// Thickness ratio to draw (default: eta*(mu)); above eta* the state of greatest margin is drawn.
+        #[arg(long, allow_negative_numbers = true)]
+        eta: Option<f64>,
+        #[command(flatten)]
+        output: Output,
+    },
+    /// The eccentricities e_M = M/N and e_T = (T/N)/mu eta/2 against beta.
+    Eccentricity {
+        #[command(flatten)]
+        arch: ArchArgs,
+        /// Friction coefficient mu > 0; `inf` for no sliding.
+        #[arg(long, allow_negative_numbers = true)]
+        mu: f64,
+        /// Thickness ratio (default: eta*(mu)).
+        #[arg(long, allow_negative_numbers = true)]
+        eta: Option<f64>,
+        #[command(flatten)]
+        output: Output,
+    },
+    /// A margin map over the eta-mu plane with the exact limit curve (computed in parallel).
+    Map {
+        #[command(flatten)]
+        arch: ArchArgs,
+        /// Grid cells along eta (4 to 400).
+        #[arg(long, default_value_t = 36)]
+        n_eta: usize,
+        /// Grid cells along mu (4 to 400).
+        #[arg(long, default_value_t = 48)]
+        n_mu: usize,
+        #[command(flatten)]
+        output: Output,
     },
 }
 
@@ -404,6 +482,7 @@ where
                 }
             }
         }
+        Command::Plot { figure } => run_plot(figure, &settings, out, err),
         Command::Curve {
             arch,
             mu_min,
@@ -446,4 +525,138 @@ where
             EXIT_OK
         }
     }
+}
+
+fn weight_of(w: WeightArg) -> WeightModel {
+    match w {
+        WeightArg::Centreline => WeightModel::Centreline,
+        WeightArg::Centroid => WeightModel::Centroid,
+    }
+}
+
+fn run_plot(figure: Figure, settings: &Settings, out: &mut dyn Write, err: &mut dyn Write) -> i32 {
+    use crate::render::figures;
+    let progress = |done: usize, total: usize| {
+        if done.is_multiple_of(16) || done == total {
+            let bar = 30 * done / total.max(1);
+            eprint!(
+                "\r[{}{}] {done}/{total}",
+                "#".repeat(bar),
+                " ".repeat(30 - bar)
+            );
+            if done == total {
+                eprintln!();
+            }
+        }
+    };
+    let (name, output, result) = match figure {
+        Figure::Curve {
+            alpha,
+            weight,
+            output,
+        } => {
+            let arches: Result<Vec<Arch>, InputError> = alpha
+                .iter()
+                .map(|&a| Arch::symmetric(a, weight_of(weight)))
+                .collect();
+            match arches {
+                Ok(a) => ("curve", output, figures::curve(&a, settings)),
+                Err(e) => return bad_input(&e, false, out, err),
+            }
+        }
+        Figure::Arch {
+            arch,
+            mu,
+            eta,
+            output,
+        } => match plot_inputs(&arch, mu, eta) {
+            Ok(a) => ("arch", output, figures::arch(&a, mu, eta, settings)),
+            Err(e) => return bad_input(&e, false, out, err),
+        },
+        Figure::Eccentricity {
+            arch,
+            mu,
+            eta,
+            output,
+        } => match plot_inputs(&arch, mu, eta) {
+            Ok(a) => (
+                "eccentricity",
+                output,
+                figures::eccentricity(&a, mu, eta, settings),
+            ),
+            Err(e) => return bad_input(&e, false, out, err),
+        },
+        Figure::Map {
+            arch,
+            n_eta,
+            n_mu,
+            output,
+        } => {
+            for (name, n) in [("--n-eta", n_eta), ("--n-mu", n_mu)] {
+                if !(4..=400).contains(&n) {
+                    let e = InputError::OutOfRange {
+                        arg: name,
+                        value: n.to_string(),
+                        range: "whole numbers 4 to 400".into(),
+                    };
+                    return bad_input(&e, false, out, err);
+                }
+            }
+            match arch.build() {
+                Ok(a) => (
+                    "map",
+                    output,
+                    figures::map(&a, n_eta, n_mu, settings, &progress),
+                ),
+                Err(e) => return bad_input(&e, false, out, err),
+            }
+        }
+    };
+    if !(100..=8000).contains(&output.width) {
+        let e = InputError::OutOfRange {
+            arg: "--width",
+            value: output.width.to_string(),
+            range: "100 to 8000 pixels".into(),
+        };
+        return bad_input(&e, false, out, err);
+    }
+    let svg = match result {
+        Ok(s) => s,
+        Err(figures::NoFigure(reason)) => {
+            emit(err, &format!("no figure: {reason}\n"));
+            return EXIT_NO_ANSWER;
+        }
+    };
+    let path = output
+        .out
+        .unwrap_or_else(|| format!("{name}.{}", if output.png { "png" } else { "svg" }).into());
+    let bytes = if output.png {
+        match crate::render::plot::svg_to_png(&svg, output.width) {
+            Ok(b) => b,
+            Err(e) => {
+                emit(err, &format!("no figure: {e}\n"));
+                return EXIT_NO_ANSWER;
+            }
+        }
+    } else {
+        svg.into_bytes()
+    };
+    if let Err(e) = std::fs::write(&path, bytes) {
+        emit(
+            err,
+            &format!("error: cannot write --out {}: {e}\n", path.display()),
+        );
+        return EXIT_BAD_INPUT;
+    }
+    emit(out, &format!("wrote {}\n", path.display()));
+    EXIT_OK
+}
+
+fn plot_inputs(arch: &ArchArgs, mu: f64, eta: Option<f64>) -> Result<Arch, InputError> {
+    let a = arch.build()?;
+    crate::arch::check_mu(mu)?;
+    if let Some(e) = eta {
+        crate::arch::check_eta(e)?;
+    }
+    Ok(a)
 }

@@ -80,7 +80,11 @@ pub fn mirror_indices(contacts: &[Contact], tol: f64) -> Option<Vec<usize>> {
 /// The rigid motion (V_x(O), V_y(O), ψ) of each block of a mechanism: the pieces between
 /// consecutive distinct active joints, as (β_start, β_end, motion). Pieces before the first
 /// and after the last active joint are at rest and not listed.
-pub fn block_motions(eta: f64, contacts: &[Contact], rates: &[f64]) -> Vec<(Radians, Radians, [f64; 3])> {
+pub fn block_motions(
+    eta: f64,
+    contacts: &[Contact],
+    rates: &[f64],
+) -> Vec<(Radians, Radians, [f64; 3])> {
     let mut joints: Vec<Radians> = contacts.iter().map(|c| c.beta).collect();
     joints.sort_by(f64::total_cmp);
     joints.dedup();

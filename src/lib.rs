@@ -51,6 +51,7 @@ pub mod kinematics;
 pub mod limit;
 pub mod limit_curve;
 pub mod lp;
+pub mod margin_map;
 pub mod mechanism;
 pub mod mode;
 pub mod refine;

@@ -21,9 +21,17 @@ pub struct Eccentricity {
 
 /// e_M and e_T at `samples + 1` equally spaced angles (or at the listed joints of a
 /// discrete arch, plus the same dense sampling for the continuous lines).
-pub fn eccentricities(arch: &Arch, eta: f64, mu: f64, x: &Reactions, samples: usize) -> Vec<Eccentricity> {
+pub fn eccentricities(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    x: &Reactions,
+    samples: usize,
+) -> Vec<Eccentricity> {
     let (a, b) = (arch.beta_right(), arch.beta_left());
-    let mut betas: Vec<Radians> = (0..=samples).map(|i| a + (b - a) * i as f64 / samples as f64).collect();
+    let mut betas: Vec<Radians> = (0..=samples)
+        .map(|i| a + (b - a) * i as f64 / samples as f64)
+        .collect();
     if let JointLayout::Discrete(j) = arch.layout() {
         betas.extend_from_slice(j);
         betas.sort_by(f64::total_cmp);
@@ -33,8 +41,17 @@ pub fn eccentricities(arch: &Arch, eta: f64, mu: f64, x: &Reactions, samples: us
         .into_iter()
         .map(|beta| {
             let (n, t, m) = internal_forces(arch, eta, x, beta);
-            let e_t = if mu.is_finite() { t / n / mu * eta / 2.0 } else { 0.0 };
-            Eccentricity { beta, n, e_m: m / n, e_t }
+            let e_t = if mu.is_finite() {
+                t / n / mu * eta / 2.0
+            } else {
+                0.0
+            };
+            Eccentricity {
+                beta,
+                n,
+                e_m: m / n,
+                e_t,
+            }
         })
         .collect()
 }

@@ -36,24 +36,38 @@ pub fn svg_to_png(svg: &str, width: u32) -> Result<Vec<u8>, String> {
         db.set_serif_family(FAMILY);
         db.set_monospace_family(FAMILY);
     }
-    let tree = resvg::usvg::Tree::from_str(svg, &opt).map_err(|e| format!("SVG not parsed: {e}"))?;
+    let tree =
+        resvg::usvg::Tree::from_str(svg, &opt).map_err(|e| format!("SVG not parsed: {e}"))?;
     let size = tree.size();
     let scale = width as f32 / size.width();
     let height = (size.height() * scale).ceil() as u32;
     let mut pixmap = resvg::tiny_skia::Pixmap::new(width, height).ok_or("empty image")?;
     pixmap.fill(resvg::tiny_skia::Color::WHITE);
-    resvg::render(&tree, resvg::tiny_skia::Transform::from_scale(scale, scale), &mut pixmap.as_mut());
-    pixmap.encode_png().map_err(|e| format!("PNG encoding failed: {e}"))
+    resvg::render(
+        &tree,
+        resvg::tiny_skia::Transform::from_scale(scale, scale),
+        &mut pixmap.as_mut(),
+    );
+    pixmap
+        .encode_png()
+        .map_err(|e| format!("PNG encoding failed: {e}"))
 }
 
-/// A short label for a friction coefficient with its friction angle: "0.40 (21.8°)".
+/// "0.3 (17°)": μ with up to 3 significant digits, trailing zeros trimmed, and the
+/// friction angle φ = atan μ.
 pub fn mu_label(mu: f64) -> String {
-    format!("{} ({:.1}°)", short_num(mu), mu.atan().to_degrees())
+    let t = short_num(mu);
+    let t = if t.contains('.') && !t.contains('e') {
+        t.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        t
+    };
+    format!("{t} ({:.0}°)", mu.atan().to_degrees())
 }
 
 /// A number with 3 significant digits, plain where readable.
 pub fn short_num(v: f64) -> String {
-    if v == 0.0 {
+    if v.abs() < 1e-12 {
         "0".into()
     } else if v.abs() >= 1e-3 && v.abs() < 1e4 {
         let digits = (2 - v.abs().log10().floor() as i32).max(0) as usize;

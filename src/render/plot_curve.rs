@@ -41,21 +41,40 @@ pub fn curve_data(
         let hi = b.mu_max.min(mu_cap);
         let lo = b.mu_min;
         let mut pts = vec![];
+        // the upper end: a corner, or the horizontal branch's constant η at the cap
+        // (an asymptotic branch is sampled only, it never reaches its η_min)
         if b.mu_max.is_finite() || b.eta_min == b.eta_max {
-            pts.push((hi, if b.mu_max.is_finite() { b.eta_min } else { b.eta_min }));
+            pts.push((hi, b.eta_min));
         }
         for i in 1..n {
             let mu = hi * (lo / hi).powf(i as f64 / n as f64);
-            if let Ok(crate::limit::Outcome::Limit(ls)) = crate::limit::solve(arch, mu, settings).map(|s| s.outcome) {
+            if let Ok(crate::limit::Outcome::Limit(ls)) =
+                crate::limit::solve(arch, mu, settings).map(|s| s.outcome)
+            {
                 pts.push((mu, ls.eta));
             }
         }
         pts.push((lo, b.eta_max));
         branches.push((b.mode, pts));
     }
-    let corners = curve.corners.iter().filter(|c| c.mu.is_finite()).map(|c| (c.mu, c.eta)).collect();
-    let asymptote = curve.corners.iter().find(|c| c.mu.is_infinite()).map(|c| c.eta);
-    Some(CurveData { label: label.into(), branches, corners, asymptote, mu_ms })
+    let corners = curve
+        .corners
+        .iter()
+        .filter(|c| c.mu.is_finite())
+        .map(|c| (c.mu, c.eta))
+        .collect();
+    let asymptote = curve
+        .corners
+        .iter()
+        .find(|c| c.mu.is_infinite())
+        .map(|c| c.eta);
+    Some(CurveData {
+        label: label.into(),
+        branches,
+        corners,
+        asymptote,
+        mu_ms,
+    })
 }
 
 /// Draws the curves of several arches in one SVG.
@@ -73,15 +92,20 @@ pub fn svg(data: &[CurveData], title: &str) -> Result<String, String> {
         * 1.3;
     let mut buf = String::new();
     {
-        let root = SVGBackend::with_string(&mut buf, (900, 620)).into_drawing_area();
+        let root = SVGBackend::with_string(&mut buf, (1010, 620)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| e.to_string())?;
         let mut chart = ChartBuilder::on(&root)
             .caption(title, (FAMILY, 22))
             .margin(16)
-            .margin_right(48)
+            .margin_right(250)
             .x_label_area_size(56)
             .y_label_area_size(70)
-            .build_cartesian_2d((mu_lo..mu_hi).log_scale().with_key_points(log_keys(mu_lo, mu_hi)), 0.0..eta_hi)
+            .build_cartesian_2d(
+                (mu_lo..mu_hi)
+                    .log_scale()
+                    .with_key_points(log_keys(mu_lo, mu_hi)),
+                0.0..eta_hi,
+            )
             .map_err(|e| e.to_string())?;
         chart
             .configure_mesh()
@@ -96,56 +120,79 @@ pub fn svg(data: &[CurveData], title: &str) -> Result<String, String> {
             .map_err(|e| e.to_string())?;
         // collapse domain: everything no arch's safe domain covers (drawn first, light red)
         chart
-            .draw_series(std::iter::once(Rectangle::new([(mu_lo, 0.0), (mu_hi, eta_hi)], RGBColor(214, 39, 40).mix(0.07).filled())))
+            .draw_series(std::iter::once(Rectangle::new(
+                [(mu_lo, 0.0), (mu_hi, eta_hi)],
+                RGBColor(214, 39, 40).mix(0.07).filled(),
+            )))
             .map_err(|e| e.to_string())?;
         let mut legend_modes: Vec<Mode> = Vec::new();
         for d in data {
             // the whole curve as one polyline (decreasing μ), then the vertical branch
-            let mut outline: Vec<(f64, f64)> = d.branches.iter().flat_map(|b| b.1.iter().copied()).collect();
+            let mut outline: Vec<(f64, f64)> = d
+                .branches
+                .iter()
+                .flat_map(|b| b.1.iter().copied())
+                .collect();
             outline.sort_by(|a, b| b.0.total_cmp(&a.0));
             let eta_ms = outline.last().map_or(eta_hi, |p| p.1);
             // safe domain: above the curve, right of μ_ms
             let mut safe = vec![(d.mu_ms, eta_hi), (d.mu_ms, eta_ms)];
             safe.extend(outline.iter().rev().copied());
-            safe.extend([(mu_hi, outline.first().map_or(0.0, |p| p.1)), (mu_hi, eta_hi)]);
+            safe.extend([
+                (mu_hi, outline.first().map_or(0.0, |p| p.1)),
+                (mu_hi, eta_hi),
+            ]);
             let safe_copy = safe.clone();
             chart
                 .draw_series(std::iter::once(Polygon::new(safe, WHITE.mix(0.75))))
                 .map_err(|e| e.to_string())?;
             chart
-                .draw_series(std::iter::once(Polygon::new(safe_copy, RGBColor(44, 160, 44).mix(0.05))))
+                .draw_series(std::iter::once(Polygon::new(
+                    safe_copy,
+                    RGBColor(44, 160, 44).mix(0.05),
+                )))
                 .map_err(|e| e.to_string())?;
             for (mode, pts) in &d.branches {
                 let color = mode_color(*mode);
-                let series = chart
+                chart
                     .draw_series(LineSeries::new(pts.iter().copied(), color.stroke_width(3)))
                     .map_err(|e| e.to_string())?;
                 if !legend_modes.contains(mode) {
                     legend_modes.push(*mode);
-                    series.label(mode.name()).legend(move |(x, y)| {
-                        PathElement::new(vec![(x, y), (x + 22, y)], color.stroke_width(3))
-                    });
                 }
             }
             // vertical purely-sliding branch
             let color = mode_color(Mode::PurelySliding);
-            let s = chart
-                .draw_series(LineSeries::new([(d.mu_ms, eta_ms), (d.mu_ms, eta_hi)], color.stroke_width(3)))
+            chart
+                .draw_series(LineSeries::new(
+                    [(d.mu_ms, eta_ms), (d.mu_ms, eta_hi)],
+                    color.stroke_width(3),
+                ))
                 .map_err(|e| e.to_string())?;
             if !legend_modes.contains(&Mode::PurelySliding) {
                 legend_modes.push(Mode::PurelySliding);
-                s.label(Mode::PurelySliding.name())
-                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], color.stroke_width(3)));
+            }
+            if d.asymptote.is_some() && !legend_modes.contains(&Mode::Overturning) {
+                legend_modes.push(Mode::Overturning);
             }
             if let Some(eta_inf) = d.asymptote {
                 let color = mode_color(Mode::Overturning);
                 chart
-                    .draw_series(DashedLineSeries::new([(mu_lo, eta_inf), (mu_hi, eta_inf)], 8, 6, color.stroke_width(2)))
+                    .draw_series(DashedLineSeries::new(
+                        [(mu_lo, eta_inf), (mu_hi, eta_inf)],
+                        8,
+                        6,
+                        color.stroke_width(2),
+                    ))
                     .map_err(|e| e.to_string())?;
                 chart
                     .draw_series(std::iter::once(Text::new(
-                        format!("{}: overturning asymptote η = {} (μ → ∞)", d.label, short_num(eta_inf)),
-                        (d.mu_ms * 1.05, eta_inf - 0.035 * eta_hi),
+                        format!(
+                            "{}: overturning asymptote η = {} as μ → ∞",
+                            d.label,
+                            short_num(eta_inf)
+                        ),
+                        (mu_lo * 1.05, eta_inf + 0.045 * eta_hi),
                         (FAMILY, 12).into_font().color(&color),
                     )))
                     .map_err(|e| e.to_string())?;
@@ -172,18 +219,38 @@ pub fn svg(data: &[CurveData], title: &str) -> Result<String, String> {
                 .map_err(|e| e.to_string())?;
         }
         chart
-            .draw_series(std::iter::once(Text::new("safe (above / right of each curve)", (mu_hi * 0.25, eta_hi * 0.9), (FAMILY, 14))))
+            .draw_series(std::iter::once(Text::new(
+                "safe (above / right of each curve)",
+                (mu_hi * 0.25, eta_hi * 0.9),
+                (FAMILY, 14),
+            )))
             .map_err(|e| e.to_string())?;
         chart
-            .draw_series(std::iter::once(Text::new("collapse", (mu_lo * 1.03, eta_hi * 0.03), (FAMILY, 14))))
+            .draw_series(std::iter::once(Text::new(
+                "collapse",
+                (mu_lo * 1.01, eta_hi * 0.6),
+                (FAMILY, 14),
+            )))
             .map_err(|e| e.to_string())?;
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::LowerRight)
-            .background_style(WHITE.mix(0.9))
-            .border_style(BLACK)
-            .label_font((FAMILY, 13))
-            .draw()
+        // legend in the right margin, outside the data
+        let (lx, mut ly) = (1010 - 240, 70);
+        root.draw(&Text::new("collapse mode", (lx, ly), (FAMILY, 14)))
+            .map_err(|e| e.to_string())?;
+        for mode in &legend_modes {
+            ly += 24;
+            let c = mode_color(*mode);
+            root.draw(&PathElement::new(
+                vec![(lx, ly + 7), (lx + 26, ly + 7)],
+                c.stroke_width(3),
+            ))
+            .map_err(|e| e.to_string())?;
+            root.draw(&Text::new(mode.name(), (lx + 34, ly), (FAMILY, 13)))
+                .map_err(|e| e.to_string())?;
+        }
+        ly += 30;
+        root.draw(&Circle::new((lx + 13, ly + 7), 5, BLACK.filled()))
+            .map_err(|e| e.to_string())?;
+        root.draw(&Text::new("corner (μ, η)", (lx + 34, ly), (FAMILY, 13)))
             .map_err(|e| e.to_string())?;
         root.present().map_err(|e| e.to_string())?;
     }
@@ -191,7 +258,7 @@ pub fn svg(data: &[CurveData], title: &str) -> Result<String, String> {
 }
 
 /// Tick positions 1, 2, 3, 5 × 10^k inside [lo, hi].
-fn log_keys(lo: f64, hi: f64) -> Vec<f64> {
+pub fn log_keys(lo: f64, hi: f64) -> Vec<f64> {
     let mut keys = Vec::new();
     let mut p = 10f64.powi(lo.log10().floor() as i32);
     while p <= hi {
@@ -203,7 +270,7 @@ fn log_keys(lo: f64, hi: f64) -> Vec<f64> {
         }
         p *= 10.0;
     }
-    if keys.len() > 10 {
+    if keys.len() > 6 {
         keys.retain(|v| {
             let m = v / 10f64.powi(v.log10().floor() as i32);
             (m - 1.0).abs() < 1e-9 || (m - 3.0).abs() < 1e-9

@@ -8,4 +8,5 @@ mod identities;
 mod invariants;
 mod model;
 mod modes;
+mod plots;
 mod reference;

@@ -1,0 +1,74 @@
+//! Regenerates the gallery into a folder: for α_s ∈ {−π/6, 0, π/6, 1, 1.15} one arch
+//! figure per collapse mode present on its limit curve (at the middle of each branch),
+//! the limit curves of all five in one figure, and one margin map; SVG and PNG of each.
+//!
+//! ```sh
+//! cargo run --release --example gallery -- docs/gallery
+//! ```
+
+use arch_enum::limit_curve::trace;
+use arch_enum::render::{figures, plot::svg_to_png};
+use arch_enum::{Arch, Mode, Settings, WeightModel};
+use std::f64::consts::PI;
+use std::path::Path;
+
+fn save(dir: &Path, name: &str, svg: &str) {
+    std::fs::write(dir.join(format!("{name}.svg")), svg).expect("write svg");
+    std::fs::write(
+        dir.join(format!("{name}.png")),
+        svg_to_png(svg, 1000).expect("png"),
+    )
+    .expect("write png");
+    println!("wrote {name}.svg/.png");
+}
+
+fn main() {
+    let dir = std::env::args().nth(1).unwrap_or_else(|| "gallery".into());
+    let dir = Path::new(&dir);
+    std::fs::create_dir_all(dir).expect("create the gallery folder");
+    let s = Settings::default();
+    let openings = [
+        ("alpha_-pi_6", -PI / 6.0),
+        ("alpha_0", 0.0),
+        ("alpha_pi_6", PI / 6.0),
+        ("alpha_1", 1.0),
+        ("alpha_1.15", 1.15),
+    ];
+    let mut arches = Vec::new();
+    for (name, alpha) in openings {
+        let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
+        let curve = trace(&arch, &s);
+        for b in &curve.branches {
+            if b.mode == Mode::PurelySliding {
+                continue; // a single μ: its state is the corner with the lowest branch
+            }
+            let mu = if b.mu_max.is_finite() {
+                (b.mu_min * b.mu_max).sqrt()
+            } else {
+                3.0 * b.mu_min
+            };
+            match figures::arch(&arch, mu, None, &s) {
+                Ok(svg) => save(dir, &format!("arch_{name}_{}", b.mode.name()), &svg),
+                Err(e) => eprintln!("{name} {}: {e:?}", b.mode.name()),
+            }
+        }
+        arches.push(arch);
+    }
+    save(
+        dir,
+        "curves",
+        &figures::curve(&arches, &s).expect("curve figure"),
+    );
+    save(
+        dir,
+        "eccentricity_alpha_0_mu_0.35",
+        &figures::eccentricity(&arches[1], 0.35, None, &s).expect("eccentricity"),
+    );
+    let map = figures::map(&arches[1], 36, 48, &s, &|done, total| {
+        if done == total {
+            eprintln!("map: {total} cells");
+        }
+    })
+    .expect("map");
+    save(dir, "map_alpha_0", &map);
+}

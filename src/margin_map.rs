@@ -1,0 +1,70 @@
+//! A margin over the η–μ plane for the map figure: at each (η, μ) the largest
+//! admissibility margin of any state over the whole arch (the continuum margin of the
+//! constraint-generation LP, an x-space distance divided by the span β_L − β_R). It is
+//! positive in the safe domain, negative in the collapse domain, and vanishes on the
+//! limit curve η*(μ). Rows are computed in parallel; progress goes through a callback.
+
+use crate::admissibility::{max_margin, Goal, WorkingSet};
+use crate::arch::Arch;
+use crate::settings::Settings;
+use crate::statics::JointMode;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// The margin at every (η, μ) of the grid, `result[i][j]` at (etas[i], mus[j]); NaN
+/// where the LP failed. `progress(done, total)` is called after each cell.
+pub fn margin_map(
+    arch: &Arch,
+    etas: &[f64],
+    mus: &[f64],
+    settings: &Settings,
+    threads: usize,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Vec<Vec<f64>> {
+    let total = etas.len() * mus.len();
+    let done = AtomicUsize::new(0);
+    let mut rows: Vec<Vec<f64>> = vec![Vec::new(); etas.len()];
+    let threads = threads.max(1);
+    std::thread::scope(|scope| {
+        let chunks: Vec<(usize, &mut [Vec<f64>])> = {
+            let per = etas.len().div_ceil(threads);
+            let mut v = Vec::new();
+            let mut rest: &mut [Vec<f64>] = &mut rows;
+            let mut start = 0;
+            while !rest.is_empty() {
+                let n = per.min(rest.len());
+                let (a, b) = rest.split_at_mut(n);
+                v.push((start, a));
+                start += n;
+                rest = b;
+            }
+            v
+        };
+        for (start, chunk) in chunks {
+            let done = &done;
+            scope.spawn(move || {
+                for (k, row) in chunk.iter_mut().enumerate() {
+                    let eta = etas[start + k];
+                    let mut ws = WorkingSet::initial(arch);
+                    *row = mus
+                        .iter()
+                        .map(|&mu| {
+                            let v = max_margin(
+                                arch,
+                                eta,
+                                mu,
+                                JointMode::active_at(mu),
+                                &mut ws,
+                                Goal::Optimise,
+                                settings,
+                            )
+                            .map_or(f64::NAN, |m| m.margin / arch.span());
+                            progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+                            v
+                        })
+                        .collect();
+                }
+            });
+        }
+    });
+    rows
+}
