@@ -46,12 +46,13 @@ fn curve_figure_has_one_path_per_branch_and_a_marker_per_corner() {
             .count();
         assert_eq!(n, expected, "{mode:?}");
     }
-    // finite corners: alpha = 0 has two, alpha = 1.15 one (its other corner is at mu = inf)
+    // finite corners: alpha = 0 has two, alpha = 1.15 one (its other corner is at mu = inf),
+    // plus the corner marker of the legend
     let corners = doc
         .descendants()
         .filter(|n| n.has_tag_name("circle") && n.attribute("r") == Some("5"))
         .count();
-    assert_eq!(corners, 3);
+    assert_eq!(corners, 3 + 1);
     // the asymptote is drawn and labelled
     assert!(svg.contains("overturning asymptote"));
 }
