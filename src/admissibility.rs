@@ -6,9 +6,10 @@
 //! working set. Infeasibility on a subset of joints proves infeasibility for the arch.
 
 use crate::arch::{Arch, JointLayout, Radians};
+use crate::dense_lp;
 use crate::lp::{self, LpOutcome};
 use crate::scan::State;
-use crate::settings::Settings;
+use crate::settings::{LpBackend, Settings};
 use crate::statics::{actions, JointMode, Reactions};
 
 /// The result of the margin problem at one (η, μ).
@@ -116,7 +117,13 @@ pub fn max_margin(
                 modes.iter().map(move |&m| a.activation(m, 0, eta, mu))
             })
             .collect();
-        let (x, s) = lp::max_margin(&rows, cap, settings.lp_tol)?;
+        let (x, s) = match settings.lp_backend {
+            LpBackend::Highs => lp::max_margin(&rows, cap, settings.lp_tol)?,
+            LpBackend::Dense => match dense_lp::max_margin(&rows, cap, 1e-13) {
+                Ok(r) => r,
+                Err(_) => lp::max_margin(&rows, cap, settings.lp_tol)?,
+            },
+        };
         let state = State { arch, eta, mu, x };
         let peaks = state.peaks(settings);
         let tol = settings.sep_tol * (1.0 + x.iter().map(|v| v.abs()).sum::<f64>());

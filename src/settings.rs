@@ -5,6 +5,16 @@
 //! `scale` = max(1, ‖x‖) · span, unless said otherwise, so that shallow arches
 //! with η* ~ 1e-3 are treated as carefully as deep ones.
 
+/// Which solver answers the static margin LP.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LpBackend {
+    /// The 4-variable revised simplex of [`crate::dense_lp`] (fast path), falling back to
+    /// HiGHS if it reports a failure.
+    Dense,
+    /// HiGHS through good_lp (reference path).
+    Highs,
+}
+
 /// Solver settings. `Settings::default()` is what the CLI uses.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Settings {
@@ -42,6 +52,8 @@ pub struct Settings {
     pub lp_tol: f64,
     /// Maximum constraint-generation rounds per LP. Default 60.
     pub max_rounds: usize,
+    /// Solver of the static margin LP. Default [`LpBackend::Dense`].
+    pub lp_backend: LpBackend,
     /// Number of μ samples used to discover the branches of the limit curve. Default 16.
     pub curve_samples: usize,
     /// A rate below `rate_tol` (rates sum to 1) counts as zero. Default 1e-10.
@@ -65,6 +77,7 @@ impl Default for Settings {
             max_rounds: 60,
             rate_tol: 1e-10,
             curve_samples: 16,
+            lp_backend: LpBackend::Dense,
         }
     }
 }

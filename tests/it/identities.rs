@@ -81,3 +81,44 @@ proptest! {
         prop_assert!((phi_l - (le - diss)).abs() < 1e-10, "phi'lambda = {phi_l}, L_e - mu sum N s = {}", le - diss);
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 200, ..ProptestConfig::default() })]
+
+    /// The fast 4-variable LP and HiGHS agree on the margin LP of random arches, states
+    /// and working sets (the optimum value; the optimal x need not be unique).
+    #[test]
+    fn dense_lp_matches_highs(
+        alpha in -1.3f64..1.2, eta in 0.001f64..1.9, mu in 0.05f64..5.0, n in 3usize..60, seed in 0u64..1000,
+    ) {
+        use arch_enum::statics::actions;
+        let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
+        let mut rng = seed;
+        let mut rows = Vec::new();
+        for _ in 0..n {
+            rng = rng.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            let t = (rng >> 11) as f64 / (1u64 << 53) as f64;
+            let beta = arch.beta_right() + t * arch.span();
+            let a = actions(&arch, eta, beta);
+            for m in JointMode::ALL {
+                rows.push(a.activation(m, 0, eta, mu));
+            }
+        }
+        let cap = arch.span();
+        let fast = arch_enum::dense_lp::max_margin(&rows, cap, 1e-13);
+        let reference = arch_enum::lp::max_margin(&rows, cap, 1e-10).unwrap();
+        if let Err(arch_enum::lp::LpOutcome::Failed(m)) = &fast {
+            // the only admissible failure: a working set so small that the optimum is
+            // unbounded in x (the dense solver's box binds); the caller then uses HiGHS
+            prop_assert!(m.contains("box"), "dense LP failed: {m}");
+        }
+        if let Ok((x, s)) = fast {
+            prop_assert!((s - reference.1).abs() <= 1e-8 * (1.0 + s.abs()), "dense {s} vs HiGHS {}", reference.1);
+            // the dense optimum is feasible
+            for r in &rows {
+                let g = r.grad_norm();
+                prop_assert!(r.at(&x) / g + s <= 1e-9 * (1.0 + x.iter().map(|v| v.abs()).sum::<f64>()));
+            }
+        }
+    }
+}

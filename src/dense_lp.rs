@@ -1,0 +1,140 @@
+//! A small exact LP solver for the static margin LP — the fast path; HiGHS
+//! ([`crate::lp`]) stays the reference path and the two are cross-checked in tests.
+//!
+//! The margin LP, max s subject to ĝᵢ·x + s ≤ rᵢ (rows normalised, ‖ĝᵢ‖ = 1) and s ≤ cap,
+//! has only four variables z = (h, v, w, s). Its dual, min rᵀy subject to
+//! Σ yᵢ (ĝᵢ, 1) = (0, 0, 0, 1), y ≥ 0, has four equality rows, so the revised simplex
+//! method on the dual works with a 4 × 4 basis: each iteration prices every primal row
+//! (its reduced cost is the primal slack at the current point z = B⁻ᵀ r_B), lets the
+//! most violated row enter, and does a ratio test on B⁻¹(ĝⱼ, 1). A box |x_k| ≤ `BOX`
+//! (rows that never bind in practice) gives a dual-feasible starting basis together
+//! with the cap. Dantzig pricing, Bland's rule after degenerate steps (no cycling).
+
+use crate::lp::LpOutcome;
+use crate::statics::{Affine, Reactions};
+use nalgebra::{Matrix4, Vector4};
+
+/// Half-width of the box on (h, v, w) that starts the simplex (units of γ t d r).
+pub const BOX: f64 = 1e6;
+
+/// Maximises s subject to `row(x) + s·‖∇row‖ ≤ 0` for every row and s ≤ `cap`
+/// (the same problem as [`crate::lp::max_margin`]). `tol` is the feasibility tolerance
+/// on normalised rows.
+pub fn max_margin(rows: &[Affine], cap: f64, tol: f64) -> Result<(Reactions, f64), LpOutcome> {
+    // constraint columns a_j ∈ R⁴ and right-hand sides b_j of the primal a_j·z ≤ b_j
+    let mut a: Vec<[f64; 4]> = Vec::with_capacity(rows.len() + 7);
+    let mut b: Vec<f64> = Vec::with_capacity(rows.len() + 7);
+    // 0: cap, 1..=3: x_k ≤ BOX, 4..=6: −x_k ≤ BOX
+    a.push([0.0, 0.0, 0.0, 1.0]);
+    b.push(cap);
+    for k in 0..3 {
+        let mut e = [0.0; 4];
+        e[k] = 1.0;
+        a.push(e);
+        b.push(BOX);
+    }
+    for k in 0..3 {
+        let mut e = [0.0; 4];
+        e[k] = -1.0;
+        a.push(e);
+        b.push(BOX);
+    }
+    for r in rows {
+        let n = r.grad_norm();
+        if n > 0.0 {
+            a.push([r.g[0] / n, r.g[1] / n, r.g[2] / n, 1.0]);
+            b.push(-r.c / n);
+        } else {
+            // a constant row: c + s·0 ≤ 0 (the HiGHS path treats it the same way)
+            if r.c > tol {
+                return Err(LpOutcome::Infeasible);
+            }
+        }
+    }
+    let m = a.len();
+    let unused: [bool; 3] = std::array::from_fn(|k| a[7..].iter().all(|r| r[k] == 0.0));
+    let mut basis = [0usize, 1, 2, 3];
+    let mut in_basis = vec![false; m];
+    for &i in &basis {
+        in_basis[i] = true;
+    }
+    let mut degenerate = 0usize;
+    for _ in 0..(50 * m + 100) {
+        let bmat = Matrix4::from_fn(|r, c| a[basis[c]][r]);
+        let lu = bmat.lu();
+        // primal point z solves Bᵀ z = b_B
+        let bt = bmat.transpose().lu();
+        let z = bt
+            .solve(&Vector4::from_fn(|i, _| b[basis[i]]))
+            .ok_or_else(|| LpOutcome::Failed("singular basis".into()))?;
+        // dual values y_B solve B y = c = e_s
+        let y = lu
+            .solve(&Vector4::new(0.0, 0.0, 0.0, 1.0))
+            .ok_or_else(|| LpOutcome::Failed("singular basis".into()))?;
+        // pricing: the most violated primal row (Bland: the first one after stalls)
+        let scale = 1.0 + z[0].abs() + z[1].abs() + z[2].abs();
+        let mut enter = None;
+        let mut worst = -tol * scale;
+        for j in 0..m {
+            if in_basis[j] {
+                continue;
+            }
+            let slack = b[j] - (a[j][0] * z[0] + a[j][1] * z[1] + a[j][2] * z[2] + a[j][3] * z[3]);
+            if slack < worst {
+                enter = Some(j);
+                if degenerate > 8 {
+                    break; // Bland: lowest index
+                }
+                worst = slack;
+            }
+        }
+        let Some(j) = enter else {
+            // A box row still basic: its coordinate sits on the box. That is harmless only
+            // for a coordinate no row involves (w in the friction-only problem), which is
+            // then set to 0; otherwise let the caller fall back to the reference path.
+            let mut x = [z[0], z[1], z[2]];
+            for &i in &basis {
+                if (1..=6).contains(&i) {
+                    let k = (i - 1) % 3;
+                    if unused[k] {
+                        x[k] = 0.0;
+                    } else {
+                        return Err(LpOutcome::Failed(
+                            "the optimum touches the starting box".into(),
+                        ));
+                    }
+                }
+            }
+            return Ok((x, z[3]));
+        };
+        // ratio test on d = B⁻¹ a_j
+        let d = lu
+            .solve(&Vector4::from_row_slice(&a[j]))
+            .ok_or_else(|| LpOutcome::Failed("singular basis".into()))?;
+        let mut leave: Option<(usize, f64)> = None;
+        for k in 0..4 {
+            if d[k] > 1e-12 {
+                let ratio = y[k].max(0.0) / d[k];
+                let better = match leave {
+                    None => true,
+                    Some((l, best)) => {
+                        ratio < best - 1e-15 || (ratio <= best + 1e-15 && basis[k] < basis[l])
+                    }
+                };
+                if better {
+                    leave = Some((k, ratio));
+                }
+            }
+        }
+        let Some((k, ratio)) = leave else {
+            return Err(LpOutcome::Failed(
+                "dual unbounded: primal infeasible".into(),
+            ));
+        };
+        degenerate = if ratio <= 1e-15 { degenerate + 1 } else { 0 };
+        in_basis[basis[k]] = false;
+        in_basis[j] = true;
+        basis[k] = j;
+    }
+    Err(LpOutcome::Failed("iteration limit".into()))
+}
