@@ -118,3 +118,55 @@ fn strongly_unsymmetric() {
     let ls = limit(&arch, 2.0);
     assert!(ls.eta > 0.0);
 }
+
+/// μ within 1e-12 (relative) of every exact corner, on both sides: a verified limit
+/// state at the corner's η, named by a mode of one of the two branches or of the
+/// corner's own pattern (within 1e-12 both patterns' contacts are active to rounding).
+#[test]
+fn within_1e_12_of_corners() {
+    let s = Settings::default();
+    for alpha in [0.0, PI / 6.0, 1.0, 1.15] {
+        let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
+        let curve = arch_enum::limit_curve::trace(&arch, &s);
+        for c in curve.corners.iter().filter(|c| c.mu.is_finite()) {
+            for side in [-1.0, 1.0] {
+                let mu = c.mu * (1.0 + side * 1e-12);
+                match outcome(&arch, mu) {
+                    Outcome::Limit(ls) => {
+                        check_limit_state(&arch, &ls);
+                        assert!(
+                            (ls.eta - c.eta).abs() <= 1e-9 * c.eta,
+                            "alpha {alpha} mu {mu}: {} vs corner {}",
+                            ls.eta,
+                            c.eta
+                        );
+                        let allowed = [c.between[0], c.between[1], c.mode];
+                        assert!(
+                            allowed.contains(&ls.mode),
+                            "alpha {alpha} mu {mu}: mode {:?} not in {allowed:?}",
+                            ls.mode
+                        );
+                    }
+                    // just below mu_ms nothing stands; within the LP's resolution of it the
+                    // solver says so
+                    Outcome::NoEquilibrium { .. } | Outcome::Unresolved { .. } => {
+                        assert!(
+                            (c.mu - curve.mu_min.unwrap()).abs() <= 1e-9 * c.mu,
+                            "alpha {alpha}: no answer at {mu}"
+                        )
+                    }
+                    other => panic!("alpha {alpha} mu {mu}: {other:?}"),
+                }
+            }
+        }
+    }
+}
+
+/// Openings close to the largest that can stand at all: η* → 2 (overturning at μ = ∞).
+#[test]
+fn nearly_the_largest_opening() {
+    let arch = Arch::symmetric(1.21, WeightModel::Centreline).unwrap();
+    let ls = limit(&arch, f64::INFINITY);
+    assert!(ls.eta > 1.9 && ls.eta < 2.0, "{}", ls.eta);
+    assert_eq!(ls.mode, Mode::Overturning);
+}
