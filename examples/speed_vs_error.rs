@@ -42,7 +42,9 @@ fn grid_eta(arch: &Arch, mu: f64, n: usize) -> f64 {
             .iter()
             .flat_map(|&beta| {
                 let act = actions(arch, eta, beta);
-                JointMode::active_at(mu).iter().map(move |&m| act.activation(m, 0, eta, mu))
+                JointMode::active_at(mu)
+                    .iter()
+                    .map(move |&m| act.activation(m, 0, eta, mu))
             })
             .collect();
         arch_enum::dense_lp::max_margin(&rows, arch.span(), 1e-13)
@@ -66,7 +68,16 @@ fn cg_eta(arch: &Arch, mu: f64, s: &Settings) -> f64 {
     let (mut lo, mut hi) = (0.0, 1.999);
     while hi - lo > 1e-13 * hi {
         let mid = 0.5 * (lo + hi);
-        let m = max_margin(arch, mid, mu, JointMode::active_at(mu), &mut ws, Goal::Decide, s).unwrap();
+        let m = max_margin(
+            arch,
+            mid,
+            mu,
+            JointMode::active_at(mu),
+            &mut ws,
+            Goal::Decide,
+            s,
+        )
+        .unwrap();
         if m.margin >= 0.0 {
             hi = mid;
         } else {
@@ -77,7 +88,9 @@ fn cg_eta(arch: &Arch, mu: f64, s: &Settings) -> f64 {
 }
 
 fn main() {
-    let out = std::env::args().nth(1).unwrap_or_else(|| "speed_vs_error.svg".into());
+    let out = std::env::args()
+        .nth(1)
+        .unwrap_or_else(|| "speed_vs_error.svg".into());
     let s = Settings::default();
     let grids = [16usize, 64, 256, 1024, 4096, 16384, 65536];
     let mut points: Vec<(String, f64, f64)> = Vec::new(); // (method, seconds, error)
@@ -87,25 +100,44 @@ fn main() {
         let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
         let curve = trace(&arch, &s);
         let mut cases: Vec<(f64, String)> = Vec::new();
-        for b in curve.branches.iter().filter(|b| b.mode != Mode::PurelySliding) {
-            let mu = if b.mu_max.is_finite() { (b.mu_min * b.mu_max).sqrt() } else { 2.0 * b.mu_min };
+        for b in curve
+            .branches
+            .iter()
+            .filter(|b| b.mode != Mode::PurelySliding)
+        {
+            let mu = if b.mu_max.is_finite() {
+                (b.mu_min * b.mu_max).sqrt()
+            } else {
+                2.0 * b.mu_min
+            };
             cases.push((mu, format!("on {}", b.mode.name())));
         }
         for c in curve.corners.iter().filter(|c| c.mu.is_finite()) {
             cases.push((c.mu * (1.0 + 1e-6), format!("corner μ={:.6} +1e-6", c.mu)));
         }
         for (mu, place) in cases {
-            let Ok(cert) = certify(&arch, mu, 1e-12, &s) else { continue };
-            let (hi, lo) = (cert.safe.as_ref().unwrap().eta, cert.collapse.as_ref().unwrap().eta.unwrap());
+            let Ok(cert) = certify(&arch, mu, 1e-12, &s) else {
+                continue;
+            };
+            let (hi, lo) = (
+                cert.safe.as_ref().unwrap().eta,
+                cert.collapse.as_ref().unwrap().eta.unwrap(),
+            );
             let eta_ref = 0.5 * (hi + lo);
             let half_gap = 0.5 * (hi - lo);
             let (t, sol) = time(5, || solve(&arch, mu, &s).unwrap());
-            let Outcome::Limit(ls) = sol.outcome else { continue };
+            let Outcome::Limit(ls) = sol.outcome else {
+                continue;
+            };
             let mut row = |method: &str, t: f64, eta: f64| {
                 // an upper bound of the true error: η* is only known to ± half the gap
                 let err = (eta - eta_ref).abs() + half_gap;
                 println!("| {alpha:.4} | {mu:.6} | {place} | {eta_ref:.13} | {method} | {:.3} ms | {err:.1e} |", t * 1e3);
-                points.push((method.split(' ').next().unwrap().to_string(), t, err.max(1e-17)));
+                points.push((
+                    method.split(' ').next().unwrap().to_string(),
+                    t,
+                    err.max(1e-17),
+                ));
             };
             row("exact pattern solve", t, ls.eta);
             let (t, e) = time(1, || cg_eta(&arch, mu, &s));
@@ -132,7 +164,10 @@ fn main() {
         let root = SVGBackend::with_string(&mut svg, (900, 600)).into_drawing_area();
         root.fill(&WHITE).unwrap();
         let mut ch = ChartBuilder::on(&root)
-            .caption("Speed against error (α ∈ {−π/6, 0, 1, 1.15}, μ on every branch and near corners)", ("DejaVu Sans", 16))
+            .caption(
+                "Speed against error (α ∈ {−π/6, 0, 1, 1.15}, μ on every branch and near corners)",
+                ("DejaVu Sans", 16),
+            )
             .margin(16)
             .x_label_area_size(50)
             .y_label_area_size(70)
@@ -145,17 +180,38 @@ fn main() {
             .y_label_formatter(&|v| format!("{v:.0e}"))
             .draw()
             .unwrap();
-        for (name, color) in [("exact", RGBColor(31, 119, 180)), ("constraint-generation", RGBColor(44, 160, 44)), ("grid", RGBColor(214, 39, 40))] {
-            ch.draw_series(points.iter().filter(|p| p.0 == name).map(|p| Circle::new((p.2, p.1), 4, color.filled())))
-                .unwrap()
-                .label(if name == "grid" { "dense grid LP, n = 16 … 65 536" } else { name })
-                .legend(move |(x, y)| Circle::new((x + 8, y), 4, color.filled()));
+        for (name, color) in [
+            ("exact", RGBColor(31, 119, 180)),
+            ("constraint-generation", RGBColor(44, 160, 44)),
+            ("grid", RGBColor(214, 39, 40)),
+        ] {
+            ch.draw_series(
+                points
+                    .iter()
+                    .filter(|p| p.0 == name)
+                    .map(|p| Circle::new((p.2, p.1), 4, color.filled())),
+            )
+            .unwrap()
+            .label(if name == "grid" {
+                "dense grid LP, n = 16 … 65 536"
+            } else {
+                name
+            })
+            .legend(move |(x, y)| Circle::new((x + 8, y), 4, color.filled()));
         }
-        ch.configure_series_labels().border_style(BLACK).background_style(WHITE).draw().unwrap();
+        ch.configure_series_labels()
+            .border_style(BLACK)
+            .background_style(WHITE)
+            .draw()
+            .unwrap();
         root.present().unwrap();
     }
     std::fs::write(&out, &svg).expect("write the plot");
     let png = out.trim_end_matches(".svg").to_string() + ".png";
-    std::fs::write(&png, arch_enum::render::plot::svg_to_png(&svg, 900).expect("png")).expect("write the png");
+    std::fs::write(
+        &png,
+        arch_enum::render::plot::svg_to_png(&svg, 900).expect("png"),
+    )
+    .expect("write the png");
     eprintln!("wrote {out} and {png}");
 }

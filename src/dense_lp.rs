@@ -138,3 +138,58 @@ pub fn max_margin(rows: &[Affine], cap: f64, tol: f64) -> Result<(Reactions, f64
     }
     Err(LpOutcome::Failed("iteration limit".into()))
 }
+
+/// The kinematic LP of [`crate::lp::kinematic`] (maximise `objective · λ` subject to
+/// Σ λ_j c_j = 0, `power · λ ≥ 0`, Σ λ = 1, λ ≥ 0) for small patterns, by enumerating the
+/// basic solutions of its five equality rows (power with a slack). Returns `None` when
+/// the enumeration does not apply (more than 12 rates, or rank-deficient rows: the
+/// caller then uses HiGHS); `Some(Err(Infeasible))` when no rates exist.
+pub fn kinematic(
+    columns: &[[f64; 3]],
+    power: &[f64],
+    objective: &[f64],
+    tol: f64,
+) -> Option<Result<Vec<f64>, LpOutcome>> {
+    use itertools::Itertools;
+    use nalgebra::{DMatrix, Matrix5, Vector5};
+    let n = columns.len();
+    if n == 0 || n > 12 {
+        return None;
+    }
+    // columns of the equality system: λ_j → (c_j, p_j, 1); slack t → (0, 0, 0, −1, 0)
+    let col = |j: usize| -> [f64; 5] {
+        if j < n {
+            [columns[j][0], columns[j][1], columns[j][2], power[j], 1.0]
+        } else {
+            [0.0, 0.0, 0.0, -1.0, 0.0]
+        }
+    };
+    let full = DMatrix::from_fn(5, n + 1, |r, c| col(c)[r]);
+    if full.rank(1e-10) < 5 {
+        return None;
+    }
+    let rhs = Vector5::new(0.0, 0.0, 0.0, 0.0, 1.0);
+    let mut best: Option<(f64, Vec<f64>)> = None;
+    for basis in (0..=n).combinations(5) {
+        let m = Matrix5::from_fn(|r, c| col(basis[c])[r]);
+        let lu = m.lu();
+        if lu.determinant().abs() < 1e-12 {
+            continue;
+        }
+        let Some(x) = lu.solve(&rhs) else { continue };
+        if x.iter().any(|&v| v < -tol) {
+            continue;
+        }
+        let mut lambda = vec![0.0; n];
+        for (k, &j) in basis.iter().enumerate() {
+            if j < n {
+                lambda[j] = x[k].max(0.0);
+            }
+        }
+        let value: f64 = lambda.iter().zip(objective).map(|(l, o)| l * o).sum();
+        if best.as_ref().is_none_or(|b| value > b.0 + 1e-14) {
+            best = Some((value, lambda));
+        }
+    }
+    Some(best.map(|b| b.1).ok_or(LpOutcome::Infeasible))
+}
