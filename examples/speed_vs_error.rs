@@ -49,7 +49,7 @@ fn grid_eta(arch: &Arch, mu: f64, n: usize) -> f64 {
             .collect();
         arch_enum::dense_lp::max_margin(&rows, arch.span(), 1e-13)
             .or_else(|_| arch_enum::lp::max_margin(&rows, arch.span(), 1e-10))
-            .map_or(false, |(_, s)| s >= 0.0)
+            .is_ok_and(|(_, s)| s >= 0.0)
     };
     let (mut lo, mut hi) = (0.0, 1.999);
     while hi - lo > 1e-13 * hi {
