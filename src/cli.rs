@@ -135,6 +135,19 @@ struct Output {
     width: u32,
 }
 
+/// The arch and the state a figure draws.
+#[derive(Args, Debug)]
+struct StateArgs {
+    #[command(flatten)]
+    arch: ArchArgs,
+    /// Friction coefficient mu > 0; `inf` for no sliding.
+    #[arg(long, allow_negative_numbers = true)]
+    mu: f64,
+    /// Thickness ratio to draw (default: eta*(mu)); above eta* the state of greatest margin is drawn.
+    #[arg(long, allow_negative_numbers = true)]
+    eta: Option<f64>,
+}
+
 #[derive(Subcommand, Debug)]
 enum Figure {
     /// The eta-mu limit curves of one or more symmetric openings in one figure.
@@ -157,26 +170,14 @@ enum Figure {
     )]
     Arch {
         #[command(flatten)]
-        arch: ArchArgs,
-        /// Friction coefficient mu > 0; `inf` for no sliding.
-        #[arg(long, allow_negative_numbers = true)]
-        mu: f64,
-        /// Thickness ratio to draw (default: eta*(mu)); above eta* the state of greatest margin is drawn.
-        #[arg(long, allow_negative_numbers = true)]
-        eta: Option<f64>,
+        state: StateArgs,
         #[command(flatten)]
         output: Output,
     },
     /// The eccentricities e_M = M/N and e_T = (T/N)/mu eta/2 against beta.
     Eccentricity {
         #[command(flatten)]
-        arch: ArchArgs,
-        /// Friction coefficient mu > 0; `inf` for no sliding.
-        #[arg(long, allow_negative_numbers = true)]
-        mu: f64,
-        /// Thickness ratio (default: eta*(mu)).
-        #[arg(long, allow_negative_numbers = true)]
-        eta: Option<f64>,
+        state: StateArgs,
         #[command(flatten)]
         output: Output,
     },
@@ -564,25 +565,15 @@ fn run_plot(figure: Figure, settings: &Settings, out: &mut dyn Write, err: &mut 
                 Err(e) => return bad_input(&e, false, out, err),
             }
         }
-        Figure::Arch {
-            arch,
-            mu,
-            eta,
-            output,
-        } => match plot_inputs(&arch, mu, eta) {
-            Ok(a) => ("arch", output, figures::arch(&a, mu, eta, settings)),
+        Figure::Arch { state: st, output } => match plot_inputs(&st) {
+            Ok(a) => ("arch", output, figures::arch(&a, st.mu, st.eta, settings)),
             Err(e) => return bad_input(&e, false, out, err),
         },
-        Figure::Eccentricity {
-            arch,
-            mu,
-            eta,
-            output,
-        } => match plot_inputs(&arch, mu, eta) {
+        Figure::Eccentricity { state: st, output } => match plot_inputs(&st) {
             Ok(a) => (
                 "eccentricity",
                 output,
-                figures::eccentricity(&a, mu, eta, settings),
+                figures::eccentricity(&a, st.mu, st.eta, settings),
             ),
             Err(e) => return bad_input(&e, false, out, err),
         },
@@ -652,10 +643,10 @@ fn run_plot(figure: Figure, settings: &Settings, out: &mut dyn Write, err: &mut 
     EXIT_OK
 }
 
-fn plot_inputs(arch: &ArchArgs, mu: f64, eta: Option<f64>) -> Result<Arch, InputError> {
-    let a = arch.build()?;
-    crate::arch::check_mu(mu)?;
-    if let Some(e) = eta {
+fn plot_inputs(st: &StateArgs) -> Result<Arch, InputError> {
+    let a = st.arch.build()?;
+    crate::arch::check_mu(st.mu)?;
+    if let Some(e) = st.eta {
         crate::arch::check_eta(e)?;
     }
     Ok(a)

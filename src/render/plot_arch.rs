@@ -149,13 +149,7 @@ pub fn svg(fig: &ArchFigure) -> Result<String, String> {
             .y_label_area_size(ylab)
             .build_cartesian_2d(x0..x1, y0..y1)
             .map_err(|e| e.to_string())?;
-        ch.configure_mesh()
-            .disable_mesh()
-            .x_desc("x / r")
-            .y_desc("y / r")
-            .label_style((FAMILY, 12))
-            .draw()
-            .map_err(|e| e.to_string())?;
+        axes(&mut ch)?;
         ch.draw_series(std::iter::once(Polygon::new(
             outline.clone(),
             RGBColor(225, 215, 195),
@@ -317,13 +311,7 @@ pub fn svg(fig: &ArchFigure) -> Result<String, String> {
                 .caption(format!("collapse mechanism: rigid blocks displaced by {} × the rates (linearised), {} dof", short_num(k), m.dof), (FAMILY, 14))
                 .build_cartesian_2d(u0..u1, w0..w1)
                 .map_err(|e| e.to_string())?;
-            ch2.configure_mesh()
-                .disable_mesh()
-                .x_desc("x / r")
-                .y_desc("y / r")
-                .label_style((FAMILY, 12))
-                .draw()
-                .map_err(|e| e.to_string())?;
+            axes(&mut ch2)?;
             let mut closed = outline.clone();
             closed.push(outline[0]);
             ch2.draw_series(DashedLineSeries::new(
@@ -360,4 +348,21 @@ pub fn svg(fig: &ArchFigure) -> Result<String, String> {
         root.present().map_err(|e| e.to_string())?;
     }
     Ok(buf)
+}
+
+type Chart<'a, 'b> = ChartContext<
+    'a,
+    SVGBackend<'b>,
+    Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
+>;
+
+/// The plain x/r, y/r axes of both panels (no grid: the drawing is to scale).
+fn axes(ch: &mut Chart<'_, '_>) -> Result<(), String> {
+    ch.configure_mesh()
+        .disable_mesh()
+        .x_desc("x / r")
+        .y_desc("y / r")
+        .label_style((FAMILY, 12))
+        .draw()
+        .map_err(|e| e.to_string())
 }
