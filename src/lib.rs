@@ -17,7 +17,8 @@
 //! | [`statics`] | §3 N, T, M, activation functions and exact derivatives |
 //! | [`scan`] | §3 maxima of φ over the continuum |
 //! | [`admissibility`] | §5 static LP by constraint generation |
-//! | [`lp`] | the only module using good_lp / HiGHS |
+//! | [`lp`] | the only module using good_lp / HiGHS (reference LP path) |
+//! | [`dense_lp`] | exact small LP solvers: the fast path of the static and kinematic LPs |
 //! | [`kinematics`] | §4 compatibility B and external power L_e |
 //! | [`mechanism`] | §4–5 kinematic LP, mechanism cone |
 //! | [`refine`] | §5 Newton on a pattern's square system |
@@ -27,7 +28,9 @@
 //! | [`mode`] | §5 collapse-mode names from the pattern |
 //! | [`curve`] | η*(μ) sampled over μ |
 //! | [`certificate`], [`verify`], [`interval`] | certificates and their independent re-check |
-//! | [`render`], [`cli`] | text and JSON output, the command line (thin layers) |
+//! | [`thrust_line`], [`margin_map`] | numerics for the pictures |
+//! | [`contact`], [`settings`] | vocabulary (contacts, locations) and every tolerance |
+//! | [`render`], [`cli`] | text, JSON and figures, the command line (thin layers) |
 //!
 //! ```
 //! use arch_enum::{Arch, WeightModel, Settings, solve, Outcome};

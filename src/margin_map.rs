@@ -10,7 +10,7 @@ use crate::settings::Settings;
 use crate::statics::JointMode;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-/// The margin at every (η, μ) of the grid, `result[i][j]` at (etas[i], mus[j]); NaN
+/// The margin at every (η, μ) of the grid, `result[i][j]` at (`etas[i]`, `mus[j]`); NaN
 /// where the LP failed. `progress(done, total)` is called after each cell.
 pub fn margin_map(
     arch: &Arch,

@@ -20,7 +20,7 @@ fn band_color(v: f64, vmax_pos: f64, vmax_neg: f64) -> RGBColor {
     }
 }
 
-/// Draws the map: `values[i][j]` at (etas[i], mus[j]) (centres of cells).
+/// Draws the map: `values[i][j]` at (`etas[i]`, `mus[j]`) (centres of cells).
 pub fn svg(
     label: &str,
     etas: &[f64],
