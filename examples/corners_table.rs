@@ -12,7 +12,7 @@
 
 use arch_enum::limit_curve::trace;
 use arch_enum::render::table::right_half_angle;
-use arch_enum::{Arch, JointMode, Settings, WeightModel};
+use arch_enum::{Arch, ContactKind, Settings, WeightModel};
 use std::f64::consts::PI;
 
 fn main() {
@@ -50,8 +50,8 @@ fn main() {
             println!(
                 "| {alpha:.6} | {mu} | {phi} | {:.8} | {} | {} | {} / {}{} |",
                 c.eta,
-                f(right_half_angle(&arch, &c.joints, |j| j.mode == JointMode::HingeIntrados)),
-                f(right_half_angle(&arch, &c.joints, |j| !j.mode.is_hinge())),
+                f(right_half_angle(&arch, &c.joints, |j| j.kind == ContactKind::HingeIntrados)),
+                f(right_half_angle(&arch, &c.joints, |j| !j.kind.is_hinge())),
                 c.between[0].name(),
                 c.between[1].name(),
                 if c.exact { "" } else { " (bracketed only)" }

@@ -8,7 +8,7 @@
 
 use arch_enum::limit_curve::trace;
 use arch_enum::render::{figures, plot::svg_to_png};
-use arch_enum::{Arch, Mode, Settings, WeightModel};
+use arch_enum::{Arch, CollapseMode, Settings, WeightModel};
 use std::f64::consts::PI;
 use std::path::Path;
 
@@ -39,7 +39,7 @@ fn main() {
         let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
         let curve = trace(&arch, &s);
         for b in &curve.branches {
-            if b.mode == Mode::PurelySliding {
+            if b.mode == CollapseMode::PurelySliding {
                 continue; // a single μ: its state is the corner with the lowest branch
             }
             let mu = if b.mu_max.is_finite() {

@@ -16,7 +16,7 @@ use arch_enum::admissibility::{max_margin, Goal, WorkingSet};
 use arch_enum::certificate::certify;
 use arch_enum::limit_curve::trace;
 use arch_enum::statics::{actions, Affine};
-use arch_enum::{solve, Arch, JointMode, Mode, Outcome, Settings, WeightModel};
+use arch_enum::{solve, Arch, CollapseMode, ContactKind, Outcome, Settings, WeightModel};
 use plotters::prelude::*;
 use std::f64::consts::PI;
 use std::time::Instant;
@@ -42,7 +42,7 @@ fn grid_eta(arch: &Arch, mu: f64, n: usize) -> f64 {
             .iter()
             .flat_map(|&beta| {
                 let act = actions(arch, eta, beta);
-                JointMode::active_at(mu)
+                ContactKind::active_at(mu)
                     .iter()
                     .map(move |&m| act.activation(m, 0, eta, mu))
             })
@@ -72,7 +72,7 @@ fn cg_eta(arch: &Arch, mu: f64, s: &Settings) -> f64 {
             arch,
             mid,
             mu,
-            JointMode::active_at(mu),
+            ContactKind::active_at(mu),
             &mut ws,
             Goal::Decide,
             s,
@@ -103,7 +103,7 @@ fn main() {
         for b in curve
             .branches
             .iter()
-            .filter(|b| b.mode != Mode::PurelySliding)
+            .filter(|b| b.mode != CollapseMode::PurelySliding)
         {
             let mu = if b.mu_max.is_finite() {
                 (b.mu_min * b.mu_max).sqrt()

@@ -6,11 +6,12 @@
 //! working set. Infeasibility on a subset of joints proves infeasibility for the arch.
 
 use crate::arch::{Arch, JointLayout, Radians};
+use crate::contact::ContactKind;
 use crate::dense_lp;
 use crate::lp::{self, LpOutcome};
 use crate::scan::State;
 use crate::settings::{LpBackend, Settings};
-use crate::statics::{actions, JointMode, Reactions};
+use crate::statics::{actions, Reactions};
 
 /// The result of the margin problem at one (η, μ).
 #[derive(Debug, Clone)]
@@ -77,7 +78,7 @@ impl WorkingSet {
 }
 
 /// ‖∇ₓφ‖ of `mode` at `beta`.
-pub fn grad_norm(arch: &Arch, eta: f64, mu: f64, mode: JointMode, beta: Radians) -> f64 {
+pub fn grad_norm(arch: &Arch, eta: f64, mu: f64, mode: ContactKind, beta: Radians) -> f64 {
     actions(arch, eta, beta)
         .activation(mode, 0, eta, mu)
         .grad_norm()
@@ -100,7 +101,7 @@ pub fn max_margin(
     arch: &Arch,
     eta: f64,
     mu: f64,
-    modes: &[JointMode],
+    modes: &[ContactKind],
     ws: &mut WorkingSet,
     goal: Goal,
     settings: &Settings,
@@ -130,8 +131,8 @@ pub fn max_margin(
         let mut margin = f64::INFINITY;
         let mut added = false;
         let mut worst: Vec<(f64, Radians)> = Vec::new();
-        for p in peaks.iter().filter(|p| modes.contains(&p.contact.mode)) {
-            let slack = -p.value / grad_norm(arch, eta, mu, p.contact.mode, p.contact.beta);
+        for p in peaks.iter().filter(|p| modes.contains(&p.contact.kind)) {
+            let slack = -p.value / grad_norm(arch, eta, mu, p.contact.kind, p.contact.beta);
             margin = margin.min(slack);
             if slack < s - tol {
                 worst.push((slack, p.contact.beta));

@@ -26,12 +26,13 @@
 //! is what the certificate states.
 
 use crate::arch::{Arch, JointLayout};
+use crate::contact::ContactKind;
 use crate::contact::{Contact, Location};
 use crate::friction::friction_limit;
 use crate::limit::{solve, Outcome};
 use crate::lp;
 use crate::settings::Settings;
-use crate::statics::{actions, Affine, JointMode, Reactions};
+use crate::statics::{actions, Affine, Reactions};
 use crate::verify::verify;
 use itertools::Itertools;
 use serde::{Deserialize, Serialize};
@@ -208,7 +209,7 @@ fn joints_of(contacts: &[Contact], y: &[f64]) -> Vec<CertJoint> {
         .zip(y)
         .map(|(c, &y)| CertJoint {
             beta: c.beta,
-            kind: c.mode.name().into(),
+            kind: c.kind.name().into(),
             y,
         })
         .collect()
@@ -228,7 +229,7 @@ fn find_farkas(
     for sub in pool.iter().copied().combinations(d + 1) {
         let rows: Vec<Affine> = sub
             .iter()
-            .map(|c| actions(arch, eta, c.beta).activation(c.mode, 0, eta, mu))
+            .map(|c| actions(arch, eta, c.beta).activation(c.kind, 0, eta, mu))
             .collect();
         if let Some((y, c)) = farkas_float(&rows, d) {
             let norm: f64 = y
@@ -311,7 +312,7 @@ fn certify_limit(
             .iter()
             .map(|c| PatternJoint {
                 beta: c.beta,
-                kind: c.mode.name().into(),
+                kind: c.kind.name().into(),
                 at: if c.at == Location::Springing {
                     "springing".into()
                 } else {
@@ -388,7 +389,7 @@ fn safe_state(
         .pattern
         .iter()
         .map(|c| {
-            let a = actions(arch, eta_hi, c.beta).activation(c.mode, 0, eta_hi, mu);
+            let a = actions(arch, eta_hi, c.beta).activation(c.kind, 0, eta_hi, mu);
             let at_x = a.at(&ls.x);
             Affine {
                 g: a.g,
@@ -403,7 +404,7 @@ fn safe_state(
     Some([ls.x[0] + d[0] / k, ls.x[1] + d[1] / k, ls.x[2] + d[2] / k])
 }
 
-/// Convenience: the `JointMode` of a kind name.
-pub fn mode_of(kind: &str) -> Option<JointMode> {
-    JointMode::ALL.into_iter().find(|m| m.name() == kind)
+/// Convenience: the `ContactKind` of a kind name.
+pub fn mode_of(kind: &str) -> Option<ContactKind> {
+    ContactKind::ALL.into_iter().find(|m| m.name() == kind)
 }

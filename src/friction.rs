@@ -10,15 +10,16 @@
 use crate::admissibility::WorkingSet;
 use crate::arch::Arch;
 use crate::contact::Contact;
+use crate::contact::ContactKind;
 use crate::limit::{bracket_root, candidates_at, margin_at};
 use crate::refine::{solve_system, Unknowns};
 use crate::scan::State;
 use crate::settings::Settings;
-use crate::statics::{JointMode, Reactions};
+use crate::statics::Reactions;
 use itertools::Itertools;
 
 /// The sliding activation functions.
-pub const SLIDES: [JointMode; 2] = [JointMode::SlidePlus, JointMode::SlideMinus];
+pub const SLIDES: [ContactKind; 2] = [ContactKind::SlidePlus, ContactKind::SlideMinus];
 
 /// The friction limit of an arch.
 #[derive(Debug, Clone)]

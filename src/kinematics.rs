@@ -7,19 +7,19 @@
 
 use crate::arch::{Arch, Radians};
 use crate::contact::Contact;
-use crate::statics::JointMode;
+use crate::contact::ContactKind;
 use std::f64::consts::PI;
 
 /// The contribution of one unit rate of `mode` at `beta` to (V_x(O), V_y(O), ψ) of
 /// everything after the joint (formulation §4): one column of B.
-pub fn column(mode: JointMode, beta: Radians, eta: f64) -> [f64; 3] {
+pub fn column(mode: ContactKind, beta: Radians, eta: f64) -> [f64; 3] {
     let (s, c) = beta.sin_cos();
     let (re, ri) = (1.0 + 0.5 * eta, 1.0 - 0.5 * eta);
     match mode {
-        JointMode::HingeExtrados => [-re * s, re * c, -1.0],
-        JointMode::HingeIntrados => [ri * s, -ri * c, 1.0],
-        JointMode::SlidePlus => [c, s, 0.0],
-        JointMode::SlideMinus => [-c, -s, 0.0],
+        ContactKind::HingeExtrados => [-re * s, re * c, -1.0],
+        ContactKind::HingeIntrados => [ri * s, -ri * c, 1.0],
+        ContactKind::SlidePlus => [c, s, 0.0],
+        ContactKind::SlideMinus => [-c, -s, 0.0],
     }
 }
 
@@ -42,7 +42,7 @@ pub fn power(arch: &Arch, eta: f64, contacts: &[Contact]) -> Vec<f64> {
     contacts
         .iter()
         .map(|c| {
-            let col = column(c.mode, c.beta, eta);
+            let col = column(c.kind, c.beta, eta);
             -blocks
                 .iter()
                 .filter(|(start, _, _)| *start >= c.beta)
@@ -56,7 +56,7 @@ pub fn power(arch: &Arch, eta: f64, contacts: &[Contact]) -> Vec<f64> {
 pub fn compatibility_residual(eta: f64, contacts: &[Contact], rates: &[f64]) -> [f64; 3] {
     let mut r = [0.0; 3];
     for (c, &l) in contacts.iter().zip(rates) {
-        let col = column(c.mode, c.beta, eta);
+        let col = column(c.kind, c.beta, eta);
         for i in 0..3 {
             r[i] += l * col[i];
         }
@@ -72,7 +72,7 @@ pub fn mirror_indices(contacts: &[Contact], tol: f64) -> Option<Vec<usize>> {
         .map(|c| {
             contacts
                 .iter()
-                .position(|d| d.mode == c.mode.mirrored() && (d.beta - (PI - c.beta)).abs() <= tol)
+                .position(|d| d.kind == c.kind.mirrored() && (d.beta - (PI - c.beta)).abs() <= tol)
         })
         .collect()
 }
@@ -94,7 +94,7 @@ pub fn block_motions(
             let mut v = [0.0; 3];
             for (c, &r) in contacts.iter().zip(rates) {
                 if c.beta <= w[0] {
-                    let col = column(c.mode, c.beta, eta);
+                    let col = column(c.kind, c.beta, eta);
                     for i in 0..3 {
                         v[i] += r * col[i];
                     }

@@ -14,15 +14,16 @@
 
 use crate::admissibility::{grad_norm, max_margin, Goal, Margin, WorkingSet};
 use crate::arch::{check_mu, Arch, InputError};
+use crate::collapse_mode::{classify, CollapseMode};
+use crate::contact::ContactKind;
 use crate::contact::{Contact, Peak};
 use crate::friction::least_friction;
 use crate::lp::LpOutcome;
 use crate::mechanism::{self, Mechanism};
-use crate::mode::{classify, Mode};
 use crate::refine::{solve_pattern, NewtonFailure, Refined};
 use crate::scan::State;
 use crate::settings::Settings;
-use crate::statics::{JointMode, Reactions};
+use crate::statics::Reactions;
 use itertools::Itertools;
 
 /// A verified limit state (incipient collapse) at friction μ.
@@ -41,7 +42,7 @@ pub struct LimitState {
     /// The active pattern: every contact with φ = 0 at this state, by increasing β.
     pub pattern: Vec<Contact>,
     /// The collapse mode named from the pattern.
-    pub mode: Mode,
+    pub mode: CollapseMode,
     /// A mechanism on the pattern.
     pub mechanism: Mechanism,
     /// Newton residual of the pattern's system (scaled).
@@ -116,7 +117,7 @@ pub(crate) fn margin_at(
     arch: &Arch,
     eta: f64,
     mu: f64,
-    modes: &[JointMode],
+    modes: &[ContactKind],
     ws: &mut WorkingSet,
     settings: &Settings,
 ) -> Result<Margin, String> {
@@ -202,7 +203,7 @@ pub fn solve(arch: &Arch, mu: f64, settings: &Settings) -> Result<Solution, Inpu
 }
 
 fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidate>) -> Outcome {
-    let modes = JointMode::active_at(mu);
+    let modes = ContactKind::active_at(mu);
     let mut ws = WorkingSet::initial(arch);
     let eta_max = 2.0 * (1.0 - 1e-9);
     let top = match margin_at(arch, eta_max, mu, modes, &mut ws, settings) {
@@ -326,7 +327,7 @@ pub(crate) fn candidates_at(
     eta: f64,
     x: &Reactions,
     margin: Option<f64>,
-    modes: &[JointMode],
+    modes: &[ContactKind],
     settings: &Settings,
 ) -> Vec<Contact> {
     let state = State {
@@ -339,10 +340,10 @@ pub(crate) fn candidates_at(
     let mut peaks: Vec<(f64, Peak)> = state
         .near_active(settings, f64::NEG_INFINITY)
         .into_iter()
-        .filter(|p| modes.contains(&p.contact.mode))
+        .filter(|p| modes.contains(&p.contact.kind))
         .map(|p| {
             (
-                -p.value / grad_norm(arch, eta, mu, p.contact.mode, p.contact.beta),
+                -p.value / grad_norm(arch, eta, mu, p.contact.kind, p.contact.beta),
                 p,
             )
         })
@@ -465,7 +466,7 @@ fn verify_group(
             mu,
             x: r.x,
         };
-        let verdict = st.verdict(JointMode::active_at(mu), settings);
+        let verdict = st.verdict(ContactKind::active_at(mu), settings);
         let worst = verdict.worst;
         if worst > settings.adm_tol {
             push(

@@ -17,20 +17,21 @@
 //!    asymptotically: its corner is at μ = ∞.
 
 use crate::arch::Arch;
+use crate::collapse_mode::{classify, CollapseMode};
+use crate::contact::ContactKind;
 use crate::contact::{Contact, Location};
 use crate::friction::{friction_limit, FrictionLimit};
 use crate::limit::{solve, LimitState, Outcome};
-use crate::mode::{classify, Mode};
 use crate::refine::{solve_system, Unknowns};
 use crate::scan::State;
 use crate::settings::Settings;
-use crate::statics::{internal_forces, JointMode, Reactions};
+use crate::statics::{internal_forces, Reactions};
 
 /// A branch of the limit curve: an interval of μ with one active pattern.
 #[derive(Debug, Clone)]
 pub struct Branch {
     /// Collapse mode of the pattern.
-    pub mode: Mode,
+    pub mode: CollapseMode,
     /// Lower end of the μ interval.
     pub mu_min: f64,
     /// Upper end (∞ for a branch that extends to infinite friction).
@@ -55,10 +56,10 @@ pub struct Corner {
     /// Every active contact at the corner, by increasing β.
     pub joints: Vec<Contact>,
     /// The modes of the branches it joins: [higher μ, lower μ].
-    pub between: [Mode; 2],
+    pub between: [CollapseMode; 2],
     /// The mode named from the corner's own active pattern (e.g.
     /// `rotational_sliding_shoulders` where a springing hinges and slides at once).
-    pub mode: Mode,
+    pub mode: CollapseMode,
     /// True when located by Newton and verified; false when only bracketed in μ.
     pub exact: bool,
     /// Scaled Newton residual (0 for a corner at infinity).
@@ -80,10 +81,10 @@ pub struct LimitCurve {
     pub solves: usize,
 }
 
-type Signature = Vec<(JointMode, Location)>;
+type Signature = Vec<(ContactKind, Location)>;
 
 fn signature(p: &[Contact]) -> Signature {
-    p.iter().map(|c| (c.mode, c.at)).collect()
+    p.iter().map(|c| (c.kind, c.at)).collect()
 }
 
 #[derive(Debug, Clone)]
@@ -120,7 +121,7 @@ impl Tracer<'_> {
         }
     }
 
-    fn mode_of(&self, p: &[Contact]) -> Mode {
+    fn mode_of(&self, p: &[Contact]) -> CollapseMode {
         classify(
             p,
             0.5 * (self.arch.beta_right() + self.arch.beta_left()),
@@ -136,13 +137,13 @@ impl Tracer<'_> {
         lower: &[Contact],
         start: (Reactions, f64, f64),
         mu_range: (f64, f64),
-        between: [Mode; 2],
+        between: [CollapseMode; 2],
     ) -> Option<Corner> {
         let mut union: Vec<Contact> = lower.to_vec();
         for c in upper {
             let dup = union
                 .iter()
-                .any(|d| d.mode == c.mode && d.at == c.at && (d.beta - c.beta).abs() < 0.05);
+                .any(|d| d.kind == c.kind && d.at == c.at && (d.beta - c.beta).abs() < 0.05);
             if !dup {
                 union.push(*c);
             }
@@ -168,7 +169,7 @@ impl Tracer<'_> {
             mu: r.mu,
             x: r.x,
         };
-        let v = st.verdict(JointMode::active_at(r.mu), s);
+        let v = st.verdict(ContactKind::active_at(r.mu), s);
         if v.worst > s.adm_tol {
             return None;
         }
@@ -223,7 +224,7 @@ impl Tracer<'_> {
 
 /// A corner known only to lie between samples `a` and `b` (reported with
 /// `exact: false`).
-fn bracketed(a: &Sample, b: &Sample, between: [Mode; 2]) -> Corner {
+fn bracketed(a: &Sample, b: &Sample, between: [CollapseMode; 2]) -> Corner {
     Corner {
         mu: (a.ls.mu * b.ls.mu).sqrt(),
         eta: 0.5 * (a.ls.eta + b.ls.eta),
@@ -334,7 +335,7 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
     }
     // the corner with the vertical purely-sliding branch
     if let Some(low) = samples.last() {
-        let between = [tr.mode_of(&low.ls.pattern), Mode::PurelySliding];
+        let between = [tr.mode_of(&low.ls.pattern), CollapseMode::PurelySliding];
         let start = (low.ls.x, low.ls.eta, low.ls.mu);
         let c = tr
             .corner_newton(
@@ -350,7 +351,7 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
                 x: low.ls.x,
                 joints: fl.pattern.clone(),
                 between,
-                mode: Mode::PurelySliding,
+                mode: CollapseMode::PurelySliding,
                 exact: false,
                 residual: f64::NAN,
             });
@@ -390,7 +391,7 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
     }
     if let Some(last) = finite_corners.last() {
         branches.push(Branch {
-            mode: Mode::PurelySliding,
+            mode: CollapseMode::PurelySliding,
             mu_min: fl.mu,
             mu_max: fl.mu,
             eta_min: last.eta,

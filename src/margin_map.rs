@@ -6,8 +6,8 @@
 
 use crate::admissibility::{max_margin, Goal, WorkingSet};
 use crate::arch::Arch;
+use crate::contact::ContactKind;
 use crate::settings::Settings;
-use crate::statics::JointMode;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// The margin at every (η, μ) of the grid, `result[i][j]` at (`etas[i]`, `mus[j]`); NaN
@@ -52,7 +52,7 @@ pub fn margin_map(
                                 arch,
                                 eta,
                                 mu,
-                                JointMode::active_at(mu),
+                                ContactKind::active_at(mu),
                                 &mut ws,
                                 Goal::Optimise,
                                 settings,

@@ -46,9 +46,9 @@ pub fn find(
     settings: &Settings,
 ) -> Result<Option<Mechanism>, LpOutcome> {
     let mut cs = contacts.to_vec();
-    cs.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.mode.cmp(&b.mode)));
+    cs.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.kind.cmp(&b.kind)));
     let n = cs.len();
-    let cols: Vec<[f64; 3]> = cs.iter().map(|c| column(c.mode, c.beta, eta)).collect();
+    let cols: Vec<[f64; 3]> = cs.iter().map(|c| column(c.kind, c.beta, eta)).collect();
     let p = power(arch, eta, &cs);
     let first = match kinematic_lp(&cols, &p, &vec![0.0; n], settings) {
         Ok(l) => l,
@@ -104,8 +104,8 @@ pub fn find(
     let mut dissipation = 0.0;
     for (c, &l) in cs.iter().zip(&rates) {
         let a = actions(arch, eta, c.beta);
-        complementarity += a.activation(c.mode, 0, eta, mu).at(x).abs() * l;
-        if !c.mode.is_hinge() {
+        complementarity += a.activation(c.kind, 0, eta, mu).at(x).abs() * l;
+        if !c.kind.is_hinge() {
             dissipation += mu * a.n[0].at(x) * l;
         }
     }

@@ -92,9 +92,9 @@ fn d_param(
     eta: f64,
     p_is_eta: bool,
 ) -> (f64, [f64; 3], f64) {
-    use crate::statics::JointMode::*;
+    use crate::contact::ContactKind::*;
     if p_is_eta {
-        if !c.mode.is_hinge() {
+        if !c.kind.is_hinge() {
             return (0.0, [0.0; 3], 0.0);
         }
         let d2 = -arch.weight().d2rho_deta2(eta) * {
@@ -105,18 +105,18 @@ fn d_param(
                 _ => -s,
             }
         };
-        let sign = if c.mode == HingeExtrados { 1.0 } else { -1.0 };
+        let sign = if c.kind == HingeExtrados { 1.0 } else { -1.0 };
         (
-            a.activation_d_eta(c.mode, order, x),
+            a.activation_d_eta(c.kind, order, x),
             a.n[order].g.map(|v| -0.5 * v),
             sign * d2,
         )
     } else {
-        if c.mode.is_hinge() {
+        if c.kind.is_hinge() {
             return (0.0, [0.0; 3], 0.0);
         }
         (
-            a.activation_d_mu(c.mode, order, x),
+            a.activation_d_mu(c.kind, order, x),
             a.n[order].g.map(|v| -v),
             0.0,
         )
@@ -194,8 +194,8 @@ impl System<'_> {
         let mut col_beta = self.col_beta();
         for (i, c) in cs.iter().enumerate() {
             let a = actions(self.arch, eta, c.beta);
-            let f0 = a.activation(c.mode, 0, eta, mu);
-            let f1 = a.activation(c.mode, 1, eta, mu);
+            let f0 = a.activation(c.kind, 0, eta, mu);
+            let f1 = a.activation(c.kind, 1, eta, mu);
             let row = f.len();
             f.push(f0.at(&x));
             if c.free {
@@ -225,7 +225,7 @@ impl System<'_> {
                 }
             }
             if c.free {
-                let f2 = a.activation(c.mode, 2, eta, mu);
+                let f2 = a.activation(c.kind, 2, eta, mu);
                 j[(row, col_beta)] = f1.at(&x);
                 for k in 0..3 {
                     j[(row + 1, k)] = f1.g[k];
@@ -444,7 +444,7 @@ fn initial_multipliers(sys: &System, x: &Reactions) -> Vec<f64> {
         let c = &sys.contacts[i];
         let act = actions(sys.arch, sys.eta, c.beta);
         if r < 3 {
-            act.activation(c.mode, 0, sys.eta, sys.mu).g[r]
+            act.activation(c.kind, 0, sys.eta, sys.mu).g[r]
         } else {
             d_param(sys.arch, &act, c, 0, x, sys.eta, is_eta).0
         }

@@ -8,9 +8,10 @@
 //! are evaluated directly.
 
 use crate::arch::{Arch, JointLayout, Radians};
+use crate::contact::ContactKind;
 use crate::contact::{Contact, Location, Peak};
 use crate::settings::Settings;
-use crate::statics::{actions, JointMode, Reactions};
+use crate::statics::{actions, Reactions};
 
 /// A state to scan: reactions x at thickness η and friction μ.
 #[derive(Debug, Clone, Copy)]
@@ -27,7 +28,7 @@ pub struct State<'a> {
 
 impl State<'_> {
     /// φ of `mode` and its first two β-derivatives at `beta`.
-    pub fn phi(&self, mode: JointMode, beta: Radians) -> [f64; 3] {
+    pub fn phi(&self, mode: ContactKind, beta: Radians) -> [f64; 3] {
         let a = actions(self.arch, self.eta, beta);
         [0, 1, 2].map(|k| a.activation(mode, k, self.eta, self.mu).at(&self.x))
     }
@@ -69,7 +70,7 @@ impl State<'_> {
     }
 
     fn discrete_peaks(&self, joints: &[Radians], all: bool) -> Vec<Peak> {
-        let modes = JointMode::active_at(self.mu);
+        let modes = ContactKind::active_at(self.mu);
         let mut values = vec![[0.0; 4]; joints.len()];
         for (j, &beta) in joints.iter().enumerate() {
             let a = actions(self.arch, self.eta, beta);
@@ -87,7 +88,7 @@ impl State<'_> {
                     out.push(Peak {
                         contact: Contact {
                             beta,
-                            mode,
+                            kind: mode,
                             at: self.location(beta),
                             free: false,
                         },
@@ -102,7 +103,7 @@ impl State<'_> {
     fn continuous_peaks(&self, settings: &Settings) -> Vec<Peak> {
         let (a, b) = (self.arch.beta_right(), self.arch.beta_left());
         let n = settings.scan_points.max(3);
-        let modes = JointMode::active_at(self.mu);
+        let modes = ContactKind::active_at(self.mu);
         // φ and dφ/dβ on the grid, per mode.
         let grid: Vec<Radians> = (0..n)
             .map(|i| {
@@ -128,7 +129,7 @@ impl State<'_> {
                 out.push(Peak {
                     contact: Contact {
                         beta,
-                        mode,
+                        kind: mode,
                         at,
                         free: at == Location::Interior,
                     },
@@ -158,7 +159,7 @@ impl State<'_> {
     /// Newton with the exact second derivative, safeguarded by bisection.
     fn refine_max(
         &self,
-        mode: JointMode,
+        mode: ContactKind,
         mut lo: Radians,
         mut hi: Radians,
         _flo: f64,
@@ -207,25 +208,25 @@ pub struct Verdict {
 impl State<'_> {
     /// Scans the state for the activation functions `modes`: its worst relative
     /// violation and its active contacts.
-    pub fn verdict(&self, modes: &[JointMode], settings: &Settings) -> Verdict {
-        let mag = |m: JointMode| {
+    pub fn verdict(&self, modes: &[ContactKind], settings: &Settings) -> Verdict {
+        let mag = |m: ContactKind| {
             crate::statics::magnitude(m, self.eta, self.mu, &self.x, settings.magnitude_floor)
         };
         let peaks: Vec<Peak> = self
             .peaks(settings)
             .into_iter()
-            .filter(|p| modes.contains(&p.contact.mode))
+            .filter(|p| modes.contains(&p.contact.kind))
             .collect();
         let worst = peaks
             .iter()
-            .map(|p| p.value / mag(p.contact.mode))
+            .map(|p| p.value / mag(p.contact.kind))
             .fold(f64::NEG_INFINITY, f64::max);
         let mut active: Vec<Contact> = peaks
             .iter()
-            .filter(|p| p.value >= -10.0 * settings.adm_tol * mag(p.contact.mode))
+            .filter(|p| p.value >= -10.0 * settings.adm_tol * mag(p.contact.kind))
             .map(|p| p.contact)
             .collect();
-        active.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.mode.cmp(&b.mode)));
+        active.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.kind.cmp(&b.kind)));
         Verdict { worst, active }
     }
 }

@@ -5,7 +5,7 @@
 //! Forces are divided by γ t d r and moments by γ t d r²; N is positive in compression.
 
 use crate::arch::{Arch, Radians};
-use serde::Serialize;
+use crate::contact::ContactKind;
 
 /// The redundant reactions x = (h, v, w) at the right springing.
 pub type Reactions = [f64; 3];
@@ -40,63 +40,6 @@ impl Affine {
     /// Euclidean norm of the gradient.
     pub fn grad_norm(&self) -> f64 {
         (self.g[0] * self.g[0] + self.g[1] * self.g[1] + self.g[2] * self.g[2]).sqrt()
-    }
-}
-
-/// The four activation functions of a joint (formulation §3), each ≤ 0 when admissible.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum JointMode {
-    /// φ_E = M − ηN/2: hinge at the extrados (rate ϑ⁺).
-    HingeExtrados,
-    /// φ_I = −M − ηN/2: hinge at the intrados (rate ϑ⁻).
-    HingeIntrados,
-    /// φ_S+ = T − μN: sliding in the positive sense (rate s⁺).
-    SlidePlus,
-    /// φ_S− = −T − μN: sliding in the negative sense (rate s⁻).
-    SlideMinus,
-}
-
-impl JointMode {
-    /// All four modes.
-    pub const ALL: [JointMode; 4] = [
-        JointMode::HingeExtrados,
-        JointMode::HingeIntrados,
-        JointMode::SlidePlus,
-        JointMode::SlideMinus,
-    ];
-    /// The hinge modes only (infinite friction).
-    pub const HINGES: [JointMode; 2] = [JointMode::HingeExtrados, JointMode::HingeIntrados];
-
-    /// The modes that can activate at friction μ (no sliding when μ = ∞).
-    pub fn active_at(mu: f64) -> &'static [JointMode] {
-        if mu.is_finite() {
-            &Self::ALL
-        } else {
-            &Self::HINGES
-        }
-    }
-    /// The name used in JSON and tables.
-    pub fn name(self) -> &'static str {
-        match self {
-            JointMode::HingeExtrados => "hinge_extrados",
-            JointMode::HingeIntrados => "hinge_intrados",
-            JointMode::SlidePlus => "slide_plus",
-            JointMode::SlideMinus => "slide_minus",
-        }
-    }
-    /// True for the two hinge modes.
-    pub fn is_hinge(self) -> bool {
-        matches!(self, JointMode::HingeExtrados | JointMode::HingeIntrados)
-    }
-    /// The mode of the mirror-image contact (β ↦ π − β): hinges keep their side,
-    /// sliding changes sense.
-    pub fn mirrored(self) -> JointMode {
-        match self {
-            JointMode::SlidePlus => JointMode::SlideMinus,
-            JointMode::SlideMinus => JointMode::SlidePlus,
-            m => m,
-        }
     }
 }
 
@@ -179,32 +122,32 @@ impl Actions {
     /// The activation function of `mode` (derivative `order` 0, 1 or 2 in β) as an
     /// affine function of x at thickness `eta` and friction `mu`.
     #[inline]
-    pub fn activation(&self, mode: JointMode, order: usize, eta: f64, mu: f64) -> Affine {
+    pub fn activation(&self, mode: ContactKind, order: usize, eta: f64, mu: f64) -> Affine {
         let (n, t, m) = (&self.n[order], &self.t[order], &self.m[order]);
         match mode {
-            JointMode::HingeExtrados => Affine::combine(1.0, m, -0.5 * eta, n),
-            JointMode::HingeIntrados => Affine::combine(-1.0, m, -0.5 * eta, n),
-            JointMode::SlidePlus => Affine::combine(1.0, t, -mu, n),
-            JointMode::SlideMinus => Affine::combine(-1.0, t, -mu, n),
+            ContactKind::HingeExtrados => Affine::combine(1.0, m, -0.5 * eta, n),
+            ContactKind::HingeIntrados => Affine::combine(-1.0, m, -0.5 * eta, n),
+            ContactKind::SlidePlus => Affine::combine(1.0, t, -mu, n),
+            ContactKind::SlideMinus => Affine::combine(-1.0, t, -mu, n),
         }
     }
 
     /// ∂/∂η of the activation function of `mode` (β-derivative `order`) at x.
     #[inline]
-    pub fn activation_d_eta(&self, mode: JointMode, order: usize, x: &Reactions) -> f64 {
+    pub fn activation_d_eta(&self, mode: ContactKind, order: usize, x: &Reactions) -> f64 {
         let n = self.n[order].at(x);
         match mode {
-            JointMode::HingeExtrados => -0.5 * n + self.dm_deta[order],
-            JointMode::HingeIntrados => -0.5 * n - self.dm_deta[order],
+            ContactKind::HingeExtrados => -0.5 * n + self.dm_deta[order],
+            ContactKind::HingeIntrados => -0.5 * n - self.dm_deta[order],
             _ => 0.0,
         }
     }
 
     /// ∂/∂μ of the activation function of `mode` (β-derivative `order`) at x.
     #[inline]
-    pub fn activation_d_mu(&self, mode: JointMode, order: usize, x: &Reactions) -> f64 {
+    pub fn activation_d_mu(&self, mode: ContactKind, order: usize, x: &Reactions) -> f64 {
         match mode {
-            JointMode::SlidePlus | JointMode::SlideMinus => -self.n[order].at(x),
+            ContactKind::SlidePlus | ContactKind::SlideMinus => -self.n[order].at(x),
             _ => 0.0,
         }
     }
@@ -220,7 +163,7 @@ pub fn internal_forces(arch: &Arch, eta: f64, x: &Reactions, beta: Radians) -> (
 /// to make tolerances relative (formulation §6): (1 + ‖x‖₁) times η for hinges and
 /// min(μ, 1) for sliding, neither below `floor` (which keeps tolerances above the
 /// rounding error of M, T, N, whose terms are of size ‖x‖).
-pub fn magnitude(mode: JointMode, eta: f64, mu: f64, x: &Reactions, floor: f64) -> f64 {
+pub fn magnitude(mode: ContactKind, eta: f64, mu: f64, x: &Reactions, floor: f64) -> f64 {
     let base = 1.0 + x.iter().map(|v| v.abs()).sum::<f64>();
     let factor = if mode.is_hinge() { eta } else { mu.min(1.0) };
     base * factor.max(floor)

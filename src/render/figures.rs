@@ -3,13 +3,13 @@
 
 use crate::admissibility::{max_margin, Goal, WorkingSet};
 use crate::arch::Arch;
+use crate::contact::ContactKind;
 use crate::limit::{solve, Outcome};
 use crate::limit_curve::trace;
 use crate::render::plot_curve::{curve_data, CurveData};
 use crate::render::{plot_arch, plot_curve, plot_ecc, plot_map};
 use crate::scan::State;
 use crate::settings::Settings;
-use crate::statics::JointMode;
 
 /// Why a figure could not be drawn (a result, not bad input).
 #[derive(Debug, Clone, PartialEq)]
@@ -103,7 +103,7 @@ fn state(arch: &Arch, mu: f64, eta: Option<f64>, settings: &Settings) -> Result<
                 arch,
                 e,
                 mu,
-                JointMode::active_at(mu),
+                ContactKind::active_at(mu),
                 &mut ws,
                 Goal::Optimise,
                 settings,

@@ -135,7 +135,7 @@ fn limit_parts(ls: &LimitState) -> (Vec<Contact>, Reactions, MechanismJson, Chec
                 .zip(&m.rates)
                 .map(|(c, &rate)| Rate {
                     beta: c.beta,
-                    kind: c.mode.name(),
+                    kind: c.kind.name(),
                     rate,
                 })
                 .collect(),

@@ -1,7 +1,7 @@
 //! Shared pieces of the figures: mode colours (the same in every figure), sizes, and
 //! SVG → PNG rendering in-process with the embedded DejaVu Sans font (no system fonts).
 
-use crate::mode::Mode;
+use crate::collapse_mode::CollapseMode;
 use plotters::style::RGBColor;
 
 /// The font embedded for PNG rendering (DejaVu Sans, see `assets/fonts/DejaVu-LICENSE.txt`).
@@ -11,15 +11,15 @@ pub const FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
 pub const FAMILY: &str = "DejaVu Sans";
 
 /// The colour of a collapse mode, identical across figures.
-pub fn mode_color(mode: Mode) -> RGBColor {
+pub fn mode_color(mode: CollapseMode) -> RGBColor {
     match mode {
-        Mode::PurelyRotational => RGBColor(31, 119, 180),
-        Mode::MixedSlidingRotational => RGBColor(255, 127, 14),
-        Mode::MixedRotationalSliding => RGBColor(44, 160, 44),
-        Mode::RotationalSlidingShoulders => RGBColor(148, 103, 189),
-        Mode::PurelySliding => RGBColor(214, 39, 40),
-        Mode::Overturning => RGBColor(140, 86, 75),
-        Mode::MixedInterleaved => RGBColor(127, 127, 127),
+        CollapseMode::PurelyRotational => RGBColor(31, 119, 180),
+        CollapseMode::MixedSlidingRotational => RGBColor(255, 127, 14),
+        CollapseMode::MixedRotationalSliding => RGBColor(44, 160, 44),
+        CollapseMode::RotationalSlidingShoulders => RGBColor(148, 103, 189),
+        CollapseMode::PurelySliding => RGBColor(214, 39, 40),
+        CollapseMode::Overturning => RGBColor(140, 86, 75),
+        CollapseMode::MixedInterleaved => RGBColor(127, 127, 127),
     }
 }
 

@@ -3,12 +3,13 @@
 //! (linearised kinematics, displacements magnified by a stated factor), with a caption.
 
 use crate::arch::{Arch, JointLayout};
+use crate::collapse_mode::CollapseMode;
 use crate::contact::Contact;
+use crate::contact::ContactKind;
 use crate::kinematics::block_motions;
 use crate::mechanism::Mechanism;
-use crate::mode::Mode;
 use crate::render::plot::{mode_color, short_num, FAMILY};
-use crate::statics::{JointMode, Reactions};
+use crate::statics::Reactions;
 use crate::thrust_line::eccentricities;
 use plotters::prelude::*;
 
@@ -28,7 +29,7 @@ pub struct ArchFigure<'a> {
     /// The mechanism, at a limit state.
     pub mechanism: Option<&'a Mechanism>,
     /// The collapse mode, at a limit state; `None` draws a safe state.
-    pub mode: Option<Mode>,
+    pub mode: Option<CollapseMode>,
 }
 
 const W: u32 = 960;
@@ -51,12 +52,12 @@ fn block_outline(eta: f64, a: f64, b: f64) -> Vec<(f64, f64)> {
     p
 }
 
-fn short(mode: JointMode) -> &'static str {
+fn short(mode: ContactKind) -> &'static str {
     match mode {
-        JointMode::HingeExtrados => "E",
-        JointMode::HingeIntrados => "I",
-        JointMode::SlidePlus => "S+",
-        JointMode::SlideMinus => "S−",
+        ContactKind::HingeExtrados => "E",
+        ContactKind::HingeIntrados => "I",
+        ContactKind::SlidePlus => "S+",
+        ContactKind::SlideMinus => "S−",
     }
 }
 
@@ -118,7 +119,7 @@ pub fn svg(fig: &ArchFigure) -> Result<String, String> {
         let joints: Vec<String> = fig
             .pattern
             .iter()
-            .map(|c| format!("{} {:.3}°", short(c.mode), c.beta.to_degrees()))
+            .map(|c| format!("{} {:.3}°", short(c.kind), c.beta.to_degrees()))
             .collect();
         cap.draw(&Text::new(
             format!(
@@ -207,9 +208,9 @@ pub fn svg(fig: &ArchFigure) -> Result<String, String> {
                 color.stroke_width(3),
             )))
             .map_err(|e| e.to_string())?;
-            match c.mode {
-                JointMode::HingeExtrados | JointMode::HingeIntrados => {
-                    let r = if c.mode == JointMode::HingeExtrados {
+            match c.kind {
+                ContactKind::HingeExtrados | ContactKind::HingeIntrados => {
+                    let r = if c.kind == ContactKind::HingeExtrados {
                         re
                     } else {
                         ri
@@ -221,9 +222,9 @@ pub fn svg(fig: &ArchFigure) -> Result<String, String> {
                     )))
                     .map_err(|e| e.to_string())?;
                 }
-                JointMode::SlidePlus | JointMode::SlideMinus => {
+                ContactKind::SlidePlus | ContactKind::SlideMinus => {
                     // relative motion of the block on the crown side of the joint
-                    let after = if c.mode == JointMode::SlidePlus {
+                    let after = if c.kind == ContactKind::SlidePlus {
                         1.0
                     } else {
                         -1.0

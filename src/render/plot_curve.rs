@@ -3,8 +3,8 @@
 //! marked and labelled (μ, η), friction angles on the μ labels, the asymptote of an
 //! overturning branch dashed.
 
+use crate::collapse_mode::CollapseMode;
 use crate::limit_curve::LimitCurve;
-use crate::mode::Mode;
 use crate::render::plot::{mode_color, mu_label, short_num, FAMILY};
 use plotters::prelude::*;
 
@@ -14,7 +14,7 @@ pub struct CurveData {
     /// Legend label of the arch (e.g. "α = 0").
     pub label: String,
     /// The branches: mode and points (μ, η) by decreasing μ.
-    pub branches: Vec<(Mode, Vec<(f64, f64)>)>,
+    pub branches: Vec<(CollapseMode, Vec<(f64, f64)>)>,
     /// Finite corners (μ, η).
     pub corners: Vec<(f64, f64)>,
     /// η of the asymptote at μ = ∞ when the top branch only approaches it.
@@ -35,7 +35,7 @@ pub fn curve_data(
     let mu_ms = curve.mu_min?;
     let mut branches = Vec::new();
     for b in &curve.branches {
-        if b.mode == Mode::PurelySliding {
+        if b.mode == CollapseMode::PurelySliding {
             continue;
         }
         let hi = b.mu_max.min(mu_cap);
@@ -125,7 +125,7 @@ pub fn svg(data: &[CurveData], title: &str) -> Result<String, String> {
                 RGBColor(214, 39, 40).mix(0.07).filled(),
             )))
             .map_err(|e| e.to_string())?;
-        let mut legend_modes: Vec<Mode> = Vec::new();
+        let mut legend_modes: Vec<CollapseMode> = Vec::new();
         for d in data {
             // the whole curve as one polyline (decreasing μ), then the vertical branch
             let mut outline: Vec<(f64, f64)> = d
@@ -162,21 +162,21 @@ pub fn svg(data: &[CurveData], title: &str) -> Result<String, String> {
                 }
             }
             // vertical purely-sliding branch
-            let color = mode_color(Mode::PurelySliding);
+            let color = mode_color(CollapseMode::PurelySliding);
             chart
                 .draw_series(LineSeries::new(
                     [(d.mu_ms, eta_ms), (d.mu_ms, eta_hi)],
                     color.stroke_width(3),
                 ))
                 .map_err(|e| e.to_string())?;
-            if !legend_modes.contains(&Mode::PurelySliding) {
-                legend_modes.push(Mode::PurelySliding);
+            if !legend_modes.contains(&CollapseMode::PurelySliding) {
+                legend_modes.push(CollapseMode::PurelySliding);
             }
-            if d.asymptote.is_some() && !legend_modes.contains(&Mode::Overturning) {
-                legend_modes.push(Mode::Overturning);
+            if d.asymptote.is_some() && !legend_modes.contains(&CollapseMode::Overturning) {
+                legend_modes.push(CollapseMode::Overturning);
             }
             if let Some(eta_inf) = d.asymptote {
-                let color = mode_color(Mode::Overturning);
+                let color = mode_color(CollapseMode::Overturning);
                 chart
                     .draw_series(DashedLineSeries::new(
                         [(mu_lo, eta_inf), (mu_hi, eta_inf)],

@@ -3,10 +3,11 @@
 //! and the active joints marked.
 
 use crate::arch::Arch;
+use crate::collapse_mode::CollapseMode;
 use crate::contact::Contact;
-use crate::mode::Mode;
+use crate::contact::ContactKind;
 use crate::render::plot::{mode_color, short_num, FAMILY};
-use crate::statics::{JointMode, Reactions};
+use crate::statics::Reactions;
 use crate::thrust_line::eccentricities;
 use plotters::prelude::*;
 
@@ -17,7 +18,7 @@ pub fn svg(
     mu: f64,
     x: &Reactions,
     pattern: &[Contact],
-    mode: Option<Mode>,
+    mode: Option<CollapseMode>,
 ) -> Result<String, String> {
     let ecc = eccentricities(arch, eta, mu, x, 800);
     let (b0, b1) = (
@@ -104,11 +105,11 @@ pub fn svg(
         }
         for c in pattern {
             let b = c.beta.to_degrees();
-            let (y, shape_tri) = match c.mode {
-                JointMode::HingeExtrados => (eta / 2.0, false),
-                JointMode::HingeIntrados => (-eta / 2.0, false),
-                JointMode::SlidePlus => (eta / 2.0, true),
-                JointMode::SlideMinus => (-eta / 2.0, true),
+            let (y, shape_tri) = match c.kind {
+                ContactKind::HingeExtrados => (eta / 2.0, false),
+                ContactKind::HingeIntrados => (-eta / 2.0, false),
+                ContactKind::SlidePlus => (eta / 2.0, true),
+                ContactKind::SlideMinus => (-eta / 2.0, true),
             };
             if shape_tri {
                 ch.draw_series(std::iter::once(TriangleMarker::new(

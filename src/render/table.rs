@@ -77,7 +77,7 @@ pub fn pattern_table(arch: &Arch, pattern: &[Contact], rates: Option<&[f64]>) ->
             c.beta,
             c.beta.to_degrees(),
             (c.beta - mid).to_degrees(),
-            c.mode.name(),
+            c.kind.name(),
             match c.at {
                 crate::contact::Location::Springing => "springing",
                 crate::contact::Location::Interior => "interior",
@@ -185,11 +185,11 @@ pub fn solve(sol: &Solution, explain: bool) -> String {
 }
 
 fn short(c: &Contact) -> &'static str {
-    match c.mode {
-        crate::statics::JointMode::HingeExtrados => "E",
-        crate::statics::JointMode::HingeIntrados => "I",
-        crate::statics::JointMode::SlidePlus => "S+",
-        crate::statics::JointMode::SlideMinus => "S-",
+    match c.kind {
+        crate::contact::ContactKind::HingeExtrados => "E",
+        crate::contact::ContactKind::HingeIntrados => "I",
+        crate::contact::ContactKind::SlidePlus => "S+",
+        crate::contact::ContactKind::SlideMinus => "S-",
     }
 }
 
@@ -288,7 +288,7 @@ pub fn right_half_angle(
 
 /// The human-readable answer of `modes`: branches and corners, as in a paper.
 pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
-    use crate::statics::JointMode;
+    use crate::contact::ContactKind;
     let mut s = String::new();
     let _ = writeln!(s, "{}", describe_arch(arch));
     match curve.mu_min {
@@ -350,8 +350,8 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
         "mu", "phi [deg]", "eta", "beta_N [rad]", "beta_T [rad]", "between"
     );
     for c in &curve.corners {
-        let bn = right_half_angle(arch, &c.joints, |c| c.mode == JointMode::HingeIntrados);
-        let bt = right_half_angle(arch, &c.joints, |c| !c.mode.is_hinge());
+        let bn = right_half_angle(arch, &c.joints, |c| c.kind == ContactKind::HingeIntrados);
+        let bt = right_half_angle(arch, &c.joints, |c| !c.kind.is_hinge());
         let f = |v: Option<f64>| v.map_or("-".to_string(), |b| format!("{b:.10}"));
         let _ = writeln!(
             s,

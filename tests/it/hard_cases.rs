@@ -2,7 +2,7 @@
 //! Each must give a verified limit state or an honest outcome — never a panic.
 
 use crate::invariants::check_limit_state;
-use arch_enum::{solve, Arch, LimitState, Mode, Outcome, Settings, WeightModel};
+use arch_enum::{solve, Arch, CollapseMode, LimitState, Outcome, Settings, WeightModel};
 use std::f64::consts::PI;
 
 fn outcome(arch: &Arch, mu: f64) -> Outcome {
@@ -26,7 +26,7 @@ fn very_shallow_segment() {
     let arch = Arch::symmetric(-1.5, WeightModel::Centreline).unwrap();
     let ls = limit(&arch, f64::INFINITY);
     assert!(ls.eta > 0.0 && ls.eta < 1e-6, "{}", ls.eta);
-    assert_eq!(ls.mode, Mode::PurelyRotational);
+    assert_eq!(ls.mode, CollapseMode::PurelyRotational);
     assert_eq!(ls.pattern.len(), 5, "{:?}", ls.pattern);
 }
 
@@ -36,7 +36,7 @@ fn very_shallow_segment() {
 fn overturning_horseshoe() {
     let arch = Arch::symmetric(1.15, WeightModel::Centreline).unwrap();
     let ls = limit(&arch, f64::INFINITY);
-    assert_eq!(ls.mode, Mode::Overturning);
+    assert_eq!(ls.mode, CollapseMode::Overturning);
     let crown: Vec<_> = ls
         .pattern
         .iter()
@@ -168,5 +168,5 @@ fn nearly_the_largest_opening() {
     let arch = Arch::symmetric(1.21, WeightModel::Centreline).unwrap();
     let ls = limit(&arch, f64::INFINITY);
     assert!(ls.eta > 1.9 && ls.eta < 2.0, "{}", ls.eta);
-    assert_eq!(ls.mode, Mode::Overturning);
+    assert_eq!(ls.mode, CollapseMode::Overturning);
 }

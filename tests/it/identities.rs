@@ -6,7 +6,7 @@
 use arch_enum::contact::{Contact, Location};
 use arch_enum::kinematics::{column, power};
 use arch_enum::statics::actions;
-use arch_enum::{Arch, JointMode, WeightModel};
+use arch_enum::{Arch, ContactKind, WeightModel};
 use nalgebra::DMatrix;
 use proptest::prelude::*;
 
@@ -29,7 +29,7 @@ proptest! {
         let arch = Arch::symmetric(alpha, weight(centroid)).unwrap();
         let beta = arch.beta_right() + t * arch.span();
         let x = [h, v, w];
-        let mode = JointMode::ALL[k];
+        let mode = ContactKind::ALL[k];
         let phi = |b: f64, e: f64, order: usize| actions(&arch, e, b).activation(mode, order, e, mu).at(&x);
         let d = 1e-5;
         for order in 0..2 {
@@ -52,13 +52,13 @@ proptest! {
         let x = [h, v, w];
         let contacts: Vec<Contact> = ts.iter().zip(&ks).map(|(&t, &k)| Contact {
             beta: arch.beta_right() + t * arch.span(),
-            mode: JointMode::ALL[k],
+            kind: ContactKind::ALL[k],
             at: Location::Interior,
             free: false,
         }).collect();
         // a compatible lambda: the null vector of the first four columns of B, by
         // cofactors (any sign: the identity is linear), zero on the other contacts
-        let b = DMatrix::from_fn(3, contacts.len(), |r, c| column(contacts[c].mode, contacts[c].beta, eta)[r]);
+        let b = DMatrix::from_fn(3, contacts.len(), |r, c| column(contacts[c].kind, contacts[c].beta, eta)[r]);
         let mut lambda = vec![0.0; contacts.len()];
         for (i, l) in lambda.iter_mut().enumerate().take(4) {
             let cols: Vec<usize> = (0..4).filter(|&j| j != i).collect();
@@ -73,8 +73,8 @@ proptest! {
         let mut diss = 0.0;
         for (c, &l) in contacts.iter().zip(&lambda) {
             let a = actions(&arch, eta, c.beta);
-            phi_l += a.activation(c.mode, 0, eta, mu).at(&x) * l;
-            if !c.mode.is_hinge() {
+            phi_l += a.activation(c.kind, 0, eta, mu).at(&x) * l;
+            if !c.kind.is_hinge() {
                 diss += mu * a.n[0].at(&x) * l;
             }
         }
@@ -100,7 +100,7 @@ proptest! {
             let t = (rng >> 11) as f64 / (1u64 << 53) as f64;
             let beta = arch.beta_right() + t * arch.span();
             let a = actions(&arch, eta, beta);
-            for m in JointMode::ALL {
+            for m in ContactKind::ALL {
                 rows.push(a.activation(m, 0, eta, mu));
             }
         }

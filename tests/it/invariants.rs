@@ -24,7 +24,7 @@ pub fn check_limit_state(arch: &Arch, ls: &LimitState) {
     let scale = crate::model::scale(ls);
     for c in &ls.pattern {
         let p = crate::model::phis(arch.beta_right(), rho, ls.eta, ls.mu, ls.x, c.beta);
-        let k = c.mode as usize;
+        let k = c.kind as usize;
         assert!(
             p[k].abs() <= 1e-9 * scale,
             "contact {c:?} not active: {}",
@@ -37,7 +37,7 @@ pub fn check_limit_state(arch: &Arch, ls: &LimitState) {
     assert!((m.rates.iter().sum::<f64>() - 1.0).abs() < 1e-12);
     let mut b = [0.0; 3];
     for (c, &r) in m.contacts.iter().zip(&m.rates) {
-        let col = column(c.mode, c.beta, ls.eta);
+        let col = column(c.kind, c.beta, ls.eta);
         for i in 0..3 {
             b[i] += r * col[i];
         }
@@ -53,7 +53,7 @@ pub fn check_limit_state(arch: &Arch, ls: &LimitState) {
         .contacts
         .iter()
         .zip(&m.rates)
-        .filter(|(c, _)| !c.mode.is_hinge())
+        .filter(|(c, _)| !c.kind.is_hinge())
         .map(|(c, &r)| ls.mu * ntm(arch.beta_right(), rho, ls.x, c.beta).0 * r)
         .sum();
     assert!(
@@ -150,8 +150,8 @@ fn mirror_map_of_sliding() {
         panic!()
     };
     assert!(ls.mechanism.symmetric);
-    let slides: Vec<_> = ls.pattern.iter().filter(|c| !c.mode.is_hinge()).collect();
+    let slides: Vec<_> = ls.pattern.iter().filter(|c| !c.kind.is_hinge()).collect();
     assert_eq!(slides.len(), 2);
-    assert_eq!(slides[0].mode, slides[1].mode.mirrored());
+    assert_eq!(slides[0].kind, slides[1].kind.mirrored());
     assert!((slides[0].beta + slides[1].beta - PI).abs() < 1e-12);
 }

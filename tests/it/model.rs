@@ -57,8 +57,8 @@ pub fn max_rel_violation(arch: &Arch, ls: &LimitState, n: usize) -> f64 {
 }
 
 /// B-matrix column of a contact (formulation §4), written out again.
-pub fn column(kind: arch_enum::JointMode, beta: f64, eta: f64) -> [f64; 3] {
-    use arch_enum::JointMode::*;
+pub fn column(kind: arch_enum::ContactKind, beta: f64, eta: f64) -> [f64; 3] {
+    use arch_enum::ContactKind::*;
     let (s, c) = (beta.sin(), beta.cos());
     match kind {
         HingeExtrados => [-(1.0 + eta / 2.0) * s, (1.0 + eta / 2.0) * c, -1.0],

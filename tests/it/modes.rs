@@ -4,7 +4,7 @@
 
 use crate::cli::{json_of, round};
 use arch_enum::limit_curve::{trace, LimitCurve};
-use arch_enum::{Arch, JointMode, Location, Mode, Settings, WeightModel};
+use arch_enum::{Arch, CollapseMode, ContactKind, Location, Settings, WeightModel};
 use std::f64::consts::PI;
 
 fn curve(alpha: f64) -> LimitCurve {
@@ -29,8 +29,8 @@ fn right_interior(c: &arch_enum::limit_curve::Corner, slide: bool) -> f64 {
         .find(|j| {
             j.at == Location::Interior
                 && j.beta < PI / 2.0 - 1e-9
-                && j.mode.is_hinge() != slide
-                && (slide || j.mode == JointMode::HingeIntrados)
+                && j.kind.is_hinge() != slide
+                && (slide || j.kind == ContactKind::HingeIntrados)
         })
         .unwrap_or_else(|| panic!("no joint in {:?}", c.joints))
         .beta
@@ -66,13 +66,13 @@ fn published_corners() {
         assert_digits("eta_ms", ms.eta, eta_ms, 8);
         assert_digits("beta_N at mu_ms", right_interior(ms, false), bn_ms, 8);
         assert_digits("beta_T at mu_ms", right_interior(ms, true), bt_ms, 8);
-        let modes: Vec<Mode> = c.branches.iter().map(|b| b.mode).collect();
+        let modes: Vec<CollapseMode> = c.branches.iter().map(|b| b.mode).collect();
         assert_eq!(
             modes,
             [
-                Mode::PurelyRotational,
-                Mode::MixedSlidingRotational,
-                Mode::PurelySliding
+                CollapseMode::PurelyRotational,
+                CollapseMode::MixedSlidingRotational,
+                CollapseMode::PurelySliding
             ]
         );
         assert!(c.branches[0].mu_max.is_infinite());
@@ -86,13 +86,13 @@ fn published_corners() {
 #[test]
 fn alpha_one_mixed_rotational_sliding() {
     let c = curve(1.0);
-    let modes: Vec<Mode> = c.branches.iter().map(|b| b.mode).collect();
+    let modes: Vec<CollapseMode> = c.branches.iter().map(|b| b.mode).collect();
     assert_eq!(
         modes,
         [
-            Mode::PurelyRotational,
-            Mode::MixedRotationalSliding,
-            Mode::PurelySliding
+            CollapseMode::PurelyRotational,
+            CollapseMode::MixedRotationalSliding,
+            CollapseMode::PurelySliding
         ]
     );
     let rm = &c.corners[0];
@@ -111,16 +111,19 @@ fn alpha_one_mixed_rotational_sliding() {
 #[test]
 fn alpha_1_15_overturning_asymptote() {
     let c = curve(1.15);
-    assert!(c.branches.iter().all(|b| b.mode != Mode::PurelyRotational));
+    assert!(c
+        .branches
+        .iter()
+        .all(|b| b.mode != CollapseMode::PurelyRotational));
     let top = &c.corners[0];
     assert!(top.mu.is_infinite());
-    assert_eq!(top.between[1], Mode::Overturning);
+    assert_eq!(top.between[1], CollapseMode::Overturning);
     assert!(c.branches[0].mu_max.is_infinite());
     assert!((c.branches[0].eta_min - top.eta).abs() < 1e-15);
     let last = c.corners.last().unwrap();
     assert!(last.exact);
-    assert_eq!(last.mode, Mode::RotationalSlidingShoulders);
-    assert_eq!(last.between[1], Mode::PurelySliding);
+    assert_eq!(last.mode, CollapseMode::RotationalSlidingShoulders);
+    assert_eq!(last.between[1], CollapseMode::PurelySliding);
 }
 
 fn snapshot(name: &str, args: &[&str]) {

@@ -3,7 +3,7 @@
 
 use arch_enum::render::figures;
 use arch_enum::render::plot::{mode_color, svg_to_png};
-use arch_enum::{Arch, Mode, Settings, WeightModel};
+use arch_enum::{Arch, CollapseMode, Settings, WeightModel};
 use assert_cmd::Command;
 
 fn parse(svg: &str) -> roxmltree::Document<'_> {
@@ -36,8 +36,8 @@ fn curve_figure_has_one_path_per_branch_and_a_marker_per_corner() {
         .filter(|n| n.has_tag_name("polyline") && n.attribute("stroke-width") == Some("3"))
         .collect();
     for (mode, expected) in [
-        (Mode::PurelyRotational, 1),
-        (Mode::MixedSlidingRotational, 2),
+        (CollapseMode::PurelyRotational, 1),
+        (CollapseMode::MixedSlidingRotational, 2),
     ] {
         let n = thick
             .iter()
@@ -62,7 +62,7 @@ fn arch_figure_draws_the_mechanism_blocks() {
     let s = Settings::default();
     let svg = figures::arch(&semicircle(), 0.35, None, &s).unwrap();
     let doc = parse(&svg);
-    let color = hex(mode_color(Mode::MixedSlidingRotational));
+    let color = hex(mode_color(CollapseMode::MixedSlidingRotational));
     let blocks = doc
         .descendants()
         .filter(|n| {

@@ -4,7 +4,7 @@
 //! half a unit in the last printed place.
 
 use arch_enum::{
-    least_friction, solve, Arch, JointMode, LimitState, Outcome, Settings, WeightModel,
+    least_friction, solve, Arch, ContactKind, LimitState, Outcome, Settings, WeightModel,
 };
 use std::f64::consts::PI;
 
@@ -28,7 +28,7 @@ fn assert_digits(what: &str, value: f64, printed: f64, digits: i32) {
 fn intrados_hinges(ls: &LimitState) -> Vec<f64> {
     ls.pattern
         .iter()
-        .filter(|c| c.mode == JointMode::HingeIntrados)
+        .filter(|c| c.kind == ContactKind::HingeIntrados)
         .map(|c| c.beta)
         .collect()
 }

@@ -18,7 +18,7 @@ use serde::Serialize;
 /// The collapse mode of a pattern.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 #[serde(rename_all = "snake_case")]
-pub enum Mode {
+pub enum CollapseMode {
     /// Hinges only (Couplet–Heyman).
     PurelyRotational,
     /// Hinges and sliding, with rotation at the crown.
@@ -35,44 +35,44 @@ pub enum Mode {
     MixedInterleaved,
 }
 
-impl Mode {
+impl CollapseMode {
     /// The name used in JSON and tables.
     pub fn name(self) -> &'static str {
         match self {
-            Mode::PurelyRotational => "purely_rotational",
-            Mode::MixedSlidingRotational => "mixed_sliding_rotational",
-            Mode::MixedRotationalSliding => "mixed_rotational_sliding",
-            Mode::RotationalSlidingShoulders => "rotational_sliding_shoulders",
-            Mode::PurelySliding => "purely_sliding",
-            Mode::Overturning => "overturning",
-            Mode::MixedInterleaved => "mixed_interleaved",
+            CollapseMode::PurelyRotational => "purely_rotational",
+            CollapseMode::MixedSlidingRotational => "mixed_sliding_rotational",
+            CollapseMode::MixedRotationalSliding => "mixed_rotational_sliding",
+            CollapseMode::RotationalSlidingShoulders => "rotational_sliding_shoulders",
+            CollapseMode::PurelySliding => "purely_sliding",
+            CollapseMode::Overturning => "overturning",
+            CollapseMode::MixedInterleaved => "mixed_interleaved",
         }
     }
     /// True for the names fixed by the command-line contract.
     pub fn is_standard(self) -> bool {
-        self != Mode::MixedInterleaved
+        self != CollapseMode::MixedInterleaved
     }
 }
 
 /// Names the mode of `pattern` (see the module documentation for the rules).
 /// `same_joint` is the angle tolerance under which two contacts share a joint.
-pub fn classify(pattern: &[Contact], beta_mid: f64, same_joint: f64) -> Mode {
-    let hinges: Vec<&Contact> = pattern.iter().filter(|c| c.mode.is_hinge()).collect();
-    let slides: Vec<&Contact> = pattern.iter().filter(|c| !c.mode.is_hinge()).collect();
+pub fn classify(pattern: &[Contact], beta_mid: f64, same_joint: f64) -> CollapseMode {
+    let hinges: Vec<&Contact> = pattern.iter().filter(|c| c.kind.is_hinge()).collect();
+    let slides: Vec<&Contact> = pattern.iter().filter(|c| !c.kind.is_hinge()).collect();
     let detached = hinges.iter().any(|a| {
         hinges
             .iter()
-            .any(|b| a.mode != b.mode && (a.beta - b.beta).abs() <= same_joint)
+            .any(|b| a.kind != b.kind && (a.beta - b.beta).abs() <= same_joint)
     });
     if slides.is_empty() {
         return if detached {
-            Mode::Overturning
+            CollapseMode::Overturning
         } else {
-            Mode::PurelyRotational
+            CollapseMode::PurelyRotational
         };
     }
     if hinges.is_empty() {
-        return Mode::PurelySliding;
+        return CollapseMode::PurelySliding;
     }
     let shoulder_both = hinges.iter().any(|h| {
         h.at == Location::Springing
@@ -81,7 +81,7 @@ pub fn classify(pattern: &[Contact], beta_mid: f64, same_joint: f64) -> Mode {
                 .any(|s| s.at == Location::Springing && (s.beta - h.beta).abs() <= same_joint)
     });
     if shoulder_both {
-        return Mode::RotationalSlidingShoulders;
+        return CollapseMode::RotationalSlidingShoulders;
     }
     let dist = |c: &&Contact| (c.beta - beta_mid).abs();
     let hinge_in = hinges.iter().map(dist).fold(f64::INFINITY, f64::min);
@@ -89,10 +89,10 @@ pub fn classify(pattern: &[Contact], beta_mid: f64, same_joint: f64) -> Mode {
     let slide_in = slides.iter().map(dist).fold(f64::INFINITY, f64::min);
     let slide_out = slides.iter().map(dist).fold(0.0, f64::max);
     if hinge_in < slide_in - same_joint {
-        Mode::MixedSlidingRotational
+        CollapseMode::MixedSlidingRotational
     } else if hinge_in > slide_out + same_joint || (hinge_out > slide_out && hinge_in > slide_in) {
-        Mode::MixedRotationalSliding
+        CollapseMode::MixedRotationalSliding
     } else {
-        Mode::MixedInterleaved
+        CollapseMode::MixedInterleaved
     }
 }
