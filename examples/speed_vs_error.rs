@@ -47,8 +47,8 @@ fn grid_eta(arch: &Arch, mu: f64, n: usize) -> f64 {
                     .map(move |&m| act.activation(m, 0, eta, mu))
             })
             .collect();
-        arch_enum::dense_lp::max_margin(&rows, arch.span(), 1e-13)
-            .or_else(|_| arch_enum::lp::max_margin(&rows, arch.span(), 1e-10))
+        arch_enum::lp::dense::max_margin(&rows, arch.span(), 1e-13)
+            .or_else(|_| arch_enum::lp::highs::max_margin(&rows, arch.span(), 1e-10))
             .is_ok_and(|(_, s)| s >= 0.0)
     };
     let (mut lo, mut hi) = (0.0, 1.999);

@@ -7,10 +7,9 @@
 
 use crate::arch::{Arch, JointLayout, Radians};
 use crate::contact::ContactKind;
-use crate::dense_lp;
 use crate::lp::{self, LpOutcome};
 use crate::scan::State;
-use crate::settings::{LpBackend, Settings};
+use crate::settings::Settings;
 use crate::statics::{actions, Reactions};
 
 /// The result of the margin problem at one (η, μ).
@@ -118,13 +117,7 @@ pub fn max_margin(
                 modes.iter().map(move |&m| a.activation(m, 0, eta, mu))
             })
             .collect();
-        let (x, s) = match settings.lp_backend {
-            LpBackend::Highs => lp::max_margin(&rows, cap, settings.lp_tol)?,
-            LpBackend::Dense => match dense_lp::max_margin(&rows, cap, 1e-13) {
-                Ok(r) => r,
-                Err(_) => lp::max_margin(&rows, cap, settings.lp_tol)?,
-            },
-        };
+        let (x, s) = lp::max_margin(&rows, cap, settings)?;
         let state = State { arch, eta, mu, x };
         let peaks = state.peaks(settings);
         let tol = settings.sep_tol * (1.0 + x.iter().map(|v| v.abs()).sum::<f64>());

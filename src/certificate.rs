@@ -397,7 +397,7 @@ fn safe_state(
             }
         })
         .collect();
-    let (d, s) = lp::max_margin(&rows, 1.0, settings.lp_tol).ok()?;
+    let (d, s) = lp::max_margin(&rows, 1.0, settings).ok()?;
     if s.is_nan() || s <= 0.0 {
         return None;
     }

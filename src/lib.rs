@@ -17,8 +17,7 @@
 //! | [`statics`] | §3 N, T, M, activation functions and exact derivatives |
 //! | [`scan`] | §3 maxima of φ over the continuum |
 //! | [`admissibility`] | §5 static LP by constraint generation |
-//! | [`lp`] | the only module using good_lp / HiGHS (reference LP path) |
-//! | [`dense_lp`] | exact small LP solvers: the fast path of the static and kinematic LPs |
+//! | [`lp`] | the static and kinematic LPs; back ends `lp::dense` (fast path) and `lp::highs` (reference) |
 //! | [`kinematics`] | §4 compatibility B and external power L_e |
 //! | [`mechanism`] | §4–5 kinematic LP, mechanism cone |
 //! | [`refine`] | §5 Newton on a pattern's square system |
@@ -49,7 +48,6 @@ pub mod cli;
 pub mod collapse_mode;
 pub mod contact;
 pub mod curve;
-pub mod dense_lp;
 pub mod friction;
 pub mod interval;
 pub mod kinematics;

@@ -50,7 +50,7 @@ pub fn find(
     let n = cs.len();
     let cols: Vec<[f64; 3]> = cs.iter().map(|c| column(c.kind, c.beta, eta)).collect();
     let p = power(arch, eta, &cs);
-    let first = match kinematic_lp(&cols, &p, &vec![0.0; n], settings) {
+    let first = match lp::kinematic(&cols, &p, &vec![0.0; n], settings) {
         Ok(l) => l,
         Err(LpOutcome::Infeasible) => return Ok(None),
         Err(e) => return Err(e),
@@ -62,7 +62,7 @@ pub fn find(
         }
         let mut obj = vec![0.0; n];
         obj[i] = 1.0;
-        let l = kinematic_lp(&cols, &p, &obj, settings)?;
+        let l = lp::kinematic(&cols, &p, &obj, settings)?;
         if l[i] > settings.rate_tol {
             rays.push(l);
         }
@@ -119,20 +119,4 @@ pub fn find(
         complementarity,
         dissipation,
     }))
-}
-
-/// The kinematic LP: by basic-solution enumeration for small patterns on the fast path,
-/// else (or when that does not apply) by HiGHS.
-fn kinematic_lp(
-    cols: &[[f64; 3]],
-    power: &[f64],
-    objective: &[f64],
-    settings: &Settings,
-) -> Result<Vec<f64>, LpOutcome> {
-    if settings.lp_backend == crate::settings::LpBackend::Dense {
-        if let Some(r) = crate::dense_lp::kinematic(cols, power, objective, settings.rate_tol) {
-            return r;
-        }
-    }
-    lp::kinematic(cols, power, objective, settings.lp_tol)
 }

@@ -8,7 +8,7 @@
 /// Which solver answers the static margin LP.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum LpBackend {
-    /// The 4-variable revised simplex of [`crate::dense_lp`] (fast path), falling back to
+    /// The 4-variable revised simplex of [`crate::lp::dense`] (fast path), falling back to
     /// HiGHS if it reports a failure.
     Dense,
     /// HiGHS through good_lp (reference path).
@@ -50,6 +50,9 @@ pub struct Settings {
     pub same_joint: f64,
     /// Feasibility and optimality tolerances passed to HiGHS. Default 1e-10.
     pub lp_tol: f64,
+    /// Feasibility tolerance of the dense margin simplex, on rows normalised to unit
+    /// gradient. Default 1e-13.
+    pub dense_lp_tol: f64,
     /// Maximum constraint-generation rounds per LP. Default 60.
     pub max_rounds: usize,
     /// Solver of the static margin LP. Default [`LpBackend::Dense`].
@@ -74,6 +77,7 @@ impl Default for Settings {
             newton_max_iter: 40,
             same_joint: 1e-7,
             lp_tol: 1e-10,
+            dense_lp_tol: 1e-13,
             max_rounds: 60,
             rate_tol: 1e-10,
             curve_samples: 16,

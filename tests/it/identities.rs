@@ -105,8 +105,8 @@ proptest! {
             }
         }
         let cap = arch.span();
-        let fast = arch_enum::dense_lp::max_margin(&rows, cap, 1e-13);
-        let reference = arch_enum::lp::max_margin(&rows, cap, 1e-10).unwrap();
+        let fast = arch_enum::lp::dense::max_margin(&rows, cap, 1e-13);
+        let reference = arch_enum::lp::highs::max_margin(&rows, cap, 1e-10).unwrap();
         if let Err(arch_enum::lp::LpOutcome::Failed(m)) = &fast {
             // the only admissible failure: a working set so small that the optimum is
             // unbounded in x (the dense solver's box binds); the caller then uses HiGHS

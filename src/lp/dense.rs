@@ -1,5 +1,5 @@
 //! A small exact LP solver for the static margin LP — the fast path; HiGHS
-//! ([`crate::lp`]) stays the reference path and the two are cross-checked in tests.
+//! ([`super::highs`]) stays the reference path and the two are cross-checked in tests.
 //!
 //! The margin LP, max s subject to ĝᵢ·x + s ≤ rᵢ (rows normalised, ‖ĝᵢ‖ = 1) and s ≤ cap,
 //! has only four variables z = (h, v, w, s). Its dual, min rᵀy subject to
@@ -10,7 +10,7 @@
 //! (rows that never bind in practice) gives a dual-feasible starting basis together
 //! with the cap. Dantzig pricing, Bland's rule after degenerate steps (no cycling).
 
-use crate::lp::LpOutcome;
+use super::LpOutcome;
 use crate::statics::{Affine, Reactions};
 use nalgebra::{Matrix4, Vector4};
 
@@ -18,7 +18,7 @@ use nalgebra::{Matrix4, Vector4};
 pub const BOX: f64 = 1e6;
 
 /// Maximises s subject to `row(x) + s·‖∇row‖ ≤ 0` for every row and s ≤ `cap`
-/// (the same problem as [`crate::lp::max_margin`]). `tol` is the feasibility tolerance
+/// (the same problem as [`super::highs::max_margin`]). `tol` is the feasibility tolerance
 /// on normalised rows.
 pub fn max_margin(rows: &[Affine], cap: f64, tol: f64) -> Result<(Reactions, f64), LpOutcome> {
     // constraint columns a_j ∈ R⁴ and right-hand sides b_j of the primal a_j·z ≤ b_j
@@ -139,7 +139,7 @@ pub fn max_margin(rows: &[Affine], cap: f64, tol: f64) -> Result<(Reactions, f64
     Err(LpOutcome::Failed("iteration limit".into()))
 }
 
-/// The kinematic LP of [`crate::lp::kinematic`] (maximise `objective · λ` subject to
+/// The kinematic LP of [`super::highs::kinematic`] (maximise `objective · λ` subject to
 /// Σ λ_j c_j = 0, `power · λ ≥ 0`, Σ λ = 1, λ ≥ 0) for small patterns, by enumerating the
 /// basic solutions of its five equality rows (power with a slack). Returns `None` when
 /// the enumeration does not apply (more than 12 rates, or rank-deficient rows: the

@@ -1,4 +1,5 @@
-//! The LP back end: the only module that talks to good_lp / HiGHS.
+//! The HiGHS back end (through good_lp): the reference path of both LPs, and the only
+//! file of the crate that imports good_lp.
 //!
 //! Two small LPs are solved here:
 //! * the static margin LP in x = (h, v, w): maximise the margin s of a finite set of
@@ -7,17 +8,9 @@
 //! * the kinematic LP in the rates λ of a pattern: B λ = 0, L_e ≥ 0, Σ λ = 1, λ ≥ 0
 //!   (formulation §4–5).
 
+use super::LpOutcome;
 use crate::statics::{Affine, Reactions};
 use good_lp::{highs, variable, Expression, ProblemVariables, Solution, SolverModel};
-
-/// Why an LP returned no solution.
-#[derive(Debug, Clone, PartialEq)]
-pub enum LpOutcome {
-    /// The LP is infeasible (normal rejection path of the enumeration).
-    Infeasible,
-    /// HiGHS reported anything else (unbounded, numerical failure): the message.
-    Failed(String),
-}
 
 fn configure(
     problem: good_lp::solvers::highs::HighsProblem,

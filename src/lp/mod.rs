@@ -1,0 +1,57 @@
+//! The two small LPs of the method, and the one place that chooses who solves them.
+//!
+//! * the static margin LP in x = (h, v, w): maximise the margin s of a finite set of
+//!   activation functions, each row scaled to unit gradient norm so that s is a distance
+//!   in x-space (formulation §5, static LP);
+//! * the kinematic LP in the rates λ of a pattern: B λ = 0, L_e ≥ 0, Σ λ = 1, λ ≥ 0
+//!   (formulation §4–5).
+//!
+//! Back ends, one file each: [`dense`] (exact small solvers, the fast path) and
+//! [`highs`] (HiGHS through good_lp, the reference path). [`Settings::lp_backend`]
+//! selects; the dense path falls back to HiGHS whenever it does not apply. No other
+//! module imports good_lp or picks a back end.
+
+pub mod dense;
+pub mod highs;
+
+use crate::settings::{LpBackend, Settings};
+use crate::statics::{Affine, Reactions};
+
+/// Why an LP returned no solution.
+#[derive(Debug, Clone, PartialEq)]
+pub enum LpOutcome {
+    /// The LP is infeasible (normal rejection path of the enumeration).
+    Infeasible,
+    /// The back end reported anything else (unbounded, numerical failure): the message.
+    Failed(String),
+}
+
+/// Maximises s subject to `row(x) + s·‖∇row‖ ≤ 0` for every row and `s ≤ cap`; returns the
+/// optimal x and s. The LP is always feasible (s may be very negative).
+pub fn max_margin(
+    rows: &[Affine],
+    cap: f64,
+    settings: &Settings,
+) -> Result<(Reactions, f64), LpOutcome> {
+    match settings.lp_backend {
+        LpBackend::Highs => highs::max_margin(rows, cap, settings.lp_tol),
+        LpBackend::Dense => dense::max_margin(rows, cap, settings.dense_lp_tol)
+            .or_else(|_| highs::max_margin(rows, cap, settings.lp_tol)),
+    }
+}
+
+/// Maximises `objective · λ` subject to Σ_j λ_j c_j = 0 for the 3-vectors `columns`,
+/// `power · λ ≥ 0`, Σ λ = 1, λ ≥ 0. Returns λ, or `Infeasible` when no such rates exist.
+pub fn kinematic(
+    columns: &[[f64; 3]],
+    power: &[f64],
+    objective: &[f64],
+    settings: &Settings,
+) -> Result<Vec<f64>, LpOutcome> {
+    if settings.lp_backend == LpBackend::Dense {
+        if let Some(r) = dense::kinematic(columns, power, objective, settings.rate_tol) {
+            return r;
+        }
+    }
+    highs::kinematic(columns, power, objective, settings.lp_tol)
+}
