@@ -120,7 +120,7 @@ pub fn max_margin(
         let (x, s) = lp::max_margin(&rows, cap, settings)?;
         let state = State { arch, eta, mu, x };
         let peaks = state.peaks(settings);
-        let tol = settings.sep_tol * (1.0 + x.iter().map(|v| v.abs()).sum::<f64>());
+        let tol = settings.sep_tol * crate::statics::reaction_scale(&x);
         let mut margin = f64::INFINITY;
         let mut added = false;
         let mut worst: Vec<(f64, Radians)> = Vec::new();

@@ -21,7 +21,8 @@
 //! | [`kinematics`] | §4 compatibility B and external power L_e |
 //! | [`mechanism`] | §4–5 kinematic LP, mechanism cone |
 //! | [`refine`] | §5 Newton on a pattern's square system |
-//! | [`limit`] | §5 η*(μ): bracket, enumerate, verify |
+//! | [`search`] | §5 bracketing the continuum margin, candidate contacts |
+//! | [`limit`] | §5 η*(μ): bracket, enumerate, verify; the solution types |
 //! | [`friction`] | §6 the friction-only problem, μ_ms |
 //! | [`limit_curve`] | §5 the η–μ curve: branches and exact corners |
 //! | [`mode`] | §5 collapse-mode names from the pattern |
@@ -59,6 +60,7 @@ pub mod mechanism;
 pub mod refine;
 pub mod render;
 pub mod scan;
+pub mod search;
 pub mod settings;
 pub mod statics;
 pub mod thrust_line;

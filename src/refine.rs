@@ -262,8 +262,8 @@ impl System<'_> {
     }
 }
 
-fn scale_of(x: &[f64]) -> f64 {
-    1.0 + x[..3].iter().map(|v| v.abs()).sum::<f64>()
+fn scale_of(z: &[f64]) -> f64 {
+    crate::statics::reaction_scale(&[z[0], z[1], z[2]])
 }
 
 fn inf_norm(f: &[f64]) -> f64 {

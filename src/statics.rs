@@ -43,6 +43,12 @@ impl Affine {
     }
 }
 
+/// The natural magnitude of a state's forces, 1 + |h| + |v| + |w| (units of γ t d r):
+/// tolerances on φ and on Newton residuals are relative to it.
+pub fn reaction_scale(x: &Reactions) -> f64 {
+    1.0 + x.iter().map(|v| v.abs()).sum::<f64>()
+}
+
 /// N, T, M at one angle as affine functions of x, with their first and second
 /// β-derivatives (index = order of the derivative), and ∂M/∂η for the centroid model.
 #[derive(Debug, Clone, Copy)]

@@ -1,0 +1,49 @@
+//! Outcomes other than a limit state: no equilibrium at any thickness (with μ_ms from the
+//! friction-only problem when μ is below it) and an honestly unresolved bracket.
+
+use super::solution::Outcome;
+use crate::arch::{fmt_value, Arch};
+use crate::friction::least_friction;
+use crate::settings::Settings;
+
+pub(crate) fn unresolved(eta_lo: f64, eta_hi: f64, reason: String) -> Outcome {
+    Outcome::Unresolved {
+        eta_lo,
+        eta_hi,
+        reason,
+    }
+}
+
+pub(crate) fn no_equilibrium(arch: &Arch, mu: f64, settings: &Settings) -> Outcome {
+    match least_friction(arch, settings) {
+        Ok(Some(mu_ms)) if mu < mu_ms => Outcome::NoEquilibrium {
+            mu_ms: Some(mu_ms),
+            reason: format!(
+                "mu = {} is below mu_ms = {mu_ms:.10}: no thickness can stand (purely sliding collapse)", fmt_value(mu)
+            ),
+        },
+        Ok(Some(mu_ms)) if mu < mu_ms * (1.0 + 1e-6) => Outcome::Unresolved {
+            eta_lo: 0.0,
+            eta_hi: 2.0,
+            reason: format!(
+                "mu = {} is within 1e-6 (relative) of mu_ms = {mu_ms:.10}, closer than the LP resolves admissibility",
+                fmt_value(mu)
+            ),
+        },
+        Ok(Some(mu_ms)) => Outcome::NoEquilibrium {
+            mu_ms: Some(mu_ms),
+            reason: format!(
+                "mu = {} is above mu_ms = {mu_ms:.10}, but no thickness eta < 2 admits equilibrium at this friction",
+                fmt_value(mu)
+            ),
+        },
+        Ok(None) => Outcome::NoEquilibrium {
+            mu_ms: None,
+            reason: "no friction coefficient admits equilibrium for this opening".into(),
+        },
+        Err(e) => Outcome::NoEquilibrium {
+            mu_ms: None,
+            reason: format!("no thickness eta < 2 admits equilibrium (mu_ms not computed: {e})"),
+        },
+    }
+}

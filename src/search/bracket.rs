@@ -1,0 +1,85 @@
+//! Bracketing the root of an increasing function (the continuum margin s(η) in the
+//! thickness problem, s(μ) in the friction-only problem): Illinois regula falsi with a
+//! geometric-bisection safeguard, and the LP evaluation it calls.
+
+use crate::admissibility::{max_margin, Goal, Margin, WorkingSet};
+use crate::arch::Arch;
+use crate::contact::ContactKind;
+use crate::lp::LpOutcome;
+use crate::settings::Settings;
+
+/// The continuum margin at (η, μ) restricted to `kinds`, decided (the LP stops once its
+/// sign is known); an LP failure becomes its message.
+pub fn margin_at(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    kinds: &[ContactKind],
+    ws: &mut WorkingSet,
+    settings: &Settings,
+) -> Result<Margin, String> {
+    max_margin(arch, eta, mu, kinds, ws, Goal::Decide, settings).map_err(|e| match e {
+        LpOutcome::Infeasible => "margin LP infeasible".to_string(),
+        LpOutcome::Failed(m) => m,
+    })
+}
+
+/// The ends of a bracket: (η, f) below the root, (η, f, payload) at or above it.
+type Bracket<T> = ((f64, f64), (f64, f64, T));
+
+/// Root of an increasing function f on [lo, hi] with f(lo) < 0 ≤ f(hi): Illinois
+/// regula falsi with geometric bisection as a safeguard. `eval` returns f and the
+/// payload kept for the upper end. Stops when hi − lo ≤ rel · hi.
+pub fn bracket_root<T: Clone>(
+    mut lo: (f64, f64),
+    mut hi: (f64, f64, T),
+    rel: f64,
+    max_iter: usize,
+    mut eval: impl FnMut(f64) -> Result<(f64, T), String>,
+) -> Result<Bracket<T>, String> {
+    let mut side = 0i32;
+    let (mut flo, mut fhi) = (lo.1, hi.1);
+    let mut widths = [f64::INFINITY; 3];
+    for _ in 0..max_iter {
+        if hi.0 - lo.0 <= rel * hi.0 {
+            break;
+        }
+        let width = hi.0 - lo.0;
+        let secant = hi.0 - fhi * (hi.0 - lo.0) / (fhi - flo);
+        let bisect = if lo.0 > 0.0 && hi.0 / lo.0 > 4.0 {
+            (lo.0 * hi.0).sqrt()
+        } else if lo.0 <= 0.0 {
+            hi.0 / 8.0
+        } else {
+            0.5 * (lo.0 + hi.0)
+        };
+        widths = [widths[1], widths[2], width];
+        let stalled = widths[2] > 0.5 * widths[0];
+        let t = if stalled || !(secant > lo.0 && secant < hi.0) {
+            bisect
+        } else {
+            // keep the secant point away from the ends
+            secant.clamp(lo.0 + 1e-3 * width, hi.0 - 1e-3 * width)
+        };
+        let (f, payload) = eval(t)?;
+        if stalled {
+            widths = [f64::INFINITY; 3];
+        }
+        if f >= 0.0 {
+            hi = (t, f, payload);
+            fhi = f;
+            if side == 1 {
+                flo *= 0.5;
+            }
+            side = 1;
+        } else {
+            lo = (t, f);
+            flo = f;
+            if side == -1 {
+                fhi *= 0.5;
+            }
+            side = -1;
+        }
+    }
+    Ok((lo, hi))
+}

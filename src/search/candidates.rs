@@ -1,0 +1,47 @@
+//! Candidate active contacts: the local maxima of φ at a state whose normalised slack is
+//! within `candidate_rel` of the LP margin (formulation §5, pattern enumeration).
+
+use crate::admissibility::grad_norm;
+use crate::arch::Arch;
+use crate::contact::{Contact, ContactKind, Peak};
+use crate::scan::State;
+use crate::settings::Settings;
+use crate::statics::{reaction_scale, Reactions};
+
+/// Local maxima of φ at the state (η, x) that may be active contacts, best first: with
+/// `margin` given, those whose normalised slack is within `candidate_rel` of it; with
+/// `None`, simply the best ones. At most `max_candidates`.
+pub fn candidates_at(
+    arch: &Arch,
+    mu: f64,
+    eta: f64,
+    x: &Reactions,
+    margin: Option<f64>,
+    modes: &[ContactKind],
+    settings: &Settings,
+) -> Vec<Contact> {
+    let state = State {
+        arch,
+        eta,
+        mu,
+        x: *x,
+    };
+    let limit = margin.map_or(f64::INFINITY, |m| {
+        m + settings.candidate_rel * reaction_scale(x)
+    });
+    let mut peaks: Vec<(f64, Peak)> = state
+        .near_active(settings, f64::NEG_INFINITY)
+        .into_iter()
+        .filter(|p| modes.contains(&p.contact.kind))
+        .map(|p| {
+            (
+                -p.value / grad_norm(arch, eta, mu, p.contact.kind, p.contact.beta),
+                p,
+            )
+        })
+        .filter(|(slack, _)| *slack <= limit)
+        .collect();
+    peaks.sort_by(|a, b| a.0.total_cmp(&b.0));
+    peaks.truncate(settings.max_candidates);
+    peaks.into_iter().map(|(_, p)| p.contact).collect()
+}
