@@ -2,9 +2,9 @@
 //! the single place where outcomes become exit codes (0 ok, 1 no answer, 2 bad input).
 
 use crate::arch::{Arch, InputError, WeightModel};
-use crate::curve::{mu_grid, sample};
 use crate::friction::least_friction;
 use crate::limit::{solve, Outcome};
+use crate::limit_curve::{mu_grid, sample};
 use crate::render::{json, table};
 use crate::settings::Settings;
 use clap::{Args, Parser, Subcommand, ValueEnum};

@@ -24,9 +24,8 @@
 //! | [`search`] | §5 bracketing the continuum margin, candidate contacts |
 //! | [`limit`] | §5 η*(μ): bracket, enumerate, verify; the solution types |
 //! | [`friction`] | §6 the friction-only problem, μ_ms |
-//! | [`limit_curve`] | §5 the η–μ curve: branches and exact corners |
+//! | [`limit_curve`] | §5 the η–μ curve: branches and exact corners; η*(μ) sampled over μ |
 //! | [`mode`] | §5 collapse-mode names from the pattern |
-//! | [`curve`] | η*(μ) sampled over μ |
 //! | [`certificate`], [`verify`], [`interval`] | certificates and their independent re-check |
 //! | [`thrust_line`], [`margin_map`] | numerics for the pictures |
 //! | [`contact`], [`settings`] | vocabulary (contacts, locations) and every tolerance |
@@ -48,7 +47,6 @@ pub mod certificate;
 pub mod cli;
 pub mod collapse_mode;
 pub mod contact;
-pub mod curve;
 pub mod friction;
 pub mod interval;
 pub mod kinematics;

@@ -3,8 +3,8 @@
 
 use crate::arch::{Arch, JointLayout};
 use crate::contact::Contact;
-use crate::curve::CurvePoint;
 use crate::limit::{Candidate, LimitState, Outcome, Solution};
+use crate::limit_curve::CurvePoint;
 use serde::Serialize;
 
 /// The arch as described in every JSON document.

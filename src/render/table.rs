@@ -2,8 +2,8 @@
 
 use crate::arch::{Arch, JointLayout};
 use crate::contact::Contact;
-use crate::curve::CurvePoint;
 use crate::limit::{Outcome, Solution};
+use crate::limit_curve::CurvePoint;
 use std::f64::consts::PI;
 use std::fmt::Write;
 
