@@ -80,7 +80,7 @@ fn bench_certify(c: &mut Criterion) {
         b.iter(|| arch_enum::certificate::certify(black_box(&arch), 0.35, 1e-12, &s).unwrap())
     });
     g.bench_function("verify_semicircle_mu_0.35", |b| {
-        b.iter(|| arch_enum::verify::verify(black_box(&cert)).unwrap())
+        b.iter(|| arch_enum::certificate::verify(black_box(&cert)).unwrap())
     });
     g.finish();
 }

@@ -453,7 +453,7 @@ where
                     return EXIT_BAD_INPUT;
                 }
             };
-            match crate::verify::verify(&cert) {
+            match crate::certificate::verify(&cert) {
                 Ok(report) => {
                     if json_out {
                         emit(
@@ -470,7 +470,7 @@ where
                     }
                     EXIT_OK
                 }
-                Err(crate::verify::Rejection(reason)) => {
+                Err(crate::certificate::Rejection(reason)) => {
                     if json_out {
                         emit(
                             out,

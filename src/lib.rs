@@ -26,7 +26,7 @@
 //! | [`friction`] | §6 the friction-only problem, μ_ms |
 //! | [`limit_curve`] | §5 the η–μ curve: branches and exact corners; η*(μ) sampled over μ |
 //! | [`mode`] | §5 collapse-mode names from the pattern |
-//! | [`certificate`], [`verify`], [`interval`] | certificates and their independent re-check |
+//! | [`certificate`] | certificates (format, certify) and their independent re-check (verify, interval arithmetic) |
 //! | [`thrust_line`], [`margin_map`] | numerics for the pictures |
 //! | [`contact`], [`settings`] | vocabulary (contacts, locations) and every tolerance |
 //! | [`render`], [`cli`] | text, JSON and figures, the command line (thin layers) |
@@ -48,7 +48,6 @@ pub mod cli;
 pub mod collapse_mode;
 pub mod contact;
 pub mod friction;
-pub mod interval;
 pub mod kinematics;
 pub mod limit;
 pub mod limit_curve;
@@ -62,7 +61,6 @@ pub mod search;
 pub mod settings;
 pub mod statics;
 pub mod thrust_line;
-pub mod verify;
 
 pub use arch::{Arch, InputError, JointLayout, Radians, WeightModel};
 pub use collapse_mode::CollapseMode;

@@ -2,8 +2,8 @@
 //! (∞, just above μ_ms, on the mixed branch) and discrete arches; tampering is caught;
 //! below μ_ms a friction-only Farkas certificate is accepted.
 
+use arch_enum::certificate::verify;
 use arch_enum::certificate::{certify, Certificate, Claim};
-use arch_enum::verify::verify;
 use arch_enum::{least_friction, Arch, Settings, WeightModel};
 use assert_cmd::Command;
 

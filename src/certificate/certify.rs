@@ -1,30 +1,8 @@
-//! Certificates: checkable evidence for η*(μ) that anyone can re-check with
-//! [`crate::verify`] (no LP, no solver).
-//!
-//! # Format (version 1)
-//! A JSON object (this serde type is the schema; `null` stands for +∞ where noted):
-//!
-//! | key | meaning |
-//! |---|---|
-//! | `format`, `version` | `"arch-enum-certificate"`, `1` |
-//! | `tool` | the producing tool and version |
-//! | `arch` | `beta_right`, `beta_left` (radians), `weight` (`centreline`/`centroid`), `joint_angles` (null: continuous) |
-//! | `mu` | friction coefficient, `null` = ∞ |
-//! | `claim` | `least_thickness` or `no_equilibrium` |
-//! | `safe` | `{eta, x: [h, v, w]}`: a state admissible at η_hi over the whole arch (upper bound) |
-//! | `collapse` | `{eta, joints: [{beta, kind, y}]}`: d + 1 contacts whose non-negative Farkas combination rules out every state at η_lo (lower bound); `eta` null for the friction-only problem (d = 2) |
-//! | `limit_state` | `{eta, x, pattern: [{beta, kind, at}], rates}`: the limit state and a mechanism on its pattern |
-//! | `gap`, `gap_relative` | η_hi − η_lo and (η_hi − η_lo)/η_hi |
-//!
-//! `certify` builds the two sides around the exact limit state: the safe state is the
-//! limit state moved into the interior of the admissible set at η_hi = η*(1 + g/2) by a
-//! small LP on its active contacts (rows scaled by 1/(η_hi − η*) so that HiGHS works with
-//! O(1) numbers); the Farkas contacts are 4-subsets of the active contacts at η_lo =
-//! η*(1 − g/2), with interior tangencies also split into chords β ± δ, chosen by their
-//! float cofactors and then proved by the verifier. If a side cannot be proved at the
-//! requested relative gap g, the gap is widened tenfold (up to 1e-4) and the achieved gap
-//! is what the certificate states.
+//! Building a certificate around the exact limit state (see the module documentation of
+//! [`crate::certificate`]).
 
+use super::format::*;
+use super::verify::{prove_safe_only, verify};
 use crate::arch::{Arch, JointLayout};
 use crate::contact::ContactKind;
 use crate::contact::{Contact, Location};
@@ -33,123 +11,7 @@ use crate::limit::{solve, Outcome};
 use crate::lp;
 use crate::settings::Settings;
 use crate::statics::{actions, Affine, Reactions};
-use crate::verify::verify;
 use itertools::Itertools;
-use serde::{Deserialize, Serialize};
-
-/// The `format` field of every certificate.
-pub const FORMAT: &str = "arch-enum-certificate";
-/// The current format version.
-pub const VERSION: u32 = 1;
-
-/// What the certificate claims.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Claim {
-    /// η*(μ) ∈ [η_lo, η_hi].
-    LeastThickness,
-    /// No thickness stands at this μ (μ < μ_ms).
-    NoEquilibrium,
-}
-
-/// The arch of a certificate.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct ArchSpec {
-    /// Right springing (radians).
-    pub beta_right: f64,
-    /// Left springing (radians).
-    pub beta_left: f64,
-    /// `centreline` or `centroid`.
-    pub weight: String,
-    /// The joints of a discrete arch; `null` for a continuous one.
-    pub joint_angles: Option<Vec<f64>>,
-}
-
-/// The upper-bound side: an admissible state at η_hi.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct SafeSide {
-    /// η_hi.
-    pub eta: f64,
-    /// Reactions (h, v, w).
-    pub x: [f64; 3],
-}
-
-/// One contact of a Farkas certificate.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct CertJoint {
-    /// Joint angle (radians).
-    pub beta: f64,
-    /// `hinge_extrados`, `hinge_intrados`, `slide_plus` or `slide_minus`.
-    pub kind: String,
-    /// Non-negative multiplier (normalised to sum 1).
-    pub y: f64,
-}
-
-/// The lower-bound side: a Farkas certificate of infeasibility.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct Farkas {
-    /// η_lo (`null` for the friction-only problem, where η does not enter).
-    pub eta: Option<f64>,
-    /// The contacts and their multipliers.
-    pub joints: Vec<CertJoint>,
-}
-
-/// A joint of the limit state's pattern.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct PatternJoint {
-    /// Joint angle.
-    pub beta: f64,
-    /// Activation function.
-    pub kind: String,
-    /// `springing` or `interior`.
-    pub at: String,
-}
-
-/// The limit state (consistency-checked, not proved).
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct LimitStateCert {
-    /// η*.
-    pub eta: f64,
-    /// Reactions.
-    pub x: [f64; 3],
-    /// Active pattern.
-    pub pattern: Vec<PatternJoint>,
-    /// Mechanism rates, one per pattern joint.
-    pub rates: Vec<f64>,
-    /// Σ |φ_i| λ_i at the limit state.
-    pub complementarity_residual: f64,
-}
-
-/// A certificate (format version 1).
-#[derive(Debug, Clone, Serialize, Deserialize)]
-pub struct Certificate {
-    /// Always [`FORMAT`].
-    pub format: String,
-    /// Always [`VERSION`] for this format.
-    pub version: u32,
-    /// Producer.
-    pub tool: String,
-    /// The arch.
-    pub arch: ArchSpec,
-    /// μ (`null` = ∞).
-    pub mu: Option<f64>,
-    /// The claim.
-    pub claim: Claim,
-    /// Upper-bound side (least-thickness claims).
-    pub safe: Option<SafeSide>,
-    /// Lower-bound side.
-    pub collapse: Option<Farkas>,
-    /// The limit state.
-    pub limit_state: Option<LimitStateCert>,
-    /// η_hi − η_lo.
-    pub gap: Option<f64>,
-    /// (η_hi − η_lo)/η_hi.
-    pub gap_relative: Option<f64>,
-}
-
-/// Why no certificate could be produced (a result, not bad input).
-#[derive(Debug, Clone, PartialEq)]
-pub struct NotCertified(pub String);
 
 fn spec(arch: &Arch) -> ArchSpec {
     ArchSpec {
@@ -349,7 +211,7 @@ fn certify_limit(
                 let mut probe = c.clone();
                 probe.claim = Claim::LeastThickness;
                 // check the safe side alone with a trivially failing lower side removed
-                crate::verify::prove_safe_only(&probe).is_ok()
+                prove_safe_only(&probe).is_ok()
             };
             if safe_ok {
                 let found = find_farkas(arch, &pool, eta_lo, mu, 3, |f| {

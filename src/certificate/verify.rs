@@ -1,6 +1,6 @@
 //! Independent re-checking of a certificate ([`crate::certificate`]): no LP, no solver,
 //! and its own interval evaluation of the statics (formulation §3) written out again
-//! from the formulas, with outward rounding ([`crate::interval`]).
+//! from the formulas, with outward rounding ([`super::interval`]).
 //!
 //! * **Safe side**: φ ≤ 0 at (η_hi, x) is *proved* on the whole continuum of joints by
 //!   second-order Taylor enclosures on subintervals of [β_R, β_L]:
@@ -15,8 +15,8 @@
 //! * **Limit state**: consistency checks in floating point with stated tolerances
 //!   (B λ = 0, λ ≥ 0, Σ λ = 1, L_e ≥ 0, complementarity) — evidence, not proof.
 
-use crate::certificate::{CertJoint, Certificate, Claim, FORMAT, VERSION};
-use crate::interval::{det2, det3, Interval as I};
+use super::format::{CertJoint, Certificate, Claim, LimitStateCert, FORMAT, VERSION};
+use super::interval::{det2, det3, Interval as I};
 use std::f64::consts::PI;
 
 /// Tolerances of the floating-point consistency checks of the limit state.
@@ -445,7 +445,7 @@ pub fn prove_safe_only(cert: &Certificate) -> Result<usize, Rejection> {
 fn check_limit_state(
     model: &Model,
     mu: Option<f64>,
-    ls: &crate::certificate::LimitStateCert,
+    ls: &LimitStateCert,
     eta_lo: f64,
     eta_hi: f64,
 ) -> Result<(), Rejection> {
