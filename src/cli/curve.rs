@@ -1,0 +1,65 @@
+//! `arch-enum curve`: η*(μ) sampled over a range of friction coefficients.
+
+use super::arch_args::ArchArgs;
+use super::{to_json, Exit, Io};
+use crate::arch::{fmt_value, InputError};
+use crate::friction::least_friction;
+use crate::limit_curve::{mu_grid, sample};
+use crate::render::{json, table};
+use crate::settings::Settings;
+use clap::Args;
+
+#[derive(Args, Debug)]
+pub(crate) struct CurveArgs {
+    #[command(flatten)]
+    arch: ArchArgs,
+    /// Smallest mu (default: mu_ms (1 + 1e-6), just above the least friction admitting equilibrium).
+    #[arg(long, allow_negative_numbers = true)]
+    mu_min: Option<f64>,
+    /// Largest mu (default: 10 * mu_min).
+    #[arg(long, allow_negative_numbers = true)]
+    mu_max: Option<f64>,
+    /// Number of samples (1 to 100000).
+    #[arg(long, default_value_t = 20, allow_negative_numbers = true)]
+    points: usize,
+    /// Print one JSON document instead of tables.
+    #[arg(long)]
+    pub(crate) json: bool,
+}
+
+pub(crate) fn run(a: CurveArgs, settings: &Settings, io: &mut Io) -> Exit {
+    let arch = match a.arch.build() {
+        Ok(a) => a,
+        Err(e) => return io.bad_input(&e),
+    };
+    for (name, v) in [("--mu-min", a.mu_min), ("--mu-max", a.mu_max)] {
+        if let Some(v) = v {
+            if !(v.is_finite() && v > 0.0) {
+                return io.bad_input(&InputError::OutOfRange {
+                    arg: name,
+                    value: fmt_value(v),
+                    range: "0 < mu < inf".into(),
+                });
+            }
+        }
+    }
+    let mu_ms = least_friction(&arch, settings).ok().flatten();
+    let lo = a
+        .mu_min
+        .unwrap_or_else(|| mu_ms.map_or(0.01, |m| (m * (1.0 + 1e-6)).max(1e-6)));
+    let hi = a.mu_max.unwrap_or(10.0 * lo);
+    let grid = match mu_grid(lo, hi, a.points) {
+        Ok(g) => g,
+        Err(e) => return io.bad_input(&e),
+    };
+    let pts = match sample(&arch, &grid, settings) {
+        Ok(p) => p,
+        Err(e) => return io.bad_input(&e),
+    };
+    if a.json {
+        io.out(&to_json(&json::curve(&arch, mu_ms, &pts)));
+    } else {
+        io.out(&table::curve(&arch, mu_ms, &pts));
+    }
+    Exit::Answered
+}

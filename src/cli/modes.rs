@@ -1,0 +1,35 @@
+//! `arch-enum modes`: the whole η–μ limit curve, branches and exact corners.
+
+use super::arch_args::ArchArgs;
+use super::{to_json, Exit, Io};
+use crate::limit_curve::trace;
+use crate::render::{json, table};
+use crate::settings::Settings;
+use clap::Args;
+
+#[derive(Args, Debug)]
+pub(crate) struct ModesArgs {
+    #[command(flatten)]
+    arch: ArchArgs,
+    /// Print one JSON document instead of tables.
+    #[arg(long)]
+    pub(crate) json: bool,
+}
+
+pub(crate) fn run(a: ModesArgs, settings: &Settings, io: &mut Io) -> Exit {
+    let arch = match a.arch.build() {
+        Ok(a) => a,
+        Err(e) => return io.bad_input(&e),
+    };
+    let curve = trace(&arch, settings);
+    if a.json {
+        io.out(&to_json(&json::modes(&arch, &curve)));
+    } else {
+        io.out(&table::modes(&arch, &curve));
+    }
+    if curve.branches.is_empty() {
+        Exit::NoAnswer
+    } else {
+        Exit::Answered
+    }
+}

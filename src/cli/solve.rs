@@ -1,0 +1,46 @@
+//! `arch-enum solve`: the least thickness at one friction coefficient.
+
+use super::arch_args::ArchArgs;
+use super::{to_json, Exit, Io};
+use crate::limit::{solve, Outcome};
+use crate::render::{json, table};
+use crate::settings::Settings;
+use clap::Args;
+
+#[derive(Args, Debug)]
+pub(crate) struct SolveArgs {
+    #[command(flatten)]
+    arch: ArchArgs,
+    /// Friction coefficient mu = tan(phi) > 0; `inf` for no sliding.
+    #[arg(long, allow_negative_numbers = true)]
+    mu: f64,
+    /// List every pattern tried and why it was kept or rejected.
+    #[arg(long)]
+    explain: bool,
+    /// Print one JSON document instead of tables.
+    #[arg(long)]
+    pub(crate) json: bool,
+}
+
+pub(crate) fn run(a: SolveArgs, settings: &Settings, io: &mut Io) -> Exit {
+    let sol = match a.arch.build().and_then(|arch| solve(&arch, a.mu, settings)) {
+        Ok(s) => s,
+        Err(e) => return io.bad_input(&e),
+    };
+    if a.json {
+        io.out(&to_json(&json::solve(&sol, a.explain)));
+    } else {
+        io.out(&table::solve(&sol, a.explain));
+    }
+    match &sol.outcome {
+        Outcome::Limit(_) => {}
+        Outcome::NoEquilibrium { reason, .. }
+        | Outcome::Unresolved { reason, .. }
+        | Outcome::NoCollapse { reason } => {
+            if a.json {
+                io.err(&format!("{}: {reason}\n", json::status(&sol.outcome)));
+            }
+        }
+    }
+    Exit::of(&sol.outcome)
+}
