@@ -44,6 +44,7 @@
 pub mod admissibility;
 pub mod arch;
 pub mod certificate;
+#[cfg(feature = "cli")]
 pub mod cli;
 pub mod collapse_mode;
 pub mod contact;

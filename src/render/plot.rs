@@ -4,6 +4,7 @@
 use crate::collapse_mode::CollapseMode;
 use plotters::style::RGBColor;
 
+#[cfg(feature = "png")]
 /// The font embedded for PNG rendering (DejaVu Sans, see `assets/fonts/DejaVu-LICENSE.txt`).
 pub const FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
 
@@ -23,6 +24,7 @@ pub fn mode_color(mode: CollapseMode) -> RGBColor {
     }
 }
 
+#[cfg(feature = "png")]
 /// Renders an SVG document to PNG bytes, `width` pixels wide (height keeps the aspect).
 pub fn svg_to_png(svg: &str, width: u32) -> Result<Vec<u8>, String> {
     let mut opt = resvg::usvg::Options {
