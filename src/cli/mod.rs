@@ -10,6 +10,7 @@ mod certify;
 mod curve;
 mod modes;
 mod plot;
+mod progress;
 mod solve;
 
 use crate::arch::InputError;

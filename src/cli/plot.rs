@@ -83,19 +83,8 @@ pub(crate) enum Figure {
 
 pub(crate) fn run(figure: Figure, settings: &Settings, io: &mut Io) -> Exit {
     use crate::render::figures;
-    let progress = |done: usize, total: usize| {
-        if done.is_multiple_of(16) || done == total {
-            let bar = 30 * done / total.max(1);
-            eprint!(
-                "\r[{}{}] {done}/{total}",
-                "#".repeat(bar),
-                " ".repeat(30 - bar)
-            );
-            if done == total {
-                eprintln!();
-            }
-        }
-    };
+    let bar = super::progress::Progress::new("map");
+    let progress = |done: usize, total: usize| bar.update(done, total);
     let (name, output, result) = match figure {
         Figure::Curve {
             alpha,

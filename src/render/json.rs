@@ -7,6 +7,10 @@ use crate::limit::{Candidate, LimitState, Outcome, Solution};
 use crate::limit_curve::CurvePoint;
 use serde::Serialize;
 
+/// The `version` of every JSON document the command line prints: bumped on a breaking
+/// change of any shape (2: `version`/`status` everywhere, `pattern` for every joint list).
+pub const JSON_VERSION: u32 = 2;
+
 /// The arch as described in every JSON document.
 #[derive(Debug, Serialize)]
 pub struct ArchJson {
