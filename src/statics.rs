@@ -37,9 +37,15 @@ impl Affine {
             c: a * p.c + b * q.c,
         }
     }
-    /// Euclidean norm of the gradient.
+    /// Euclidean norm of the gradient, computed without overflow (friction rows carry
+    /// μ N, and μ may be as large as the largest finite float).
     pub fn grad_norm(&self) -> f64 {
-        (self.g[0] * self.g[0] + self.g[1] * self.g[1] + self.g[2] * self.g[2]).sqrt()
+        let m = self.g[0].abs().max(self.g[1].abs()).max(self.g[2].abs());
+        if m == 0.0 || !m.is_finite() {
+            return m;
+        }
+        let (a, b, c) = (self.g[0] / m, self.g[1] / m, self.g[2] / m);
+        m * (a * a + b * b + c * c).sqrt()
     }
 }
 

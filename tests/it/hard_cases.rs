@@ -57,6 +57,30 @@ fn huge_friction_equals_infinite() {
     assert!((a.eta - b.eta).abs() < 1e-13, "{} vs {}", a.eta, b.eta);
 }
 
+/// Friction so large that ‖∇(T − μN)‖² overflows to ∞ in a naive norm (μ ≥ 1e155): the
+/// answer must still be the infinite-friction one, continuous and discrete.
+#[test]
+fn overflowing_friction_equals_infinite() {
+    for arch in [
+        Arch::symmetric(0.0, WeightModel::Centreline).unwrap(),
+        Arch::symmetric(0.0, WeightModel::Centreline)
+            .unwrap()
+            .with_blocks(30)
+            .unwrap(),
+    ] {
+        let b = limit(&arch, f64::INFINITY);
+        for mu in [1e155, 1e300, f64::MAX] {
+            let a = limit(&arch, mu);
+            assert!(
+                (a.eta - b.eta).abs() <= 1e-10 * b.eta,
+                "mu = {mu}: {} vs {}",
+                a.eta,
+                b.eta
+            );
+        }
+    }
+}
+
 /// Just above μ_ms the arch needs almost the thickness of the sliding corner; just
 /// below, nothing stands.
 #[test]
