@@ -294,15 +294,22 @@ pub fn check_eta(eta: f64) -> Result<f64, InputError> {
     }
 }
 
-/// Validates a friction coefficient μ: μ > 0, `f64::INFINITY` allowed (no sliding).
+/// The largest finite friction coefficient accepted. Friction rows carry μ N with N up
+/// to the size of the reactions, so μ must stay far from the float range's end; at this
+/// friction angle (90° − 1e-200 rad) no joint can slide and the answer is that of
+/// μ = ∞ (tested).
+pub const MU_MAX_FINITE: f64 = 1e200;
+
+/// Validates a friction coefficient μ: 0 < μ ≤ [`MU_MAX_FINITE`], or `f64::INFINITY`
+/// (no sliding).
 pub fn check_mu(mu: f64) -> Result<f64, InputError> {
-    if !mu.is_nan() && mu > 0.0 {
+    if !mu.is_nan() && mu > 0.0 && (mu <= MU_MAX_FINITE || mu == f64::INFINITY) {
         Ok(mu)
     } else {
         Err(InputError::OutOfRange {
             arg: "--mu",
             value: fmt_value(mu),
-            range: "mu > 0 (inf allowed: no sliding)".to_string(),
+            range: "0 < mu <= 1e200, or inf (no sliding)".to_string(),
         })
     }
 }
