@@ -24,27 +24,27 @@ impl From<WeightArg> for WeightModel {
 #[derive(Args, Debug)]
 pub(crate) struct ArchArgs {
     /// Opening of a symmetric arch in radians, -pi/2 < alpha < pi/2 (0: semicircle).
-    #[arg(long, allow_negative_numbers = true, group = "shape")]
+    #[arg(long, allow_hyphen_values = true, group = "shape")]
     alpha: Option<f64>,
     /// Opening of a symmetric arch in degrees, -90 < alpha-deg < 90.
-    #[arg(long, allow_negative_numbers = true, group = "shape")]
+    #[arg(long, allow_hyphen_values = true, group = "shape")]
     alpha_deg: Option<f64>,
     /// Right springing angle of an unsymmetric arch (radians); needs --beta-left.
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_hyphen_values = true,
         group = "shape",
         requires = "beta_left"
     )]
     beta_right: Option<f64>,
     /// Left springing angle (radians), beta_right < beta_left <= beta_right + 2 pi.
-    #[arg(long, allow_negative_numbers = true, requires = "beta_right")]
+    #[arg(long, allow_hyphen_values = true, requires = "beta_right")]
     beta_left: Option<f64>,
     /// N equal voussoirs: joints only at the N + 1 equally spaced angles (1 to 100000).
-    #[arg(long, conflicts_with = "joints", allow_negative_numbers = true)]
+    #[arg(long, conflicts_with = "joints", allow_hyphen_values = true)]
     blocks: Option<usize>,
     /// Explicit joint angles in radians, comma-separated, increasing, within the springings.
-    #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     joints: Option<Vec<f64>>,
     /// Where self-weight acts.
     #[arg(long, value_enum, default_value = "centreline")]

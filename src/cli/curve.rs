@@ -14,13 +14,13 @@ pub(crate) struct CurveArgs {
     #[command(flatten)]
     arch: ArchArgs,
     /// Smallest mu (default: mu_ms (1 + 1e-6), just above the least friction admitting equilibrium).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     mu_min: Option<f64>,
     /// Largest mu (default: 10 * mu_min).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     mu_max: Option<f64>,
     /// Number of samples (1 to 100000).
-    #[arg(long, default_value_t = 20, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 20, allow_hyphen_values = true)]
     points: usize,
     /// Print one JSON document instead of tables.
     #[arg(long)]

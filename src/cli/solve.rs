@@ -12,7 +12,7 @@ pub(crate) struct SolveArgs {
     #[command(flatten)]
     arch: ArchArgs,
     /// Friction coefficient mu = tan(phi) > 0; `inf` for no sliding.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     mu: f64,
     /// List every pattern tried and why it was kept or rejected.
     #[arg(long)]

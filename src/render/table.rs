@@ -7,6 +7,22 @@ use crate::limit_curve::CurvePoint;
 use std::f64::consts::PI;
 use std::fmt::Write;
 
+/// `v` with `digits` significant digits: fixed-point where that is readable
+/// (1e-3 ≤ |v| < 1e7), scientific otherwise, so that small thicknesses of shallow arches
+/// keep their digits.
+pub fn sig(v: f64, digits: usize) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let e = v.abs().log10().floor() as i32;
+    if (-3..7).contains(&e) {
+        let decimals = (digits as i32 - 1 - e).max(0) as usize;
+        format!("{v:.decimals$}")
+    } else {
+        format!("{:.*e}", digits - 1, v)
+    }
+}
+
 /// Formats μ (∞ for infinite friction).
 pub fn fmt_mu(mu: f64) -> String {
     if mu.is_infinite() {
@@ -103,12 +119,12 @@ pub fn solve(sol: &Solution, explain: bool) -> String {
     );
     match &sol.outcome {
         Outcome::Limit(ls) => {
-            let _ = writeln!(s, "least thickness     eta* = t/r = {:.12}", ls.eta);
+            let _ = writeln!(s, "least thickness     eta* = t/r = {}", sig(ls.eta, 12));
             if ls.eta_static < ls.eta {
                 let _ = writeln!(
                     s,
-                    "note                the least admissible state (eta = {:.12}) has no mechanism\n                    without dilatancy: the limit state lies above it (non-associative gap)",
-                    ls.eta_static
+                    "note                the least admissible state (eta = {}) has no mechanism\n                    without dilatancy: the limit state lies above it (non-associative gap)",
+                    sig(ls.eta_static, 12)
                 );
             }
             let _ = writeln!(
@@ -125,8 +141,8 @@ pub fn solve(sol: &Solution, explain: bool) -> String {
             s.push_str(&pattern_table(&sol.arch, &ls.pattern, None));
             let _ = writeln!(
                 s,
-                "reactions at the right springing (units of gamma t d r, r^2):\n  h = {:.12}   v = {:.12}   w = {:.12}",
-                ls.x[0], ls.x[1], ls.x[2]
+                "reactions at the right springing (units of gamma t d r, r^2):\n  h = {}   v = {}   w = {}",
+                sig(ls.x[0], 12), sig(ls.x[1], 12), sig(ls.x[2], 12)
             );
             let m = &ls.mechanism;
             let _ = writeln!(
@@ -148,8 +164,9 @@ pub fn solve(sol: &Solution, explain: bool) -> String {
             );
             let _ = writeln!(
                 s,
-                "        LP bracket of eta*: [{:.12}, {:.12}]",
-                ls.bracket.0, ls.bracket.1
+                "        LP bracket of eta*: [{}, {}]",
+                sig(ls.bracket.0, 12),
+                sig(ls.bracket.1, 12)
             );
         }
         Outcome::NoEquilibrium { reason, .. } => {
@@ -165,7 +182,7 @@ pub fn solve(sol: &Solution, explain: bool) -> String {
         } => {
             let _ = writeln!(
                 s,
-                "unresolved: {reason}; eta* lies in [{eta_lo:.12}, {eta_hi:.12}]"
+                "unresolved: {reason}; eta* lies in [{}, {}]", sig(*eta_lo, 12), sig(*eta_hi, 12)
             );
         }
     }
@@ -177,7 +194,7 @@ pub fn solve(sol: &Solution, explain: bool) -> String {
                 .iter()
                 .map(|k| format!("{}@{:.6}", short(k), k.beta))
                 .collect();
-            let eta = c.eta.map_or("-".to_string(), |e| format!("{e:.12}"));
+            let eta = c.eta.map_or("-".to_string(), |e| sig(e, 12));
             let _ = writeln!(s, "  [{}] eta = {eta}: {}", joints.join(" "), c.verdict);
         }
     }
@@ -199,7 +216,7 @@ pub fn curve(arch: &Arch, mu_ms: Option<f64>, points: &[CurvePoint]) -> String {
     let _ = writeln!(s, "{}", describe_arch(arch));
     match mu_ms {
         Some(m) => {
-            let _ = writeln!(s, "least friction for equilibrium mu_ms = {m:.12}");
+            let _ = writeln!(s, "least friction for equilibrium mu_ms = {}", sig(m, 12));
         }
         None => {
             let _ = writeln!(s, "no finite friction coefficient admits equilibrium");
@@ -221,10 +238,10 @@ pub fn curve(arch: &Arch, mu_ms: Option<f64>, points: &[CurvePoint]) -> String {
                     .collect();
                 let _ = writeln!(
                     s,
-                    "{:>16}  {:>10.5}  {:>16.12}  {:<28} {}",
+                    "{:>16}  {:>10.5}  {:>16}  {:<28} {}",
                     fmt_mu(p.mu),
                     phi,
-                    ls.eta,
+                    sig(ls.eta, 12),
                     ls.mode.name(),
                     joints.join(" ")
                 );
@@ -252,10 +269,12 @@ pub fn curve(arch: &Arch, mu_ms: Option<f64>, points: &[CurvePoint]) -> String {
             Outcome::Unresolved { eta_lo, eta_hi, .. } => {
                 let _ = writeln!(
                     s,
-                    "{:>16}  {:>10.5}  {:>16}  unresolved in [{eta_lo:.10}, {eta_hi:.10}]",
+                    "{:>16}  {:>10.5}  {:>16}  unresolved in [{}, {}]",
                     fmt_mu(p.mu),
                     phi,
-                    "?"
+                    "?",
+                    sig(*eta_lo, 10),
+                    sig(*eta_hi, 10)
                 );
             }
         }
@@ -295,7 +314,8 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
         Some(m) => {
             let _ = writeln!(
                 s,
-                "least friction for equilibrium mu_ms = {m:.12} (friction angle {:.6} deg)",
+                "least friction for equilibrium mu_ms = {} (friction angle {:.6} deg)",
+                sig(m, 12),
                 m.atan().to_degrees()
             );
         }
@@ -320,7 +340,7 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
     );
     let _ = writeln!(
         s,
-        "  {:<30} {:>15} {:>15}   {:>15} {:>15}   joints (kind@beta deg)",
+        "  {:<30} {:>15} {:>15}   {:>15} {:>15}   pattern (kind@beta deg)",
         "mode", "mu from", "mu to", "eta from", "eta to"
     );
     for b in &curve.branches {
@@ -355,10 +375,10 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
         let f = |v: Option<f64>| v.map_or("-".to_string(), |b| format!("{b:.10}"));
         let _ = writeln!(
             s,
-            "  {:>16} {:>11} {:>16.12} {:>14} {:>14}  {:<52} {}",
+            "  {:>16} {:>11} {:>16} {:>14} {:>14}  {:<52} {}",
             fmt_opt_inf(c.mu, 12),
             fmt_opt_inf(c.mu.atan().to_degrees(), 6),
-            c.eta,
+            sig(c.eta, 12),
             f(bn),
             f(bt),
             format!("{} / {}", c.between[0].name(), c.between[1].name()),
@@ -382,14 +402,21 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
             .collect();
         let _ = writeln!(
             s,
-            "  {:>16} active: {} [{}]",
+            "  {:>16} corner pattern: {}\n  {:>16} named by its own pattern: {}",
             "",
             joints.join(" "),
+            "",
             c.mode.name()
         );
     }
     for (mu, m) in &curve.unresolved {
         let _ = writeln!(s, "  unresolved sample at mu = {mu}: {m}");
     }
+    s.push_str(LEGEND);
     s
 }
+
+/// The notation of every pattern column.
+pub const LEGEND: &str = "\nE: hinge at the extrados, I: hinge at the intrados, S+/S-: sliding along \
+the (radial) joint, the part beyond it (larger beta) moving outwards/inwards, (s): at a springing; \
+angles from the horizontal through the centre.\n";
