@@ -145,10 +145,7 @@ impl Io<'_> {
     pub(crate) fn bad_input(&mut self, e: &InputError) -> Exit {
         self.err(&format!("error: {e}\n"));
         if self.json {
-            self.out(&to_json(&json::ErrorJson {
-                status: "bad_input",
-                message: e.to_string(),
-            }));
+            self.out(&to_json(&json::ErrorJson::new(e.to_string())));
         }
         Exit::BadInput
     }

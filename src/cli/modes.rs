@@ -2,7 +2,7 @@
 
 use super::arch_args::ArchArgs;
 use super::{to_json, Exit, Io};
-use crate::limit_curve::trace;
+use crate::limit_curve::{trace, CurveStatus};
 use crate::render::{json, table};
 use crate::settings::Settings;
 use clap::Args;
@@ -27,9 +27,8 @@ pub(crate) fn run(a: ModesArgs, settings: &Settings, io: &mut Io) -> Exit {
     } else {
         io.out(&table::modes(&arch, &curve));
     }
-    if curve.branches.is_empty() {
-        Exit::NoAnswer
-    } else {
-        Exit::Answered
+    match curve.status() {
+        CurveStatus::Traced => Exit::Answered,
+        _ => Exit::NoAnswer,
     }
 }

@@ -69,19 +69,52 @@ pub struct Corner {
     pub residual: f64,
 }
 
+/// What [`trace`] found, in one word.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CurveStatus {
+    /// At least one branch of the limit curve.
+    Traced,
+    /// No thickness η < 2 stands at any friction.
+    NoEquilibrium,
+    /// Every sampled friction admits a state at vanishing thickness: the arch stands at
+    /// every η > 0, there is no limit curve (e.g. a discrete arch of at most three joints).
+    NoCollapse,
+    /// No branch, and some samples could not be resolved.
+    Unresolved,
+}
+
 /// The limit curve of an arch.
 #[derive(Debug, Clone)]
 pub struct LimitCurve {
     /// μ_ms, below which no thickness stands (`None`: no finite μ suffices).
-    pub mu_min: Option<f64>,
+    pub mu_ms: Option<f64>,
     /// Branches, by decreasing μ, the vertical purely-sliding branch last.
     pub branches: Vec<Branch>,
     /// Corners, by decreasing μ.
     pub corners: Vec<Corner>,
     /// Samples that could not be resolved (μ and the reason).
     pub unresolved: Vec<(f64, String)>,
+    /// Sampled μ at which the arch stands at every η > 0 (no collapse to find).
+    pub no_collapse: Vec<f64>,
+    /// Sampled μ at which no thickness stands.
+    pub no_equilibrium: Vec<f64>,
     /// Number of η*(μ) solves used.
     pub solves: usize,
+}
+
+impl LimitCurve {
+    /// The curve's status: traced, or why there is no branch.
+    pub fn status(&self) -> CurveStatus {
+        if !self.branches.is_empty() {
+            CurveStatus::Traced
+        } else if !self.unresolved.is_empty() {
+            CurveStatus::Unresolved
+        } else if !self.no_collapse.is_empty() {
+            CurveStatus::NoCollapse
+        } else {
+            CurveStatus::NoEquilibrium
+        }
+    }
 }
 
 /// The friction an admissible state x at thickness η needs: max |T|/N over the arch
@@ -115,28 +148,34 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
         settings,
         solves: 0,
         unresolved: Vec::new(),
+        no_collapse: Vec::new(),
+        no_equilibrium: Vec::new(),
     };
     let fl: Option<FrictionLimit> = friction_limit(arch, settings).ok().flatten();
     let Some(fl) = fl else {
         return LimitCurve {
-            mu_min: None,
+            mu_ms: None,
             branches: vec![],
             corners: vec![],
             unresolved: tr.unresolved,
+            no_collapse: tr.no_collapse,
+            no_equilibrium: tr.no_equilibrium,
             solves: 0,
         };
     };
     let inf = tr.sample(f64::INFINITY);
-    if inf.is_none() && tr.unresolved.len() == 1 {
+    if inf.is_none() && tr.no_equilibrium.len() == 1 {
         // Admissibility is monotone in μ: if nothing stands at μ = ∞, nothing stands.
         if let Ok(Outcome::NoEquilibrium { .. }) =
             solve(arch, f64::INFINITY, settings).map(|s| s.outcome)
         {
             return LimitCurve {
-                mu_min: Some(fl.mu),
+                mu_ms: Some(fl.mu),
                 branches: vec![],
                 corners: vec![],
                 unresolved: tr.unresolved,
+                no_collapse: tr.no_collapse,
+                no_equilibrium: tr.no_equilibrium,
                 solves: tr.solves + 1,
             };
         }
@@ -247,10 +286,12 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
         });
     }
     LimitCurve {
-        mu_min: Some(fl.mu),
+        mu_ms: Some(fl.mu),
         branches,
         corners,
         unresolved: tr.unresolved,
+        no_collapse: tr.no_collapse,
+        no_equilibrium: tr.no_equilibrium,
         solves: tr.solves,
     }
 }

@@ -30,6 +30,8 @@ pub(super) struct Tracer<'a> {
     pub(super) settings: &'a Settings,
     pub(super) solves: usize,
     pub(super) unresolved: Vec<(f64, String)>,
+    pub(super) no_collapse: Vec<f64>,
+    pub(super) no_equilibrium: Vec<f64>,
 }
 
 impl Tracer<'_> {
@@ -40,9 +42,15 @@ impl Tracer<'_> {
                 sig: signature(&ls.pattern),
                 ls,
             }),
-            Ok(Outcome::NoEquilibrium { reason, .. })
-            | Ok(Outcome::Unresolved { reason, .. })
-            | Ok(Outcome::NoCollapse { reason }) => {
+            Ok(Outcome::NoCollapse { .. }) => {
+                self.no_collapse.push(mu);
+                None
+            }
+            Ok(Outcome::NoEquilibrium { .. }) => {
+                self.no_equilibrium.push(mu);
+                None
+            }
+            Ok(Outcome::Unresolved { reason, .. }) => {
                 self.unresolved.push((mu, reason));
                 None
             }

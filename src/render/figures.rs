@@ -32,7 +32,7 @@ fn label(arch: &Arch) -> String {
 
 fn curve_of(arch: &Arch, settings: &Settings) -> Option<CurveData> {
     let c = trace(arch, settings);
-    let mu_ms = c.mu_min?;
+    let mu_ms = c.mu_ms?;
     let top = c
         .corners
         .iter()

@@ -4,7 +4,7 @@
 use crate::arch::{Arch, JointLayout};
 use crate::contact::Contact;
 use crate::limit::{Candidate, LimitState, Outcome, Solution};
-use crate::limit_curve::CurvePoint;
+use crate::limit_curve::{CurvePoint, CurveStatus};
 use serde::Serialize;
 
 /// The `version` of every JSON document the command line prints: bumped on a breaking
@@ -84,6 +84,7 @@ struct CandidateJson {
 /// The `solve --json` document.
 #[derive(Debug, Serialize)]
 pub struct SolveJson {
+    version: u32,
     status: &'static str,
     arch: ArchJson,
     mu: f64,
@@ -162,6 +163,7 @@ fn limit_parts(ls: &LimitState) -> (Vec<Contact>, Reactions, MechanismJson, Chec
 /// Builds the `solve --json` document; `explain` adds the enumeration log.
 pub fn solve(sol: &Solution, explain: bool) -> SolveJson {
     let mut doc = SolveJson {
+        version: JSON_VERSION,
         status: status(&sol.outcome),
         arch: ArchJson::new(&sol.arch),
         mu: sol.mu,
@@ -233,8 +235,11 @@ struct CurveRow {
 /// The `curve --json` document.
 #[derive(Debug, Serialize)]
 pub struct CurveJson {
+    version: u32,
+    status: &'static str,
     arch: ArchJson,
-    mu_min: Option<f64>,
+    /// μ_ms, the least friction at which some thickness stands.
+    mu_ms: Option<f64>,
     points: Vec<CurveRow>,
 }
 
@@ -242,8 +247,10 @@ pub struct CurveJson {
 /// equilibrium (`None` when no finite μ does).
 pub fn curve(arch: &Arch, mu_ms: Option<f64>, points: &[CurvePoint]) -> CurveJson {
     CurveJson {
+        version: JSON_VERSION,
+        status: "ok",
         arch: ArchJson::new(arch),
-        mu_min: mu_ms,
+        mu_ms,
         points: points
             .iter()
             .map(|p| {
@@ -275,10 +282,22 @@ pub fn curve(arch: &Arch, mu_ms: Option<f64>, points: &[CurvePoint]) -> CurveJso
 /// The document printed for bad input under `--json`.
 #[derive(Debug, Serialize)]
 pub struct ErrorJson {
-    /// Always `"bad_input"`.
-    pub status: &'static str,
+    version: u32,
+    /// Always `"error"`.
+    status: &'static str,
     /// The message naming the argument and its valid range.
-    pub message: String,
+    message: String,
+}
+
+impl ErrorJson {
+    /// The error document for `message`.
+    pub fn new(message: String) -> ErrorJson {
+        ErrorJson {
+            version: JSON_VERSION,
+            status: "error",
+            message,
+        }
+    }
 }
 
 #[derive(Debug, Serialize)]
@@ -297,7 +316,7 @@ struct CornerJson {
     mu: f64,
     friction_angle_deg: f64,
     eta: f64,
-    joints: Vec<Contact>,
+    pattern: Vec<Contact>,
     between: [&'static str; 2],
     mode: &'static str,
     exact: bool,
@@ -313,16 +332,33 @@ struct UnresolvedJson {
 /// The `modes --json` document (`null` stands for +∞).
 #[derive(Debug, Serialize)]
 pub struct ModesJson {
+    version: u32,
+    status: &'static str,
     arch: ArchJson,
     branches: Vec<BranchJson>,
     corners: Vec<CornerJson>,
+    /// The least friction at which the arch stands at some thickness (μ_ms); the same
+    /// value as `mu_ms`, under the name the contract gives it.
     mu_min: Option<f64>,
+    /// μ_ms.
+    mu_ms: Option<f64>,
     unresolved: Vec<UnresolvedJson>,
+    /// Sampled μ at which the arch stands at every thickness (no collapse).
+    no_collapse: Vec<f64>,
+    /// Sampled μ at which no thickness stands.
+    no_equilibrium: Vec<f64>,
 }
 
 /// Builds the `modes --json` document.
 pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> ModesJson {
     ModesJson {
+        version: JSON_VERSION,
+        status: match curve.status() {
+            CurveStatus::Traced => "ok",
+            CurveStatus::NoEquilibrium => "no_equilibrium",
+            CurveStatus::NoCollapse => "no_collapse",
+            CurveStatus::Unresolved => "unresolved",
+        },
         arch: ArchJson::new(arch),
         branches: curve
             .branches
@@ -344,14 +380,17 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> ModesJson {
                 mu: c.mu,
                 friction_angle_deg: c.mu.atan().to_degrees(),
                 eta: c.eta,
-                joints: c.joints.clone(),
+                pattern: c.joints.clone(),
                 between: c.between.map(|m| m.name()),
                 mode: c.mode.name(),
                 exact: c.exact,
                 residual: c.residual,
             })
             .collect(),
-        mu_min: curve.mu_min,
+        mu_min: curve.mu_ms,
+        mu_ms: curve.mu_ms,
+        no_collapse: curve.no_collapse.clone(),
+        no_equilibrium: curve.no_equilibrium.clone(),
         unresolved: curve
             .unresolved
             .iter()

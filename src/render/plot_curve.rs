@@ -32,7 +32,7 @@ pub fn curve_data(
     n: usize,
     settings: &crate::settings::Settings,
 ) -> Option<CurveData> {
-    let mu_ms = curve.mu_min?;
+    let mu_ms = curve.mu_ms?;
     let mut branches = Vec::new();
     for b in &curve.branches {
         if b.mode == CollapseMode::PurelySliding {

@@ -3,7 +3,7 @@
 use crate::arch::{Arch, JointLayout};
 use crate::contact::Contact;
 use crate::limit::{Outcome, Solution};
-use crate::limit_curve::CurvePoint;
+use crate::limit_curve::{CurvePoint, CurveStatus};
 use std::f64::consts::PI;
 use std::fmt::Write;
 
@@ -182,7 +182,9 @@ pub fn solve(sol: &Solution, explain: bool) -> String {
         } => {
             let _ = writeln!(
                 s,
-                "unresolved: {reason}; eta* lies in [{}, {}]", sig(*eta_lo, 12), sig(*eta_hi, 12)
+                "unresolved: {reason}; eta* lies in [{}, {}]",
+                sig(*eta_lo, 12),
+                sig(*eta_hi, 12)
             );
         }
     }
@@ -310,7 +312,7 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
     use crate::contact::ContactKind;
     let mut s = String::new();
     let _ = writeln!(s, "{}", describe_arch(arch));
-    match curve.mu_min {
+    match curve.mu_ms {
         Some(m) => {
             let _ = writeln!(
                 s,
@@ -324,15 +326,37 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
             return s;
         }
     }
-    if curve.branches.is_empty() {
-        let _ = writeln!(
-            s,
-            "no branch: no thickness eta < 2 admits equilibrium at any friction (the opening is too large for the arch to stand)"
-        );
-        for (mu, m) in &curve.unresolved {
-            let _ = writeln!(s, "  at mu = {}: {m}", fmt_mu(*mu));
+    match curve.status() {
+        CurveStatus::Traced => {}
+        CurveStatus::NoEquilibrium => {
+            let _ = writeln!(
+                s,
+                "no branch: no thickness eta < 2 admits equilibrium at any friction (the opening is too large for the arch to stand)"
+            );
+            return s;
         }
-        return s;
+        CurveStatus::NoCollapse => {
+            let _ = writeln!(
+                s,
+                "no collapse: at every sampled friction from mu = {} to inf a state is admissible at vanishing thickness, so the arch stands at every eta > 0",
+                fmt_mu(curve.no_collapse.iter().copied().fold(f64::INFINITY, f64::min))
+            );
+            if let Some(m) = curve.no_equilibrium.iter().copied().reduce(f64::max) {
+                let _ = writeln!(
+                    s,
+                    "  (no thickness stands at the sampled mu <= {})",
+                    fmt_mu(m)
+                );
+            }
+            return s;
+        }
+        CurveStatus::Unresolved => {
+            let _ = writeln!(s, "no branch could be traced:");
+            for (mu, m) in &curve.unresolved {
+                let _ = writeln!(s, "  at mu = {}: {m}", fmt_mu(*mu));
+            }
+            return s;
+        }
     }
     let _ = writeln!(
         s,
@@ -417,6 +441,7 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
 }
 
 /// The notation of every pattern column.
-pub const LEGEND: &str = "\nE: hinge at the extrados, I: hinge at the intrados, S+/S-: sliding along \
+pub const LEGEND: &str =
+    "\nE: hinge at the extrados, I: hinge at the intrados, S+/S-: sliding along \
 the (radial) joint, the part beyond it (larger beta) moving outwards/inwards, (s): at a springing; \
 angles from the horizontal through the centre.\n";

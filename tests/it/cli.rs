@@ -113,7 +113,8 @@ fn curve_rows() {
     let etas: Vec<f64> = pts.iter().map(|p| p["eta"].as_f64().unwrap()).collect();
     assert!(etas.windows(2).all(|w| w[0] >= w[1]), "{etas:?}");
     assert_eq!(pts[3]["mode"], "purely_rotational");
-    assert!((v["mu_min"].as_f64().unwrap() - 0.30921544).abs() < 5e-9);
+    assert!((v["mu_ms"].as_f64().unwrap() - 0.30921544).abs() < 5e-9);
+    assert_eq!(v["status"], "ok");
 }
 
 /// Every argument's bad values: exit 2 and a message naming the argument and the range.
@@ -209,7 +210,8 @@ fn bad_input_table() {
 fn bad_input_json_document() {
     let (v, code) = json_of(&["solve", "--alpha", "0", "--mu", "-2"]);
     assert_eq!(code, 2);
-    assert_eq!(v["status"], "bad_input");
+    assert_eq!(v["status"], "error");
+    assert_eq!(v["version"], 2);
     assert!(v["message"].as_str().unwrap().contains("--mu"));
 }
 

@@ -179,7 +179,7 @@ fn within_1e_12_of_corners() {
                     // solver says so
                     Outcome::NoEquilibrium { .. } | Outcome::Unresolved { .. } => {
                         assert!(
-                            (c.mu - curve.mu_min.unwrap()).abs() <= 1e-9 * c.mu,
+                            (c.mu - curve.mu_ms.unwrap()).abs() <= 1e-9 * c.mu,
                             "alpha {alpha}: no answer at {mu}"
                         )
                     }

@@ -62,7 +62,7 @@ fn published_corners() {
         assert_digits("eta_rm", rm.eta, eta_rm, 8);
         assert_digits("beta_N at mu_rm", right_interior(rm, false), bn_rm, 8);
         assert_digits("mu_ms", ms.mu, mu_ms, 8);
-        assert_digits("mu_min", c.mu_min.unwrap(), mu_ms, 8);
+        assert_digits("mu_min", c.mu_ms.unwrap(), mu_ms, 8);
         assert_digits("eta_ms", ms.eta, eta_ms, 8);
         assert_digits("beta_N at mu_ms", right_interior(ms, false), bn_ms, 8);
         assert_digits("beta_T at mu_ms", right_interior(ms, true), bt_ms, 8);
@@ -237,8 +237,21 @@ fn opening_too_large_has_no_branch() {
     let (v, code) = json_of(&["modes", "--alpha", "1.3"]);
     assert_eq!(code, 1);
     assert!(v["branches"].as_array().unwrap().is_empty());
-    assert!(v["unresolved"][0]["message"]
-        .as_str()
-        .unwrap()
-        .contains("no thickness eta < 2"));
+    assert_eq!(v["status"], "no_equilibrium");
+    assert!(v["unresolved"].as_array().unwrap().is_empty());
+    assert_eq!(v["no_equilibrium"].as_array().unwrap().len(), 1);
+}
+
+/// A single voussoir is statically determinate: it stands at every thickness, and `modes`
+/// says so (as `solve` does), not "no thickness stands".
+#[test]
+fn one_voussoir_has_no_collapse() {
+    let (v, code) = json_of(&["modes", "--alpha", "0", "--blocks", "1"]);
+    assert_eq!(code, 1);
+    assert_eq!(v["status"], "no_collapse");
+    assert!(v["branches"].as_array().unwrap().is_empty());
+    assert!(!v["no_collapse"].as_array().unwrap().is_empty());
+    let (s, code) = json_of(&["solve", "--alpha", "0", "--blocks", "1", "--mu", "0.5"]);
+    assert_eq!(code, 1);
+    assert_eq!(s["status"], "no_collapse");
 }
