@@ -158,12 +158,22 @@ where
     I: IntoIterator<Item = T>,
     T: Into<OsString> + Clone,
 {
-    let cli = match Cli::try_parse_from(args) {
+    let args: Vec<OsString> = args.into_iter().map(Into::into).collect();
+    let cli = match Cli::try_parse_from(&args) {
         Ok(c) => c,
         Err(e) => {
             let text = e.render().to_string();
             return if e.use_stderr() {
                 emit(err, &text);
+                if args.iter().any(|a| a == "--json") {
+                    // clap's first paragraph: "error: ..." and any indented continuation
+                    let message: Vec<&str> = text
+                        .lines()
+                        .take_while(|l| !l.trim().is_empty())
+                        .map(|l| l.trim().trim_start_matches("error: "))
+                        .collect();
+                    emit(out, &to_json(&json::ErrorJson::new(message.join(" "))));
+                }
                 Exit::BadInput.code()
             } else {
                 emit(out, &text);

@@ -206,6 +206,30 @@ fn bad_input_table() {
     }
 }
 
+/// Errors found while parsing the arguments also give a JSON document under `--json`.
+#[test]
+fn parse_error_json_document() {
+    let (v, code) = json_of(&["solve", "--alpha", "0", "--mu", "abc"]);
+    assert_eq!(code, 2);
+    assert_eq!(v["status"], "error");
+    assert!(v["message"].as_str().unwrap().contains("--mu"), "{v}");
+    let (v, code) = json_of(&["solve", "--alpha", "0"]);
+    assert_eq!(code, 2);
+    assert!(v["message"].as_str().unwrap().contains("--mu"), "{v}");
+}
+
+/// Negative values are values, not flags.
+#[test]
+fn negative_values_accepted() {
+    let (v, code) = json_of(&[
+        "solve", "--beta-right", "-0.4", "--beta-left", "3.64", "--joints", "-0.4,0,1,2,3.64", "--mu", "inf",
+    ]);
+    assert_eq!(code, 0, "{v}");
+    let (v, code) = json_of(&["solve", "--alpha", "0", "--mu", "-inf"]);
+    assert_eq!(code, 2);
+    assert!(v["message"].as_str().unwrap().contains("--mu"), "{v}");
+}
+
 #[test]
 fn bad_input_json_document() {
     let (v, code) = json_of(&["solve", "--alpha", "0", "--mu", "-2"]);
