@@ -25,7 +25,8 @@
 //! | [`limit`] | §5 η*(μ): bracket, enumerate, verify; the solution types |
 //! | [`friction`] | §6 the friction-only problem, μ_ms |
 //! | [`limit_curve`] | §5 the η–μ curve: branches and exact corners; η*(μ) sampled over μ |
-//! | [`mode`] | §5 collapse-mode names from the pattern |
+//! | [`assess`] | a given thickness: factors of safety, μ_min(η), the safest state |
+//! | [`collapse_mode`] | §5 collapse-mode names from the pattern |
 //! | [`certificate`] | certificates (format, certify) and their independent re-check (verify, interval arithmetic) |
 //! | [`thrust_line`], [`margin_map`] | numerics for the pictures |
 //! | [`contact`], [`settings`] | vocabulary (contacts, locations) and every tolerance |
@@ -43,6 +44,7 @@
 
 pub mod admissibility;
 pub mod arch;
+pub mod assess;
 pub mod certificate;
 #[cfg(feature = "cli")]
 pub mod cli;

@@ -6,6 +6,7 @@
 //! the description of the arch that every command shares.
 
 mod arch_args;
+mod assess;
 mod certify;
 mod curve;
 mod modes;
@@ -104,6 +105,11 @@ enum Command {
         #[command(subcommand)]
         figure: plot::Figure,
     },
+    /// A given thickness at a given friction: does it stand, and with what margins (geometric and friction factors of safety, the safest line of thrust).
+    #[command(
+        after_help = "Example:\n  arch-enum assess --alpha 0 --eta 0.2 --mu 0.35\n  arch-enum assess --alpha-deg 30 --eta 0.5 --mu 0.9 --radius 5 --depth 1 --density 2000"
+    )]
+    Assess(assess::AssessArgs),
     /// eta*(mu) sampled at geometrically spaced mu, one row per mu, with the mode.
     #[command(
         after_help = "Example:\n  arch-enum curve --alpha 0 --points 10\n  arch-enum curve --alpha 1 --mu-min 1 --mu-max 100 --json"
@@ -188,6 +194,7 @@ where
         Command::Certify(a) => a.json,
         Command::Verify(a) => a.json,
         Command::Curve(a) => a.json,
+        Command::Assess(a) => a.json,
         Command::Plot { .. } => false,
     };
     let mut io = Io { out, err, json };
@@ -198,6 +205,7 @@ where
         Command::Verify(a) => certify::run_verify(a, &mut io),
         Command::Plot { figure } => plot::run(figure, &settings, &mut io),
         Command::Curve(a) => curve::run(a, &settings, &mut io),
+        Command::Assess(a) => assess::run(a, &settings, &mut io),
     };
     exit.code()
 }

@@ -38,7 +38,7 @@ impl Progress {
         let total = total.max(1);
         let mut err = std::io::stderr().lock();
         if self.tty {
-            if done % 16 != 0 && done != total {
+            if !done.is_multiple_of(16) && done != total {
                 return;
             }
             let bar = 30 * done / total;

@@ -222,7 +222,15 @@ fn parse_error_json_document() {
 #[test]
 fn negative_values_accepted() {
     let (v, code) = json_of(&[
-        "solve", "--beta-right", "-0.4", "--beta-left", "3.64", "--joints", "-0.4,0,1,2,3.64", "--mu", "inf",
+        "solve",
+        "--beta-right",
+        "-0.4",
+        "--beta-left",
+        "3.64",
+        "--joints",
+        "-0.4,0,1,2,3.64",
+        "--mu",
+        "inf",
     ]);
     assert_eq!(code, 0, "{v}");
     let (v, code) = json_of(&["solve", "--alpha", "0", "--mu", "-inf"]);

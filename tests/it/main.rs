@@ -1,5 +1,6 @@
 //! The one integration-test binary (one link on 2 cores); modules by subject.
 
+mod assess;
 mod certificates;
 mod cli;
 mod dense_grid;
