@@ -52,7 +52,8 @@ pub(crate) fn run(a: CurveArgs, settings: &Settings, io: &mut Io) -> Exit {
         Ok(g) => g,
         Err(e) => return io.bad_input(&e),
     };
-    let pts = match sample(&arch, &grid, settings) {
+    let bar = super::progress::Progress::new("curve");
+    let pts = match sample(&arch, &grid, settings, &|done, total| bar.update(done, total)) {
         Ok(p) => p,
         Err(e) => return io.bad_input(&e),
     };

@@ -52,18 +52,19 @@ pub fn mu_grid(mu_min: f64, mu_max: f64, points: usize) -> Result<Vec<f64>, Inpu
         .collect())
 }
 
-/// Solves η*(μ) at every μ of `mus`.
+/// Solves η*(μ) at every μ of `mus`; `progress(done, total)` is called after each.
 pub fn sample(
     arch: &Arch,
     mus: &[f64],
     settings: &Settings,
+    progress: &dyn Fn(usize, usize),
 ) -> Result<Vec<CurvePoint>, InputError> {
     mus.iter()
-        .map(|&mu| {
-            Ok(CurvePoint {
-                mu,
-                outcome: solve(arch, mu, settings)?.outcome,
-            })
+        .enumerate()
+        .map(|(i, &mu)| {
+            let outcome = solve(arch, mu, settings)?.outcome;
+            progress(i + 1, mus.len());
+            Ok(CurvePoint { mu, outcome })
         })
         .collect()
 }
