@@ -112,8 +112,11 @@ fn find_farkas(
     })
 }
 
-/// Builds a certificate for `arch` at friction `mu` with relative gap target `gap`
-/// (e.g. 1e-12). The certificate is verified before it is returned.
+/// Builds a certificate for `arch` at friction `mu` with requested relative gap `gap`
+/// (e.g. 1e-12). The certificate is verified before it is returned. When the requested
+/// gap cannot be proved the gap is widened tenfold (up to 1e-4) and the best certificate
+/// found is returned: check [`Certificate::delivers_gap`] to know whether the request
+/// was met.
 pub fn certify(
     arch: &Arch,
     mu: f64,

@@ -222,7 +222,7 @@ fn prove_admissible(
         if let Some(joints) = &model.joints {
             for &b in joints {
                 let v = phi(kind, 0, &model.ntm(I::point(b), x, eta), eta, mu);
-                if !(v.hi <= 0.0) {
+                if v.hi.is_nan() || v.hi > 0.0 {
                     return reject(format!("safe side: {} at the joint beta = {b} is not proved <= 0 (upper bound {:e})", kind.name(), v.hi));
                 }
                 pieces += 1;
@@ -392,7 +392,7 @@ fn prove_farkas(
         .iter()
         .zip(&aff)
         .fold(I::point(0.0), |acc, (yi, (_, ci))| acc + *yi * *ci);
-    if !(c.lo > 0.0) {
+    if c.lo.is_nan() || c.lo <= 0.0 {
         return reject(format!(
             "collapse side: sum y_i phi_i(0) = [{:e}, {:e}] is not proved > 0",
             c.lo, c.hi
@@ -471,7 +471,10 @@ fn model_of(cert: &Certificate) -> Result<Model, Rejection> {
         if js.first() != Some(&a.beta_right) || js.last() != Some(&a.beta_left) {
             return reject("arch: joint_angles must start at beta_right and end at beta_left (the springings are joints)");
         }
-        if let Some(w) = js.windows(2).find(|w| !(w[0] < w[1])) {
+        if let Some(w) = js
+            .windows(2)
+            .find(|w| w[0].is_nan() || w[1].is_nan() || w[1] <= w[0])
+        {
             return reject(format!(
                 "arch: joint_angles must be strictly increasing, found {} then {}",
                 w[0], w[1]
@@ -547,7 +550,7 @@ pub fn verify(cert: &Certificate) -> Result<Report, Rejection> {
     check_finite(cert)?;
     let model = model_of(cert)?;
     if let Some(mu) = cert.mu {
-        if !(mu > 0.0) {
+        if mu.is_nan() || mu <= 0.0 {
             return reject(format!(
                 "mu = {mu}: must be positive (null for infinite friction)"
             ));
@@ -687,7 +690,7 @@ fn check_limit_state(
             b[i] += r * col[i];
         }
         let v = phi(j.kind, 0, &model.ntm(I::point(j.beta), ls.x, eta), eta, mu);
-        if !(v.mid().abs() <= tol * scale) {
+        if v.mid().is_nan() || v.mid().abs() > tol * scale {
             return reject(format!(
                 "limit state: {} at beta = {} is not active (phi = {:e})",
                 j.kind.name(),
