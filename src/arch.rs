@@ -5,7 +5,7 @@
 //! (formulation §2). The right springing is at `beta_right`, the left at
 //! `beta_left > beta_right`; a symmetric arch of opening α has β_R = −α, β_L = π + α.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 use thiserror::Error;
 
@@ -37,7 +37,7 @@ pub enum InputError {
 }
 
 /// How the self-weight of a piece of arch is applied (formulation §3).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum WeightModel {
     /// Uniformly along the centreline (Heyman's assumption; the default).

@@ -1,10 +1,10 @@
 //! A contact: one activation function active at one joint. The vocabulary of patterns.
 
 use crate::arch::Radians;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// Where a joint of a pattern sits.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Location {
     /// At the right or left springing (shoulder joint).
@@ -39,7 +39,7 @@ pub struct Peak {
 }
 
 /// The four activation functions of a joint (formulation §3), each ≤ 0 when admissible.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ContactKind {
     /// φ_E = M − ηN/2: hinge at the extrados (rate ϑ⁺).

@@ -123,7 +123,35 @@ fn d_param(
     }
 }
 
-impl System<'_> {
+impl<'a> System<'a> {
+    /// The system of `contacts` with the given unknowns; `eta` and `mu` are the values of
+    /// the parameters that are not unknowns (and the starting values of those that are).
+    fn new(
+        arch: &'a Arch,
+        contacts: &[Contact],
+        eta: f64,
+        mu: f64,
+        unknowns: Unknowns,
+    ) -> System<'a> {
+        let free: Vec<usize> = (0..contacts.len()).filter(|&i| contacts[i].free).collect();
+        let n_params = if unknowns == Unknowns::EtaMu { 2 } else { 1 };
+        // The friction-only problem has 3 effective unknowns (w does not enter T or N).
+        let needed = match unknowns {
+            Unknowns::Mu => 3,
+            _ => 3 + n_params,
+        };
+        let kkt = unknowns != Unknowns::EtaMu && contacts.len() < needed;
+        System {
+            arch,
+            eta,
+            mu,
+            unknowns,
+            contacts: contacts.to_vec(),
+            free,
+            kkt,
+        }
+    }
+
     fn params(&self) -> &'static [bool] {
         // true = η, false = μ, in the order of the unknown vector
         match self.unknowns {
@@ -262,6 +290,34 @@ impl System<'_> {
     }
 }
 
+/// The residual F(z) and the analytic Jacobian ∂F/∂z (row-major) of the system that
+/// [`solve_system`] solves for `contacts` with the given `unknowns`, at the point
+/// z = (h, v, w, the unknown parameters (η before μ), the free β_i in contact order,
+/// then one KKT multiplier y_i per contact when the system is KKT-completed, i.e. when
+/// `unknowns` is not [`Unknowns::EtaMu`] and there are fewer than 4 contacts (3 for
+/// [`Unknowns::Mu`])). `eta` and `mu` give the parameters that are not unknowns.
+/// Returns `None` when `z` does not have that length. Exposed so that tests can compare
+/// the Jacobian with finite differences of the residual; Newton uses the same code.
+pub fn residual_and_jacobian(
+    arch: &Arch,
+    contacts: &[Contact],
+    eta: f64,
+    mu: f64,
+    unknowns: Unknowns,
+    z: &[f64],
+) -> Option<(Vec<f64>, Vec<Vec<f64>>)> {
+    let sys = System::new(arch, contacts, eta, mu, unknowns);
+    if contacts.is_empty() || z.len() != sys.n_unknowns() {
+        return None;
+    }
+    let mut jac = DMatrix::<f64>::zeros(sys.n_equations(), sys.n_unknowns());
+    let f = sys.eval(z, Some(&mut jac));
+    let rows = (0..jac.nrows())
+        .map(|r| jac.row(r).iter().copied().collect())
+        .collect();
+    Some((f, rows))
+}
+
 fn scale_of(z: &[f64]) -> f64 {
     crate::statics::reaction_scale(&[z[0], z[1], z[2]])
 }
@@ -299,23 +355,8 @@ pub fn solve_system(
     if contacts.is_empty() {
         return Err(NewtonFailure::Empty);
     }
-    let free: Vec<usize> = (0..contacts.len()).filter(|&i| contacts[i].free).collect();
-    let n_params = if unknowns == Unknowns::EtaMu { 2 } else { 1 };
-    // The friction-only problem has 3 effective unknowns (w does not enter T or N).
-    let needed = match unknowns {
-        Unknowns::Mu => 3,
-        _ => 3 + n_params,
-    };
-    let kkt = unknowns != Unknowns::EtaMu && contacts.len() < needed;
-    let sys = System {
-        arch,
-        eta: eta0,
-        mu: mu0,
-        unknowns,
-        contacts: contacts.to_vec(),
-        free,
-        kkt,
-    };
+    let sys = System::new(arch, contacts, eta0, mu0, unknowns);
+    let kkt = sys.kkt;
     let mut z: Vec<f64> = x0.to_vec();
     for &is_eta in sys.params() {
         z.push(if is_eta { eta0 } else { mu0 });

@@ -4,8 +4,7 @@
 use super::format::*;
 use super::verify::{prove_safe_only, verify};
 use crate::arch::{Arch, JointLayout};
-use crate::contact::ContactKind;
-use crate::contact::{Contact, Location};
+use crate::contact::Contact;
 use crate::friction::friction_limit;
 use crate::limit::{solve, Outcome};
 use crate::lp;
@@ -17,7 +16,7 @@ fn spec(arch: &Arch) -> ArchSpec {
     ArchSpec {
         beta_right: arch.beta_right(),
         beta_left: arch.beta_left(),
-        weight: arch.weight().name().into(),
+        weight: arch.weight(),
         joint_angles: match arch.layout() {
             JointLayout::Continuous => None,
             JointLayout::Discrete(j) => Some(j.clone()),
@@ -71,7 +70,7 @@ fn joints_of(contacts: &[Contact], y: &[f64]) -> Vec<CertJoint> {
         .zip(y)
         .map(|(c, &y)| CertJoint {
             beta: c.beta,
-            kind: c.kind.name().into(),
+            kind: c.kind,
             y,
         })
         .collect()
@@ -113,8 +112,11 @@ fn find_farkas(
     })
 }
 
-/// Builds a certificate for `arch` at friction `mu` with relative gap target `gap`
-/// (e.g. 1e-12). The certificate is verified before it is returned.
+/// Builds a certificate for `arch` at friction `mu` with requested relative gap `gap`
+/// (e.g. 1e-12). The certificate is verified before it is returned. When the requested
+/// gap cannot be proved the gap is widened tenfold (up to 1e-4) and the best certificate
+/// found is returned: check [`Certificate::delivers_gap`] to know whether the request
+/// was met.
 pub fn certify(
     arch: &Arch,
     mu: f64,
@@ -165,24 +167,29 @@ fn certify_limit(
     settings: &Settings,
 ) -> Result<Certificate, NotCertified> {
     let mut cert = empty(arch, mu, Claim::LeastThickness);
+    // the pattern in the order of the format: increasing (β, kind), rates alongside
+    let mut joints: Vec<(PatternJoint, f64)> = ls
+        .mechanism
+        .contacts
+        .iter()
+        .zip(&ls.mechanism.rates)
+        .map(|(c, &r)| {
+            (
+                PatternJoint {
+                    beta: c.beta,
+                    kind: c.kind,
+                    at: c.at,
+                },
+                r,
+            )
+        })
+        .collect();
+    joints.sort_by(|a, b| a.0.beta.total_cmp(&b.0.beta).then(a.0.kind.cmp(&b.0.kind)));
     cert.limit_state = Some(LimitStateCert {
         eta: ls.eta,
         x: ls.x,
-        pattern: ls
-            .mechanism
-            .contacts
-            .iter()
-            .map(|c| PatternJoint {
-                beta: c.beta,
-                kind: c.kind.name().into(),
-                at: if c.at == Location::Springing {
-                    "springing".into()
-                } else {
-                    "interior".into()
-                },
-            })
-            .collect(),
-        rates: ls.mechanism.rates.clone(),
+        pattern: joints.iter().map(|(j, _)| j.clone()).collect(),
+        rates: joints.iter().map(|&(_, r)| r).collect(),
         complementarity_residual: ls.mechanism.complementarity,
     });
     // the Farkas pool: active contacts, interior tangencies also as chords β ± δ
@@ -203,7 +210,12 @@ fn certify_limit(
     let mut g = gap.max(1e-15);
     while g <= 1e-4 {
         let eta_hi = ls.eta * (1.0 + 0.5 * g);
-        let eta_lo = ls.eta * (1.0 - 0.5 * g);
+        let mut eta_lo = ls.eta * (1.0 - 0.5 * g);
+        // the gap as computed in floating point must not exceed g (rounding of the two
+        // ends could otherwise push it over by a few ulps)
+        while (eta_hi - eta_lo) / eta_hi > g {
+            eta_lo = eta_lo.next_up();
+        }
         if let Some(x) = safe_state(arch, mu, ls, eta_hi, settings) {
             let mut c = cert.clone();
             c.safe = Some(SafeSide { eta: eta_hi, x });
@@ -264,9 +276,4 @@ fn safe_state(
         return None;
     }
     Some([ls.x[0] + d[0] / k, ls.x[1] + d[1] / k, ls.x[2] + d[2] / k])
-}
-
-/// Convenience: the `ContactKind` of a kind name.
-pub fn mode_of(kind: &str) -> Option<ContactKind> {
-    ContactKind::ALL.into_iter().find(|m| m.name() == kind)
 }

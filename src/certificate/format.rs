@@ -1,6 +1,8 @@
 //! The certificate format (version 1): these serde types are the schema.
 
-use serde::{Deserialize, Serialize};
+pub use crate::arch::WeightModel;
+pub use crate::contact::{ContactKind, Location};
+use serde::{de::Error as _, Deserialize, Deserializer, Serialize};
 
 /// The `format` field of every certificate.
 pub const FORMAT: &str = "arch-enum-certificate";
@@ -24,8 +26,9 @@ pub struct ArchSpec {
     pub beta_right: f64,
     /// Left springing (radians).
     pub beta_left: f64,
-    /// `centreline` or `centroid`.
-    pub weight: String,
+    /// `centreline` or `centroid` (anything else is rejected when read).
+    #[serde(deserialize_with = "field_weight")]
+    pub weight: WeightModel,
     /// The joints of a discrete arch; `null` for a continuous one.
     pub joint_angles: Option<Vec<f64>>,
 }
@@ -44,8 +47,10 @@ pub struct SafeSide {
 pub struct CertJoint {
     /// Joint angle (radians).
     pub beta: f64,
-    /// `hinge_extrados`, `hinge_intrados`, `slide_plus` or `slide_minus`.
-    pub kind: String,
+    /// `hinge_extrados`, `hinge_intrados`, `slide_plus` or `slide_minus` (anything else
+    /// is rejected when read).
+    #[serde(deserialize_with = "field_kind")]
+    pub kind: ContactKind,
     /// Non-negative multiplier (normalised to sum 1).
     pub y: f64,
 }
@@ -64,10 +69,13 @@ pub struct Farkas {
 pub struct PatternJoint {
     /// Joint angle.
     pub beta: f64,
-    /// Activation function.
-    pub kind: String,
+    /// Activation function (`hinge_extrados`, `hinge_intrados`, `slide_plus`,
+    /// `slide_minus`).
+    #[serde(deserialize_with = "field_kind")]
+    pub kind: ContactKind,
     /// `springing` or `interior`.
-    pub at: String,
+    #[serde(deserialize_with = "field_at")]
+    pub at: Location,
 }
 
 /// The limit state (consistency-checked, not proved).
@@ -115,3 +123,43 @@ pub struct Certificate {
 /// Why no certificate could be produced (a result, not bad input).
 #[derive(Debug, Clone, PartialEq)]
 pub struct NotCertified(pub String);
+
+/// Reads a closed-set field, naming the field in the error: serde's own message names the
+/// unknown value and the expected ones, and serde_json appends the line and column.
+fn named<'de, D: Deserializer<'de>, T: Deserialize<'de>>(d: D, field: &str) -> Result<T, D::Error> {
+    T::deserialize(d).map_err(|e| D::Error::custom(format_args!("field `{field}`: {e}")))
+}
+
+fn field_kind<'de, D: Deserializer<'de>>(d: D) -> Result<ContactKind, D::Error> {
+    named(d, "kind")
+}
+
+fn field_at<'de, D: Deserializer<'de>>(d: D) -> Result<Location, D::Error> {
+    named(d, "at")
+}
+
+fn field_weight<'de, D: Deserializer<'de>>(d: D) -> Result<WeightModel, D::Error> {
+    named(d, "weight")
+}
+
+impl Certificate {
+    /// The claimed bracket (η_lo, η_hi) of a least-thickness claim.
+    pub fn bracket(&self) -> Option<(f64, f64)> {
+        match self.claim {
+            Claim::LeastThickness => Some((self.collapse.as_ref()?.eta?, self.safe.as_ref()?.eta)),
+            Claim::NoEquilibrium => None,
+        }
+    }
+
+    /// Whether the certificate delivers a requested relative gap: a least-thickness claim
+    /// when (η_hi − η_lo)/η_hi ≤ `requested` as computed in floating point; a
+    /// no-equilibrium claim always (it has no gap).
+    pub fn delivers_gap(&self, requested: f64) -> bool {
+        match self.claim {
+            Claim::NoEquilibrium => true,
+            Claim::LeastThickness => self
+                .bracket()
+                .is_some_and(|(lo, hi)| (hi - lo) / hi <= requested),
+        }
+    }
+}

@@ -2,28 +2,49 @@
 //! [`verify()`] (no LP, no solver).
 //!
 //! # Format (version 1)
-//! A JSON object (this serde type is the schema; `null` stands for +∞ where noted):
+//! A JSON object (the serde types of [`format`] are the schema; `null` stands for +∞
+//! where noted). Closed sets are enums and anything else is rejected **when read**, with
+//! an error naming the field, the unknown value and the expected ones:
+//! `kind` ∈ {`hinge_extrados`, `hinge_intrados`, `slide_plus`, `slide_minus`},
+//! `at` ∈ {`springing`, `interior`}, `weight` ∈ {`centreline`, `centroid`}.
 //!
 //! | key | meaning |
 //! |---|---|
 //! | `format`, `version` | `"arch-enum-certificate"`, `1` |
 //! | `tool` | the producing tool and version |
-//! | `arch` | `beta_right`, `beta_left` (radians), `weight` (`centreline`/`centroid`), `joint_angles` (null: continuous) |
-//! | `mu` | friction coefficient, `null` = ∞ |
+//! | `arch` | `beta_right` < `beta_left` (radians), `weight`, `joint_angles`: `null` for a continuous arch, else strictly increasing from `beta_right` to `beta_left` |
+//! | `mu` | friction coefficient > 0, `null` = ∞ (then only the hinge kinds exist) |
 //! | `claim` | `least_thickness` or `no_equilibrium` |
-//! | `safe` | `{eta, x: [h, v, w]}`: a state admissible at η_hi over the whole arch (upper bound) |
-//! | `collapse` | `{eta, joints: [{beta, kind, y}]}`: d + 1 contacts whose non-negative Farkas combination rules out every state at η_lo (lower bound); `eta` null for the friction-only problem (d = 2) |
-//! | `limit_state` | `{eta, x, pattern: [{beta, kind, at}], rates}`: the limit state and a mechanism on its pattern |
+//! | `safe` | `{eta, x: [h, v, w]}`: a state admissible at η_hi over the whole arch (upper bound); absent for `no_equilibrium` |
+//! | `collapse` | `{eta, joints: [{beta, kind, y}]}`: d + 1 contacts whose non-negative Farkas combination rules out every state at η_lo (lower bound); `eta` null for the friction-only problem (d = 2, sliding kinds only) |
+//! | `limit_state` | `{eta, x, pattern: [{beta, kind, at}], rates, complementarity_residual}`: the limit state and a mechanism on its pattern, the pattern strictly increasing in (β, kind); absent for `no_equilibrium` |
 //! | `gap`, `gap_relative` | η_hi − η_lo and (η_hi − η_lo)/η_hi |
 //!
+//! Every number must be finite; every joint of `collapse` and `pattern` must lie in
+//! [β_R, β_L], at a listed joint of a discrete arch, with a kind that exists at `mu`;
+//! `at` must be `springing` exactly at β_R and β_L. [`verify()`] rejects anything else,
+//! saying what was wrong, before it proves anything.
+//!
+//! # What is proved
+//! [`verify()`] *proves*, in interval arithmetic with outward rounding, that the safe
+//! state is admissible at η_hi over the whole continuum (or at every listed joint) and
+//! that no state is admissible at η_lo: so the least thickness with a statically
+//! admissible state lies in [η_lo, η_hi] (for `no_equilibrium`: no (h, v) satisfies the
+//! friction conditions at the listed joints, so no thickness stands). The limit state is
+//! only *checked* in floating point ([`verify::LIMIT_STATE_TOL`]): evidence, not proof.
+//! The [`Report`] names the arch, μ and the bracket.
+//!
+//! # How certificates are built
 //! `certify` builds the two sides around the exact limit state: the safe state is the
 //! limit state moved into the interior of the admissible set at η_hi = η*(1 + g/2) by a
 //! small LP on its active contacts (rows scaled by 1/(η_hi − η*) so that HiGHS works with
-//! O(1) numbers); the Farkas contacts are 4-subsets of the active contacts at η_lo =
-//! η*(1 − g/2), with interior tangencies also split into chords β ± δ, chosen by their
-//! float cofactors and then proved by the verifier. If a side cannot be proved at the
-//! requested relative gap g, the gap is widened tenfold (up to 1e-4) and the achieved gap
-//! is what the certificate states.
+//! O(1) numbers); the Farkas contacts are 4-subsets of the active contacts at η_lo ≈
+//! η*(1 − g/2) (raised by ulps until (η_hi − η_lo)/η_hi ≤ g in floating point), with
+//! interior tangencies also split into chords β ± δ, chosen by their float cofactors and
+//! then proved by the verifier. If a side cannot be proved at the requested relative gap
+//! g, the gap is widened tenfold (up to 1e-4) and the best certificate is returned;
+//! [`Certificate::delivers_gap`] says whether the request was met (the command line then
+//! reports `gap_not_reached` and exits 1).
 
 pub mod certify;
 pub mod format;

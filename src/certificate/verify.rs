@@ -15,18 +15,61 @@
 //! * **Limit state**: consistency checks in floating point with stated tolerances
 //!   (B λ = 0, λ ≥ 0, Σ λ = 1, L_e ≥ 0, complementarity) — evidence, not proof.
 
-use super::format::{CertJoint, Certificate, Claim, LimitStateCert, FORMAT, VERSION};
+use super::format::{
+    ArchSpec, CertJoint, Certificate, Claim, ContactKind, LimitStateCert, Location, WeightModel,
+    FORMAT, VERSION,
+};
 use super::interval::{det2, det3, Interval as I};
 use std::f64::consts::PI;
 
 /// Tolerances of the floating-point consistency checks of the limit state.
 pub const LIMIT_STATE_TOL: f64 = 1e-9;
 
-/// What `verify` proved or checked.
+/// What `verify` proved or checked, for which arch and friction.
 #[derive(Debug, Clone)]
 pub struct Report {
-    /// One line per check that passed.
+    /// The claim that was proved.
+    pub claim: Claim,
+    /// μ (`None` = ∞).
+    pub mu: Option<f64>,
+    /// (η_lo, η_hi) of a least-thickness claim; `None` for no equilibrium.
+    pub bracket: Option<(f64, f64)>,
+    /// The arch the proof is about.
+    pub arch: ArchSpec,
+    /// One line per check that passed, each saying whether it was *proved* (interval
+    /// arithmetic) or *checked* (floating point, evidence only).
     pub checks: Vec<String>,
+}
+
+impl Report {
+    /// The arch in words: layout, springings, weight model.
+    pub fn arch_text(&self) -> String {
+        let a = &self.arch;
+        let layout = match &a.joint_angles {
+            None => "continuous".to_string(),
+            Some(j) => format!("discrete ({} joints)", j.len()),
+        };
+        format!(
+            "{layout} arch, beta_right = {}, beta_left = {}, weight {}",
+            a.beta_right,
+            a.beta_left,
+            a.weight.name()
+        )
+    }
+
+    /// The proved statement, in one line.
+    pub fn statement(&self) -> String {
+        let mu = mu_text(self.mu);
+        match self.bracket {
+            Some((lo, hi)) => format!(
+                "proved: for this arch at mu = {mu}, eta* lies in [{lo}, {hi}] (relative gap {:.3e}; eta* = the least thickness with a statically admissible state)",
+                (hi - lo) / hi
+            ),
+            None => format!(
+                "proved: for this arch at mu = {mu}, no thickness stands (no statically admissible state at any eta)"
+            ),
+        }
+    }
 }
 
 /// Why a certificate does not hold.
@@ -53,6 +96,25 @@ struct Ntm {
 }
 
 impl Model {
+    /// A joint angle must be finite, inside [β_R, β_L], and for a discrete arch one of
+    /// its listed joints.
+    fn check_joint(&self, beta: f64, what: &str) -> Result<(), Rejection> {
+        if !(beta.is_finite() && beta >= self.beta_r && beta <= self.beta_l) {
+            return reject(format!(
+                "{what}: beta = {beta} lies outside the arch [beta_right, beta_left] = [{}, {}]",
+                self.beta_r, self.beta_l
+            ));
+        }
+        if let Some(js) = &self.joints {
+            if !js.contains(&beta) {
+                return reject(format!(
+                    "{what}: beta = {beta} is not one of the joint_angles of this discrete arch"
+                ));
+            }
+        }
+        Ok(())
+    }
+
     fn rho(&self, eta: f64) -> I {
         if self.centroid {
             let e = I::point(eta);
@@ -88,32 +150,39 @@ impl Model {
     }
 }
 
-fn phi(kind: &str, k: usize, a: &Ntm, eta: f64, mu: Option<f64>) -> I {
+/// Whether the activation function `kind` exists at friction `mu` (`None` = ∞: hinges only).
+fn exists(kind: ContactKind, mu: Option<f64>) -> bool {
+    kind.is_hinge() || mu.is_some()
+}
+
+/// φ of `kind` (β-derivative `k`). Sliding rows need a finite μ: callers check
+/// [`exists`] first, and a sliding row at μ = ∞ evaluates to an unbounded interval.
+fn phi(kind: ContactKind, k: usize, a: &Ntm, eta: f64, mu: Option<f64>) -> I {
     let he = I::point(eta) * I::point(0.5);
+    let slide = |sign: f64| match mu {
+        Some(mu) => a.t[k].scale(sign) - I::point(mu) * a.n[k],
+        None => I::new(f64::NEG_INFINITY, f64::INFINITY),
+    };
     match kind {
-        "hinge_extrados" => a.m[k] - he * a.n[k],
-        "hinge_intrados" => -a.m[k] - he * a.n[k],
-        "slide_plus" => a.t[k] - I::point(mu.unwrap_or(f64::INFINITY)) * a.n[k],
-        _ => -a.t[k] - I::point(mu.unwrap_or(f64::INFINITY)) * a.n[k],
+        ContactKind::HingeExtrados => a.m[k] - he * a.n[k],
+        ContactKind::HingeIntrados => -a.m[k] - he * a.n[k],
+        ContactKind::SlidePlus => slide(1.0),
+        ContactKind::SlideMinus => slide(-1.0),
     }
 }
 
-fn kinds(mu: Option<f64>) -> &'static [&'static str] {
+/// The activation functions that exist at friction `mu` (`None` = ∞).
+fn kinds(mu: Option<f64>) -> &'static [ContactKind] {
     match mu {
-        Some(_) => &[
-            "hinge_extrados",
-            "hinge_intrados",
-            "slide_plus",
-            "slide_minus",
-        ],
-        None => &["hinge_extrados", "hinge_intrados"],
+        Some(_) => &ContactKind::ALL,
+        None => &ContactKind::HINGES,
     }
 }
 
 /// Upper bound of φ over [a, b] by the second-order Taylor form at the midpoint.
 fn taylor_upper(
     model: &Model,
-    kind: &str,
+    kind: ContactKind,
     a: f64,
     b: f64,
     x: [f64; 3],
@@ -153,8 +222,8 @@ fn prove_admissible(
         if let Some(joints) = &model.joints {
             for &b in joints {
                 let v = phi(kind, 0, &model.ntm(I::point(b), x, eta), eta, mu);
-                if v.hi > 0.0 {
-                    return reject(format!("safe side: {kind} at the joint beta = {b} is not proved <= 0 (upper bound {:e})", v.hi));
+                if v.hi.is_nan() || v.hi > 0.0 {
+                    return reject(format!("safe side: {} at the joint beta = {b} is not proved <= 0 (upper bound {:e})", kind.name(), v.hi));
                 }
                 pieces += 1;
             }
@@ -188,13 +257,15 @@ fn prove_admissible(
             }
             if lower_mid > 0.0 {
                 return reject(format!(
-                    "safe side: {kind} is positive at beta = {} (phi >= {lower_mid:e}): the state is not admissible",
+                    "safe side: {} is positive at beta = {} (phi >= {lower_mid:e}): the state is not admissible",
+                    kind.name(),
                     0.5 * (a + b)
                 ));
             }
-            if depth >= 60 || b - a <= 4.0 * f64::EPSILON * a.abs().max(1.0) {
+            if depth >= 60 || b - a <= 4.0 * f64::EPSILON * a.abs().max(1.0) || upper.is_nan() {
                 return reject(format!(
-                    "safe side: {kind} near beta = {a} could not be proved <= 0 (bound {upper:e})"
+                    "safe side: {} near beta = {a} could not be proved <= 0 (bound {upper:e})",
+                    kind.name()
                 ));
             }
             let m = 0.5 * (a + b);
@@ -206,7 +277,7 @@ fn prove_admissible(
 }
 
 /// Interval gradient (w.r.t. x) and constant term of an activation function at β.
-fn affine(model: &Model, kind: &str, beta: f64, eta: f64, mu: Option<f64>) -> ([I; 3], I) {
+fn affine(model: &Model, kind: ContactKind, beta: f64, eta: f64, mu: f64) -> ([I; 3], I) {
     let b = I::point(beta);
     let (s, c) = (b.sin(), b.cos());
     let br = I::point(model.beta_r);
@@ -219,7 +290,7 @@ fn affine(model: &Model, kind: &str, beta: f64, eta: f64, mu: Option<f64>) -> ([
     let gm = [-(s - sr), cr - c, I::point(1.0)];
     let (n0, t0, m0) = (-(d * c), d * s, d * c - rho * (s - sr));
     let he = I::point(0.5) * I::point(eta);
-    let m = I::point(mu.unwrap_or(0.0));
+    let m = I::point(mu);
     let comb = |a: I, g1: [I; 3], c1: I, k: I, g2: [I; 3], c2: I| {
         (
             [
@@ -231,10 +302,10 @@ fn affine(model: &Model, kind: &str, beta: f64, eta: f64, mu: Option<f64>) -> ([
         )
     };
     match kind {
-        "hinge_extrados" => comb(I::point(1.0), gm, m0, -he, gn, n0),
-        "hinge_intrados" => comb(I::point(-1.0), gm, m0, -he, gn, n0),
-        "slide_plus" => comb(I::point(1.0), gt, t0, -m, gn, n0),
-        _ => comb(I::point(-1.0), gt, t0, -m, gn, n0),
+        ContactKind::HingeExtrados => comb(I::point(1.0), gm, m0, -he, gn, n0),
+        ContactKind::HingeIntrados => comb(I::point(-1.0), gm, m0, -he, gn, n0),
+        ContactKind::SlidePlus => comb(I::point(1.0), gt, t0, -m, gn, n0),
+        ContactKind::SlideMinus => comb(I::point(-1.0), gt, t0, -m, gn, n0),
     }
 }
 
@@ -255,34 +326,30 @@ fn prove_farkas(
             joints.len()
         ));
     }
-    for j in joints {
-        if !(j.beta >= model.beta_r && j.beta <= model.beta_l) {
+    let mut aff: Vec<([I; 3], I)> = Vec::with_capacity(joints.len());
+    for (i, j) in joints.iter().enumerate() {
+        model.check_joint(j.beta, &format!("collapse side: joint {i}"))?;
+        if !exists(j.kind, mu) {
             return reject(format!(
-                "collapse side: joint beta = {} lies outside the arch",
+                "collapse side: joint {i} is {} at beta = {}, but there is no sliding at infinite friction (mu = null): that constraint does not exist in this problem",
+                j.kind.name(),
                 j.beta
             ));
         }
-        if let Some(js) = &model.joints {
-            if !js.contains(&j.beta) {
-                return reject(format!(
-                    "collapse side: beta = {} is not a joint of this discrete arch",
-                    j.beta
-                ));
-            }
+        if friction_only && j.kind.is_hinge() {
+            return reject(format!(
+                "collapse side: joint {i} is {}, but the friction-only certificate may use sliding joints only",
+                j.kind.name()
+            ));
         }
-        if friction_only && j.kind.starts_with("hinge") {
-            return reject(
-                "collapse side: the friction-only certificate may use sliding joints only",
-            );
+        if !(j.y.is_finite()) {
+            return reject(format!(
+                "collapse side: multiplier of joint {i} is not a finite number"
+            ));
         }
-        if mu.is_none() && !j.kind.starts_with("hinge") {
-            return reject("collapse side: no sliding joints at infinite friction");
-        }
+        // `exists` guarantees a finite μ for sliding rows; hinge rows do not use it
+        aff.push(affine(model, j.kind, j.beta, eta, mu.unwrap_or(0.0)));
     }
-    let aff: Vec<([I; 3], I)> = joints
-        .iter()
-        .map(|j| affine(model, &j.kind, j.beta, eta, mu))
-        .collect();
     let y: Vec<I> = (0..=d)
         .map(|i| {
             let cols: Vec<usize> = (0..=d).filter(|&k| k != i).collect();
@@ -325,7 +392,7 @@ fn prove_farkas(
         .iter()
         .zip(&aff)
         .fold(I::point(0.0), |acc, (yi, (_, ci))| acc + *yi * *ci);
-    if c.lo <= 0.0 {
+    if c.lo.is_nan() || c.lo <= 0.0 {
         return reject(format!(
             "collapse side: sum y_i phi_i(0) = [{:e}, {:e}] is not proved > 0",
             c.lo, c.hi
@@ -334,7 +401,144 @@ fn prove_farkas(
     Ok(c.lo / total)
 }
 
-/// Re-checks `cert`. Ok with the list of checks passed, or the first reason it fails.
+/// Every number of the certificate must be finite (JSON cannot carry NaN or ∞, but a
+/// certificate built in memory can).
+fn check_finite(cert: &Certificate) -> Result<(), Rejection> {
+    let mut nums: Vec<(&str, f64)> = vec![
+        ("arch.beta_right", cert.arch.beta_right),
+        ("arch.beta_left", cert.arch.beta_left),
+    ];
+    if let Some(js) = &cert.arch.joint_angles {
+        nums.extend(js.iter().map(|&b| ("arch.joint_angles", b)));
+    }
+    if let Some(mu) = cert.mu {
+        nums.push(("mu", mu));
+    }
+    if let Some(s) = &cert.safe {
+        nums.push(("safe.eta", s.eta));
+        nums.extend(s.x.iter().map(|&v| ("safe.x", v)));
+    }
+    if let Some(f) = &cert.collapse {
+        if let Some(e) = f.eta {
+            nums.push(("collapse.eta", e));
+        }
+        for j in &f.joints {
+            nums.extend([("collapse.joints.beta", j.beta), ("collapse.joints.y", j.y)]);
+        }
+    }
+    if let Some(ls) = &cert.limit_state {
+        nums.push(("limit_state.eta", ls.eta));
+        nums.extend(ls.x.iter().map(|&v| ("limit_state.x", v)));
+        nums.extend(
+            ls.pattern
+                .iter()
+                .map(|j| ("limit_state.pattern.beta", j.beta)),
+        );
+        nums.extend(ls.rates.iter().map(|&v| ("limit_state.rates", v)));
+        nums.push((
+            "limit_state.complementarity_residual",
+            ls.complementarity_residual,
+        ));
+    }
+    if let Some(g) = cert.gap {
+        nums.push(("gap", g));
+    }
+    if let Some(g) = cert.gap_relative {
+        nums.push(("gap_relative", g));
+    }
+    match nums.iter().find(|(_, v)| !v.is_finite()) {
+        Some((field, v)) => reject(format!("{field}: {v} is not a finite number")),
+        None => Ok(()),
+    }
+}
+
+/// The arch of the certificate, checked: springings in order, the joints of a discrete
+/// arch strictly increasing from β_R to β_L.
+fn model_of(cert: &Certificate) -> Result<Model, Rejection> {
+    let a = &cert.arch;
+    if !(a.beta_right < a.beta_left && a.beta_left - a.beta_right <= 2.0 * PI) {
+        return reject(format!(
+            "arch: need beta_right < beta_left <= beta_right + 2 pi, found beta_right = {}, beta_left = {}",
+            a.beta_right, a.beta_left
+        ));
+    }
+    if let Some(js) = &a.joint_angles {
+        if js.len() < 2 {
+            return reject(
+                "arch: joint_angles of a discrete arch need at least the two springings",
+            );
+        }
+        if js.first() != Some(&a.beta_right) || js.last() != Some(&a.beta_left) {
+            return reject("arch: joint_angles must start at beta_right and end at beta_left (the springings are joints)");
+        }
+        if let Some(w) = js
+            .windows(2)
+            .find(|w| w[0].is_nan() || w[1].is_nan() || w[1] <= w[0])
+        {
+            return reject(format!(
+                "arch: joint_angles must be strictly increasing, found {} then {}",
+                w[0], w[1]
+            ));
+        }
+    }
+    Ok(Model {
+        beta_r: a.beta_right,
+        beta_l: a.beta_left,
+        centroid: a.weight == WeightModel::Centroid,
+        joints: a.joint_angles.clone(),
+    })
+}
+
+/// The pattern of the limit state: every joint inside the arch (at a listed joint of a
+/// discrete arch), `at` matching its angle, its kind existing at μ, and the list strictly
+/// increasing in (β, kind) (two contacts may share a joint).
+fn check_pattern(model: &Model, ls: &LimitStateCert, mu: Option<f64>) -> Result<(), Rejection> {
+    for (i, j) in ls.pattern.iter().enumerate() {
+        let what = format!("limit state: pattern joint {i}");
+        model.check_joint(j.beta, &what)?;
+        if !exists(j.kind, mu) {
+            return reject(format!(
+                "{what} is {}, but there is no sliding at infinite friction (mu = null)",
+                j.kind.name()
+            ));
+        }
+        let at_springing = j.beta == model.beta_r || j.beta == model.beta_l;
+        if at_springing != (j.at == Location::Springing) {
+            return reject(format!(
+                "{what}: at = {} does not match beta = {} (the springings are {} and {})",
+                if j.at == Location::Springing {
+                    "springing"
+                } else {
+                    "interior"
+                },
+                j.beta,
+                model.beta_r,
+                model.beta_l
+            ));
+        }
+    }
+    if let Some(w) = ls
+        .pattern
+        .windows(2)
+        .find(|w| !(w[0].beta < w[1].beta || (w[0].beta == w[1].beta && w[0].kind < w[1].kind)))
+    {
+        return reject(format!(
+            "limit state: pattern must be strictly increasing in (beta, kind), found {} at {} then {} at {}",
+            w[0].kind.name(),
+            w[0].beta,
+            w[1].kind.name(),
+            w[1].beta
+        ));
+    }
+    Ok(())
+}
+
+/// "inf" for `None`, else the number.
+fn mu_text(mu: Option<f64>) -> String {
+    mu.map_or("inf".into(), |m| m.to_string())
+}
+
+/// Re-checks `cert`. Ok with what was proved and checked, or the first reason it fails.
 pub fn verify(cert: &Certificate) -> Result<Report, Rejection> {
     let mut checks = Vec::new();
     if cert.format != FORMAT || cert.version != VERSION {
@@ -343,41 +547,38 @@ pub fn verify(cert: &Certificate) -> Result<Report, Rejection> {
             cert.format, cert.version
         ));
     }
-    let a = &cert.arch;
-    if !(a.beta_right.is_finite()
-        && a.beta_left.is_finite()
-        && a.beta_right < a.beta_left
-        && a.beta_left - a.beta_right <= 2.0 * PI)
-    {
-        return reject("arch: springings out of order or out of range");
-    }
-    let centroid = match a.weight.as_str() {
-        "centreline" => false,
-        "centroid" => true,
-        w => return reject(format!("arch: unknown weight model {w}")),
-    };
-    let model = Model {
-        beta_r: a.beta_right,
-        beta_l: a.beta_left,
-        centroid,
-        joints: a.joint_angles.clone(),
-    };
+    check_finite(cert)?;
+    let model = model_of(cert)?;
     if let Some(mu) = cert.mu {
-        if !(mu.is_finite() && mu > 0.0) {
-            return reject("mu must be finite and positive (null for infinite friction)");
+        if mu.is_nan() || mu <= 0.0 {
+            return reject(format!(
+                "mu = {mu}: must be positive (null for infinite friction)"
+            ));
         }
     }
-    match cert.claim {
+    let bracket = match cert.claim {
         Claim::NoEquilibrium => {
             let Some(f) = &cert.collapse else {
                 return reject("no_equilibrium claim without a Farkas certificate");
             };
+            if cert.mu.is_none() {
+                return reject("no_equilibrium claim at infinite friction (mu = null): the friction-only problem has no sliding rows there");
+            }
+            if f.eta.is_some() {
+                return reject(
+                    "collapse side: a no_equilibrium (friction-only) certificate has eta = null",
+                );
+            }
+            if cert.safe.is_some() || cert.limit_state.is_some() {
+                return reject("a no_equilibrium claim cannot carry a safe state or a limit state");
+            }
             let margin = prove_farkas(&model, &f.joints, 1.0, cert.mu, true)?;
             checks.push(format!(
-                "proved: no (h, v) satisfies |T| <= mu N at the {} listed joints (Farkas, margin {margin:.3e}), so no thickness can stand at mu = {}",
+                "proved (interval arithmetic): no (h, v) satisfies |T| <= mu N at the {} listed joints (Farkas, margin {margin:.3e}), so no thickness can stand at mu = {}",
                 f.joints.len(),
-                cert.mu.map_or("inf".into(), |m| m.to_string())
+                mu_text(cert.mu)
             ));
+            None
         }
         Claim::LeastThickness => {
             let (Some(safe), Some(col)) = (&cert.safe, &cert.collapse) else {
@@ -394,14 +595,17 @@ pub fn verify(cert: &Certificate) -> Result<Report, Rejection> {
                     safe.eta
                 ));
             }
+            if let Some(ls) = &cert.limit_state {
+                check_pattern(&model, ls, cert.mu)?;
+            }
             let pieces = prove_admissible(&model, safe.x, safe.eta, cert.mu)?;
             checks.push(format!(
-                "proved: the state x = {:?} is admissible at eta_hi = {} over the whole arch ({pieces} enclosures)",
-                safe.x, safe.eta
+                "proved (interval arithmetic): the state x = [{}, {}, {}] is admissible at eta_hi = {} over the whole arch ({pieces} enclosures)",
+                safe.x[0], safe.x[1], safe.x[2], safe.eta
             ));
             let margin = prove_farkas(&model, &col.joints, eta_lo, cert.mu, false)?;
             checks.push(format!(
-                "proved: no state is admissible at eta_lo = {eta_lo} (Farkas on {} joints, margin {margin:.3e})",
+                "proved (interval arithmetic): no state is admissible at eta_lo = {eta_lo} (Farkas on {} joints, margin {margin:.3e})",
                 col.joints.len()
             ));
             let gap = safe.eta - eta_lo;
@@ -412,30 +616,38 @@ pub fn verify(cert: &Certificate) -> Result<Report, Rejection> {
                     ));
                 }
             }
-            checks.push(format!(
-                "hence eta*(mu) lies in [{eta_lo}, {}] (gap {gap:.3e}, relative {:.3e})",
-                safe.eta,
-                gap / safe.eta
-            ));
+            if let Some(g) = cert.gap_relative {
+                let r = gap / safe.eta;
+                if (g - r).abs() > 1e-15 + 1e-9 * r {
+                    return reject(format!(
+                        "stated gap_relative {g} differs from (eta_hi - eta_lo)/eta_hi = {r}"
+                    ));
+                }
+            }
             if let Some(ls) = &cert.limit_state {
                 check_limit_state(&model, cert.mu, ls, eta_lo, safe.eta)?;
-                checks.push("checked: the limit state is consistent (B lambda = 0, lambda >= 0, sum 1, L_e >= 0, complementarity)".into());
+                checks.push(format!(
+                    "checked (floating point, tolerance {LIMIT_STATE_TOL:e}; evidence, not proof): the limit state at eta = {} is consistent (pattern active, B lambda = 0, lambda >= 0, sum 1, L_e >= 0)",
+                    ls.eta
+                ));
             }
+            Some((eta_lo, safe.eta))
         }
-    }
-    Ok(Report { checks })
+    };
+    Ok(Report {
+        claim: cert.claim,
+        mu: cert.mu,
+        bracket,
+        arch: cert.arch.clone(),
+        checks,
+    })
 }
 
 /// Proves only the safe side of a least-thickness certificate (used by `certify` while
 /// it searches for the lower side).
 pub fn prove_safe_only(cert: &Certificate) -> Result<usize, Rejection> {
-    let a = &cert.arch;
-    let model = Model {
-        beta_r: a.beta_right,
-        beta_l: a.beta_left,
-        centroid: a.weight == "centroid",
-        joints: a.joint_angles.clone(),
-    };
+    check_finite(cert)?;
+    let model = model_of(cert)?;
     let Some(safe) = &cert.safe else {
         return reject("no safe side");
     };
@@ -456,7 +668,7 @@ fn check_limit_state(
             ls.eta
         ));
     }
-    if ls.rates.len() != ls.pattern.len() || ls.rates.iter().any(|&r| r.is_nan() || r < 0.0) {
+    if ls.rates.len() != ls.pattern.len() || ls.rates.iter().any(|&r| r < 0.0) {
         return reject("limit state: rates must be one non-negative number per pattern joint");
     }
     if (ls.rates.iter().sum::<f64>() - 1.0).abs() > tol {
@@ -464,25 +676,24 @@ fn check_limit_state(
     }
     let eta = ls.eta;
     let scale = 1.0 + ls.x.iter().map(|v| v.abs()).sum::<f64>();
+    let (re, ri) = (1.0 + eta / 2.0, 1.0 - eta / 2.0);
     let mut b = [0.0; 3];
     for (j, &r) in ls.pattern.iter().zip(&ls.rates) {
         let (s, c) = (j.beta.sin(), j.beta.cos());
-        let (re, ri) = (1.0 + eta / 2.0, 1.0 - eta / 2.0);
-        let col = match j.kind.as_str() {
-            "hinge_extrados" => [-re * s, re * c, -1.0],
-            "hinge_intrados" => [ri * s, -ri * c, 1.0],
-            "slide_plus" => [c, s, 0.0],
-            "slide_minus" => [-c, -s, 0.0],
-            k => return reject(format!("limit state: unknown joint kind {k}")),
+        let col = match j.kind {
+            ContactKind::HingeExtrados => [-re * s, re * c, -1.0],
+            ContactKind::HingeIntrados => [ri * s, -ri * c, 1.0],
+            ContactKind::SlidePlus => [c, s, 0.0],
+            ContactKind::SlideMinus => [-c, -s, 0.0],
         };
         for i in 0..3 {
             b[i] += r * col[i];
         }
-        let v = phi(&j.kind, 0, &model.ntm(I::point(j.beta), ls.x, eta), eta, mu);
-        if v.mid().abs() > tol * scale {
+        let v = phi(j.kind, 0, &model.ntm(I::point(j.beta), ls.x, eta), eta, mu);
+        if v.mid().is_nan() || v.mid().abs() > tol * scale {
             return reject(format!(
                 "limit state: {} at beta = {} is not active (phi = {:e})",
-                j.kind,
+                j.kind.name(),
                 j.beta,
                 v.mid()
             ));
@@ -502,12 +713,11 @@ fn check_limit_state(
         for (j, &r) in ls.pattern.iter().zip(&ls.rates) {
             if j.beta <= w[0] {
                 let (s, c) = (j.beta.sin(), j.beta.cos());
-                let (re, ri) = (1.0 + eta / 2.0, 1.0 - eta / 2.0);
-                let (cy, cp) = match j.kind.as_str() {
-                    "hinge_extrados" => (re * c, -1.0),
-                    "hinge_intrados" => (-ri * c, 1.0),
-                    "slide_plus" => (s, 0.0),
-                    _ => (-s, 0.0),
+                let (cy, cp) = match j.kind {
+                    ContactKind::HingeExtrados => (re * c, -1.0),
+                    ContactKind::HingeIntrados => (-ri * c, 1.0),
+                    ContactKind::SlidePlus => (s, 0.0),
+                    ContactKind::SlideMinus => (-s, 0.0),
                 };
                 vy += r * cy;
                 psi += r * cp;

@@ -4,7 +4,7 @@
 
 use arch_enum::certificate::verify;
 use arch_enum::certificate::{certify, Certificate, Claim};
-use arch_enum::{least_friction, Arch, Settings, WeightModel};
+use arch_enum::{least_friction, Arch, ContactKind, Location, Settings, WeightModel};
 use assert_cmd::Command;
 
 fn cert(arch: &Arch, mu: f64) -> Certificate {
@@ -173,5 +173,383 @@ fn cli_certify_verify_roundtrip_and_exit_codes() {
         .output()
         .unwrap();
     assert_eq!(junk.status.code(), Some(2));
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The certificate as JSON text with `edit` applied to its JSON value.
+fn edited(c: &Certificate, edit: impl FnOnce(&mut serde_json::Value)) -> String {
+    let mut v = serde_json::to_value(c).unwrap();
+    edit(&mut v);
+    serde_json::to_string_pretty(&v).unwrap()
+}
+
+fn parse(text: &str) -> Result<Certificate, String> {
+    serde_json::from_str(text).map_err(|e| e.to_string())
+}
+
+/// Closed sets are closed when read: an unknown kind, `at` or weight is a parse error
+/// naming the field and the bad value (before this, "hinge" at μ = ∞ passed the
+/// "hinges only" check and was evaluated as a sliding row with μ = 0).
+#[test]
+fn unknown_kind_at_or_weight_is_rejected_when_read() {
+    let arch = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();
+    let good = cert(&arch, f64::INFINITY);
+    assert!(good.mu.is_none());
+    parse(&edited(&good, |_| {})).expect("the unedited certificate parses");
+    type Edit = fn(&mut serde_json::Value);
+    let cases: [(&str, &str, Edit); 5] = [
+        ("kind", "hinge", |v| {
+            v["collapse"]["joints"][0]["kind"] = "hinge".into()
+        }),
+        ("kind", "Hinge_Extrados", |v| {
+            v["collapse"]["joints"][2]["kind"] = "Hinge_Extrados".into()
+        }),
+        ("kind", "slide", |v| {
+            v["limit_state"]["pattern"][1]["kind"] = "slide".into()
+        }),
+        ("at", "middle", |v| {
+            v["limit_state"]["pattern"][0]["at"] = "middle".into()
+        }),
+        ("weight", "heavy", |v| v["arch"]["weight"] = "heavy".into()),
+    ];
+    for (field, bad, edit) in cases {
+        let mut v = serde_json::to_value(&good).unwrap();
+        edit(&mut v);
+        let why = parse(&serde_json::to_string_pretty(&v).unwrap()).expect_err(field);
+        assert!(why.contains(&format!("field `{field}`")), "{why}");
+        assert!(why.contains(&format!("unknown variant `{bad}`")), "{why}");
+        assert!(why.contains("expected"), "{why}");
+        assert!(why.contains("line"), "{why}");
+    }
+}
+
+/// At μ = ∞ (`mu: null`) no sliding row exists: a Farkas or pattern row of a sliding
+/// kind is rejected, whatever its multipliers; so is dropping μ from a finite-friction
+/// certificate that uses sliding rows.
+#[test]
+fn sliding_rows_at_infinite_friction_are_rejected() {
+    let arch = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();
+    let good = cert(&arch, f64::INFINITY);
+    holds(&good);
+    for kind in [ContactKind::SlidePlus, ContactKind::SlideMinus] {
+        let mut c = good.clone();
+        c.collapse.as_mut().unwrap().joints[1].kind = kind;
+        let why = verify(&c).expect_err("sliding Farkas row at mu = inf").0;
+        assert!(why.contains("collapse side: joint 1"), "{why}");
+        assert!(why.contains("no sliding at infinite friction"), "{why}");
+        let mut c = good.clone();
+        c.limit_state.as_mut().unwrap().pattern[0].kind = kind;
+        let why = verify(&c).expect_err("sliding pattern row at mu = inf").0;
+        assert!(why.contains("no sliding at infinite friction"), "{why}");
+    }
+    // a mixed-mode certificate (sliding rows) with its finite mu removed
+    let mixed = cert(&arch, 0.35);
+    holds(&mixed);
+    let slides = |c: &Certificate| {
+        c.collapse
+            .as_ref()
+            .unwrap()
+            .joints
+            .iter()
+            .any(|j| !j.kind.is_hinge())
+    };
+    assert!(
+        slides(&mixed),
+        "the mu = 0.35 certificate should use a sliding row"
+    );
+    let mut c = mixed.clone();
+    c.mu = None;
+    let why = verify(&c).expect_err("mu removed").0;
+    assert!(why.contains("no sliding at infinite friction"), "{why}");
+    // a no-equilibrium claim needs finite friction
+    let mut c = cert(&arch, 0.3);
+    holds(&c);
+    c.mu = None;
+    let why = verify(&c).expect_err("no equilibrium at mu = inf").0;
+    assert!(why.contains("infinite friction"), "{why}");
+}
+
+/// Joints must be where the arch has joints, and ordered lists ordered.
+#[test]
+fn joints_out_of_order_or_off_the_arch_are_rejected() {
+    let cont = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();
+    let good = cert(&cont, 0.35);
+    let rejected = |c: &Certificate, what: &str| verify(c).expect_err(what).0;
+    // a Farkas joint outside [beta_right, beta_left]
+    let mut c = good.clone();
+    c.collapse.as_mut().unwrap().joints[0].beta = -0.1;
+    let why = rejected(&c, "Farkas joint outside");
+    assert!(
+        why.contains("collapse side: joint 0") && why.contains("outside the arch"),
+        "{why}"
+    );
+    // a pattern joint outside, and one swapped out of order
+    let mut c = good.clone();
+    c.limit_state.as_mut().unwrap().pattern[1].beta = 4.0;
+    let why = rejected(&c, "pattern joint outside");
+    assert!(
+        why.contains("pattern joint 1") && why.contains("outside the arch"),
+        "{why}"
+    );
+    let mut c = good.clone();
+    let ls = c.limit_state.as_mut().unwrap();
+    assert!(ls.pattern.len() >= 3);
+    ls.pattern.swap(0, 2);
+    ls.rates.swap(0, 2);
+    let why = rejected(&c, "pattern out of order");
+    assert!(why.contains("strictly increasing"), "{why}");
+    // `at` must match the angle
+    let mut c = good.clone();
+    let p = &mut c.limit_state.as_mut().unwrap().pattern;
+    let i = p.iter().position(|j| j.at == Location::Interior).unwrap();
+    p[i].at = Location::Springing;
+    let why = rejected(&c, "interior joint called springing");
+    assert!(why.contains("does not match"), "{why}");
+    // discrete arch: joints must be listed, the list strictly increasing from beta_R to beta_L
+    let disc = cont.clone().with_blocks(12).unwrap();
+    let good = cert(&disc, 0.6);
+    holds(&good);
+    let mut c = good.clone();
+    c.arch.joint_angles.as_mut().unwrap().swap(3, 4);
+    let why = rejected(&c, "joint_angles out of order");
+    assert!(
+        why.contains("joint_angles must be strictly increasing"),
+        "{why}"
+    );
+    let mut c = good.clone();
+    c.arch.joint_angles.as_mut().unwrap().remove(0);
+    let why = rejected(&c, "springing missing");
+    assert!(why.contains("start at beta_right"), "{why}");
+    let mut c = good.clone();
+    c.collapse.as_mut().unwrap().joints[0].beta += 1e-3;
+    let why = rejected(&c, "Farkas joint between listed joints");
+    assert!(why.contains("not one of the joint_angles"), "{why}");
+    let mut c = good.clone();
+    let b = &mut c.limit_state.as_mut().unwrap().pattern[1].beta;
+    *b = b.next_up();
+    let why = rejected(&c, "pattern joint between listed joints");
+    assert!(why.contains("not one of the joint_angles"), "{why}");
+}
+
+/// NaN and infinities are rejected wherever they appear (a certificate built in memory
+/// can hold them even though JSON cannot).
+#[test]
+fn non_finite_numbers_are_rejected() {
+    let arch = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();
+    let good = cert(&arch, 0.35);
+    type Edit = fn(&mut Certificate);
+    let cases: [(&str, Edit); 6] = [
+        ("safe.x", |c| c.safe.as_mut().unwrap().x[0] = f64::NAN),
+        ("safe.eta", |c| c.safe.as_mut().unwrap().eta = f64::INFINITY),
+        ("collapse.joints.y", |c| {
+            c.collapse.as_mut().unwrap().joints[2].y = f64::NAN
+        }),
+        ("limit_state.rates", |c| {
+            c.limit_state.as_mut().unwrap().rates[0] = f64::NAN
+        }),
+        ("mu", |c| c.mu = Some(f64::INFINITY)),
+        ("gap_relative", |c| c.gap_relative = Some(f64::NAN)),
+    ];
+    for (field, edit) in cases {
+        let mut c = good.clone();
+        edit(&mut c);
+        let why = verify(&c).expect_err(field).0;
+        assert!(
+            why.starts_with(field) && why.contains("not a finite number"),
+            "{field}: {why}"
+        );
+    }
+}
+
+/// `verify` reports what it proved: the arch, μ and the bracket.
+#[test]
+fn verify_reports_the_claim() {
+    let arch = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();
+    let c = cert(&arch, 0.35);
+    let r = verify(&c).unwrap();
+    let (lo, hi) = r.bracket.unwrap();
+    assert_eq!(Some((lo, hi)), c.bracket());
+    assert!(lo < hi && hi - lo <= 1e-12 * hi, "[{lo}, {hi}]");
+    assert_eq!(r.mu, Some(0.35));
+    assert_eq!(r.claim, Claim::LeastThickness);
+    assert!(r.statement().starts_with(&format!(
+        "proved: for this arch at mu = 0.35, eta* lies in [{lo}, {hi}]"
+    )));
+    assert!(r.checks.iter().filter(|s| s.starts_with("proved")).count() == 2);
+    assert!(r
+        .checks
+        .iter()
+        .any(|s| s.starts_with("checked (floating point")));
+    let r = verify(&cert(&arch, f64::INFINITY)).unwrap();
+    assert!(r.statement().contains("mu = inf"), "{}", r.statement());
+    let r = verify(&cert(&arch, 0.3)).unwrap();
+    assert!(r.bracket.is_none());
+    assert!(
+        r.statement().contains("no thickness stands"),
+        "{}",
+        r.statement()
+    );
+}
+
+/// `certify --gap` either delivers the requested gap or says so: at 1e-15 (a few ulps of
+/// eta*) the Farkas side cannot be proved, the best certificate is still produced and
+/// verifies, but the status is gap_not_reached and the exit code 1.
+#[test]
+fn unreachable_gap_is_reported() {
+    let arch = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();
+    let c = certify(&arch, 0.35, 1e-15, &Settings::default()).unwrap();
+    holds(&c);
+    let rel = c.gap_relative.unwrap();
+    assert!(rel > 1e-15 && !c.delivers_gap(1e-15), "relative gap {rel}");
+    assert!(c.delivers_gap(rel));
+    // a delivered gap is delivered as computed from the two ends, not only as stated
+    let c = cert(&arch, 0.35);
+    assert!(c.delivers_gap(1e-12));
+    let (lo, hi) = c.bracket().unwrap();
+    assert!((hi - lo) / hi <= 1e-12);
+
+    let out = Command::cargo_bin("arch-enum")
+        .unwrap()
+        .args([
+            "certify", "--alpha", "0", "--mu", "0.35", "--gap", "1e-15", "--json",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["status"], "gap_not_reached");
+    assert_eq!(v["gap_requested"], 1e-15);
+    assert!(v["gap_relative"].as_f64().unwrap() > 1e-15);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("1e-15") && err.contains("could not be proved"),
+        "{err}"
+    );
+    // the certificate inside is still a good one
+    let inner: Certificate = serde_json::from_value(v["certificate"].clone()).unwrap();
+    holds(&inner);
+}
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = Command::cargo_bin("arch-enum")
+        .unwrap()
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap(),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// `certify --json` has one shape with or without `--out`; the certificate in it is the
+/// file's; `verify --json` states the claim with numbers; text output has no Rust debug
+/// text; an unknown kind in FILE is bad input naming the field.
+#[test]
+fn cli_json_shapes_round_trip() {
+    let dir = std::env::temp_dir().join(format!("arch-enum-cert-json-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("c.json");
+    let path = file.to_str().unwrap();
+    let base = ["certify", "--alpha", "0", "--mu", "0.35"];
+    let keys = [
+        "version",
+        "status",
+        "file",
+        "claim",
+        "mu",
+        "eta_lo",
+        "eta_hi",
+        "gap_requested",
+        "gap_relative",
+        "certificate",
+    ];
+    let (code, with_out, _) = run(&[&base[..], &["--json", "--out", path]].concat());
+    assert_eq!(code, 0);
+    let (code, without, _) = run(&[&base[..], &["--json"]].concat());
+    assert_eq!(code, 0);
+    let a: serde_json::Value = serde_json::from_str(&with_out).unwrap();
+    let b: serde_json::Value = serde_json::from_str(&without).unwrap();
+    for v in [&a, &b] {
+        let obj = v.as_object().unwrap();
+        let mut got: Vec<&str> = obj.keys().map(|k| k.as_str()).collect();
+        let mut want = keys.to_vec();
+        got.sort();
+        want.sort();
+        assert_eq!(got, want);
+        assert_eq!(v["status"], "ok");
+        assert_eq!(v["claim"], "least_thickness");
+        assert_eq!(v["mu"], 0.35);
+        assert_eq!(v["gap_requested"], 1e-12);
+        let (lo, hi) = (v["eta_lo"].as_f64().unwrap(), v["eta_hi"].as_f64().unwrap());
+        assert!((hi - lo) / hi <= 1e-12);
+        assert_eq!(v["certificate"]["format"], "arch-enum-certificate");
+    }
+    assert_eq!(a["file"], path);
+    assert!(b["file"].is_null());
+    let written: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&file).unwrap()).unwrap();
+    assert_eq!(written, a["certificate"]);
+    assert_eq!(a["certificate"], b["certificate"]);
+
+    // text: plain words and numbers
+    let (code, text, _) = run(&[&base[..], &["--out", path]].concat());
+    assert_eq!(code, 0);
+    assert!(
+        text.contains("eta* lies in [") && text.contains("requested 1e-12"),
+        "{text}"
+    );
+    assert!(
+        !text.contains("LeastThickness") && !text.contains("Some("),
+        "{text}"
+    );
+
+    // verify: text and JSON say what was proved
+    let (code, text, _) = run(&["verify", path]);
+    assert_eq!(code, 0);
+    assert!(
+        text.contains("proved: for this arch at mu = 0.35, eta* lies in ["),
+        "{text}"
+    );
+    assert!(text.contains("continuous arch"), "{text}");
+    let (code, json, _) = run(&["verify", path, "--json"]);
+    assert_eq!(code, 0);
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(v["status"], "ok");
+    assert!(v["version"].as_u64().is_some());
+    assert_eq!(v["claim"], "least_thickness");
+    assert_eq!(v["mu"], 0.35);
+    assert_eq!(v["eta_lo"], written["collapse"]["eta"]);
+    assert_eq!(v["eta_hi"], written["safe"]["eta"]);
+    assert_eq!(v["arch"]["joints"], "continuous");
+    assert_eq!(v["arch"]["weight"], "centreline");
+    assert!(v["checks"].as_array().unwrap().len() >= 3);
+    assert!(v.get("reason").is_none());
+
+    // rejected: status and reason, exit 1
+    let mut t = written.clone();
+    t["safe"]["x"][0] = serde_json::json!(t["safe"]["x"][0].as_f64().unwrap() * 1.001);
+    std::fs::write(&file, t.to_string()).unwrap();
+    let (code, json, _) = run(&["verify", path, "--json"]);
+    assert_eq!(code, 1);
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(v["status"], "rejected");
+    assert!(v["reason"].as_str().unwrap().contains("safe side"));
+
+    // an unknown kind: bad input (exit 2) naming the field and the value
+    let mut t = written.clone();
+    t["collapse"]["joints"][0]["kind"] = "hinge".into();
+    std::fs::write(&file, serde_json::to_string_pretty(&t).unwrap()).unwrap();
+    let (code, _, err) = run(&["verify", path]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("field `kind`") && err.contains("unknown variant `hinge`"),
+        "{err}"
+    );
+    let (code, json, _) = run(&["verify", path, "--json"]);
+    assert_eq!(code, 2);
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert!(v["message"].as_str().unwrap().contains("field `kind`"));
     std::fs::remove_dir_all(&dir).ok();
 }

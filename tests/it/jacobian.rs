@@ -1,0 +1,129 @@
+//! The Newton/KKT Jacobian of a pattern's system (`refine::residual_and_jacobian`)
+//! against central differences of its residual, on seeded random arches (both weight
+//! models, symmetric and not), patterns (hinges and sliding, springing and free interior
+//! joints) and points z, for every kind of unknowns: η (plain with 4–5 contacts,
+//! KKT-completed with 1–3), μ (plain with 3–4, KKT with 1–2) and both η and μ (corners).
+//!
+//! Tolerance: with steps h_j = 1e-5 (1 + |z_j|) the truncation error is
+//! O(h²·|F'''|) ≈ 1e-9 and the rounding error O(ε |F| / h) ≈ 1e-10 here, so
+//! |J_fd − J| ≤ 1e-6 (1 + |J|) entry by entry; a wrong term is O(1) larger.
+
+use arch_enum::refine::{residual_and_jacobian, Unknowns};
+use arch_enum::{Arch, Contact, ContactKind, Location, WeightModel};
+use proptest::prelude::*;
+use proptest::test_runner::RngSeed;
+
+const TOL: f64 = 1e-6;
+
+fn kind(i: usize) -> ContactKind {
+    ContactKind::ALL[i % 4]
+}
+
+/// One random contact: springing (right or left) or a free interior joint at a fraction
+/// t of the span.
+fn contact(arch: &Arch, k: usize, where_: usize, t: f64) -> Contact {
+    let (lo, hi) = (arch.beta_right(), arch.beta_left());
+    let (beta, at) = match where_ {
+        0 => (lo, Location::Springing),
+        1 => (hi, Location::Springing),
+        _ => (lo + t * (hi - lo), Location::Interior),
+    };
+    Contact {
+        beta,
+        kind: kind(k),
+        at,
+        free: at == Location::Interior,
+    }
+}
+
+fn check(
+    arch: &Arch,
+    contacts: &[Contact],
+    unknowns: Unknowns,
+    x: [f64; 3],
+    eta: f64,
+    mu: f64,
+    ys: &[f64],
+) -> Result<(), TestCaseError> {
+    let n = contacts.len();
+    let kkt = unknowns != Unknowns::EtaMu && n < if unknowns == Unknowns::Mu { 3 } else { 4 };
+    let mut z = x.to_vec();
+    match unknowns {
+        Unknowns::Eta => z.push(eta),
+        Unknowns::Mu => z.push(mu),
+        Unknowns::EtaMu => z.extend([eta, mu]),
+    }
+    z.extend(contacts.iter().filter(|c| c.free).map(|c| c.beta));
+    if kkt {
+        z.extend(&ys[..n]);
+    }
+    let (f, jac) = residual_and_jacobian(arch, contacts, eta, mu, unknowns, &z)
+        .expect("z has the system's length");
+    prop_assert!(residual_and_jacobian(arch, contacts, eta, mu, unknowns, &z[1..]).is_none());
+    let expected_rows = n + contacts.iter().filter(|c| c.free).count() + if kkt { 4 } else { 0 };
+    prop_assert_eq!(f.len(), expected_rows);
+    prop_assert_eq!(jac.len(), expected_rows);
+    for j in 0..z.len() {
+        let h = 1e-5 * (1.0 + z[j].abs());
+        let (mut zp, mut zm) = (z.clone(), z.clone());
+        zp[j] += h;
+        zm[j] -= h;
+        let fp = residual_and_jacobian(arch, contacts, eta, mu, unknowns, &zp)
+            .unwrap()
+            .0;
+        let fm = residual_and_jacobian(arch, contacts, eta, mu, unknowns, &zm)
+            .unwrap()
+            .0;
+        let step = zp[j] - zm[j];
+        for r in 0..f.len() {
+            let fd = (fp[r] - fm[r]) / step;
+            let an = jac[r][j];
+            prop_assert!(
+                (fd - an).abs() <= TOL * (1.0 + an.abs()),
+                "{unknowns:?} kkt {kkt}: d F[{r}] / d z[{j}] analytic {an:e}, central difference {fd:e}\ncontacts {contacts:?}\nz {z:?}"
+            );
+        }
+    }
+    Ok(())
+}
+
+fn config() -> ProptestConfig {
+    ProptestConfig {
+        cases: 200,
+        rng_seed: RngSeed::Fixed(7_140_303),
+        ..ProptestConfig::default()
+    }
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    #[test]
+    fn jacobian_matches_central_differences(
+        beta_r in -1.2f64..0.3,
+        beta_l_off in -0.3f64..1.2,
+        centroid in any::<bool>(),
+        specs in proptest::collection::vec((0usize..4, 0usize..4, 0.05f64..0.95), 6),
+        n in 1usize..=6,
+        which in 0usize..3,
+        x in proptest::array::uniform3(-2.0f64..2.0),
+        eta in 0.05f64..1.0,
+        mu in 0.2f64..2.0,
+        ys in proptest::collection::vec(-1.0f64..1.0, 6),
+    ) {
+        let weight = if centroid { WeightModel::Centroid } else { WeightModel::Centreline };
+        let arch = Arch::new(beta_r, std::f64::consts::PI + beta_l_off, weight).unwrap();
+        let unknowns = [Unknowns::Eta, Unknowns::Mu, Unknowns::EtaMu][which];
+        // plain and KKT sizes for each kind of unknowns
+        let n = match unknowns {
+            Unknowns::Eta => n.min(5),
+            Unknowns::Mu => n.min(4),
+            Unknowns::EtaMu => n.max(5),
+        };
+        let contacts: Vec<Contact> = specs[..n]
+            .iter()
+            .map(|&(k, w, t)| contact(&arch, k, w, t))
+            .collect();
+        check(&arch, &contacts, unknowns, x, eta, mu, &ys)?;
+    }
+}
