@@ -95,16 +95,7 @@ pub(crate) fn run_certify(a: CertifyArgs, settings: &Settings, io: &mut Io) -> E
     let gap_relative = bracket.map(|(lo, hi)| (hi - lo) / hi);
     if let Some(path) = &a.out {
         if let Err(e) = std::fs::write(path, to_json(&cert)) {
-            let message = format!("cannot write --out {}: {e}", path.display());
-            io.err(&format!("error: {message}\n"));
-            if a.json {
-                io.out(&to_json(&serde_json::json!({
-                    "version": JSON_VERSION,
-                    "status": "bad_input",
-                    "message": message,
-                })));
-            }
-            return Exit::BadInput;
+            return io.bad(format!("cannot write --out {}: {e}", path.display()));
         }
     }
     if !delivered {
@@ -148,40 +139,15 @@ pub(crate) fn run_certify(a: CertifyArgs, settings: &Settings, io: &mut Io) -> E
     }
 }
 
-/// Reports a FILE that is not a certificate (exit 2), with `--json` as a JSON document.
-fn bad_file(io: &mut Io, json: bool, message: String) -> Exit {
-    io.err(&format!("error: {message}\n"));
-    if json {
-        io.out(&to_json(&serde_json::json!({
-            "version": JSON_VERSION,
-            "status": "bad_input",
-            "message": message,
-        })));
-    }
-    Exit::BadInput
-}
-
 pub(crate) fn run_verify(a: VerifyArgs, io: &mut Io) -> Exit {
     let file = a.file;
     let text = match std::fs::read_to_string(&file) {
         Ok(t) => t,
-        Err(e) => {
-            return bad_file(
-                io,
-                a.json,
-                format!("cannot read FILE {}: {e}", file.display()),
-            )
-        }
+        Err(e) => return io.bad(format!("cannot read FILE {}: {e}", file.display())),
     };
     let cert: Certificate = match serde_json::from_str(&text) {
         Ok(c) => c,
-        Err(e) => {
-            return bad_file(
-                io,
-                a.json,
-                format!("FILE {} is not a certificate: {e}", file.display()),
-            )
-        }
+        Err(e) => return io.bad(format!("FILE {} is not a certificate: {e}", file.display())),
     };
     let outcome = verify(&cert);
     if a.json {

@@ -53,7 +53,9 @@ pub(crate) fn run(a: CurveArgs, settings: &Settings, io: &mut Io) -> Exit {
         Err(e) => return io.bad_input(&e),
     };
     let bar = super::progress::Progress::new("curve");
-    let pts = match sample(&arch, &grid, settings, &|done, total| bar.update(done, total)) {
+    let pts = match sample(&arch, &grid, settings, &|done, total| {
+        bar.update(done, total)
+    }) {
         Ok(p) => p,
         Err(e) => return io.bad_input(&e),
     };

@@ -149,9 +149,13 @@ impl Io<'_> {
     /// Reports bad input: the message on standard error, and with `--json` a JSON document
     /// on standard output.
     pub(crate) fn bad_input(&mut self, e: &InputError) -> Exit {
-        self.err(&format!("error: {e}\n"));
+        self.bad(e.to_string())
+    }
+    /// Reports bad input described by `message` (a file that cannot be read or written).
+    pub(crate) fn bad(&mut self, message: String) -> Exit {
+        self.err(&format!("error: {message}\n"));
         if self.json {
-            self.out(&to_json(&json::ErrorJson::new(e.to_string())));
+            self.out(&to_json(&json::ErrorJson::new(message)));
         }
         Exit::BadInput
     }
