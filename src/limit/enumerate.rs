@@ -57,6 +57,7 @@ pub(crate) fn enumerate(
                 log.push(Candidate {
                     contacts: s,
                     eta: None,
+                    tried: false,
                     verdict: "not tried: a limit state at the static least thickness is verified"
                         .into(),
                 });
@@ -89,6 +90,7 @@ fn verify_group(
             Err(f) => log.push(Candidate {
                 contacts: s,
                 eta: None,
+                tried: true,
                 verdict: match f {
                     NewtonFailure::Empty => "rejected: empty pattern".into(),
                     NewtonFailure::NegativeMultiplier => {
@@ -109,6 +111,7 @@ fn verify_group(
             log.push(Candidate {
                 contacts: s.clone(),
                 eta: Some(r.eta),
+                tried: true,
                 verdict,
             })
         };

@@ -73,6 +73,9 @@ pub struct Candidate {
     pub contacts: Vec<Contact>,
     /// Refined η, when Newton converged.
     pub eta: Option<f64>,
+    /// False when the pattern was skipped (a limit state at the static least thickness
+    /// had already been verified); true when Newton was run on it.
+    pub tried: bool,
     /// Kept or rejected, and why.
     pub verdict: String,
 }

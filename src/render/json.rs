@@ -77,6 +77,7 @@ struct Checks {
 #[derive(Debug, Serialize)]
 struct CandidateJson {
     pattern: Vec<Contact>,
+    tried: bool,
     eta: Option<f64>,
     verdict: String,
 }
@@ -214,6 +215,7 @@ fn candidates(c: &[Candidate]) -> Vec<CandidateJson> {
     c.iter()
         .map(|c| CandidateJson {
             pattern: c.contacts.clone(),
+            tried: c.tried,
             eta: c.eta,
             verdict: c.verdict.clone(),
         })

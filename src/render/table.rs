@@ -189,15 +189,33 @@ pub fn solve(sol: &Solution, explain: bool) -> String {
         }
     }
     if explain {
-        let _ = writeln!(s, "\npatterns tried ({}):", sol.candidates.len());
-        for c in &sol.candidates {
-            let joints: Vec<String> = c
-                .contacts
+        let tried: Vec<_> = sol.candidates.iter().filter(|c| c.tried).collect();
+        let _ = writeln!(
+            s,
+            "\npatterns tried ({}), in the order verified; contacts by angle, kind@beta rad (deg):",
+            tried.len()
+        );
+        for c in tried {
+            let mut contacts = c.contacts.clone();
+            contacts.sort_by(|a, b| a.beta.total_cmp(&b.beta));
+            let joints: Vec<String> = contacts
                 .iter()
-                .map(|k| format!("{}@{:.6}", short(k), k.beta))
+                .map(|k| format!("{}@{:.6} ({:.3})", short(k), k.beta, k.beta.to_degrees()))
                 .collect();
             let eta = c.eta.map_or("-".to_string(), |e| sig(e, 12));
-            let _ = writeln!(s, "  [{}] eta = {eta}: {}", joints.join(" "), c.verdict);
+            let _ = writeln!(
+                s,
+                "  {}\n      eta = {eta}: {}",
+                joints.join(" "),
+                c.verdict
+            );
+        }
+        let skipped = sol.candidates.iter().filter(|c| !c.tried).count();
+        if skipped > 0 {
+            let _ = writeln!(
+                s,
+                "  ({skipped} smaller subsets not tried: a limit state at the static least thickness was verified first)"
+            );
         }
     }
     s
