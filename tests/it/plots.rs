@@ -1,10 +1,32 @@
 //! Pictures: every plot command produces a well-formed SVG (parsed back) with the
-//! expected elements, and a PNG that decodes to the requested width.
+//! expected elements, and a PNG that decodes to the requested width; the output format
+//! follows --out; tints, colour bar, log axis and joint thinning are checked in the SVG.
 
-use arch_enum::render::figures;
+use arch_enum::figures::{self, MapGrid};
 use arch_enum::render::plot::{mode_color, svg_to_png};
+use arch_enum::render::{plot_arch, plot_curve, plot_ecc, plot_map};
 use arch_enum::{Arch, CollapseMode, Settings, WeightModel};
 use assert_cmd::Command;
+
+fn curve_svg(arches: &[Arch], log_eta: bool) -> String {
+    let data = figures::curves(arches, &Settings::default()).unwrap();
+    plot_curve::svg(&data, log_eta).unwrap()
+}
+
+fn arch_svg(arch: &Arch, mu: f64, eta: Option<f64>) -> Result<String, figures::NoFigure> {
+    let scene = figures::scene(arch, mu, eta, &Settings::default())?;
+    Ok(plot_arch::svg(&scene).unwrap())
+}
+
+fn map_svg(arch: &Arch, n_eta: usize, n_mu: usize, log_eta: bool) -> String {
+    let grid = MapGrid {
+        n_eta,
+        n_mu,
+        log_eta,
+    };
+    let m = figures::map(arch, grid, 2, &Settings::default(), &|_, _| {}).unwrap();
+    plot_map::svg(&m, log_eta).unwrap()
+}
 
 fn parse(svg: &str) -> roxmltree::Document<'_> {
     roxmltree::Document::parse(svg).unwrap_or_else(|e| panic!("SVG does not parse: {e}"))
@@ -20,15 +42,13 @@ fn semicircle() -> Arch {
 
 #[test]
 fn curve_figure_has_one_path_per_branch_and_a_marker_per_corner() {
-    let s = Settings::default();
-    let svg = figures::curve(
+    let svg = curve_svg(
         &[
             semicircle(),
             Arch::symmetric(1.15, WeightModel::Centreline).unwrap(),
         ],
-        &s,
-    )
-    .unwrap();
+        false,
+    );
     let doc = parse(&svg);
     // branches: thick polylines of more than two points in each mode's colour
     let thick: Vec<_> = doc
@@ -59,8 +79,7 @@ fn curve_figure_has_one_path_per_branch_and_a_marker_per_corner() {
 
 #[test]
 fn arch_figure_draws_the_mechanism_blocks() {
-    let s = Settings::default();
-    let svg = figures::arch(&semicircle(), 0.35, None, &s).unwrap();
+    let svg = arch_svg(&semicircle(), 0.35, None).unwrap();
     let doc = parse(&svg);
     let color = hex(mode_color(CollapseMode::MixedSlidingRotational));
     let blocks = doc
@@ -74,17 +93,17 @@ fn arch_figure_draws_the_mechanism_blocks() {
     assert_eq!(blocks, 4, "five active joints bound four moving blocks");
     assert!(svg.contains("mixed_sliding_rotational") && svg.contains("φ = 19.29°"));
     // above eta* the safe state of greatest margin, no mechanism
-    let safe = figures::arch(&semicircle(), 0.35, Some(0.2), &s).unwrap();
+    let safe = arch_svg(&semicircle(), 0.35, Some(0.2)).unwrap();
     assert!(safe.contains("safe"));
     assert!(!safe.contains("collapse mechanism"));
     // below eta*: nothing admissible to draw
-    assert!(figures::arch(&semicircle(), 0.35, Some(0.1), &s).is_err());
+    assert!(arch_svg(&semicircle(), 0.35, Some(0.1)).is_err());
 }
 
 #[test]
 fn eccentricity_and_map_figures() {
     let s = Settings::default();
-    let svg = figures::eccentricity(&semicircle(), 0.35, None, &s).unwrap();
+    let svg = plot_ecc::svg(&figures::scene(&semicircle(), 0.35, None, &s).unwrap()).unwrap();
     let doc = parse(&svg);
     assert!(doc
         .descendants()
@@ -94,7 +113,7 @@ fn eccentricity_and_map_figures() {
         .filter(|n| n.has_tag_name("circle"))
         .count();
     assert!(markers >= 3, "three hinges marked, found {markers}");
-    let map = figures::map(&semicircle(), 6, 8, &s, &|_, _| {}).unwrap();
+    let map = map_svg(&semicircle(), 6, 8, false);
     let doc = parse(&map);
     let cells = doc.descendants().filter(|n| n.has_tag_name("rect")).count();
     assert!(cells >= 48, "6 x 8 cells, found {cells} rectangles");
@@ -103,7 +122,8 @@ fn eccentricity_and_map_figures() {
 #[test]
 fn png_decodes_to_requested_size() {
     let s = Settings::default();
-    let svg = figures::eccentricity(&semicircle(), f64::INFINITY, None, &s).unwrap();
+    let scene = figures::scene(&semicircle(), f64::INFINITY, None, &s).unwrap();
+    let svg = plot_ecc::svg(&scene).unwrap();
     let png = svg_to_png(&svg, 640).unwrap();
     let pix = resvg::tiny_skia::Pixmap::decode_png(&png).unwrap();
     assert_eq!(pix.width(), 640);
