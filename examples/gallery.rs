@@ -82,5 +82,9 @@ fn main() {
         }
     })
     .expect("map");
-    save(dir, "map_alpha_0", &plot_map::svg(&map, false).expect("map figure"));
+    save(
+        dir,
+        "map_alpha_0",
+        &plot_map::svg(&map, false).expect("map figure"),
+    );
 }

@@ -26,8 +26,7 @@ const Y_LABELS: u32 = 50;
 const X_LABELS: u32 = 36;
 const MARGIN: u32 = 12;
 
-type Chart<'a, 'b> =
-    ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
 fn err(e: impl std::fmt::Display) -> String {
     e.to_string()
@@ -485,8 +484,11 @@ fn mechanism_panel(
         let edge = closed(&poly);
         ch.draw_series(std::iter::once(Polygon::new(poly, color.mix(0.45))))
             .map_err(err)?;
-        ch.draw_series(std::iter::once(PathElement::new(edge, color.stroke_width(2))))
-            .map_err(err)?;
+        ch.draw_series(std::iter::once(PathElement::new(
+            edge,
+            color.stroke_width(2),
+        )))
+        .map_err(err)?;
     }
     Ok(())
 }

@@ -7,8 +7,8 @@
 
 use crate::collapse_mode::CollapseMode;
 use crate::figures::CurveData;
-use crate::render::plot::{arch_label, boxed_text, mode_color, short_num, Axis, FAMILY};
 use crate::render::plot::AxisCoord;
+use crate::render::plot::{arch_label, boxed_text, mode_color, short_num, Axis, FAMILY};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -25,11 +25,7 @@ const H: u32 = 640;
 /// Width of the right margin: arch labels at the curve ends, then the legend.
 const RIGHT: u32 = 340;
 
-type Chart<'a, 'b> = ChartContext<
-    'a,
-    SVGBackend<'b>,
-    Cartesian2d<AxisCoord, AxisCoord>,
->;
+type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<AxisCoord, AxisCoord>>;
 
 /// Where to draw: the axes and the chart coordinates of a point (μ, η).
 struct Frame {
@@ -118,7 +114,11 @@ pub fn svg(data: &[CurveData], log_eta: bool) -> Result<String, String> {
                 "thickness ratio η = t / r"
             })
             .x_label_formatter(&|u| {
-                format!("{} ({:.0}°)", mu_ax.label(*u), mu_ax.from(*u).atan().to_degrees())
+                format!(
+                    "{} ({:.0}°)",
+                    mu_ax.label(*u),
+                    mu_ax.from(*u).atan().to_degrees()
+                )
             })
             .y_label_formatter(&|u| eta_ax.label(*u))
             .label_style((FAMILY, 13))
@@ -197,7 +197,8 @@ fn draw_curve(
     let outline = d.outline();
     // a horizontal top branch goes on to the right edge at its constant η
     if let (None, Some(&(mu, eta))) = (d.asymptote, outline.first()) {
-        let top_mu = |b: &(CollapseMode, Vec<(f64, f64)>)| b.1.iter().map(|p| p.0).fold(0.0, f64::max);
+        let top_mu =
+            |b: &(CollapseMode, Vec<(f64, f64)>)| b.1.iter().map(|p| p.0).fold(0.0, f64::max);
         let mode = d
             .branches
             .iter()

@@ -81,11 +81,19 @@ pub fn svg(scene: &ArchScene) -> Result<String, String> {
             Pos::new(HPos::Left, VPos::Top),
         );
         for (text, y, pos) in [
-            ("+η/2: e_M at the extrados (hinge E), e_T at sliding S+", eta / 2.0, above),
-            ("−η/2: e_M at the intrados (hinge I), e_T at sliding S−", -eta / 2.0, below),
+            (
+                "+η/2: e_M at the extrados (hinge E), e_T at sliding S+",
+                eta / 2.0,
+                above,
+            ),
+            (
+                "−η/2: e_M at the intrados (hinge I), e_T at sliding S−",
+                -eta / 2.0,
+                below,
+            ),
         ] {
             let (px, py) = ch.backend_coord(&(x, y));
-            let dy = if y > 0.0 { -3 } else { 3 };
+            let dy = if y > 0.0 { -10 } else { 10 };
             root.draw(&Text::new(
                 text,
                 (px, py + dy),

@@ -63,7 +63,13 @@ pub fn svg(map: &MapData, log_eta: bool) -> Result<String, String> {
     if map.etas.len() < 2 || map.mus.len() < 2 {
         return Err("a map needs at least 2 x 2 cells".into());
     }
-    let finite = || map.values.iter().flatten().copied().filter(|v| v.is_finite());
+    let finite = || {
+        map.values
+            .iter()
+            .flatten()
+            .copied()
+            .filter(|v| v.is_finite())
+    };
     let vmax_pos = finite().fold(0.0f64, f64::max).max(f64::MIN_POSITIVE);
     let vmax_neg = finite()
         .fold(0.0f64, |m, v| m.max(-v))
@@ -100,10 +106,15 @@ pub fn svg(map: &MapData, log_eta: bool) -> Result<String, String> {
             .map_err(err)?;
         for (i, row) in map.values.iter().enumerate() {
             for (j, &v) in row.iter().enumerate() {
-                ch.draw_series(std::iter::once(Rectangle::new(
+                let (corners, color) = (
                     [at(me[j], ee[i]), at(me[j + 1], ee[i + 1])],
-                    value_color(v, vmax_pos, vmax_neg).filled(),
-                )))
+                    value_color(v, vmax_pos, vmax_neg),
+                );
+                // the outline in the same colour closes the anti-aliasing seams
+                ch.draw_series([
+                    Rectangle::new(corners, color.filled()),
+                    Rectangle::new(corners, color.stroke_width(1)),
+                ])
                 .map_err(err)?;
             }
         }
@@ -116,7 +127,11 @@ pub fn svg(map: &MapData, log_eta: bool) -> Result<String, String> {
                 "thickness ratio η = t / r"
             })
             .x_label_formatter(&|u| {
-                format!("{} ({:.0}°)", mu_ax.label(*u), mu_ax.from(*u).atan().to_degrees())
+                format!(
+                    "{} ({:.0}°)",
+                    mu_ax.label(*u),
+                    mu_ax.from(*u).atan().to_degrees()
+                )
             })
             .y_label_formatter(&|u| eta_ax.label(*u))
             .label_style((FAMILY, 12))
@@ -175,7 +190,10 @@ fn colour_bar(
         // from the top: safe bands BANDS-1 .. 0, then collapse bands 0 .. BANDS-1
         let (color, lo_edge) = if k < BANDS {
             let b = BANDS - 1 - k;
-            (band_color(b, true), (b + 1) as f64 / BANDS as f64 * vmax_pos)
+            (
+                band_color(b, true),
+                (b + 1) as f64 / BANDS as f64 * vmax_pos,
+            )
         } else {
             let b = k - BANDS;
             (band_color(b, false), -(b as f64) / BANDS as f64 * vmax_neg)
