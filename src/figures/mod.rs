@@ -199,10 +199,12 @@ pub fn scene(
         | Outcome::NoCollapse { reason } => return Err(NoFigure(reason)),
     };
     let (eta, x, pattern, limit) = match eta {
-        Some(e) if e < ls.eta * (1.0 - AT_LIMIT) => return Err(NoFigure(format!(
+        Some(e) if e < ls.eta * (1.0 - AT_LIMIT) => {
+            return Err(NoFigure(format!(
             "no admissible state at eta = {e}: the least thickness at this friction is eta* = {}",
             ls.eta
-        ))),
+        )))
+        }
         Some(e) if e > ls.eta * (1.0 + AT_LIMIT) => {
             let (x, pattern) = safe_state(arch, e, mu, settings)?;
             (e, x, pattern, None)

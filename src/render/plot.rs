@@ -186,11 +186,27 @@ impl Axis {
         }
     }
 
+    /// A μ tick label "μ (φ°)" at chart coordinate `u`: μ in the axis's format, the friction
+    /// angle φ = atan μ with one decimal when the whole axis stays below 10°, else none.
+    pub fn mu_label(&self, u: f64) -> String {
+        let d = usize::from(self.hi.atan().to_degrees() < 10.0);
+        format!(
+            "{} ({:.d$}°)",
+            self.label(u),
+            self.from(u).atan().to_degrees()
+        )
+    }
+
     /// The tick label at chart coordinate `u`, in the axis's one format.
     pub fn label(&self, u: f64) -> String {
         let d = self.decimals();
         format!("{:.d$}", self.from(u))
     }
+}
+
+/// The estimated width of `text` in pixels at font `size` (DejaVu Sans, mostly digits).
+pub fn text_width(text: &str, size: u32) -> i32 {
+    (0.47 * size as f64 * text.chars().count() as f64).ceil() as i32
 }
 
 /// Draws `text` on a white backing box (so a line behind it does not strike it through),
@@ -205,7 +221,7 @@ pub fn boxed_text<DB: plotters::prelude::DrawingBackend>(
 ) -> Result<(), String> {
     use plotters::prelude::*;
     use plotters::style::text_anchor::{HPos, VPos};
-    let w = (0.47 * size as f64 * text.chars().count() as f64).ceil() as i32;
+    let w = text_width(text, size);
     let h = size as i32 + 2;
     let x0 = match pos.h_pos {
         HPos::Left => at.0,

@@ -8,7 +8,9 @@
 use crate::collapse_mode::CollapseMode;
 use crate::figures::CurveData;
 use crate::render::plot::AxisCoord;
-use crate::render::plot::{arch_label, boxed_text, mode_color, short_num, Axis, FAMILY};
+use crate::render::plot::{
+    arch_label, boxed_text, mode_color, short_num, text_width, Axis, FAMILY,
+};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -113,13 +115,7 @@ pub fn svg(data: &[CurveData], log_eta: bool) -> Result<String, String> {
             } else {
                 "thickness ratio η = t / r"
             })
-            .x_label_formatter(&|u| {
-                format!(
-                    "{} ({:.0}°)",
-                    mu_ax.label(*u),
-                    mu_ax.from(*u).atan().to_degrees()
-                )
-            })
+            .x_label_formatter(&|u| mu_ax.mu_label(*u))
             .y_label_formatter(&|u| eta_ax.label(*u))
             .label_style((FAMILY, 13))
             .axis_desc_style((FAMILY, 15))
@@ -250,11 +246,55 @@ fn draw_labels(
     let px = |p: (f64, f64)| chart.backend_coord(&f.at(p));
     let (xr, yr) = chart.plotting_area().get_pixel_range();
     let top_right = Pos::new(HPos::Right, VPos::Top);
+    // boxes already placed, to keep corner labels of different arches apart
+    let mut placed: Vec<[i32; 4]> = Vec::new();
     for d in data {
         for &c in &d.corners {
             let (x, y) = px(c);
             let text = format!("({}, {})", short_num(c.0), short_num(c.1));
-            boxed_text(root, &text, (x - 7, y + 7), 12, top_right, BLACK)?;
+            let (w, h) = (text_width(&text, 12) + 4, 16);
+            // below-left first (a falling curve never passes there), then above-right,
+            // below-right, above-left, higher above-right: the first inside the plot and
+            // clear of other labels
+            let candidates = [
+                (x - 7 - w, y + 7, HPos::Right, VPos::Top),
+                (x + 7, y - 7 - h, HPos::Left, VPos::Bottom),
+                (x + 7, y + 7, HPos::Left, VPos::Top),
+                (x - 7 - w, y - 7 - h, HPos::Right, VPos::Bottom),
+                (x + 7, y - 9 - 2 * h, HPos::Left, VPos::Bottom),
+                (x + 7, y - 11 - 3 * h, HPos::Left, VPos::Bottom),
+            ];
+            let inside = |b: &[i32; 4]| {
+                b[0] >= xr.start && b[2] <= xr.end && b[1] >= yr.start && b[3] <= yr.end
+            };
+            let clear = |b: &[i32; 4]| {
+                placed
+                    .iter()
+                    .all(|p| b[2] <= p[0] || b[0] >= p[2] || b[3] <= p[1] || b[1] >= p[3])
+            };
+            let boxes: Vec<([i32; 4], HPos, VPos)> = candidates
+                .iter()
+                .map(|&(x0, y0, hp, vp)| ([x0, y0, x0 + w, y0 + h], hp, vp))
+                .collect();
+            let (b, hp, vp) = boxes
+                .iter()
+                .find(|c| inside(&c.0) && clear(&c.0))
+                .or_else(|| boxes.iter().find(|c| inside(&c.0)))
+                .unwrap_or(&boxes[0]);
+            let at = (
+                if matches!(hp, HPos::Right) {
+                    b[2] - 2
+                } else {
+                    b[0] + 2
+                },
+                if matches!(vp, VPos::Top) {
+                    b[1] + 1
+                } else {
+                    b[3] - 1
+                },
+            );
+            boxed_text(root, &text, at, 12, Pos::new(*hp, *vp), BLACK)?;
+            placed.push(*b);
         }
         if let Some(eta_inf) = d.asymptote {
             let (x, y) = px((f.mu.hi, eta_inf));

@@ -126,13 +126,7 @@ pub fn svg(map: &MapData, log_eta: bool) -> Result<String, String> {
             } else {
                 "thickness ratio η = t / r"
             })
-            .x_label_formatter(&|u| {
-                format!(
-                    "{} ({:.0}°)",
-                    mu_ax.label(*u),
-                    mu_ax.from(*u).atan().to_degrees()
-                )
-            })
+            .x_label_formatter(&|u| mu_ax.mu_label(*u))
             .y_label_formatter(&|u| eta_ax.label(*u))
             .label_style((FAMILY, 12))
             .axis_desc_style((FAMILY, 14))

@@ -208,8 +208,11 @@ fn output_format_follows_the_out_extension() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
-/// (fill, opacity, points) of every polygon.
-fn polygons<'a>(doc: &'a roxmltree::Document) -> Vec<(&'a str, f64, Vec<(f64, f64)>)> {
+/// A polygon's fill, opacity and points.
+type Poly<'a> = (&'a str, f64, Vec<(f64, f64)>);
+
+/// Every polygon of the document.
+fn polygons<'a>(doc: &'a roxmltree::Document) -> Vec<Poly<'a>> {
     doc.descendants()
         .filter(|n| n.has_tag_name("polygon"))
         .map(|n| {
