@@ -282,7 +282,7 @@ fn arch_panel(
     Ok(())
 }
 
-/// The radial joints of a discrete arch, as one path (one SVG element).
+/// The radial joints of a discrete arch (one line each; called only when they are visible).
 fn joint_lines(ch: &mut Chart, eta: f64, joints: &[f64]) -> Result<(), String> {
     let (ri, re) = (1.0 - eta / 2.0, 1.0 + eta / 2.0);
     let segments = joints.iter().map(|&b| {
