@@ -6,8 +6,9 @@
 //! cargo run --release --example gallery -- docs/gallery
 //! ```
 
+use arch_enum::figures::{self, margin_map::available_threads, MapGrid};
 use arch_enum::limit_curve::trace;
-use arch_enum::render::{figures, plot::svg_to_png};
+use arch_enum::render::{plot::svg_to_png, plot_arch, plot_curve, plot_ecc, plot_map};
 use arch_enum::{Arch, CollapseMode, Settings, WeightModel};
 use std::f64::consts::PI;
 use std::path::Path;
@@ -47,8 +48,12 @@ fn main() {
             } else {
                 3.0 * b.mu_min
             };
-            match figures::arch(&arch, mu, None, &s) {
-                Ok(svg) => save(dir, &format!("arch_{name}_{}", b.mode.name()), &svg),
+            match figures::scene(&arch, mu, None, &s) {
+                Ok(scene) => save(
+                    dir,
+                    &format!("arch_{name}_{}", b.mode.name()),
+                    &plot_arch::svg(&scene).expect("arch figure"),
+                ),
                 Err(e) => eprintln!("{name} {}: {e:?}", b.mode.name()),
             }
         }
@@ -57,18 +62,29 @@ fn main() {
     save(
         dir,
         "curves",
-        &figures::curve(&arches, &s).expect("curve figure"),
+        &plot_curve::svg(&figures::curves(&arches, &s).expect("curves"), false)
+            .expect("curve figure"),
     );
     save(
         dir,
         "eccentricity_alpha_0_mu_0.35",
-        &figures::eccentricity(&arches[1], 0.35, None, &s).expect("eccentricity"),
+        &plot_ecc::svg(&figures::scene(&arches[1], 0.35, None, &s).expect("state"))
+            .expect("eccentricity"),
     );
-    let map = figures::map(&arches[1], 36, 48, &s, &|done, total| {
+    let grid = MapGrid {
+        n_eta: 36,
+        n_mu: 48,
+        log_eta: false,
+    };
+    let map = figures::map(&arches[1], grid, available_threads(), &s, &|done, total| {
         if done == total {
             eprintln!("map: {total} cells");
         }
     })
     .expect("map");
-    save(dir, "map_alpha_0", &map);
+    save(
+        dir,
+        "map_alpha_0",
+        &plot_map::svg(&map, false).expect("map figure"),
+    );
 }

@@ -28,9 +28,9 @@
 //! | [`assess`] | a given thickness: factors of safety, μ_min(η), the safest state |
 //! | [`collapse_mode`] | §5 collapse-mode names from the pattern |
 //! | [`certificate`] | certificates (format, certify) and their independent re-check (verify, interval arithmetic) |
-//! | [`thrust_line`], [`margin_map`] | numerics for the pictures |
+//! | [`figures`] | §3–4 the data of the pictures: sampled curves, lines of thrust and friction, block motions, margin map |
 //! | [`contact`], [`settings`] | vocabulary (contacts, locations) and every tolerance |
-//! | [`render`], [`cli`] | text, JSON and figures, the command line (thin layers) |
+//! | [`render`], [`cli`] | text, JSON and SVG/PNG drawing of [`figures`] data, the command line (thin layers, no numerics) |
 //!
 //! ```
 //! use arch_enum::{Arch, WeightModel, Settings, solve, Outcome};
@@ -50,12 +50,12 @@ pub mod certificate;
 pub mod cli;
 pub mod collapse_mode;
 pub mod contact;
+pub mod figures;
 pub mod friction;
 pub mod kinematics;
 pub mod limit;
 pub mod limit_curve;
 pub mod lp;
-pub mod margin_map;
 pub mod mechanism;
 pub mod refine;
 pub mod render;
@@ -63,7 +63,6 @@ pub mod scan;
 pub mod search;
 pub mod settings;
 pub mod statics;
-pub mod thrust_line;
 
 pub use arch::{Arch, InputError, JointLayout, Radians, WeightModel};
 pub use collapse_mode::CollapseMode;

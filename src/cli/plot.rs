@@ -9,15 +9,65 @@ use clap::{Args, Subcommand};
 
 #[derive(Args, Debug)]
 pub(crate) struct Output {
-    /// Output file (default: <figure>.svg, or <figure>.png with --png, in the current folder).
+    /// Output file; its extension picks the format: .svg or .png (default: <figure>.svg, or
+    /// <figure>.png with --png, in the current folder).
     #[arg(long)]
     out: Option<std::path::PathBuf>,
-    /// Render to PNG in-process (fonts embedded) instead of SVG.
+    /// PNG output (rendered in-process, fonts embedded); with --out the path must end in .png.
     #[arg(long)]
     png: bool,
     /// PNG width in pixels (100 to 8000).
     #[arg(long, default_value_t = 1200)]
     width: u32,
+}
+
+/// The format of the file written.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Format {
+    Svg,
+    Png,
+}
+
+impl Output {
+    /// The path written and its format: from the extension of --out (.svg or .png, any
+    /// case), else `<name>.svg` or `<name>.png` with --png. Checked before any work.
+    fn target(&self, name: &str) -> Result<(std::path::PathBuf, Format), InputError> {
+        if !(100..=8000).contains(&self.width) {
+            return Err(InputError::OutOfRange {
+                arg: "--width",
+                value: self.width.to_string(),
+                range: "100 to 8000 pixels".into(),
+            });
+        }
+        let Some(path) = &self.out else {
+            let (ext, f) = if self.png {
+                ("png", Format::Png)
+            } else {
+                ("svg", Format::Svg)
+            };
+            return Ok((format!("{name}.{ext}").into(), f));
+        };
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase);
+        match (ext.as_deref(), self.png) {
+            (Some("png"), _) => Ok((path.clone(), Format::Png)),
+            (Some("svg"), false) => Ok((path.clone(), Format::Svg)),
+            (Some("svg"), true) => Err(InputError::Inconsistent {
+                arg: "--out",
+                reason: format!(
+                    "{} ends in .svg but --png asks for a PNG; valid extensions: .png (or .svg without --png)",
+                    path.display()
+                ),
+            }),
+            _ => Err(InputError::OutOfRange {
+                arg: "--out",
+                value: path.display().to_string(),
+                range: "a file name ending in .svg or .png".into(),
+            }),
+        }
+    }
 }
 
 /// The arch and the state a figure draws.
@@ -37,7 +87,7 @@ pub(crate) struct StateArgs {
 pub(crate) enum Figure {
     /// The eta-mu limit curves of one or more symmetric openings in one figure.
     #[command(
-        after_help = "Example:\n  arch-enum plot curve --alpha 0 --alpha 0.5236 --alpha 1.0 --png"
+        after_help = "Example:\n  arch-enum plot curve --alpha 0 --alpha 0.5236 --alpha 1.0 --out curves.png\n  arch-enum plot curve --alpha -1.2 --log-eta"
     )]
     Curve {
         /// Opening(s) in radians, -pi/2 < alpha < pi/2; repeat for several arches.
@@ -46,12 +96,15 @@ pub(crate) enum Figure {
         /// Where self-weight acts.
         #[arg(long, value_enum, default_value = "centreline")]
         weight: WeightArg,
+        /// Log-scale eta axis (for shallow arches, e.g. --alpha -1.2).
+        #[arg(long)]
+        log_eta: bool,
         #[command(flatten)]
         output: Output,
     },
     /// The arch to scale at eta*(mu) (or at --eta) with its lines of thrust and friction, and the mechanism.
     #[command(
-        after_help = "Example:\n  arch-enum plot arch --alpha 0 --mu 0.35 --png\n  arch-enum plot arch --alpha 1.0 --mu 2 --eta 0.9"
+        after_help = "Example:\n  arch-enum plot arch --alpha 0 --mu 0.35 --out arch.png\n  arch-enum plot arch --alpha 1.0 --mu 2 --eta 0.9"
     )]
     Arch {
         #[command(flatten)]
@@ -66,7 +119,10 @@ pub(crate) enum Figure {
         #[command(flatten)]
         output: Output,
     },
-    /// A margin map over the eta-mu plane with the exact limit curve (computed in parallel).
+    /// A margin map over the eta-mu plane with the exact limit curve (computed on all cores).
+    #[command(
+        after_help = "Example:\n  arch-enum plot map --alpha 0 --out map.png\n  arch-enum plot map --alpha -1.2 --log-eta --threads 4"
+    )]
     Map {
         #[command(flatten)]
         arch: ArchArgs,
@@ -76,47 +132,63 @@ pub(crate) enum Figure {
         /// Grid cells along mu (4 to 400).
         #[arg(long, default_value_t = 48)]
         n_mu: usize,
+        /// Log-scale eta axis, cells spaced geometrically (for shallow arches).
+        #[arg(long)]
+        log_eta: bool,
+        /// Worker threads (1 to 1024; default: every core the machine offers).
+        #[arg(long)]
+        threads: Option<usize>,
         #[command(flatten)]
         output: Output,
     },
 }
 
 pub(crate) fn run(figure: Figure, settings: &Settings, io: &mut Io) -> Exit {
-    use crate::render::figures;
+    use crate::figures;
+    use crate::render::{plot_arch, plot_curve, plot_ecc, plot_map};
+    let (name, output) = match &figure {
+        Figure::Curve { output, .. } => ("curve", output),
+        Figure::Arch { output, .. } => ("arch", output),
+        Figure::Eccentricity { output, .. } => ("eccentricity", output),
+        Figure::Map { output, .. } => ("map", output),
+    };
+    let (path, format, width) = match output.target(name) {
+        Ok((p, f)) => (p, f, output.width),
+        Err(e) => return io.bad_input(&e),
+    };
     let bar = super::progress::Progress::new("map");
     let progress = |done: usize, total: usize| bar.update(done, total);
-    let (name, output, result) = match figure {
+    let drawn: Result<Result<String, String>, figures::NoFigure> = match figure {
         Figure::Curve {
             alpha,
             weight,
-            output,
+            log_eta,
+            ..
         } => {
             let arches: Result<Vec<Arch>, InputError> = alpha
                 .iter()
                 .map(|&a| Arch::symmetric(a, weight.into()))
                 .collect();
             match arches {
-                Ok(a) => ("curve", output, figures::curve(&a, settings)),
+                Ok(a) => figures::curves(&a, settings).map(|d| plot_curve::svg(&d, log_eta)),
                 Err(e) => return io.bad_input(&e),
             }
         }
-        Figure::Arch { state: st, output } => match plot_inputs(&st) {
-            Ok(a) => ("arch", output, figures::arch(&a, st.mu, st.eta, settings)),
+        Figure::Arch { state: st, .. } => match plot_inputs(&st) {
+            Ok(a) => figures::scene(&a, st.mu, st.eta, settings).map(|s| plot_arch::svg(&s)),
             Err(e) => return io.bad_input(&e),
         },
-        Figure::Eccentricity { state: st, output } => match plot_inputs(&st) {
-            Ok(a) => (
-                "eccentricity",
-                output,
-                figures::eccentricity(&a, st.mu, st.eta, settings),
-            ),
+        Figure::Eccentricity { state: st, .. } => match plot_inputs(&st) {
+            Ok(a) => figures::scene(&a, st.mu, st.eta, settings).map(|s| plot_ecc::svg(&s)),
             Err(e) => return io.bad_input(&e),
         },
         Figure::Map {
             arch,
             n_eta,
             n_mu,
-            output,
+            log_eta,
+            threads,
+            ..
         } => {
             for (name, n) in [("--n-eta", n_eta), ("--n-mu", n_mu)] {
                 if !(4..=400).contains(&n) {
@@ -128,44 +200,46 @@ pub(crate) fn run(figure: Figure, settings: &Settings, io: &mut Io) -> Exit {
                     return io.bad_input(&e);
                 }
             }
+            let threads = match threads {
+                None => figures::margin_map::available_threads(),
+                Some(t) if (1..=1024).contains(&t) => t,
+                Some(t) => {
+                    let e = InputError::OutOfRange {
+                        arg: "--threads",
+                        value: t.to_string(),
+                        range: "whole numbers 1 to 1024".into(),
+                    };
+                    return io.bad_input(&e);
+                }
+            };
+            let grid = figures::MapGrid {
+                n_eta,
+                n_mu,
+                log_eta,
+            };
             match arch.build() {
-                Ok(a) => (
-                    "map",
-                    output,
-                    figures::map(&a, n_eta, n_mu, settings, &progress),
-                ),
+                Ok(a) => figures::map(&a, grid, threads, settings, &progress)
+                    .map(|m| plot_map::svg(&m, log_eta)),
                 Err(e) => return io.bad_input(&e),
             }
         }
     };
-    if !(100..=8000).contains(&output.width) {
-        let e = InputError::OutOfRange {
-            arg: "--width",
-            value: output.width.to_string(),
-            range: "100 to 8000 pixels".into(),
-        };
-        return io.bad_input(&e);
-    }
-    let svg = match result {
-        Ok(s) => s,
-        Err(figures::NoFigure(reason)) => {
+    let svg = match drawn {
+        Ok(Ok(s)) => s,
+        Ok(Err(reason)) | Err(figures::NoFigure(reason)) => {
             io.err(&format!("no figure: {reason}\n"));
             return Exit::NoAnswer;
         }
     };
-    let path = output
-        .out
-        .unwrap_or_else(|| format!("{name}.{}", if output.png { "png" } else { "svg" }).into());
-    let bytes = if output.png {
-        match crate::render::plot::svg_to_png(&svg, output.width) {
+    let bytes = match format {
+        Format::Svg => svg.into_bytes(),
+        Format::Png => match crate::render::plot::svg_to_png(&svg, width) {
             Ok(b) => b,
             Err(e) => {
                 io.err(&format!("no figure: {e}\n"));
                 return Exit::NoAnswer;
             }
-        }
-    } else {
-        svg.into_bytes()
+        },
     };
     if let Err(e) = std::fs::write(&path, bytes) {
         io.err(&format!(

@@ -1,7 +1,6 @@
-//! Output formatting: pure functions from results to text. No numerics here.
+//! Output formatting: pure functions from results to text. No numerics here: the figures
+//! draw the data that [`crate::figures`] computed and call no solver.
 
-#[cfg(feature = "svg")]
-pub mod figures;
 pub mod json;
 #[cfg(feature = "svg")]
 pub mod plot;

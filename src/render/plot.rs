@@ -78,3 +78,199 @@ pub fn short_num(v: f64) -> String {
         format!("{v:.2e}")
     }
 }
+
+/// "α = 0.524" for a symmetric arch, else its springing angles.
+pub fn arch_label(arch: &crate::arch::Arch) -> String {
+    if arch.is_symmetric() {
+        format!("α = {}", short_num(0.0 - arch.beta_right()))
+    } else {
+        format!(
+            "β_R = {:.3}, β_L = {:.3}",
+            arch.beta_right(),
+            arch.beta_left()
+        )
+    }
+}
+
+/// One axis of a chart: its range, linear or logarithmic, and its ticks. Charts are built on
+/// u = v (linear) or u = ln v (log), so both kinds of axis have the same type; data are
+/// placed with [`Axis::to`], and every tick of an axis is printed with the same format.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Axis {
+    /// Lower end (> 0 on a log axis).
+    pub lo: f64,
+    /// Upper end.
+    pub hi: f64,
+    /// Logarithmic scale.
+    pub log: bool,
+}
+
+/// Roughly how many ticks a linear axis gets.
+const LINEAR_TICKS: f64 = 6.0;
+
+impl Axis {
+    /// The chart coordinate of the value `v`.
+    pub fn to(&self, v: f64) -> f64 {
+        if self.log {
+            v.ln()
+        } else {
+            v
+        }
+    }
+
+    /// The value at the chart coordinate `u`.
+    pub fn from(&self, u: f64) -> f64 {
+        if self.log {
+            u.exp()
+        } else {
+            u
+        }
+    }
+
+    /// The chart coordinates spanned, with the ticks as key points.
+    pub fn range(&self) -> AxisCoord {
+        AxisCoord {
+            lo: self.to(self.lo),
+            hi: self.to(self.hi),
+            keys: self.ticks().iter().map(|&v| self.to(v)).collect(),
+        }
+    }
+
+    fn linear_step(&self) -> f64 {
+        let raw = (self.hi - self.lo) / LINEAR_TICKS;
+        let mag = 10f64.powf(raw.log10().floor());
+        [1.0, 2.0, 5.0, 10.0]
+            .into_iter()
+            .map(|m| m * mag)
+            .find(|&s| s >= raw * (1.0 - 1e-9))
+            .unwrap_or(10.0 * mag)
+    }
+
+    /// Tick values: multiples of 1, 2 or 5 × 10^k (linear), or 1, 2, 3, 5 × 10^k thinned to
+    /// at most eight (log).
+    pub fn ticks(&self) -> Vec<f64> {
+        if !self.log {
+            let step = self.linear_step();
+            let k0 = (self.lo / step - 1e-9).ceil() as i64;
+            let k1 = (self.hi / step + 1e-9).floor() as i64;
+            return (k0..=k1).map(|k| k as f64 * step).collect();
+        }
+        let e0 = self.lo.log10().floor() as i32;
+        let e1 = self.hi.log10().ceil() as i32;
+        let with = |ms: &[f64]| -> Vec<f64> {
+            (e0..=e1)
+                .flat_map(|e| ms.iter().map(move |m| m * 10f64.powi(e)))
+                .filter(|&v| v >= self.lo * (1.0 - 1e-9) && v <= self.hi * (1.0 + 1e-9))
+                .collect()
+        };
+        let mut t = with(&[1.0, 2.0, 3.0, 5.0]);
+        if t.len() < 4 {
+            t = with(&[1.0, 2.0, 3.0, 4.0, 5.0, 7.0]);
+        }
+        if t.len() > 8 {
+            t = with(&[1.0, 3.0]);
+        }
+        if t.len() > 8 {
+            t = with(&[1.0]);
+        }
+        t
+    }
+
+    /// Decimals shared by every tick label of the axis.
+    pub fn decimals(&self) -> usize {
+        let dec = |v: f64| (-(v.abs().log10() + 1e-9).floor()).max(0.0) as usize;
+        if self.log {
+            self.ticks().into_iter().map(dec).max().unwrap_or(0).min(6)
+        } else {
+            dec(self.linear_step()).min(6)
+        }
+    }
+
+    /// A μ tick label "μ (φ°)" at chart coordinate `u`: μ in the axis's format, the friction
+    /// angle φ = atan μ with one decimal when the whole axis stays below 10°, else none.
+    pub fn mu_label(&self, u: f64) -> String {
+        let d = usize::from(self.hi.atan().to_degrees() < 10.0);
+        format!(
+            "{} ({:.d$}°)",
+            self.label(u),
+            self.from(u).atan().to_degrees()
+        )
+    }
+
+    /// The tick label at chart coordinate `u`, in the axis's one format.
+    pub fn label(&self, u: f64) -> String {
+        let d = self.decimals();
+        format!("{:.d$}", self.from(u))
+    }
+}
+
+/// The estimated width of `text` in pixels at font `size` (DejaVu Sans, mostly digits).
+pub fn text_width(text: &str, size: u32) -> i32 {
+    (0.47 * size as f64 * text.chars().count() as f64).ceil() as i32
+}
+
+/// Draws `text` on a white backing box (so a line behind it does not strike it through),
+/// anchored at the pixel `at` of `area` by `pos`.
+pub fn boxed_text<DB: plotters::prelude::DrawingBackend>(
+    area: &plotters::prelude::DrawingArea<DB, plotters::coord::Shift>,
+    text: &str,
+    at: (i32, i32),
+    size: u32,
+    pos: plotters::style::text_anchor::Pos,
+    color: RGBColor,
+) -> Result<(), String> {
+    use plotters::prelude::*;
+    use plotters::style::text_anchor::{HPos, VPos};
+    let w = text_width(text, size);
+    let h = size as i32 + 2;
+    let x0 = match pos.h_pos {
+        HPos::Left => at.0,
+        HPos::Center => at.0 - w / 2,
+        HPos::Right => at.0 - w,
+    };
+    let y0 = match pos.v_pos {
+        VPos::Top => at.1,
+        VPos::Center => at.1 - h / 2,
+        VPos::Bottom => at.1 - h,
+    };
+    area.draw(&Rectangle::new(
+        [(x0 - 2, y0 - 1), (x0 + w + 2, y0 + h + 1)],
+        WHITE.mix(0.85).filled(),
+    ))
+    .map_err(|e| e.to_string())?;
+    area.draw(&Text::new(
+        text.to_string(),
+        at,
+        TextStyle::from((FAMILY, size).into_font())
+            .pos(pos)
+            .color(&color),
+    ))
+    .map_err(|e| e.to_string())
+}
+
+/// The chart coordinate of an [`Axis`]: linear in u from `to(lo)` to `to(hi)`, with the
+/// axis's ticks as its only key points.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AxisCoord {
+    lo: f64,
+    hi: f64,
+    keys: Vec<f64>,
+}
+
+impl plotters::coord::ranged1d::Ranged for AxisCoord {
+    type ValueType = f64;
+    type FormatOption = plotters::coord::ranged1d::DefaultFormatting;
+
+    fn map(&self, v: &f64, limit: (i32, i32)) -> i32 {
+        let t = (v - self.lo) / (self.hi - self.lo);
+        limit.0 + (t * (limit.1 - limit.0) as f64).round() as i32
+    }
+
+    fn key_points<H: plotters::coord::ranged1d::KeyPointHint>(&self, _hint: H) -> Vec<f64> {
+        self.keys.clone()
+    }
+
+    fn range(&self) -> std::ops::Range<f64> {
+        self.lo..self.hi
+    }
+}

@@ -1,280 +1,395 @@
-//! Figure: the η–μ limit curves of one or more arches. Safe domain (above/right of the
-//! curve) and collapse domain shaded, each branch coloured by its collapse mode, corners
-//! marked and labelled (μ, η), friction angles on the μ labels, the asymptote of an
-//! overturning branch dashed.
+//! Figure: the η–μ limit curves of one or more arches ([`CurveData`]). Each branch is
+//! coloured by its collapse mode, corners are marked and labelled (μ, η), μ labels carry
+//! the friction angle, the asymptote of an overturning branch is dashed. The safe domain of
+//! each arch (above / right of its curve) is tinted with the same translucent green, so the
+//! tint deepens with the number of arches that stand there and no arch's tint hides
+//! another's; a single arch also gets its collapse domain tinted red.
 
 use crate::collapse_mode::CollapseMode;
-use crate::limit_curve::LimitCurve;
-use crate::render::plot::{mode_color, mu_label, short_num, FAMILY};
+use crate::figures::CurveData;
+use crate::render::plot::AxisCoord;
+use crate::render::plot::{
+    arch_label, boxed_text, mode_color, short_num, text_width, Axis, FAMILY,
+};
+use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-/// One arch's curve, ready to draw: polylines per branch (μ, η), corners, asymptote.
-#[derive(Debug, Clone)]
-pub struct CurveData {
-    /// Legend label of the arch (e.g. "α = 0").
-    pub label: String,
-    /// The branches: mode and points (μ, η) by decreasing μ.
-    pub branches: Vec<(CollapseMode, Vec<(f64, f64)>)>,
-    /// Finite corners (μ, η).
-    pub corners: Vec<(f64, f64)>,
-    /// η of the asymptote at μ = ∞ when the top branch only approaches it.
-    pub asymptote: Option<f64>,
-    /// μ_ms.
-    pub mu_ms: f64,
+/// Fill of the safe domain (one translucent layer per arch).
+pub const SAFE_TINT: RGBColor = RGBColor(0, 150, 60);
+/// Opacity of one arch's safe layer.
+pub const SAFE_OPACITY: f64 = 0.1;
+/// Fill of the collapse domain (drawn for a single arch only).
+pub const COLLAPSE_TINT: RGBColor = RGBColor(214, 39, 40);
+
+const W: u32 = 1100;
+const H: u32 = 640;
+/// Width of the right margin: arch labels at the curve ends, then the legend.
+const RIGHT: u32 = 340;
+
+type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<AxisCoord, AxisCoord>>;
+
+/// Where to draw: the axes and the chart coordinates of a point (μ, η).
+struct Frame {
+    mu: Axis,
+    eta: Axis,
 }
 
-/// Samples the branches of `curve` for drawing (`n` points per branch, μ up to `mu_cap`).
-pub fn curve_data(
-    arch: &crate::arch::Arch,
-    label: &str,
-    curve: &LimitCurve,
-    mu_cap: f64,
-    n: usize,
-    settings: &crate::settings::Settings,
-) -> Option<CurveData> {
-    let mu_ms = curve.mu_ms?;
-    let mut branches = Vec::new();
-    for b in &curve.branches {
-        if b.mode == CollapseMode::PurelySliding {
-            continue;
-        }
-        let hi = b.mu_max.min(mu_cap);
-        let lo = b.mu_min;
-        let mut pts = vec![];
-        // the upper end: a corner, or the horizontal branch's constant η at the cap
-        // (an asymptotic branch is sampled only, it never reaches its η_min)
-        if b.mu_max.is_finite() || b.eta_min == b.eta_max {
-            pts.push((hi, b.eta_min));
-        }
-        for i in 1..n {
-            let mu = hi * (lo / hi).powf(i as f64 / n as f64);
-            if let Ok(crate::limit::Outcome::Limit(ls)) =
-                crate::limit::solve(arch, mu, settings).map(|s| s.outcome)
-            {
-                pts.push((mu, ls.eta));
+impl Frame {
+    fn new(data: &[CurveData], log_eta: bool) -> Frame {
+        let pts = || data.iter().flat_map(|d| d.outline());
+        let mu_lo = data.iter().map(|d| d.mu_ms).fold(f64::INFINITY, f64::min) * 0.8;
+        let mu_hi = pts().map(|p| p.0).fold(0.0f64, f64::max) * 1.05;
+        let top = pts().map(|p| p.1).fold(0.0f64, f64::max);
+        let low = pts()
+            .map(|p| p.1)
+            .chain(data.iter().filter_map(|d| d.asymptote))
+            .fold(f64::INFINITY, f64::min);
+        let eta = if log_eta {
+            Axis {
+                lo: 0.5 * low,
+                hi: 1.6 * top,
+                log: true,
             }
+        } else {
+            Axis {
+                lo: 0.0,
+                hi: 1.3 * top,
+                log: false,
+            }
+        };
+        Frame {
+            mu: Axis {
+                lo: mu_lo,
+                hi: mu_hi,
+                log: true,
+            },
+            eta,
         }
-        pts.push((lo, b.eta_max));
-        branches.push((b.mode, pts));
     }
-    let corners = curve
-        .corners
-        .iter()
-        .filter(|c| c.mu.is_finite())
-        .map(|c| (c.mu, c.eta))
-        .collect();
-    let asymptote = curve
-        .corners
-        .iter()
-        .find(|c| c.mu.is_infinite())
-        .map(|c| c.eta);
-    Some(CurveData {
-        label: label.into(),
-        branches,
-        corners,
-        asymptote,
-        mu_ms,
-    })
+
+    fn at(&self, (mu, eta): (f64, f64)) -> (f64, f64) {
+        (self.mu.to(mu), self.eta.to(eta))
+    }
+
+    fn all(&self, pts: impl IntoIterator<Item = (f64, f64)>) -> Vec<(f64, f64)> {
+        pts.into_iter().map(|p| self.at(p)).collect()
+    }
 }
 
-/// Draws the curves of several arches in one SVG.
-pub fn svg(data: &[CurveData], title: &str) -> Result<String, String> {
-    let mu_lo = data.iter().map(|d| d.mu_ms).fold(f64::INFINITY, f64::min) * 0.8;
-    let mu_hi = data
-        .iter()
-        .flat_map(|d| d.branches.iter().flat_map(|b| b.1.iter().map(|p| p.0)))
-        .fold(0.0f64, f64::max)
-        * 1.05;
-    let eta_hi = data
-        .iter()
-        .flat_map(|d| d.branches.iter().flat_map(|b| b.1.iter().map(|p| p.1)))
-        .fold(0.0f64, f64::max)
-        * 1.3;
+fn err(e: impl std::fmt::Display) -> String {
+    e.to_string()
+}
+
+/// Draws the curves of several arches in one SVG; `log_eta` puts η on a log scale.
+pub fn svg(data: &[CurveData], log_eta: bool) -> Result<String, String> {
+    if data.is_empty() {
+        return Err("no curve to draw".into());
+    }
+    let f = Frame::new(data, log_eta);
     let mut buf = String::new();
     {
-        let root = SVGBackend::with_string(&mut buf, (1010, 620)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        let root = SVGBackend::with_string(&mut buf, (W, H)).into_drawing_area();
+        root.fill(&WHITE).map_err(err)?;
+        let (mu_ax, eta_ax) = (f.mu, f.eta);
         let mut chart = ChartBuilder::on(&root)
-            .caption(title, (FAMILY, 22))
+            .caption(
+                if log_eta {
+                    "Limit curves η*(μ) by collapse mode (log η)"
+                } else {
+                    "Limit curves η*(μ) by collapse mode"
+                },
+                (FAMILY, 22),
+            )
             .margin(16)
-            .margin_right(250)
+            .margin_right(RIGHT)
             .x_label_area_size(56)
             .y_label_area_size(70)
-            .build_cartesian_2d(
-                (mu_lo..mu_hi)
-                    .log_scale()
-                    .with_key_points(log_keys(mu_lo, mu_hi)),
-                0.0..eta_hi,
-            )
-            .map_err(|e| e.to_string())?;
+            .build_cartesian_2d(mu_ax.range(), eta_ax.range())
+            .map_err(err)?;
         chart
             .configure_mesh()
             .x_desc("friction coefficient μ = tan φ   (labels: μ (φ))")
-            .y_desc("thickness ratio η = t / r")
-            .x_label_formatter(&|m| mu_label(*m))
-            .y_label_formatter(&|e| short_num(*e))
-            .x_labels(8)
+            .y_desc(if log_eta {
+                "thickness ratio η = t / r (log scale)"
+            } else {
+                "thickness ratio η = t / r"
+            })
+            .x_label_formatter(&|u| mu_ax.mu_label(*u))
+            .y_label_formatter(&|u| eta_ax.label(*u))
             .label_style((FAMILY, 13))
             .axis_desc_style((FAMILY, 15))
             .draw()
-            .map_err(|e| e.to_string())?;
-        // collapse domain: everything no arch's safe domain covers (drawn first, light red)
-        chart
-            .draw_series(std::iter::once(Rectangle::new(
-                [(mu_lo, 0.0), (mu_hi, eta_hi)],
-                RGBColor(214, 39, 40).mix(0.07).filled(),
-            )))
-            .map_err(|e| e.to_string())?;
-        let mut legend_modes: Vec<CollapseMode> = Vec::new();
+            .map_err(err)?;
+        draw_tints(&mut chart, &f, data)?;
+        let mut modes: Vec<CollapseMode> = Vec::new();
         for d in data {
-            // the whole curve as one polyline (decreasing μ), then the vertical branch
-            let mut outline: Vec<(f64, f64)> = d
-                .branches
-                .iter()
-                .flat_map(|b| b.1.iter().copied())
-                .collect();
-            outline.sort_by(|a, b| b.0.total_cmp(&a.0));
-            let eta_ms = outline.last().map_or(eta_hi, |p| p.1);
-            // safe domain: above the curve, right of μ_ms
-            let mut safe = vec![(d.mu_ms, eta_hi), (d.mu_ms, eta_ms)];
-            safe.extend(outline.iter().rev().copied());
-            safe.extend([
-                (mu_hi, outline.first().map_or(0.0, |p| p.1)),
-                (mu_hi, eta_hi),
-            ]);
-            let safe_copy = safe.clone();
-            chart
-                .draw_series(std::iter::once(Polygon::new(safe, WHITE.mix(0.75))))
-                .map_err(|e| e.to_string())?;
-            chart
-                .draw_series(std::iter::once(Polygon::new(
-                    safe_copy,
-                    RGBColor(44, 160, 44).mix(0.05),
-                )))
-                .map_err(|e| e.to_string())?;
-            for (mode, pts) in &d.branches {
-                let color = mode_color(*mode);
-                chart
-                    .draw_series(LineSeries::new(pts.iter().copied(), color.stroke_width(3)))
-                    .map_err(|e| e.to_string())?;
-                if !legend_modes.contains(mode) {
-                    legend_modes.push(*mode);
-                }
-            }
-            // vertical purely-sliding branch
-            let color = mode_color(CollapseMode::PurelySliding);
-            chart
-                .draw_series(LineSeries::new(
-                    [(d.mu_ms, eta_ms), (d.mu_ms, eta_hi)],
-                    color.stroke_width(3),
-                ))
-                .map_err(|e| e.to_string())?;
-            if !legend_modes.contains(&CollapseMode::PurelySliding) {
-                legend_modes.push(CollapseMode::PurelySliding);
-            }
-            if d.asymptote.is_some() && !legend_modes.contains(&CollapseMode::Overturning) {
-                legend_modes.push(CollapseMode::Overturning);
-            }
-            if let Some(eta_inf) = d.asymptote {
-                let color = mode_color(CollapseMode::Overturning);
-                chart
-                    .draw_series(DashedLineSeries::new(
-                        [(mu_lo, eta_inf), (mu_hi, eta_inf)],
-                        8,
-                        6,
-                        color.stroke_width(2),
-                    ))
-                    .map_err(|e| e.to_string())?;
-                chart
-                    .draw_series(std::iter::once(Text::new(
-                        format!(
-                            "{}: overturning asymptote η = {} as μ → ∞",
-                            d.label,
-                            short_num(eta_inf)
-                        ),
-                        (mu_lo * 1.05, eta_inf + 0.045 * eta_hi),
-                        (FAMILY, 12).into_font().color(&color),
-                    )))
-                    .map_err(|e| e.to_string())?;
-            }
-            for &(mu, eta) in &d.corners {
-                chart
-                    .draw_series(std::iter::once(Circle::new((mu, eta), 5, BLACK.filled())))
-                    .map_err(|e| e.to_string())?;
-                chart
-                    .draw_series(std::iter::once(Text::new(
-                        format!("({}, {})", short_num(mu), short_num(eta)),
-                        (mu * 1.03, eta + 0.012 * eta_hi),
-                        (FAMILY, 12),
-                    )))
-                    .map_err(|e| e.to_string())?;
-            }
-            // arch label at the top of its vertical branch
-            chart
-                .draw_series(std::iter::once(Text::new(
-                    d.label.clone(),
-                    (d.mu_ms * 1.02, eta_hi * 0.96),
-                    (FAMILY, 13),
-                )))
-                .map_err(|e| e.to_string())?;
+            draw_curve(&mut chart, &f, d, &mut modes)?;
         }
-        chart
-            .draw_series(std::iter::once(Text::new(
-                "safe (above / right of each curve)",
-                (mu_hi * 0.25, eta_hi * 0.9),
-                (FAMILY, 14),
-            )))
-            .map_err(|e| e.to_string())?;
-        chart
-            .draw_series(std::iter::once(Text::new(
-                "collapse",
-                (mu_lo * 1.01, eta_hi * 0.6),
-                (FAMILY, 14),
-            )))
-            .map_err(|e| e.to_string())?;
-        // legend in the right margin, outside the data
-        let (lx, mut ly) = (1010 - 240, 70);
-        root.draw(&Text::new("collapse mode", (lx, ly), (FAMILY, 14)))
-            .map_err(|e| e.to_string())?;
-        for mode in &legend_modes {
-            ly += 24;
-            let c = mode_color(*mode);
-            root.draw(&PathElement::new(
-                vec![(lx, ly + 7), (lx + 26, ly + 7)],
-                c.stroke_width(3),
-            ))
-            .map_err(|e| e.to_string())?;
-            root.draw(&Text::new(mode.name(), (lx + 34, ly), (FAMILY, 13)))
-                .map_err(|e| e.to_string())?;
-        }
-        ly += 30;
-        root.draw(&Circle::new((lx + 13, ly + 7), 5, BLACK.filled()))
-            .map_err(|e| e.to_string())?;
-        root.draw(&Text::new("corner (μ, η)", (lx + 34, ly), (FAMILY, 13)))
-            .map_err(|e| e.to_string())?;
-        root.present().map_err(|e| e.to_string())?;
+        draw_labels(&root, &chart, &f, data)?;
+        draw_legend(&root, &modes, data.len())?;
+        root.present().map_err(err)?;
     }
     Ok(buf)
 }
 
-/// Tick positions 1, 2, 3, 5 × 10^k inside [lo, hi].
-pub fn log_keys(lo: f64, hi: f64) -> Vec<f64> {
-    let mut keys = Vec::new();
-    let mut p = 10f64.powi(lo.log10().floor() as i32);
-    while p <= hi {
-        for m in [1.0, 2.0, 3.0, 5.0] {
-            let v = m * p;
-            if v >= lo && v <= hi {
-                keys.push(v);
-            }
+/// The safe domain of each arch (one translucent layer each), and for a single arch its
+/// collapse domain. Both are bounded by the arch's own curve, so nothing is painted over.
+fn draw_tints(chart: &mut Chart, f: &Frame, data: &[CurveData]) -> Result<(), String> {
+    let (mu_lo, mu_hi, eta_lo, eta_hi) = (f.mu.lo, f.mu.hi, f.eta.lo, f.eta.hi);
+    for d in data {
+        let outline = d.outline();
+        let (Some(&right), Some(&left)) = (outline.first(), outline.last()) else {
+            continue;
+        };
+        // increasing μ from the foot of the sliding branch to the right edge
+        let rising: Vec<(f64, f64)> = outline.iter().rev().copied().collect();
+        let mut safe = vec![(d.mu_ms, eta_hi), (d.mu_ms, left.1)];
+        safe.extend(rising.iter().copied());
+        safe.extend([(mu_hi, right.1), (mu_hi, eta_hi)]);
+        chart
+            .draw_series(std::iter::once(Polygon::new(
+                f.all(safe),
+                SAFE_TINT.mix(SAFE_OPACITY),
+            )))
+            .map_err(err)?;
+        if data.len() == 1 {
+            let mut collapse = vec![(mu_lo, eta_lo), (mu_lo, eta_hi), (d.mu_ms, eta_hi)];
+            collapse.push((d.mu_ms, left.1));
+            collapse.extend(rising);
+            collapse.extend([(mu_hi, right.1), (mu_hi, eta_lo)]);
+            chart
+                .draw_series(std::iter::once(Polygon::new(
+                    f.all(collapse),
+                    COLLAPSE_TINT.mix(0.08),
+                )))
+                .map_err(err)?;
         }
-        p *= 10.0;
     }
-    if keys.len() > 6 {
-        keys.retain(|v| {
-            let m = v / 10f64.powi(v.log10().floor() as i32);
-            (m - 1.0).abs() < 1e-9 || (m - 3.0).abs() < 1e-9
-        });
+    Ok(())
+}
+
+/// One arch's branches, its vertical purely sliding branch, its asymptote and corners.
+fn draw_curve(
+    chart: &mut Chart,
+    f: &Frame,
+    d: &CurveData,
+    modes: &mut Vec<CollapseMode>,
+) -> Result<(), String> {
+    let mut add = |m: CollapseMode| {
+        if !modes.contains(&m) {
+            modes.push(m);
+        }
+    };
+    for (mode, pts) in &d.branches {
+        chart
+            .draw_series(LineSeries::new(
+                f.all(pts.iter().copied()),
+                mode_color(*mode).stroke_width(3),
+            ))
+            .map_err(err)?;
+        add(*mode);
     }
-    keys
+    let outline = d.outline();
+    // a horizontal top branch goes on to the right edge at its constant η
+    if let (None, Some(&(mu, eta))) = (d.asymptote, outline.first()) {
+        let top_mu =
+            |b: &(CollapseMode, Vec<(f64, f64)>)| b.1.iter().map(|p| p.0).fold(0.0, f64::max);
+        let mode = d
+            .branches
+            .iter()
+            .max_by(|a, b| top_mu(a).total_cmp(&top_mu(b)))
+            .map_or(CollapseMode::PurelyRotational, |b| b.0);
+        chart
+            .draw_series(LineSeries::new(
+                f.all([(mu, eta), (f.mu.hi, eta)]),
+                mode_color(mode).stroke_width(3),
+            ))
+            .map_err(err)?;
+    }
+    let eta_ms = outline.last().map_or(f.eta.hi, |p| p.1);
+    chart
+        .draw_series(LineSeries::new(
+            f.all([(d.mu_ms, eta_ms), (d.mu_ms, f.eta.hi)]),
+            mode_color(CollapseMode::PurelySliding).stroke_width(3),
+        ))
+        .map_err(err)?;
+    add(CollapseMode::PurelySliding);
+    if let Some(eta_inf) = d.asymptote {
+        chart
+            .draw_series(DashedLineSeries::new(
+                f.all([(f.mu.lo, eta_inf), (f.mu.hi, eta_inf)]),
+                8,
+                6,
+                mode_color(CollapseMode::Overturning).stroke_width(2),
+            ))
+            .map_err(err)?;
+        add(CollapseMode::Overturning);
+    }
+    for &c in &d.corners {
+        chart
+            .draw_series(std::iter::once(Circle::new(f.at(c), 5, BLACK.filled())))
+            .map_err(err)?;
+    }
+    Ok(())
+}
+
+/// Labels on white boxes: corners (below-left of the corner, where a monotone curve never
+/// passes), each arch at the top of its sliding branch (staggered) and at the right end of
+/// its curve (in the margin), asymptotes (under the dashed line at the right).
+fn draw_labels(
+    root: &DrawingArea<SVGBackend, Shift>,
+    chart: &Chart,
+    f: &Frame,
+    data: &[CurveData],
+) -> Result<(), String> {
+    let px = |p: (f64, f64)| chart.backend_coord(&f.at(p));
+    let (xr, yr) = chart.plotting_area().get_pixel_range();
+    let top_right = Pos::new(HPos::Right, VPos::Top);
+    // boxes already placed, to keep corner labels of different arches apart
+    let mut placed: Vec<[i32; 4]> = Vec::new();
+    for d in data {
+        for &c in &d.corners {
+            let (x, y) = px(c);
+            let text = format!("({}, {})", short_num(c.0), short_num(c.1));
+            let (w, h) = (text_width(&text, 12) + 4, 16);
+            // below-left first (a falling curve never passes there), then above-right,
+            // below-right, above-left, higher above-right: the first inside the plot and
+            // clear of other labels
+            let candidates = [
+                (x - 7 - w, y + 7, HPos::Right, VPos::Top),
+                (x + 7, y - 7 - h, HPos::Left, VPos::Bottom),
+                (x + 7, y + 7, HPos::Left, VPos::Top),
+                (x - 7 - w, y - 7 - h, HPos::Right, VPos::Bottom),
+                (x + 7, y - 9 - 2 * h, HPos::Left, VPos::Bottom),
+                (x + 7, y - 11 - 3 * h, HPos::Left, VPos::Bottom),
+            ];
+            let inside = |b: &[i32; 4]| {
+                b[0] >= xr.start && b[2] <= xr.end && b[1] >= yr.start && b[3] <= yr.end
+            };
+            let clear = |b: &[i32; 4]| {
+                placed
+                    .iter()
+                    .all(|p| b[2] <= p[0] || b[0] >= p[2] || b[3] <= p[1] || b[1] >= p[3])
+            };
+            let boxes: Vec<([i32; 4], HPos, VPos)> = candidates
+                .iter()
+                .map(|&(x0, y0, hp, vp)| ([x0, y0, x0 + w, y0 + h], hp, vp))
+                .collect();
+            let (b, hp, vp) = boxes
+                .iter()
+                .find(|c| inside(&c.0) && clear(&c.0))
+                .or_else(|| boxes.iter().find(|c| inside(&c.0)))
+                .unwrap_or(&boxes[0]);
+            let at = (
+                if matches!(hp, HPos::Right) {
+                    b[2] - 2
+                } else {
+                    b[0] + 2
+                },
+                if matches!(vp, VPos::Top) {
+                    b[1] + 1
+                } else {
+                    b[3] - 1
+                },
+            );
+            boxed_text(root, &text, at, 12, Pos::new(*hp, *vp), BLACK)?;
+            placed.push(*b);
+        }
+        if let Some(eta_inf) = d.asymptote {
+            let (x, y) = px((f.mu.hi, eta_inf));
+            let text = format!(
+                "{}: overturning asymptote η = {} as μ → ∞",
+                arch_label(&d.arch),
+                short_num(eta_inf)
+            );
+            let color = mode_color(CollapseMode::Overturning);
+            boxed_text(root, &text, (x - 6, y + 5), 12, top_right, color)?;
+        }
+    }
+    // arch labels at the top of the sliding branches, staggered from left to right
+    let mut order: Vec<&CurveData> = data.iter().collect();
+    order.sort_by(|a, b| a.mu_ms.total_cmp(&b.mu_ms));
+    for (k, d) in order.iter().enumerate() {
+        let x = px((d.mu_ms, f.eta.hi)).0;
+        let y = yr.start + 6 + 20 * k as i32;
+        let pos = Pos::new(HPos::Left, VPos::Top);
+        boxed_text(root, &arch_label(&d.arch), (x + 5, y), 13, pos, BLACK)?;
+    }
+    // arch labels at the right end of each curve, pushed apart to 16 px
+    let mut ends: Vec<(i32, String)> = data
+        .iter()
+        .filter_map(|d| {
+            let p = d.outline().first().copied()?;
+            Some((px((f.mu.hi, p.1)).1, arch_label(&d.arch)))
+        })
+        .collect();
+    ends.sort_by_key(|e| e.0);
+    for k in 1..ends.len() {
+        ends[k].0 = ends[k].0.max(ends[k - 1].0 + 16);
+    }
+    for (y, text) in ends {
+        root.draw(&Text::new(
+            text,
+            (xr.end + 6, y),
+            TextStyle::from((FAMILY, 13).into_font()).pos(Pos::new(HPos::Left, VPos::Center)),
+        ))
+        .map_err(err)?;
+    }
+    Ok(())
+}
+
+/// The legend in the right margin: modes, corner marker, what the tints mean.
+fn draw_legend(
+    root: &DrawingArea<SVGBackend, Shift>,
+    modes: &[CollapseMode],
+    arches: usize,
+) -> Result<(), String> {
+    let (lx, mut ly) = (W as i32 - RIGHT as i32 + 100, 70);
+    root.draw(&Text::new("collapse mode", (lx, ly), (FAMILY, 14)))
+        .map_err(err)?;
+    for mode in modes {
+        ly += 24;
+        root.draw(&PathElement::new(
+            vec![(lx, ly + 7), (lx + 26, ly + 7)],
+            mode_color(*mode).stroke_width(3),
+        ))
+        .map_err(err)?;
+        root.draw(&Text::new(mode.name(), (lx + 34, ly), (FAMILY, 13)))
+            .map_err(err)?;
+    }
+    ly += 30;
+    root.draw(&Circle::new((lx + 13, ly + 7), 5, BLACK.filled()))
+        .map_err(err)?;
+    root.draw(&Text::new("corner (μ, η)", (lx + 34, ly), (FAMILY, 13)))
+        .map_err(err)?;
+    let swatch = |ly: i32, color: RGBColor, opacity: f64, text: &str| {
+        root.draw(&Rectangle::new(
+            [(lx + 2, ly + 1), (lx + 24, ly + 14)],
+            color.mix(opacity).filled(),
+        ))
+        .and_then(|_| root.draw(&Text::new(text.to_string(), (lx + 34, ly), (FAMILY, 13))))
+        .map_err(err)
+    };
+    ly += 30;
+    if arches == 1 {
+        swatch(ly, SAFE_TINT, SAFE_OPACITY, "safe (above / right)")?;
+        swatch(ly + 24, COLLAPSE_TINT, 0.08, "collapse (below / left)")?;
+    } else {
+        swatch(ly, SAFE_TINT, SAFE_OPACITY, "safe for one arch")?;
+        swatch(ly + 24, SAFE_TINT, 2.0 * SAFE_OPACITY, "safe for two, ...")?;
+        root.draw(&Text::new(
+            "each arch is safe above / right",
+            (lx, ly + 52),
+            (FAMILY, 12),
+        ))
+        .map_err(err)?;
+        root.draw(&Text::new(
+            "of its own curve; white: all collapse",
+            (lx, ly + 68),
+            (FAMILY, 12),
+        ))
+        .map_err(err)?;
+    }
+    Ok(())
 }

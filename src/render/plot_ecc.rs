@@ -1,36 +1,41 @@
 //! Figure: the eccentricities e_M = M/N (line of thrust) and e_T = (T/N)/μ·η/2 (line of
-//! friction) against β, with the bounds ±η/2 where hinges (e_M) or sliding (e_T) occur,
-//! and the active joints marked.
+//! friction) of an [`ArchScene`] against β, with the bounds ±η/2 where hinges (e_M) or
+//! sliding (e_T) occur, and the active joints marked.
 
-use crate::arch::Arch;
-use crate::collapse_mode::CollapseMode;
-use crate::contact::Contact;
 use crate::contact::ContactKind;
-use crate::render::plot::{mode_color, short_num, FAMILY};
-use crate::statics::Reactions;
-use crate::thrust_line::eccentricities;
+use crate::figures::ArchScene;
+use crate::render::plot::{mode_color, short_num, Axis, FAMILY};
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+/// Colour of the state drawn when it is safe (no collapse mode).
+pub const SAFE_COLOR: RGBColor = RGBColor(44, 160, 44);
+/// Colour of the line of friction.
+pub const FRICTION_COLOR: RGBColor = RGBColor(255, 127, 14);
+
+fn err(e: impl std::fmt::Display) -> String {
+    e.to_string()
+}
 
 /// Draws the eccentricity figure as SVG.
-pub fn svg(
-    arch: &Arch,
-    eta: f64,
-    mu: f64,
-    x: &Reactions,
-    pattern: &[Contact],
-    mode: Option<CollapseMode>,
-) -> Result<String, String> {
-    let ecc = eccentricities(arch, eta, mu, x, 800);
-    let (b0, b1) = (
-        arch.beta_right().to_degrees(),
-        arch.beta_left().to_degrees(),
-    );
+pub fn svg(scene: &ArchScene) -> Result<String, String> {
+    let (eta, mu) = (scene.eta, scene.mu);
+    let b_ax = Axis {
+        lo: scene.arch.beta_right().to_degrees(),
+        hi: scene.arch.beta_left().to_degrees(),
+        log: false,
+    };
     let lim = 0.75 * eta;
-    let color = mode.map_or(RGBColor(44, 160, 44), mode_color);
+    let e_ax = Axis {
+        lo: -lim,
+        hi: lim,
+        log: false,
+    };
+    let color = scene.mode.map_or(SAFE_COLOR, mode_color);
     let mut buf = String::new();
     {
         let root = SVGBackend::with_string(&mut buf, (900, 520)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        root.fill(&WHITE).map_err(err)?;
         let title = format!(
             "Eccentricities at η = {}, μ = {} — {}",
             short_num(eta),
@@ -39,7 +44,7 @@ pub fn svg(
             } else {
                 "∞".into()
             },
-            mode.map_or("safe state".to_string(), |m| format!(
+            scene.mode.map_or("safe state".to_string(), |m| format!(
                 "limit state, {}",
                 m.name()
             ))
@@ -49,78 +54,94 @@ pub fn svg(
             .margin(14)
             .x_label_area_size(44)
             .y_label_area_size(70)
-            .build_cartesian_2d(b0..b1, -lim..lim)
-            .map_err(|e| e.to_string())?;
+            .build_cartesian_2d(b_ax.range(), e_ax.range())
+            .map_err(err)?;
         ch.configure_mesh()
             .x_desc("joint angle β [deg from the horizontal]")
             .y_desc("eccentricity / r (outward +)")
-            .y_label_formatter(&|v| short_num(*v))
+            .x_label_formatter(&|u| b_ax.label(*u))
+            .y_label_formatter(&|u| e_ax.label(*u))
             .label_style((FAMILY, 12))
             .axis_desc_style((FAMILY, 14))
             .draw()
-            .map_err(|e| e.to_string())?;
+            .map_err(err)?;
         for sgn in [-1.0, 1.0] {
             ch.draw_series(DashedLineSeries::new(
-                [(b0, sgn * eta / 2.0), (b1, sgn * eta / 2.0)],
+                [(b_ax.lo, sgn * eta / 2.0), (b_ax.hi, sgn * eta / 2.0)],
                 6,
                 4,
                 BLACK.stroke_width(1),
             ))
-            .map_err(|e| e.to_string())?;
+            .map_err(err)?;
         }
-        ch.draw_series(std::iter::once(Text::new(
-            "+η/2: extrados",
-            (b0 + 0.3 * (b1 - b0), eta / 2.0 + 0.06 * lim),
-            (FAMILY, 12),
-        )))
-        .map_err(|e| e.to_string())?;
-        ch.draw_series(std::iter::once(Text::new(
-            "−η/2: intrados",
-            (b0 + 0.3 * (b1 - b0), -eta / 2.0 - 0.02 * lim),
-            (FAMILY, 12),
-        )))
-        .map_err(|e| e.to_string())?;
-        let em: Vec<(f64, f64)> = ecc
-            .iter()
-            .filter(|e| e.n > 0.0)
-            .map(|e| (e.beta.to_degrees(), e.e_m.clamp(-lim, lim)))
-            .collect();
-        ch.draw_series(LineSeries::new(em, BLACK.stroke_width(2)))
-            .map_err(|e| e.to_string())?
+        // the bound labels sit outside ±η/2, where no admissible line goes
+        let x = b_ax.lo + 0.02 * (b_ax.hi - b_ax.lo);
+        let (above, below) = (
+            Pos::new(HPos::Left, VPos::Bottom),
+            Pos::new(HPos::Left, VPos::Top),
+        );
+        for (text, y, pos) in [
+            (
+                "+η/2: e_M at the extrados (hinge E), e_T at sliding S+",
+                eta / 2.0,
+                above,
+            ),
+            (
+                "−η/2: e_M at the intrados (hinge I), e_T at sliding S−",
+                -eta / 2.0,
+                below,
+            ),
+        ] {
+            let (px, py) = ch.backend_coord(&(x, y));
+            let dy = if y > 0.0 { -10 } else { 10 };
+            root.draw(&Text::new(
+                text,
+                (px, py + dy),
+                TextStyle::from((FAMILY, 12).into_font()).pos(pos),
+            ))
+            .map_err(err)?;
+        }
+        let line = |f: &dyn Fn(&crate::figures::thrust_line::Eccentricity) -> f64| {
+            scene
+                .lines
+                .iter()
+                .filter(|e| e.n > 0.0 && f(e).is_finite())
+                .map(|e| (e.beta.to_degrees(), f(e).clamp(-lim, lim)))
+                .collect::<Vec<_>>()
+        };
+        ch.draw_series(LineSeries::new(line(&|e| e.e_m), BLACK.stroke_width(2)))
+            .map_err(err)?
             .label("e_M = M/N (line of thrust)")
             .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], BLACK.stroke_width(2)));
         if mu.is_finite() {
-            let et: Vec<(f64, f64)> = ecc
-                .iter()
-                .filter(|e| e.n > 0.0)
-                .map(|e| (e.beta.to_degrees(), e.e_t.clamp(-lim, lim)))
-                .collect();
-            let orange = RGBColor(255, 127, 14);
-            ch.draw_series(DashedLineSeries::new(et, 6, 4, orange.stroke_width(2)))
-                .map_err(|e| e.to_string())?
-                .label("e_T = (T/N)/μ · η/2 (line of friction)")
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 22, y)], orange.stroke_width(2))
-                });
+            ch.draw_series(DashedLineSeries::new(
+                line(&|e| e.e_t),
+                6,
+                4,
+                FRICTION_COLOR.stroke_width(2),
+            ))
+            .map_err(err)?
+            .label("e_T = (T/N)/μ · η/2 (line of friction)")
+            .legend(|(x, y)| {
+                PathElement::new(vec![(x, y), (x + 22, y)], FRICTION_COLOR.stroke_width(2))
+            });
         }
-        for c in pattern {
+        for c in &scene.pattern {
             let b = c.beta.to_degrees();
-            let (y, shape_tri) = match c.kind {
-                ContactKind::HingeExtrados => (eta / 2.0, false),
-                ContactKind::HingeIntrados => (-eta / 2.0, false),
-                ContactKind::SlidePlus => (eta / 2.0, true),
-                ContactKind::SlideMinus => (-eta / 2.0, true),
+            let y = match c.kind {
+                ContactKind::HingeExtrados | ContactKind::SlidePlus => eta / 2.0,
+                ContactKind::HingeIntrados | ContactKind::SlideMinus => -eta / 2.0,
             };
-            if shape_tri {
+            if !c.kind.is_hinge() {
                 ch.draw_series(std::iter::once(TriangleMarker::new(
                     (b, y),
                     8,
                     color.filled(),
                 )))
-                .map_err(|e| e.to_string())?;
+                .map_err(err)?;
             } else {
                 ch.draw_series(std::iter::once(Circle::new((b, y), 6, color.filled())))
-                    .map_err(|e| e.to_string())?;
+                    .map_err(err)?;
             }
         }
         ch.configure_series_labels()
@@ -129,8 +150,8 @@ pub fn svg(
             .border_style(BLACK)
             .label_font((FAMILY, 12))
             .draw()
-            .map_err(|e| e.to_string())?;
-        root.present().map_err(|e| e.to_string())?;
+            .map_err(err)?;
+        root.present().map_err(err)?;
     }
     Ok(buf)
 }

@@ -1,127 +1,157 @@
-//! Figure: the admissibility margin ([`crate::margin_map`]) over the η–μ plane as filled
-//! contour bands (log axis for μ), with the exact limit curve overlaid in black.
+//! Figure: the admissibility margin ([`MapData`], see [`crate::figures::margin_map`]) over
+//! the η–μ plane as filled bands (log axis for μ, optionally for η), with the exact limit
+//! curve overlaid in black and a colour bar that gives the value of each band.
 
-use crate::render::plot::{mu_label, short_num, FAMILY};
-use crate::render::plot_curve::CurveData;
+use crate::figures::MapData;
+use crate::render::plot::{arch_label, Axis, FAMILY};
+use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-fn band_color(v: f64, vmax_pos: f64, vmax_neg: f64) -> RGBColor {
-    if v.is_nan() {
-        return RGBColor(220, 220, 220);
-    }
-    // 10 bands: 5 blues (collapse) and 5 greens (safe), by |v| / vmax
-    let t = (v.abs() / if v < 0.0 { vmax_neg } else { vmax_pos }).min(1.0);
-    let band = (t * 5.0).floor().min(4.0) / 4.0;
-    let mix = |a: u8, b: u8| (a as f64 + (b as f64 - a as f64) * band) as u8;
-    if v < 0.0 {
-        RGBColor(mix(222, 33), mix(235, 102), mix(247, 172))
-    } else {
+/// Bands on each side of zero.
+const BANDS: usize = 5;
+/// Colour of cells where the LP failed.
+pub const NAN_COLOR: RGBColor = RGBColor(220, 220, 220);
+const W: u32 = 1000;
+const H: u32 = 640;
+const RIGHT: u32 = 150;
+
+/// The band of `v` (0 ..= BANDS − 1) on its side of zero.
+fn band(v: f64, vmax: f64) -> usize {
+    ((v.abs() / vmax * BANDS as f64).floor() as usize).min(BANDS - 1)
+}
+
+/// The colour of band `k` on the safe (`v ≥ 0`, greens) or collapse (blues) side.
+fn band_color(k: usize, safe: bool) -> RGBColor {
+    let t = k as f64 / (BANDS - 1) as f64;
+    let mix = |a: u8, b: u8| (a as f64 + (b as f64 - a as f64) * t) as u8;
+    if safe {
         RGBColor(mix(229, 0), mix(245, 109), mix(224, 44))
+    } else {
+        RGBColor(mix(222, 33), mix(235, 102), mix(247, 172))
     }
 }
 
-/// Draws the map: `values[i][j]` at (`etas[i]`, `mus[j]`) (centres of cells).
-pub fn svg(
-    label: &str,
-    etas: &[f64],
-    mus: &[f64],
-    values: &[Vec<f64>],
-    curve: Option<&CurveData>,
-) -> Result<String, String> {
-    let finite = || values.iter().flatten().copied().filter(|v| v.is_finite());
+fn value_color(v: f64, vmax_pos: f64, vmax_neg: f64) -> RGBColor {
+    if v.is_nan() {
+        NAN_COLOR
+    } else if v < 0.0 {
+        band_color(band(v, vmax_neg), false)
+    } else {
+        band_color(band(v, vmax_pos), true)
+    }
+}
+
+/// Cell edges around the centres `c` (geometric means on a log axis).
+fn edges(c: &[f64], log: bool) -> Vec<f64> {
+    let n = c.len();
+    let mid = |a: f64, b: f64| if log { (a * b).sqrt() } else { 0.5 * (a + b) };
+    let out = |a: f64, b: f64| if log { a * a / b } else { 2.0 * a - b };
+    let mut e = vec![if n > 1 { out(c[0], c[1]) } else { c[0] }];
+    e.extend(c.windows(2).map(|w| mid(w[0], w[1])));
+    e.push(if n > 1 { out(c[n - 1], c[n - 2]) } else { c[0] });
+    e
+}
+
+fn err(e: impl std::fmt::Display) -> String {
+    e.to_string()
+}
+
+/// Draws the map (`values[i][j]` at the cell centred on (`etas[i]`, `mus[j]`)); `log_eta`
+/// puts η on a log scale.
+pub fn svg(map: &MapData, log_eta: bool) -> Result<String, String> {
+    if map.etas.len() < 2 || map.mus.len() < 2 {
+        return Err("a map needs at least 2 x 2 cells".into());
+    }
+    let finite = || {
+        map.values
+            .iter()
+            .flatten()
+            .copied()
+            .filter(|v| v.is_finite())
+    };
     let vmax_pos = finite().fold(0.0f64, f64::max).max(f64::MIN_POSITIVE);
     let vmax_neg = finite()
         .fold(0.0f64, |m, v| m.max(-v))
         .max(f64::MIN_POSITIVE);
-    let edges = |c: &[f64], log: bool| -> Vec<f64> {
-        let mut e = Vec::with_capacity(c.len() + 1);
-        for i in 0..=c.len() {
-            let v = if i == 0 {
-                if log {
-                    c[0] * (c[0] / c[1]).sqrt()
-                } else {
-                    c[0] - 0.5 * (c[1] - c[0])
-                }
-            } else if i == c.len() {
-                let n = c.len();
-                if log {
-                    c[n - 1] * (c[n - 1] / c[n - 2]).sqrt()
-                } else {
-                    c[n - 1] + 0.5 * (c[n - 1] - c[n - 2])
-                }
-            } else if log {
-                (c[i - 1] * c[i]).sqrt()
-            } else {
-                0.5 * (c[i - 1] + c[i])
-            };
-            e.push(v);
-        }
-        e
+    let (me, ee) = (edges(&map.mus, true), edges(&map.etas, map.log_eta));
+    let mu_ax = Axis {
+        lo: me[0],
+        hi: me[me.len() - 1],
+        log: true,
     };
-    let (me, ee) = (edges(mus, true), edges(etas, false));
-    let (m0, m1) = (me[0], *me.last().unwrap());
-    let (e0, e1) = (ee[0].max(0.0), *ee.last().unwrap());
+    let eta_ax = Axis {
+        lo: if log_eta { ee[0] } else { ee[0].max(0.0) },
+        hi: ee[ee.len() - 1],
+        log: log_eta,
+    };
+    let at = |mu: f64, eta: f64| (mu_ax.to(mu), eta_ax.to(eta.max(eta_ax.lo)));
     let mut buf = String::new();
     {
-        let root = SVGBackend::with_string(&mut buf, (900, 640)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        let root = SVGBackend::with_string(&mut buf, (W, H)).into_drawing_area();
+        root.fill(&WHITE).map_err(err)?;
         let mut ch = ChartBuilder::on(&root)
             .caption(
                 format!(
-                    "Admissibility margin, {label}: green safe (bands of {} r), blue collapse (bands of {} r)",
-                    short_num(0.2 * vmax_pos),
-                    short_num(0.2 * vmax_neg)
+                    "Admissibility margin, {}: safe where > 0, collapse where < 0",
+                    arch_label(&map.curve.arch)
                 ),
-                (FAMILY, 16),
+                (FAMILY, 17),
             )
             .margin(14)
-            .margin_right(40)
+            .margin_right(RIGHT)
             .x_label_area_size(50)
             .y_label_area_size(70)
-            .build_cartesian_2d((m0..m1).log_scale().with_key_points(crate::render::plot_curve::log_keys(m0, m1)), e0..e1)
-            .map_err(|e| e.to_string())?;
-        for (i, row) in values.iter().enumerate() {
+            .build_cartesian_2d(mu_ax.range(), eta_ax.range())
+            .map_err(err)?;
+        for (i, row) in map.values.iter().enumerate() {
             for (j, &v) in row.iter().enumerate() {
-                ch.draw_series(std::iter::once(Rectangle::new(
-                    [(me[j], ee[i]), (me[j + 1], ee[i + 1])],
-                    band_color(v, vmax_pos, vmax_neg).filled(),
-                )))
-                .map_err(|e| e.to_string())?;
+                let (corners, color) = (
+                    [at(me[j], ee[i]), at(me[j + 1], ee[i + 1])],
+                    value_color(v, vmax_pos, vmax_neg),
+                );
+                // the outline in the same colour closes the anti-aliasing seams
+                ch.draw_series([
+                    Rectangle::new(corners, color.filled()),
+                    Rectangle::new(corners, color.stroke_width(1)),
+                ])
+                .map_err(err)?;
             }
         }
         ch.configure_mesh()
             .disable_mesh()
             .x_desc("friction coefficient μ   (labels: μ (φ))")
-            .y_desc("thickness ratio η = t / r")
-            .x_label_formatter(&|m| mu_label(*m))
-            .y_label_formatter(&|e| short_num(*e))
+            .y_desc(if log_eta {
+                "thickness ratio η = t / r (log scale)"
+            } else {
+                "thickness ratio η = t / r"
+            })
+            .x_label_formatter(&|u| mu_ax.mu_label(*u))
+            .y_label_formatter(&|u| eta_ax.label(*u))
             .label_style((FAMILY, 12))
             .axis_desc_style((FAMILY, 14))
             .draw()
-            .map_err(|e| e.to_string())?;
-        if let Some(d) = curve {
-            let mut pts: Vec<(f64, f64)> = d
-                .branches
-                .iter()
-                .flat_map(|b| b.1.iter().copied())
-                .filter(|p| p.0 >= m0 && p.0 <= m1)
-                .collect();
-            pts.sort_by(|a, b| b.0.total_cmp(&a.0));
-            if let Some(&(_, eta_ms)) = pts.last() {
-                pts.push((d.mu_ms, eta_ms));
-                pts.push((d.mu_ms, e1));
-            }
-            ch.draw_series(std::iter::once(PathElement::new(
-                pts,
-                BLACK.stroke_width(3),
-            )))
-            .map_err(|e| e.to_string())?
-            .label("exact limit curve η*(μ)")
-            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], BLACK.stroke_width(3)));
-            for &(mu, eta) in &d.corners {
-                ch.draw_series(std::iter::once(Circle::new((mu, eta), 5, BLACK.filled())))
-                    .map_err(|e| e.to_string())?;
-            }
+            .map_err(err)?;
+        let d = &map.curve;
+        let mut pts: Vec<(f64, f64)> = d
+            .outline()
+            .into_iter()
+            .filter(|p| p.0 >= mu_ax.lo && p.0 <= mu_ax.hi)
+            .collect();
+        if let Some(&(_, eta_ms)) = pts.last() {
+            pts.push((d.mu_ms, eta_ms));
+            pts.push((d.mu_ms, eta_ax.hi));
+        }
+        ch.draw_series(std::iter::once(PathElement::new(
+            pts.into_iter().map(|p| at(p.0, p.1)).collect::<Vec<_>>(),
+            BLACK.stroke_width(3),
+        )))
+        .map_err(err)?
+        .label("exact limit curve η*(μ)")
+        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], BLACK.stroke_width(3)));
+        for &(mu, eta) in &d.corners {
+            ch.draw_series(std::iter::once(Circle::new(at(mu, eta), 5, BLACK.filled())))
+                .map_err(err)?;
         }
         ch.configure_series_labels()
             .position(SeriesLabelPosition::LowerRight)
@@ -129,8 +159,74 @@ pub fn svg(
             .border_style(BLACK)
             .label_font((FAMILY, 12))
             .draw()
-            .map_err(|e| e.to_string())?;
-        root.present().map_err(|e| e.to_string())?;
+            .map_err(err)?;
+        let (xr, yr) = ch.plotting_area().get_pixel_range();
+        colour_bar(&root, xr.end + 30, yr, vmax_pos, vmax_neg)?;
+        root.present().map_err(err)?;
     }
     Ok(buf)
+}
+
+/// The colour bar: the safe bands (greens) above zero, the collapse bands (blues) below,
+/// each edge labelled with its value in one format, titled with the quantity and its units.
+fn colour_bar(
+    root: &DrawingArea<SVGBackend, Shift>,
+    x: i32,
+    yr: std::ops::Range<i32>,
+    vmax_pos: f64,
+    vmax_neg: f64,
+) -> Result<(), String> {
+    let (top, bottom) = (yr.start + 42, yr.end - 10);
+    let h = (bottom - top) as f64 / (2 * BANDS) as f64;
+    let y_of = |k: usize| top + (k as f64 * h).round() as i32;
+    let mut labels = Vec::new();
+    for k in 0..2 * BANDS {
+        // from the top: safe bands BANDS-1 .. 0, then collapse bands 0 .. BANDS-1
+        let (color, lo_edge) = if k < BANDS {
+            let b = BANDS - 1 - k;
+            (
+                band_color(b, true),
+                (b + 1) as f64 / BANDS as f64 * vmax_pos,
+            )
+        } else {
+            let b = k - BANDS;
+            (band_color(b, false), -(b as f64) / BANDS as f64 * vmax_neg)
+        };
+        root.draw(&Rectangle::new(
+            [(x, y_of(k)), (x + 22, y_of(k + 1))],
+            color.filled(),
+        ))
+        .map_err(err)?;
+        labels.push((y_of(k), lo_edge));
+    }
+    labels.push((y_of(2 * BANDS), -vmax_neg));
+    root.draw(&Rectangle::new(
+        [(x, top), (x + 22, bottom)],
+        BLACK.stroke_width(1),
+    ))
+    .map_err(err)?;
+    // one format for all labels: enough decimals for the finer of the two steps
+    let step = (vmax_pos.min(vmax_neg) / BANDS as f64).max(f64::MIN_POSITIVE);
+    let d = ((-(step.log10()).floor()) as i32 + 1).clamp(0, 8) as usize;
+    for (y, v) in labels {
+        let v = if v.abs() < step * 1e-9 { 0.0 } else { v };
+        root.draw(&Text::new(
+            format!("{v:+.d$}"),
+            (x + 27, y),
+            TextStyle::from((FAMILY, 11).into_font()).pos(Pos::new(HPos::Left, VPos::Center)),
+        ))
+        .map_err(err)?;
+    }
+    for (i, line) in ["margin [–]", "(h, v, w)-distance", "÷ (β_L − β_R)"]
+        .iter()
+        .enumerate()
+    {
+        root.draw(&Text::new(
+            line.to_string(),
+            (x - 8, yr.start - 6 + 13 * i as i32),
+            (FAMILY, 11),
+        ))
+        .map_err(err)?;
+    }
+    Ok(())
 }

@@ -1,10 +1,32 @@
 //! Pictures: every plot command produces a well-formed SVG (parsed back) with the
-//! expected elements, and a PNG that decodes to the requested width.
+//! expected elements, and a PNG that decodes to the requested width; the output format
+//! follows --out; tints, colour bar, log axis and joint thinning are checked in the SVG.
 
-use arch_enum::render::figures;
+use arch_enum::figures::{self, MapGrid};
 use arch_enum::render::plot::{mode_color, svg_to_png};
+use arch_enum::render::{plot_arch, plot_curve, plot_ecc, plot_map};
 use arch_enum::{Arch, CollapseMode, Settings, WeightModel};
 use assert_cmd::Command;
+
+fn curve_svg(arches: &[Arch], log_eta: bool) -> String {
+    let data = figures::curves(arches, &Settings::default()).unwrap();
+    plot_curve::svg(&data, log_eta).unwrap()
+}
+
+fn arch_svg(arch: &Arch, mu: f64, eta: Option<f64>) -> Result<String, figures::NoFigure> {
+    let scene = figures::scene(arch, mu, eta, &Settings::default())?;
+    Ok(plot_arch::svg(&scene).unwrap())
+}
+
+fn map_svg(arch: &Arch, n_eta: usize, n_mu: usize, log_eta: bool) -> String {
+    let grid = MapGrid {
+        n_eta,
+        n_mu,
+        log_eta,
+    };
+    let m = figures::map(arch, grid, 2, &Settings::default(), &|_, _| {}).unwrap();
+    plot_map::svg(&m, log_eta).unwrap()
+}
 
 fn parse(svg: &str) -> roxmltree::Document<'_> {
     roxmltree::Document::parse(svg).unwrap_or_else(|e| panic!("SVG does not parse: {e}"))
@@ -20,15 +42,13 @@ fn semicircle() -> Arch {
 
 #[test]
 fn curve_figure_has_one_path_per_branch_and_a_marker_per_corner() {
-    let s = Settings::default();
-    let svg = figures::curve(
+    let svg = curve_svg(
         &[
             semicircle(),
             Arch::symmetric(1.15, WeightModel::Centreline).unwrap(),
         ],
-        &s,
-    )
-    .unwrap();
+        false,
+    );
     let doc = parse(&svg);
     // branches: thick polylines of more than two points in each mode's colour
     let thick: Vec<_> = doc
@@ -59,8 +79,7 @@ fn curve_figure_has_one_path_per_branch_and_a_marker_per_corner() {
 
 #[test]
 fn arch_figure_draws_the_mechanism_blocks() {
-    let s = Settings::default();
-    let svg = figures::arch(&semicircle(), 0.35, None, &s).unwrap();
+    let svg = arch_svg(&semicircle(), 0.35, None).unwrap();
     let doc = parse(&svg);
     let color = hex(mode_color(CollapseMode::MixedSlidingRotational));
     let blocks = doc
@@ -74,17 +93,17 @@ fn arch_figure_draws_the_mechanism_blocks() {
     assert_eq!(blocks, 4, "five active joints bound four moving blocks");
     assert!(svg.contains("mixed_sliding_rotational") && svg.contains("φ = 19.29°"));
     // above eta* the safe state of greatest margin, no mechanism
-    let safe = figures::arch(&semicircle(), 0.35, Some(0.2), &s).unwrap();
+    let safe = arch_svg(&semicircle(), 0.35, Some(0.2)).unwrap();
     assert!(safe.contains("safe"));
     assert!(!safe.contains("collapse mechanism"));
     // below eta*: nothing admissible to draw
-    assert!(figures::arch(&semicircle(), 0.35, Some(0.1), &s).is_err());
+    assert!(arch_svg(&semicircle(), 0.35, Some(0.1)).is_err());
 }
 
 #[test]
 fn eccentricity_and_map_figures() {
     let s = Settings::default();
-    let svg = figures::eccentricity(&semicircle(), 0.35, None, &s).unwrap();
+    let svg = plot_ecc::svg(&figures::scene(&semicircle(), 0.35, None, &s).unwrap()).unwrap();
     let doc = parse(&svg);
     assert!(doc
         .descendants()
@@ -94,7 +113,7 @@ fn eccentricity_and_map_figures() {
         .filter(|n| n.has_tag_name("circle"))
         .count();
     assert!(markers >= 3, "three hinges marked, found {markers}");
-    let map = figures::map(&semicircle(), 6, 8, &s, &|_, _| {}).unwrap();
+    let map = map_svg(&semicircle(), 6, 8, false);
     let doc = parse(&map);
     let cells = doc.descendants().filter(|n| n.has_tag_name("rect")).count();
     assert!(cells >= 48, "6 x 8 cells, found {cells} rectangles");
@@ -103,7 +122,8 @@ fn eccentricity_and_map_figures() {
 #[test]
 fn png_decodes_to_requested_size() {
     let s = Settings::default();
-    let svg = figures::eccentricity(&semicircle(), f64::INFINITY, None, &s).unwrap();
+    let scene = figures::scene(&semicircle(), f64::INFINITY, None, &s).unwrap();
+    let svg = plot_ecc::svg(&scene).unwrap();
     let png = svg_to_png(&svg, 640).unwrap();
     let pix = resvg::tiny_skia::Pixmap::decode_png(&png).unwrap();
     assert_eq!(pix.width(), 640);
@@ -143,4 +163,231 @@ fn cli_plot_writes_files() {
     assert_eq!(bad.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&bad.stderr).contains("eta* ="));
     std::fs::remove_dir_all(&dir).ok();
+}
+
+fn plot(args: &[&str], out: &std::path::Path) -> std::process::Output {
+    Command::cargo_bin("arch-enum")
+        .unwrap()
+        .arg("plot")
+        .args(args)
+        .arg("--out")
+        .arg(out)
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn output_format_follows_the_out_extension() {
+    let dir = std::env::temp_dir().join(format!("arch-enum-fmt-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let args = ["arch", "--alpha", "0.5", "--mu", "inf", "--width", "300"];
+    // .png without --png is a PNG, .svg is an SVG (any case)
+    let png = dir.join("x.png");
+    assert_eq!(plot(&args, &png).status.code(), Some(0));
+    assert!(std::fs::read(&png)
+        .unwrap()
+        .starts_with(b"\x89PNG\r\n\x1a\n"));
+    let svg = dir.join("x.SVG");
+    assert_eq!(plot(&args, &svg).status.code(), Some(0));
+    let text = std::fs::read_to_string(&svg).unwrap();
+    parse(&text);
+    // --png with an .svg path, or an unknown extension: bad input naming --out
+    for (extra, name) in [(Some("--png"), "y.svg"), (None, "y.jpg"), (None, "y")] {
+        let path = dir.join(name);
+        let mut a: Vec<&str> = args.to_vec();
+        a.extend(extra);
+        let out = plot(&a, &path);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{name}: {err}");
+        assert!(
+            err.contains("--out") && err.contains(".png") && err.contains(".svg"),
+            "{err}"
+        );
+        assert!(!path.exists(), "{name} must not be written");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A polygon's fill, opacity and points.
+type Poly<'a> = (&'a str, f64, Vec<(f64, f64)>);
+
+/// Every polygon of the document.
+fn polygons<'a>(doc: &'a roxmltree::Document) -> Vec<Poly<'a>> {
+    doc.descendants()
+        .filter(|n| n.has_tag_name("polygon"))
+        .map(|n| {
+            let pts = n
+                .attribute("points")
+                .unwrap()
+                .split_whitespace()
+                .map(|p| {
+                    let (x, y) = p.split_once(',').unwrap();
+                    (x.parse().unwrap(), y.parse().unwrap())
+                })
+                .collect();
+            let opacity = n.attribute("opacity").map_or(1.0, |o| o.parse().unwrap());
+            (n.attribute("fill").unwrap_or(""), opacity, pts)
+        })
+        .collect()
+}
+
+#[test]
+fn several_arches_each_tint_their_own_safe_domain() {
+    let arches: Vec<Arch> = [0.0, 0.524, 1.0]
+        .iter()
+        .map(|&a| Arch::symmetric(a, WeightModel::Centreline).unwrap())
+        .collect();
+    let svg = curve_svg(&arches, false);
+    let doc = parse(&svg);
+    let polys = polygons(&doc);
+    // nothing opaque or white is painted over another arch's tint, no collapse tint
+    assert!(polys.iter().all(|p| p.0 != "#FFFFFF"), "a whitening layer");
+    assert!(!polys.iter().any(|p| p.0 == hex(plot_curve::COLLAPSE_TINT)));
+    let safe: Vec<_> = polys
+        .iter()
+        .filter(|p| p.0 == hex(plot_curve::SAFE_TINT))
+        .collect();
+    assert_eq!(safe.len(), 3, "one safe layer per arch");
+    assert!(safe
+        .iter()
+        .all(|p| (p.1 - plot_curve::SAFE_OPACITY).abs() < 1e-9));
+    // each layer starts at its own arch's sliding branch (a vertical red line)
+    let sliding = hex(mode_color(CollapseMode::PurelySliding));
+    let mut walls: Vec<f64> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("polyline") && n.attribute("stroke") == Some(&*sliding))
+        .filter_map(|n| {
+            let xs: Vec<&str> = n
+                .attribute("points")
+                .unwrap()
+                .split_whitespace()
+                .map(|p| p.split_once(',').unwrap().0)
+                .collect();
+            // vertical: the legend's sample line is horizontal
+            (xs.len() == 2 && xs[0] == xs[1]).then(|| xs[0].parse().unwrap())
+        })
+        .collect();
+    let mut lefts: Vec<f64> = safe
+        .iter()
+        .map(|p| p.2.iter().map(|q| q.0).fold(f64::INFINITY, f64::min))
+        .collect();
+    walls.sort_by(f64::total_cmp);
+    lefts.sort_by(f64::total_cmp);
+    assert_eq!(walls.len(), 3);
+    for (w, l) in walls.iter().zip(&lefts) {
+        assert!(
+            (w - l).abs() <= 1.0,
+            "safe layer from {l}, sliding branch at {w}"
+        );
+    }
+    // a single arch: its safe and collapse domains, each once
+    let one = curve_svg(&arches[1..2], false);
+    let doc = parse(&one);
+    let polys = polygons(&doc);
+    for tint in [plot_curve::SAFE_TINT, plot_curve::COLLAPSE_TINT] {
+        assert_eq!(polys.iter().filter(|p| p.0 == hex(tint)).count(), 1);
+    }
+}
+
+#[test]
+fn map_has_a_colour_bar() {
+    let svg = map_svg(&semicircle(), 6, 8, false);
+    let doc = parse(&svg);
+    let bar: std::collections::BTreeSet<&str> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("rect") && n.attribute("width") == Some("22"))
+        .filter_map(|n| n.attribute("fill"))
+        .filter(|f| *f != "none")
+        .collect();
+    assert_eq!(bar.len(), 10, "five safe and five collapse bands: {bar:?}");
+    let texts: Vec<String> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .map(|n| n.text().unwrap_or("").trim().to_string())
+        .collect();
+    assert!(texts.iter().any(|t| t.starts_with("margin")), "bar title");
+    let signed = texts
+        .iter()
+        .filter(|t| (t.starts_with('+') || t.starts_with('-')) && t[1..].parse::<f64>().is_ok())
+        .count();
+    assert_eq!(signed, 11, "one value per band edge");
+}
+
+/// (value, y) of the tick labels of the η axis (numbers right-aligned left of the plot).
+fn eta_ticks(doc: &roxmltree::Document) -> Vec<(f64, f64)> {
+    doc.descendants()
+        .filter(|n| n.has_tag_name("text") && n.attribute("text-anchor") == Some("end"))
+        .filter(|n| n.attribute("x").unwrap().parse::<f64>().unwrap() < 100.0)
+        .filter_map(|n| {
+            let v: f64 = n.text()?.trim().parse().ok()?;
+            Some((v, n.attribute("y")?.parse().ok()?))
+        })
+        .collect()
+}
+
+/// Largest deviation of y from the straight line through the first and last ticks, with
+/// the values mapped by `f`, relative to the span.
+fn bend(ticks: &[(f64, f64)], f: fn(f64) -> f64) -> f64 {
+    let (a, b) = (ticks[0], ticks[ticks.len() - 1]);
+    ticks
+        .iter()
+        .map(|&(v, y)| {
+            let t = (f(v) - f(a.0)) / (f(b.0) - f(a.0));
+            (a.1 + t * (b.1 - a.1) - y).abs() / (b.1 - a.1).abs()
+        })
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn log_eta_puts_eta_on_a_log_axis() {
+    let shallow = Arch::symmetric(-1.2, WeightModel::Centreline).unwrap();
+    for (svg, log) in [
+        (curve_svg(std::slice::from_ref(&shallow), true), true),
+        (curve_svg(std::slice::from_ref(&shallow), false), false),
+        (map_svg(&semicircle(), 6, 8, true), true),
+    ] {
+        let doc = parse(&svg);
+        let ticks = eta_ticks(&doc);
+        assert!(ticks.len() >= 3, "{ticks:?}");
+        assert!(ticks.iter().all(|t| t.0 > 0.0) || !log);
+        if log {
+            assert!(bend(&ticks, f64::ln) < 0.01, "not logarithmic: {ticks:?}");
+            assert!(bend(&ticks, |v| v) > 0.05, "linear: {ticks:?}");
+        } else {
+            assert!(bend(&ticks, |v| v) < 0.01, "not linear: {ticks:?}");
+        }
+        // one format on the axis: every label has the same number of decimals
+        let labels: Vec<String> = doc
+            .descendants()
+            .filter(|n| n.has_tag_name("text") && n.attribute("text-anchor") == Some("end"))
+            .filter(|n| n.attribute("x").unwrap().parse::<f64>().unwrap() < 100.0)
+            .filter_map(|n| n.text().map(|t| t.trim().to_string()))
+            .filter(|t| t.parse::<f64>().is_ok())
+            .collect();
+        let decimals = |t: &String| t.split_once('.').map_or(0, |d| d.1.len());
+        assert!(
+            labels.iter().all(|t| decimals(t) == decimals(&labels[0])),
+            "{labels:?}"
+        );
+    }
+}
+
+#[test]
+fn joint_lines_are_drawn_only_when_visible() {
+    let joint_lines = |blocks: usize| {
+        let arch = semicircle().with_blocks(blocks).unwrap();
+        let svg = arch_svg(&arch, 0.35, None).unwrap();
+        let doc = parse(&svg);
+        let n = doc
+            .descendants()
+            .filter(|n| n.has_tag_name("polyline") && n.attribute("stroke") == Some("#786E64"))
+            .count();
+        (n, svg)
+    };
+    let (twelve, _) = joint_lines(12);
+    assert_eq!(twelve, 13, "12 voussoirs: 13 joints drawn");
+    let (many, svg) = joint_lines(100_000);
+    assert_eq!(many, 0, "100000 joints would paint the arch grey");
+    assert!(svg.contains("not drawn"));
+    assert!(svg.len() < 2_000_000, "{} bytes", svg.len());
 }

@@ -19,8 +19,8 @@ pub struct Eccentricity {
     pub e_t: f64,
 }
 
-/// e_M and e_T at `samples + 1` equally spaced angles (or at the listed joints of a
-/// discrete arch, plus the same dense sampling for the continuous lines).
+/// e_M and e_T at `samples + 1` equally spaced angles, plus the listed joints of a discrete
+/// arch when there are at most `samples + 1` of them.
 pub fn eccentricities(
     arch: &Arch,
     eta: f64,
@@ -33,10 +33,18 @@ pub fn eccentricities(
         .map(|i| a + (b - a) * i as f64 / samples as f64)
         .collect();
     if let JointLayout::Discrete(j) = arch.layout() {
+        if j.len() > samples + 1 {
+            // more joints than samples: the dense sampling is already finer than a picture
+            return sample(arch, eta, mu, x, betas);
+        }
         betas.extend_from_slice(j);
         betas.sort_by(f64::total_cmp);
         betas.dedup();
     }
+    sample(arch, eta, mu, x, betas)
+}
+
+fn sample(arch: &Arch, eta: f64, mu: f64, x: &Reactions, betas: Vec<Radians>) -> Vec<Eccentricity> {
     betas
         .into_iter()
         .map(|beta| {

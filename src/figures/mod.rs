@@ -1,0 +1,337 @@
+//! The data each figure draws, computed from the solver: the sampled limit curves
+//! ([`CurveData`]), a state of the arch with its lines and mechanism ([`ArchScene`]) and the
+//! margin over the η–μ plane ([`MapData`]). This is numerics; turning these data into
+//! pictures is `render::plot_*` (feature `svg`), which calls no solver.
+//!
+//! Lengths are divided by r and angles are in radians, as everywhere in the crate.
+
+pub mod margin_map;
+pub mod thrust_line;
+
+use crate::admissibility::{max_margin, Goal, WorkingSet};
+use crate::arch::{Arch, Radians};
+use crate::collapse_mode::CollapseMode;
+use crate::contact::{Contact, ContactKind};
+use crate::kinematics::block_motions;
+use crate::limit::{solve, Outcome};
+use crate::limit_curve::{trace, LimitCurve};
+use crate::mechanism::Mechanism;
+use crate::scan::State;
+use crate::settings::Settings;
+use crate::statics::Reactions;
+use thrust_line::{eccentricities, Eccentricity};
+
+/// Why a figure could not be drawn (a result, not bad input).
+#[derive(Debug, Clone, PartialEq)]
+pub struct NoFigure(pub String);
+
+impl std::fmt::Display for NoFigure {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+/// Points per branch when a limit curve is sampled for drawing.
+const POINTS_PER_BRANCH: usize = 14;
+/// Angles at which the lines of thrust and friction are sampled.
+const LINE_SAMPLES: usize = 800;
+/// A state at η within this relative distance of η* is drawn as the limit state.
+const AT_LIMIT: f64 = 1e-12;
+
+/// One arch's limit curve, sampled for drawing.
+#[derive(Debug, Clone)]
+pub struct CurveData {
+    /// The arch.
+    pub arch: Arch,
+    /// The branches other than the purely sliding one: mode and points (μ, η) by
+    /// decreasing μ.
+    pub branches: Vec<(CollapseMode, Vec<(f64, f64)>)>,
+    /// Finite corners (μ, η).
+    pub corners: Vec<(f64, f64)>,
+    /// η of the asymptote at μ = ∞ when the top branch only approaches it.
+    pub asymptote: Option<f64>,
+    /// μ_ms: the purely sliding branch is the vertical line μ = μ_ms above the lowest point.
+    pub mu_ms: f64,
+}
+
+impl CurveData {
+    /// The whole curve (all branches) as one polyline by decreasing μ.
+    pub fn outline(&self) -> Vec<(f64, f64)> {
+        let mut pts: Vec<(f64, f64)> = self
+            .branches
+            .iter()
+            .flat_map(|b| b.1.iter().copied())
+            .collect();
+        pts.sort_by(|a, b| b.0.total_cmp(&a.0));
+        pts
+    }
+}
+
+/// Samples the branches of a traced `curve` (`n` points per branch, μ up to `mu_cap`).
+fn sample(
+    arch: &Arch,
+    curve: &LimitCurve,
+    mu_cap: f64,
+    n: usize,
+    settings: &Settings,
+) -> Option<CurveData> {
+    let mu_ms = curve.mu_ms?;
+    let mut branches = Vec::new();
+    for b in &curve.branches {
+        if b.mode == CollapseMode::PurelySliding {
+            continue;
+        }
+        let hi = b.mu_max.min(mu_cap);
+        let lo = b.mu_min;
+        let mut pts = vec![];
+        // the upper end: a corner, or the horizontal branch's constant η at the cap
+        // (an asymptotic branch is sampled only, it never reaches its η_min)
+        if b.mu_max.is_finite() || b.eta_min == b.eta_max {
+            pts.push((hi, b.eta_min));
+        }
+        for i in 1..n {
+            let mu = hi * (lo / hi).powf(i as f64 / n as f64);
+            if let Ok(Outcome::Limit(ls)) = solve(arch, mu, settings).map(|s| s.outcome) {
+                pts.push((mu, ls.eta));
+            }
+        }
+        pts.push((lo, b.eta_max));
+        branches.push((b.mode, pts));
+    }
+    let corners = curve
+        .corners
+        .iter()
+        .filter(|c| c.mu.is_finite())
+        .map(|c| (c.mu, c.eta))
+        .collect();
+    let asymptote = curve
+        .corners
+        .iter()
+        .find(|c| c.mu.is_infinite())
+        .map(|c| c.eta);
+    Some(CurveData {
+        arch: arch.clone(),
+        branches,
+        corners,
+        asymptote,
+        mu_ms,
+    })
+}
+
+/// The limit curve of `arch` sampled up to three times its largest finite corner (at least
+/// twice μ_ms); `None` when the arch stands at no friction.
+pub fn curve(arch: &Arch, settings: &Settings) -> Option<CurveData> {
+    let c = trace(arch, settings);
+    let mu_ms = c.mu_ms?;
+    let top = c
+        .corners
+        .iter()
+        .filter(|k| k.mu.is_finite())
+        .map(|k| k.mu)
+        .fold(mu_ms, f64::max);
+    sample(
+        arch,
+        &c,
+        (3.0 * top).max(2.0 * mu_ms),
+        POINTS_PER_BRANCH,
+        settings,
+    )
+}
+
+/// The limit curves of several arches (those that can stand at some friction).
+pub fn curves(arches: &[Arch], settings: &Settings) -> Result<Vec<CurveData>, NoFigure> {
+    let data: Vec<CurveData> = arches.iter().filter_map(|a| curve(a, settings)).collect();
+    if data.is_empty() {
+        return Err(NoFigure(
+            "no arch has a limit curve (none can stand)".into(),
+        ));
+    }
+    Ok(data)
+}
+
+/// The rigid motion of one block of a mechanism.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Block {
+    /// Joint angle where the block starts.
+    pub from: Radians,
+    /// Joint angle where it ends.
+    pub to: Radians,
+    /// (V_x(O), V_y(O), ψ): velocity of the origin and angular velocity (formulation §4).
+    pub motion: [f64; 3],
+}
+
+/// A state of the arch as the arch and eccentricity figures draw it.
+#[derive(Debug, Clone)]
+pub struct ArchScene {
+    /// The arch.
+    pub arch: Arch,
+    /// Friction coefficient.
+    pub mu: f64,
+    /// Thickness ratio drawn.
+    pub eta: f64,
+    /// The reactions (h, v, w) of the state.
+    pub x: Reactions,
+    /// Active contacts (limit state) or the least-slack contacts (safe state).
+    pub pattern: Vec<Contact>,
+    /// The collapse mode at a limit state; `None` for a safe state.
+    pub mode: Option<CollapseMode>,
+    /// The mechanism at a limit state.
+    pub mechanism: Option<Mechanism>,
+    /// The moving blocks of the mechanism (empty for a safe state).
+    pub blocks: Vec<Block>,
+    /// The lines of thrust and friction, sampled along the arch.
+    pub lines: Vec<Eccentricity>,
+}
+
+/// The state drawn by the arch and eccentricity figures: the limit state at η*(μ) when
+/// `eta` is `None`, else the state of greatest margin at `eta` (which must be ≥ η*).
+pub fn scene(
+    arch: &Arch,
+    mu: f64,
+    eta: Option<f64>,
+    settings: &Settings,
+) -> Result<ArchScene, NoFigure> {
+    let sol = solve(arch, mu, settings).map_err(|e| NoFigure(e.to_string()))?;
+    let ls = match sol.outcome {
+        Outcome::Limit(ls) => ls,
+        Outcome::NoEquilibrium { reason, .. }
+        | Outcome::Unresolved { reason, .. }
+        | Outcome::NoCollapse { reason } => return Err(NoFigure(reason)),
+    };
+    let (eta, x, pattern, limit) = match eta {
+        Some(e) if e < ls.eta * (1.0 - AT_LIMIT) => {
+            return Err(NoFigure(format!(
+            "no admissible state at eta = {e}: the least thickness at this friction is eta* = {}",
+            ls.eta
+        )))
+        }
+        Some(e) if e > ls.eta * (1.0 + AT_LIMIT) => {
+            let (x, pattern) = safe_state(arch, e, mu, settings)?;
+            (e, x, pattern, None)
+        }
+        _ => (ls.eta, ls.x, ls.pattern.clone(), Some(ls)),
+    };
+    let blocks = limit.as_ref().map_or_else(Vec::new, |l| {
+        block_motions(eta, &l.mechanism.contacts, &l.mechanism.rates)
+            .into_iter()
+            .map(|(from, to, motion)| Block { from, to, motion })
+            .collect()
+    });
+    Ok(ArchScene {
+        arch: arch.clone(),
+        mu,
+        eta,
+        x,
+        pattern,
+        mode: limit.as_ref().map(|l| l.mode),
+        mechanism: limit.map(|l| l.mechanism),
+        blocks,
+        lines: eccentricities(arch, eta, mu, &x, LINE_SAMPLES),
+    })
+}
+
+/// The state of greatest margin at (η, μ) and its contacts of least slack (within 1 % of
+/// the least, at most six).
+fn safe_state(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    settings: &Settings,
+) -> Result<(Reactions, Vec<Contact>), NoFigure> {
+    let mut ws = WorkingSet::initial(arch);
+    let m = max_margin(
+        arch,
+        eta,
+        mu,
+        ContactKind::active_at(mu),
+        &mut ws,
+        Goal::Optimise,
+        settings,
+    )
+    .map_err(|err| NoFigure(format!("margin LP failed: {err:?}")))?;
+    let st = State {
+        arch,
+        eta,
+        mu,
+        x: m.x,
+    };
+    let mut peaks = st.peaks(settings);
+    peaks.sort_by(|a, b| b.value.total_cmp(&a.value));
+    let best = peaks.first().map_or(0.0, |p| p.value);
+    let pattern = peaks
+        .iter()
+        .filter(|p| p.value >= best * 1.01 - 1e-15)
+        .take(6)
+        .map(|p| p.contact)
+        .collect();
+    Ok((m.x, pattern))
+}
+
+/// The grid of a margin map.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MapGrid {
+    /// Cells along η.
+    pub n_eta: usize,
+    /// Cells along μ (always spaced geometrically).
+    pub n_mu: usize,
+    /// Space the η cells geometrically (for a log-scale η axis) instead of evenly from 0.
+    pub log_eta: bool,
+}
+
+/// The margin over the η–μ plane and the limit curve it is drawn with.
+#[derive(Debug, Clone)]
+pub struct MapData {
+    /// The limit curve of the arch.
+    pub curve: CurveData,
+    /// Cell centres along η (increasing).
+    pub etas: Vec<f64>,
+    /// Cell centres along μ (increasing).
+    pub mus: Vec<f64>,
+    /// `values[i][j]`: the margin at (`etas[i]`, `mus[j]`), NaN where the LP failed
+    /// (see [`margin_map::margin_map`]).
+    pub values: Vec<Vec<f64>>,
+    /// Whether the η cells are spaced geometrically.
+    pub log_eta: bool,
+}
+
+/// The margin map of `arch` on `grid`, computed on `threads` threads; `progress(done,
+/// total)` after each cell. The window spans μ from 0.7 μ_ms to the end of the sampled
+/// curve, η up to 1.6 × the curve's highest point.
+pub fn map(
+    arch: &Arch,
+    grid: MapGrid,
+    threads: usize,
+    settings: &Settings,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<MapData, NoFigure> {
+    let curve = curve(arch, settings)
+        .ok_or_else(|| NoFigure("the arch cannot stand at any friction".into()))?;
+    let pts = curve.outline();
+    let mu_lo = 0.7 * curve.mu_ms;
+    let mu_hi = pts.iter().map(|p| p.0).fold(curve.mu_ms, f64::max);
+    let eta_max = pts.iter().map(|p| p.1).fold(0.0, f64::max);
+    let eta_min = pts.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
+    let eta_top = (1.6 * eta_max).min(1.999);
+    let (n_eta, n_mu) = (grid.n_eta, grid.n_mu);
+    let mus: Vec<f64> = (0..n_mu)
+        .map(|j| mu_lo * (mu_hi / mu_lo).powf((j as f64 + 0.5) / n_mu as f64))
+        .collect();
+    let etas: Vec<f64> = if grid.log_eta {
+        let eta_lo = 0.4 * eta_min;
+        (0..n_eta)
+            .map(|i| eta_lo * (eta_top / eta_lo).powf((i as f64 + 0.5) / n_eta as f64))
+            .collect()
+    } else {
+        (0..n_eta)
+            .map(|i| eta_top * (i as f64 + 0.5) / n_eta as f64)
+            .collect()
+    };
+    let values = margin_map::margin_map(arch, &etas, &mus, settings, threads, progress);
+    Ok(MapData {
+        curve,
+        etas,
+        mus,
+        values,
+        log_eta: grid.log_eta,
+    })
+}
