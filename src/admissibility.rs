@@ -26,6 +26,10 @@ pub struct Margin {
     pub rounds: usize,
 }
 
+/// The initial working set of a continuous arch: the joints that cut it into this many
+/// equal pieces (constraint generation adds the rest).
+const INITIAL_PIECES: usize = 8;
+
 /// A growing set of joint angles whose activation functions enter the LP.
 #[derive(Debug, Clone)]
 pub struct WorkingSet {
@@ -38,12 +42,12 @@ impl WorkingSet {
         let joints = match arch.layout() {
             JointLayout::Continuous => {
                 let (a, b) = (arch.beta_right(), arch.beta_left());
-                (0..=8)
+                (0..=INITIAL_PIECES)
                     .map(|i| {
-                        if i == 8 {
+                        if i == INITIAL_PIECES {
                             b
                         } else {
-                            a + (b - a) * i as f64 / 8.0
+                            a + (b - a) * i as f64 / INITIAL_PIECES as f64
                         }
                     })
                     .collect()
@@ -134,7 +138,7 @@ pub fn max_margin(
         let decided = goal == Goal::Decide && (s < 0.0 || margin >= 0.0);
         worst.sort_by(|a, b| a.0.total_cmp(&b.0));
         for &(_, beta) in worst.iter().take(4) {
-            added |= ws.add(beta, settings.same_joint * 1e-3);
+            added |= ws.add(beta, settings.working_set_gap);
         }
         if decided || !added || rounds >= settings.max_rounds {
             return Ok(Margin {

@@ -253,7 +253,7 @@ impl Arch {
     /// True when the springings are mirror images about the vertical axis
     /// (β_R + β_L = π) and the joint layout is mirror-symmetric too.
     pub fn is_symmetric(&self) -> bool {
-        let tol = 1e-12 * (1.0 + self.span());
+        let tol = SYMMETRY_TOL * (1.0 + self.span());
         let springs = (self.beta_right + self.beta_left - PI).abs() <= tol;
         springs
             && match &self.layout {
@@ -280,6 +280,14 @@ impl Arch {
         }
     }
 }
+
+/// Springings (and joints) mirror each other when β_R + β_L = π to within this, relative
+/// to 1 + span: the opening given in degrees or as −β_R round-trips to this accuracy.
+pub const SYMMETRY_TOL: f64 = 1e-12;
+
+/// The largest thickness the solver tries: just below η = 2, where the intrados radius
+/// 1 − η/2 vanishes.
+pub const ETA_TOP: f64 = 2.0 * (1.0 - 1e-9);
 
 /// Validates a thickness ratio η = t/r: finite, 0 < η < 2.
 pub fn check_eta(eta: f64) -> Result<f64, InputError> {

@@ -25,6 +25,9 @@ use crate::settings::Settings;
 use crate::statics::Reactions;
 use itertools::Itertools;
 
+/// The smallest friction at which the upward search for a standing state starts.
+const FIRST_TRIAL_MU: f64 = 1e-3;
+
 /// The least friction at which a given thickness stands.
 #[derive(Debug, Clone, PartialEq)]
 pub enum LeastFriction {
@@ -175,7 +178,7 @@ pub fn least_friction_for(arch: &Arch, eta: f64, settings: &Settings) -> LeastFr
         };
     }
     // A finite friction at which η stands: double until the margin is non-negative.
-    let mut hi = mu_lo.max(1e-3) * 2.0;
+    let mut hi = mu_lo.max(FIRST_TRIAL_MU) * 2.0;
     let (mut f_hi, mut x_hi) = match f(hi) {
         Ok(v) => v,
         Err(_) => return LeastFriction::Never,

@@ -18,6 +18,10 @@ use crate::settings::Settings;
 use crate::statics::Reactions;
 use itertools::Itertools;
 
+/// The friction-only search gives up above this μ (friction angle 90° − 1e-8 rad): an
+/// arch that needs more stands by no finite friction (μ_ms reported as none).
+pub const FRICTION_SEARCH_MAX: f64 = 1e8;
+
 /// The sliding activation functions.
 pub const SLIDES: [ContactKind; 2] = [ContactKind::SlidePlus, ContactKind::SlideMinus];
 
@@ -46,7 +50,7 @@ pub fn friction_limit(arch: &Arch, settings: &Settings) -> Result<Option<Frictio
     let (mut fhi, mut xhi) = f(hi)?;
     while fhi < 0.0 {
         hi *= 4.0;
-        if hi > 1e8 {
+        if hi > FRICTION_SEARCH_MAX {
             return Ok(None);
         }
         (fhi, xhi) = f(hi)?;
@@ -93,7 +97,7 @@ pub fn friction_limit(arch: &Arch, settings: &Settings) -> Result<Option<Frictio
             x: r.x,
         };
         let v = st.verdict(&SLIDES, settings);
-        if v.worst > settings.adm_tol || r.mu > mu_hi * (1.0 + 1e-9) {
+        if v.worst > settings.adm_tol || r.mu > mu_hi * (1.0 + settings.root_slack) {
             continue;
         }
         let pattern = v.active;

@@ -75,7 +75,11 @@ pub fn find(
     }
     let support: Vec<usize> = (0..n).filter(|&i| rates[i] > settings.rate_tol).collect();
     let b = DMatrix::from_fn(3, support.len(), |r, c| cols[support[c]][r]);
-    let rank = if support.is_empty() { 0 } else { b.rank(1e-10) };
+    let rank = if support.is_empty() {
+        0
+    } else {
+        b.rank(settings.rank_tol)
+    };
     let dof = support.len() - rank;
 
     let mut symmetric = false;

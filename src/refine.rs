@@ -363,7 +363,7 @@ pub fn solve_system(
     }
     z.extend(sys.free.iter().map(|&i| contacts[i].beta));
     if kkt {
-        z.extend(initial_multipliers(&sys, &x0));
+        z.extend(initial_multipliers(&sys, &x0, settings.multiplier_cutoff));
     }
     let (z, fnorm, iterations) = newton(&sys, z, settings)?;
     // Restart once from the solution rounded to 9 significant digits: the LP's
@@ -428,7 +428,7 @@ fn newton(
         let rhs = DVector::from_iterator(n_eq, f.iter().map(|v| -v));
         let svd = jac.svd(true, true);
         let smax = svd.singular_values.max();
-        let Ok(step) = svd.solve(&rhs, smax * 1e-13) else {
+        let Ok(step) = svd.solve(&rhs, smax * settings.svd_cutoff) else {
             return Err(NewtonFailure::NoConvergence(fnorm));
         };
         // Damped update: the first step length that reduces the residual.
@@ -458,7 +458,7 @@ fn newton(
         }
     }
     // Stagnation at the rounding level counts as convergence.
-    if fnorm <= 1e3 * settings.newton_tol {
+    if fnorm <= settings.newton_accept {
         Ok((z, fnorm, iterations))
     } else if !sys.inside(&z) {
         Err(NewtonFailure::LeftDomain)
@@ -478,7 +478,7 @@ fn round_sig(v: f64, digits: i32) -> f64 {
 }
 
 /// Least-squares multipliers of [∇ₓφ_i; ∂φ_i/∂p] y = [0; −1] at the starting point.
-fn initial_multipliers(sys: &System, x: &Reactions) -> Vec<f64> {
+fn initial_multipliers(sys: &System, x: &Reactions, cutoff: f64) -> Vec<f64> {
     let m = sys.contacts.len();
     let is_eta = sys.params()[0];
     let a = DMatrix::from_fn(4, m, |r, i| {
@@ -492,7 +492,7 @@ fn initial_multipliers(sys: &System, x: &Reactions) -> Vec<f64> {
     });
     let b = DVector::from_vec(vec![0.0, 0.0, 0.0, -1.0]);
     let svd = a.svd(true, true);
-    let tol = svd.singular_values.max() * 1e-12;
+    let tol = svd.singular_values.max() * cutoff;
     svd.solve(&b, tol)
         .map(|y| y.iter().copied().collect())
         .unwrap_or_else(|_| vec![1.0; m])

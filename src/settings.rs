@@ -5,6 +5,8 @@
 //! `scale` = max(1, ‖x‖) · span, unless said otherwise, so that shallow arches
 //! with η* ~ 1e-3 are treated as carefully as deep ones.
 
+use crate::arch::{fmt_value, InputError};
+
 /// Which solver answers the static margin LP.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum LpBackend {
@@ -46,7 +48,10 @@ pub struct Settings {
     pub newton_tol: f64,
     /// Newton iteration limit. Default 40.
     pub newton_max_iter: usize,
-    /// Two contacts at angles closer than this (radians) are the same joint. Default 1e-7.
+    /// The one "same joint" threshold: within one state, two contacts at angles closer
+    /// than this (radians) are at the same joint (a detached joint with both hinges
+    /// active, a springing that hinges and slides, mirror images of a symmetric pattern).
+    /// Default 1e-7.
     pub same_joint: f64,
     /// Feasibility and optimality tolerances passed to HiGHS. Default 1e-10.
     pub lp_tol: f64,
@@ -61,6 +66,41 @@ pub struct Settings {
     pub curve_samples: usize,
     /// A rate below `rate_tol` (rates sum to 1) counts as zero. Default 1e-10.
     pub rate_tol: f64,
+    /// Relative singular-value threshold for the rank of a compatibility matrix B (the
+    /// dimension of the mechanism cone, rank-deficient kinematic LPs). Default 1e-10.
+    pub rank_tol: f64,
+    /// Singular values of the Newton Jacobian below `svd_cutoff` × the largest are treated
+    /// as zero in the least-squares step. Default 1e-13.
+    pub svd_cutoff: f64,
+    /// The same, for the least-squares estimate of KKT multipliers. Default 1e-12.
+    pub multiplier_cutoff: f64,
+    /// Newton that stagnates at a residual below `newton_accept` (scaled, like
+    /// `newton_tol`) has converged to the rounding level. Default 1e-11.
+    pub newton_accept: f64,
+    /// A refined root (η or μ) may lie this far (relative) beyond the end of its LP
+    /// bracket that carries a verified admissible state: the LP decides only to its
+    /// tolerance. Farther out it is another root. Default 1e-9.
+    pub root_slack: f64,
+    /// Two refined values of η or μ closer than this (relative) are the same root.
+    /// Default 1e-12.
+    pub same_root: f64,
+    /// Within this relative distance above μ_ms the LP cannot decide admissibility and
+    /// the solver says so instead of answering. Default 1e-6.
+    pub mu_ms_resolution: f64,
+    /// A joint whose N is below `detach_rel` × (1 + ‖x‖₁) is detached (N = 0): it can
+    /// carry no friction. Default 1e-9.
+    pub detach_rel: f64,
+    /// The limit curve is sampled from μ_ms (1 + `curve_start_rel`). Default 1e-5.
+    pub curve_start_rel: f64,
+    /// Two contacts of the same kind and location in neighbouring samples of the limit
+    /// curve whose angles differ by less than this (radians) are the same contact moving
+    /// along the branch (patterns are tracked, not compared exactly: interior joints move
+    /// with μ). Not a "same joint" test within one state: that is `same_joint`.
+    /// Default 0.05.
+    pub track_angle: f64,
+    /// Joints added to the constraint-generation working set closer than this (radians)
+    /// to one already there are not added again. Default 1e-10.
+    pub working_set_gap: f64,
 }
 
 impl Default for Settings {
@@ -80,8 +120,85 @@ impl Default for Settings {
             dense_lp_tol: 1e-13,
             max_rounds: 60,
             rate_tol: 1e-10,
+            rank_tol: 1e-10,
+            svd_cutoff: 1e-13,
+            multiplier_cutoff: 1e-12,
+            newton_accept: 1e-11,
+            root_slack: 1e-9,
+            same_root: 1e-12,
+            mu_ms_resolution: 1e-6,
+            detach_rel: 1e-9,
+            curve_start_rel: 1e-5,
+            track_angle: 0.05,
+            working_set_gap: 1e-10,
             curve_samples: 16,
             lp_backend: LpBackend::Dense,
         }
+    }
+}
+
+impl Settings {
+    /// Checks every field against its valid range; the error names the field
+    /// (`settings.<name>`), the range and the value.
+    pub fn validate(&self) -> Result<(), InputError> {
+        let unit = |name: &'static str, v: f64| -> Result<(), InputError> {
+            if v.is_finite() && v > 0.0 && v < 1.0 {
+                Ok(())
+            } else {
+                Err(InputError::OutOfRange {
+                    arg: name,
+                    value: fmt_value(v),
+                    range: "0 < value < 1".into(),
+                })
+            }
+        };
+        let count = |name: &'static str, v: usize, lo: usize, hi: usize| {
+            if (lo..=hi).contains(&v) {
+                Ok(())
+            } else {
+                Err(InputError::OutOfRange {
+                    arg: name,
+                    value: v.to_string(),
+                    range: format!("whole numbers {lo} to {hi}"),
+                })
+            }
+        };
+        for (name, v) in [
+            ("settings.adm_tol", self.adm_tol),
+            ("settings.magnitude_floor", self.magnitude_floor),
+            ("settings.sep_tol", self.sep_tol),
+            ("settings.bracket_rel", self.bracket_rel),
+            ("settings.candidate_rel", self.candidate_rel),
+            ("settings.newton_tol", self.newton_tol),
+            ("settings.newton_accept", self.newton_accept),
+            ("settings.same_joint", self.same_joint),
+            ("settings.lp_tol", self.lp_tol),
+            ("settings.dense_lp_tol", self.dense_lp_tol),
+            ("settings.rate_tol", self.rate_tol),
+            ("settings.rank_tol", self.rank_tol),
+            ("settings.svd_cutoff", self.svd_cutoff),
+            ("settings.multiplier_cutoff", self.multiplier_cutoff),
+            ("settings.root_slack", self.root_slack),
+            ("settings.same_root", self.same_root),
+            ("settings.mu_ms_resolution", self.mu_ms_resolution),
+            ("settings.detach_rel", self.detach_rel),
+            ("settings.curve_start_rel", self.curve_start_rel),
+            ("settings.track_angle", self.track_angle),
+            ("settings.working_set_gap", self.working_set_gap),
+        ] {
+            unit(name, v)?;
+        }
+        if self.newton_accept < self.newton_tol {
+            return Err(InputError::Inconsistent {
+                arg: "settings.newton_accept",
+                reason: "must be at least settings.newton_tol".into(),
+            });
+        }
+        count("settings.scan_points", self.scan_points, 8, 100_000)?;
+        count("settings.max_candidates", self.max_candidates, 2, 16)?;
+        count("settings.newton_max_iter", self.newton_max_iter, 1, 10_000)?;
+        count("settings.max_rounds", self.max_rounds, 1, 10_000)?;
+        count("settings.curve_samples", self.curve_samples, 2, 10_000)?;
+        Ok(())
     }
 }

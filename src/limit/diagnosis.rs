@@ -22,12 +22,13 @@ pub(crate) fn no_equilibrium(arch: &Arch, mu: f64, settings: &Settings) -> Outco
                 "mu = {} is below mu_ms = {mu_ms:.10}: no thickness can stand (purely sliding collapse)", fmt_value(mu)
             ),
         },
-        Ok(Some(mu_ms)) if mu < mu_ms * (1.0 + 1e-6) => Outcome::Unresolved {
+        Ok(Some(mu_ms)) if mu < mu_ms * (1.0 + settings.mu_ms_resolution) => Outcome::Unresolved {
             eta_lo: 0.0,
             eta_hi: 2.0,
             reason: format!(
-                "mu = {} is within 1e-6 (relative) of mu_ms = {mu_ms:.10}, closer than the LP resolves admissibility",
-                fmt_value(mu)
+                "mu = {} is within {} (relative) of mu_ms = {mu_ms:.10}, closer than the LP resolves admissibility",
+                fmt_value(mu),
+                settings.mu_ms_resolution
             ),
         },
         Ok(Some(mu_ms)) => Outcome::NoEquilibrium {

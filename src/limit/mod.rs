@@ -45,7 +45,7 @@ pub fn solve(arch: &Arch, mu: f64, settings: &Settings) -> Result<Solution, Inpu
 fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidate>) -> Outcome {
     let modes = ContactKind::active_at(mu);
     let mut ws = WorkingSet::initial(arch);
-    let eta_max = 2.0 * (1.0 - 1e-9);
+    let eta_max = crate::arch::ETA_TOP;
     let top = match margin_at(arch, eta_max, mu, modes, &mut ws, settings) {
         Ok(m) => m,
         Err(e) => return unresolved(0.0, 2.0, e),
@@ -99,7 +99,7 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
         m_hi.x,
         eta_hi,
         (eta_lo, eta_hi),
-        eta_hi * (1.0 + 1e-9),
+        eta_hi * (1.0 + settings.root_slack),
         settings,
         log,
     );
@@ -108,7 +108,7 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
         // arch, so η* ≤ η_hi: a verified pattern above it is not the least. (The lower
         // end comes from the LP's infeasibility decision, accurate only to HiGHS's
         // tolerance, and a verified state below it is simply better.)
-        return if ls.eta > eta_hi * (1.0 + 1e-9) {
+        return if ls.eta > eta_hi * (1.0 + settings.root_slack) {
             unresolved(
                 eta_lo,
                 eta_hi,
@@ -143,7 +143,7 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
         log,
     );
     match second.limit {
-        Some(mut ls) if ls.eta >= st.eta * (1.0 - 1e-12) => {
+        Some(mut ls) if ls.eta >= st.eta * (1.0 - settings.same_root) => {
             ls.eta_static = st.eta;
             Outcome::Limit(ls)
         }

@@ -69,6 +69,12 @@ pub struct Corner {
     pub residual: f64,
 }
 
+/// When the infinite-friction state overturns (no finite μ_rm), the curve is sampled up to
+/// this multiple of its lower end.
+const OVERTURNING_SPAN: f64 = 1e3;
+/// The lower end used for that span when μ_ms is (nearly) zero.
+const MU_FLOOR: f64 = 1e-3;
+
 /// What [`trace`] found, in one word.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum CurveStatus {
@@ -119,7 +125,7 @@ impl LimitCurve {
 
 /// The friction an admissible state x at thickness η needs: max |T|/N over the arch
 /// (∞ when N vanishes where T does not, or N ≤ 0 somewhere).
-fn friction_needed(arch: &Arch, eta: f64, x: &Reactions, samples: usize) -> f64 {
+fn friction_needed(arch: &Arch, eta: f64, x: &Reactions, samples: usize, detach_rel: f64) -> f64 {
     let (a, b) = (arch.beta_right(), arch.beta_left());
     let joints: Vec<f64> = match arch.layout() {
         crate::arch::JointLayout::Discrete(j) => j.clone(),
@@ -132,7 +138,7 @@ fn friction_needed(arch: &Arch, eta: f64, x: &Reactions, samples: usize) -> f64 
         .iter()
         .map(|&beta| {
             let (n, t, _) = internal_forces(arch, eta, x, beta);
-            if n <= 1e-9 * scale {
+            if n <= detach_rel * scale {
                 f64::INFINITY
             } else {
                 t.abs() / n
@@ -180,14 +186,14 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
             };
         }
     }
-    let mu_lo = fl.mu * (1.0 + 1e-5);
+    let mu_lo = fl.mu * (1.0 + settings.curve_start_rel);
     let mu_rm = inf.as_ref().map_or(f64::INFINITY, |s| {
-        friction_needed(arch, s.ls.eta, &s.ls.x, 2000)
+        friction_needed(arch, s.ls.eta, &s.ls.x, 2000, settings.detach_rel)
     });
     let mu_hi = if mu_rm.is_finite() {
         (2.0 * mu_rm).max(1.5 * mu_lo)
     } else {
-        1e3 * mu_lo.max(1e-3)
+        OVERTURNING_SPAN * mu_lo.max(MU_FLOOR)
     };
     let n = settings.curve_samples.max(2);
     let mut samples: Vec<Sample> = Vec::new();
@@ -228,7 +234,7 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
                 &low.ls.pattern,
                 &fl.pattern,
                 start,
-                (fl.mu * (1.0 - 1e-9), low.ls.mu),
+                (fl.mu * (1.0 - settings.root_slack), low.ls.mu),
                 between,
             )
             .unwrap_or(Corner {

@@ -81,9 +81,11 @@ impl Tracer<'_> {
     ) -> Option<Corner> {
         let mut union: Vec<Contact> = lower.to_vec();
         for c in upper {
-            let dup = union
-                .iter()
-                .any(|d| d.kind == c.kind && d.at == c.at && (d.beta - c.beta).abs() < 0.05);
+            let dup = union.iter().any(|d| {
+                d.kind == c.kind
+                    && d.at == c.at
+                    && (d.beta - c.beta).abs() < self.settings.track_angle
+            });
             if !dup {
                 union.push(*c);
             }
@@ -99,7 +101,7 @@ impl Tracer<'_> {
             s,
         )
         .ok()?;
-        let tol = 1e-9;
+        let tol = self.settings.root_slack;
         if !(r.mu >= mu_range.0 * (1.0 - tol) && r.mu <= mu_range.1 * (1.0 + tol)) {
             return None;
         }
@@ -144,7 +146,7 @@ impl Tracer<'_> {
             }
         }
         let mid_mu = (a.ls.mu * b.ls.mu).sqrt();
-        if depth == 0 || a.ls.mu / b.ls.mu < 1.0 + 1e-12 {
+        if depth == 0 || a.ls.mu / b.ls.mu < 1.0 + self.settings.same_root {
             return vec![bracketed(a, b, between)];
         }
         let Some(m) = self.sample(mid_mu) else {

@@ -17,6 +17,16 @@ use nalgebra::{Matrix4, Vector4};
 /// Half-width of the box on (h, v, w) that starts the simplex (units of γ t d r).
 pub const BOX: f64 = 1e6;
 
+/// Pivot elements below this are not used in the ratio test (rows normalised to 1).
+const PIVOT_TOL: f64 = 1e-12;
+/// Ratios closer than this tie (Bland's rule decides); a step this short is degenerate.
+const RATIO_TIE: f64 = 1e-15;
+/// Rank threshold and smallest |det| of a basis in the kinematic enumeration (columns
+/// of order one: B columns, power, ones).
+const BASIS_TOL: f64 = 1e-12;
+/// A basic solution replaces the best one only if its objective is larger by this.
+const IMPROVE_TOL: f64 = 1e-14;
+
 /// Maximises s subject to `row(x) + s·‖∇row‖ ≤ 0` for every row and s ≤ `cap`
 /// (the same problem as [`super::highs::max_margin`]). `tol` is the feasibility tolerance
 /// on normalised rows.
@@ -113,12 +123,13 @@ pub fn max_margin(rows: &[Affine], cap: f64, tol: f64) -> Result<(Reactions, f64
             .ok_or_else(|| LpOutcome::Failed("singular basis".into()))?;
         let mut leave: Option<(usize, f64)> = None;
         for k in 0..4 {
-            if d[k] > 1e-12 {
+            if d[k] > PIVOT_TOL {
                 let ratio = y[k].max(0.0) / d[k];
                 let better = match leave {
                     None => true,
                     Some((l, best)) => {
-                        ratio < best - 1e-15 || (ratio <= best + 1e-15 && basis[k] < basis[l])
+                        ratio < best - RATIO_TIE
+                            || (ratio <= best + RATIO_TIE && basis[k] < basis[l])
                     }
                 };
                 if better {
@@ -131,7 +142,11 @@ pub fn max_margin(rows: &[Affine], cap: f64, tol: f64) -> Result<(Reactions, f64
                 "dual unbounded: primal infeasible".into(),
             ));
         };
-        degenerate = if ratio <= 1e-15 { degenerate + 1 } else { 0 };
+        degenerate = if ratio <= RATIO_TIE {
+            degenerate + 1
+        } else {
+            0
+        };
         in_basis[basis[k]] = false;
         in_basis[j] = true;
         basis[k] = j;
@@ -165,7 +180,7 @@ pub fn kinematic(
         }
     };
     let full = DMatrix::from_fn(5, n + 1, |r, c| col(c)[r]);
-    if full.rank(1e-10) < 5 {
+    if full.rank(1e2 * BASIS_TOL) < 5 {
         return None;
     }
     let rhs = Vector5::new(0.0, 0.0, 0.0, 0.0, 1.0);
@@ -173,7 +188,7 @@ pub fn kinematic(
     for basis in (0..=n).combinations(5) {
         let m = Matrix5::from_fn(|r, c| col(basis[c])[r]);
         let lu = m.lu();
-        if lu.determinant().abs() < 1e-12 {
+        if lu.determinant().abs() < BASIS_TOL {
             continue;
         }
         let Some(x) = lu.solve(&rhs) else { continue };
@@ -187,7 +202,7 @@ pub fn kinematic(
             }
         }
         let value: f64 = lambda.iter().zip(objective).map(|(l, o)| l * o).sum();
-        if best.as_ref().is_none_or(|b| value > b.0 + 1e-14) {
+        if best.as_ref().is_none_or(|b| value > b.0 + IMPROVE_TOL) {
             best = Some((value, lambda));
         }
     }

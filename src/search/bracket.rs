@@ -24,6 +24,10 @@ pub fn margin_at(
     })
 }
 
+/// A secant point is kept this fraction of the bracket's width away from its ends, so
+/// that each step shrinks the bracket.
+const SECANT_GUARD: f64 = 1e-3;
+
 /// The ends of a bracket: (η, f) below the root, (η, f, payload) at or above it.
 type Bracket<T> = ((f64, f64), (f64, f64, T));
 
@@ -59,7 +63,7 @@ pub fn bracket_root<T: Clone>(
             bisect
         } else {
             // keep the secant point away from the ends
-            secant.clamp(lo.0 + 1e-3 * width, hi.0 - 1e-3 * width)
+            secant.clamp(lo.0 + SECANT_GUARD * width, hi.0 - SECANT_GUARD * width)
         };
         let (f, payload) = eval(t)?;
         if stalled {

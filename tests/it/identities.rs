@@ -122,3 +122,22 @@ proptest! {
         }
     }
 }
+
+/// The default settings are valid; a field out of range is named in the error.
+#[test]
+fn settings_validate_names_the_field() {
+    let s = arch_enum::Settings::default();
+    assert!(s.validate().is_ok());
+    let bad = arch_enum::Settings {
+        root_slack: 0.0,
+        ..s.clone()
+    };
+    let e = bad.validate().unwrap_err().to_string();
+    assert!(e.contains("settings.root_slack"), "{e}");
+    let bad = arch_enum::Settings {
+        scan_points: 1,
+        ..s
+    };
+    let e = bad.validate().unwrap_err().to_string();
+    assert!(e.contains("settings.scan_points"), "{e}");
+}
