@@ -8,8 +8,8 @@
 use crate::arch::{Arch, JointLayout, Radians};
 use crate::contact::ContactKind;
 use crate::lp::{self, LpOutcome};
-use crate::scan::State;
 use crate::settings::Settings;
+use crate::state::State;
 use crate::statics::{actions, Reactions};
 
 /// The result of the margin problem at one (η, μ).

@@ -19,9 +19,9 @@ use crate::contact::{Contact, ContactKind};
 use crate::friction::friction_limit;
 use crate::limit::{solve, Outcome};
 use crate::refine::{solve_system, Unknowns};
-use crate::scan::State;
 use crate::search::{bracket_root, candidates_at, margin_at};
 use crate::settings::Settings;
+use crate::state::State;
 use crate::statics::Reactions;
 use itertools::Itertools;
 
@@ -207,15 +207,13 @@ pub fn least_friction_for(arch: &Arch, eta: f64, settings: &Settings) -> LeastFr
     ) else {
         return LeastFriction::Never;
     };
-    let cand = candidates_at(
+    let top = State {
         arch,
-        mu_hi,
         eta,
-        &x_hi,
-        Some(margin_hi.max(0.0)),
-        kinds,
-        settings,
-    );
+        mu: mu_hi,
+        x: x_hi,
+    };
+    let cand = candidates_at(&top, Some(margin_hi.max(0.0)), kinds, settings);
     // Newton with μ unknown (η fixed) on the whole candidate set and its determined
     // subsets; the least μ verified admissible over the arch wins.
     let mut patterns: Vec<Vec<Contact>> = vec![cand.clone()];
@@ -224,7 +222,7 @@ pub fn least_friction_for(arch: &Arch, eta: f64, settings: &Settings) -> LeastFr
     }
     let mut best: Option<(f64, Vec<Contact>)> = None;
     for p in patterns {
-        let Ok(r) = solve_system(arch, &p, x_hi, eta, mu_hi, Unknowns::Mu, settings) else {
+        let Ok(r) = solve_system(&top, &p, Unknowns::Mu, settings) else {
             continue;
         };
         if r.mu.is_nan() || r.mu <= 0.0 || r.mu > mu_hi * (1.0 + settings.candidate_rel) {

@@ -12,9 +12,9 @@ use crate::arch::Arch;
 use crate::contact::Contact;
 use crate::contact::ContactKind;
 use crate::refine::{solve_system, Unknowns};
-use crate::scan::State;
 use crate::search::{bracket_root, candidates_at, margin_at};
 use crate::settings::Settings;
+use crate::state::State;
 use crate::statics::Reactions;
 use itertools::Itertools;
 
@@ -67,15 +67,14 @@ pub fn friction_limit(arch: &Arch, settings: &Settings) -> Result<Option<Frictio
     let (_, (mu_hi, margin_hi, x_hi)) =
         bracket_root((0.0, f0), (hi, fhi, xhi), settings.bracket_rel, 200, f)?;
 
-    let cand = candidates_at(
+    // η does not enter the friction-only problem (T and N involve neither w nor η)
+    let top = State {
         arch,
-        mu_hi,
-        1.0,
-        &x_hi,
-        Some(margin_hi.max(0.0)),
-        &SLIDES,
-        settings,
-    );
+        eta: 1.0,
+        mu: mu_hi,
+        x: x_hi,
+    };
+    let cand = candidates_at(&top, Some(margin_hi.max(0.0)), &SLIDES, settings);
     let mut best: Option<FrictionLimit> = None;
     let mut patterns: Vec<Vec<Contact>> = vec![cand.clone()];
     for k in (1..=3).rev() {
@@ -84,7 +83,7 @@ pub fn friction_limit(arch: &Arch, settings: &Settings) -> Result<Option<Frictio
         }
     }
     for p in patterns {
-        let Ok(r) = solve_system(arch, &p, x_hi, 1.0, mu_hi, Unknowns::Mu, settings) else {
+        let Ok(r) = solve_system(&top, &p, Unknowns::Mu, settings) else {
             continue;
         };
         if best.as_ref().is_some_and(|b| b.mu <= r.mu) {

@@ -15,6 +15,7 @@
 //! |---|---|
 //! | [`arch`] | §2 geometry, input validation |
 //! | [`statics`] | §3 N, T, M, activation functions and exact derivatives |
+//! | [`state`] | the state value (arch, η, μ, x) passed between the parts |
 //! | [`scan`] | §3 maxima of φ over the continuum |
 //! | [`admissibility`] | §5 static LP by constraint generation |
 //! | [`lp`] | the static and kinematic LPs; back ends `lp::dense` (fast path) and `lp::highs` (reference) |
@@ -62,6 +63,7 @@ pub mod render;
 pub mod scan;
 pub mod search;
 pub mod settings;
+pub mod state;
 pub mod statics;
 
 pub use arch::{Arch, InputError, JointLayout, Radians, WeightModel};

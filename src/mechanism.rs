@@ -6,12 +6,12 @@
 //! (the mean of the extreme rays found), and, for a mirror-symmetric pattern of a
 //! symmetric arch, the symmetric representative.
 
-use crate::arch::Arch;
 use crate::contact::Contact;
 use crate::kinematics::{column, compatibility_residual, mirror_indices, power};
 use crate::lp::{self, LpOutcome};
 use crate::settings::Settings;
-use crate::statics::{actions, Reactions};
+use crate::state::State;
+use crate::statics::actions;
 use nalgebra::DMatrix;
 
 /// A kinematically admissible mechanism on a pattern.
@@ -35,16 +35,14 @@ pub struct Mechanism {
     pub dissipation: f64,
 }
 
-/// Finds a mechanism on `contacts` (the active set of the static state x at η, μ),
-/// or `Ok(None)` when the kinematic LP is infeasible.
+/// Finds a mechanism on `contacts` (the active set of `state`), or `Ok(None)` when the
+/// kinematic LP is infeasible.
 pub fn find(
-    arch: &Arch,
-    eta: f64,
-    mu: f64,
-    x: &Reactions,
+    state: &State,
     contacts: &[Contact],
     settings: &Settings,
 ) -> Result<Option<Mechanism>, LpOutcome> {
+    let (arch, eta, mu, x) = (state.arch, state.eta, state.mu, &state.x);
     let mut cs = contacts.to_vec();
     cs.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.kind.cmp(&b.kind)));
     let n = cs.len();

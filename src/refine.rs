@@ -21,6 +21,7 @@
 use crate::arch::Arch;
 use crate::contact::Contact;
 use crate::settings::Settings;
+use crate::state::State;
 use crate::statics::{actions, Reactions};
 use nalgebra::{DMatrix, DVector};
 
@@ -326,32 +327,28 @@ fn inf_norm(f: &[f64]) -> f64 {
     f.iter().fold(0.0f64, |m, v| m.max(v.abs()))
 }
 
-/// Solves the system of `contacts` at friction `mu` (the thickness problem, unknown η)
-/// from the starting point (x0, η0).
+/// Solves the system of `contacts` at the friction of `start` (the thickness problem,
+/// unknown η) from the starting point `start`.
 pub fn solve_pattern(
-    arch: &Arch,
-    mu: f64,
+    start: &State,
     contacts: &[Contact],
-    x0: Reactions,
-    eta0: f64,
     settings: &Settings,
 ) -> Result<Refined, NewtonFailure> {
-    solve_system(arch, contacts, x0, eta0, mu, Unknowns::Eta, settings)
+    solve_system(start, contacts, Unknowns::Eta, settings)
 }
 
 /// Solves the system of `contacts` with the given parameters unknown, from the
-/// starting point (x0, η0, μ0). With fewer contacts than unknowns (a single unknown
+/// starting point `start` (its η and μ are the starting values of the unknown ones and the
+/// fixed values of the others). With fewer contacts than unknowns (a single unknown
 /// parameter and fewer than four contacts), the KKT conditions of minimising that
 /// parameter complete the system.
 pub fn solve_system(
-    arch: &Arch,
+    start: &State,
     contacts: &[Contact],
-    x0: Reactions,
-    eta0: f64,
-    mu0: f64,
     unknowns: Unknowns,
     settings: &Settings,
 ) -> Result<Refined, NewtonFailure> {
+    let (arch, x0, eta0, mu0) = (start.arch, start.x, start.eta, start.mu);
     if contacts.is_empty() {
         return Err(NewtonFailure::Empty);
     }

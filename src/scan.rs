@@ -7,24 +7,12 @@
 //! are maxima when φ decreases into the arch. For a discrete arch the listed joints
 //! are evaluated directly.
 
-use crate::arch::{Arch, JointLayout, Radians};
+use crate::arch::{JointLayout, Radians};
 use crate::contact::ContactKind;
 use crate::contact::{Contact, Location, Peak};
 use crate::settings::Settings;
-use crate::statics::{actions, Reactions};
-
-/// A state to scan: reactions x at thickness η and friction μ.
-#[derive(Debug, Clone, Copy)]
-pub struct State<'a> {
-    /// The arch.
-    pub arch: &'a Arch,
-    /// Thickness ratio η.
-    pub eta: f64,
-    /// Friction coefficient μ (∞: no sliding).
-    pub mu: f64,
-    /// Reactions x = (h, v, w).
-    pub x: Reactions,
-}
+use crate::state::State;
+use crate::statics::actions;
 
 impl State<'_> {
     /// φ of `mode` and its first two β-derivatives at `beta`.

@@ -16,8 +16,8 @@ use crate::kinematics::block_motions;
 use crate::limit::{solve, Outcome};
 use crate::limit_curve::{trace, LimitCurve};
 use crate::mechanism::Mechanism;
-use crate::scan::State;
 use crate::settings::Settings;
+use crate::state::State;
 use crate::statics::Reactions;
 use thrust_line::{eccentricities, Eccentricity};
 
@@ -226,7 +226,7 @@ pub fn scene(
         mode: limit.as_ref().map(|l| l.mode),
         mechanism: limit.map(|l| l.mechanism),
         blocks,
-        lines: eccentricities(arch, eta, mu, &x, LINE_SAMPLES),
+        lines: eccentricities(&State { arch, eta, mu, x }, LINE_SAMPLES),
     })
 }
 

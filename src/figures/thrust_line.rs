@@ -4,6 +4,7 @@
 //! sampled along the arch for a state x. Plain numerics for the pictures.
 
 use crate::arch::{Arch, JointLayout, Radians};
+use crate::state::State;
 use crate::statics::{internal_forces, Reactions};
 
 /// Eccentricities at one joint.
@@ -21,13 +22,8 @@ pub struct Eccentricity {
 
 /// e_M and e_T at `samples + 1` equally spaced angles, plus the listed joints of a discrete
 /// arch when there are at most `samples + 1` of them.
-pub fn eccentricities(
-    arch: &Arch,
-    eta: f64,
-    mu: f64,
-    x: &Reactions,
-    samples: usize,
-) -> Vec<Eccentricity> {
+pub fn eccentricities(state: &State, samples: usize) -> Vec<Eccentricity> {
+    let (arch, eta, mu, x) = (state.arch, state.eta, state.mu, &state.x);
     let (a, b) = (arch.beta_right(), arch.beta_left());
     let mut betas: Vec<Radians> = (0..=samples)
         .map(|i| a + (b - a) * i as f64 / samples as f64)

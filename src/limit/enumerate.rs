@@ -8,8 +8,8 @@ use crate::collapse_mode::classify;
 use crate::contact::{Contact, ContactKind};
 use crate::mechanism;
 use crate::refine::{solve_pattern, NewtonFailure, Refined};
-use crate::scan::State;
 use crate::settings::Settings;
+use crate::state::State;
 use crate::statics::Reactions;
 use itertools::Itertools;
 
@@ -85,7 +85,13 @@ fn verify_group(
 ) {
     let mut refined = Vec::new();
     for s in group {
-        match solve_pattern(arch, mu, &s, x0, eta0, settings) {
+        let start = State {
+            arch,
+            eta: eta0,
+            mu,
+            x: x0,
+        };
+        match solve_pattern(&start, &s, settings) {
             Ok(r) => refined.push((s, r)),
             Err(f) => log.push(Candidate {
                 contacts: s,
@@ -146,7 +152,7 @@ fn verify_group(
         }
         last_eta = r.eta;
         let pattern = verdict.active;
-        match mechanism::find(arch, r.eta, mu, &r.x, &pattern, settings) {
+        match mechanism::find(&st, &pattern, settings) {
             Ok(Some(mech)) => {
                 push(
                     log,

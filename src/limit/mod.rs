@@ -23,6 +23,7 @@ use crate::arch::{check_mu, Arch, InputError};
 use crate::contact::ContactKind;
 use crate::search::{bracket_root, candidates_at, margin_at};
 use crate::settings::Settings;
+use crate::state::State;
 use crate::statics::reaction_scale;
 use diagnosis::{no_equilibrium, unresolved};
 use enumerate::enumerate;
@@ -32,6 +33,7 @@ use enumerate::enumerate;
 /// equilibrium, or an unresolved bracket) is inside the `Solution`.
 pub fn solve(arch: &Arch, mu: f64, settings: &Settings) -> Result<Solution, InputError> {
     let mu = check_mu(mu)?;
+    settings.validate()?;
     let mut candidates = Vec::new();
     let outcome = solve_inner(arch, mu, settings, &mut candidates);
     Ok(Solution {
@@ -81,15 +83,13 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
     let (eta_lo, eta_hi, m_hi) = (lo.0, hi.0, hi.2);
 
     // Candidate contacts at the upper end of the bracket, then the enumeration.
-    let cand = candidates_at(
+    let top = State {
         arch,
+        eta: eta_hi,
         mu,
-        eta_hi,
-        &m_hi.x,
-        Some(m_hi.margin.max(0.0)),
-        modes,
-        settings,
-    );
+        x: m_hi.x,
+    };
+    let cand = candidates_at(&top, Some(m_hi.margin.max(0.0)), modes, settings);
     let sizes: Vec<usize> = (2..=5).collect();
     let first = enumerate(
         arch,
@@ -129,7 +129,13 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
     // dilatancy. A limit state then needs a larger η and another active set: widen the
     // pool to the best local maxima at that state, whatever their slack, and enumerate
     // determined patterns (four or five contacts).
-    let pool = candidates_at(arch, mu, st.eta, &st.x, None, modes, settings);
+    let least = State {
+        arch,
+        eta: st.eta,
+        mu,
+        x: st.x,
+    };
+    let pool = candidates_at(&least, None, modes, settings);
     let second = enumerate(
         arch,
         mu,

@@ -9,8 +9,8 @@ use crate::contact::ContactKind;
 use crate::contact::{Contact, Location};
 use crate::limit::{solve, LimitState, Outcome};
 use crate::refine::{solve_system, Unknowns};
-use crate::scan::State;
 use crate::settings::Settings;
+use crate::state::State;
 use crate::statics::Reactions;
 
 type Signature = Vec<(ContactKind, Location)>;
@@ -91,16 +91,13 @@ impl Tracer<'_> {
             }
         }
         let s = self.settings;
-        let r = solve_system(
-            self.arch,
-            &union,
-            start.0,
-            start.1,
-            start.2,
-            Unknowns::EtaMu,
-            s,
-        )
-        .ok()?;
+        let from = State {
+            arch: self.arch,
+            eta: start.1,
+            mu: start.2,
+            x: start.0,
+        };
+        let r = solve_system(&from, &union, Unknowns::EtaMu, s).ok()?;
         let tol = self.settings.root_slack;
         if !(r.mu >= mu_range.0 * (1.0 - tol) && r.mu <= mu_range.1 * (1.0 + tol)) {
             return None;

@@ -2,30 +2,21 @@
 //! within `candidate_rel` of the LP margin (formulation §5, pattern enumeration).
 
 use crate::admissibility::grad_norm;
-use crate::arch::Arch;
 use crate::contact::{Contact, ContactKind, Peak};
-use crate::scan::State;
 use crate::settings::Settings;
-use crate::statics::{reaction_scale, Reactions};
+use crate::state::State;
+use crate::statics::reaction_scale;
 
 /// Local maxima of φ at the state (η, x) that may be active contacts, best first: with
 /// `margin` given, those whose normalised slack is within `candidate_rel` of it; with
 /// `None`, simply the best ones. At most `max_candidates`.
 pub fn candidates_at(
-    arch: &Arch,
-    mu: f64,
-    eta: f64,
-    x: &Reactions,
+    state: &State,
     margin: Option<f64>,
     modes: &[ContactKind],
     settings: &Settings,
 ) -> Vec<Contact> {
-    let state = State {
-        arch,
-        eta,
-        mu,
-        x: *x,
-    };
+    let (arch, eta, mu, x) = (state.arch, state.eta, state.mu, &state.x);
     let limit = margin.map_or(f64::INFINITY, |m| {
         m + settings.candidate_rel * reaction_scale(x)
     });
