@@ -41,14 +41,6 @@ impl State<'_> {
         out
     }
 
-    /// The greatest φ over the whole arch and every active mode.
-    pub fn max_violation(&self, settings: &Settings) -> f64 {
-        self.peaks(settings)
-            .iter()
-            .map(|p| p.value)
-            .fold(f64::NEG_INFINITY, f64::max)
-    }
-
     fn location(&self, beta: Radians) -> Location {
         if beta == self.arch.beta_right() || beta == self.arch.beta_left() {
             Location::Springing

@@ -35,13 +35,6 @@ impl Interval {
         debug_assert!(lo <= hi);
         Interval { lo, hi }
     }
-    /// Smallest interval containing both.
-    pub fn hull(self, o: Interval) -> Interval {
-        Interval {
-            lo: self.lo.min(o.lo),
-            hi: self.hi.max(o.hi),
-        }
-    }
     /// Midpoint.
     pub fn mid(self) -> f64 {
         0.5 * (self.lo + self.hi)
