@@ -9,6 +9,7 @@ mod identities;
 mod intervals;
 mod invariants;
 mod jacobian;
+mod layering;
 mod model;
 mod modes;
 mod plots;
