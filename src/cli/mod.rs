@@ -62,6 +62,25 @@ impl Exit {
     }
 }
 
+/// The collapse-mode names, defined (shown by `--help` of the commands that print them).
+macro_rules! mode_names {
+    () => {
+        "Collapse modes (named from the active pattern alone; E: hinge at the extrados, \
+I: hinge at the intrados, S+/S-: sliding along the radial joint, the part beyond it (larger beta) \
+moving outwards/inwards):
+  purely_rotational             hinges only (Couplet-Heyman)
+  overturning                   hinges only, with a detached joint (N = 0: E and I both active)
+  purely_sliding                sliding only (the vertical branch mu = mu_ms)
+  rotational_sliding_shoulders  a springing hinges and slides at once
+  mixed_sliding_rotational      hinges and sliding, a hinge nearer the crown (the middle of the arch) \
+than every sliding joint: rotation at the crown, sliding further out
+  mixed_rotational_sliding      hinges and sliding, every hinge farther from the crown than every \
+sliding joint: rotation at the shoulders, sliding near the crown
+  mixed_interleaved             hinges and sliding interleaved otherwise (a descriptive name outside \
+the contract's list)"
+    };
+}
+
 #[derive(Parser, Debug)]
 #[command(
     name = "arch-enum",
@@ -85,12 +104,14 @@ struct Cli {
 enum Command {
     /// The least thickness eta*(mu), the collapse mode, the active pattern, the reactions and a mechanism.
     #[command(
-        after_help = "Example:\n  arch-enum solve --alpha 0 --mu 0.35\n  arch-enum solve --alpha 0.5 --blocks 12 --mu inf --json"
+        after_help = "Example:\n  arch-enum solve --alpha 0 --mu 0.35\n  arch-enum solve --alpha 0.5 --blocks 12 --mu inf --json",
+        after_long_help = concat!("Example:\n  arch-enum solve --alpha 0 --mu 0.35\n  arch-enum solve --alpha 0.5 --blocks 12 --mu inf --json\n\n", mode_names!())
     )]
     Solve(solve::SolveArgs),
     /// The whole eta-mu limit curve: branches with their collapse modes and exact corners.
     #[command(
-        after_help = "Example:\n  arch-enum modes --alpha 1.0\n  arch-enum modes --alpha-deg 30 --json\n  arch-enum modes --alpha 0 --blocks 20"
+        after_help = "Example:\n  arch-enum modes --alpha 1.0\n  arch-enum modes --alpha-deg 30 --json\n  arch-enum modes --alpha 0 --blocks 20",
+        after_long_help = concat!("Example:\n  arch-enum modes --alpha 1.0\n  arch-enum modes --alpha-deg 30 --json\n  arch-enum modes --alpha 0 --blocks 20\n\n", mode_names!())
     )]
     Modes(modes::ModesArgs),
     /// A certificate for eta*(mu): an admissible state at eta_hi (upper bound), a Farkas certificate at eta_lo (lower bound), the limit state.

@@ -86,13 +86,16 @@ pub fn pattern_table(arch: &Arch, pattern: &[Contact], rates: Option<&[f64]>) ->
         if rates.is_some() { "  rate" } else { "" }
     );
     for (i, c) in pattern.iter().enumerate() {
+        // no "-0.00000" at the middle: rounding residue of β − β_mid is not a sign
+        let from_mid = (c.beta - mid).to_degrees();
+        let from_mid = if from_mid.abs() < 5e-6 { 0.0 } else { from_mid };
         let _ = write!(
             s,
             "  {:>2}  {:>14.10}  {:>10.5}  {:>14.5}  {:<15} {:<10}",
             i + 1,
             c.beta,
             c.beta.to_degrees(),
-            (c.beta - mid).to_degrees(),
+            from_mid,
             c.kind.name(),
             match c.at {
                 crate::contact::Location::Springing => "springing",
@@ -104,7 +107,7 @@ pub fn pattern_table(arch: &Arch, pattern: &[Contact], rates: Option<&[f64]>) ->
         }
         s.push('\n');
     }
-    s
+    s.lines().map(|l| l.trim_end().to_string() + "\n").collect()
 }
 
 /// The human-readable answer of `solve`.
