@@ -11,8 +11,8 @@
 //! and the two modes the corner separates.
 
 use arch_enum::limit_curve::trace;
-use arch_enum::render::table::right_half_angle;
-use arch_enum::{Arch, ContactKind, Settings, WeightModel};
+use arch_enum::render::table::{corner_rows, CORNER_HEADER};
+use arch_enum::{Arch, Settings, WeightModel};
 use std::f64::consts::PI;
 
 fn main() {
@@ -26,8 +26,7 @@ fn main() {
         args
     };
     let settings = Settings::default();
-    println!("| α_s | μ | φ [°] | η | β_N | β_T | between |");
-    println!("|---:|---:|---:|---:|---:|---:|:---|");
+    println!("{CORNER_HEADER}");
     for alpha in openings {
         let arch = match Arch::symmetric(alpha, WeightModel::Centreline) {
             Ok(a) => a,
@@ -37,25 +36,8 @@ fn main() {
             }
         };
         let curve = trace(&arch, &settings);
-        for c in &curve.corners {
-            let f = |v: Option<f64>| v.map_or("–".to_string(), |b| format!("{b:.8}"));
-            let (mu, phi) = if c.mu.is_finite() {
-                (
-                    format!("{:.8}", c.mu),
-                    format!("{:.4}", c.mu.atan().to_degrees()),
-                )
-            } else {
-                ("∞".to_string(), "90".to_string())
-            };
-            println!(
-                "| {alpha:.6} | {mu} | {phi} | {:.8} | {} | {} | {} / {}{} |",
-                c.eta,
-                f(right_half_angle(&arch, &c.joints, |j| j.kind == ContactKind::HingeIntrados)),
-                f(right_half_angle(&arch, &c.joints, |j| !j.kind.is_hinge())),
-                c.between[0].name(),
-                c.between[1].name(),
-                if c.exact { "" } else { " (bracketed only)" }
-            );
+        for row in corner_rows(&arch, &curve) {
+            println!("{row}");
         }
     }
 }

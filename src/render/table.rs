@@ -596,3 +596,39 @@ pub fn assess(arch: &Arch, a: &crate::assess::Assessment, dims: Option<Dimension
     }
     s
 }
+
+/// The header of [`corner_rows`].
+pub const CORNER_HEADER: &str =
+    "| α_s | μ | φ [°] | η | β_N | β_T | between |\n|---:|---:|---:|---:|---:|---:|:---|";
+
+/// The corners of a symmetric arch's limit curve as Markdown rows in the layout of a
+/// paper's results table: α_s, μ and φ = atan μ (degrees), η, the intrados hinge β_N and
+/// the sliding joint β_T in the right half (radians), the two modes the corner separates.
+pub fn corner_rows(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> Vec<String> {
+    use crate::contact::ContactKind;
+    let alpha = 0.0 - arch.beta_right();
+    curve
+        .corners
+        .iter()
+        .map(|c| {
+            let f = |v: Option<f64>| v.map_or("–".to_string(), |b| format!("{b:.8}"));
+            let (mu, phi) = if c.mu.is_finite() {
+                (
+                    format!("{:.8}", c.mu),
+                    format!("{:.4}", c.mu.atan().to_degrees()),
+                )
+            } else {
+                ("∞".to_string(), "90".to_string())
+            };
+            format!(
+                "| {alpha:.6} | {mu} | {phi} | {:.8} | {} | {} | {} / {}{} |",
+                c.eta,
+                f(right_half_angle(arch, &c.joints, |j| j.kind == ContactKind::HingeIntrados)),
+                f(right_half_angle(arch, &c.joints, |j| !j.kind.is_hinge())),
+                c.between[0].name(),
+                c.between[1].name(),
+                if c.exact { "" } else { " (bracketed only)" }
+            )
+        })
+        .collect()
+}

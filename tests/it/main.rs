@@ -13,4 +13,5 @@ mod layering;
 mod model;
 mod modes;
 mod plots;
+mod readme;
 mod reference;
