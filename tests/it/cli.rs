@@ -102,6 +102,19 @@ fn no_equilibrium_exit_1() {
     assert!(String::from_utf8_lossy(&out.stdout).contains("mu_ms = 0.309215"));
 }
 
+/// Without --mu-min, `curve` starts where its help says: at mu_ms (1 + 1e-6).
+#[test]
+fn curve_starts_just_above_mu_ms() {
+    for alpha in ["0", "1.0", "-0.5"] {
+        let (v, code) = json_of(&["curve", "--alpha", alpha, "--points", "3"]);
+        assert_eq!(code, 0);
+        let ms = v["mu_ms"].as_f64().unwrap();
+        let first = v["points"][0]["mu"].as_f64().unwrap();
+        assert!((first - ms * (1.0 + 1e-6)).abs() <= 1e-15 * ms, "{first} vs {ms}");
+        assert_eq!(v["points"][0]["status"], "ok", "alpha {alpha}: {}", v["points"][0]);
+    }
+}
+
 #[test]
 fn curve_rows() {
     let (v, code) = json_of(&[
