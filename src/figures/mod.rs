@@ -8,10 +8,9 @@
 pub mod margin_map;
 pub mod thrust_line;
 
-use crate::admissibility::{max_margin, Goal, WorkingSet};
 use crate::arch::{Arch, Radians};
 use crate::collapse_mode::CollapseMode;
-use crate::contact::{Contact, ContactKind};
+use crate::contact::Contact;
 use crate::kinematics::block_motions;
 use crate::limit::{solve, Outcome};
 use crate::limit_curve::{trace, LimitCurve};
@@ -238,17 +237,8 @@ fn safe_state(
     mu: f64,
     settings: &Settings,
 ) -> Result<(Reactions, Vec<Contact>), NoFigure> {
-    let mut ws = WorkingSet::initial(arch);
-    let m = max_margin(
-        arch,
-        eta,
-        mu,
-        ContactKind::active_at(mu),
-        &mut ws,
-        Goal::Optimise,
-        settings,
-    )
-    .map_err(|err| NoFigure(format!("margin LP failed: {err:?}")))?;
+    let m = crate::assess::safest_state(arch, eta, mu, settings)
+        .ok_or_else(|| NoFigure(format!("no admissible state at eta = {eta}")))?;
     let st = State {
         arch,
         eta,

@@ -110,8 +110,15 @@ fn curve_starts_just_above_mu_ms() {
         assert_eq!(code, 0);
         let ms = v["mu_ms"].as_f64().unwrap();
         let first = v["points"][0]["mu"].as_f64().unwrap();
-        assert!((first - ms * (1.0 + 1e-6)).abs() <= 1e-15 * ms, "{first} vs {ms}");
-        assert_eq!(v["points"][0]["status"], "ok", "alpha {alpha}: {}", v["points"][0]);
+        assert!(
+            (first - ms * (1.0 + 1e-6)).abs() <= 1e-15 * ms,
+            "{first} vs {ms}"
+        );
+        assert_eq!(
+            v["points"][0]["status"], "ok",
+            "alpha {alpha}: {}",
+            v["points"][0]
+        );
     }
 }
 
