@@ -25,6 +25,7 @@
 //! | [`search`] | §5 bracketing the continuum margin, candidate contacts |
 //! | [`limit`] | §5 η*(μ): bracket, enumerate, verify; the solution types |
 //! | [`friction`] | §6 the friction-only problem, μ_ms |
+//! | [`limit_states`] | §5 every limit state at one μ: the sweep of the admissible polytope in η |
 //! | [`limit_curve`] | §5 the η–μ curve: branches and exact corners; η*(μ) sampled over μ |
 //! | [`assess`] | a given thickness: factors of safety, μ_min(η), the safest state |
 //! | [`collapse_mode`] | §5 collapse-mode names from the pattern |
@@ -56,6 +57,7 @@ pub mod friction;
 pub mod kinematics;
 pub mod limit;
 pub mod limit_curve;
+pub mod limit_states;
 pub mod lp;
 pub mod mechanism;
 pub mod refine;

@@ -98,6 +98,9 @@ pub struct Settings {
     /// with μ). Not a "same joint" test within one state: that is `same_joint`.
     /// Default 0.05.
     pub track_angle: f64,
+    /// A contact is active at an event of the limit-state sweep when |φ| is below
+    /// `event_tol` × (1 + ‖x‖₁). Default 1e-9.
+    pub event_tol: f64,
     /// Joints added to the constraint-generation working set closer than this (radians)
     /// to one already there are not added again. Default 1e-10.
     pub working_set_gap: f64,
@@ -131,6 +134,7 @@ impl Default for Settings {
             curve_start_rel: 1e-5,
             track_angle: 0.05,
             working_set_gap: 1e-10,
+            event_tol: 1e-9,
             curve_samples: 16,
             lp_backend: LpBackend::Dense,
         }
@@ -185,6 +189,7 @@ impl Settings {
             ("settings.curve_start_rel", self.curve_start_rel),
             ("settings.track_angle", self.track_angle),
             ("settings.working_set_gap", self.working_set_gap),
+            ("settings.event_tol", self.event_tol),
         ] {
             unit(name, v)?;
         }

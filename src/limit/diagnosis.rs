@@ -11,6 +11,7 @@ pub(crate) fn unresolved(eta_lo: f64, eta_hi: f64, reason: String) -> Outcome {
         eta_lo,
         eta_hi,
         reason,
+        least_static: None,
     }
 }
 
@@ -30,6 +31,7 @@ pub(crate) fn no_equilibrium(arch: &Arch, mu: f64, settings: &Settings) -> Outco
                 fmt_value(mu),
                 settings.mu_ms_resolution
             ),
+            least_static: None,
         },
         Ok(Some(mu_ms)) => Outcome::NoEquilibrium {
             mu_ms: Some(mu_ms),

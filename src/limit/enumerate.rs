@@ -170,6 +170,7 @@ fn verify_group(
                     mu,
                     eta: r.eta,
                     eta_static: r.eta,
+                    x_static: r.x,
                     x: r.x,
                     pattern,
                     mode,

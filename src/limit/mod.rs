@@ -151,15 +151,17 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
     match second.limit {
         Some(mut ls) if ls.eta >= st.eta * (1.0 - settings.same_root) => {
             ls.eta_static = st.eta;
+            ls.x_static = st.x;
             Outcome::Limit(ls)
         }
-        _ => unresolved(
-            st.eta,
-            f64::INFINITY,
-            format!(
+        _ => Outcome::Unresolved {
+            eta_lo: st.eta,
+            eta_hi: f64::INFINITY,
+            reason: format!(
                 "the least admissible state (eta = {}) has no non-associative mechanism, and no enumerated pattern gave a limit state above it",
                 st.eta
             ),
-        ),
+            least_static: Some((st.eta, st.x)),
+        },
     }
 }

@@ -18,6 +18,8 @@ pub struct LimitState {
     /// state carries no mechanism without dilatancy (non-associative gap), in which
     /// case the limit state lies above it.
     pub eta_static: f64,
+    /// The least admissible state at `eta_static` (equal to `x` when there is no gap).
+    pub x_static: Reactions,
     /// Reactions x = (h, v, w) at the right springing.
     pub x: Reactions,
     /// The active pattern: every contact with φ = 0 at this state, by increasing β.
@@ -63,6 +65,9 @@ pub enum Outcome {
         eta_hi: f64,
         /// What failed.
         reason: String,
+        /// The least admissible state (η_s, x_s), when it was found (refined and verified)
+        /// but no limit state was.
+        least_static: Option<(f64, Reactions)>,
     },
 }
 

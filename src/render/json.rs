@@ -203,6 +203,7 @@ pub fn solve(sol: &Solution, explain: bool) -> SolveJson {
             eta_lo,
             eta_hi,
             reason,
+            ..
         } => {
             doc.eta_bracket = Some([*eta_lo, *eta_hi]);
             doc.message = Some(reason.clone());

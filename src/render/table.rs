@@ -182,6 +182,7 @@ pub fn solve(sol: &Solution, explain: bool) -> String {
             eta_lo,
             eta_hi,
             reason,
+            ..
         } => {
             let _ = writeln!(
                 s,

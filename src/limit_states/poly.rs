@@ -1,0 +1,157 @@
+//! Small real polynomials in η (degree ≤ ~8) and all their real roots in an interval.
+//!
+//! Along the path of a vertex of the admissible set, every activation function is a
+//! rational function of η whose numerator is a polynomial of degree ≤ 5 (formulation §3:
+//! the gradients are affine in η, the constant terms at most quadratic). Its roots are the
+//! events of the sweep, found here without sampling: the roots of p′ cut the interval into
+//! pieces on which p is monotone, and each piece holds at most one root (bisection, then
+//! the bracket is narrowed to adjacent floats).
+
+/// Coefficients, lowest order first.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Poly(pub Vec<f64>);
+
+impl Poly {
+    /// The constant polynomial `c`.
+    pub fn constant(c: f64) -> Poly {
+        Poly(vec![c])
+    }
+
+    /// a + b η.
+    pub fn linear(a: f64, b: f64) -> Poly {
+        Poly(vec![a, b])
+    }
+
+    /// Value at `t` (Horner).
+    pub fn eval(&self, t: f64) -> f64 {
+        self.0.iter().rev().fold(0.0, |acc, &c| acc * t + c)
+    }
+
+    /// Sum.
+    pub fn add(&self, o: &Poly) -> Poly {
+        let n = self.0.len().max(o.0.len());
+        Poly(
+            (0..n)
+                .map(|i| self.0.get(i).unwrap_or(&0.0) + o.0.get(i).unwrap_or(&0.0))
+                .collect(),
+        )
+    }
+
+    /// Difference.
+    pub fn sub(&self, o: &Poly) -> Poly {
+        self.add(&o.scale(-1.0))
+    }
+
+    /// Product.
+    pub fn mul(&self, o: &Poly) -> Poly {
+        if self.0.is_empty() || o.0.is_empty() {
+            return Poly(vec![]);
+        }
+        let mut c = vec![0.0; self.0.len() + o.0.len() - 1];
+        for (i, a) in self.0.iter().enumerate() {
+            for (j, b) in o.0.iter().enumerate() {
+                c[i + j] += a * b;
+            }
+        }
+        Poly(c)
+    }
+
+    /// `k` times the polynomial.
+    pub fn scale(&self, k: f64) -> Poly {
+        Poly(self.0.iter().map(|c| c * k).collect())
+    }
+
+    /// Derivative.
+    pub fn derivative(&self) -> Poly {
+        Poly(
+            self.0
+                .iter()
+                .enumerate()
+                .skip(1)
+                .map(|(i, c)| i as f64 * c)
+                .collect(),
+        )
+    }
+
+    /// Largest |coefficient|.
+    pub fn norm(&self) -> f64 {
+        self.0.iter().fold(0.0, |m, c| m.max(c.abs()))
+    }
+
+    /// The polynomial without trailing coefficients below `tol` × its norm (they are
+    /// rounding residue of cancelled terms).
+    pub fn trimmed(&self, tol: f64) -> Poly {
+        let floor = tol * self.norm();
+        let mut c = self.0.clone();
+        while c.last().is_some_and(|v| v.abs() <= floor) {
+            c.pop();
+        }
+        Poly(c)
+    }
+
+    /// Every real root in the closed interval [lo, hi], ascending, each once; roots of even
+    /// multiplicity (touching zero) are included. `None` when the polynomial vanishes
+    /// identically (all coefficients below `zero_tol` × `scale`).
+    pub fn roots_in(&self, lo: f64, hi: f64, zero_tol: f64, scale: f64) -> Option<Vec<f64>> {
+        let p = self.trimmed(1e-14);
+        if p.norm() <= zero_tol * scale {
+            return None;
+        }
+        Some(real_roots(&p, lo, hi))
+    }
+}
+
+fn real_roots(p: &Poly, lo: f64, hi: f64) -> Vec<f64> {
+    let deg = p.0.len().saturating_sub(1);
+    if deg == 0 {
+        return vec![];
+    }
+    if deg == 1 {
+        let r = -p.0[0] / p.0[1];
+        return if r >= lo && r <= hi { vec![r] } else { vec![] };
+    }
+    // critical points split [lo, hi] into monotone pieces
+    let mut cuts = vec![lo];
+    cuts.extend(real_roots(&p.derivative().trimmed(1e-14), lo, hi));
+    cuts.push(hi);
+    let scale = p.norm() * (1.0 + lo.abs().max(hi.abs())).powi(deg as i32);
+    let near_zero = |v: f64| v.abs() <= 1e-13 * scale;
+    let mut roots: Vec<f64> = Vec::new();
+    for w in cuts.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let (fa, fb) = (p.eval(a), p.eval(b));
+        if near_zero(fa) {
+            roots.push(a);
+        }
+        if fa.signum() != fb.signum() && !near_zero(fa) && !near_zero(fb) {
+            roots.push(bisect(p, a, b, fa));
+        }
+        if near_zero(fb) {
+            roots.push(b);
+        }
+    }
+    roots.sort_by(f64::total_cmp);
+    roots.dedup_by(|a, b| (*a - *b).abs() <= 1e-12 * (1.0 + a.abs()));
+    roots
+}
+
+/// The root of a monotone piece with a sign change, to adjacent floats.
+fn bisect(p: &Poly, mut a: f64, mut b: f64, mut fa: f64) -> f64 {
+    for _ in 0..200 {
+        let m = 0.5 * (a + b);
+        if m <= a || m >= b {
+            break;
+        }
+        let fm = p.eval(m);
+        if fm == 0.0 {
+            return m;
+        }
+        if fm.signum() == fa.signum() {
+            a = m;
+            fa = fm;
+        } else {
+            b = m;
+        }
+    }
+    0.5 * (a + b)
+}

@@ -1,0 +1,393 @@
+//! Every limit state of a discrete arch at one friction coefficient, by a sweep in η.
+//!
+//! At fixed μ and η the admissible states form a convex polytope
+//! P(η) = {x : φ_i(x, η) ≤ 0 for every contact i} in x = (h, v, w); it is empty below η_s,
+//! a point at η_s, and grows with η (admissibility is monotone). Its vertices are the points
+//! where three contacts are active. A limit state needs a mechanism on the active set, and
+//! a mechanism needs at least four active contacts unless the pattern is degenerate
+//! (formulation §4: B has rank 3, so an extreme mechanism has 4 rates, or 5 when L_e = 0;
+//! three suffice only when their columns are dependent, e.g. three collinear hinges).
+//! Four contacts meet at one point only at isolated η — exactly where the combinatorial
+//! structure of P(η) changes, a plane passing through a vertex. So the sweep follows every
+//! vertex of P(η) from η_s to the top, finds when the first other plane crosses it (the
+//! roots of a polynomial, [`super::poly`]), and at each such event checks the kinematic LP
+//! on the contacts active there; then it replaces the vertices through the event point by
+//! the ones that exist just after it (read off the linearisation at the point). Between
+//! events no vertex gains a fourth active contact, so no limit state is missed; at every
+//! event the whole active set is checked. The vertex set near η_s comes from the same
+//! linearisation at the least admissible state.
+//!
+//! Six box planes |x_k| ≤ [`BOX`] keep P bounded; an event on a box plane is not a limit
+//! state, and a least state on the box is an infimum (reactions without bound).
+
+use super::poly::Poly;
+use crate::arch::{Arch, JointLayout, ETA_TOP};
+use crate::contact::{Contact, ContactKind, Location};
+use crate::mechanism::{self, Mechanism};
+use crate::settings::Settings;
+use crate::state::State;
+use crate::statics::{actions, reaction_scale, Reactions};
+use itertools::Itertools;
+
+/// Half-width of the box on (h, v, w) that bounds the admissible set (units of γ t d r).
+pub const BOX: f64 = 1e7;
+
+/// At most this many events are processed (a safety net; never reached in tests).
+const MAX_EVENTS: usize = 200_000;
+
+/// One activation function at one joint, or a side of the box:
+/// φ(x, η) = g(η)·x + c(η), g affine and c at most quadratic in η.
+#[derive(Debug, Clone)]
+struct Plane {
+    contact: Option<Contact>,
+    g: [Poly; 3],
+    c: Poly,
+}
+
+impl Plane {
+    fn value(&self, x: &Reactions, eta: f64) -> f64 {
+        self.g[0].eval(eta) * x[0]
+            + self.g[1].eval(eta) * x[1]
+            + self.g[2].eval(eta) * x[2]
+            + self.c.eval(eta)
+    }
+    /// ∂φ/∂x (at η) and ∂φ/∂η (at x, η).
+    fn slopes(&self, x: &Reactions, eta: f64) -> ([f64; 3], f64) {
+        let g = [
+            self.g[0].eval(eta),
+            self.g[1].eval(eta),
+            self.g[2].eval(eta),
+        ];
+        let d = self.g[0].derivative().eval(eta) * x[0]
+            + self.g[1].derivative().eval(eta) * x[1]
+            + self.g[2].derivative().eval(eta) * x[2]
+            + self.c.derivative().eval(eta);
+        (g, d)
+    }
+}
+
+/// The planes of a discrete arch at friction μ, then the six box sides.
+fn planes(arch: &Arch, joints: &[f64], mu: f64) -> Vec<Plane> {
+    let mut out = Vec::new();
+    let last = joints.len() - 1;
+    for (j, &beta) in joints.iter().enumerate() {
+        let at = if j == 0 || j == last {
+            Location::Springing
+        } else {
+            Location::Interior
+        };
+        // coefficients from three thicknesses: exact for g (affine) and c (quadratic)
+        let a: Vec<_> = [0.0, 1.0, 2.0]
+            .iter()
+            .map(|&eta| actions(arch, eta, beta))
+            .collect();
+        for &kind in ContactKind::active_at(mu) {
+            let f: Vec<_> = (0..3)
+                .map(|i| a[i].activation(kind, 0, i as f64, mu))
+                .collect();
+            let quad = |p0: f64, p1: f64, p2: f64| {
+                let c2 = 0.5 * (p2 - 2.0 * p1 + p0);
+                Poly(vec![p0, p1 - p0 - c2, c2]).trimmed(1e-15)
+            };
+            out.push(Plane {
+                contact: Some(Contact {
+                    beta,
+                    kind,
+                    at,
+                    free: false,
+                }),
+                g: [0, 1, 2].map(|k| quad(f[0].g[k], f[1].g[k], f[2].g[k])),
+                c: quad(f[0].c, f[1].c, f[2].c),
+            });
+        }
+    }
+    for k in 0..3 {
+        for s in [1.0, -1.0] {
+            let mut g = [
+                Poly::constant(0.0),
+                Poly::constant(0.0),
+                Poly::constant(0.0),
+            ];
+            g[k] = Poly::constant(s);
+            out.push(Plane {
+                contact: None,
+                g,
+                c: Poly::constant(-BOX),
+            });
+        }
+    }
+    out
+}
+
+fn det3(m: [[&Poly; 3]; 3]) -> Poly {
+    let minor = |a: &Poly, b: &Poly, c: &Poly, d: &Poly| a.mul(d).sub(&b.mul(c));
+    m[0][0]
+        .mul(&minor(m[1][1], m[1][2], m[2][1], m[2][2]))
+        .sub(&m[0][1].mul(&minor(m[1][0], m[1][2], m[2][0], m[2][2])))
+        .add(&m[0][2].mul(&minor(m[1][0], m[1][1], m[2][0], m[2][1])))
+}
+
+/// A vertex of P(η): three planes and its path x(η) = num(η)/det(η) (Cramer's rule).
+#[derive(Debug, Clone)]
+struct Vertex {
+    planes: [usize; 3],
+    num: [Poly; 3],
+    det: Poly,
+}
+
+impl Vertex {
+    fn new(p: &[Plane], t: [usize; 3]) -> Vertex {
+        let rows = t.map(|i| &p[i]);
+        let neg_c: Vec<Poly> = rows.iter().map(|r| r.c.scale(-1.0)).collect();
+        let det = det3([0, 1, 2].map(|i| [&rows[i].g[0], &rows[i].g[1], &rows[i].g[2]]));
+        let num = [0, 1, 2].map(|k| {
+            det3([0, 1, 2].map(|i| {
+                let mut row = [&rows[i].g[0], &rows[i].g[1], &rows[i].g[2]];
+                row[k] = &neg_c[i];
+                row
+            }))
+        });
+        Vertex {
+            planes: t,
+            num,
+            det,
+        }
+    }
+    fn at(&self, eta: f64) -> Reactions {
+        let d = self.det.eval(eta);
+        [0, 1, 2].map(|k| self.num[k].eval(eta) / d)
+    }
+    /// φ_l(x(η), η) · det(η), a polynomial.
+    fn along(&self, l: &Plane) -> Poly {
+        (0..3).fold(l.c.mul(&self.det), |acc, k| {
+            acc.add(&l.g[k].mul(&self.num[k]))
+        })
+    }
+}
+
+/// What the sweep found.
+#[derive(Debug, Clone)]
+pub struct Sweep {
+    /// Limit states above η_s (η_s itself excluded), ascending in η.
+    pub states: Vec<SweptState>,
+    /// Events processed.
+    pub events: usize,
+    /// Why the sweep could not finish, if it could not.
+    pub failure: Option<String>,
+}
+
+/// A limit state found by the sweep.
+#[derive(Debug, Clone)]
+pub struct SweptState {
+    /// Thickness ratio.
+    pub eta: f64,
+    /// Reactions.
+    pub x: Reactions,
+    /// Every contact active there, by increasing β.
+    pub pattern: Vec<Contact>,
+    /// A mechanism on them.
+    pub mechanism: Mechanism,
+}
+
+struct Sweeper<'a> {
+    arch: &'a Arch,
+    mu: f64,
+    planes: Vec<Plane>,
+    settings: &'a Settings,
+    alive: Vec<(Vertex, Option<(f64, usize)>)>,
+    states: Vec<SweptState>,
+}
+
+impl Sweeper<'_> {
+    fn tol(&self, x: &Reactions) -> f64 {
+        self.settings.event_tol * reaction_scale(x)
+    }
+
+    /// Planes active at (x, η).
+    fn active(&self, x: &Reactions, eta: f64) -> Vec<usize> {
+        let tol = self.tol(x);
+        (0..self.planes.len())
+            .filter(|&i| self.planes[i].value(x, eta).abs() <= tol)
+            .collect()
+    }
+
+    /// The first η in (η0, top] at which another plane crosses the vertex (it stops being
+    /// feasible), or `None` when it survives to the top.
+    fn death(&self, v: &Vertex, eta0: f64) -> Option<(f64, usize)> {
+        let lo = eta0 + 1e-12 * (1.0 + eta0);
+        let top = ETA_TOP;
+        if lo >= top {
+            return None;
+        }
+        // the vertex exists until its determinant vanishes
+        let dscale = v.det.norm().max(f64::MIN_POSITIVE);
+        let hi = v
+            .det
+            .roots_in(lo, top, 1e-14, dscale)
+            .and_then(|r| r.first().copied())
+            .unwrap_or(top);
+        let mut first: Option<(f64, usize)> = None;
+        for (l, plane) in self.planes.iter().enumerate() {
+            if v.planes.contains(&l) {
+                continue;
+            }
+            let p = v.along(plane);
+            let scale = p.norm().max(f64::MIN_POSITIVE);
+            let Some(roots) = p.roots_in(lo, hi, 1e-13, scale) else {
+                continue; // through the vertex for every η: degenerate, never first
+            };
+            let bound = first.map_or(hi, |f| f.0);
+            for r in roots {
+                if r >= bound {
+                    break;
+                }
+                // a crossing when the plane is violated just after the root
+                let after = (r + 1e-9 * (1.0 + r)).min(hi);
+                if plane.value(&v.at(after), after) > 0.0 {
+                    first = Some((r, l));
+                    break;
+                }
+            }
+        }
+        first
+    }
+
+    /// Vertices that exist just after η at the point x where the planes `act` are active:
+    /// the triples of `act` whose path stays inside the others' half-spaces (first order).
+    fn vertices_after(&self, x: &Reactions, eta: f64, act: &[usize]) -> Vec<Vertex> {
+        let slopes: Vec<([f64; 3], f64)> =
+            act.iter().map(|&i| self.planes[i].slopes(x, eta)).collect();
+        let mut out = Vec::new();
+        for t in (0..act.len()).combinations(3) {
+            let m = nalgebra::Matrix3::from_fn(|r, c| slopes[t[r]].0[c]);
+            let scale = m.norm();
+            let Some(inv) = m.try_inverse() else { continue };
+            if m.determinant().abs() <= 1e-12 * scale * scale * scale {
+                continue;
+            }
+            // d/dη of φ_t = 0 along the path: G dx + ∂φ/∂η = 0
+            let rhs = nalgebra::Vector3::from_fn(|r, _| -slopes[t[r]].1);
+            let dx = inv * rhs;
+            let ok = (0..act.len()).filter(|i| !t.contains(i)).all(|i| {
+                let (g, d) = slopes[i];
+                let rate = g[0] * dx[0] + g[1] * dx[1] + g[2] * dx[2] + d;
+                rate <= self.settings.event_tol * (1.0 + dx.norm()) * (1.0 + d.abs())
+            });
+            if ok {
+                out.push(Vertex::new(&self.planes, [act[t[0]], act[t[1]], act[t[2]]]));
+            }
+        }
+        out
+    }
+
+    /// Checks the contacts active at (x, η) for a mechanism; records a limit state.
+    fn check(&mut self, x: Reactions, eta: f64, act: &[usize]) {
+        let mut pattern: Vec<Contact> =
+            act.iter().filter_map(|&i| self.planes[i].contact).collect();
+        if pattern.len() < 3 || act.len() > pattern.len() {
+            return; // too few contacts, or on the box (not a bounded state)
+        }
+        pattern.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.kind.cmp(&b.kind)));
+        let st = State {
+            arch: self.arch,
+            eta,
+            mu: self.mu,
+            x,
+        };
+        if let Ok(Some(mech)) = mechanism::find(&st, &pattern, self.settings) {
+            self.states.push(SweptState {
+                eta,
+                x,
+                pattern,
+                mechanism: mech,
+            });
+        }
+    }
+
+    fn push(&mut self, v: Vertex, eta: f64) {
+        let d = self.death(&v, eta);
+        self.alive.push((v, d));
+    }
+}
+
+/// Follows P(η) from the least admissible state (η_s, x_s) to the top and returns every
+/// limit state met on the way (η > η_s; the caller checks η_s itself). `joints` are the
+/// joint angles of a discrete arch.
+pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settings) -> Sweep {
+    let JointLayout::Discrete(joints) = arch.layout() else {
+        return Sweep {
+            states: vec![],
+            events: 0,
+            failure: Some("the sweep needs the joints of a discrete arch".into()),
+        };
+    };
+    let mut sw = Sweeper {
+        arch,
+        mu,
+        planes: planes(arch, joints, mu),
+        settings,
+        alive: Vec::new(),
+        states: Vec::new(),
+    };
+    let act = sw.active(&x_s, eta_s);
+    for v in sw.vertices_after(&x_s, eta_s, &act) {
+        sw.push(v, eta_s);
+    }
+    if sw.alive.is_empty() {
+        return Sweep {
+            states: vec![],
+            events: 0,
+            failure: Some(format!(
+                "no vertex of the admissible set found just above eta_s = {eta_s} ({} contacts active there)",
+                act.len()
+            )),
+        };
+    }
+    let mut events = 0;
+    loop {
+        let next = sw
+            .alive
+            .iter()
+            .enumerate()
+            .filter_map(|(i, (_, d))| d.map(|d| (i, d)))
+            .min_by(|a, b| a.1 .0.total_cmp(&b.1 .0));
+        let Some((i, (eta_e, killer))) = next else {
+            break;
+        };
+        events += 1;
+        if events > MAX_EVENTS {
+            return Sweep {
+                states: sw.states,
+                events,
+                failure: Some(format!("more than {MAX_EVENTS} events")),
+            };
+        }
+        let x_e = sw.alive[i].0.at(eta_e);
+        let mut act = sw.active(&x_e, eta_e);
+        for p in sw.alive[i].0.planes.into_iter().chain([killer]) {
+            if !act.contains(&p) {
+                act.push(p);
+            }
+        }
+        act.sort_unstable();
+        sw.check(x_e, eta_e, &act);
+        // the vertices through the event point end here
+        let tol = sw.tol(&x_e);
+        sw.alive.swap_remove(i);
+        sw.alive.retain(|(v, _)| {
+            let through = v.planes.iter().all(|p| act.contains(p));
+            let at = v.at(eta_e);
+            !(through
+                && (0..3).all(|k| (at[k] - x_e[k]).abs() <= tol.max(1e-9 * (1.0 + x_e[k].abs()))))
+        });
+        for v in sw.vertices_after(&x_e, eta_e, &act) {
+            sw.push(v, eta_e);
+        }
+    }
+    sw.states.sort_by(|a, b| a.eta.total_cmp(&b.eta));
+    Sweep {
+        states: sw.states,
+        events,
+        failure: None,
+    }
+}
