@@ -6,7 +6,7 @@
 //! (the mean of the extreme rays found), and, for a mirror-symmetric pattern of a
 //! symmetric arch, the symmetric representative.
 
-use crate::contact::Contact;
+use crate::contact::{Contact, ContactKind};
 use crate::kinematics::{column, compatibility_residual, mirror_indices, power};
 use crate::lp::{self, LpOutcome};
 use crate::settings::Settings;
@@ -37,14 +37,61 @@ pub struct Mechanism {
 
 /// Finds a mechanism on `contacts` (the active set of `state`), or `Ok(None)` when the
 /// kinematic LP is infeasible.
+///
+/// A joint may slide one way only (s⁺ s⁻ = 0, formulation §4): where both sliding
+/// contacts of a joint are active (a detached joint, N = 0), each sense is tried apart,
+/// so that no "mechanism" is made of s⁺ and s⁻ cancelling each other.
 pub fn find(
     state: &State,
     contacts: &[Contact],
     settings: &Settings,
 ) -> Result<Option<Mechanism>, LpOutcome> {
-    let (arch, eta, mu, x) = (state.arch, state.eta, state.mu, &state.x);
     let mut cs = contacts.to_vec();
     cs.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.kind.cmp(&b.kind)));
+    // joints carrying both senses of sliding
+    let both: Vec<f64> = cs
+        .iter()
+        .filter(|c| c.kind == ContactKind::SlidePlus)
+        .filter(|c| {
+            cs.iter().any(|d| {
+                d.kind == ContactKind::SlideMinus && (d.beta - c.beta).abs() <= settings.same_joint
+            })
+        })
+        .map(|c| c.beta)
+        .collect();
+    for choice in 0..(1usize << both.len()) {
+        let keep: Vec<Contact> = cs
+            .iter()
+            .copied()
+            .filter(|c| {
+                let Some(k) = both
+                    .iter()
+                    .position(|b| (b - c.beta).abs() <= settings.same_joint)
+                else {
+                    return true;
+                };
+                let plus = choice >> k & 1 == 0;
+                match c.kind {
+                    ContactKind::SlidePlus => plus,
+                    ContactKind::SlideMinus => !plus,
+                    _ => true,
+                }
+            })
+            .collect();
+        if let Some(m) = find_one_sense(state, keep, settings)? {
+            return Ok(Some(m));
+        }
+    }
+    Ok(None)
+}
+
+/// [`find`] on contacts with at most one sliding sense per joint (sorted by β).
+fn find_one_sense(
+    state: &State,
+    cs: Vec<Contact>,
+    settings: &Settings,
+) -> Result<Option<Mechanism>, LpOutcome> {
+    let (arch, eta, mu, x) = (state.arch, state.eta, state.mu, &state.x);
     let n = cs.len();
     let cols: Vec<[f64; 3]> = cs.iter().map(|c| column(c.kind, c.beta, eta)).collect();
     let p = power(arch, eta, &cs);
