@@ -26,7 +26,7 @@ use crate::contact::{Contact, ContactKind, Location};
 use crate::mechanism::{self, Mechanism};
 use crate::settings::Settings;
 use crate::state::State;
-use crate::statics::{actions, reaction_scale, Reactions};
+use crate::statics::{actions, magnitude, reaction_scale, Reactions};
 use itertools::Itertools;
 
 /// Half-width of the box on (h, v, w) that bounds the admissible set (units of γ t d r).
@@ -203,11 +203,18 @@ impl Sweeper<'_> {
         self.settings.event_tol * reaction_scale(x)
     }
 
-    /// Planes active at (x, η).
+    /// Planes active at (x, η): |φ| within `event_tol` of the plane's own magnitude
+    /// ([`magnitude`]: shallow arches have φ of order η).
     fn active(&self, x: &Reactions, eta: f64) -> Vec<usize> {
-        let tol = self.tol(x);
         (0..self.planes.len())
-            .filter(|&i| self.planes[i].value(x, eta).abs() <= tol)
+            .filter(|&i| {
+                let p = &self.planes[i];
+                let size = match p.contact {
+                    Some(c) => magnitude(c.kind, eta, self.mu, x, self.settings.magnitude_floor),
+                    None => BOX,
+                };
+                p.value(x, eta).abs() <= self.settings.event_tol * size
+            })
             .collect()
     }
 
