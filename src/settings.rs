@@ -98,6 +98,9 @@ pub struct Settings {
     /// with μ). Not a "same joint" test within one state: that is `same_joint`.
     /// Default 0.05.
     pub track_angle: f64,
+    /// A continuous arch's limit states are searched on discretisations of this many and
+    /// twice as many equal pieces (then refined on the continuum). Default 48.
+    pub sweep_pieces: usize,
     /// A contact is active at an event of the limit-state sweep when |φ| is below
     /// `event_tol` × (1 + ‖x‖₁). Default 1e-9.
     pub event_tol: f64,
@@ -135,6 +138,7 @@ impl Default for Settings {
             track_angle: 0.05,
             working_set_gap: 1e-10,
             event_tol: 1e-9,
+            sweep_pieces: 48,
             curve_samples: 16,
             lp_backend: LpBackend::Dense,
         }
@@ -204,6 +208,7 @@ impl Settings {
         count("settings.newton_max_iter", self.newton_max_iter, 1, 10_000)?;
         count("settings.max_rounds", self.max_rounds, 1, 10_000)?;
         count("settings.curve_samples", self.curve_samples, 2, 10_000)?;
+        count("settings.sweep_pieces", self.sweep_pieces, 4, 10_000)?;
         Ok(())
     }
 }

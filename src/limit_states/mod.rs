@@ -15,8 +15,13 @@ pub mod poly;
 pub mod sweep;
 
 use crate::arch::{Arch, InputError, JointLayout};
+use crate::contact::{Contact, ContactKind, Location};
 use crate::limit::{solve, Outcome};
+use crate::mechanism;
+use crate::refine::{solve_system, Unknowns};
 use crate::settings::Settings;
+use crate::state::State;
+use crate::statics::Reactions;
 pub use sweep::SweptState;
 
 /// Every limit state of a discrete arch at friction μ, above the least admissible state.
@@ -28,23 +33,23 @@ pub struct LimitStates {
     pub mechanism_at_eta_s: bool,
     /// Limit states strictly above η_s, ascending in η.
     pub above: Vec<SweptState>,
-    /// Events of the sweep.
+    /// Events of the sweep (of the finer discretisation for a continuous arch).
     pub events: usize,
+    /// How the set was established: `"sweep"` (discrete arch: complete by the sweep's
+    /// argument) or `"refined J/2J"` (continuous arch: the refined limit states of two
+    /// discretisations agree).
+    pub method: String,
 }
 
-/// Searches every limit state of `arch` (discrete) at friction `mu`. `Ok(None)` when the
-/// search does not apply (continuous arch, or no limit state at η_s to start from).
+/// Searches every limit state of `arch` at friction `mu` with η above the least admissible
+/// thickness η_s. The inner `Err` says why the search could not be completed (no least
+/// state to start from, a failed sweep, discretisations that disagree).
 pub fn search(
     arch: &Arch,
     mu: f64,
     settings: &Settings,
 ) -> Result<Result<LimitStates, String>, InputError> {
     let sol = solve(arch, mu, settings)?;
-    if !matches!(arch.layout(), JointLayout::Discrete(_)) {
-        return Ok(Err(
-            "the complete search is implemented for discrete arches".into(),
-        ));
-    }
     let (eta_s, x_s, mechanism_at_eta_s) = match sol.outcome {
         Outcome::Limit(ls) => (ls.eta_static, ls.x_static, ls.eta == ls.eta_static),
         Outcome::Unresolved {
@@ -53,6 +58,9 @@ pub fn search(
         } => (eta, x, false),
         _ => return Ok(Err("no least admissible state to start from".into())),
     };
+    if !matches!(arch.layout(), JointLayout::Discrete(_)) {
+        return Ok(continuous(arch, mu, eta_s, mechanism_at_eta_s, settings));
+    }
     let sw = sweep::sweep(arch, mu, eta_s, x_s, settings);
     if let Some(f) = sw.failure {
         return Ok(Err(f));
@@ -67,5 +75,168 @@ pub fn search(
         mechanism_at_eta_s,
         above,
         events: sw.events,
+        method: "sweep".into(),
     }))
+}
+
+/// A continuous arch: sweep two discretisations (J and 2J equal pieces), carry each discrete
+/// limit state over to the continuum (adjacent contacts of one kind merged into one
+/// tangency contact), refine it by Newton, verify it over the whole arch, and accept the set
+/// when both discretisations give the same one.
+fn continuous(
+    arch: &Arch,
+    mu: f64,
+    eta_s: f64,
+    mechanism_at_eta_s: bool,
+    settings: &Settings,
+) -> Result<LimitStates, String> {
+    let mut sets: Vec<(Vec<SweptState>, usize)> = Vec::new();
+    for pieces in [settings.sweep_pieces, 2 * settings.sweep_pieces] {
+        let (a, b) = (arch.beta_right(), arch.beta_left());
+        let joints: Vec<f64> = (0..=pieces)
+            .map(|i| {
+                if i == pieces {
+                    b
+                } else {
+                    a + (b - a) * i as f64 / pieces as f64
+                }
+            })
+            .collect();
+        let discrete = arch
+            .clone()
+            .with_joints(&joints)
+            .map_err(|e| e.to_string())?;
+        let start = match solve(&discrete, mu, settings)
+            .map_err(|e| e.to_string())?
+            .outcome
+        {
+            Outcome::Limit(ls) => (ls.eta_static, ls.x_static),
+            Outcome::Unresolved {
+                least_static: Some(s),
+                ..
+            } => s,
+            _ => {
+                return Err(format!(
+                    "the {pieces}-piece discretisation has no least state"
+                ))
+            }
+        };
+        let sw = sweep::sweep(&discrete, mu, start.0, start.1, settings);
+        if let Some(f) = sw.failure {
+            return Err(format!("{pieces} pieces: {f}"));
+        }
+        let h = (b - a) / pieces as f64;
+        let mut found: Vec<SweptState> = Vec::new();
+        for s in &sw.states {
+            let Some(r) = refine(arch, mu, s.eta, s.x, &merge(&s.pattern, h, a, b), settings)
+            else {
+                continue;
+            };
+            if r.eta > eta_s * (1.0 + settings.root_slack)
+                && !found
+                    .iter()
+                    .any(|f| (f.eta - r.eta).abs() <= settings.same_root.max(1e-10) * r.eta)
+            {
+                found.push(r);
+            }
+        }
+        found.sort_by(|p, q| p.eta.total_cmp(&q.eta));
+        sets.push((found, sw.events));
+    }
+    let (fine, events) = sets.pop().expect("two discretisations");
+    let (coarse, _) = sets.pop().expect("two discretisations");
+    let same = fine.len() == coarse.len()
+        && fine
+            .iter()
+            .zip(&coarse)
+            .all(|(p, q)| (p.eta - q.eta).abs() <= 1e-9 * p.eta);
+    if !same {
+        return Err(format!(
+            "the refined limit states of {} and {} pieces differ: {:?} vs {:?}",
+            settings.sweep_pieces,
+            2 * settings.sweep_pieces,
+            coarse.iter().map(|s| s.eta).collect::<Vec<_>>(),
+            fine.iter().map(|s| s.eta).collect::<Vec<_>>()
+        ));
+    }
+    Ok(LimitStates {
+        eta_s,
+        mechanism_at_eta_s,
+        above: fine,
+        events,
+        method: format!(
+            "refined {}/{}",
+            settings.sweep_pieces,
+            2 * settings.sweep_pieces
+        ),
+    })
+}
+
+/// A discrete pattern carried over to the continuum: contacts of one kind at adjacent
+/// joints (spacing `h`) become one contact; interior ones have a free angle (tangency).
+fn merge(pattern: &[Contact], h: f64, a: f64, b: f64) -> Vec<Contact> {
+    let mut by_kind: Vec<Contact> = pattern.to_vec();
+    by_kind.sort_by(|p, q| p.kind.cmp(&q.kind).then(p.beta.total_cmp(&q.beta)));
+    let mut out: Vec<Contact> = Vec::new();
+    let mut group: Vec<Contact> = Vec::new();
+    let flush = |group: &mut Vec<Contact>, out: &mut Vec<Contact>| {
+        if group.is_empty() {
+            return;
+        }
+        let springing = group.iter().find(|c| c.at == Location::Springing).copied();
+        out.push(springing.unwrap_or(Contact {
+            beta: group.iter().map(|c| c.beta).sum::<f64>() / group.len() as f64,
+            kind: group[0].kind,
+            at: Location::Interior,
+            free: true,
+        }));
+        group.clear();
+    };
+    for c in by_kind {
+        let joins = group
+            .last()
+            .is_some_and(|l| l.kind == c.kind && (c.beta - l.beta).abs() <= 1.5 * h);
+        if !joins {
+            flush(&mut group, &mut out);
+        }
+        group.push(c);
+    }
+    flush(&mut group, &mut out);
+    let _ = (a, b);
+    out.sort_by(|p, q| p.beta.total_cmp(&q.beta).then(p.kind.cmp(&q.kind)));
+    out
+}
+
+/// Newton on the continuous pattern from a discrete limit state, then the checks: the state
+/// admissible over the whole arch, a mechanism on its active contacts.
+fn refine(
+    arch: &Arch,
+    mu: f64,
+    eta: f64,
+    x: Reactions,
+    pattern: &[Contact],
+    settings: &Settings,
+) -> Option<SweptState> {
+    if pattern.len() < 4 {
+        return None;
+    }
+    let start = State { arch, eta, mu, x };
+    let r = solve_system(&start, pattern, Unknowns::Eta, settings).ok()?;
+    let st = State {
+        arch,
+        eta: r.eta,
+        mu,
+        x: r.x,
+    };
+    let v = st.verdict(ContactKind::active_at(mu), settings);
+    if v.worst > settings.adm_tol {
+        return None;
+    }
+    let mech = mechanism::find(&st, &v.active, settings).ok()??;
+    Some(SweptState {
+        eta: r.eta,
+        x: r.x,
+        pattern: v.active,
+        mechanism: mech,
+    })
 }

@@ -23,6 +23,7 @@
 use super::poly::Poly;
 use crate::arch::{Arch, JointLayout, ETA_TOP};
 use crate::contact::{Contact, ContactKind, Location};
+use crate::kinematics::column;
 use crate::mechanism::{self, Mechanism};
 use crate::settings::Settings;
 use crate::state::State;
@@ -275,10 +276,16 @@ impl Sweeper<'_> {
             // d/dη of φ_t = 0 along the path: G dx + ∂φ/∂η = 0
             let rhs = nalgebra::Vector3::from_fn(|r, _| -slopes[t[r]].1);
             let dx = inv * rhs;
+            // strictly inside the other planes just after η (a tie is not a vertex: the
+            // neighbouring triple of the tie carries the path)
             let ok = (0..act.len()).filter(|i| !t.contains(i)).all(|i| {
                 let (g, d) = slopes[i];
                 let rate = g[0] * dx[0] + g[1] * dx[1] + g[2] * dx[2] + d;
-                rate <= self.settings.event_tol * (1.0 + dx.norm()) * (1.0 + d.abs())
+                let size = g[0].abs() * dx[0].abs()
+                    + g[1].abs() * dx[1].abs()
+                    + g[2].abs() * dx[2].abs()
+                    + d.abs();
+                rate < -1e-12 * size
             });
             if ok {
                 out.push(Vertex::new(&self.planes, [act[t[0]], act[t[1]], act[t[2]]]));
@@ -311,9 +318,59 @@ impl Sweeper<'_> {
         }
     }
 
+    /// Adds a vertex born at η unless it is already there, or it would end at once (within
+    /// the resolution of η: a tie the first-order test could not break).
     fn push(&mut self, v: Vertex, eta: f64) {
+        let mut key = v.planes;
+        key.sort_unstable();
+        if self.alive.iter().any(|(w, _)| {
+            let mut k = w.planes;
+            k.sort_unstable();
+            k == key
+        }) {
+            return;
+        }
         let d = self.death(&v, eta);
+        if d.is_some_and(|(e, _)| e <= eta + 1e-9 * (1.0 + eta)) {
+            return;
+        }
+        self.three_contact_mechanisms(&v, eta, d.map_or(ETA_TOP, |d| d.0));
         self.alive.push((v, d));
+    }
+
+    /// Three active contacts carry a mechanism only where their compatibility columns are
+    /// dependent (e.g. a slide parallel to the line through two hinges): the roots of the
+    /// cubic det[c₁(η) c₂(η) c₃(η)] during the vertex's life, each checked.
+    fn three_contact_mechanisms(&mut self, v: &Vertex, from: f64, to: f64) {
+        let Some(cs) = v
+            .planes
+            .iter()
+            .map(|&i| self.planes[i].contact)
+            .collect::<Option<Vec<Contact>>>()
+        else {
+            return;
+        };
+        let col = |c: &Contact| {
+            let (c0, c1) = (column(c.kind, c.beta, 0.0), column(c.kind, c.beta, 1.0));
+            [0, 1, 2].map(|k| Poly::linear(c0[k], c1[k] - c0[k]))
+        };
+        let cols: Vec<[Poly; 3]> = cs.iter().map(col).collect();
+        let det = det3([0, 1, 2].map(|r| [&cols[0][r], &cols[1][r], &cols[2][r]]));
+        let scale = det.norm().max(f64::MIN_POSITIVE);
+        let roots = match det.roots_in(from, to, 1e-13, scale) {
+            Some(r) => r,
+            // dependent for every η (e.g. two slides at one joint): the sweep's events and
+            // the least state cover such sets
+            None => return,
+        };
+        for r in roots {
+            if r <= from * (1.0 + 1e-12) {
+                continue;
+            }
+            let x = v.at(r);
+            let act = self.active(&x, r);
+            self.check(x, r, &act);
+        }
     }
 }
 
@@ -370,6 +427,7 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
             };
         }
         let x_e = sw.alive[i].0.at(eta_e);
+
         let mut act = sw.active(&x_e, eta_e);
         for p in sw.alive[i].0.planes.into_iter().chain([killer]) {
             if !act.contains(&p) {
@@ -392,6 +450,14 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
         }
     }
     sw.states.sort_by(|a, b| a.eta.total_cmp(&b.eta));
+    sw.states.dedup_by(|a, b| {
+        (a.eta - b.eta).abs() <= 1e-12 * (1.0 + b.eta)
+            && a.pattern.len() == b.pattern.len()
+            && a.pattern
+                .iter()
+                .zip(&b.pattern)
+                .all(|(p, q)| p.kind == q.kind && p.beta == q.beta)
+    });
     Sweep {
         states: sw.states,
         events,

@@ -1,0 +1,172 @@
+//! The sweep of `limit_states` against the brute-force reference of `search_reference`
+//! (written independently from the formulation): on random small discrete arches, the
+//! same least admissible thickness, whether it carries a mechanism, and the same limit
+//! states above it (η to 1e-8 relative).
+
+use crate::search_reference::{brute_force, least_friction, random_joints, Rng};
+use arch_enum::limit_states::search;
+use arch_enum::{Arch, Settings, WeightModel};
+use std::f64::consts::PI;
+
+/// One arch compared; `Err` describes the disagreement.
+fn compare(br: f64, bl: f64, joints: &[f64], centroid: bool, mu: f64) -> Result<usize, String> {
+    let weight = if centroid {
+        WeightModel::Centroid
+    } else {
+        WeightModel::Centreline
+    };
+    let arch = Arch::new(br, bl, weight)
+        .unwrap()
+        .with_joints(joints)
+        .unwrap();
+    let reference = brute_force(br, bl, joints, centroid, mu);
+    let ref_above: Vec<f64> = reference
+        .states
+        .iter()
+        .map(|s| s.eta)
+        .filter(|&e| e > reference.eta_s * (1.0 + 1e-9))
+        .collect();
+    let found = search(&arch, mu, &Settings::default()).unwrap();
+    let r = match found {
+        Ok(r) => r,
+        Err(e) => {
+            return if reference.eta_s.is_finite() && reference.attained {
+                Err(format!(
+                    "search failed ({e}); reference eta_s {} states {ref_above:?}",
+                    reference.eta_s
+                ))
+            } else {
+                Ok(0)
+            }
+        }
+    };
+    let above: Vec<f64> = r.above.iter().map(|s| s.eta).collect();
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-8 * b.abs().max(1e-300);
+    if !close(r.eta_s, reference.eta_s) {
+        return Err(format!(
+            "eta_s {} vs reference {}",
+            r.eta_s, reference.eta_s
+        ));
+    }
+    if r.mechanism_at_eta_s != reference.mechanism_at_eta_s {
+        return Err(format!(
+            "mechanism at eta_s: {} vs reference {}",
+            r.mechanism_at_eta_s, reference.mechanism_at_eta_s
+        ));
+    }
+    if above.len() != ref_above.len() || !above.iter().zip(&ref_above).all(|(a, b)| close(*a, *b)) {
+        return Err(format!("above eta_s: {above:?} vs reference {ref_above:?}"));
+    }
+    Ok(above.len())
+}
+
+#[test]
+fn sweep_matches_brute_force_on_random_discrete_arches() {
+    let mut rng = Rng(0x51ee_7a11_0000_0001);
+    let mut failures = Vec::new();
+    let (mut cases, mut nonunique) = (0, 0);
+    // SWEEP_CASES=N runs more (the CI runs 40)
+    let count: usize = std::env::var("SWEEP_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(40);
+    for case in 0..count {
+        let n = 3 + (rng.next() * 5.0) as usize;
+        let br = -1.0 + 1.6 * rng.next();
+        let bl = PI - 1.0 + 1.6 * rng.next();
+        let joints = random_joints(&mut rng, br, bl, n);
+        let centroid = rng.next() < 0.3;
+        let ms = least_friction(br, bl, &joints);
+        let u = rng.next();
+        let mu = if u < 0.15 {
+            f64::INFINITY
+        } else {
+            ms * (1.0 + 1e-3) + 2.0 * u * u
+        };
+        cases += 1;
+        match compare(br, bl, &joints, centroid, mu) {
+            Ok(k) => nonunique += usize::from(k > 0),
+            Err(e) => failures.push(format!(
+                "case {case}: beta_r {br:?} beta_l {bl:?} joints {joints:?} centroid {centroid} mu {mu:?}: {e}"
+            )),
+        }
+    }
+    println!(
+        "{cases} arches, {nonunique} with limit states above eta_s, {} disagreements",
+        failures.len()
+    );
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// A symmetric horseshoe (α = 1, six voussoirs) on its mixed branch has a mirror pair of
+/// sliding limit states above η_s (found by the brute force): the paper's uniqueness for
+/// symmetric arches does not hold for this discrete one.
+#[test]
+fn symmetric_horseshoe_has_a_mirror_pair_above_eta_s() {
+    let arch = Arch::symmetric(1.0, WeightModel::Centreline)
+        .unwrap()
+        .with_blocks(6)
+        .unwrap();
+    let joints: Vec<f64> = (0..=6)
+        .map(|i| -1.0 + (PI + 2.0) * i as f64 / 6.0)
+        .collect();
+    let mu = 1.5856196872768473;
+    compare(-1.0, PI + 1.0, &joints, false, mu).unwrap();
+    let r = search(&arch, mu, &Settings::default()).unwrap().unwrap();
+    assert!((r.eta_s - 0.865444979502).abs() < 1e-11, "{}", r.eta_s);
+    assert!(r.mechanism_at_eta_s);
+    assert_eq!(
+        r.above.len(),
+        2,
+        "{:?}",
+        r.above.iter().map(|s| s.eta).collect::<Vec<_>>()
+    );
+    for s in &r.above {
+        assert!((s.eta - 0.905960101783).abs() < 1e-11, "{}", s.eta);
+    }
+}
+
+/// Three contacts whose compatibility columns become dependent at one η (a slide at the
+/// springing parallel to the line through two hinges) carry a mechanism there; the sweep
+/// checks the vertex paths for it (found by the 300-arch comparison).
+#[test]
+fn three_contact_limit_states() {
+    let joints = [
+        -0.5527213062436992,
+        0.5674960118886844,
+        1.699831711477676,
+        2.4944476355166096,
+        3.473194916317591,
+    ];
+    assert_eq!(
+        compare(joints[0], joints[4], &joints, false, 0.7840135591071118),
+        Ok(2)
+    );
+    let joints = [
+        -0.8267114543097964,
+        -0.12461322939120767,
+        0.9193745997441067,
+        2.3229218950128856,
+    ];
+    assert_eq!(
+        compare(joints[0], joints[3], &joints, false, 1.1444780404907526),
+        Ok(3)
+    );
+}
+
+/// No mechanism at η_s; the only limit state lies just above it (true-centroid weight).
+#[test]
+fn gap_above_eta_s_centroid() {
+    let joints = [
+        -0.568778191168789,
+        -0.056449719170271195,
+        0.30495434919698894,
+        0.7789335630266991,
+        1.1355877561557521,
+        1.8745647497900773,
+        2.5372897601358275,
+        3.1937014044750986,
+    ];
+    let k = compare(joints[0], joints[7], &joints, true, 0.7936030995826601).unwrap();
+    assert_eq!(k, 1);
+}
