@@ -89,6 +89,41 @@ impl Poly {
         Poly(c)
     }
 
+    /// Bounds of the polynomial over [lo, hi]: the least and largest of its Bernstein
+    /// coefficients there (the range lies between them).
+    pub fn bernstein_bounds(&self, lo: f64, hi: f64) -> (f64, f64) {
+        let n = self.0.len();
+        if n == 0 {
+            return (0.0, 0.0);
+        }
+        // coefficients in t ∈ [0, 1] with η = lo + (hi − lo) t (Horner-like shift)
+        let w = hi - lo;
+        let mut c = self.0.clone();
+        for k in 0..n {
+            for j in (k..n - 1).rev() {
+                c[j] += lo * c[j + 1];
+            }
+        }
+        let mut scale = 1.0;
+        for ck in c.iter_mut() {
+            *ck *= scale;
+            scale *= w;
+        }
+        // power basis in t → Bernstein: b_i = Σ_{k≤i} C(i,k)/C(n−1,k) a_k
+        let deg = n - 1;
+        let binom = |a: usize, b: usize| -> f64 {
+            (0..b).fold(1.0, |acc, i| acc * (a - i) as f64 / (i + 1) as f64)
+        };
+        let mut lo_b = f64::INFINITY;
+        let mut hi_b = f64::NEG_INFINITY;
+        for i in 0..=deg {
+            let b: f64 = (0..=i).map(|k| binom(i, k) / binom(deg, k) * c[k]).sum();
+            lo_b = lo_b.min(b);
+            hi_b = hi_b.max(b);
+        }
+        (lo_b, hi_b)
+    }
+
     /// Every real root in the closed interval [lo, hi], ascending, each once; roots of even
     /// multiplicity (touching zero) are included. `None` when the polynomial vanishes
     /// identically (all coefficients below `zero_tol` × `scale`).

@@ -170,3 +170,50 @@ fn gap_above_eta_s_centroid() {
     let k = compare(joints[0], joints[7], &joints, true, 0.7936030995826601).unwrap();
     assert_eq!(k, 1);
 }
+
+/// The polynomial toolkit of the sweep: every root found is a root, none is missed (against
+/// dense sampling), and the Bernstein bounds enclose the values on the interval.
+#[test]
+fn polynomial_roots_and_bounds() {
+    use arch_enum::limit_states::poly::Poly;
+    let mut rng = Rng(0x0b0b_5eed);
+    for _ in 0..300 {
+        let deg = 1 + (rng.next() * 5.0) as usize;
+        // roots placed on purpose, some inside [0, 2], times a random factor
+        let mut p = Poly::constant(1.0 + rng.next());
+        let mut inside = Vec::new();
+        for _ in 0..deg {
+            let r = -0.5 + 3.0 * rng.next();
+            if (0.0..=2.0).contains(&r) {
+                inside.push(r);
+            }
+            p = p.mul(&Poly::linear(-r, 1.0));
+        }
+        let roots = p.roots_in(0.0, 2.0, 1e-15, 1.0).unwrap();
+        inside.sort_by(f64::total_cmp);
+        inside.dedup_by(|a, b| (*a - *b).abs() < 1e-6);
+        for r in &inside {
+            assert!(
+                roots.iter().any(|f| (f - r).abs() < 1e-6),
+                "{r} not in {roots:?}"
+            );
+        }
+        for f in &roots {
+            assert!(
+                inside.iter().any(|r| (f - r).abs() < 1e-6),
+                "spurious {f}: {inside:?}"
+            );
+        }
+        let (lo, hi) = (0.3 * rng.next(), 0.5 + 1.5 * rng.next());
+        let (bmin, bmax) = p.bernstein_bounds(lo, hi);
+        for i in 0..=200 {
+            let t = lo + (hi - lo) * i as f64 / 200.0;
+            let v = p.eval(t);
+            let slack = 1e-12 * (1.0 + v.abs());
+            assert!(
+                v >= bmin - slack && v <= bmax + slack,
+                "{v} outside [{bmin}, {bmax}]"
+            );
+        }
+    }
+}
