@@ -98,6 +98,13 @@ pub struct Settings {
     /// with μ). Not a "same joint" test within one state: that is `same_joint`.
     /// Default 0.05.
     pub track_angle: f64,
+    /// The limit-state sweep is not run below this η_s (its roots in η are resolved to
+    /// about 1e-12 absolute). Default 1e-6.
+    pub sweep_min_eta: f64,
+    /// A least admissible state whose reactions exceed this multiple of 1 + span (the
+    /// arch's weight) is taken as unbounded: η_s is then an infimum, not attained.
+    /// Default 1e6.
+    pub unbounded_reactions: f64,
     /// A continuous arch's limit states are searched on discretisations of this many and
     /// twice as many equal pieces (then refined on the continuum). Default 48.
     pub sweep_pieces: usize,
@@ -139,6 +146,8 @@ impl Default for Settings {
             working_set_gap: 1e-10,
             event_tol: 1e-9,
             sweep_pieces: 48,
+            unbounded_reactions: 1e6,
+            sweep_min_eta: 1e-6,
             curve_samples: 16,
             lp_backend: LpBackend::Dense,
         }
@@ -194,6 +203,7 @@ impl Settings {
             ("settings.track_angle", self.track_angle),
             ("settings.working_set_gap", self.working_set_gap),
             ("settings.event_tol", self.event_tol),
+            ("settings.sweep_min_eta", self.sweep_min_eta),
         ] {
             unit(name, v)?;
         }
@@ -201,6 +211,13 @@ impl Settings {
             return Err(InputError::Inconsistent {
                 arg: "settings.newton_accept",
                 reason: "must be at least settings.newton_tol".into(),
+            });
+        }
+        if !(self.unbounded_reactions.is_finite() && self.unbounded_reactions >= 1.0) {
+            return Err(InputError::OutOfRange {
+                arg: "settings.unbounded_reactions",
+                value: fmt_value(self.unbounded_reactions),
+                range: "a finite number >= 1".into(),
             });
         }
         count("settings.scan_points", self.scan_points, 8, 100_000)?;

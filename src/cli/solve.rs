@@ -2,7 +2,8 @@
 
 use super::arch_args::ArchArgs;
 use super::{to_json, Exit, Io};
-use crate::limit::{solve, Outcome};
+use crate::limit::Outcome;
+use crate::limit_states::survey;
 use crate::render::{json, table};
 use crate::settings::Settings;
 use clap::Args;
@@ -23,14 +24,23 @@ pub(crate) struct SolveArgs {
 }
 
 pub(crate) fn run(a: SolveArgs, settings: &Settings, io: &mut Io) -> Exit {
-    let sol = match a.arch.build().and_then(|arch| solve(&arch, a.mu, settings)) {
+    let survey = match a
+        .arch
+        .build()
+        .and_then(|arch| survey(&arch, a.mu, settings))
+    {
         Ok(s) => s,
         Err(e) => return io.bad_input(&e),
     };
+    let sol = &survey.solution;
     if a.json {
-        io.out(&to_json(&json::solve(&sol, a.explain)));
+        io.out(&to_json(&json::solve(&survey, a.explain)));
     } else {
-        io.out(&table::solve(&sol, a.explain));
+        io.out(&table::solve(&survey, a.explain));
+    }
+    // decided: η_s exact and every limit state above it searched
+    if survey.states.is_ok() {
+        return Exit::Answered;
     }
     match &sol.outcome {
         Outcome::Limit(_) => {}

@@ -15,8 +15,9 @@ pub mod poly;
 pub mod sweep;
 
 use crate::arch::{Arch, InputError, JointLayout};
+use crate::collapse_mode::classify;
 use crate::contact::{Contact, ContactKind, Location};
-use crate::limit::{solve, Outcome};
+use crate::limit::{solve, Outcome, Solution};
 use crate::mechanism;
 use crate::refine::{solve_system, Unknowns};
 use crate::settings::Settings;
@@ -29,6 +30,10 @@ pub use sweep::SweptState;
 pub struct LimitStates {
     /// η_s(μ), the least η with a statically admissible state.
     pub eta_s: f64,
+    /// Whether η_s is attained by a bounded state: false when the least state's reactions
+    /// exceed `settings.unbounded_reactions` × (1 + span) (η_s is then an infimum
+    /// approached as the reactions grow without bound).
+    pub attained: bool,
     /// Whether the least admissible state carries a non-associative mechanism.
     pub mechanism_at_eta_s: bool,
     /// Limit states strictly above η_s, ascending in η.
@@ -41,6 +46,32 @@ pub struct LimitStates {
     pub method: String,
 }
 
+/// Everything `solve` reports at one μ: the thickness solution (η_s, the least limit
+/// state found near it) and the search for every limit state above η_s.
+#[derive(Debug, Clone)]
+pub struct Survey {
+    /// The solution of the thickness problem.
+    pub solution: Solution,
+    /// Every limit state above η_s, or why the search could not be completed.
+    pub states: Result<LimitStates, String>,
+}
+
+impl Survey {
+    /// Whether exactly one limit state exists with η in [η_s, 2) (`None`: the search was
+    /// not completed).
+    pub fn unique(&self) -> Option<bool> {
+        let s = self.states.as_ref().ok()?;
+        Some(usize::from(s.mechanism_at_eta_s) + s.above.len() == 1)
+    }
+}
+
+/// [`solve`] and [`search`] together.
+pub fn survey(arch: &Arch, mu: f64, settings: &Settings) -> Result<Survey, InputError> {
+    let solution = solve(arch, mu, settings)?;
+    let states = search_from(&solution, settings);
+    Ok(Survey { solution, states })
+}
+
 /// Searches every limit state of `arch` at friction `mu` with η above the least admissible
 /// thickness η_s. The inner `Err` says why the search could not be completed (no least
 /// state to start from, a failed sweep, discretisations that disagree).
@@ -49,34 +80,46 @@ pub fn search(
     mu: f64,
     settings: &Settings,
 ) -> Result<Result<LimitStates, String>, InputError> {
-    let sol = solve(arch, mu, settings)?;
-    let (eta_s, x_s, mechanism_at_eta_s) = match sol.outcome {
+    Ok(search_from(&solve(arch, mu, settings)?, settings))
+}
+
+fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, String> {
+    let (arch, mu) = (&sol.arch, sol.mu);
+    let (eta_s, x_s, mechanism_at_eta_s) = match &sol.outcome {
         Outcome::Limit(ls) => (ls.eta_static, ls.x_static, ls.eta == ls.eta_static),
         Outcome::Unresolved {
             least_static: Some((eta, x)),
             ..
-        } => (eta, x, false),
-        _ => return Ok(Err("no least admissible state to start from".into())),
+        } => (*eta, *x, false),
+        _ => return Err("no least admissible state to start from".into()),
     };
+    if eta_s < settings.sweep_min_eta {
+        return Err(format!(
+            "eta_s = {eta_s:e} is below {:e}, where the sweep's polynomial roots are not resolved",
+            settings.sweep_min_eta
+        ));
+    }
     if !matches!(arch.layout(), JointLayout::Discrete(_)) {
-        return Ok(continuous(arch, mu, eta_s, mechanism_at_eta_s, settings));
+        let attained = bounded(arch, &x_s, settings);
+        return continuous(arch, mu, eta_s, attained, mechanism_at_eta_s, settings);
     }
     let sw = sweep::sweep(arch, mu, eta_s, x_s, settings);
     if let Some(f) = sw.failure {
-        return Ok(Err(f));
+        return Err(f);
     }
     let above = sw
         .states
         .into_iter()
         .filter(|s| s.eta > eta_s * (1.0 + settings.root_slack))
         .collect();
-    Ok(Ok(LimitStates {
+    Ok(LimitStates {
         eta_s,
+        attained: bounded(arch, &x_s, settings),
         mechanism_at_eta_s,
         above,
         events: sw.events,
         method: "sweep".into(),
-    }))
+    })
 }
 
 /// A continuous arch: sweep two discretisations (J and 2J equal pieces), carry each discrete
@@ -87,6 +130,7 @@ fn continuous(
     arch: &Arch,
     mu: f64,
     eta_s: f64,
+    attained: bool,
     mechanism_at_eta_s: bool,
     settings: &Settings,
 ) -> Result<LimitStates, String> {
@@ -133,9 +177,7 @@ fn continuous(
                 continue;
             };
             if r.eta > eta_s * (1.0 + settings.root_slack)
-                && !found
-                    .iter()
-                    .any(|f| (f.eta - r.eta).abs() <= settings.same_root.max(1e-10) * r.eta)
+                && !found.iter().any(|f| same_state(f, &r))
             {
                 found.push(r);
             }
@@ -145,11 +187,8 @@ fn continuous(
     }
     let (fine, events) = sets.pop().expect("two discretisations");
     let (coarse, _) = sets.pop().expect("two discretisations");
-    let same = fine.len() == coarse.len()
-        && fine
-            .iter()
-            .zip(&coarse)
-            .all(|(p, q)| (p.eta - q.eta).abs() <= 1e-9 * p.eta);
+    let same =
+        fine.len() == coarse.len() && fine.iter().all(|p| coarse.iter().any(|q| same_state(p, q)));
     if !same {
         return Err(format!(
             "the refined limit states of {} and {} pieces differ: {:?} vs {:?}",
@@ -161,6 +200,7 @@ fn continuous(
     }
     Ok(LimitStates {
         eta_s,
+        attained,
         mechanism_at_eta_s,
         above: fine,
         events,
@@ -170,6 +210,23 @@ fn continuous(
             2 * settings.sweep_pieces
         ),
     })
+}
+
+/// Two refined limit states are the same: equal η (to 1e-9) and the same contacts (kinds,
+/// and angles to 1e-6). Mirror images share η but not contacts.
+fn same_state(p: &SweptState, q: &SweptState) -> bool {
+    (p.eta - q.eta).abs() <= 1e-9 * p.eta
+        && p.pattern.len() == q.pattern.len()
+        && p.pattern
+            .iter()
+            .zip(&q.pattern)
+            .all(|(a, b)| a.kind == b.kind && (a.beta - b.beta).abs() <= 1e-6)
+}
+
+/// Whether a least state is a bounded one (see [`LimitStates::attained`]).
+fn bounded(arch: &Arch, x: &Reactions, settings: &Settings) -> bool {
+    x.iter()
+        .all(|v| v.abs() <= settings.unbounded_reactions * (1.0 + arch.span()))
 }
 
 /// A discrete pattern carried over to the continuum: contacts of one kind at adjacent
@@ -233,10 +290,16 @@ fn refine(
         return None;
     }
     let mech = mechanism::find(&st, &v.active, settings).ok()??;
+    let mode = classify(
+        &v.active,
+        0.5 * (arch.beta_right() + arch.beta_left()),
+        settings.same_joint,
+    );
     Some(SweptState {
         eta: r.eta,
         x: r.x,
         pattern: v.active,
+        mode,
         mechanism: mech,
     })
 }

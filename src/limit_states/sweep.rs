@@ -22,6 +22,7 @@
 
 use super::poly::Poly;
 use crate::arch::{Arch, JointLayout, ETA_TOP};
+use crate::collapse_mode::{classify, CollapseMode};
 use crate::contact::{Contact, ContactKind, Location};
 use crate::kinematics::column;
 use crate::mechanism::{self, Mechanism};
@@ -186,6 +187,8 @@ pub struct SweptState {
     pub x: Reactions,
     /// Every contact active there, by increasing β.
     pub pattern: Vec<Contact>,
+    /// The collapse mode named from the pattern.
+    pub mode: CollapseMode,
     /// A mechanism on them.
     pub mechanism: Mechanism,
 }
@@ -317,10 +320,16 @@ impl Sweeper<'_> {
             x,
         };
         if let Ok(Some(mech)) = mechanism::find(&st, &pattern, self.settings) {
+            let mode = classify(
+                &pattern,
+                0.5 * (self.arch.beta_right() + self.arch.beta_left()),
+                self.settings.same_joint,
+            );
             self.states.push(SweptState {
                 eta,
                 x,
                 pattern,
+                mode,
                 mechanism: mech,
             });
         }

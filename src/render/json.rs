@@ -3,8 +3,9 @@
 
 use crate::arch::{Arch, JointLayout};
 use crate::contact::Contact;
-use crate::limit::{Candidate, LimitState, Outcome, Solution};
+use crate::limit::{Candidate, LimitState, Outcome};
 use crate::limit_curve::{CurvePoint, CurveStatus};
+use crate::limit_states::Survey;
 use serde::Serialize;
 
 /// The `version` of every JSON document the command line prints: bumped on a breaking
@@ -113,6 +114,68 @@ pub struct SolveJson {
     message: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     candidates: Option<Vec<CandidateJson>>,
+    /// Whether η_s is attained by a bounded state.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    attained: Option<bool>,
+    /// Whether the least admissible state carries a non-associative mechanism.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    mechanism_at_eta: Option<bool>,
+    /// Whether exactly one limit state has η in [η_s, 2) (`null`: search not completed).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    unique: Option<Option<bool>>,
+    /// Every limit state with η in [η_s, 2), ascending.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    limit_states: Option<Vec<LimitStateJson>>,
+    /// How the limit states were searched.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    search: Option<SearchJson>,
+}
+
+#[derive(Debug, Serialize)]
+struct LimitStateJson {
+    eta: f64,
+    mode: &'static str,
+    pattern: Vec<Contact>,
+    reactions: Reactions,
+    mechanism: MechanismJson,
+}
+
+#[derive(Debug, Serialize)]
+struct SearchJson {
+    complete: bool,
+    method: Option<String>,
+    events: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    reason: Option<String>,
+}
+
+fn mechanism_json(m: &crate::mechanism::Mechanism) -> MechanismJson {
+    MechanismJson {
+        rates: m
+            .contacts
+            .iter()
+            .zip(&m.rates)
+            .map(|(c, &rate)| Rate {
+                beta: c.beta,
+                kind: c.kind.name(),
+                rate,
+            })
+            .collect(),
+        dof: m.dof,
+        power: m.power,
+        dissipation: m.dissipation,
+        symmetric: m.symmetric,
+        compatibility_residual: m.compatibility,
+        complementarity_residual: m.complementarity,
+    }
+}
+
+fn reactions(x: &[f64; 3]) -> Reactions {
+    Reactions {
+        h: x[0],
+        v: x[1],
+        w: x[2],
+    }
 }
 
 /// The status word of an outcome.
@@ -129,29 +192,8 @@ fn limit_parts(ls: &LimitState) -> (Vec<Contact>, Reactions, MechanismJson, Chec
     let m = &ls.mechanism;
     (
         ls.pattern.clone(),
-        Reactions {
-            h: ls.x[0],
-            v: ls.x[1],
-            w: ls.x[2],
-        },
-        MechanismJson {
-            rates: m
-                .contacts
-                .iter()
-                .zip(&m.rates)
-                .map(|(c, &rate)| Rate {
-                    beta: c.beta,
-                    kind: c.kind.name(),
-                    rate,
-                })
-                .collect(),
-            dof: m.dof,
-            power: m.power,
-            dissipation: m.dissipation,
-            symmetric: m.symmetric,
-            compatibility_residual: m.compatibility,
-            complementarity_residual: m.complementarity,
-        },
+        reactions(&ls.x),
+        mechanism_json(m),
         Checks {
             eta_static: ls.eta_static,
             newton_residual: ls.newton_residual,
@@ -161,8 +203,10 @@ fn limit_parts(ls: &LimitState) -> (Vec<Contact>, Reactions, MechanismJson, Chec
     )
 }
 
-/// Builds the `solve --json` document; `explain` adds the enumeration log.
-pub fn solve(sol: &Solution, explain: bool) -> SolveJson {
+/// Builds the `solve --json` document from the solution and the search for every limit
+/// state; `explain` adds the enumeration log.
+pub fn solve(survey: &Survey, explain: bool) -> SolveJson {
+    let sol = &survey.solution;
     let mut doc = SolveJson {
         version: JSON_VERSION,
         status: status(&sol.outcome),
@@ -180,6 +224,11 @@ pub fn solve(sol: &Solution, explain: bool) -> SolveJson {
         eta_bracket: None,
         message: None,
         candidates: explain.then(|| candidates(&sol.candidates)),
+        attained: None,
+        mechanism_at_eta: None,
+        unique: None,
+        limit_states: None,
+        search: None,
     };
     match &sol.outcome {
         Outcome::Limit(ls) => {
@@ -207,6 +256,65 @@ pub fn solve(sol: &Solution, explain: bool) -> SolveJson {
         } => {
             doc.eta_bracket = Some([*eta_lo, *eta_hi]);
             doc.message = Some(reason.clone());
+        }
+    }
+    match &survey.states {
+        Ok(s) => {
+            // η_s is known exactly and every limit state above it was searched: a decided
+            // answer even when the least state carries no mechanism
+            doc.status = "ok";
+            doc.message = None;
+            doc.eta_bracket = None;
+            doc.eta = Some(s.eta_s);
+            doc.attained = Some(s.attained);
+            doc.mechanism_at_eta = Some(s.mechanism_at_eta_s);
+            doc.unique = Some(survey.unique());
+            let mut all = Vec::new();
+            if let (true, Outcome::Limit(ls)) = (s.mechanism_at_eta_s, &sol.outcome) {
+                all.push(LimitStateJson {
+                    eta: ls.eta,
+                    mode: ls.mode.name(),
+                    pattern: ls.pattern.clone(),
+                    reactions: reactions(&ls.x),
+                    mechanism: mechanism_json(&ls.mechanism),
+                });
+            }
+            all.extend(s.above.iter().map(|a| LimitStateJson {
+                eta: a.eta,
+                mode: a.mode.name(),
+                pattern: a.pattern.clone(),
+                reactions: reactions(&a.x),
+                mechanism: mechanism_json(&a.mechanism),
+            }));
+            // the top-level mode, pattern, reactions and mechanism are the least limit
+            // state's (none when there is none)
+            if !s.mechanism_at_eta_s {
+                let least = s.above.first();
+                doc.mode = least.map(|a| a.mode.name());
+                doc.mode_standard = least.map(|a| a.mode.is_standard());
+                doc.pattern = least.map(|a| a.pattern.clone());
+                doc.reactions = least.map(|a| reactions(&a.x));
+                doc.mechanism = least.map(|a| mechanism_json(&a.mechanism));
+                doc.checks = None;
+            }
+            doc.limit_states = Some(all);
+            doc.search = Some(SearchJson {
+                complete: true,
+                method: Some(s.method.clone()),
+                events: Some(s.events),
+                reason: None,
+            });
+        }
+        Err(reason) => {
+            doc.search = Some(SearchJson {
+                complete: false,
+                method: None,
+                events: None,
+                reason: Some(reason.clone()),
+            });
+            if let Outcome::Limit(_) = &sol.outcome {
+                doc.unique = Some(None);
+            }
         }
     }
     doc

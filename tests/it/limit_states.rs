@@ -217,3 +217,50 @@ fn polynomial_roots_and_bounds() {
         }
     }
 }
+
+/// The unsymmetric arch: η_s is monotone in μ (the old "widened" answer was not),
+/// and at μ = 0.96 the least admissible state carries no mechanism while one limit state
+/// lies above it.
+#[test]
+fn unsymmetric_gap_is_decided() {
+    let arch = Arch::new(-0.67, 2.72, WeightModel::Centreline).unwrap();
+    let s = Settings::default();
+    let etas: Vec<f64> = [0.94, 0.96, 1.0]
+        .iter()
+        .map(|&mu| search(&arch, mu, &s).unwrap().unwrap().eta_s)
+        .collect();
+    assert!(etas[0] > etas[1] && etas[1] > etas[2], "{etas:?}");
+    let r = search(&arch, 0.96, &s).unwrap().unwrap();
+    assert!(!r.mechanism_at_eta_s);
+    assert_eq!(r.above.len(), 1);
+    assert!(
+        r.above[0].eta > r.eta_s * 1.1,
+        "{} vs {}",
+        r.above[0].eta,
+        r.eta_s
+    );
+}
+
+/// A continuous symmetric arch (α = 0.8) just above μ_ms: a mirror pair of unsymmetric
+/// limit states above η_s, found by both discretisations and refined on the continuum.
+#[test]
+fn continuous_symmetric_mirror_pair() {
+    let arch = Arch::symmetric(0.8, WeightModel::Centreline).unwrap();
+    let r = search(&arch, 1.1540692474221415, &Settings::default())
+        .unwrap()
+        .unwrap();
+    assert!(r.mechanism_at_eta_s);
+    assert_eq!(r.above.len(), 2);
+    let (a, b) = (&r.above[0], &r.above[1]);
+    assert!((a.eta - b.eta).abs() < 1e-10 * a.eta);
+    // mirror images: β ↦ π − β, S+ ↔ S−
+    for c in &a.pattern {
+        assert!(
+            b.pattern
+                .iter()
+                .any(|d| d.kind == c.kind.mirrored() && (d.beta - (PI - c.beta)).abs() < 1e-7),
+            "{c:?} has no mirror in {:?}",
+            b.pattern
+        );
+    }
+}
