@@ -21,6 +21,7 @@
 //! state, and a least state on the box is an infimum (reactions without bound).
 
 use super::poly::Poly;
+use crate::admissibility::{max_margin, Goal, WorkingSet};
 use crate::arch::{Arch, JointLayout, ETA_TOP};
 use crate::collapse_mode::{classify, CollapseMode};
 use crate::contact::{Contact, ContactKind, Location};
@@ -305,6 +306,101 @@ impl Sweeper<'_> {
         out
     }
 
+    /// The vertices of P(η) by a walk on its vertex graph from `start` (a point of P(η)):
+    /// shoot a ray to a facet, slide within it to an edge, along the edge to a vertex; then
+    /// from each vertex along each of its three edges to the next plane (a ratio test over
+    /// every plane). The vertex graph of a bounded polytope is connected, so the walk visits
+    /// every vertex. Used where the least state is degenerate (its active planes' normals
+    /// dependent, so that P(η_s) is not a point) and the first-order start does not apply.
+    fn vertices_by_walk(&self, eta: f64, start: Reactions) -> Vec<[usize; 3]> {
+        let g: Vec<[f64; 3]> = self
+            .planes
+            .iter()
+            .map(|p| [p.g[0].eval(eta), p.g[1].eval(eta), p.g[2].eval(eta)])
+            .collect();
+        let phi = |x: &Reactions, i: usize| self.planes[i].value(x, eta);
+        let dot = |a: &[f64; 3], b: &[f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        let cross = |a: &[f64; 3], b: &[f64; 3]| {
+            [
+                a[1] * b[2] - a[2] * b[1],
+                a[2] * b[0] - a[0] * b[2],
+                a[0] * b[1] - a[1] * b[0],
+            ]
+        };
+        // the first plane hit from x along d, skipping `skip`
+        let shoot = |x: &Reactions, d: &[f64; 3], skip: &[usize]| -> Option<(usize, f64)> {
+            let mut best: Option<(usize, f64)> = None;
+            for i in 0..self.planes.len() {
+                if skip.contains(&i) {
+                    continue;
+                }
+                let rate = dot(&g[i], d);
+                if rate <= 1e-14 * (1.0 + d.iter().map(|v| v.abs()).sum::<f64>()) {
+                    continue;
+                }
+                let t = (-phi(x, i)).max(0.0) / rate;
+                if best.is_none_or(|(_, bt)| t < bt) {
+                    best = Some((i, t));
+                }
+            }
+            best
+        };
+        let step = |x: &Reactions, d: &[f64; 3], t: f64| {
+            [x[0] + t * d[0], x[1] + t * d[1], x[2] + t * d[2]]
+        };
+        let d1 = [0.6, 0.3, 0.7416];
+        let Some((p1, t1)) = shoot(&start, &d1, &[]) else {
+            return vec![];
+        };
+        let x1 = step(&start, &d1, t1);
+        let n1 = dot(&g[p1], &g[p1]);
+        let u = [0.31, -0.77, 0.55];
+        let k = dot(&u, &g[p1]) / n1;
+        let d2 = [
+            u[0] - k * g[p1][0],
+            u[1] - k * g[p1][1],
+            u[2] - k * g[p1][2],
+        ];
+        let Some((p2, t2)) = shoot(&x1, &d2, &[p1]) else {
+            return vec![];
+        };
+        let x2 = step(&x1, &d2, t2);
+        let d3 = cross(&g[p1], &g[p2]);
+        let Some((p3, _)) =
+            shoot(&x2, &d3, &[p1, p2]).or_else(|| shoot(&x2, &[-d3[0], -d3[1], -d3[2]], &[p1, p2]))
+        else {
+            return vec![];
+        };
+        let mut seen: Vec<[usize; 3]> = Vec::new();
+        let mut queue = vec![[p1, p2, p3]];
+        while let Some(mut t) = queue.pop() {
+            t.sort_unstable();
+            if seen.contains(&t) || seen.len() > 20 * self.planes.len() {
+                continue;
+            }
+            seen.push(t);
+            let v = Vertex::new(&self.planes, t);
+            let x = v.at(eta);
+            let tol = 1e-9 * reaction_scale(&x);
+            if !x.iter().all(|c| c.is_finite())
+                || (0..self.planes.len()).any(|i| !t.contains(&i) && phi(&x, i) > tol)
+            {
+                continue; // not a vertex of P(η): do not walk on from it
+            }
+            for drop in 0..3 {
+                let (p, q, k) = (t[(drop + 1) % 3], t[(drop + 2) % 3], t[drop]);
+                let mut d = cross(&g[p], &g[q]);
+                if dot(&g[k], &d) > 0.0 {
+                    d = [-d[0], -d[1], -d[2]];
+                }
+                if let Some((r, _)) = shoot(&x, &d, &[p, q, k]) {
+                    queue.push([p, q, r]);
+                }
+            }
+        }
+        seen
+    }
+
     /// Checks the contacts active at (x, η) for a mechanism; records a limit state.
     fn check(&mut self, x: Reactions, eta: f64, act: &[usize]) {
         let mut pattern: Vec<Contact> =
@@ -413,6 +509,35 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
     let act = sw.active(&x_s, eta_s);
     for v in sw.vertices_after(&x_s, eta_s, &act) {
         sw.push(v, eta_s);
+    }
+    if sw.alive.is_empty() {
+        // a degenerate least state: walk the vertex graph just above η_s instead (limit
+        // states in (η_s, η₀] would be missed; η₀ − η_s is at the resolution of η)
+        let eta0 = eta_s * (1.0 + 1e-6);
+        // start from the state of largest margin at η₀ (inside P(η₀))
+        let mut ws = WorkingSet::initial(arch);
+        let centre = max_margin(
+            arch,
+            eta0,
+            mu,
+            ContactKind::active_at(mu),
+            &mut ws,
+            Goal::Optimise,
+            settings,
+        )
+        .map_or(x_s, |m| m.x);
+        for t in sw.vertices_by_walk(eta0, centre) {
+            let v = Vertex::new(&sw.planes, t);
+            let x = v.at(eta0);
+            let feasible = sw
+                .planes
+                .iter()
+                .enumerate()
+                .all(|(i, p)| t.contains(&i) || p.value(&x, eta0) <= 1e-9 * reaction_scale(&x));
+            if feasible {
+                sw.push(v, eta0);
+            }
+        }
     }
     if sw.alive.is_empty() {
         return Sweep {
