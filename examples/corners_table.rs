@@ -21,7 +21,18 @@ fn main() {
         .map(|a| a.parse().expect("openings in radians"))
         .collect();
     let openings = if args.is_empty() {
-        vec![-1.2, -PI / 6.0, -0.3, 0.0, PI / 6.0, 0.8, 1.0, 1.1, 1.15]
+        vec![
+            -1.2,
+            -PI / 6.0,
+            -0.3,
+            0.0,
+            PI / 6.0,
+            0.8,
+            1.0,
+            1.05,
+            1.1,
+            1.15,
+        ]
     } else {
         args
     };

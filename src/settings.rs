@@ -114,6 +114,19 @@ pub struct Settings {
     /// Joints added to the constraint-generation working set closer than this (radians)
     /// to one already there are not added again. Default 1e-10.
     pub working_set_gap: f64,
+    /// The one-sided slopes dη_s/dμ at a pattern change of the limit curve are taken from
+    /// η_s at μ(1 ± δ) and μ(1 ± 2δ) (second-order differences) with δ this. Default 1e-6.
+    pub slope_step: f64,
+    /// A pattern change is a corner (a kink of η_s(μ)) when its one-sided slopes differ by
+    /// more than this fraction of max(|slopes|, η/μ); else a smooth transition.
+    /// Default 1e-3 (smooth changes agree to ~1e-6 with the default `slope_step`; corners
+    /// differ by O(1)).
+    pub kink_slope_rel: f64,
+    /// A located pattern change of the limit curve stands only where its η equals, to
+    /// this relative difference, η_s extrapolated to its μ from either side (see
+    /// `slope_step`; the extrapolation is second order, so ~δ² ≈ 1e-12 on a smooth side).
+    /// Default 1e-9.
+    pub boundary_match: f64,
 }
 
 impl Default for Settings {
@@ -144,6 +157,9 @@ impl Default for Settings {
             curve_start_rel: 1e-5,
             track_angle: 0.05,
             working_set_gap: 1e-10,
+            slope_step: 1e-6,
+            kink_slope_rel: 1e-3,
+            boundary_match: 1e-9,
             event_tol: 1e-9,
             sweep_pieces: 48,
             unbounded_reactions: 1e6,
@@ -204,6 +220,9 @@ impl Settings {
             ("settings.working_set_gap", self.working_set_gap),
             ("settings.event_tol", self.event_tol),
             ("settings.sweep_min_eta", self.sweep_min_eta),
+            ("settings.slope_step", self.slope_step),
+            ("settings.kink_slope_rel", self.kink_slope_rel),
+            ("settings.boundary_match", self.boundary_match),
         ] {
             unit(name, v)?;
         }

@@ -90,8 +90,14 @@ fn sample(
         }
         for i in 1..n {
             let mu = hi * (lo / hi).powf(i as f64 / n as f64);
-            if let Ok(Outcome::Limit(ls)) = solve(arch, mu, settings).map(|s| s.outcome) {
-                pts.push((mu, ls.eta));
+            // the static boundary η_s(μ)
+            match solve(arch, mu, settings).map(|s| s.outcome) {
+                Ok(Outcome::Limit(ls)) => pts.push((mu, ls.eta_static)),
+                Ok(Outcome::Unresolved {
+                    least_static: Some((eta, _)),
+                    ..
+                }) => pts.push((mu, eta)),
+                _ => {}
             }
         }
         pts.push((lo, b.eta_max));
@@ -104,7 +110,7 @@ fn sample(
         .map(|c| (c.mu, c.eta))
         .collect();
     let asymptote = curve
-        .corners
+        .transitions
         .iter()
         .find(|c| c.mu.is_infinite())
         .map(|c| c.eta);

@@ -21,11 +21,13 @@ use crate::collapse_mode::CollapseMode;
 use crate::contact::Contact;
 use crate::friction::{friction_limit, FrictionLimit};
 use crate::limit::{solve, Outcome};
+use crate::limit_states::search;
 use crate::settings::Settings;
 use crate::statics::{internal_forces, Reactions};
 
 mod sample;
 mod tracer;
+mod transition;
 
 pub use sample::{mu_grid, sample, CurvePoint};
 use tracer::{Sample, Tracer};
@@ -47,7 +49,8 @@ pub struct Branch {
     pub pattern: Vec<Contact>,
 }
 
-/// A corner of the limit curve, where the active pattern changes.
+/// A point of the static boundary η_s(μ) where the active pattern changes: a corner
+/// (`kink`: the one-sided slopes differ) or a smooth transition (they agree).
 #[derive(Debug, Clone)]
 pub struct Corner {
     /// Friction coefficient (∞ for the asymptote of a branch).
@@ -56,6 +59,14 @@ pub struct Corner {
     pub eta: f64,
     /// Reactions of the corner state.
     pub x: Reactions,
+    /// Whether η_s(μ) has a kink here (the one-sided slopes differ by more than
+    /// `settings.kink_slope_rel` of their size).
+    pub kink: bool,
+    /// dη_s/dμ on the side of smaller μ (−∞ at the vertical purely-sliding branch; NaN
+    /// where not defined, at μ = ∞).
+    pub slope_left: f64,
+    /// dη_s/dμ on the side of larger μ (NaN at μ = ∞).
+    pub slope_right: f64,
     /// Every active contact at the corner, by increasing β.
     pub joints: Vec<Contact>,
     /// The modes of the branches it joins: [higher μ, lower μ].
@@ -96,8 +107,13 @@ pub struct LimitCurve {
     pub mu_ms: Option<f64>,
     /// Branches, by decreasing μ, the vertical purely-sliding branch last.
     pub branches: Vec<Branch>,
-    /// Corners, by decreasing μ.
+    /// Corners (kinks of η_s(μ)), by decreasing μ.
     pub corners: Vec<Corner>,
+    /// Smooth pattern changes, by decreasing μ (the asymptote at μ = ∞ of a top branch
+    /// whose pattern differs from the infinite-friction one is listed here too).
+    pub transitions: Vec<Corner>,
+    /// Limit states above the boundary, grouped into branches over the samples.
+    pub limit_branches: Vec<LimitBranch>,
     /// Samples that could not be resolved (μ and the reason).
     pub unresolved: Vec<(f64, String)>,
     /// Sampled μ at which the arch stands at every η > 0 (no collapse to find).
@@ -106,6 +122,8 @@ pub struct LimitCurve {
     pub no_equilibrium: Vec<f64>,
     /// Number of η*(μ) solves used.
     pub solves: usize,
+    /// Number of boundary samples searched for limit states above η_s.
+    pub samples: usize,
 }
 
 impl LimitCurve {
@@ -163,10 +181,13 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
             mu_ms: None,
             branches: vec![],
             corners: vec![],
+            transitions: vec![],
+            limit_branches: vec![],
             unresolved: tr.unresolved,
             no_collapse: tr.no_collapse,
             no_equilibrium: tr.no_equilibrium,
             solves: 0,
+            samples: 0,
         };
     };
     let inf = tr.sample(f64::INFINITY);
@@ -179,16 +200,19 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
                 mu_ms: Some(fl.mu),
                 branches: vec![],
                 corners: vec![],
+                transitions: vec![],
+                limit_branches: vec![],
                 unresolved: tr.unresolved,
                 no_collapse: tr.no_collapse,
                 no_equilibrium: tr.no_equilibrium,
                 solves: tr.solves + 1,
+                samples: 0,
             };
         }
     }
     let mu_lo = fl.mu * (1.0 + settings.curve_start_rel);
     let mu_rm = inf.as_ref().map_or(f64::INFINITY, |s| {
-        friction_needed(arch, s.ls.eta, &s.ls.x, 2000, settings.detach_rel)
+        friction_needed(arch, s.eta, &s.x, 2000, settings.detach_rel)
     });
     let mu_hi = if mu_rm.is_finite() {
         (2.0 * mu_rm).max(1.5 * mu_lo)
@@ -203,17 +227,20 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
             samples.push(s);
         }
     }
-    let mut corners = Vec::new();
+    let mut changes = Vec::new();
     // the top: a finite pattern different from the infinite-friction one is asymptotic
     if let (Some(top), Some(inf)) = (samples.first(), inf.as_ref()) {
         if top.sig != inf.sig {
-            corners.push(Corner {
+            changes.push(Corner {
                 mu: f64::INFINITY,
-                eta: inf.ls.eta,
-                x: inf.ls.x,
-                joints: inf.ls.pattern.clone(),
-                between: [tr.mode_of(&top.ls.pattern), tr.mode_of(&inf.ls.pattern)],
-                mode: tr.mode_of(&inf.ls.pattern),
+                eta: inf.eta,
+                x: inf.x,
+                kink: false,
+                slope_left: f64::NAN,
+                slope_right: f64::NAN,
+                joints: inf.pattern.clone(),
+                between: [tr.mode_of(&top.pattern), tr.mode_of(&inf.pattern)],
+                mode: tr.mode_of(&inf.pattern),
                 exact: true,
                 residual: 0.0,
             });
@@ -222,48 +249,51 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
     for w in 0..samples.len().saturating_sub(1) {
         let (a, b) = (samples[w].clone(), samples[w + 1].clone());
         if a.sig != b.sig {
-            corners.extend(tr.locate(&a, &b, 24));
+            changes.extend(tr.locate(&a, &b, 24));
         }
     }
-    // the corner with the vertical purely-sliding branch
+    // the corner with the vertical purely-sliding branch (slope −∞ on its left)
     if let Some(low) = samples.last() {
-        let between = [tr.mode_of(&low.ls.pattern), CollapseMode::PurelySliding];
-        let start = (low.ls.x, low.ls.eta, low.ls.mu);
+        let between = [tr.mode_of(&low.pattern), CollapseMode::PurelySliding];
+        let start = (low.x, low.eta, low.mu);
+        let range = (fl.mu * (1.0 - settings.root_slack), low.mu);
         let c = tr
-            .corner_newton(
-                &low.ls.pattern,
-                &fl.pattern,
-                start,
-                (fl.mu * (1.0 - settings.root_slack), low.ls.mu),
-                between,
-            )
-            .unwrap_or(Corner {
-                mu: fl.mu,
-                eta: low.ls.eta,
-                x: low.ls.x,
-                joints: fl.pattern.clone(),
-                between,
-                mode: CollapseMode::PurelySliding,
-                exact: false,
-                residual: f64::NAN,
+            .union_newton(&low.pattern, &fl.pattern, start, range, between, true)
+            .map(|mut c| {
+                c.kink = true;
+                c
+            })
+            .unwrap_or_else(|| {
+                let slope = tr.slope(low.mu, low.eta, 1.0).0;
+                Corner {
+                    mu: fl.mu,
+                    eta: low.eta,
+                    x: low.x,
+                    kink: true,
+                    slope_left: f64::NEG_INFINITY,
+                    slope_right: slope,
+                    joints: fl.pattern.clone(),
+                    between,
+                    mode: CollapseMode::PurelySliding,
+                    exact: false,
+                    residual: f64::NAN,
+                }
             });
-        corners.push(c);
+        changes.push(c);
     }
-    corners.sort_by(|a, b| b.mu.total_cmp(&a.mu));
+    changes.sort_by(|a, b| b.mu.total_cmp(&a.mu));
 
-    // branches between consecutive corners (by decreasing μ)
+    // branches between consecutive pattern changes (by decreasing μ)
     let mut branches = Vec::new();
-    let top_mu = f64::INFINITY;
-    let mut upper = (top_mu, inf.as_ref().map_or(f64::NAN, |s| s.ls.eta));
-    let mut finite_corners: Vec<&Corner> = corners.iter().filter(|c| c.mu.is_finite()).collect();
-    finite_corners.sort_by(|a, b| b.mu.total_cmp(&a.mu));
-    for c in &finite_corners {
+    let mut upper = (f64::INFINITY, inf.as_ref().map_or(f64::NAN, |s| s.eta));
+    let finite: Vec<&Corner> = changes.iter().filter(|c| c.mu.is_finite()).collect();
+    for c in &finite {
         let members: Vec<Sample> = samples
             .iter()
-            .filter(|s| s.ls.mu < upper.0 && s.ls.mu > c.mu)
+            .filter(|s| s.mu < upper.0 && s.mu > c.mu)
             .cloned()
             .collect();
-        // two corners between neighbouring samples: solve once inside the branch
+        // two changes between neighbouring samples: solve once inside the branch
         let rep = match members.get(members.len() / 2) {
             Some(r) => Some(r.clone()),
             None if upper.0.is_finite() => tr.sample((upper.0 * c.mu).sqrt()),
@@ -271,17 +301,17 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
         };
         if let Some(rep) = rep {
             branches.push(Branch {
-                mode: tr.mode_of(&rep.ls.pattern),
+                mode: tr.mode_of(&rep.pattern),
                 mu_min: c.mu,
                 mu_max: upper.0,
                 eta_min: upper.1,
                 eta_max: c.eta,
-                pattern: rep.ls.pattern.clone(),
+                pattern: rep.pattern.clone(),
             });
         }
         upper = (c.mu, c.eta);
     }
-    if let Some(last) = finite_corners.last() {
+    if let Some(last) = finite.last() {
         branches.push(Branch {
             mode: CollapseMode::PurelySliding,
             mu_min: fl.mu,
@@ -291,13 +321,96 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
             pattern: fl.pattern.clone(),
         });
     }
+    let searched = samples.len() + usize::from(inf.is_some());
+    let limit_branches = limit_branches(&tr, inf.iter().chain(&samples), settings);
+    let (corners, transitions) = changes.into_iter().partition(|c| c.kink);
     LimitCurve {
         mu_ms: Some(fl.mu),
         branches,
         corners,
+        transitions,
+        limit_branches,
         unresolved: tr.unresolved,
         no_collapse: tr.no_collapse,
         no_equilibrium: tr.no_equilibrium,
         solves: tr.solves,
+        samples: searched,
     }
+}
+
+/// A branch of limit states above the static boundary: consecutive samples (by
+/// decreasing μ) each with a limit state above η_s of one pattern signature and mode.
+/// Its ends are those of the samples, not located exactly.
+#[derive(Debug, Clone)]
+pub struct LimitBranch {
+    /// Collapse mode of the pattern.
+    pub mode: CollapseMode,
+    /// Least sampled μ with this limit state.
+    pub mu_min: f64,
+    /// Greatest sampled μ with it (∞ when found at μ = ∞).
+    pub mu_max: f64,
+    /// Least η over the samples.
+    pub eta_min: f64,
+    /// Greatest η over the samples.
+    pub eta_max: f64,
+    /// The pattern at the sample of greatest μ.
+    pub pattern: Vec<Contact>,
+    /// Samples on the branch.
+    pub samples: usize,
+}
+
+/// The limit states above η_s at each sample, grouped into branches (a sample whose
+/// search could not be completed is listed as unresolved).
+fn limit_branches<'a>(
+    tr: &Tracer,
+    samples: impl Iterator<Item = &'a Sample>,
+    settings: &Settings,
+) -> Vec<LimitBranch> {
+    let mut open: Vec<(tracer::Signature, LimitBranch, bool)> = Vec::new();
+    let mut done: Vec<LimitBranch> = Vec::new();
+    for s in samples {
+        let above = match search(tr.arch, s.mu, settings) {
+            Ok(Ok(ls)) => ls.above,
+            _ => Vec::new(),
+        };
+        for o in open.iter_mut() {
+            o.2 = false;
+        }
+        for st in above {
+            let sig = tracer::signature(&st.pattern);
+            let mode = tr.mode_of(&st.pattern);
+            match open
+                .iter_mut()
+                .find(|o| o.0 == sig && o.1.mode == mode && !o.2)
+            {
+                Some(o) => {
+                    o.1.mu_min = s.mu;
+                    o.1.eta_min = o.1.eta_min.min(st.eta);
+                    o.1.eta_max = o.1.eta_max.max(st.eta);
+                    o.1.samples += 1;
+                    o.2 = true;
+                }
+                None => open.push((
+                    sig,
+                    LimitBranch {
+                        mode,
+                        mu_min: s.mu,
+                        mu_max: s.mu,
+                        eta_min: st.eta,
+                        eta_max: st.eta,
+                        pattern: st.pattern.clone(),
+                        samples: 1,
+                    },
+                    true,
+                )),
+            }
+        }
+        // branches not continued at this sample end
+        let (cont, ended): (Vec<_>, Vec<_>) = open.into_iter().partition(|o| o.2);
+        done.extend(ended.into_iter().map(|o| o.1));
+        open = cont;
+    }
+    done.extend(open.into_iter().map(|o| o.1));
+    done.sort_by(|a, b| b.mu_max.total_cmp(&a.mu_max));
+    done
 }

@@ -1,27 +1,37 @@
-//! Sampling η*(μ) for the tracer and locating the corner between two samples whose
-//! patterns differ (Newton on the union of both patterns with μ unknown, bisection in μ
-//! as the fallback).
+//! Sampling the static boundary η_s(μ) for the tracer and locating the pattern change
+//! between two samples whose patterns differ: a corner (Newton on the union of both
+//! patterns with μ unknown), a smooth change ([`super::transition`]), or, when neither
+//! converges, bisection in μ. Each located change is checked against the boundary itself
+//! (η equals η_s at its μ) and classified by the one-sided slopes of η_s(μ) there.
 
+use super::transition;
 use super::Corner;
 use crate::arch::Arch;
 use crate::collapse_mode::{classify, CollapseMode};
 use crate::contact::ContactKind;
 use crate::contact::{Contact, Location};
-use crate::limit::{solve, LimitState, Outcome};
+use crate::limit::{solve, Outcome};
 use crate::refine::{solve_system, Unknowns};
 use crate::settings::Settings;
 use crate::state::State;
 use crate::statics::Reactions;
 
-type Signature = Vec<(ContactKind, Location)>;
+pub(super) type Signature = Vec<(ContactKind, Location)>;
 
 pub(super) fn signature(p: &[Contact]) -> Signature {
     p.iter().map(|c| (c.kind, c.at)).collect()
 }
 
+/// One point of the static boundary: the least admissible state at μ.
 #[derive(Debug, Clone)]
 pub(super) struct Sample {
-    pub(super) ls: LimitState,
+    pub(super) mu: f64,
+    /// η_s(μ).
+    pub(super) eta: f64,
+    /// The least admissible state.
+    pub(super) x: Reactions,
+    /// Every contact active there, by increasing β.
+    pub(super) pattern: Vec<Contact>,
     pub(super) sig: Signature,
 }
 
@@ -35,29 +45,69 @@ pub(super) struct Tracer<'a> {
 }
 
 impl Tracer<'_> {
-    pub(super) fn sample(&mut self, mu: f64) -> Option<Sample> {
+    /// The boundary at μ, without recording anything.
+    fn boundary(&mut self, mu: f64) -> Result<Sample, Outcome> {
         self.solves += 1;
-        match solve(self.arch, mu, self.settings).map(|s| s.outcome) {
-            Ok(Outcome::Limit(ls)) => Some(Sample {
-                sig: signature(&ls.pattern),
-                ls,
-            }),
-            Ok(Outcome::NoCollapse { .. }) => {
+        let solution = match solve(self.arch, mu, self.settings) {
+            Ok(s) => s,
+            Err(e) => {
+                return Err(Outcome::Unresolved {
+                    eta_lo: 0.0,
+                    eta_hi: 2.0,
+                    reason: e.to_string(),
+                    least_static: None,
+                })
+            }
+        };
+        let (eta, x, pattern) = match &solution.outcome {
+            Outcome::Limit(ls) if ls.eta == ls.eta_static => (ls.eta, ls.x, ls.pattern.clone()),
+            Outcome::Limit(ls) => (
+                ls.eta_static,
+                ls.x_static,
+                self.active(mu, ls.eta_static, ls.x_static),
+            ),
+            Outcome::Unresolved {
+                least_static: Some((eta, x)),
+                ..
+            } => (*eta, *x, self.active(mu, *eta, *x)),
+            other => return Err(other.clone()),
+        };
+        Ok(Sample {
+            mu,
+            eta,
+            x,
+            sig: signature(&pattern),
+            pattern,
+        })
+    }
+
+    fn active(&self, mu: f64, eta: f64, x: Reactions) -> Vec<Contact> {
+        let st = State {
+            arch: self.arch,
+            eta,
+            mu,
+            x,
+        };
+        st.verdict(ContactKind::active_at(mu), self.settings).active
+    }
+
+    /// The boundary at μ; what is not a boundary point is recorded by kind.
+    pub(super) fn sample(&mut self, mu: f64) -> Option<Sample> {
+        match self.boundary(mu) {
+            Ok(s) => Some(s),
+            Err(Outcome::NoCollapse { .. }) => {
                 self.no_collapse.push(mu);
                 None
             }
-            Ok(Outcome::NoEquilibrium { .. }) => {
+            Err(Outcome::NoEquilibrium { .. }) => {
                 self.no_equilibrium.push(mu);
                 None
             }
-            Ok(Outcome::Unresolved { reason, .. }) => {
+            Err(Outcome::Unresolved { reason, .. }) => {
                 self.unresolved.push((mu, reason));
                 None
             }
-            Err(e) => {
-                self.unresolved.push((mu, e.to_string()));
-                None
-            }
+            Err(Outcome::Limit(_)) => None,
         }
     }
 
@@ -69,15 +119,104 @@ impl Tracer<'_> {
         )
     }
 
+    /// η_s at μ, or NaN.
+    fn eta_s(&mut self, mu: f64) -> f64 {
+        self.boundary(mu).map_or(f64::NAN, |s| s.eta)
+    }
+
+    /// The one-sided slope dη_s/dμ at (μ, η) on the side `side` (+1: larger μ, −1:
+    /// smaller μ), from η_s at μ(1 + side·δ) and μ(1 + 2 side·δ) (second order,
+    /// δ = `settings.slope_step`), and η_s extrapolated from that side to μ itself
+    /// (2η₁ − η₂, also second order). NaN when either solve fails.
+    pub(super) fn slope(&mut self, mu: f64, eta: f64, side: f64) -> (f64, f64) {
+        let d = self.settings.slope_step;
+        let (e1, e2) = (
+            self.eta_s(mu * (1.0 + side * d)),
+            self.eta_s(mu * (1.0 + 2.0 * side * d)),
+        );
+        (
+            (4.0 * (e1 - eta) - (e2 - eta)) / (2.0 * side * d * mu),
+            2.0 * e1 - e2,
+        )
+    }
+
+    /// Whether two one-sided slopes differ: a kink (NaN slopes count as a kink, since
+    /// no smoothness was shown).
+    pub(super) fn is_kink(&self, lower: f64, upper: f64, eta: f64, mu: f64) -> bool {
+        let scale = lower.abs().max(upper.abs()).max(eta / mu);
+        !((lower - upper).abs() <= self.settings.kink_slope_rel * scale)
+    }
+
+    /// A located change (its state and the pattern it was solved on, refined), checked:
+    /// μ within the samples' range, the state admissible, and
+    /// η equal (to `settings.boundary_match`) to η_s extrapolated to μ from each side
+    /// (from the right only at μ_ms, `at_mu_ms`, where the left is the vertical branch);
+    /// then classified by the slopes on both sides.
+    #[allow(clippy::too_many_arguments)]
+    fn accept(
+        &mut self,
+        (mu, eta, x): (f64, f64, Reactions),
+        pattern: &[Contact],
+        range: (f64, f64),
+        between: [CollapseMode; 2],
+        residual: f64,
+        at_mu_ms: bool,
+    ) -> Option<Corner> {
+        let tol = self.settings.root_slack;
+        if !(mu >= range.0 * (1.0 - tol) && mu <= range.1 * (1.0 + tol)) {
+            return None;
+        }
+        let st = State {
+            arch: self.arch,
+            eta,
+            mu,
+            x,
+        };
+        let verdict = st.verdict(ContactKind::active_at(mu), self.settings);
+        if verdict.worst > self.settings.adm_tol {
+            return None;
+        }
+        let (upper, from_right) = self.slope(mu, eta, 1.0);
+        let (lower, from_left) = if at_mu_ms {
+            (f64::NEG_INFINITY, eta)
+        } else {
+            self.slope(mu, eta, -1.0)
+        };
+        let off = |e: f64| !((e - eta).abs() <= self.settings.boundary_match * eta);
+        if off(from_right) || off(from_left) {
+            return None;
+        }
+        let mut joints = pattern.to_vec();
+        joints.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.kind.cmp(&b.kind)));
+        let mode = self.mode_of(&joints);
+        Some(Corner {
+            mu,
+            eta,
+            x,
+            kink: self.is_kink(lower, upper, eta, mu),
+            slope_left: lower,
+            slope_right: upper,
+            joints,
+            between,
+            mode,
+            exact: true,
+            residual,
+        })
+    }
+
     /// Newton on the union of two patterns with η and μ unknown, from the state
-    /// (x, η, μ); verified admissible and with μ in [mu_lo, mu_hi].
-    pub(super) fn corner_newton(
-        &self,
+    /// (x, η, μ), accepted only when the state's active set covers both patterns (as many
+    /// active contacts of each kind and place as either pattern has: where two tangencies
+    /// of one kind merge, the union converges to a point that is on neither side's
+    /// pattern, and the change is a smooth one, [`transition`]).
+    pub(super) fn union_newton(
+        &mut self,
         upper: &[Contact],
         lower: &[Contact],
         start: (Reactions, f64, f64),
-        mu_range: (f64, f64),
+        range: (f64, f64),
         between: [CollapseMode; 2],
+        at_mu_ms: bool,
     ) -> Option<Corner> {
         let mut union: Vec<Contact> = lower.to_vec();
         for c in upper {
@@ -90,64 +229,87 @@ impl Tracer<'_> {
                 union.push(*c);
             }
         }
-        let s = self.settings;
         let from = State {
             arch: self.arch,
             eta: start.1,
             mu: start.2,
             x: start.0,
         };
-        let r = solve_system(&from, &union, Unknowns::EtaMu, s).ok()?;
-        let tol = self.settings.root_slack;
-        if !(r.mu >= mu_range.0 * (1.0 - tol) && r.mu <= mu_range.1 * (1.0 + tol)) {
-            return None;
-        }
-        let st = State {
-            arch: self.arch,
-            eta: r.eta,
-            mu: r.mu,
-            x: r.x,
+        let r = solve_system(&from, &union, Unknowns::EtaMu, self.settings).ok()?;
+        let active = signature(&self.active(r.mu, r.eta, r.x));
+        let count =
+            |s: &Signature, k: &(ContactKind, Location)| s.iter().filter(|c| *c == k).count();
+        let covers = |p: &[Contact]| {
+            let sig = signature(p);
+            sig.iter().all(|k| count(&active, k) >= count(&sig, k))
         };
-        let v = st.verdict(ContactKind::active_at(r.mu), s);
-        if v.worst > s.adm_tol {
+        if !(covers(upper) && covers(lower)) {
             return None;
         }
-        let joints = v.active;
-        let mode = self.mode_of(&joints);
-        Some(Corner {
-            mu: r.mu,
-            eta: r.eta,
-            x: r.x,
-            joints,
+        self.accept(
+            (r.mu, r.eta, r.x),
+            &r.contacts,
+            range,
             between,
-            mode,
-            exact: true,
-            residual: r.residual,
-        })
+            r.residual,
+            at_mu_ms,
+        )
     }
 
-    /// The corners between samples `a` (higher μ) and `b` (lower μ) with different
-    /// patterns.
+    /// A smooth change between `a` and `b` ([`transition`]), tried from each side.
+    fn smooth(&mut self, a: &Sample, b: &Sample, between: [CollapseMode; 2]) -> Option<Corner> {
+        let range = (b.mu, a.mu);
+        for (on_b, extra) in transition::candidates(&a.pattern, &b.pattern) {
+            let s = if on_b { b } else { a };
+            let Some(l) = transition::locate(
+                self.arch,
+                &s.pattern,
+                extra,
+                (s.x, s.eta, s.mu),
+                self.settings,
+            ) else {
+                continue;
+            };
+            if let Some(c) = self.accept(
+                (l.mu, l.eta, l.x),
+                &l.pattern,
+                range,
+                between,
+                l.residual,
+                false,
+            ) {
+                return Some(c);
+            }
+        }
+        None
+    }
+
+    /// The pattern changes between samples `a` (higher μ) and `b` (lower μ) with
+    /// different patterns.
     pub(super) fn locate(&mut self, a: &Sample, b: &Sample, depth: usize) -> Vec<Corner> {
-        let between = [self.mode_of(&a.ls.pattern), self.mode_of(&b.ls.pattern)];
-        let range = (b.ls.mu, a.ls.mu);
-        for start in [&b.ls, &a.ls] {
-            if let Some(c) = self.corner_newton(
-                &a.ls.pattern,
-                &b.ls.pattern,
+        let between = [self.mode_of(&a.pattern), self.mode_of(&b.pattern)];
+        let range = (b.mu, a.mu);
+        for start in [b, a] {
+            if let Some(c) = self.union_newton(
+                &a.pattern,
+                &b.pattern,
                 (start.x, start.eta, start.mu),
                 range,
                 between,
+                false,
             ) {
                 return vec![c];
             }
         }
-        let mid_mu = (a.ls.mu * b.ls.mu).sqrt();
-        if depth == 0 || a.ls.mu / b.ls.mu < 1.0 + self.settings.same_root {
-            return vec![bracketed(a, b, between)];
+        if let Some(c) = self.smooth(a, b, between) {
+            return vec![c];
+        }
+        let mid_mu = (a.mu * b.mu).sqrt();
+        if depth == 0 || a.mu / b.mu < 1.0 + self.settings.same_root {
+            return vec![self.bracketed(a, b, between)];
         }
         let Some(m) = self.sample(mid_mu) else {
-            return vec![bracketed(a, b, between)];
+            return vec![self.bracketed(a, b, between)];
         };
         if m.sig == a.sig {
             self.locate(&m, b, depth - 1)
@@ -159,19 +321,28 @@ impl Tracer<'_> {
             v
         }
     }
-}
 
-/// A corner known only to lie between samples `a` and `b` (reported with
-/// `exact: false`).
-pub(super) fn bracketed(a: &Sample, b: &Sample, between: [CollapseMode; 2]) -> Corner {
-    Corner {
-        mu: (a.ls.mu * b.ls.mu).sqrt(),
-        eta: 0.5 * (a.ls.eta + b.ls.eta),
-        x: b.ls.x,
-        joints: b.ls.pattern.clone(),
-        between,
-        mode: between[1],
-        exact: false,
-        residual: f64::NAN,
+    /// A change known only to lie between samples `a` and `b` (`exact: false`); its
+    /// slopes are the boundary's on either side of the bracket.
+    fn bracketed(&mut self, a: &Sample, b: &Sample, between: [CollapseMode; 2]) -> Corner {
+        let (lower, upper) = (
+            self.slope(b.mu, b.eta, -1.0).0,
+            self.slope(a.mu, a.eta, 1.0).0,
+        );
+        let mu = (a.mu * b.mu).sqrt();
+        let eta = 0.5 * (a.eta + b.eta);
+        Corner {
+            mu,
+            eta,
+            x: b.x,
+            kink: self.is_kink(lower, upper, eta, mu),
+            slope_left: lower,
+            slope_right: upper,
+            joints: b.pattern.clone(),
+            between,
+            mode: between[1],
+            exact: false,
+            residual: f64::NAN,
+        }
     }
 }

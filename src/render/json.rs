@@ -427,11 +427,30 @@ struct CornerJson {
     mu: f64,
     friction_angle_deg: f64,
     eta: f64,
+    /// True for a corner (the slopes differ), false for a smooth transition.
+    kink: bool,
+    /// dη_s/dμ on the side of smaller μ (`null`: the vertical purely-sliding branch at
+    /// μ_ms, or undefined at μ = ∞).
+    slope_left: f64,
+    /// dη_s/dμ on the side of larger μ (`null` at μ = ∞).
+    slope_right: f64,
     pattern: Vec<Contact>,
     between: [&'static str; 2],
     mode: &'static str,
     exact: bool,
     residual: f64,
+}
+
+#[derive(Debug, Serialize)]
+struct LimitBranchJson {
+    mode: &'static str,
+    mode_standard: bool,
+    mu_min: f64,
+    mu_max: f64,
+    eta_min: f64,
+    eta_max: f64,
+    pattern: Vec<Contact>,
+    samples: usize,
 }
 
 #[derive(Debug, Serialize)]
@@ -447,7 +466,12 @@ pub struct ModesJson {
     status: &'static str,
     arch: ArchJson,
     branches: Vec<BranchJson>,
+    /// Kinks of η_s(μ).
     corners: Vec<CornerJson>,
+    /// Smooth pattern changes of η_s(μ).
+    transitions: Vec<CornerJson>,
+    /// Limit states above the boundary, by samples.
+    limit_branches: Vec<LimitBranchJson>,
     /// The least friction at which the arch stands at some thickness (μ_ms); the same
     /// value as `mu_ms`, under the name the contract gives it.
     mu_min: Option<f64>,
@@ -458,6 +482,22 @@ pub struct ModesJson {
     no_collapse: Vec<f64>,
     /// Sampled μ at which no thickness stands.
     no_equilibrium: Vec<f64>,
+}
+
+fn corner(c: &crate::limit_curve::Corner) -> CornerJson {
+    CornerJson {
+        mu: c.mu,
+        friction_angle_deg: c.mu.atan().to_degrees(),
+        eta: c.eta,
+        kink: c.kink,
+        slope_left: c.slope_left,
+        slope_right: c.slope_right,
+        pattern: c.joints.clone(),
+        between: c.between.map(|m| m.name()),
+        mode: c.mode.name(),
+        exact: c.exact,
+        residual: c.residual,
+    }
 }
 
 /// Builds the `modes --json` document.
@@ -484,18 +524,20 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> ModesJson {
                 pattern: b.pattern.clone(),
             })
             .collect(),
-        corners: curve
-            .corners
+        corners: curve.corners.iter().map(corner).collect(),
+        transitions: curve.transitions.iter().map(corner).collect(),
+        limit_branches: curve
+            .limit_branches
             .iter()
-            .map(|c| CornerJson {
-                mu: c.mu,
-                friction_angle_deg: c.mu.atan().to_degrees(),
-                eta: c.eta,
-                pattern: c.joints.clone(),
-                between: c.between.map(|m| m.name()),
-                mode: c.mode.name(),
-                exact: c.exact,
-                residual: c.residual,
+            .map(|b| LimitBranchJson {
+                mode: b.mode.name(),
+                mode_standard: b.mode.is_standard(),
+                mu_min: b.mu_min,
+                mu_max: b.mu_max,
+                eta_min: b.eta_min,
+                eta_max: b.eta_max,
+                pattern: b.pattern.clone(),
+                samples: b.samples,
             })
             .collect(),
         mu_min: curve.mu_ms,

@@ -425,7 +425,6 @@ pub fn right_half_angle(
 
 /// The human-readable answer of `modes`: branches and corners, as in a paper.
 pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
-    use crate::contact::ContactKind;
     let mut s = String::new();
     let _ = writeln!(s, "{}", describe_arch(arch));
     match curve.mu_ms {
@@ -476,7 +475,7 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
     }
     let _ = writeln!(
         s,
-        "\nbranches of the limit curve eta*(mu), by decreasing mu:"
+        "\nbranches of the static boundary eta_s(mu), by decreasing mu:"
     );
     let _ = writeln!(
         s,
@@ -484,11 +483,6 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
         "mode", "mu from", "mu to", "eta from", "eta to"
     );
     for b in &curve.branches {
-        let joints: Vec<String> = b
-            .pattern
-            .iter()
-            .map(|c| format!("{}@{:.3}", short(c), c.beta.to_degrees()))
-            .collect();
         let _ = writeln!(
             s,
             "  {:<30} {:>15} {:>15}   {:>15} {:>15}   {}",
@@ -497,19 +491,89 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
             fmt_opt_inf(b.mu_min, 10),
             fmt_opt_inf(b.eta_min, 10),
             fmt_opt_inf(b.eta_max, 10),
-            joints.join(" ")
+            degrees(&b.pattern)
         );
     }
-    let _ = writeln!(
-        s,
-        "\ncorners, by decreasing mu (beta_N: intrados hinge, beta_T: sliding joint, right half):"
+    changes(
+        &mut s,
+        arch,
+        &curve.corners,
+        "corners (kinks of eta_s(mu)), by decreasing mu (beta_N: intrados hinge, beta_T: sliding joint, right half):",
     );
+    if !curve.transitions.is_empty() {
+        changes(
+            &mut s,
+            arch,
+            &curve.transitions,
+            "smooth transitions (the pattern changes, eta_s(mu) has no kink), by decreasing mu:",
+        );
+    }
+    if curve.limit_branches.is_empty() {
+        let _ = writeln!(
+            s,
+            "\nlimit states above the boundary: none at the {} sampled mu",
+            curve.samples
+        );
+    } else {
+        let _ = writeln!(
+            s,
+            "\nlimit states above the boundary eta_s(mu) (non-associative non-uniqueness), by sample:"
+        );
+        let _ = writeln!(
+            s,
+            "  {:<30} {:>15} {:>15}   {:>15} {:>15}  samples  pattern (kind@beta deg)",
+            "mode", "mu from", "mu to", "eta from", "eta to"
+        );
+        for b in &curve.limit_branches {
+            let _ = writeln!(
+                s,
+                "  {:<30} {:>15} {:>15}   {:>15} {:>15}  {:>7}  {}",
+                b.mode.name(),
+                fmt_opt_inf(b.mu_max, 10),
+                fmt_opt_inf(b.mu_min, 10),
+                fmt_opt_inf(b.eta_min, 10),
+                fmt_opt_inf(b.eta_max, 10),
+                b.samples,
+                degrees(&b.pattern)
+            );
+        }
+    }
+    for (mu, m) in &curve.unresolved {
+        let _ = writeln!(s, "  unresolved sample at mu = {mu}: {m}");
+    }
+    s.push_str(LEGEND);
+    s
+}
+
+/// A pattern as `kind@beta` in degrees.
+fn degrees(p: &[crate::contact::Contact]) -> String {
+    p.iter()
+        .map(|c| format!("{}@{:.3}", short(c), c.beta.to_degrees()))
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// One-sided slope for the tables: `vertical` for −∞, `-` where undefined.
+fn fmt_slope(v: f64) -> String {
+    if v == f64::NEG_INFINITY {
+        "vertical".into()
+    } else if v.is_nan() {
+        "-".into()
+    } else {
+        sig(v, 8)
+    }
+}
+
+/// The table of located pattern changes (corners or transitions).
+fn changes(s: &mut String, arch: &Arch, list: &[crate::limit_curve::Corner], title: &str) {
+    use crate::contact::ContactKind;
+    let _ = writeln!(s, "\n{title}");
     let _ = writeln!(
         s,
         "  {:>16} {:>11} {:>16} {:>14} {:>14}  {:<52} exact",
         "mu", "phi [deg]", "eta", "beta_N [rad]", "beta_T [rad]", "between"
     );
-    for c in &curve.corners {
+    for c in list {
         let bn = right_half_angle(arch, &c.joints, |c| c.kind == ContactKind::HingeIntrados);
         let bt = right_half_angle(arch, &c.joints, |c| !c.kind.is_hinge());
         let f = |v: Option<f64>| v.map_or("-".to_string(), |b| format!("{b:.10}"));
@@ -542,18 +606,15 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
             .collect();
         let _ = writeln!(
             s,
-            "  {:>16} corner pattern: {}\n  {:>16} named by its own pattern: {}",
+            "  {:>16} pattern: {}\n  {:>16} named by its own pattern: {}; slopes d eta/d mu: left {}, right {}",
             "",
             joints.join(" "),
             "",
-            c.mode.name()
+            c.mode.name(),
+            fmt_slope(c.slope_left),
+            fmt_slope(c.slope_right)
         );
     }
-    for (mu, m) in &curve.unresolved {
-        let _ = writeln!(s, "  unresolved sample at mu = {mu}: {m}");
-    }
-    s.push_str(LEGEND);
-    s
 }
 
 /// The notation of every pattern column.
@@ -702,9 +763,10 @@ pub const CORNER_HEADER: &str =
 pub fn corner_rows(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> Vec<String> {
     use crate::contact::ContactKind;
     let alpha = 0.0 - arch.beta_right();
-    curve
-        .corners
-        .iter()
+    let mut all: Vec<&crate::limit_curve::Corner> =
+        curve.corners.iter().chain(&curve.transitions).collect();
+    all.sort_by(|a, b| b.mu.total_cmp(&a.mu));
+    all.into_iter()
         .map(|c| {
             let f = |v: Option<f64>| v.map_or("–".to_string(), |b| format!("{b:.8}"));
             let (mu, phi) = if c.mu.is_finite() {
@@ -722,7 +784,12 @@ pub fn corner_rows(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> Vec<S
                 f(right_half_angle(arch, &c.joints, |j| !j.kind.is_hinge())),
                 c.between[0].name(),
                 c.between[1].name(),
-                if c.exact { "" } else { " (bracketed only)" }
+                match (c.exact, c.kink) {
+                    (true, true) => "",
+                    (true, false) if c.mu.is_infinite() => " (asymptote)",
+                    (true, false) => " (smooth transition)",
+                    (false, _) => " (bracketed only)",
+                }
             )
         })
         .collect()

@@ -115,8 +115,10 @@ fn alpha_1_15_overturning_asymptote() {
         .branches
         .iter()
         .all(|b| b.mode != CollapseMode::PurelyRotational));
-    let top = &c.corners[0];
-    assert!(top.mu.is_infinite());
+    // the asymptote is not a kink: it is listed with the transitions
+    let top = &c.transitions[0];
+    assert!(top.mu.is_infinite() && !top.kink);
+    assert!(c.corners.iter().all(|k| k.mu.is_finite() && k.kink));
     assert_eq!(top.between[1], CollapseMode::Overturning);
     assert!(c.branches[0].mu_max.is_infinite());
     assert!((c.branches[0].eta_min - top.eta).abs() < 1e-15);
@@ -254,4 +256,71 @@ fn one_voussoir_has_no_collapse() {
     let (s, code) = json_of(&["solve", "--alpha", "0", "--blocks", "1", "--mu", "0.5"]);
     assert_eq!(code, 1);
     assert_eq!(s["status"], "no_collapse");
+}
+
+/// The crown curvature of the intrados activation function at the least state of a
+/// symmetric centreline arch, from the test's own formulas (formulation §3: at β = π/2,
+/// N = h, M'' = N − 1, N'' = 2 − N, so φ_I'' = −M'' − η N''/2 = 1 − h − η (1 − h/2)).
+fn crown_curvature(alpha: f64, mu: f64) -> f64 {
+    let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
+    let sol = arch_enum::limit::solve(&arch, mu, &Settings::default()).unwrap();
+    let (eta, x) = match sol.outcome {
+        arch_enum::limit::Outcome::Limit(ls) => (ls.eta_static, ls.x_static),
+        other => panic!("{other:?}"),
+    };
+    1.0 - x[0] - eta * (1.0 - 0.5 * x[0])
+}
+
+/// α = 1.05 (issue 10): the two mixed branches meet smoothly — the two intrados hinges of
+/// the upper branch reach the crown from both sides and go on as one (φ_I'' = 0 there).
+/// No corner between them; one transition, located exactly, equal to an independent
+/// route (bisection in μ on the sign of φ_I''(π/2) at the least state) to 1e-11, and the
+/// issue's 2.3351897612 to its 11 digits.
+#[test]
+fn alpha_1_05_smooth_transition_between_mixed_branches() {
+    let c = curve(1.05);
+    let mixed = |m: CollapseMode| {
+        matches!(
+            m,
+            CollapseMode::MixedRotationalSliding | CollapseMode::MixedSlidingRotational
+        )
+    };
+    assert!(
+        c.corners
+            .iter()
+            .all(|k| !(mixed(k.between[0]) && mixed(k.between[1]))),
+        "{:?}",
+        c.corners
+    );
+    assert!(c.corners.iter().all(|k| k.kink));
+    assert_eq!(c.transitions.len(), 1, "{:?}", c.transitions);
+    let t = &c.transitions[0];
+    assert!(t.exact && !t.kink);
+    assert!((t.slope_left - t.slope_right).abs() < 1e-6 * t.slope_left.abs());
+    // independent route
+    let (mut lo, mut hi) = (2.30, 2.40);
+    assert!(crown_curvature(1.05, lo) < 0.0 && crown_curvature(1.05, hi) > 0.0);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if crown_curvature(1.05, mid) < 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    assert!((t.mu - lo).abs() < 1e-11 * lo, "{} vs {lo}", t.mu);
+    assert_digits("mu of the transition", t.mu, 2.3351897612, 11);
+    // every corner's η is η_s at its μ
+    for k in c.corners.iter().filter(|k| k.mu.is_finite()) {
+        let arch = Arch::symmetric(1.05, WeightModel::Centreline).unwrap();
+        let up = arch_enum::limit::solve(&arch, k.mu * (1.0 + 1e-9), &Settings::default()).unwrap();
+        if let arch_enum::limit::Outcome::Limit(ls) = up.outcome {
+            assert!(
+                (ls.eta_static - k.eta).abs() < 1e-7 * k.eta,
+                "{} vs {}",
+                ls.eta_static,
+                k.eta
+            );
+        }
+    }
 }
