@@ -324,3 +324,61 @@ fn alpha_1_05_smooth_transition_between_mixed_branches() {
         }
     }
 }
+
+/// α = 0.8 just above μ_ms: the limit-state diagram has a branch of limit states above the
+/// static boundary (a mirror pair of unsymmetric sliding states), so this symmetric
+/// continuous arch is not unique. Each state is re-checked here by the independent
+/// reference of `search_reference` (its own statics and kinematics): admissible at 4 000
+/// joints and at the contacts themselves, the contacts active, B λ = 0, λ ≥ 0, L_e ≥ 0 and
+/// the virtual-work identity.
+#[test]
+fn symmetric_continuous_non_uniqueness_is_independently_checked() {
+    use crate::search_reference::{check_state, RefLimitState};
+    let alpha = 0.8;
+    let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
+    let mu = 1.1540692474221415;
+    let r = arch_enum::limit_states::search(&arch, mu, &Settings::default())
+        .unwrap()
+        .unwrap();
+    assert_eq!(r.above.len(), 2);
+    let (br, bl) = (-alpha, PI + alpha);
+    for s in &r.above {
+        assert!(s.eta > r.eta_s * (1.0 + 1e-6), "{} vs {}", s.eta, r.eta_s);
+        let mut joints: Vec<f64> = (0..=4000)
+            .map(|i| br + (bl - br) * i as f64 / 4000.0)
+            .collect();
+        joints.extend(s.mechanism.contacts.iter().map(|c| c.beta));
+        joints.sort_by(f64::total_cmp);
+        joints.dedup_by(|a, b| (*a - *b).abs() < 1e-12);
+        let kind = |k: ContactKind| match k {
+            ContactKind::HingeExtrados => 0u8,
+            ContactKind::HingeIntrados => 1,
+            ContactKind::SlidePlus => 2,
+            ContactKind::SlideMinus => 3,
+        };
+        let mut active: Vec<((usize, u8), f64)> = s
+            .mechanism
+            .contacts
+            .iter()
+            .zip(&s.mechanism.rates)
+            .map(|(c, &rate)| {
+                let j = joints
+                    .iter()
+                    .position(|&b| (b - c.beta).abs() < 1e-12)
+                    .unwrap();
+                ((j, kind(c.kind)), rate)
+            })
+            .collect();
+        active.sort_by(|a, b| a.0.cmp(&b.0));
+        let state = RefLimitState {
+            eta: s.eta,
+            x: s.x,
+            active: active.iter().map(|a| a.0).collect(),
+            rates: active.iter().map(|a| a.1).collect(),
+            slides: active.iter().any(|a| a.0 .1 >= 2 && a.1 > 1e-12),
+            interval_end: None,
+        };
+        check_state(br, bl, &joints, false, mu, &state).unwrap();
+        assert!(state.slides);
+    }
+}
