@@ -103,20 +103,28 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
         settings,
         log,
     );
+    let top_slack = eta_hi * (1.0 + settings.root_slack);
     if let Some(ls) = first.limit {
         // η_hi carries a state verified admissible by exact evaluation over the whole
         // arch, so η* ≤ η_hi: a verified pattern above it is not the least. (The lower
         // end comes from the LP's infeasibility decision, accurate only to HiGHS's
-        // tolerance, and a verified state below it is simply better.)
-        return if ls.eta > eta_hi * (1.0 + settings.root_slack) {
-            unresolved(
+        // tolerance, and a verified state below it is simply better.) When the least
+        // admissible state was refined inside the bracket, it carries no mechanism: the
+        // non-associative gap below, with that state as η_s.
+        if ls.eta <= top_slack {
+            return Outcome::Limit(ls);
+        }
+        if !first
+            .least_static
+            .as_ref()
+            .is_some_and(|st| st.eta <= top_slack)
+        {
+            return unresolved(
                 eta_lo,
                 eta_hi,
                 format!("the least verified pattern gives eta = {} above an admissible state at {eta_hi}", ls.eta),
-            )
-        } else {
-            Outcome::Limit(ls)
-        };
+            );
+        }
     }
     let Some(st) = first.least_static else {
         return unresolved(

@@ -382,3 +382,22 @@ fn symmetric_continuous_non_uniqueness_is_independently_checked() {
         assert!(state.slides);
     }
 }
+
+/// An unsymmetric arch (found by a sweep of 60 random arches through `modes`) where, at one
+/// sample, the least admissible state was refined inside the LP bracket but carried no
+/// mechanism while another pattern gave a verified limit state above the bracket: that
+/// sample used to be `unresolved` and the μ_ms corner bracketed only. Now η_s is that
+/// least state (the non-associative gap), no sample is unresolved, every change is exact.
+#[test]
+fn gap_at_a_sample_is_decided() {
+    let arch = Arch::new(
+        -0.7311981743252693,
+        3.259202420641531,
+        WeightModel::Centreline,
+    )
+    .unwrap();
+    let c = trace(&arch, &Settings::default());
+    assert!(c.unresolved.is_empty(), "{:?}", c.unresolved);
+    assert!(c.corners.iter().chain(&c.transitions).all(|k| k.exact));
+    assert!(c.corners.iter().all(|k| k.kink));
+}
