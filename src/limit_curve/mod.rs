@@ -16,7 +16,7 @@
 //!    A top branch whose pattern differs from the infinite-friction one approaches it
 //!    asymptotically: its corner is at μ = ∞.
 
-use crate::arch::Arch;
+use crate::arch::{Arch, ETA_TOP};
 use crate::collapse_mode::CollapseMode;
 use crate::contact::Contact;
 use crate::friction::{friction_limit, FrictionLimit};
@@ -25,6 +25,7 @@ use crate::limit_states::search;
 use crate::settings::Settings;
 use crate::statics::{internal_forces, Reactions};
 
+mod onset;
 mod sample;
 mod tracer;
 mod transition;
@@ -124,6 +125,26 @@ pub struct LimitCurve {
     pub solves: usize,
     /// Number of boundary samples searched for limit states above η_s.
     pub samples: usize,
+    /// Where the static boundary reaches the thickness limit η → 2 (`ETA_TOP`) at a
+    /// friction above μ_ms: the arch then needs η ≥ 2 at every μ below it, there is no
+    /// purely-sliding corner within 0 < η < 2, and this μ is the least friction at which
+    /// the arch stands.
+    pub thickness_limit: Option<ThicknessLimit>,
+}
+
+/// The end of the static boundary at the thickness limit (see
+/// [`LimitCurve::thickness_limit`]).
+#[derive(Debug, Clone)]
+pub struct ThicknessLimit {
+    /// Friction coefficient where η_s reaches the limit.
+    pub mu: f64,
+    /// η there (`ETA_TOP`, just below 2).
+    pub eta: f64,
+    /// The lowest branch's pattern there.
+    pub pattern: Vec<Contact>,
+    /// True when located along the branch by root finding (to adjacent floats in μ);
+    /// false when bracketed by bisection on the solver's status.
+    pub exact: bool,
 }
 
 impl LimitCurve {
@@ -188,6 +209,7 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
             no_equilibrium: tr.no_equilibrium,
             solves: 0,
             samples: 0,
+            thickness_limit: None,
         };
     };
     let inf = tr.sample(f64::INFINITY);
@@ -207,6 +229,7 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
                 no_equilibrium: tr.no_equilibrium,
                 solves: tr.solves + 1,
                 samples: 0,
+                thickness_limit: None,
             };
         }
     }
@@ -252,13 +275,43 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
             changes.extend(tr.locate(&a, &b, 24));
         }
     }
-    // the corner with the vertical purely-sliding branch (slope −∞ on its left)
-    if let Some(low) = samples.last() {
+    // Where the lowest branch ends: at the corner with the vertical purely-sliding branch
+    // (slope −∞ on its left), or — when samples above μ_ms have no equilibrium at any
+    // η < 2 (η_ms would be ≥ 2) — where η_s reaches the thickness limit.
+    let no_eq_above = samples.last().and_then(|low| {
+        tr.no_equilibrium
+            .iter()
+            .copied()
+            .filter(|&m| m > fl.mu && m < low.mu)
+            .reduce(f64::max)
+    });
+    let mut thickness_limit = None;
+    if let (Some(low), Some(ne)) = (samples.last(), no_eq_above) {
+        thickness_limit = Some(
+            match onset::reach_eta(
+                arch,
+                &low.pattern,
+                (low.x, low.eta, low.mu),
+                ne,
+                ETA_TOP,
+                settings,
+            ) {
+                Some(o) => ThicknessLimit {
+                    mu: o.mu,
+                    eta: o.eta,
+                    pattern: o.pattern,
+                    exact: true,
+                },
+                None => tr.thickness_limit_by_bisection(ne, low),
+            },
+        );
+    } else if let Some(low) = samples.last() {
         let between = [tr.mode_of(&low.pattern), CollapseMode::PurelySliding];
         let start = (low.x, low.eta, low.mu);
         let range = (fl.mu * (1.0 - settings.root_slack), low.mu);
         let c = tr
             .union_newton(&low.pattern, &fl.pattern, start, range, between, true)
+            .or_else(|| tr.follow_to_mu_ms(low, fl.mu, between))
             .map(|mut c| {
                 c.kink = true;
                 c
@@ -311,7 +364,16 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
         }
         upper = (c.mu, c.eta);
     }
-    if let Some(last) = finite.last() {
+    if let (Some(t), Some(low)) = (&thickness_limit, samples.last()) {
+        branches.push(Branch {
+            mode: tr.mode_of(&low.pattern),
+            mu_min: t.mu,
+            mu_max: upper.0,
+            eta_min: upper.1,
+            eta_max: t.eta,
+            pattern: low.pattern.clone(),
+        });
+    } else if let Some(last) = finite.last() {
         branches.push(Branch {
             mode: CollapseMode::PurelySliding,
             mu_min: fl.mu,
@@ -335,6 +397,7 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
         no_equilibrium: tr.no_equilibrium,
         solves: tr.solves,
         samples: searched,
+        thickness_limit,
     }
 }
 

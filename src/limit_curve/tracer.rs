@@ -4,8 +4,8 @@
 //! converges, bisection in μ. Each located change is checked against the boundary itself
 //! (η equals η_s at its μ) and classified by the one-sided slopes of η_s(μ) there.
 
-use super::transition;
 use super::Corner;
+use super::{onset, transition};
 use crate::arch::Arch;
 use crate::collapse_mode::{classify, CollapseMode};
 use crate::contact::ContactKind;
@@ -229,6 +229,10 @@ impl Tracer<'_> {
                 union.push(*c);
             }
         }
+        // a determined system: |U| + free rows for 5 + free unknowns (x, η, μ, angles)
+        if union.len() < 5 {
+            return None;
+        }
         let from = State {
             arch: self.arch,
             eta: start.1,
@@ -284,9 +288,128 @@ impl Tracer<'_> {
         None
     }
 
+    /// A contact of one sample's pattern joining the other's branch ([`onset`]): along
+    /// `a`'s branch down to `b.mu`, and along `b`'s up to `a.mu`; the first onset met
+    /// from each side is tried.
+    fn onset(&mut self, a: &Sample, b: &Sample, between: [CollapseMode; 2]) -> Option<Corner> {
+        let range = (b.mu, a.mu);
+        let track = self.settings.track_angle;
+        let new_in = |p: &[Contact], q: &[Contact]| -> Vec<Contact> {
+            q.iter()
+                .filter(|c| {
+                    !p.iter().any(|d| {
+                        d.kind == c.kind && d.at == c.at && (d.beta - c.beta).abs() < track
+                    })
+                })
+                .copied()
+                .collect()
+        };
+        for (from, to) in [(a, b), (b, a)] {
+            let mut found: Vec<onset::OnBranch> = new_in(&from.pattern, &to.pattern)
+                .iter()
+                .filter_map(|c| {
+                    onset::locate(
+                        self.arch,
+                        &from.pattern,
+                        c,
+                        (from.x, from.eta, from.mu),
+                        to.mu,
+                        self.settings,
+                    )
+                })
+                .collect();
+            // the first onset met when leaving `from`
+            found.sort_by(|p, q| (p.mu - from.mu).abs().total_cmp(&(q.mu - from.mu).abs()));
+            if let Some(o) = found.into_iter().next() {
+                if let Some(c) =
+                    self.accept((o.mu, o.eta, o.x), &o.pattern, range, between, 0.0, false)
+                {
+                    return Some(c);
+                }
+            }
+        }
+        None
+    }
+
+    /// The corner with the vertical purely-sliding branch reached along the branch of the
+    /// lowest sample `low`: its pattern followed to μ = μ_ms (Newton with η unknown), where
+    /// the friction-limiting contacts become active too. Used when the union of the two
+    /// patterns is not a determined system (a three-contact KKT branch, or a sliding
+    /// contact that moves between the sample and μ_ms).
+    pub(super) fn follow_to_mu_ms(
+        &mut self,
+        low: &Sample,
+        mu_ms: f64,
+        between: [CollapseMode; 2],
+    ) -> Option<Corner> {
+        let start = State {
+            arch: self.arch,
+            eta: low.eta,
+            mu: mu_ms,
+            x: low.x,
+        };
+        let r = solve_system(&start, &low.pattern, Unknowns::Eta, self.settings).ok()?;
+        let joints = self.active(mu_ms, r.eta, r.x);
+        let range = (mu_ms * (1.0 - self.settings.root_slack), low.mu);
+        self.accept(
+            (mu_ms, r.eta, r.x),
+            &joints,
+            range,
+            between,
+            r.residual,
+            true,
+        )
+    }
+
+    /// The thickness limit bracketed by bisection in μ between `ne` (no equilibrium) and
+    /// the sample `low` (a boundary point), when it cannot be reached along the branch.
+    pub(super) fn thickness_limit_by_bisection(
+        &mut self,
+        ne: f64,
+        low: &Sample,
+    ) -> super::ThicknessLimit {
+        let (mut lo, mut hi) = (ne, low.mu);
+        let mut pattern = low.pattern.clone();
+        for _ in 0..60 {
+            if hi - lo <= self.settings.same_root * hi {
+                break;
+            }
+            let m = 0.5 * (lo + hi);
+            match self.boundary(m) {
+                Ok(s) => {
+                    hi = m;
+                    pattern = s.pattern;
+                }
+                Err(_) => lo = m,
+            }
+        }
+        super::ThicknessLimit {
+            mu: hi,
+            eta: crate::arch::ETA_TOP,
+            pattern,
+            exact: false,
+        }
+    }
+
     /// The pattern changes between samples `a` (higher μ) and `b` (lower μ) with
-    /// different patterns.
+    /// different patterns: the first located, then whatever lies between it and `b`.
     pub(super) fn locate(&mut self, a: &Sample, b: &Sample, depth: usize) -> Vec<Corner> {
+        let mut out = self.locate_one(a, b, depth);
+        if let (Some(c), true) = (out.last(), depth > 0) {
+            if c.exact && c.mu > b.mu * (1.0 + 20.0 * self.settings.slope_step) {
+                // the boundary just below the change: another change before `b`?
+                let below = c.mu * (1.0 - 10.0 * self.settings.slope_step);
+                if let Some(m) = self.sample(below) {
+                    if m.sig != b.sig {
+                        out.extend(self.locate(&m, b, depth - 1));
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    fn locate_one(&mut self, a: &Sample, b: &Sample, depth: usize) -> Vec<Corner> {
         let between = [self.mode_of(&a.pattern), self.mode_of(&b.pattern)];
         let range = (b.mu, a.mu);
         for start in [b, a] {
@@ -302,6 +425,9 @@ impl Tracer<'_> {
             }
         }
         if let Some(c) = self.smooth(a, b, between) {
+            return vec![c];
+        }
+        if let Some(c) = self.onset(a, b, between) {
             return vec![c];
         }
         let mid_mu = (a.mu * b.mu).sqrt();

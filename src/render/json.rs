@@ -454,6 +454,14 @@ struct LimitBranchJson {
 }
 
 #[derive(Debug, Serialize)]
+struct ThicknessLimitJson {
+    mu: f64,
+    eta: f64,
+    pattern: Vec<Contact>,
+    exact: bool,
+}
+
+#[derive(Debug, Serialize)]
 struct UnresolvedJson {
     mu: f64,
     message: String,
@@ -472,6 +480,9 @@ pub struct ModesJson {
     transitions: Vec<CornerJson>,
     /// Limit states above the boundary, by samples.
     limit_branches: Vec<LimitBranchJson>,
+    /// Where the boundary reaches the thickness limit η → 2 above μ_ms (then no
+    /// purely-sliding corner, and `mu_min` is this μ), else `null`.
+    thickness_limit: Option<ThicknessLimitJson>,
     /// The least friction at which the arch stands at some thickness (μ_ms); the same
     /// value as `mu_ms`, under the name the contract gives it.
     mu_min: Option<f64>,
@@ -540,7 +551,13 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> ModesJson {
                 samples: b.samples,
             })
             .collect(),
-        mu_min: curve.mu_ms,
+        thickness_limit: curve.thickness_limit.as_ref().map(|t| ThicknessLimitJson {
+            mu: t.mu,
+            eta: t.eta,
+            pattern: t.pattern.clone(),
+            exact: t.exact,
+        }),
+        mu_min: curve.thickness_limit.as_ref().map(|t| t.mu).or(curve.mu_ms),
         mu_ms: curve.mu_ms,
         no_collapse: curve.no_collapse.clone(),
         no_equilibrium: curve.no_equilibrium.clone(),

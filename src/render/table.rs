@@ -494,6 +494,14 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
             degrees(&b.pattern)
         );
     }
+    if let Some(t) = &curve.thickness_limit {
+        let _ = writeln!(
+            s,
+            "\nthe boundary reaches the thickness limit eta -> 2 at mu = {}{}: below it no thickness\n  eta < 2 stands (the purely sliding corner at mu_ms would need eta >= 2)",
+            sig(t.mu, 12),
+            if t.exact { "" } else { " (bracketed by bisection)" }
+        );
+    }
     changes(
         &mut s,
         arch,

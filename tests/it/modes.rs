@@ -401,3 +401,49 @@ fn gap_at_a_sample_is_decided() {
     assert!(c.corners.iter().chain(&c.transitions).all(|k| k.exact));
     assert!(c.corners.iter().all(|k| k.kink));
 }
+
+/// An unsymmetric arch with true-centroid weight (from the random `modes` sweep) whose
+/// boundary reaches the thickness limit η → 2 at μ ≈ 2.063, above μ_ms = 1.9626: no
+/// thickness η < 2 stands below it, so there is no purely-sliding corner (it would need
+/// η_ms ≥ 2) — it used to be reported as a bracketed corner at μ_ms with the lowest
+/// sample's η. Its top branch is a three-contact (curved, KKT) pattern, where a sliding
+/// contact joins smoothly (zero multiplier at onset): located by root finding along the
+/// branch, not by Newton on the union (not a determined system there).
+#[test]
+fn boundary_reaching_the_thickness_limit() {
+    let arch = Arch::new(
+        -1.0782022579731156,
+        3.007207693287576,
+        WeightModel::Centroid,
+    )
+    .unwrap();
+    let s = Settings::default();
+    let c = trace(&arch, &s);
+    assert!(c.unresolved.is_empty(), "{:?}", c.unresolved);
+    let t = c.thickness_limit.as_ref().expect("a thickness limit");
+    assert!(t.eta > 2.0 * (1.0 - 1e-6));
+    let mu_ms = c.mu_ms.unwrap();
+    assert!(t.mu > mu_ms * 1.01, "{} vs {mu_ms}", t.mu);
+    // just above: it stands (η_s < 2); just below: nothing stands
+    let at = |mu: f64| arch_enum::limit::solve(&arch, mu, &s).unwrap().outcome;
+    assert!(matches!(
+        at(t.mu * (1.0 + 1e-9)),
+        arch_enum::limit::Outcome::Limit(_)
+            | arch_enum::limit::Outcome::Unresolved {
+                least_static: Some(_),
+                ..
+            }
+    ));
+    assert!(matches!(
+        at(t.mu * (1.0 - 1e-9)),
+        arch_enum::limit::Outcome::NoEquilibrium { .. }
+    ));
+    assert!(c
+        .branches
+        .iter()
+        .all(|b| b.mode != CollapseMode::PurelySliding));
+    // the first change (the horizontal branch meeting the sliding one) is exact and smooth
+    let first = c.transitions.iter().find(|k| k.mu.is_finite()).unwrap();
+    assert!(first.exact);
+    assert!((first.eta - c.branches[0].eta_min).abs() < 1e-12);
+}
