@@ -395,14 +395,25 @@ impl Tracer<'_> {
     /// different patterns: the first located, then whatever lies between it and `b`.
     pub(super) fn locate(&mut self, a: &Sample, b: &Sample, depth: usize) -> Vec<Corner> {
         let mut out = self.locate_one(a, b, depth);
-        if let (Some(c), true) = (out.last(), depth > 0) {
-            if c.exact && c.mu > b.mu * (1.0 + 20.0 * self.settings.slope_step) {
-                // the boundary just below the change: another change before `b`?
-                let below = c.mu * (1.0 - 10.0 * self.settings.slope_step);
-                if let Some(m) = self.sample(below) {
-                    if m.sig != b.sig {
-                        out.extend(self.locate(&m, b, depth - 1));
-                    }
+        let Some(c) = out.last().cloned() else {
+            return out;
+        };
+        if !c.exact || depth == 0 {
+            return out;
+        }
+        // the boundary just beside the change: other changes between it and a sample?
+        let step = 10.0 * self.settings.slope_step;
+        if c.mu < a.mu * (1.0 - 2.0 * step) {
+            if let Some(m) = self.sample(c.mu * (1.0 + step)) {
+                if m.sig != a.sig {
+                    out.extend(self.locate(a, &m, depth - 1));
+                }
+            }
+        }
+        if c.mu > b.mu * (1.0 + 2.0 * step) {
+            if let Some(m) = self.sample(c.mu * (1.0 - step)) {
+                if m.sig != b.sig {
+                    out.extend(self.locate(&m, b, depth - 1));
                 }
             }
         }

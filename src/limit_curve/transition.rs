@@ -24,14 +24,25 @@ use crate::settings::Settings;
 use crate::statics::{actions, reaction_scale, Reactions};
 use nalgebra::{DMatrix, DVector};
 
-/// The extra condition of a smooth change: the β-derivative `order` of the activation
-/// function of `pattern[contact]` vanishes too.
+/// The extra condition of a smooth change.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(super) struct Extra {
-    /// Index of the contact in the pattern.
-    pub(super) contact: usize,
-    /// 2 for a merge, 1 for a tangency reaching a springing.
-    pub(super) order: usize,
+pub(super) enum Extra {
+    /// The β-derivative `order` of the activation function of `pattern[contact]` vanishes
+    /// too: 2 for a merge, 1 for a tangency reaching a springing.
+    Flat {
+        /// Index of the contact in the pattern.
+        contact: usize,
+        /// Order of the derivative.
+        order: usize,
+    },
+    /// Two interior contacts of different kinds meet at one joint (a hinge crossing a
+    /// sliding joint): their angles are equal.
+    Coincide {
+        /// Index of one contact in the pattern.
+        a: usize,
+        /// Index of the other.
+        b: usize,
+    },
 }
 
 /// A located smooth change: the state on the boundary where it happens.
@@ -59,9 +70,9 @@ pub(super) fn locate(
     // at the crown (there d³φ/dβ³ = 0 too, and a free angle is resolved only to the
     // cube root of the residual).
     let mut pattern = pattern.to_vec();
-    if arch.is_symmetric() {
+    if let (true, Extra::Flat { contact, .. }) = (arch.is_symmetric(), extra) {
         let mid = 0.5 * (arch.beta_right() + arch.beta_left());
-        let c = &mut pattern[extra.contact];
+        let c = &mut pattern[contact];
         if c.free && (c.beta - mid).abs() < settings.track_angle {
             c.beta = mid;
             c.free = false;
@@ -76,12 +87,15 @@ pub(super) fn locate(
         Some(k) => z[5 + k],
         None => pattern[i].beta,
     };
-    let extra_row = |z: &[f64]| {
-        let c = &pattern[extra.contact];
-        let (eta, mu) = (z[3], z[4]);
-        actions(arch, eta, beta_of(z, extra.contact))
-            .activation(c.kind, extra.order, eta, mu)
-            .at(&[z[0], z[1], z[2]])
+    let extra_row = |z: &[f64]| match extra {
+        Extra::Flat { contact, order } => {
+            let c = &pattern[contact];
+            let (eta, mu) = (z[3], z[4]);
+            actions(arch, eta, beta_of(z, contact))
+                .activation(c.kind, order, eta, mu)
+                .at(&[z[0], z[1], z[2]])
+        }
+        Extra::Coincide { a, b } => beta_of(z, a) - beta_of(z, b),
     };
     let eval = |z: &[f64]| -> Option<(Vec<f64>, Vec<Vec<f64>>)> {
         let (mut f, mut j) = residual_and_jacobian(arch, pattern, z[3], z[4], Unknowns::EtaMu, z)?;
@@ -164,21 +178,30 @@ pub(super) fn locate(
 /// The smooth changes that could turn pattern `p` into `q`: for each kind with more
 /// interior contacts in `p` than in `q`, a merge on `q`'s interior contacts of that kind
 /// (and the reverse); for each kind interior in one and at a springing in the other, the
-/// tangency reaching that springing. Each entry: which of the two patterns carries the
-/// system (false: `p`, true: `q`) and the extra condition.
+/// tangency reaching that springing; for two interior contacts of different kinds whose
+/// order along the arch is reversed in the other pattern, their meeting at one joint. Each
+/// entry: which of the two patterns carries the system (false: `p`, true: `q`) and the
+/// extra condition.
 pub(super) fn candidates(p: &[Contact], q: &[Contact]) -> Vec<(bool, Extra)> {
     let count = |s: &[Contact], k, at| s.iter().filter(|c| c.kind == k && c.at == at).count();
+    let interior = |c: &Contact| c.at == Location::Interior && c.free;
+    // the angle of the interior contact of `c`'s kind in `s` nearest to `c`
+    let nearest = |s: &[Contact], c: &Contact| {
+        s.iter()
+            .filter(|d| interior(d) && d.kind == c.kind)
+            .map(|d| d.beta)
+            .min_by(|a, b| (a - c.beta).abs().total_cmp(&(b - c.beta).abs()))
+    };
     let mut out = Vec::new();
     for (on_q, merged, split) in [(true, q, p), (false, p, q)] {
         for (i, c) in merged.iter().enumerate() {
             let (k, at) = (c.kind, c.at);
-            if at == Location::Interior
-                && c.free
+            if interior(c)
                 && count(split, k, Location::Interior) > count(merged, k, Location::Interior)
             {
                 out.push((
                     on_q,
-                    Extra {
+                    Extra::Flat {
                         contact: i,
                         order: 2,
                     },
@@ -190,11 +213,22 @@ pub(super) fn candidates(p: &[Contact], q: &[Contact]) -> Vec<(bool, Extra)> {
             {
                 out.push((
                     on_q,
-                    Extra {
+                    Extra::Flat {
                         contact: i,
                         order: 1,
                     },
                 ));
+            }
+        }
+        for (a, b) in (0..merged.len()).flat_map(|a| (a + 1..merged.len()).map(move |b| (a, b))) {
+            let (ca, cb) = (&merged[a], &merged[b]);
+            if !(interior(ca) && interior(cb) && ca.kind != cb.kind) {
+                continue;
+            }
+            if let (Some(na), Some(nb)) = (nearest(split, ca), nearest(split, cb)) {
+                if (ca.beta < cb.beta) != (na < nb) {
+                    out.push((on_q, Extra::Coincide { a, b }));
+                }
             }
         }
     }

@@ -447,3 +447,69 @@ fn boundary_reaching_the_thickness_limit() {
     assert!(first.exact);
     assert!((first.eta - c.branches[0].eta_min).abs() < 1e-12);
 }
+
+/// An intrados hinge crossing a sliding joint (issue 10's "a hinge crossing a sliding
+/// joint"), on an unsymmetric arch from the random `modes` sweep: above the change the
+/// hinge lies on the right of the sliding joint, below it on the left; at the change both
+/// sit at one joint. Located exactly (the two angles equal as the extra condition), η equal
+/// to the solver's η_s there, and the order of the two contacts in the solver's own
+/// patterns just above and below is reversed.
+#[test]
+fn hinge_crossing_a_sliding_joint() {
+    let arch = Arch::new(
+        -1.0478837979981601,
+        3.0669448626338407,
+        WeightModel::Centreline,
+    )
+    .unwrap();
+    let s = Settings::default();
+    let c = trace(&arch, &s);
+    assert!(c.corners.iter().chain(&c.transitions).all(|k| k.exact));
+    let t = c
+        .transitions
+        .iter()
+        .find(|k| {
+            let i = k
+                .joints
+                .iter()
+                .find(|j| j.kind == ContactKind::HingeIntrados);
+            let sl = k.joints.iter().find(|j| j.kind == ContactKind::SlideMinus);
+            matches!((i, sl), (Some(i), Some(sl)) if (i.beta - sl.beta).abs() < 1e-9)
+        })
+        .expect("a transition where I and S- meet");
+    // the solver's least admissible state and its active contacts (not the limit state
+    // above it, which `ls.pattern` is when η_s carries no mechanism)
+    let order = |mu: f64| {
+        let sol = arch_enum::limit::solve(&arch, mu, &s).unwrap();
+        let (eta, x) = match sol.outcome {
+            arch_enum::limit::Outcome::Limit(ls) => (ls.eta_static, ls.x_static),
+            arch_enum::limit::Outcome::Unresolved {
+                least_static: Some(st),
+                ..
+            } => st,
+            other => panic!("{other:?}"),
+        };
+        let st = arch_enum::state::State {
+            arch: &arch,
+            eta,
+            mu,
+            x,
+        };
+        let active = st.verdict(ContactKind::active_at(mu), &s).active;
+        let b = |k: ContactKind| {
+            active
+                .iter()
+                .filter(|j| j.kind == k && j.at == Location::Interior)
+                .map(|j| j.beta)
+                .fold(f64::INFINITY, f64::min)
+        };
+        (
+            eta,
+            b(ContactKind::HingeIntrados) < b(ContactKind::SlideMinus),
+        )
+    };
+    let (above, below) = (order(t.mu * (1.0 + 1e-4)), order(t.mu * (1.0 - 1e-4)));
+    assert_ne!(above.1, below.1, "the order must reverse");
+    let (eta, _) = order(t.mu);
+    assert!((eta - t.eta).abs() < 1e-10 * eta, "{eta} vs {}", t.eta);
+}
