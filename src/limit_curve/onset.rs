@@ -153,6 +153,12 @@ pub(super) fn locate(
     let g = |x: Reactions, eta: f64, mu: f64| {
         peak_value(arch, joining, (x, eta, mu), settings).map(|p| p.0)
     };
+    // the contact must be clearly inactive at the branch's own sample (not one of its own
+    // contacts that the scan did not separate from a neighbour of the same kind), else
+    // there is no onset to find
+    if g(from.0, from.1, from.2)? > -10.0 * settings.adm_tol {
+        return None;
+    }
     let (mu, x, eta, mut cs) = root_along(arch, pattern, from, far_mu, settings, &g, false)?;
     let (_, contact) = peak_value(arch, joining, (x, eta, mu), settings)?;
     cs.push(Contact {

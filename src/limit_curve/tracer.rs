@@ -59,19 +59,15 @@ impl Tracer<'_> {
                 })
             }
         };
-        let (eta, x, pattern) = match &solution.outcome {
-            Outcome::Limit(ls) if ls.eta == ls.eta_static => (ls.eta, ls.x, ls.pattern.clone()),
-            Outcome::Limit(ls) => (
-                ls.eta_static,
-                ls.x_static,
-                self.active(mu, ls.eta_static, ls.x_static),
-            ),
+        let (eta, x) = match &solution.outcome {
+            Outcome::Limit(ls) => (ls.eta_static, ls.x_static),
             Outcome::Unresolved {
                 least_static: Some((eta, x)),
                 ..
-            } => (*eta, *x, self.active(mu, *eta, *x)),
+            } => (*eta, *x),
             other => return Err(other.clone()),
         };
+        let pattern = self.sample_pattern(mu, eta, x);
         Ok(Sample {
             mu,
             eta,
@@ -81,6 +77,7 @@ impl Tracer<'_> {
         })
     }
 
+    /// The contacts active at (x, η, μ) (the scan's).
     fn active(&self, mu: f64, eta: f64, x: Reactions) -> Vec<Contact> {
         let st = State {
             arch: self.arch,
@@ -89,6 +86,60 @@ impl Tracer<'_> {
             x,
         };
         st.verdict(ContactKind::active_at(mu), self.settings).active
+    }
+
+    /// The pattern of a boundary sample: the scan's active contacts, plus any active
+    /// maximum of the same kind that the scan's grid did not separate from one of them (two
+    /// tangencies closer than a grid cell, as where two hinges approach each other before
+    /// they merge): each active interior contact's neighbourhood of ±2 cells is searched on
+    /// a grid 100 times finer, maxima bracketed by sign changes of dφ/dβ and bisected to
+    /// the resolution of β; maxima closer than two fine cells to a known one are the same.
+    fn sample_pattern(&self, mu: f64, eta: f64, x: Reactions) -> Vec<Contact> {
+        let st = State {
+            arch: self.arch,
+            eta,
+            mu,
+            x,
+        };
+        let mut active = st.verdict(ContactKind::active_at(mu), self.settings).active;
+        if !matches!(self.arch.layout(), crate::arch::JointLayout::Continuous) {
+            return active;
+        }
+        let (lo, hi) = (self.arch.beta_right(), self.arch.beta_left());
+        let cell = (hi - lo) / self.settings.scan_points as f64;
+        let mut extra = Vec::new();
+        for c in active.iter().filter(|c| c.at == Location::Interior) {
+            let scale =
+                crate::statics::magnitude(c.kind, eta, mu, &x, self.settings.magnitude_floor);
+            let (a, b) = ((c.beta - 2.0 * cell).max(lo), (c.beta + 2.0 * cell).min(hi));
+            let n = 400;
+            let d1 = |beta: f64| st.phi(c.kind, beta)[1];
+            let grid: Vec<f64> = (0..=n).map(|i| a + (b - a) * i as f64 / n as f64).collect();
+            for w in grid.windows(2) {
+                let (mut l, mut r) = (w[0], w[1]);
+                if !(d1(l) > 0.0 && d1(r) <= 0.0) {
+                    continue;
+                }
+                for _ in 0..60 {
+                    let m = 0.5 * (l + r);
+                    if d1(m) > 0.0 {
+                        l = m;
+                    } else {
+                        r = m;
+                    }
+                }
+                let beta = 0.5 * (l + r);
+                let known = active.iter().chain(&extra).any(|d: &Contact| {
+                    d.kind == c.kind && (d.beta - beta).abs() < 2.0 * (b - a) / n as f64
+                });
+                if !known && st.phi(c.kind, beta)[0] >= -10.0 * self.settings.adm_tol * scale {
+                    extra.push(Contact { beta, ..*c });
+                }
+            }
+        }
+        active.extend(extra);
+        active.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.kind.cmp(&b.kind)));
+        active
     }
 
     /// The boundary at μ; what is not a boundary point is recorded by kind.
@@ -240,6 +291,12 @@ impl Tracer<'_> {
             x: start.0,
         };
         let r = solve_system(&from, &union, Unknowns::EtaMu, self.settings).ok()?;
+        // the union must determine the point: a rank-deficient Jacobian (e.g. a mirror
+        // pair of contacts on a symmetric arch duplicating rows) leaves a curve of
+        // solutions along one branch, and Newton stops anywhere on it
+        if !self.determined(&r.contacts, &r) {
+            return None;
+        }
         let active = signature(&self.active(r.mu, r.eta, r.x));
         let count =
             |s: &Signature, k: &(ContactKind, Location)| s.iter().filter(|c| *c == k).count();
@@ -286,6 +343,37 @@ impl Tracer<'_> {
             }
         }
         None
+    }
+
+    /// Whether the corner system of `contacts` (unknowns x, η, μ, free angles) has full
+    /// column rank at the solution `r` (relative singular value above `rank_tol` after
+    /// column equilibration).
+    fn determined(&self, contacts: &[Contact], r: &crate::refine::Refined) -> bool {
+        let mut z: Vec<f64> = r.x.to_vec();
+        z.extend([r.eta, r.mu]);
+        z.extend(contacts.iter().filter(|c| c.free).map(|c| c.beta));
+        let Some((_, rows)) = crate::refine::residual_and_jacobian(
+            self.arch,
+            contacts,
+            r.eta,
+            r.mu,
+            Unknowns::EtaMu,
+            &z,
+        ) else {
+            return false;
+        };
+        let mut m = nalgebra::DMatrix::from_fn(rows.len(), z.len(), |i, j| rows[i][j]);
+        if m.nrows() < m.ncols() {
+            return false;
+        }
+        for j in 0..m.ncols() {
+            let n = m.column(j).norm();
+            if n > 0.0 {
+                m.column_mut(j).scale_mut(1.0 / n);
+            }
+        }
+        let sv = m.singular_values();
+        sv.min() > self.settings.rank_tol * sv.max()
     }
 
     /// A contact of one sample's pattern joining the other's branch ([`onset`]): along
@@ -401,8 +489,9 @@ impl Tracer<'_> {
         if !c.exact || depth == 0 {
             return out;
         }
-        // the boundary just beside the change: other changes between it and a sample?
-        let step = 10.0 * self.settings.slope_step;
+        // the boundary beside the change (10⁻³ of μ away: nearer, a contact joining with a
+        // zero multiplier is within the activity tolerance): other changes before a sample?
+        let step = 1e3 * self.settings.slope_step;
         if c.mu < a.mu * (1.0 - 2.0 * step) {
             if let Some(m) = self.sample(c.mu * (1.0 + step)) {
                 if m.sig != a.sig {

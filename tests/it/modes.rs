@@ -272,8 +272,9 @@ fn crown_curvature(alpha: f64, mu: f64) -> f64 {
 }
 
 /// α = 1.05 (issue 10): the two mixed branches meet smoothly — the two intrados hinges of
-/// the upper branch reach the crown from both sides and go on as one (φ_I'' = 0 there).
-/// No corner between them; one transition, located exactly, equal to an independent
+/// the upper branch cross the sliding joints, then reach the crown from both sides and go
+/// on as one (φ_I'' = 0 there). No corner between them; the merge, located exactly, equal
+/// to an independent
 /// route (bisection in μ on the sign of φ_I''(π/2) at the least state) to 1e-11, and the
 /// issue's 2.3351897612 to its 11 digits.
 #[test]
@@ -293,9 +294,20 @@ fn alpha_1_05_smooth_transition_between_mixed_branches() {
         c.corners
     );
     assert!(c.corners.iter().all(|k| k.kink));
-    assert_eq!(c.transitions.len(), 1, "{:?}", c.transitions);
-    let t = &c.transitions[0];
-    assert!(t.exact && !t.kink);
+    // two smooth changes: the intrados hinges crossing the sliding joints (μ ≈ 2.4013),
+    // then merging at the crown
+    assert_eq!(c.transitions.len(), 2, "{:?}", c.transitions);
+    assert!(c.transitions.iter().all(|t| t.exact && !t.kink));
+    let cross = &c.transitions[0];
+    assert!(cross
+        .joints
+        .iter()
+        .any(|i| i.kind == ContactKind::HingeIntrados
+            && cross
+                .joints
+                .iter()
+                .any(|s| s.kind == ContactKind::SlideMinus && (s.beta - i.beta).abs() < 1e-9)));
+    let t = &c.transitions[1];
     assert!((t.slope_left - t.slope_right).abs() < 1e-6 * t.slope_left.abs());
     // independent route
     let (mut lo, mut hi) = (2.30, 2.40);
