@@ -14,7 +14,9 @@
 pub mod poly;
 pub mod sweep;
 
+use crate::admissibility::WorkingSet;
 use crate::arch::{Arch, InputError, JointLayout};
+use crate::search::margin_at;
 use crate::collapse_mode::classify;
 use crate::contact::{Contact, ContactKind, Location};
 use crate::limit::{solve, Outcome, Solution};
@@ -99,6 +101,9 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Strin
             settings.sweep_min_eta
         ));
     }
+    if let Some(ls) = hinges_only(arch, mu, eta_s, &x_s, mechanism_at_eta_s, settings) {
+        return Ok(ls);
+    }
     if !matches!(arch.layout(), JointLayout::Discrete(_)) {
         let attained = bounded(arch, &x_s, settings);
         return continuous(arch, mu, eta_s, attained, mechanism_at_eta_s, settings);
@@ -119,6 +124,38 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Strin
         above,
         events: sw.events,
         method: "sweep".into(),
+    })
+}
+
+/// At μ = ∞ every mechanism is made of hinges, and a hinge-only λ has λᵀφ(x) = L_e(λ)
+/// for every x (virtual work, formulation §6). At a limit state λᵀφ = 0, so L_e = 0 and
+/// every contact that moves is active at *every* admissible state: the admissible set
+/// P(η) has no interior. P(η) grows with η, so once a state with every φ strictly
+/// negative exists (a positive continuum margin, verified by the scan at the margin LP's
+/// state) there is no limit state at any larger η. Checked at η_s(1 + `root_slack`), the
+/// resolution at which η_s itself is decided: the search is then complete without a
+/// sweep. `None` when μ is finite or the margin there is not positive.
+fn hinges_only(
+    arch: &Arch,
+    mu: f64,
+    eta_s: f64,
+    x_s: &Reactions,
+    mechanism_at_eta_s: bool,
+    settings: &Settings,
+) -> Option<LimitStates> {
+    if mu.is_finite() {
+        return None;
+    }
+    let eta1 = eta_s * (1.0 + settings.root_slack);
+    let mut ws = WorkingSet::initial(arch);
+    let m = margin_at(arch, eta1, mu, ContactKind::active_at(mu), &mut ws, settings).ok()?;
+    (m.margin > 0.0).then(|| LimitStates {
+        eta_s,
+        attained: bounded(arch, x_s, settings),
+        mechanism_at_eta_s,
+        above: Vec::new(),
+        events: 0,
+        method: "hinges only (mu = inf): P(eta) has an interior just above eta_s".into(),
     })
 }
 
