@@ -525,3 +525,50 @@ fn hinge_crossing_a_sliding_joint() {
     let (eta, _) = order(t.mu);
     assert!((eta - t.eta).abs() < 1e-10 * eta, "{eta} vs {}", t.eta);
 }
+
+/// Issue 10: for α ∈ [1.030, 1.076] the "corners" between the two mixed branches used to
+/// be smooth pattern changes placed up to 4e-3 off. Across the range, every corner is a
+/// kink at either end of the mixed branches (the Couplet–Heyman end and μ_ms), every
+/// change between the mixed branches is a smooth transition, and all are exact.
+#[test]
+fn mixed_branches_meet_smoothly_across_alpha() {
+    let mixed = |m: CollapseMode| {
+        matches!(
+            m,
+            CollapseMode::MixedRotationalSliding | CollapseMode::MixedSlidingRotational
+        )
+    };
+    for alpha in [1.03, 1.04, 1.06, 1.07] {
+        let c = curve(alpha);
+        assert!(c.unresolved.is_empty(), "{alpha}: {:?}", c.unresolved);
+        assert!(!c.transitions.is_empty(), "{alpha}");
+        for k in c.corners.iter().chain(&c.transitions) {
+            assert!(k.exact, "{alpha}: {k:?}");
+        }
+        for k in &c.corners {
+            assert!(
+                k.kink && !(mixed(k.between[0]) && mixed(k.between[1])),
+                "{alpha}: {k:?}"
+            );
+        }
+    }
+}
+
+/// The unresolved hard case of the first round (an unsymmetric arch whose four binding
+/// contacts make a nearly singular system at η_s) is decided: η_s inside the old LP
+/// bracket [0.660876184503, 0.660876184525], a limit state there, unique.
+#[test]
+fn nearly_singular_unsymmetric_case_is_decided() {
+    let arch = Arch::new(-0.8826, 3.1084, WeightModel::Centreline).unwrap();
+    let sv =
+        arch_enum::limit_states::survey(&arch, 1.3310409406771477, &Settings::default()).unwrap();
+    let arch_enum::limit::Outcome::Limit(ls) = &sv.solution.outcome else {
+        panic!("{:?}", sv.solution.outcome)
+    };
+    assert!(
+        (0.660876184503..=0.660876184525).contains(&ls.eta_static),
+        "{}",
+        ls.eta_static
+    );
+    assert_eq!(sv.unique(), Some(true));
+}
