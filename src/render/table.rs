@@ -483,16 +483,8 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
         "mode", "mu from", "mu to", "eta from", "eta to"
     );
     for b in &curve.branches {
-        let _ = writeln!(
-            s,
-            "  {:<30} {:>15} {:>15}   {:>15} {:>15}   {}",
-            b.mode.name(),
-            fmt_opt_inf(b.mu_max, 10),
-            fmt_opt_inf(b.mu_min, 10),
-            fmt_opt_inf(b.eta_min, 10),
-            fmt_opt_inf(b.eta_max, 10),
-            degrees(&b.pattern)
-        );
+        let ends = [b.mu_max, b.mu_min, b.eta_min, b.eta_max];
+        let _ = writeln!(s, "{}   {}", branch_row(b.mode, ends), degrees(&b.pattern));
     }
     if let Some(t) = &curve.thickness_limit {
         let _ = writeln!(
@@ -533,14 +525,11 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
             "mode", "mu from", "mu to", "eta from", "eta to"
         );
         for b in &curve.limit_branches {
+            let ends = [b.mu_max, b.mu_min, b.eta_min, b.eta_max];
             let _ = writeln!(
                 s,
-                "  {:<30} {:>15} {:>15}   {:>15} {:>15}  {:>7}  {}",
-                b.mode.name(),
-                fmt_opt_inf(b.mu_max, 10),
-                fmt_opt_inf(b.mu_min, 10),
-                fmt_opt_inf(b.eta_min, 10),
-                fmt_opt_inf(b.eta_max, 10),
+                "{}  {:>7}  {}",
+                branch_row(b.mode, ends),
                 b.samples,
                 degrees(&b.pattern)
             );
@@ -551,6 +540,12 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
     }
     s.push_str(LEGEND);
     s
+}
+
+/// A branch's mode and its ends [μ from, μ to, η from, η to] as table columns.
+fn branch_row(mode: crate::collapse_mode::CollapseMode, ends: [f64; 4]) -> String {
+    let [a, b, c, d] = ends.map(|v| fmt_opt_inf(v, 10));
+    format!("  {:<30} {a:>15} {b:>15}   {c:>15} {d:>15}", mode.name())
 }
 
 /// A pattern as `kind@beta` in degrees.
