@@ -28,13 +28,21 @@ fn main() {
         ("alpha = 1, mu = 2", sym(1.0), 2.0),
         ("alpha = 1.15, mu = inf", sym(1.15), f64::INFINITY),
         ("alpha = -1.2, mu = inf", sym(-1.2), f64::INFINITY),
-        ("alpha = 0.8, mu = 1.154 (non-unique)", sym(0.8), 1.1540692474221415),
+        (
+            "alpha = 0.8, mu = 1.154 (non-unique)",
+            sym(0.8),
+            1.1540692474221415,
+        ),
         (
             "unsymmetric -0.67/2.72, mu = 0.96",
             Arch::new(-0.67, 2.72, WeightModel::Centreline).unwrap(),
             0.96,
         ),
-        ("100 blocks, mu = 0.35", sym(0.0).with_blocks(100).unwrap(), 0.35),
+        (
+            "100 blocks, mu = 0.35",
+            sym(0.0).with_blocks(100).unwrap(),
+            0.35,
+        ),
     ];
     println!(
         "| workload | solve [ms] | solve + search [ms] | ratio | limit states | method, events |"

@@ -15,6 +15,7 @@ use crate::refine::{solve_system, Unknowns};
 use crate::settings::Settings;
 use crate::state::State;
 use crate::statics::Reactions;
+use std::cmp::Ordering;
 
 pub(super) type Signature = Vec<(ContactKind, Location)>;
 
@@ -46,17 +47,17 @@ pub(super) struct Tracer<'a> {
 
 impl Tracer<'_> {
     /// The boundary at μ, without recording anything.
-    fn boundary(&mut self, mu: f64) -> Result<Sample, Outcome> {
+    fn boundary(&mut self, mu: f64) -> Result<Sample, Box<Outcome>> {
         self.solves += 1;
         let solution = match solve(self.arch, mu, self.settings) {
             Ok(s) => s,
             Err(e) => {
-                return Err(Outcome::Unresolved {
+                return Err(Box::new(Outcome::Unresolved {
                     eta_lo: 0.0,
                     eta_hi: 2.0,
                     reason: e.to_string(),
                     least_static: None,
-                })
+                }))
             }
         };
         let (eta, x) = match &solution.outcome {
@@ -65,7 +66,7 @@ impl Tracer<'_> {
                 least_static: Some((eta, x)),
                 ..
             } => (*eta, *x),
-            other => return Err(other.clone()),
+            other => return Err(Box::new(other.clone())),
         };
         let pattern = self.sample_pattern(mu, eta, x);
         Ok(Sample {
@@ -144,7 +145,7 @@ impl Tracer<'_> {
 
     /// The boundary at μ; what is not a boundary point is recorded by kind.
     pub(super) fn sample(&mut self, mu: f64) -> Option<Sample> {
-        match self.boundary(mu) {
+        match self.boundary(mu).map_err(|e| *e) {
             Ok(s) => Some(s),
             Err(Outcome::NoCollapse { .. }) => {
                 self.no_collapse.push(mu);
@@ -195,7 +196,10 @@ impl Tracer<'_> {
     /// no smoothness was shown).
     pub(super) fn is_kink(&self, lower: f64, upper: f64, eta: f64, mu: f64) -> bool {
         let scale = lower.abs().max(upper.abs()).max(eta / mu);
-        !((lower - upper).abs() <= self.settings.kink_slope_rel * scale)
+        let close = (lower - upper)
+            .abs()
+            .partial_cmp(&(self.settings.kink_slope_rel * scale));
+        !matches!(close, Some(Ordering::Less | Ordering::Equal))
     }
 
     /// A located change (its state and the pattern it was solved on, refined), checked:
@@ -233,7 +237,12 @@ impl Tracer<'_> {
         } else {
             self.slope(mu, eta, -1.0)
         };
-        let off = |e: f64| !((e - eta).abs() <= self.settings.boundary_match * eta);
+        let off = |e: f64| {
+            let d = (e - eta)
+                .abs()
+                .partial_cmp(&(self.settings.boundary_match * eta));
+            !matches!(d, Some(Ordering::Less | Ordering::Equal))
+        };
         if off(from_right) || off(from_left) {
             return None;
         }

@@ -16,12 +16,12 @@ pub mod sweep;
 
 use crate::admissibility::WorkingSet;
 use crate::arch::{Arch, InputError, JointLayout};
-use crate::search::margin_at;
 use crate::collapse_mode::classify;
 use crate::contact::{Contact, ContactKind, Location};
 use crate::limit::{solve, Outcome, Solution};
 use crate::mechanism;
 use crate::refine::{solve_system, Unknowns};
+use crate::search::margin_at;
 use crate::settings::Settings;
 use crate::state::State;
 use crate::statics::Reactions;
@@ -148,7 +148,15 @@ fn hinges_only(
     }
     let eta1 = eta_s * (1.0 + settings.root_slack);
     let mut ws = WorkingSet::initial(arch);
-    let m = margin_at(arch, eta1, mu, ContactKind::active_at(mu), &mut ws, settings).ok()?;
+    let m = margin_at(
+        arch,
+        eta1,
+        mu,
+        ContactKind::active_at(mu),
+        &mut ws,
+        settings,
+    )
+    .ok()?;
     (m.margin > 0.0).then(|| LimitStates {
         eta_s,
         attained: bounded(arch, x_s, settings),

@@ -330,11 +330,11 @@ impl Sweeper<'_> {
         // the first plane hit from x along d, skipping `skip`
         let shoot = |x: &Reactions, d: &[f64; 3], skip: &[usize]| -> Option<(usize, f64)> {
             let mut best: Option<(usize, f64)> = None;
-            for i in 0..self.planes.len() {
+            for (i, gi) in g.iter().enumerate() {
                 if skip.contains(&i) {
                     continue;
                 }
-                let rate = dot(&g[i], d);
+                let rate = dot(gi, d);
                 if rate <= 1e-14 * (1.0 + d.iter().map(|v| v.abs()).sum::<f64>()) {
                     continue;
                 }

@@ -381,7 +381,7 @@ fn symmetric_continuous_non_uniqueness_is_independently_checked() {
                 ((j, kind(c.kind)), rate)
             })
             .collect();
-        active.sort_by(|a, b| a.0.cmp(&b.0));
+        active.sort_by_key(|a| a.0);
         let state = RefLimitState {
             eta: s.eta,
             x: s.x,
