@@ -440,7 +440,7 @@ fn limit_branches<'a>(
             o.2 = false;
         }
         for st in above {
-            let sig = tracer::signature(&st.pattern);
+            let sig = tracer::signature(tr.arch, &st.pattern);
             let mode = tr.mode_of(&st.pattern);
             match open
                 .iter_mut()

@@ -17,9 +17,20 @@ use crate::state::State;
 use crate::statics::Reactions;
 use std::cmp::Ordering;
 
-pub(super) type Signature = Vec<(ContactKind, Location)>;
+/// What identifies a pattern along the limit curve: each contact's kind and place, and,
+/// on a discrete arch, its joint (a hinge moving to another joint changes the pattern;
+/// on a continuous arch contacts move with μ and only their kinds and places count).
+pub(super) type Signature = Vec<(ContactKind, Location, Option<u64>)>;
 
-pub(super) fn signature(p: &[Contact]) -> Signature {
+pub(super) fn signature(arch: &Arch, p: &[Contact]) -> Signature {
+    let discrete = matches!(arch.layout(), crate::arch::JointLayout::Discrete(_));
+    p.iter()
+        .map(|c| (c.kind, c.at, discrete.then(|| c.beta.to_bits())))
+        .collect()
+}
+
+/// Each contact's kind and place (for counting contacts of a kind).
+fn kinds(p: &[Contact]) -> Vec<(ContactKind, Location)> {
     p.iter().map(|c| (c.kind, c.at)).collect()
 }
 
@@ -73,7 +84,7 @@ impl Tracer<'_> {
             mu,
             eta,
             x,
-            sig: signature(&pattern),
+            sig: signature(self.arch, &pattern),
             pattern,
         })
     }
@@ -306,11 +317,12 @@ impl Tracer<'_> {
         if !self.determined(&r.contacts, &r) {
             return None;
         }
-        let active = signature(&self.active(r.mu, r.eta, r.x));
-        let count =
-            |s: &Signature, k: &(ContactKind, Location)| s.iter().filter(|c| *c == k).count();
+        let active = kinds(&self.active(r.mu, r.eta, r.x));
+        let count = |s: &[(ContactKind, Location)], k: &(ContactKind, Location)| {
+            s.iter().filter(|c| *c == k).count()
+        };
         let covers = |p: &[Contact]| {
-            let sig = signature(p);
+            let sig = kinds(p);
             sig.iter().all(|k| count(&active, k) >= count(&sig, k))
         };
         if !(covers(upper) && covers(lower)) {

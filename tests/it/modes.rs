@@ -572,3 +572,46 @@ fn nearly_singular_unsymmetric_case_is_decided() {
     );
     assert_eq!(sv.unique(), Some(true));
 }
+
+/// A discrete arch: a hinge moving to the next joint is a pattern change (a kink of
+/// η_s(μ), the least state jumps between vertices), not a continuation of the branch.
+/// Twenty voussoirs of the semicircle: on the mixed branch the intrados hinges move from
+/// the joints at 36° to those at 27°; the corner is exact, both hinges active there, and
+/// the solver's own least states on either side have the hinge at one joint each.
+#[test]
+fn discrete_hinge_moving_to_the_next_joint_is_a_corner() {
+    let arch = Arch::symmetric(0.0, WeightModel::Centreline)
+        .unwrap()
+        .with_blocks(20)
+        .unwrap();
+    let s = Settings::default();
+    let c = trace(&arch, &s);
+    let (j27, j36) = (27f64.to_radians(), 36f64.to_radians());
+    let k = c
+        .corners
+        .iter()
+        .find(|k| {
+            let has = |b: f64| {
+                k.joints
+                    .iter()
+                    .any(|j| j.kind == ContactKind::HingeIntrados && (j.beta - b).abs() < 1e-9)
+            };
+            has(j27) && has(j36)
+        })
+        .expect("the corner where the hinge moves from 36 to 27 degrees");
+    assert!(k.exact && k.kink, "{k:?}");
+    let hinge_at = |mu: f64| {
+        let sol = arch_enum::limit::solve(&arch, mu, &s).unwrap();
+        let arch_enum::limit::Outcome::Limit(ls) = sol.outcome else {
+            panic!("{:?}", sol.outcome)
+        };
+        assert_eq!(ls.eta, ls.eta_static);
+        ls.pattern
+            .iter()
+            .find(|j| j.kind == ContactKind::HingeIntrados)
+            .unwrap()
+            .beta
+    };
+    assert!((hinge_at(k.mu * (1.0 + 1e-6)) - j36).abs() < 1e-9);
+    assert!((hinge_at(k.mu * (1.0 - 1e-6)) - j27).abs() < 1e-9);
+}
