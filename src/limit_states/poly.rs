@@ -7,105 +7,153 @@
 //! pieces on which p is monotone, and each piece holds at most one root (bisection, then
 //! the bracket is narrowed to adjacent floats).
 
-/// Coefficients, lowest order first.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Poly(pub Vec<f64>);
+/// The most coefficients a polynomial of the sweep has (degree ≤ 11; the sweep's reach
+/// degree 5, products in tests degree 7).
+pub const MAX_COEFFS: usize = 12;
+
+/// Coefficients, lowest order first, in a fixed array (no allocation: the sweep builds
+/// millions of these).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Poly {
+    c: [f64; MAX_COEFFS],
+    n: usize,
+}
 
 impl Poly {
+    /// The polynomial with coefficients `c`, lowest order first (at most
+    /// [`MAX_COEFFS`]; panics beyond, a programming error).
+    pub fn from_coeffs(c: &[f64]) -> Poly {
+        assert!(
+            c.len() <= MAX_COEFFS,
+            "polynomial of degree {} too large",
+            c.len()
+        );
+        let mut p = Poly {
+            c: [0.0; MAX_COEFFS],
+            n: c.len(),
+        };
+        p.c[..c.len()].copy_from_slice(c);
+        p
+    }
+
+    /// The coefficients, lowest order first.
+    pub fn coeffs(&self) -> &[f64] {
+        &self.c[..self.n]
+    }
+
     /// The constant polynomial `c`.
     pub fn constant(c: f64) -> Poly {
-        Poly(vec![c])
+        Poly::from_coeffs(&[c])
     }
 
     /// a + b η.
     pub fn linear(a: f64, b: f64) -> Poly {
-        Poly(vec![a, b])
+        Poly::from_coeffs(&[a, b])
     }
 
     /// Value at `t` (Horner).
     pub fn eval(&self, t: f64) -> f64 {
-        self.0.iter().rev().fold(0.0, |acc, &c| acc * t + c)
+        self.coeffs().iter().rev().fold(0.0, |acc, &c| acc * t + c)
     }
 
     /// Sum.
     pub fn add(&self, o: &Poly) -> Poly {
-        let n = self.0.len().max(o.0.len());
-        Poly(
-            (0..n)
-                .map(|i| self.0.get(i).unwrap_or(&0.0) + o.0.get(i).unwrap_or(&0.0))
-                .collect(),
-        )
+        let mut r = Poly {
+            c: [0.0; MAX_COEFFS],
+            n: self.n.max(o.n),
+        };
+        for i in 0..r.n {
+            r.c[i] = self.c[i] + o.c[i];
+        }
+        r
     }
 
     /// Difference.
     pub fn sub(&self, o: &Poly) -> Poly {
-        self.add(&o.scale(-1.0))
+        let mut r = Poly {
+            c: [0.0; MAX_COEFFS],
+            n: self.n.max(o.n),
+        };
+        for i in 0..r.n {
+            r.c[i] = self.c[i] - o.c[i];
+        }
+        r
     }
 
     /// Product.
     pub fn mul(&self, o: &Poly) -> Poly {
-        if self.0.is_empty() || o.0.is_empty() {
-            return Poly(vec![]);
+        if self.n == 0 || o.n == 0 {
+            return Poly::from_coeffs(&[]);
         }
-        let mut c = vec![0.0; self.0.len() + o.0.len() - 1];
-        for (i, a) in self.0.iter().enumerate() {
-            for (j, b) in o.0.iter().enumerate() {
-                c[i + j] += a * b;
+        let n = self.n + o.n - 1;
+        assert!(n <= MAX_COEFFS, "product of degree {} too large", n - 1);
+        let mut r = Poly {
+            c: [0.0; MAX_COEFFS],
+            n,
+        };
+        for i in 0..self.n {
+            for j in 0..o.n {
+                r.c[i + j] += self.c[i] * o.c[j];
             }
         }
-        Poly(c)
+        r
     }
 
     /// `k` times the polynomial.
     pub fn scale(&self, k: f64) -> Poly {
-        Poly(self.0.iter().map(|c| c * k).collect())
+        let mut r = *self;
+        for v in r.c[..r.n].iter_mut() {
+            *v *= k;
+        }
+        r
     }
 
     /// Derivative.
     pub fn derivative(&self) -> Poly {
-        Poly(
-            self.0
-                .iter()
-                .enumerate()
-                .skip(1)
-                .map(|(i, c)| i as f64 * c)
-                .collect(),
-        )
+        let mut r = Poly {
+            c: [0.0; MAX_COEFFS],
+            n: self.n.saturating_sub(1),
+        };
+        for i in 1..self.n {
+            r.c[i - 1] = i as f64 * self.c[i];
+        }
+        r
     }
 
     /// Largest |coefficient|.
     pub fn norm(&self) -> f64 {
-        self.0.iter().fold(0.0, |m, c| m.max(c.abs()))
+        self.coeffs().iter().fold(0.0, |m, c| m.max(c.abs()))
     }
 
     /// The polynomial without trailing coefficients below `tol` × its norm (they are
     /// rounding residue of cancelled terms).
     pub fn trimmed(&self, tol: f64) -> Poly {
         let floor = tol * self.norm();
-        let mut c = self.0.clone();
-        while c.last().is_some_and(|v| v.abs() <= floor) {
-            c.pop();
+        let mut r = *self;
+        while r.n > 0 && r.c[r.n - 1].abs() <= floor {
+            r.n -= 1;
+            r.c[r.n] = 0.0;
         }
-        Poly(c)
+        r
     }
 
     /// Bounds of the polynomial over [lo, hi]: the least and largest of its Bernstein
     /// coefficients there (the range lies between them).
     pub fn bernstein_bounds(&self, lo: f64, hi: f64) -> (f64, f64) {
-        let n = self.0.len();
+        let n = self.n;
         if n == 0 {
             return (0.0, 0.0);
         }
         // coefficients in t ∈ [0, 1] with η = lo + (hi − lo) t (Horner-like shift)
         let w = hi - lo;
-        let mut c = self.0.clone();
+        let mut c = self.c;
         for k in 0..n {
             for j in (k..n - 1).rev() {
                 c[j] += lo * c[j + 1];
             }
         }
         let mut scale = 1.0;
-        for ck in c.iter_mut() {
+        for ck in c[..n].iter_mut() {
             *ck *= scale;
             scale *= w;
         }
@@ -137,12 +185,12 @@ impl Poly {
 }
 
 fn real_roots(p: &Poly, lo: f64, hi: f64) -> Vec<f64> {
-    let deg = p.0.len().saturating_sub(1);
+    let deg = p.n.saturating_sub(1);
     if deg == 0 {
         return vec![];
     }
     if deg == 1 {
-        let r = -p.0[0] / p.0[1];
+        let r = -p.c[0] / p.c[1];
         return if r >= lo && r <= hi { vec![r] } else { vec![] };
     }
     // critical points split [lo, hi] into monotone pieces

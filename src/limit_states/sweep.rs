@@ -90,7 +90,7 @@ fn planes(arch: &Arch, joints: &[f64], mu: f64) -> Vec<Plane> {
                 .collect();
             let quad = |p0: f64, p1: f64, p2: f64| {
                 let c2 = 0.5 * (p2 - 2.0 * p1 + p0);
-                Poly(vec![p0, p1 - p0 - c2, c2]).trimmed(1e-15)
+                Poly::from_coeffs(&[p0, p1 - p0 - c2, c2]).trimmed(1e-15)
             };
             out.push(Plane {
                 contact: Some(Contact {
