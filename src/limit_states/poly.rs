@@ -157,15 +157,25 @@ impl Poly {
             *ck *= scale;
             scale *= w;
         }
-        // power basis in t → Bernstein: b_i = Σ_{k≤i} C(i,k)/C(n−1,k) a_k
+        // power basis in t → Bernstein: b_i = Σ_{k≤i} C(i,k) a_k / C(deg,k), with the rows
+        // C(i, ·) of Pascal's triangle built by addition
         let deg = n - 1;
-        let binom = |a: usize, b: usize| -> f64 {
-            (0..b).fold(1.0, |acc, i| acc * (a - i) as f64 / (i + 1) as f64)
-        };
+        let mut cdeg = 1.0;
+        for (k, ck) in c[..n].iter_mut().enumerate() {
+            *ck /= cdeg;
+            cdeg = cdeg * (deg - k) as f64 / (k + 1) as f64;
+        }
+        let mut row = [0.0; MAX_COEFFS];
+        row[0] = 1.0;
         let mut lo_b = f64::INFINITY;
         let mut hi_b = f64::NEG_INFINITY;
         for i in 0..=deg {
-            let b: f64 = (0..=i).map(|k| binom(i, k) / binom(deg, k) * c[k]).sum();
+            if i > 0 {
+                for k in (1..=i).rev() {
+                    row[k] += row[k - 1];
+                }
+            }
+            let b: f64 = (0..=i).map(|k| row[k] * c[k]).sum();
             lo_b = lo_b.min(b);
             hi_b = hi_b.max(b);
         }
