@@ -48,16 +48,25 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
     let modes = ContactKind::active_at(mu);
     let mut ws = WorkingSet::initial(arch);
     let eta_max = crate::arch::ETA_TOP;
+    // an LP that fails (not infeasible: a numerical failure of the back end) leaves the
+    // question undecided; its text is kept only as the detail of that reason
+    let lp_failed = |at: &str, e: String| {
+        unresolved(
+            0.0,
+            2.0,
+            format!("the static margin LP could not be solved {at} (LP back end: {e}); no decision at this mu"),
+        )
+    };
     let top = match margin_at(arch, eta_max, mu, modes, &mut ws, settings) {
         Ok(m) => m,
-        Err(e) => return unresolved(0.0, 2.0, e),
+        Err(e) => return lp_failed("at the thickness limit", e),
     };
     if top.margin < 0.0 {
         return no_equilibrium(arch, mu, settings);
     }
     let bottom = match margin_at(arch, 0.0, mu, modes, &mut ws, settings) {
         Ok(m) => m,
-        Err(e) => return unresolved(0.0, 2.0, e),
+        Err(e) => return lp_failed("at vanishing thickness", e),
     };
     if bottom.margin >= -settings.adm_tol * reaction_scale(&bottom.x) {
         return Outcome::NoCollapse {
@@ -78,7 +87,7 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
     );
     let (lo, hi) = match bracket {
         Ok(b) => b,
-        Err(e) => return unresolved(0.0, 2.0, e),
+        Err(e) => return lp_failed("while bracketing eta_s", e),
     };
     let (eta_lo, eta_hi, m_hi) = (lo.0, hi.0, hi.2);
 
