@@ -615,3 +615,21 @@ fn discrete_hinge_moving_to_the_next_joint_is_a_corner() {
     assert!((hinge_at(k.mu * (1.0 + 1e-6)) - j36).abs() < 1e-9);
     assert!((hinge_at(k.mu * (1.0 - 1e-6)) - j27).abs() < 1e-9);
 }
+
+/// Issue 10: symmetric openings from −1.4 to 1.2 (step 0.2) are all decided — no
+/// unresolved sample, every corner and transition exact, every corner a kink — with the
+/// limit-state search at every sample. (Non-uniqueness near μ_ms for α ≈ 0.7–0.9 is a
+/// finding, checked independently for α = 0.8 above, not asserted here.)
+#[test]
+fn symmetric_openings_are_decided() {
+    for i in 0..=13 {
+        let alpha = -1.4 + 0.2 * i as f64;
+        let c = curve(alpha);
+        assert!(c.unresolved.is_empty(), "{alpha}: {:?}", c.unresolved);
+        assert!(!c.branches.is_empty(), "{alpha}");
+        for k in c.corners.iter().chain(&c.transitions) {
+            assert!(k.exact, "{alpha}: {k:?}");
+        }
+        assert!(c.corners.iter().all(|k| k.kink), "{alpha}");
+    }
+}
