@@ -95,6 +95,10 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Strin
         } => (*eta, *x, false),
         _ => return Err("no least admissible state to start from".into()),
     };
+    // an infimum approached only with reactions growing without bound is not a state: no
+    // limit state exists at η_s itself (its "mechanism" would balance no finite thrust;
+    // the virtual-work identity fails there)
+    let mechanism_at_eta_s = mechanism_at_eta_s && bounded(arch, &x_s, settings);
     if eta_s < settings.sweep_min_eta {
         return Err(format!(
             "eta_s = {eta_s:e} is below {:e}, where the sweep's polynomial roots are not resolved",

@@ -124,13 +124,18 @@ pub fn solve(survey: &Survey, explain: bool) -> String {
         sol.mu.atan().to_degrees()
     );
     match (&sol.outcome, &survey.states) {
-        (Outcome::Limit(ls), _) => {
+        (Outcome::Limit(ls), states) => {
             let _ = writeln!(
                 s,
                 "least thickness     eta_s = t/r = {}",
                 sig(ls.eta_static, 12)
             );
-            if ls.eta_static < ls.eta {
+            if states.as_ref().is_ok_and(|st| !st.attained) {
+                let _ = writeln!(
+                    s,
+                    "note                eta_s is an infimum, approached only as the reactions grow without\n                    bound (a weightless line of thrust fits the arch): no finite state there, so no\n                    limit state at eta_s"
+                );
+            } else if ls.eta_static < ls.eta {
                 let _ = writeln!(
                     s,
                     "note                the least admissible state carries no mechanism without dilatancy\n                    (non-associative gap): the least limit state found lies above it"

@@ -268,3 +268,29 @@ fn continuous_symmetric_mirror_pair() {
         );
     }
 }
+
+/// Issue 10: an arch whose springings lie nearly one above the other (a steep segment):
+/// its least thickness is an infimum approached only as the reactions grow without bound
+/// (the brute force finds it as the least η of a weightless recession direction). It used
+/// to come back as an ordinary limit state at η_s with reactions ~5e9 and a virtual-work
+/// mismatch; now η_s is reported as not attained and carries no limit state, as the
+/// reference says.
+#[test]
+fn infimum_is_not_a_limit_state() {
+    let joints = [
+        -0.38915676526385157,
+        -0.1936390113304968,
+        -0.056548071547972256,
+        0.17513886376402904,
+    ];
+    compare(joints[0], joints[3], &joints, false, f64::INFINITY).unwrap();
+    let arch = Arch::new(joints[0], joints[3], WeightModel::Centreline)
+        .unwrap()
+        .with_joints(&joints)
+        .unwrap();
+    let r = search(&arch, f64::INFINITY, &Settings::default())
+        .unwrap()
+        .unwrap();
+    assert!(!r.attained);
+    assert!(!r.mechanism_at_eta_s);
+}
