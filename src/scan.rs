@@ -21,11 +21,14 @@ impl State<'_> {
         [0, 1, 2].map(|k| a.activation(mode, k, self.eta, self.mu).at(&self.x))
     }
 
-    /// The local maxima of every active activation function over the joints of the arch.
+    /// The local maxima of every active activation function over the continuum; for a
+    /// discrete arch every joint's value (each joint is its own contact: two adjacent joints
+    /// active with the same kind are two contacts, and a local-maximum filter over the joint
+    /// sequence would drop one of them from the active set).
     pub fn peaks(&self, settings: &Settings) -> Vec<Peak> {
         match self.arch.layout() {
             JointLayout::Continuous => self.continuous_peaks(settings),
-            JointLayout::Discrete(joints) => self.discrete_peaks(joints, false),
+            JointLayout::Discrete(joints) => self.discrete_peaks(joints, true),
         }
     }
 
