@@ -104,11 +104,15 @@ pub(crate) enum Figure {
     },
     /// The arch to scale at eta*(mu) (or at --eta) with its lines of thrust and friction, and the mechanism.
     #[command(
-        after_help = "Example:\n  arch-enum plot arch --alpha 0 --mu 0.35 --out arch.png\n  arch-enum plot arch --alpha 1.0 --mu 2 --eta 0.9"
+        after_help = "Example:\n  arch-enum plot arch --alpha 0 --mu 0.35 --out arch.png\n  arch-enum plot arch --alpha 1.0 --mu 2 --eta 0.9\n  arch-enum plot arch --alpha 0.8 --mu 1.1540692474 --limit-states --out states.png"
     )]
     Arch {
         #[command(flatten)]
         state: StateArgs,
+        /// Draw every limit state at this mu with eta in [eta_s, 2), one panel each (the one
+        /// at eta_s when it carries a mechanism, then each above it: non-unique cases).
+        #[arg(long, conflicts_with = "eta")]
+        limit_states: bool,
         #[command(flatten)]
         output: Output,
     },
@@ -174,7 +178,14 @@ pub(crate) fn run(figure: Figure, settings: &Settings, io: &mut Io) -> Exit {
                 Err(e) => return io.bad_input(&e),
             }
         }
-        Figure::Arch { state: st, .. } => match plot_inputs(&st) {
+        Figure::Arch {
+            state: st,
+            limit_states,
+            ..
+        } => match plot_inputs(&st) {
+            Ok(a) if limit_states => {
+                figures::limit_scenes(&a, st.mu, settings).map(|s| plot_arch::svg_panels(&s))
+            }
             Ok(a) => figures::scene(&a, st.mu, st.eta, settings).map(|s| plot_arch::svg(&s)),
             Err(e) => return io.bad_input(&e),
         },

@@ -14,6 +14,7 @@ use crate::contact::Contact;
 use crate::kinematics::block_motions;
 use crate::limit::{solve, Outcome};
 use crate::limit_curve::{trace, LimitCurve};
+use crate::limit_states::{search, survey};
 use crate::mechanism::Mechanism;
 use crate::settings::Settings;
 use crate::state::State;
@@ -45,8 +46,12 @@ pub struct CurveData {
     /// The branches other than the purely sliding one: mode and points (μ, η) by
     /// decreasing μ.
     pub branches: Vec<(CollapseMode, Vec<(f64, f64)>)>,
-    /// Finite corners (μ, η).
+    /// Finite corners (μ, η): kinks of the boundary.
     pub corners: Vec<(f64, f64)>,
+    /// Finite smooth transitions (μ, η): pattern changes without a kink.
+    pub transitions: Vec<(f64, f64)>,
+    /// Limit states above the boundary (μ, η), at several μ inside each limit branch.
+    pub limit_states: Vec<(f64, f64)>,
     /// η of the asymptote at μ = ∞ when the top branch only approaches it.
     pub asymptote: Option<f64>,
     /// μ_ms: the purely sliding branch is the vertical line μ = μ_ms above the lowest point.
@@ -114,10 +119,35 @@ fn sample(
         .iter()
         .find(|c| c.mu.is_infinite())
         .map(|c| c.eta);
+    let transitions = curve
+        .transitions
+        .iter()
+        .filter(|c| c.mu.is_finite())
+        .map(|c| (c.mu, c.eta))
+        .collect();
+    // limit states above η_s: each limit branch searched again at up to five μ across
+    // its sampled range (one where it was seen at one sample only)
+    let mut limit_states = Vec::new();
+    for b in &curve.limit_branches {
+        let hi = b.mu_max.min(mu_cap);
+        let k = if b.samples > 1 { 5 } else { 1 };
+        for i in 0..k {
+            let mu = if k == 1 {
+                hi
+            } else {
+                hi * (b.mu_min / hi).powf(i as f64 / (k - 1) as f64)
+            };
+            if let Ok(Ok(found)) = search(arch, mu, settings) {
+                limit_states.extend(found.above.iter().map(|st| (mu, st.eta)));
+            }
+        }
+    }
     Some(CurveData {
         arch: arch.clone(),
         branches,
         corners,
+        transitions,
+        limit_states,
         asymptote,
         mu_ms,
     })
@@ -216,23 +246,97 @@ pub fn scene(
         }
         _ => (ls.eta, ls.x, ls.pattern.clone(), Some(ls)),
     };
-    let blocks = limit.as_ref().map_or_else(Vec::new, |l| {
-        block_motions(eta, &l.mechanism.contacts, &l.mechanism.rates)
+    Ok(build_scene(
+        arch,
+        mu,
+        (eta, x),
+        pattern,
+        limit.map(|l| (l.mode, l.mechanism)),
+    ))
+}
+
+/// The scene of a state (η, x) with its contacts, and the mode and mechanism when it is
+/// a limit state.
+fn build_scene(
+    arch: &Arch,
+    mu: f64,
+    (eta, x): (f64, Reactions),
+    pattern: Vec<Contact>,
+    limit: Option<(CollapseMode, Mechanism)>,
+) -> ArchScene {
+    let blocks = limit.as_ref().map_or_else(Vec::new, |(_, m)| {
+        block_motions(eta, &m.contacts, &m.rates)
             .into_iter()
             .map(|(from, to, motion)| Block { from, to, motion })
             .collect()
     });
-    Ok(ArchScene {
+    ArchScene {
         arch: arch.clone(),
         mu,
         eta,
         x,
         pattern,
-        mode: limit.as_ref().map(|l| l.mode),
-        mechanism: limit.map(|l| l.mechanism),
+        mode: limit.as_ref().map(|l| l.0),
+        mechanism: limit.map(|l| l.1),
         blocks,
         lines: eccentricities(&State { arch, eta, mu, x }, LINE_SAMPLES),
-    })
+    }
+}
+
+/// Every limit state at μ with η in [η_s, 2) (the one at η_s when it carries a
+/// mechanism, then each above it), each as a scene with a one-line label.
+pub fn limit_scenes(
+    arch: &Arch,
+    mu: f64,
+    settings: &Settings,
+) -> Result<Vec<(String, ArchScene)>, NoFigure> {
+    let sv = survey(arch, mu, settings).map_err(|e| NoFigure(e.to_string()))?;
+    let found = sv.states.map_err(|e| {
+        NoFigure(format!(
+            "the search for every limit state could not be completed: {e}"
+        ))
+    })?;
+    let mut out = Vec::new();
+    if let (true, Outcome::Limit(ls)) = (found.mechanism_at_eta_s, &sv.solution.outcome) {
+        out.push((
+            format!("at eta_s: eta = {:.9}", ls.eta),
+            build_scene(
+                arch,
+                mu,
+                (ls.eta, ls.x),
+                ls.pattern.clone(),
+                Some((ls.mode, ls.mechanism.clone())),
+            ),
+        ));
+    }
+    for st in &found.above {
+        out.push((
+            format!(
+                "above eta_s = {:.9} by {:.3e}: eta = {:.9}",
+                found.eta_s,
+                st.eta - found.eta_s,
+                st.eta
+            ),
+            build_scene(
+                arch,
+                mu,
+                (st.eta, st.x),
+                st.pattern.clone(),
+                Some((st.mode, st.mechanism.clone())),
+            ),
+        ));
+    }
+    let n = out.len();
+    if n == 0 {
+        return Err(NoFigure(format!(
+            "no limit state with eta in [eta_s, 2) at mu = {mu}: the arch is safe from eta_s = {} on",
+            found.eta_s
+        )));
+    }
+    for (k, (label, _)) in out.iter_mut().enumerate() {
+        *label = format!("limit state {} of {n}, {label}", k + 1);
+    }
+    Ok(out)
 }
 
 /// The state of greatest margin at (η, μ) and its contacts of least slack (within 1 % of

@@ -121,6 +121,45 @@ fn joints_visible(scene: &ArchScene, view: &View) -> bool {
     }
 }
 
+/// Draws several states one under the other, each headed by its label (every limit
+/// state of a non-unique case): the single-state figures nested in one SVG.
+pub fn svg_panels(scenes: &[(String, ArchScene)]) -> Result<String, String> {
+    let mut body = String::new();
+    let mut y = 0u32;
+    for (label, scene) in scenes {
+        let one = svg(scene)?;
+        let h = svg_height(&one).ok_or("a panel without a height")?;
+        body.push_str(&format!(
+            "<text x=\"16\" y=\"{}\" font-family=\"{FAMILY}\" font-size=\"16\" font-weight=\"bold\">{}</text>\n",
+            y + 22,
+            label.replace('&', "&amp;").replace('<', "&lt;")
+        ));
+        y += LABEL_H;
+        let inner = one
+            .split_once("?>")
+            .map_or(one.as_str(), |(_, rest)| rest)
+            .trim_start();
+        // nest the panel at its offset
+        body.push_str(&inner.replacen("<svg ", &format!("<svg x=\"0\" y=\"{y}\" "), 1));
+        body.push('\n');
+        y += h;
+    }
+    Ok(format!(
+        "<svg width=\"{W}\" height=\"{y}\" viewBox=\"0 0 {W} {y}\" xmlns=\"http://www.w3.org/2000/svg\">\n<rect width=\"{W}\" height=\"{y}\" fill=\"white\"/>\n{body}</svg>\n"
+    ))
+}
+
+/// Height of the label line above each panel of [`svg_panels`].
+const LABEL_H: u32 = 34;
+
+/// The `height` attribute of an SVG document's root element.
+fn svg_height(svg: &str) -> Option<u32> {
+    let start = svg.find("<svg")?;
+    let tag = &svg[start..start + svg[start..].find('>')?];
+    let h = tag.split("height=\"").nth(1)?;
+    h[..h.find('"')?].parse().ok()
+}
+
 /// Draws the figure as SVG.
 pub fn svg(scene: &ArchScene) -> Result<String, String> {
     let arch = &scene.arch;

@@ -95,9 +95,9 @@ pub fn svg(data: &[CurveData], log_eta: bool) -> Result<String, String> {
         let mut chart = ChartBuilder::on(&root)
             .caption(
                 if log_eta {
-                    "Limit curves η*(μ) by collapse mode (log η)"
+                    "Limit-state diagram: boundary η_s(μ) by collapse mode (log η)"
                 } else {
-                    "Limit curves η*(μ) by collapse mode"
+                    "Limit-state diagram: boundary η_s(μ) by collapse mode"
                 },
                 (FAMILY, 22),
             )
@@ -127,7 +127,11 @@ pub fn svg(data: &[CurveData], log_eta: bool) -> Result<String, String> {
             draw_curve(&mut chart, &f, d, &mut modes)?;
         }
         draw_labels(&root, &chart, &f, data)?;
-        draw_legend(&root, &modes, data.len())?;
+        let marks = (
+            data.iter().any(|d| !d.transitions.is_empty()),
+            data.iter().any(|d| !d.limit_states.is_empty()),
+        );
+        draw_legend(&root, &modes, data.len(), marks)?;
         root.present().map_err(err)?;
     }
     Ok(buf)
@@ -231,8 +235,29 @@ fn draw_curve(
             .draw_series(std::iter::once(Circle::new(f.at(c), 5, BLACK.filled())))
             .map_err(err)?;
     }
+    for &c in &d.transitions {
+        chart
+            .draw_series(std::iter::once(Circle::new(
+                f.at(c),
+                5,
+                BLACK.stroke_width(2),
+            )))
+            .map_err(err)?;
+    }
+    for &p in &d.limit_states {
+        chart
+            .draw_series(std::iter::once(TriangleMarker::new(
+                f.at(p),
+                6,
+                LIMIT_STATE_COLOR.filled(),
+            )))
+            .map_err(err)?;
+    }
     Ok(())
 }
+
+/// Colour of the limit states above the boundary (non-associative non-uniqueness).
+const LIMIT_STATE_COLOR: RGBColor = RGBColor(200, 0, 160);
 
 /// Labels on white boxes: corners (below-left of the corner, where a monotone curve never
 /// passes), each arch at the top of its sliding branch (staggered) and at the right end of
@@ -339,11 +364,13 @@ fn draw_labels(
     Ok(())
 }
 
-/// The legend in the right margin: modes, corner marker, what the tints mean.
+/// The legend in the right margin: modes, corner marker (and the transition and limit-state
+/// markers where `marks` says the figure has them), what the tints mean.
 fn draw_legend(
     root: &DrawingArea<SVGBackend, Shift>,
     modes: &[CollapseMode],
     arches: usize,
+    marks: (bool, bool),
 ) -> Result<(), String> {
     let (lx, mut ly) = (W as i32 - RIGHT as i32 + 100, 70);
     root.draw(&Text::new("collapse mode", (lx, ly), (FAMILY, 14)))
@@ -363,6 +390,32 @@ fn draw_legend(
         .map_err(err)?;
     root.draw(&Text::new("corner (μ, η)", (lx + 34, ly), (FAMILY, 13)))
         .map_err(err)?;
+    if marks.0 {
+        ly += 24;
+        root.draw(&Circle::new((lx + 13, ly + 7), 5, BLACK.stroke_width(2)))
+            .map_err(err)?;
+        root.draw(&Text::new(
+            "smooth transition (no kink)",
+            (lx + 34, ly),
+            (FAMILY, 13),
+        ))
+        .map_err(err)?;
+    }
+    if marks.1 {
+        ly += 24;
+        root.draw(&TriangleMarker::new(
+            (lx + 13, ly + 7),
+            6,
+            LIMIT_STATE_COLOR.filled(),
+        ))
+        .map_err(err)?;
+        root.draw(&Text::new(
+            "limit state above η_s (not safe there)",
+            (lx + 34, ly),
+            (FAMILY, 13),
+        ))
+        .map_err(err)?;
+    }
     let swatch = |ly: i32, color: RGBColor, opacity: f64, text: &str| {
         root.draw(&Rectangle::new(
             [(lx + 2, ly + 1), (lx + 24, ly + 14)],

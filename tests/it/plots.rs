@@ -391,3 +391,50 @@ fn joint_lines_are_drawn_only_when_visible() {
     assert!(svg.contains("not drawn"));
     assert!(svg.len() < 2_000_000, "{} bytes", svg.len());
 }
+
+/// Issue 10: the limit-state diagram marks smooth transitions apart from corners and draws
+/// the limit states above the boundary, each with a legend entry — only where they exist.
+#[test]
+fn diagram_marks_transitions_and_limit_states_above_the_boundary() {
+    let s = Settings::default();
+    let with = |alpha: f64| {
+        let d = arch_enum::figures::curve(
+            &Arch::symmetric(alpha, WeightModel::Centreline).unwrap(),
+            &s,
+        )
+        .unwrap();
+        arch_enum::render::plot_curve::svg(&[d], false).unwrap()
+    };
+    // α = 0.8: a mirror pair of limit states above η_s near μ_ms; α = 1.05: two transitions
+    let a = with(0.8);
+    assert!(a.contains("limit state above η_s"));
+    let b = with(1.05);
+    assert!(b.contains("smooth transition"));
+    assert!(!b.contains("limit state above η_s"));
+    // the semicircle has neither
+    let c = with(0.0);
+    assert!(!c.contains("smooth transition") && !c.contains("limit state above η_s"));
+}
+
+/// Issue 10: `plot arch --limit-states` draws one labelled panel per limit state — for the
+/// non-unique α = 0.8 arch near μ_ms, the state at η_s and the mirror pair above it; a
+/// case with no limit state is refused with exit 1 and a reason.
+#[test]
+fn every_limit_state_gets_a_panel() {
+    let s = Settings::default();
+    let arch = Arch::symmetric(0.8, WeightModel::Centreline).unwrap();
+    let scenes = figures::limit_scenes(&arch, 1.1540692474221415, &s).unwrap();
+    assert_eq!(scenes.len(), 3);
+    let svg = plot_arch::svg_panels(&scenes).unwrap();
+    for k in 1..=3 {
+        assert!(svg.contains(&format!("limit state {k} of 3")), "{k}");
+    }
+    assert_eq!(svg.matches("above eta_s").count(), 2);
+    // decodes as one picture
+    svg_to_png(&svg, 600).unwrap();
+    // the unsymmetric arch of the issue at mu = 0.96: no mechanism at eta_s, one above
+    let arch = Arch::new(-0.67, 2.72, WeightModel::Centreline).unwrap();
+    let scenes = figures::limit_scenes(&arch, 0.96, &s).unwrap();
+    assert_eq!(scenes.len(), 1);
+    assert!(scenes[0].0.contains("above eta_s"));
+}
