@@ -325,3 +325,26 @@ fn two_voussoir_arches_match_brute_force() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+
+/// A continuous steep segment (springings nearly one above the other): η_s is the infimum
+/// η = 2 tan²(Δ/4) at which a straight weightless line of thrust fits (formulation §3 with
+/// no weight: the chord of the span Δ at distance 1 − η/2 from the centre must reach the
+/// extrados at the ends). The crate approaches it with growing reactions: `attained` is
+/// false, no limit state at η_s, and η_s equals the closed form to 1e-9 relative.
+#[test]
+fn continuous_infimum_matches_the_closed_form() {
+    for span in [0.3, 0.5, 0.8, 1.0] {
+        let br = -0.2 - span / 2.0;
+        let arch = Arch::new(br, br + span, WeightModel::Centreline).unwrap();
+        let r = search(&arch, f64::INFINITY, &Settings::default())
+            .unwrap()
+            .unwrap();
+        let exact = 2.0 * (span / 4.0f64).tan().powi(2);
+        assert!(!r.attained && !r.mechanism_at_eta_s, "{span}");
+        assert!(
+            (r.eta_s - exact).abs() <= 1e-9 * exact,
+            "{span}: {} vs {exact}",
+            r.eta_s
+        );
+    }
+}
