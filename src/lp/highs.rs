@@ -24,13 +24,20 @@ fn configure(
         .set_threads(1)
 }
 
+/// Half-width of the box on (h, v, w) in the margin LP (units of γ t d r).
+const REACTION_BOX: f64 = 1e12;
+
 /// Maximises s subject to `row(x) + s·‖∇row‖ ≤ 0` for every row and `s ≤ s_cap`.
 /// Returns the optimal x and s. The LP is always feasible (s may be very negative).
 pub fn max_margin(rows: &[Affine], s_cap: f64, tol: f64) -> Result<(Reactions, f64), LpOutcome> {
     let mut vars = ProblemVariables::new();
-    let h = vars.add(variable());
-    let v = vars.add(variable());
-    let w = vars.add(variable());
+    // the reactions are bounded by a box far beyond any attained state (the sweep calls
+    // states beyond 1e7 unbounded): near an infimum approached with growing reactions the
+    // unbounded LP made HiGHS fail with "Error"
+    let bound = |v: good_lp::VariableDefinition| v.min(-REACTION_BOX).max(REACTION_BOX);
+    let h = vars.add(bound(variable()));
+    let v = vars.add(bound(variable()));
+    let w = vars.add(bound(variable()));
     let s = vars.add(variable().max(s_cap));
     let mut problem = configure(vars.maximise(s).using(highs), tol);
     for row in rows {
