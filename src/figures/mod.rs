@@ -128,9 +128,10 @@ fn sample(
     // limit states above η_s: each limit branch searched again at up to five μ across
     // its sampled range (one where it was seen at one sample only)
     let mut limit_states = Vec::new();
-    for b in &curve.limit_branches {
+    for lb in &curve.limit_branches {
+        let b = &lb.branch;
         let hi = b.mu_max.min(mu_cap);
-        let k = if b.samples > 1 { 5 } else { 1 };
+        let k = if lb.samples > 1 { 5 } else { 1 };
         for i in 0..k {
             let mu = if k == 1 {
                 hi

@@ -406,18 +406,9 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
 /// Its ends are those of the samples, not located exactly.
 #[derive(Debug, Clone)]
 pub struct LimitBranch {
-    /// Collapse mode of the pattern.
-    pub mode: CollapseMode,
-    /// Least sampled μ with this limit state.
-    pub mu_min: f64,
-    /// Greatest sampled μ with it (∞ when found at μ = ∞).
-    pub mu_max: f64,
-    /// Least η over the samples.
-    pub eta_min: f64,
-    /// Greatest η over the samples.
-    pub eta_max: f64,
-    /// The pattern at the sample of greatest μ.
-    pub pattern: Vec<Contact>,
+    /// Mode, the sampled μ range (`mu_max` ∞ when found at μ = ∞), the least and
+    /// greatest η over the samples, and the pattern at the sample of greatest μ.
+    pub branch: Branch,
     /// Samples on the branch.
     pub samples: usize,
 }
@@ -444,24 +435,27 @@ fn limit_branches<'a>(
             let mode = tr.mode_of(&st.pattern);
             match open
                 .iter_mut()
-                .find(|o| o.0 == sig && o.1.mode == mode && !o.2)
+                .find(|o| o.0 == sig && o.1.branch.mode == mode && !o.2)
             {
                 Some(o) => {
-                    o.1.mu_min = s.mu;
-                    o.1.eta_min = o.1.eta_min.min(st.eta);
-                    o.1.eta_max = o.1.eta_max.max(st.eta);
+                    let b = &mut o.1.branch;
+                    b.mu_min = s.mu;
+                    b.eta_min = b.eta_min.min(st.eta);
+                    b.eta_max = b.eta_max.max(st.eta);
                     o.1.samples += 1;
                     o.2 = true;
                 }
                 None => open.push((
                     sig,
                     LimitBranch {
-                        mode,
-                        mu_min: s.mu,
-                        mu_max: s.mu,
-                        eta_min: st.eta,
-                        eta_max: st.eta,
-                        pattern: st.pattern.clone(),
+                        branch: Branch {
+                            mode,
+                            mu_min: s.mu,
+                            mu_max: s.mu,
+                            eta_min: st.eta,
+                            eta_max: st.eta,
+                            pattern: st.pattern.clone(),
+                        },
                         samples: 1,
                     },
                     true,
@@ -474,6 +468,6 @@ fn limit_branches<'a>(
         open = cont;
     }
     done.extend(open.into_iter().map(|o| o.1));
-    done.sort_by(|a, b| b.mu_max.total_cmp(&a.mu_max));
+    done.sort_by(|a, b| b.branch.mu_max.total_cmp(&a.branch.mu_max));
     done
 }

@@ -443,14 +443,21 @@ struct CornerJson {
 
 #[derive(Debug, Serialize)]
 struct LimitBranchJson {
-    mode: &'static str,
-    mode_standard: bool,
-    mu_min: f64,
-    mu_max: f64,
-    eta_min: f64,
-    eta_max: f64,
-    pattern: Vec<Contact>,
+    #[serde(flatten)]
+    branch: BranchJson,
     samples: usize,
+}
+
+fn branch(b: &crate::limit_curve::Branch) -> BranchJson {
+    BranchJson {
+        mode: b.mode.name(),
+        mode_standard: b.mode.is_standard(),
+        mu_min: b.mu_min,
+        mu_max: b.mu_max,
+        eta_min: b.eta_min,
+        eta_max: b.eta_max,
+        pattern: b.pattern.clone(),
+    }
 }
 
 #[derive(Debug, Serialize)]
@@ -522,32 +529,14 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> ModesJson {
             CurveStatus::Unresolved => "unresolved",
         },
         arch: ArchJson::new(arch),
-        branches: curve
-            .branches
-            .iter()
-            .map(|b| BranchJson {
-                mode: b.mode.name(),
-                mode_standard: b.mode.is_standard(),
-                mu_min: b.mu_min,
-                mu_max: b.mu_max,
-                eta_min: b.eta_min,
-                eta_max: b.eta_max,
-                pattern: b.pattern.clone(),
-            })
-            .collect(),
+        branches: curve.branches.iter().map(branch).collect(),
         corners: curve.corners.iter().map(corner).collect(),
         transitions: curve.transitions.iter().map(corner).collect(),
         limit_branches: curve
             .limit_branches
             .iter()
             .map(|b| LimitBranchJson {
-                mode: b.mode.name(),
-                mode_standard: b.mode.is_standard(),
-                mu_min: b.mu_min,
-                mu_max: b.mu_max,
-                eta_min: b.eta_min,
-                eta_max: b.eta_max,
-                pattern: b.pattern.clone(),
+                branch: branch(&b.branch),
                 samples: b.samples,
             })
             .collect(),

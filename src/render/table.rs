@@ -529,13 +529,14 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
             "  {:<30} {:>15} {:>15}   {:>15} {:>15}  samples  pattern (kind@beta deg)",
             "mode", "mu from", "mu to", "eta from", "eta to"
         );
-        for b in &curve.limit_branches {
+        for lb in &curve.limit_branches {
+            let b = &lb.branch;
             let ends = [b.mu_max, b.mu_min, b.eta_min, b.eta_max];
             let _ = writeln!(
                 s,
                 "{}  {:>7}  {}",
                 branch_row(b.mode, ends),
-                b.samples,
+                lb.samples,
                 degrees(&b.pattern)
             );
         }
