@@ -29,12 +29,28 @@ const REACTION_BOX: f64 = 1e12;
 
 /// Maximises s subject to `row(x) + s·‖∇row‖ ≤ 0` for every row and `s ≤ s_cap`.
 /// Returns the optimal x and s. The LP is always feasible (s may be very negative).
+/// Solved with free reactions; only if HiGHS fails is it solved again with the reactions
+/// boxed at [`REACTION_BOX`] (near an infimum approached with growing reactions the free
+/// LP ends in "HiGHS error ... Error"; the box is not imposed otherwise because HiGHS can
+/// stumble on bounds that far from the data's scale).
 pub fn max_margin(rows: &[Affine], s_cap: f64, tol: f64) -> Result<(Reactions, f64), LpOutcome> {
+    match margin_lp(rows, s_cap, tol, None) {
+        Err(LpOutcome::Failed(_)) => margin_lp(rows, s_cap, tol, Some(REACTION_BOX)),
+        other => other,
+    }
+}
+
+fn margin_lp(
+    rows: &[Affine],
+    s_cap: f64,
+    tol: f64,
+    reaction_box: Option<f64>,
+) -> Result<(Reactions, f64), LpOutcome> {
     let mut vars = ProblemVariables::new();
-    // the reactions are bounded by a box far beyond any attained state (the sweep calls
-    // states beyond 1e7 unbounded): near an infimum approached with growing reactions the
-    // unbounded LP made HiGHS fail with "Error"
-    let bound = |v: good_lp::VariableDefinition| v.min(-REACTION_BOX).max(REACTION_BOX);
+    let bound = |v: good_lp::VariableDefinition| match reaction_box {
+        Some(b) => v.min(-b).max(b),
+        None => v,
+    };
     let h = vars.add(bound(variable()));
     let v = vars.add(bound(variable()));
     let w = vars.add(bound(variable()));
