@@ -21,7 +21,7 @@ use crate::collapse_mode::CollapseMode;
 use crate::contact::Contact;
 use crate::friction::{friction_limit, FrictionLimit};
 use crate::limit::{solve, Outcome};
-use crate::limit_states::search;
+use crate::limit_states::search_after;
 use crate::settings::Settings;
 use crate::statics::{internal_forces, Reactions};
 
@@ -384,7 +384,9 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
         });
     }
     let searched = samples.len() + usize::from(inf.is_some());
-    let limit_branches = limit_branches(&tr, inf.iter().chain(&samples), settings);
+    let (limit_branches, incomplete) = limit_branches(&tr, inf.iter().chain(&samples), settings);
+    let mut unresolved = tr.unresolved.clone();
+    unresolved.extend(incomplete);
     let (corners, transitions) = changes.into_iter().partition(|c| c.kink);
     LimitCurve {
         mu_ms: Some(fl.mu),
@@ -392,7 +394,7 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
         corners,
         transitions,
         limit_branches,
-        unresolved: tr.unresolved,
+        unresolved,
         no_collapse: tr.no_collapse,
         no_equilibrium: tr.no_equilibrium,
         solves: tr.solves,
@@ -413,19 +415,26 @@ pub struct LimitBranch {
     pub samples: usize,
 }
 
-/// The limit states above η_s at each sample, grouped into branches (a sample whose
-/// search could not be completed is listed as unresolved).
+/// The limit states above η_s at each sample, grouped into branches, and the samples
+/// whose search could not be completed (μ and why: listed as unresolved).
 fn limit_branches<'a>(
     tr: &Tracer,
     samples: impl Iterator<Item = &'a Sample>,
     settings: &Settings,
-) -> Vec<LimitBranch> {
+) -> (Vec<LimitBranch>, Vec<(f64, String)>) {
     let mut open: Vec<(tracer::Signature, LimitBranch, bool)> = Vec::new();
     let mut done: Vec<LimitBranch> = Vec::new();
+    let mut incomplete = Vec::new();
     for s in samples {
-        let above = match search(tr.arch, s.mu, settings) {
-            Ok(Ok(ls)) => ls.above,
-            _ => Vec::new(),
+        let above = match search_after(&s.solution, settings) {
+            Ok(ls) => ls.above,
+            Err(e) => {
+                incomplete.push((
+                    s.mu,
+                    format!("the search for limit states above eta_s is incomplete: {e}"),
+                ));
+                Vec::new()
+            }
         };
         for o in open.iter_mut() {
             o.2 = false;
@@ -469,5 +478,5 @@ fn limit_branches<'a>(
     }
     done.extend(open.into_iter().map(|o| o.1));
     done.sort_by(|a, b| b.branch.mu_max.total_cmp(&a.branch.mu_max));
-    done
+    (done, incomplete)
 }

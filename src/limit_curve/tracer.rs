@@ -45,6 +45,8 @@ pub(super) struct Sample {
     /// Every contact active there, by increasing β.
     pub(super) pattern: Vec<Contact>,
     pub(super) sig: Signature,
+    /// The solver's answer at μ (the limit-state search starts from it).
+    pub(super) solution: crate::limit::Solution,
 }
 
 pub(super) struct Tracer<'a> {
@@ -86,6 +88,7 @@ impl Tracer<'_> {
             x,
             sig: signature(self.arch, &pattern),
             pattern,
+            solution,
         })
     }
 

@@ -85,6 +85,12 @@ pub fn search(
     Ok(search_from(&solve(arch, mu, settings)?, settings))
 }
 
+/// [`search`] from a solution already computed (η_s and its least state): the inner
+/// `Err` says why the search could not be completed.
+pub fn search_after(sol: &Solution, settings: &Settings) -> Result<LimitStates, String> {
+    search_from(sol, settings)
+}
+
 fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, String> {
     let (arch, mu) = (&sol.arch, sol.mu);
     let (eta_s, x_s, mechanism_at_eta_s) = match &sol.outcome {
