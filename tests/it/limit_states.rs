@@ -350,3 +350,98 @@ fn continuous_infimum_matches_the_closed_form() {
         );
     }
 }
+
+/// Wild random arches (issue 10): an arch balanced on the extrados edge of its right
+/// springing with the left springing fully detached (N = T = M = 0 there: the whole arch
+/// cantilevers from the right springing, x = (0, W, w)). Its mechanism — a rotation about
+/// that edge, the left joint opening and sliding — does no work (L_e = 0: the centre of
+/// mass is directly above the edge) and dissipates nothing (N = 0 where it slides). The
+/// brute force used to reject it: its L_e ≥ 0 test was relative to Σ|λ_i ℓ_i|, itself
+/// rounding noise when L_e cancels exactly, so whether the state was seen depended on the
+/// last bits of the build (10 of the 12 wild disagreements). Independent check: with the
+/// weight on the centreline, G_x = (sin β_L − sin β_R)/Δ = (1 + η/2) cos β_R, i.e.
+/// η = 2 [(sin β_L − sin β_R)/(Δ cos β_R) − 1].
+#[test]
+fn balanced_on_one_springing_edge() {
+    let cases: [(&[f64], bool, f64, usize); 3] = [
+        // η_s attained, no mechanism there; the balanced state is the only one above
+        (
+            &[
+                -0.9690698810058832,
+                -0.6707848425293645,
+                -0.30447332102707225,
+                0.4105522938447438,
+                0.9740878243588463,
+                1.3858921883746107,
+            ],
+            false,
+            3.103692812129597,
+            1,
+        ),
+        // η_s an infimum; a sliding limit state and then the balanced one above it
+        (
+            &[
+                -0.32196753082506324,
+                -0.24253358901213173,
+                -0.17027533502632738,
+                -0.06459929802088032,
+                -0.009963277670958448,
+                0.0457219846190452,
+                0.08475889533425279,
+                0.11752509828593088,
+            ],
+            false,
+            1.015575512939957,
+            2,
+        ),
+        // true-centroid weight: G_x = ρ (sin β_L − sin β_R)/Δ with ρ = 1 + η²/12
+        (
+            &[
+                -0.47433409434347573,
+                -0.22221367223207272,
+                -0.11925108268694451,
+                0.07412090254192016,
+                0.3573448006245217,
+                0.5705955650263492,
+            ],
+            true,
+            0.6665413511381322,
+            1,
+        ),
+    ];
+    for (joints, centroid, mu, count) in cases {
+        let (br, bl) = (joints[0], joints[joints.len() - 1]);
+        assert_eq!(
+            compare(br, bl, joints, centroid, mu),
+            Ok(count),
+            "{joints:?}"
+        );
+        let weight = if centroid {
+            WeightModel::Centroid
+        } else {
+            WeightModel::Centreline
+        };
+        let arch = Arch::new(br, bl, weight)
+            .unwrap()
+            .with_joints(joints)
+            .unwrap();
+        let r = search(&arch, mu, &Settings::default()).unwrap().unwrap();
+        let s = r.above.last().unwrap();
+        let span = bl - br;
+        let chord = (bl.sin() - br.sin()) / span;
+        // (1 + η/2) cos β_R = ρ(η) · chord, solved for η (a quadratic for the centroid)
+        let exact = if centroid {
+            let (a, b, c) = (chord / 12.0, -0.5 * br.cos(), chord - br.cos());
+            (-b - (b * b - 4.0 * a * c).sqrt()) / (2.0 * a)
+        } else {
+            2.0 * (chord / br.cos() - 1.0)
+        };
+        assert!(
+            (s.eta - exact).abs() <= 1e-12 * exact,
+            "{} vs {exact}",
+            s.eta
+        );
+        assert!(s.x[0].abs() <= 1e-12 * span && (s.x[1] - span).abs() <= 1e-12 * span);
+        assert!(s.mechanism.power.abs() <= 1e-12 && s.mechanism.dissipation.abs() <= 1e-12);
+    }
+}

@@ -253,15 +253,24 @@ impl Ctx {
     /// G_m (scaled by ρ for the true centroid: the centroid of an annular sector lies at
     /// ρ times the centroid of its centreline arc).
     pub(crate) fn ell(&self, j: usize, k: u8, eta: f64) -> f64 {
+        self.ell_with_size(j, k, eta).0
+    }
+    /// [`Ctx::ell`] and the size of the terms it sums (Σ_m W_m (|col_y| + |col_ψ G_m,x|)):
+    /// the scale of its rounding error. L_e can vanish by cancellation (a rotation about a
+    /// point directly below the centre of mass: an arch balanced on one edge of a
+    /// springing), and a tolerance relative to the cancelled value itself is then
+    /// meaningless.
+    pub(crate) fn ell_with_size(&self, j: usize, k: u8, eta: f64) -> (f64, f64) {
         let col = self.col(j, k, eta);
         let g = if self.centroid { self.rho(eta) } else { 1.0 };
-        let mut l = 0.0;
+        let (mut l, mut size) = (0.0, 0.0);
         for m in j..self.nj() - 1 {
             let w = self.beta[m + 1] - self.beta[m];
             let gx = g * (self.sn[m + 1] - self.sn[m]) / w;
             l -= w * (col[1] + col[2] * gx);
+            size += w * (col[1].abs() + (col[2] * gx).abs());
         }
-        l
+        (l, size)
     }
     fn conflict(&self, sub: &[usize]) -> bool {
         sub.iter().tuple_combinations().any(|(&a, &b)| {
@@ -564,10 +573,10 @@ fn ray(ctx: &Ctx, eta: f64, ids: &[usize]) -> Option<Vec<f64>> {
         .iter()
         .map(|&i| ctx.col(ctx.contacts[i].0, ctx.contacts[i].1, eta))
         .collect();
-    let ell: Vec<f64> = ids
+    let (ell, ell_size): (Vec<f64>, Vec<f64>) = ids
         .iter()
-        .map(|&i| ctx.ell(ctx.contacts[i].0, ctx.contacts[i].1, eta))
-        .collect();
+        .map(|&i| ctx.ell_with_size(ctx.contacts[i].0, ctx.contacts[i].1, eta))
+        .unzip();
     for with_ell in [false, true] {
         let rows = if with_ell { 4 } else { 3 };
         let n = rows.max(size);
@@ -596,8 +605,11 @@ fn ray(ctx: &Ctx, eta: f64, ids: &[usize]) -> Option<Vec<f64>> {
         if v.iter().any(|&a| a <= 1e-9 * vmax) {
             continue;
         }
+        // L_e ≥ 0 up to its rounding: relative to the size of every term that makes it up
+        // (not to Σ|v_i ℓ_i|, which is itself rounding noise when L_e cancels exactly:
+        // that rejected arches balanced on one edge of a springing, the other detached)
         let le: f64 = v.iter().zip(&ell).map(|(a, b)| a * b).sum();
-        let lscale: f64 = v.iter().zip(&ell).map(|(a, b)| (a * b).abs()).sum();
+        let lscale: f64 = v.iter().zip(&ell_size).map(|(a, b)| a.abs() * b).sum();
         if le < -1e-10 * lscale.max(1e-300) {
             continue;
         }
