@@ -445,3 +445,24 @@ fn balanced_on_one_springing_edge() {
         assert!(s.mechanism.power.abs() <= 1e-12 && s.mechanism.dissipation.abs() <= 1e-12);
     }
 }
+
+/// A two-voussoir arch at μ = ∞ (issue 10): at η = 0 the hinge conditions |M| ≤ ηN/2
+/// reduce to M = 0, which one state meets at all three joints of any two-voussoir arch —
+/// here in tension (N < 0 at a joint), so it stands at no small η. Without friction rows
+/// nothing enforced N ≥ 0 there, and the arch was reported to stand at every η > 0
+/// (`no_collapse`); the brute force finds η_s ≈ 0.1467 with an overturning limit state
+/// (the left springing detached). The check at vanishing thickness now requires N ≥ 0.
+#[test]
+fn two_voussoirs_at_infinite_friction_need_no_tension() {
+    let j = [-0.4440108037418231, 0.2601892230910603, 0.9178524646018502];
+    assert_eq!(compare(j[0], j[2], &j, false, f64::INFINITY), Ok(0));
+    let arch = Arch::new(j[0], j[2], WeightModel::Centreline)
+        .unwrap()
+        .with_joints(&j)
+        .unwrap();
+    let r = search(&arch, f64::INFINITY, &Settings::default())
+        .unwrap()
+        .unwrap();
+    assert!(r.attained && r.mechanism_at_eta_s);
+    assert!((r.eta_s - 0.146707847974).abs() < 1e-11, "{}", r.eta_s);
+}
