@@ -9,7 +9,8 @@
 //! * at η_s, the kinematic LP on the least state's active set ([`crate::limit`]);
 //! * above η_s, for a discrete arch, a sweep of the admissible polytope P(η) in η
 //!   ([`sweep`]): limit states need four contacts at one point, which happens only where P
-//!   changes combinatorially, and the sweep visits every such event.
+//!   changes combinatorially, and the sweep visits every such event. A discrete arch that
+//!   stands at every η > 0 (`solve` says `NoCollapse`, η_s = 0) is swept from η = 0.
 
 pub mod poly;
 pub mod sweep;
@@ -30,7 +31,9 @@ pub use sweep::SweptState;
 /// Every limit state of a discrete arch at friction μ, above the least admissible state.
 #[derive(Debug, Clone)]
 pub struct LimitStates {
-    /// η_s(μ), the least η with a statically admissible state.
+    /// η_s(μ), the least η with a statically admissible state; 0 when the arch stands at
+    /// every η > 0 (a state without tension is admissible at vanishing thickness: no arch
+    /// has η = 0, so η_s is then an infimum of thicknesses, with no limit state there).
     pub eta_s: f64,
     /// Whether η_s is attained by a bounded state: false when the least state's reactions
     /// exceed `settings.unbounded_reactions` × (1 + span) (η_s is then an infimum
@@ -99,6 +102,9 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Strin
             least_static: Some((eta, x)),
             ..
         } => (*eta, *x, false),
+        Outcome::NoCollapse { .. } if matches!(arch.layout(), JointLayout::Discrete(_)) => {
+            return from_vanishing_thickness(arch, mu, settings);
+        }
         _ => return Err("no least admissible state to start from".into()),
     };
     // an infimum approached only with reactions growing without bound is not a state: no
@@ -134,6 +140,35 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Strin
         above,
         events: sw.events,
         method: "sweep".into(),
+    })
+}
+
+/// A discrete arch that stands at every η > 0 (η_s = 0: a state without tension is
+/// admissible at vanishing thickness, [`crate::limit::vanishing_thickness_state`]) can
+/// still have limit states above: four contacts meeting where P(η) changes, with a
+/// sliding mechanism (issue 10: two voussoirs, two hinges and two slides at η ≈ 1.54).
+/// The sweep starts at η = 0 from that state: P(0) is the set where M = 0 at every joint
+/// (the hinge planes E and I of a joint coincide there), and the vertices just above it
+/// come from the same first-order test as at any least state. No limit state is at η = 0
+/// itself (no arch has zero thickness).
+fn from_vanishing_thickness(
+    arch: &Arch,
+    mu: f64,
+    settings: &Settings,
+) -> Result<LimitStates, String> {
+    let x0 = crate::limit::vanishing_thickness_state(arch, mu, settings)?
+        .ok_or("no state without tension at vanishing thickness to start from")?;
+    let sw = sweep::sweep(arch, mu, 0.0, x0, settings);
+    if let Some(f) = sw.failure {
+        return Err(f);
+    }
+    Ok(LimitStates {
+        eta_s: 0.0,
+        attained: bounded(arch, &x0, settings),
+        mechanism_at_eta_s: false,
+        above: sw.states.into_iter().filter(|s| s.eta > 0.0).collect(),
+        events: sw.events,
+        method: "sweep from eta = 0 (the arch stands at every eta > 0)".into(),
     })
 }
 

@@ -466,3 +466,47 @@ fn two_voussoirs_at_infinite_friction_need_no_tension() {
     assert!(r.attained && r.mechanism_at_eta_s);
     assert!((r.eta_s - 0.146707847974).abs() < 1e-11, "{}", r.eta_s);
 }
+
+/// Issue 10: a discrete arch that stands at every η > 0 (`no_collapse`: a state without
+/// tension is admissible at vanishing thickness) can still have a limit state above, where
+/// four contacts meet with a sliding mechanism — here two voussoirs, two hinges and two
+/// slides at η ≈ 1.542 (found by the brute force on random two-voussoir arches, about one
+/// in 250 of those that stand at every η). The search sweeps such arches from η = 0 and
+/// reports η_s = 0, no limit state at η_s, and every limit state above. The issue's own
+/// arch has none (the brute force agrees): `no_collapse` was right there.
+#[test]
+fn stands_at_every_eta_with_a_limit_state_above() {
+    let j = [
+        -1.0088581668631282,
+        -0.003043959170128341,
+        3.0728660500786775,
+    ];
+    let mu = 0.9387641729551759;
+    assert_eq!(compare(j[0], j[2], &j, false, mu), Ok(1));
+    let arch = Arch::new(j[0], j[2], WeightModel::Centreline)
+        .unwrap()
+        .with_joints(&j)
+        .unwrap();
+    let r = search(&arch, mu, &Settings::default()).unwrap().unwrap();
+    assert_eq!(r.eta_s, 0.0);
+    assert!(!r.mechanism_at_eta_s);
+    assert_eq!(r.above.len(), 1);
+    assert!(
+        (r.above[0].eta - 1.542014859695).abs() < 1e-11,
+        "{}",
+        r.above[0].eta
+    );
+    assert!(r.above[0].mechanism.dissipation > 0.0);
+    // the issue's arch: two equal voussoirs, standing at every η > 0, no limit state
+    let (br, bl) = (0.1590279471705356, 2.295640677370236);
+    let j = [br, 0.5 * (br + bl), bl];
+    assert_eq!(compare(br, bl, &j, false, 0.7823739813428994), Ok(0));
+    let arch = Arch::new(br, bl, WeightModel::Centreline)
+        .unwrap()
+        .with_blocks(2)
+        .unwrap();
+    let r = search(&arch, 0.7823739813428994, &Settings::default())
+        .unwrap()
+        .unwrap();
+    assert!(r.eta_s == 0.0 && r.above.is_empty());
+}

@@ -452,14 +452,17 @@ fn lp_margin(ctx: &Ctx, eta: f64, only_sliding: bool) -> Option<f64> {
 }
 
 /// Least η in (0, 2) with a nonzero element of the homogenised cone, by bisection on the
-/// sign of the LP margin (0 if every η works, ∞ if none below 2 does).
-fn lp_least_thickness(ctx: &Ctx) -> f64 {
+/// sign of the LP margin (0 if every η works, ∞ if none below 2 does). Whether every η
+/// works is decided by [`stands_at_vanishing_thickness`], not by the LP at η = ETA_MIN:
+/// there the hinge slabs are 1e-10 wide and the margin's sign is HiGHS's rounding (a
+/// two-voussoir arch at μ = ∞ whose only state at η = 0 is in tension got "0").
+fn lp_least_thickness(ctx: &Ctx, stands: bool) -> f64 {
     let ok = |eta: f64| lp_margin(ctx, eta, false).is_some_and(|m| m >= 0.0);
     let (mut lo, mut hi) = (ETA_MIN, ETA_MAX);
     if !ok(hi) {
         return f64::INFINITY;
     }
-    if ok(lo) {
+    if stands {
         return 0.0;
     }
     while hi - lo > 1e-13 * hi {
@@ -471,6 +474,50 @@ fn lp_least_thickness(ctx: &Ctx) -> f64 {
         }
     }
     hi
+}
+
+/// Whether a state stands at every η > 0: as η → 0 the hinge conditions |M| ≤ ηN/2 become
+/// M = 0 with N ≥ 0 (formulation §3: φ_E + φ_I ≤ 0 gives N ≥ 0 only while η > 0), so the
+/// LP has the equalities M_j = 0 at every joint and maximises the margin of N_j ≥ 0 and
+/// (finite μ) |T_j| ≤ μ N_j; such a state is admissible at every η > 0 (N ≥ 0 and M = 0
+/// meet |M| ≤ ηN/2). The margin is O(1) away from the boundary case N = 0, so its sign is
+/// no matter of tolerance.
+fn stands_at_vanishing_thickness(ctx: &Ctx) -> bool {
+    let mut vars = ProblemVariables::new();
+    let y: Vec<_> = (0..3).map(|_| vars.add(variable())).collect();
+    let s = vars.add(variable().max(1.0));
+    let mut p = vars
+        .maximise(s)
+        .using(highs)
+        .set_option("output_flag", false);
+    let affine = |(a, c): ([f64; 3], f64)| {
+        let n = norm3(&a).max(1e-300);
+        let mut e = Expression::from(c / n);
+        for i in 0..3 {
+            e.add_mul(a[i] / n, y[i]);
+        }
+        e
+    };
+    for j in 0..ctx.nj() {
+        let [(an, cn), (at, ct), (am, cm)] = ctx.ntm(j, 0.0);
+        p = p.with(affine((am, cm)).eq(0.0));
+        let neg_n = ([-an[0], -an[1], -an[2]], -cn);
+        p = p.with((affine(neg_n) + s).leq(0.0));
+        if ctx.mu.is_finite() {
+            for sign in [1.0, -1.0] {
+                let row = (
+                    [
+                        sign * at[0] - ctx.mu * an[0],
+                        sign * at[1] - ctx.mu * an[1],
+                        sign * at[2] - ctx.mu * an[2],
+                    ],
+                    sign * ct - ctx.mu * cn,
+                );
+                p = p.with((affine(row) + s).leq(0.0));
+            }
+        }
+    }
+    p.solve().is_ok_and(|sol| sol.value(s) >= -1e-9)
 }
 
 /// The least friction coefficient admitting a nonzero friction-only state (μ_ms, with
@@ -815,9 +862,10 @@ pub fn brute_force(beta_r: f64, beta_l: f64, joints: &[f64], centroid: bool, mu:
     }
 
     let eta_b = statics.iter().map(|c| c.eta).fold(f64::INFINITY, f64::min);
-    let eta_s_lp = lp_least_thickness(&ctx);
+    let stands = stands_at_vanishing_thickness(&ctx);
+    let eta_s_lp = lp_least_thickness(&ctx, stands);
     let mut eta_s = eta_b.min(eta_rec);
-    if !eta_s.is_finite() || eta_s_lp == 0.0 {
+    if !eta_s.is_finite() || stands {
         eta_s = eta_s_lp;
     }
     let attained = eta_b.is_finite() && eta_b <= eta_s * (1.0 + 1e-9);
