@@ -14,11 +14,12 @@
 
 mod diagnosis;
 mod enumerate;
+pub mod recession;
 pub mod solution;
 
 pub use solution::{Candidate, LimitState, Outcome, Solution};
 
-use crate::admissibility::WorkingSet;
+use crate::admissibility::{Margin, WorkingSet};
 use crate::arch::{check_mu, Arch, InputError, JointLayout};
 use crate::contact::ContactKind;
 use crate::lp::{self, LpOutcome};
@@ -28,6 +29,7 @@ use crate::state::State;
 use crate::statics::{actions, reaction_scale, Affine, Reactions};
 use diagnosis::{no_equilibrium, unresolved};
 use enumerate::enumerate;
+use recession::{margin, threshold};
 
 /// Solves for the least thickness η*(μ) of `arch` at friction `mu` (`f64::INFINITY`:
 /// no sliding). Bad input is an `Err`; what the solver found (a limit state, no
@@ -36,13 +38,111 @@ pub fn solve(arch: &Arch, mu: f64, settings: &Settings) -> Result<Solution, Inpu
     let mu = check_mu(mu)?;
     settings.validate()?;
     let mut candidates = Vec::new();
-    let outcome = solve_inner(arch, mu, settings, &mut candidates);
+    let outcome = exact_infimum(
+        arch,
+        mu,
+        solve_inner(arch, mu, settings, &mut candidates),
+        settings,
+    );
     Ok(Solution {
         arch: arch.clone(),
         mu,
         outcome,
         candidates,
     })
+}
+
+/// A discrete arch whose least admissible state is unbounded (its reactions beyond
+/// `settings.unbounded_reactions`): η_s is then an infimum, the least η with a weightless
+/// admissible direction ([`recession`]), and the Newton state found
+/// near it only approximates that η (its equations hold relative to reactions of 1e9 or
+/// more). η_s becomes the exact root of the direction's three contacts when it verifies
+/// within 1e-6 (relative) of the approximation; anything found at η_s itself moves with it
+/// (no finite state carries it: the search reports no limit state there).
+fn exact_infimum(arch: &Arch, mu: f64, outcome: Outcome, settings: &Settings) -> Outcome {
+    let exact = |eta: f64| {
+        let hi = (eta * (1.0 + 1e-6)).min(crate::arch::ETA_TOP);
+        threshold(arch, mu, eta * (1.0 - 1e-6), hi, settings)
+            .filter(|r| r.exact)
+            .map(|r| r.eta)
+    };
+    match outcome {
+        Outcome::Limit(mut ls) if !bounded(arch, &ls.x_static, settings) => {
+            if let Some(eta) = exact(ls.eta_static) {
+                if ls.eta <= ls.eta_static * (1.0 + settings.root_slack) {
+                    ls.eta = eta;
+                }
+                ls.eta_static = eta;
+            }
+            Outcome::Limit(ls)
+        }
+        Outcome::Unresolved {
+            eta_lo,
+            eta_hi,
+            reason,
+            least_static: Some((eta, x)),
+        } if !bounded(arch, &x, settings) => {
+            let eta = exact(eta).unwrap_or(eta);
+            Outcome::Unresolved {
+                eta_lo: eta_lo.min(eta),
+                eta_hi,
+                reason,
+                least_static: Some((eta, x)),
+            }
+        }
+        other => other,
+    }
+}
+
+/// An admissible state of a discrete arch at η found without the margin LP, where a
+/// weightless admissible direction d exists with room (the cone's margin r > 0,
+/// [`recession::margin`]): far enough along d every activation
+/// function is negative, whatever the weight (φ_i(t d) = c_i + t g_i·d ≤ c_i − t r |g_i|).
+/// Near an infimum the margin LP's best states are that far out, and the LP back end can
+/// fail there ("Unbounded" even with the reactions boxed); the bracket of η_s only needs
+/// to know that P(η) is not empty. `None` for a continuous arch or when r ≤ 0.
+fn far_state(arch: &Arch, eta: f64, mu: f64, settings: &Settings) -> Option<Margin> {
+    let JointLayout::Discrete(joints) = arch.layout() else {
+        return None;
+    };
+    let (r, d) = margin(arch, mu, eta, settings)?;
+    if r <= 1e-12 {
+        return None;
+    }
+    let rows: Vec<Affine> = joints
+        .iter()
+        .flat_map(|&b| {
+            let a = actions(arch, eta, b);
+            ContactKind::active_at(mu)
+                .iter()
+                .map(move |&k| a.activation(k, 0, eta, mu))
+        })
+        .collect();
+    let t = 1.0
+        + 2.0
+            * rows
+                .iter()
+                .map(|row| row.c.max(0.0) / (r * row.grad_norm()))
+                .fold(0.0, f64::max);
+    let x = d.map(|v| t * v);
+    let slack = rows
+        .iter()
+        .map(|row| -row.at(&x) / row.grad_norm())
+        .fold(f64::INFINITY, f64::min);
+    (slack >= 0.0).then_some(Margin {
+        x,
+        margin: slack,
+        lp_margin: slack,
+        rounds: 0,
+    })
+}
+
+/// Whether a least state is a bounded one: its reactions within
+/// `settings.unbounded_reactions` × (1 + span) (the arch's weight). Beyond, η_s is taken
+/// as an infimum approached as the reactions grow without bound.
+pub(crate) fn bounded(arch: &Arch, x: &Reactions, settings: &Settings) -> bool {
+    x.iter()
+        .all(|v| v.abs() <= settings.unbounded_reactions * (1.0 + arch.span()))
 }
 
 /// Why [`Outcome::NoCollapse`].
@@ -148,9 +248,12 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
         (eta_max, top.margin, top),
         settings.bracket_rel,
         200,
-        |eta| {
-            let m = margin_at(arch, eta, mu, modes, &mut ws, settings)?;
-            Ok((m.margin, m))
+        |eta| match margin_at(arch, eta, mu, modes, &mut ws, settings) {
+            Ok(m) => Ok((m.margin, m)),
+            // near an infimum the best states are huge and the LP back end can fail
+            Err(e) => far_state(arch, eta, mu, settings)
+                .map(|m| (m.margin, m))
+                .ok_or(e),
         },
     );
     let (lo, hi) = match bracket {

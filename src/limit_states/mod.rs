@@ -19,7 +19,7 @@ use crate::admissibility::WorkingSet;
 use crate::arch::{Arch, InputError, JointLayout};
 use crate::collapse_mode::classify;
 use crate::contact::{Contact, ContactKind, Location};
-use crate::limit::{solve, Outcome, Solution};
+use crate::limit::{bounded, solve, Outcome, Solution};
 use crate::mechanism;
 use crate::refine::{solve_system, Unknowns};
 use crate::search::margin_at;
@@ -311,12 +311,6 @@ fn same_state(p: &SweptState, q: &SweptState) -> bool {
             .iter()
             .zip(&q.pattern)
             .all(|(a, b)| a.kind == b.kind && (a.beta - b.beta).abs() <= 1e-6)
-}
-
-/// Whether a least state is a bounded one (see [`LimitStates::attained`]).
-fn bounded(arch: &Arch, x: &Reactions, settings: &Settings) -> bool {
-    x.iter()
-        .all(|v| v.abs() <= settings.unbounded_reactions * (1.0 + arch.span()))
 }
 
 /// A discrete pattern carried over to the continuum: contacts of one kind at adjacent

@@ -18,7 +18,9 @@
 //! linearisation at the least admissible state.
 //!
 //! Six box planes |x_k| ≤ [`BOX`] keep P bounded; an event on a box plane is not a limit
-//! state, and a least state on the box is an infimum (reactions without bound).
+//! state. Where η_s is an infimum (the least admissible state unbounded: P(η) recedes to
+//! infinity as η ↓ η_s), the sweep starts at the least η at which P(η) meets the box, from
+//! the point where it does: below that every admissible state has some |x_k| > BOX.
 
 use super::poly::Poly;
 use crate::admissibility::{max_margin, Goal, WorkingSet};
@@ -26,10 +28,11 @@ use crate::arch::{Arch, JointLayout, ETA_TOP};
 use crate::collapse_mode::{classify, CollapseMode};
 use crate::contact::{Contact, ContactKind, Location};
 use crate::kinematics::column;
+use crate::lp;
 use crate::mechanism::{self, Mechanism};
 use crate::settings::Settings;
 use crate::state::State;
-use crate::statics::{actions, magnitude, reaction_scale, Reactions};
+use crate::statics::{actions, magnitude, reaction_scale, Affine, Reactions};
 use itertools::Itertools;
 
 /// Half-width of the box on (h, v, w) that bounds the admissible set (units of γ t d r).
@@ -282,7 +285,11 @@ impl Sweeper<'_> {
             let m = nalgebra::Matrix3::from_fn(|r, c| slopes[t[r]].0[c]);
             let scale = m.norm();
             let Some(inv) = m.try_inverse() else { continue };
-            if m.determinant().abs() <= 1e-12 * scale * scale * scale {
+            // dependent planes (E and I of one joint at η = 0) have a determinant at the
+            // rounding level of its terms (~1e-16 scale³); ill-conditioned ones are vertices
+            // all the same: where η_s is an infimum, the vertex of the three contacts whose
+            // gradients become dependent at η_s enters the box with det ~ 1e-12 scale³
+            if m.determinant().abs() <= 1e-14 * scale * scale * scale {
                 continue;
             }
             // d/dη of φ_t = 0 along the path: G dx + ∂φ/∂η = 0
@@ -401,6 +408,48 @@ impl Sweeper<'_> {
         seen
     }
 
+    /// Whether P(η) meets the box, and its point of greatest margin there: the margin LP
+    /// over every plane (box sides included) in units of the box, x = BOX·u, so that the
+    /// rows keep unit gradients and the dense solver's own bounds never bind.
+    fn in_box(&self, eta: f64) -> Option<(bool, Reactions)> {
+        let rows: Vec<Affine> = self
+            .planes
+            .iter()
+            .map(|p| Affine {
+                g: [0, 1, 2].map(|k| p.g[k].eval(eta) * BOX),
+                c: p.c.eval(eta),
+            })
+            .collect();
+        let (u, s) = lp::max_margin(&rows, 1.0, self.settings).ok()?;
+        Some((s >= 0.0, u.map(|v| v * BOX)))
+    }
+
+    /// The least η above `eta_lo` (where P(η) lies outside the box) at which P(η) meets the
+    /// box, and a point of P(η) ∩ box there, to the resolution of η (bisection on
+    /// [`Self::in_box`] to 1e-15 relative): the sweep's start when the least admissible
+    /// state is unbounded. `Ok(None)` when P(η) misses the box up to the thickness limit.
+    fn least_in_box(&self, eta_lo: f64) -> Result<Option<(f64, Reactions)>, String> {
+        let failed = || format!("the margin LP inside the box failed above eta_s = {eta_lo}");
+        let (ok, mut x) = self.in_box(ETA_TOP).ok_or_else(failed)?;
+        if !ok {
+            return Ok(None);
+        }
+        let (mut lo, mut hi) = (eta_lo, ETA_TOP);
+        while hi - lo > 1e-15 * hi {
+            let m = 0.5 * (lo + hi);
+            if m <= lo || m >= hi {
+                break;
+            }
+            let (ok, xm) = self.in_box(m).ok_or_else(failed)?;
+            if ok {
+                (hi, x) = (m, xm);
+            } else {
+                lo = m;
+            }
+        }
+        Ok(Some((hi, x)))
+    }
+
     /// Checks the contacts active at (x, η) for a mechanism; records a limit state.
     fn check(&mut self, x: Reactions, eta: f64, act: &[usize]) {
         let mut pattern: Vec<Contact> =
@@ -506,26 +555,63 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
         alive: Vec::new(),
         states: Vec::new(),
     };
+    // the start: the least admissible state, or, where that state is unbounded (η_s an
+    // infimum, approached only as the reactions grow without bound), the least point of
+    // P(η) inside the box — below it P(η) lies wholly outside the box, where no state is
+    // a limit state, and from it on every vertex of P(η) ∩ box is followed
+    let bounded_start = x_s
+        .iter()
+        .all(|v| v.abs() <= settings.unbounded_reactions * (1.0 + arch.span()));
+    let (eta_s, x_s) = if bounded_start {
+        (eta_s, x_s)
+    } else {
+        match sw.least_in_box(eta_s) {
+            Ok(Some(start)) => start,
+            Ok(None) => {
+                // no state inside the box below the thickness limit: no limit state
+                return Sweep {
+                    states: vec![],
+                    events: 0,
+                    failure: None,
+                };
+            }
+            Err(f) => {
+                return Sweep {
+                    states: vec![],
+                    events: 0,
+                    failure: Some(f),
+                }
+            }
+        }
+    };
     let act = sw.active(&x_s, eta_s);
     for v in sw.vertices_after(&x_s, eta_s, &act) {
         sw.push(v, eta_s);
     }
     if sw.alive.is_empty() {
         // a degenerate least state: walk the vertex graph just above η_s instead (limit
-        // states in (η_s, η₀] would be missed; η₀ − η_s is at the resolution of η)
-        let eta0 = eta_s * (1.0 + 1e-6);
+        // states in (η_s, η₀] would be missed)
+        let eta0 = if eta_s > 0.0 {
+            eta_s * (1.0 + 1e-6)
+        } else {
+            settings.sweep_min_eta
+        };
         // start from the state of largest margin at η₀ (inside P(η₀))
-        let mut ws = WorkingSet::initial(arch);
-        let centre = max_margin(
-            arch,
-            eta0,
-            mu,
-            ContactKind::active_at(mu),
-            &mut ws,
-            Goal::Optimise,
-            settings,
-        )
-        .map_or(x_s, |m| m.x);
+        let centre = if bounded_start {
+            let mut ws = WorkingSet::initial(arch);
+            max_margin(
+                arch,
+                eta0,
+                mu,
+                ContactKind::active_at(mu),
+                &mut ws,
+                Goal::Optimise,
+                settings,
+            )
+            .map_or(x_s, |m| m.x)
+        } else {
+            sw.in_box(eta0).map_or(x_s, |(_, x)| x)
+        };
         for t in sw.vertices_by_walk(eta0, centre) {
             let v = Vertex::new(&sw.planes, t);
             let x = v.at(eta0);

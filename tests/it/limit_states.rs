@@ -3,13 +3,29 @@
 //! same least admissible thickness, whether it carries a mechanism, and the same limit
 //! states above it (η to 1e-8 relative).
 
-use crate::search_reference::{brute_force, least_friction, random_joints, Rng};
+use crate::search_reference::{brute_force, least_friction, random_joints, RefSearch, Rng};
 use arch_enum::limit_states::search;
 use arch_enum::{Arch, Settings, WeightModel};
 use std::f64::consts::PI;
 
 /// One arch compared; `Err` describes the disagreement.
 fn compare(br: f64, bl: f64, joints: &[f64], centroid: bool, mu: f64) -> Result<usize, String> {
+    compare_with(
+        &brute_force(br, bl, joints, centroid, mu),
+        joints,
+        centroid,
+        mu,
+    )
+}
+
+/// [`compare`] with the reference already computed.
+fn compare_with(
+    reference: &RefSearch,
+    joints: &[f64],
+    centroid: bool,
+    mu: f64,
+) -> Result<usize, String> {
+    let (br, bl) = (joints[0], joints[joints.len() - 1]);
     let weight = if centroid {
         WeightModel::Centroid
     } else {
@@ -19,7 +35,6 @@ fn compare(br: f64, bl: f64, joints: &[f64], centroid: bool, mu: f64) -> Result<
         .unwrap()
         .with_joints(joints)
         .unwrap();
-    let reference = brute_force(br, bl, joints, centroid, mu);
     let ref_above: Vec<f64> = reference
         .states
         .iter()
@@ -299,6 +314,54 @@ fn infimum_is_not_a_limit_state() {
     assert!(!r.mechanism_at_eta_s);
 }
 
+/// Two- and three-voussoir arches with springings anywhere (issue 10), both weight models,
+/// μ = ∞ on about one case in six: the cases where a state without tension is admissible at
+/// vanishing thickness (η_s = 0, the arch stands at every η > 0) and still has limit states
+/// above, where four contacts meet with a sliding mechanism, and the two-voussoir arches
+/// at μ = ∞ whose state at η = 0 is in tension (once reported as standing at every η).
+/// `SMALL_CASES=N` runs more (the CI runs 40).
+#[test]
+fn few_voussoir_arches_match_brute_force() {
+    let mut rng = Rng(0x2233_0001);
+    let count: usize = std::env::var("SMALL_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(40);
+    let mut failures = Vec::new();
+    let (mut zero, mut zero_above) = (0, 0);
+    for case in 0..count {
+        let blocks = 2 + (rng.next() * 2.0) as usize;
+        let br = -1.2 + 2.4 * rng.next();
+        let bl = br + 0.3 + 4.0 * rng.next();
+        let joints = random_joints(&mut rng, br, bl, blocks);
+        let centroid = rng.next() < 0.3;
+        let ms = least_friction(br, bl, &joints);
+        let u = rng.next();
+        let mu = if u < 0.15 {
+            f64::INFINITY
+        } else {
+            ms * (1.0 + 1e-4) + 2.0 * u * u * u
+        };
+        let reference = brute_force(br, bl, &joints, centroid, mu);
+        match compare_with(&reference, &joints, centroid, mu) {
+            Ok(k) => {
+                if reference.eta_s == 0.0 {
+                    zero += 1;
+                    zero_above += usize::from(k > 0);
+                }
+            }
+            Err(e) => failures.push(format!(
+                "case {case}: joints {joints:?} centroid {centroid} mu {mu:?}: {e}"
+            )),
+        }
+    }
+    println!(
+        "{count} arches of 2 and 3 voussoirs, {zero} standing at every eta > 0 ({zero_above} of them with limit states above), {} disagreements",
+        failures.len()
+    );
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
 /// Two-voussoir arches (three joints, issue 10): where two contacts sit at one joint (a
 /// hinge and a slide) and a springing contact is active too, the active set used to drop
 /// a joint whose neighbour had the same value (a local-maximum filter over the joints),
@@ -509,4 +572,100 @@ fn stands_at_every_eta_with_a_limit_state_above() {
         .unwrap()
         .unwrap();
     assert!(r.eta_s == 0.0 && r.above.is_empty());
+}
+
+/// Issue 10: where η_s is an infimum (approached only as the reactions grow without
+/// bound), it is the least η with a weightless admissible direction — for a steep segment
+/// of span Δ with a joint at its middle, the straight line through the extrados points of
+/// the springings touching the intrados at the middle joint:
+/// (1 + η/2) cos(Δ/2) = 1 − η/2, i.e. η = 2 tan²(Δ/4), the continuous arch's value too.
+/// The Newton state of `solve` only approximated it (to ~1e-12, its equations holding
+/// relative to reactions of 1e9); η_s is now the root of the direction's three contacts,
+/// exact to rounding. Not attained, so no limit state at η_s.
+#[test]
+fn discrete_infimum_is_exact() {
+    for blocks in [2usize, 4, 6] {
+        for span in [0.3, 0.8, 1.2, 2.0] {
+            let br = -0.2 - span / 2.0;
+            let arch = Arch::new(br, br + span, WeightModel::Centreline)
+                .unwrap()
+                .with_blocks(blocks)
+                .unwrap();
+            let exact = 2.0 * (span / 4.0f64).tan().powi(2);
+            // μ = ∞, and a friction the straight line of thrust needs (its angle with the
+            // joint normals is at most Δ/2) with room to spare
+            for mu in [f64::INFINITY, 1.0 + (span / 2.0f64).tan()] {
+                let r = search(&arch, mu, &Settings::default()).unwrap().unwrap();
+                assert!(!r.attained && !r.mechanism_at_eta_s, "{blocks} {span} {mu}");
+                assert!(
+                    (r.eta_s - exact).abs() <= 4.0 * f64::EPSILON * exact,
+                    "{blocks} voussoirs, span {span}, mu {mu}: {} vs {exact}",
+                    r.eta_s
+                );
+            }
+        }
+    }
+}
+
+/// Issue 10 (wild random arch, case 73 of the 300): η_s an infimum. Bracketing η_s, the
+/// margin LP at η ≈ η_s (1 + 4e-10), where the best states are ~1e11, failed in HiGHS
+/// ("Unbounded", with the reactions boxed or not), and `solve` gave up: no least state, no
+/// search. A weightless admissible direction with room (the recession cone's margin, a
+/// well-scaled LP) now shows that P(η) is not empty there, with an explicit far state.
+#[test]
+fn infimum_bracket_survives_lp_failure() {
+    let joints = [
+        -0.8672693602209524,
+        -0.8103573333201234,
+        -0.7501073716082238,
+        -0.6822258064690885,
+        -0.5515312936453811,
+        -0.4626748946390806,
+        -0.34139218787629644,
+    ];
+    assert_eq!(
+        compare(joints[0], joints[6], &joints, false, 0.3254103135334804),
+        Ok(1)
+    );
+    // a two-voussoir arch where the same happened (random 2- and 3-voussoir arches)
+    let joints = [
+        -0.6945466631754706,
+        -0.3942441977385743,
+        -0.24431511437101922,
+    ];
+    assert_eq!(
+        compare(joints[0], joints[2], &joints, false, 0.47611544543675866),
+        Ok(1)
+    );
+}
+
+/// Issue 10: where η_s is an infimum the least state has reactions ~1e9, outside the
+/// sweep's box (|x_k| ≤ 1e7). The sweep used to start there (its vertex paths outside the
+/// box, the box's vertices never followed) or, finding no vertex, gave up ("no vertex of
+/// the admissible set found just above eta_s"). It now starts at the least η at which P(η)
+/// meets the box, from the point where it does; there the three contacts of the weightless
+/// direction form a vertex with a determinant of ~1e-12 (relative), no longer taken for a
+/// dependent triple (case 128: both sliding limit states above were missed that way).
+#[test]
+fn infimum_sweep_starts_inside_the_box() {
+    let joints = [
+        -0.17809391187591528,
+        -0.08467456974260745,
+        0.014412117707159111,
+        0.17586341813073253,
+    ];
+    assert_eq!(
+        compare(joints[0], joints[3], &joints, false, 0.5288872447493357),
+        Ok(2)
+    );
+    let joints = [-1.106921546502596, -0.8982894601080077, -0.7865727551852193];
+    assert_eq!(
+        compare(joints[0], joints[2], &joints, false, 0.2870169351378892),
+        Ok(1)
+    );
+    let joints = [-0.965545198893314, -0.7856270637541098, -0.6415860867560821];
+    assert_eq!(
+        compare(joints[0], joints[2], &joints, true, 0.8586901158065834),
+        Ok(1)
+    );
 }

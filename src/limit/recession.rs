@@ -1,0 +1,263 @@
+//! Weightless admissible directions of a discrete arch: where η_s is an infimum.
+//!
+//! The admissible set P(η) = {x : g_i(η)·x + c_i(η) ≤ 0} of a discrete arch is unbounded
+//! exactly when its recession cone {d : g_i(η)·d ≤ 0 for every contact i} holds a d ≠ 0:
+//! a *weightless* state (the c_i carry the weight) that every joint admits, e.g. a
+//! straight line of thrust through hinge points of a steep segment. The cone grows with η
+//! (admissibility is monotone, and so is its weightless version). Once it has an interior,
+//! P(η) is not empty either: far enough along such a d every φ_i is negative, whatever
+//! the weight. So where P(η) is empty below the least η_rec with such a direction and
+//! holds no bounded state at η_rec itself, η_s = η_rec is an infimum approached only as the
+//! reactions grow without bound (issue 10): no limit state there.
+//!
+//! At η_rec the cone is a single ray (generically): three contacts whose gradients have a
+//! common null direction, a root of det[g_a(η) g_b(η) g_c(η)] — a cubic, the gradients
+//! being affine in η (formulation §3). [`threshold`] brackets η_rec by the sign of the
+//! cone's margin (a small LP with |d_k| ≤ 1) and then finds that cubic's root in the
+//! bracket.
+
+use crate::arch::{Arch, JointLayout};
+use crate::contact::ContactKind;
+use crate::lp;
+use crate::settings::Settings;
+use crate::statics::{actions, Affine, Reactions};
+
+/// The cone's margin is positive beyond this (rows and directions of unit size).
+const MARGIN_TOL: f64 = 1e-12;
+
+/// A weightless admissible direction at its least thickness.
+#[derive(Debug, Clone, Copy)]
+pub struct Recession {
+    /// η_rec: the least η at which the direction is admissible.
+    pub eta: f64,
+    /// The direction, |d|∞ = 1.
+    pub d: Reactions,
+    /// Whether `eta` is the root of the determinant of three contacts (verified: every
+    /// contact admits `d` there), rather than the upper end of the bisection bracket.
+    pub exact: bool,
+}
+
+/// The gradients g_i(η) of every activation function at every joint, as (g(0), g(1) − g(0))
+/// (exactly affine in η: g_E = ∇M − η∇N/2, g_I = −∇M − η∇N/2, g_S± independent of η).
+fn gradients(arch: &Arch, mu: f64) -> Option<Vec<([f64; 3], [f64; 3])>> {
+    let JointLayout::Discrete(joints) = arch.layout() else {
+        return None;
+    };
+    let mut out = Vec::new();
+    for &beta in joints {
+        let (a0, a1) = (actions(arch, 0.0, beta), actions(arch, 1.0, beta));
+        for &k in ContactKind::active_at(mu) {
+            let (g0, g1) = (
+                a0.activation(k, 0, 0.0, mu).g,
+                a1.activation(k, 0, 1.0, mu).g,
+            );
+            out.push((g0, [g1[0] - g0[0], g1[1] - g0[1], g1[2] - g0[2]]));
+        }
+    }
+    Some(out)
+}
+
+fn at(g: &([f64; 3], [f64; 3]), eta: f64) -> [f64; 3] {
+    [0, 1, 2].map(|k| g.0[k] + eta * g.1[k])
+}
+
+fn dot(a: &[f64; 3], b: &[f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn norm(a: &[f64; 3]) -> f64 {
+    dot(a, a).sqrt()
+}
+
+/// The margin of the recession cone at η: max s subject to ĝ_i(η)·d + s ≤ 0 for every
+/// contact (unit gradients) and |d_k| ≤ 1 − s, with the maximiser d; `None` for a
+/// continuous arch or an LP failure. Positive exactly when the cone has an interior.
+pub fn margin(arch: &Arch, mu: f64, eta: f64, settings: &Settings) -> Option<(f64, Reactions)> {
+    let grads = gradients(arch, mu)?;
+    cone_margin(&grads, eta, settings)
+}
+
+fn cone_margin(
+    grads: &[([f64; 3], [f64; 3])],
+    eta: f64,
+    settings: &Settings,
+) -> Option<(f64, Reactions)> {
+    let mut rows: Vec<Affine> = grads
+        .iter()
+        .map(|g| Affine {
+            g: at(g, eta),
+            c: 0.0,
+        })
+        .collect();
+    for k in 0..3 {
+        for s in [1.0, -1.0] {
+            let mut g = [0.0; 3];
+            g[k] = s;
+            rows.push(Affine { g, c: -1.0 });
+        }
+    }
+    let (d, s) = lp::max_margin(&rows, 1.0, settings).ok()?;
+    Some((s, d))
+}
+
+/// η_rec in [lo, hi]: the least η with a weightless admissible direction, when the cone
+/// has no interior at `lo` and has one at `hi` (`None` otherwise, or for a continuous
+/// arch). Bisection on the sign of [`margin`] to 1e-13 (relative), then the exact root of
+/// det[g_a g_b g_c](η) for the contacts tight at the bracket's direction, verified.
+pub fn threshold(arch: &Arch, mu: f64, lo: f64, hi: f64, settings: &Settings) -> Option<Recession> {
+    let grads = gradients(arch, mu)?;
+    let positive = |eta: f64| cone_margin(&grads, eta, settings).map(|(s, d)| (s > MARGIN_TOL, d));
+    let (lo0, mut lo, mut hi) = (lo, lo, hi);
+    if positive(lo)?.0 {
+        return None;
+    }
+    let (ok, mut d) = positive(hi)?;
+    if !ok {
+        return None;
+    }
+    for _ in 0..200 {
+        if hi - lo <= 1e-13 * hi {
+            break;
+        }
+        let m = 0.5 * (lo + hi);
+        let (ok, dm) = positive(m)?;
+        if ok {
+            hi = m;
+            d = dm;
+        } else {
+            lo = m;
+        }
+    }
+    let scale = d.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+    let d = d.map(|v| v / scale);
+    // the contacts tight at d (the cone's margin there is ~ 0): the tightest few
+    let mut tight: Vec<(f64, usize)> = grads
+        .iter()
+        .enumerate()
+        .map(|(i, g)| {
+            let gi = at(g, hi);
+            (-dot(&gi, &d) / norm(&gi).max(f64::MIN_POSITIVE), i)
+        })
+        .filter(|(slack, _)| *slack <= 1e-6)
+        .collect();
+    tight.sort_by(|a, b| a.0.total_cmp(&b.0));
+    tight.truncate(8);
+    let width = hi - lo;
+    let mut best: Option<Recession> = None;
+    for a in 0..tight.len() {
+        for b in a + 1..tight.len() {
+            for c in b + 1..tight.len() {
+                let rows = [tight[a].1, tight[b].1, tight[c].1].map(|i| &grads[i]);
+                // the bisection stops where the margin exceeds MARGIN_TOL, a little above
+                // η_rec: the root lies in [lo0, hi]
+                for eta in det_roots(&rows, lo0, hi + width) {
+                    if let Some(dir) = verify(&grads, &rows, eta, &d) {
+                        if best.is_none_or(|r| eta < r.eta) {
+                            best = Some(Recession {
+                                eta,
+                                d: dir,
+                                exact: true,
+                            });
+                        }
+                    }
+                }
+            }
+        }
+    }
+    best.or(Some(Recession {
+        eta: hi,
+        d,
+        exact: false,
+    }))
+}
+
+/// The sign changes of det[g_a(η) g_b(η) g_c(η)] (a cubic in η) on [lo, hi], each
+/// narrowed by bisection to adjacent floats: the interval is the bracket of η_rec
+/// (≤ 2e-6 relative), split into 64 pieces so that the cubic's roots there are separated.
+fn det_roots(rows: &[&([f64; 3], [f64; 3]); 3], lo: f64, hi: f64) -> Vec<f64> {
+    let det = |eta: f64| {
+        let [a, b, c] = rows.map(|r| at(r, eta));
+        a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+            + a[2] * (b[0] * c[1] - b[1] * c[0])
+    };
+    let n = 64;
+    let mut roots = Vec::new();
+    let mut prev = (lo, det(lo));
+    for i in 1..=n {
+        let t = if i == n {
+            hi
+        } else {
+            lo + (hi - lo) * i as f64 / n as f64
+        };
+        let cur = (t, det(t));
+        if prev.1 == 0.0 {
+            roots.push(prev.0);
+        } else if prev.1.signum() != cur.1.signum() && cur.1 != 0.0 {
+            let (mut a, mut b, fa) = (prev.0, cur.0, prev.1);
+            loop {
+                let m = 0.5 * (a + b);
+                if m <= a || m >= b {
+                    break;
+                }
+                let fm = det(m);
+                if fm == 0.0 {
+                    (a, b) = (m, m);
+                    break;
+                }
+                if fm.signum() == fa.signum() {
+                    a = m;
+                } else {
+                    b = m;
+                }
+            }
+            roots.push(0.5 * (a + b));
+        }
+        prev = cur;
+    }
+    if prev.1 == 0.0 {
+        roots.push(prev.0);
+    }
+    roots
+}
+
+/// The common null direction of three gradients at η (the sign of `near`), if every
+/// contact admits it there (g_i·d ≤ 1e-10 |g_i| |d|).
+fn verify(
+    grads: &[([f64; 3], [f64; 3])],
+    rows: &[&([f64; 3], [f64; 3]); 3],
+    eta: f64,
+    near: &Reactions,
+) -> Option<Reactions> {
+    let g = rows.map(|r| at(r, eta));
+    let cross = |a: &[f64; 3], b: &[f64; 3]| {
+        [
+            a[1] * b[2] - a[2] * b[1],
+            a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0],
+        ]
+    };
+    // the largest of the three pairwise cross products (two rows may be parallel)
+    let mut dir = [
+        cross(&g[0], &g[1]),
+        cross(&g[0], &g[2]),
+        cross(&g[1], &g[2]),
+    ]
+    .into_iter()
+    .max_by(|p, q| norm(p).total_cmp(&norm(q)))?;
+    let n = dir.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+    if n == 0.0 || !n.is_finite() {
+        return None;
+    }
+    let sign = if dot(&dir, near) < 0.0 { -1.0 } else { 1.0 };
+    dir = dir.map(|v| sign * v / n);
+    if dot(&dir, near) <= 0.5 * norm(near) * norm(&dir) {
+        return None; // not the bracket's direction
+    }
+    grads
+        .iter()
+        .all(|gr| {
+            let gi = at(gr, eta);
+            dot(&gi, &dir) <= 1e-10 * norm(&gi) * norm(&dir)
+        })
+        .then_some(dir)
+}
