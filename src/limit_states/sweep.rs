@@ -559,9 +559,12 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
     // infimum, approached only as the reactions grow without bound), the least point of
     // P(η) inside the box — below it P(η) lies wholly outside the box, where no state is
     // a limit state, and from it on every vertex of P(η) ∩ box is followed
-    let bounded_start = x_s
-        .iter()
-        .all(|v| v.abs() <= settings.unbounded_reactions * (1.0 + arch.span()));
+    // (a bounded least state on or outside the box — possible only with
+    // `unbounded_reactions` raised beyond 1e7 / (1 + span) — starts the same way)
+    let bounded_start = x_s.iter().all(|v| {
+        v.abs() <= settings.unbounded_reactions * (1.0 + arch.span())
+            && v.abs() < BOX * (1.0 - 1e-9)
+    });
     let (eta_s, x_s) = if bounded_start {
         (eta_s, x_s)
     } else {

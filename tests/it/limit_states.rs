@@ -663,6 +663,22 @@ fn infimum_sweep_starts_inside_the_box() {
         compare(joints[0], joints[2], &joints, false, 0.2870169351378892),
         Ok(1)
     );
+    // a least state taken as bounded (the threshold raised to 1e12) but outside the box
+    // (reactions ~1e9): the sweep starts inside the box all the same (from the state
+    // itself it found no vertex and gave up)
+    let arch = Arch::new(joints[0], joints[2], WeightModel::Centreline)
+        .unwrap()
+        .with_joints(&joints)
+        .unwrap();
+    let raised = Settings {
+        unbounded_reactions: 1e12,
+        ..Settings::default()
+    };
+    let etas = |s: &Settings| -> Vec<f64> {
+        let r = search(&arch, 0.2870169351378892, s).unwrap().unwrap();
+        r.above.iter().map(|a| a.eta).collect()
+    };
+    assert_eq!(etas(&raised), etas(&Settings::default()));
     let joints = [-0.965545198893314, -0.7856270637541098, -0.6415860867560821];
     assert_eq!(
         compare(joints[0], joints[2], &joints, true, 0.8586901158065834),
