@@ -38,8 +38,9 @@ pub(crate) fn run(a: SolveArgs, settings: &Settings, io: &mut Io) -> Exit {
     } else {
         io.out(&table::solve(&survey, a.explain));
     }
-    // decided: η_s exact and every limit state above it searched
-    if survey.states.is_ok() {
+    // decided: η_s exact and every limit state above it searched (an arch that stands at
+    // every η > 0 has no least thickness: exit 1 with status no_collapse, as `modes` says)
+    if survey.states.is_ok() && !matches!(sol.outcome, Outcome::NoCollapse { .. }) {
         return Exit::Answered;
     }
     match &sol.outcome {

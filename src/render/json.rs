@@ -261,9 +261,13 @@ pub fn solve(survey: &Survey, explain: bool) -> SolveJson {
     match &survey.states {
         Ok(s) => {
             // η_s is known exactly and every limit state above it was searched: a decided
-            // answer even when the least state carries no mechanism
-            doc.status = "ok";
-            doc.message = None;
+            // answer even when the least state carries no mechanism. An arch that stands at
+            // every η > 0 keeps its status (there is no least thickness; η_s = 0 is an
+            // infimum) and its message, with the limit states above listed all the same.
+            if !matches!(sol.outcome, Outcome::NoCollapse { .. }) {
+                doc.status = "ok";
+                doc.message = None;
+            }
             doc.eta_bracket = None;
             doc.eta = Some(s.eta_s);
             doc.attained = Some(s.attained);
