@@ -5,10 +5,15 @@ use super::format::*;
 use super::verify::{prove_safe_only, verify};
 use crate::arch::{Arch, JointLayout};
 use crate::contact::Contact;
+use crate::contact::ContactKind;
 use crate::friction::friction_limit;
-use crate::limit::{solve, Outcome};
+use crate::kinematics::{column, power};
+use crate::limit::{LimitState, Outcome};
+use crate::limit_states::{survey, LimitStates, Survey, SweptState};
 use crate::lp;
+use crate::mechanism::Mechanism;
 use crate::settings::Settings;
+use crate::state::State;
 use crate::statics::{actions, Affine, Reactions};
 use itertools::Itertools;
 
@@ -37,6 +42,7 @@ fn empty(arch: &Arch, mu: f64, claim: Claim) -> Certificate {
         limit_state: None,
         gap: None,
         gap_relative: None,
+        search: None,
     }
 }
 
@@ -123,9 +129,9 @@ pub fn certify(
     gap: f64,
     settings: &Settings,
 ) -> Result<Certificate, NotCertified> {
-    let sol = solve(arch, mu, settings).map_err(|e| NotCertified(e.to_string()))?;
-    match sol.outcome {
-        Outcome::Limit(ls) => certify_limit(arch, mu, &ls, gap, settings),
+    let survey = survey(arch, mu, settings).map_err(|e| NotCertified(e.to_string()))?;
+    match survey.solution.outcome.clone() {
+        Outcome::Limit(ls) => certify_limit(arch, mu, &survey, &ls, gap, settings),
         Outcome::NoEquilibrium { mu_ms: Some(m), .. } if mu < m => {
             certify_no_equilibrium(arch, mu, settings)
         }
@@ -159,43 +165,184 @@ fn certify_no_equilibrium(
     Ok(cert)
 }
 
+/// A limit state in the format's order: pattern increasing in (β, kind), rates alongside.
+fn limit_state_cert(eta: f64, x: Reactions, mechanism: &Mechanism) -> LimitStateCert {
+    let mut joints: Vec<(PatternJoint, f64)> = mechanism
+        .contacts
+        .iter()
+        .zip(&mechanism.rates)
+        .map(|(c, &r)| (pattern_joint(c), r))
+        .collect();
+    joints.sort_by(|a, b| a.0.beta.total_cmp(&b.0.beta).then(a.0.kind.cmp(&b.0.kind)));
+    LimitStateCert {
+        eta,
+        x,
+        pattern: joints.iter().map(|(j, _)| j.clone()).collect(),
+        rates: joints.iter().map(|&(_, r)| r).collect(),
+        complementarity_residual: mechanism.complementarity,
+    }
+}
+
+fn pattern_joint(c: &Contact) -> PatternJoint {
+    PatternJoint {
+        beta: c.beta,
+        kind: c.kind,
+        at: c.at,
+    }
+}
+
+/// Farkas certificates that the kinematic LP on `pattern` at η is infeasible for every
+/// one-sense choice (a joint where both sliding senses are active slides one way only):
+/// first for the whole pattern, else one per choice. z is halved so that every inequality
+/// holds with room for the verifier's rounding. Those that cannot be found are left out
+/// (the verifier then reports the state as not proved).
+fn kinematic_farkas(
+    arch: &Arch,
+    eta: f64,
+    pattern: &[Contact],
+    settings: &Settings,
+) -> Vec<KinematicFarkas> {
+    let one = |drop: Vec<usize>| -> Option<KinematicFarkas> {
+        let kept: Vec<Contact> = (0..pattern.len())
+            .filter(|i| !drop.contains(i))
+            .map(|i| pattern[i])
+            .collect();
+        let cols: Vec<[f64; 3]> = kept.iter().map(|c| column(c.kind, c.beta, eta)).collect();
+        let p = power(arch, eta, &kept);
+        let (y, z, u) = lp::kinematic_farkas(&cols, &p, settings).ok()?;
+        (z > 0.0).then_some(KinematicFarkas {
+            drop,
+            y,
+            z: 0.5 * z,
+            u: u.max(0.0),
+        })
+    };
+    if let Some(f) = one(Vec::new()) {
+        return vec![f];
+    }
+    // joints with both senses: (index of S+, index of S−)
+    let both: Vec<(usize, usize)> = (0..pattern.len())
+        .filter(|&i| pattern[i].kind == ContactKind::SlidePlus)
+        .filter_map(|i| {
+            (0..pattern.len())
+                .find(|&k| {
+                    pattern[k].kind == ContactKind::SlideMinus && pattern[k].beta == pattern[i].beta
+                })
+                .map(|k| (i, k))
+        })
+        .collect();
+    if both.is_empty() || both.len() > 8 {
+        return Vec::new();
+    }
+    (0..1usize << both.len())
+        .filter_map(|choice| {
+            let drop: Vec<usize> = both
+                .iter()
+                .enumerate()
+                .map(|(b, &(p, m))| if choice >> b & 1 == 0 { m } else { p })
+                .collect();
+            one(drop)
+        })
+        .collect()
+}
+
+fn no_mechanism(
+    arch: &Arch,
+    eta: f64,
+    x: Reactions,
+    pattern: &[Contact],
+    settings: &Settings,
+) -> NoMechanism {
+    let mut pattern = pattern.to_vec();
+    pattern.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.kind.cmp(&b.kind)));
+    NoMechanism {
+        eta,
+        x,
+        pattern: pattern.iter().map(pattern_joint).collect(),
+        farkas: kinematic_farkas(arch, eta, &pattern, settings),
+    }
+}
+
+/// The evidence of the limit-state search, for the certificate.
+fn evidence(
+    arch: &Arch,
+    found: &LimitStates,
+    least: (f64, Reactions, &[Contact]),
+    unique: bool,
+    settings: &Settings,
+) -> SearchEvidence {
+    let method = if found.method.starts_with("sweep") {
+        SearchMethod::Sweep
+    } else if found.method.starts_with("hinges only") {
+        SearchMethod::HingesOnly
+    } else {
+        SearchMethod::Refined
+    };
+    let above = |s: &SweptState| limit_state_cert(s.eta, s.x, &s.mechanism);
+    SearchEvidence {
+        method,
+        events: found.events,
+        mechanism_at_eta: found.mechanism_at_eta_s,
+        unique,
+        least_state: (!found.mechanism_at_eta_s && found.attained)
+            .then(|| no_mechanism(arch, least.0, least.1, least.2, settings)),
+        limit_states_above: found.above.iter().map(above).collect(),
+        no_mechanism: found
+            .no_mechanism
+            .iter()
+            .map(|p| no_mechanism(arch, p.eta, p.x, &p.pattern, settings))
+            .collect(),
+    }
+}
+
 fn certify_limit(
     arch: &Arch,
     mu: f64,
-    ls: &crate::limit::LimitState,
+    survey: &Survey,
+    ls: &LimitState,
     gap: f64,
     settings: &Settings,
 ) -> Result<Certificate, NotCertified> {
     let mut cert = empty(arch, mu, Claim::LeastThickness);
-    // the pattern in the order of the format: increasing (β, kind), rates alongside
-    let mut joints: Vec<(PatternJoint, f64)> = ls
-        .mechanism
-        .contacts
-        .iter()
-        .zip(&ls.mechanism.rates)
-        .map(|(c, &r)| {
-            (
-                PatternJoint {
-                    beta: c.beta,
-                    kind: c.kind,
-                    at: c.at,
-                },
-                r,
-            )
-        })
-        .collect();
-    joints.sort_by(|a, b| a.0.beta.total_cmp(&b.0.beta).then(a.0.kind.cmp(&b.0.kind)));
-    cert.limit_state = Some(LimitStateCert {
-        eta: ls.eta,
-        x: ls.x,
-        pattern: joints.iter().map(|(j, _)| j.clone()).collect(),
-        rates: joints.iter().map(|&(_, r)| r).collect(),
-        complementarity_residual: ls.mechanism.complementarity,
-    });
+    // the bracket is around η_s, the least admissible state, which need not carry a
+    // mechanism (non-associative gap): its pattern is its active set
+    let (eta_s, x_s) = (ls.eta_static, ls.x_static);
+    let gap_case = ls.eta != ls.eta_static;
+    let pattern_s: Vec<Contact> = if gap_case {
+        State {
+            arch,
+            eta: eta_s,
+            mu,
+            x: x_s,
+        }
+        .verdict(ContactKind::active_at(mu), settings)
+        .active
+    } else {
+        ls.pattern.clone()
+    };
+    // the limit state: the one at η_s, else the least above it (only when the search is
+    // complete: otherwise the widened state is not known to be the least)
+    cert.limit_state = match (&survey.states, gap_case) {
+        (_, false) => Some(limit_state_cert(ls.eta, ls.x, &ls.mechanism)),
+        (Ok(found), true) => found
+            .above
+            .first()
+            .map(|s| limit_state_cert(s.eta, s.x, &s.mechanism)),
+        (Err(_), true) => None,
+    };
+    if let (Ok(found), Some(unique)) = (&survey.states, survey.unique()) {
+        cert.search = Some(evidence(
+            arch,
+            found,
+            (eta_s, x_s, &pattern_s),
+            unique,
+            settings,
+        ));
+    }
     // the Farkas pool: active contacts, interior tangencies also as chords β ± δ
-    let mut pool: Vec<Contact> = ls.pattern.clone();
+    let mut pool: Vec<Contact> = pattern_s.clone();
     if matches!(arch.layout(), JointLayout::Continuous) {
-        for c in &ls.pattern {
+        for c in &pattern_s {
             if c.free {
                 for delta in [1e-2, 1e-3, 1e-4] {
                     for b in [c.beta - delta, c.beta + delta] {
@@ -209,14 +356,14 @@ fn certify_limit(
     }
     let mut g = gap.max(1e-15);
     while g <= 1e-4 {
-        let eta_hi = ls.eta * (1.0 + 0.5 * g);
-        let mut eta_lo = ls.eta * (1.0 - 0.5 * g);
+        let eta_hi = eta_s * (1.0 + 0.5 * g);
+        let mut eta_lo = eta_s * (1.0 - 0.5 * g);
         // the gap as computed in floating point must not exceed g (rounding of the two
         // ends could otherwise push it over by a few ulps)
         while (eta_hi - eta_lo) / eta_hi > g {
             eta_lo = eta_lo.next_up();
         }
-        if let Some(x) = safe_state(arch, mu, ls, eta_hi, settings) {
+        if let Some(x) = safe_state(arch, mu, (eta_s, x_s, &pattern_s), eta_hi, settings) {
             let mut c = cert.clone();
             c.safe = Some(SafeSide { eta: eta_hi, x });
             let safe_ok = {
@@ -244,8 +391,7 @@ fn certify_limit(
         g *= 10.0;
     }
     Err(NotCertified(format!(
-        "no certificate could be proved at a relative gap up to 1e-4 (eta* = {})",
-        ls.eta
+        "no certificate could be proved at a relative gap up to 1e-4 (eta_s = {eta_s})"
     )))
 }
 
@@ -254,17 +400,16 @@ fn certify_limit(
 fn safe_state(
     arch: &Arch,
     mu: f64,
-    ls: &crate::limit::LimitState,
+    (eta_s, x_s, pattern): (f64, Reactions, &[Contact]),
     eta_hi: f64,
     settings: &Settings,
 ) -> Option<Reactions> {
-    let k = 1.0 / (eta_hi - ls.eta);
-    let rows: Vec<Affine> = ls
-        .pattern
+    let k = 1.0 / (eta_hi - eta_s);
+    let rows: Vec<Affine> = pattern
         .iter()
         .map(|c| {
             let a = actions(arch, eta_hi, c.beta).activation(c.kind, 0, eta_hi, mu);
-            let at_x = a.at(&ls.x);
+            let at_x = a.at(&x_s);
             Affine {
                 g: a.g,
                 c: k * at_x,
@@ -275,5 +420,5 @@ fn safe_state(
     if s.is_nan() || s <= 0.0 {
         return None;
     }
-    Some([ls.x[0] + d[0] / k, ls.x[1] + d[1] / k, ls.x[2] + d[2] / k])
+    Some([x_s[0] + d[0] / k, x_s[1] + d[1] / k, x_s[2] + d[2] / k])
 }

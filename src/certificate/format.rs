@@ -93,6 +93,72 @@ pub struct LimitStateCert {
     pub complementarity_residual: f64,
 }
 
+/// How the limit-state search established its list (a closed set).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SearchMethod {
+    /// A discrete arch: the sweep of the admissible polytope P(η) in η; `no_mechanism`
+    /// lists every point it checked without finding a mechanism.
+    Sweep,
+    /// μ = ∞: every mechanism is made of hinges, and the safe state strictly inside P(η_hi)
+    /// rules out every limit state at η ≥ η_hi (virtual work, formulation §6).
+    HingesOnly,
+    /// A continuous arch: the limit states of two discretisations (J and 2J pieces),
+    /// refined on the continuum, agreed (not re-checked by `verify`).
+    Refined,
+}
+
+/// The Farkas alternative of the kinematic LP on a pattern: with c_j the compatibility
+/// column and p_j the external power coefficient of the kept contacts,
+/// `c_j · y + z + u p_j ≤ 0` for every kept j, z > 0, u ≥ 0 proves that no rates λ ≥ 0,
+/// Σ λ = 1, B λ = 0, L_e ≥ 0 exist on them.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct KinematicFarkas {
+    /// Indices (into the pattern) of contacts left out: one sliding sense of a joint where
+    /// both are active (a joint slides one way only). Empty: the whole pattern.
+    pub drop: Vec<usize>,
+    /// The multipliers of B λ = 0.
+    pub y: [f64; 3],
+    /// The multiplier of Σ λ = 1 (> 0).
+    pub z: f64,
+    /// The multiplier of L_e ≥ 0 (≥ 0).
+    pub u: f64,
+}
+
+/// A state whose active contacts carry no mechanism, with the proof.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct NoMechanism {
+    /// Thickness ratio.
+    pub eta: f64,
+    /// Reactions.
+    pub x: [f64; 3],
+    /// Every contact active there, strictly increasing in (β, kind).
+    pub pattern: Vec<PatternJoint>,
+    /// Farkas certificates covering every one-sense choice of the pattern.
+    pub farkas: Vec<KinematicFarkas>,
+}
+
+/// Evidence for the list of limit states with η in [η_s, 2) (issue 10).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct SearchEvidence {
+    /// `sweep`, `hinges_only` or `refined` (anything else is rejected when read).
+    #[serde(deserialize_with = "field_method")]
+    pub method: SearchMethod,
+    /// Events of the sweep.
+    pub events: usize,
+    /// Whether the least admissible state (at η_s) carries a mechanism.
+    pub mechanism_at_eta: bool,
+    /// Whether exactly one limit state exists with η in [η_s, 2).
+    pub unique: bool,
+    /// The least admissible state and the proof that its active contacts carry no
+    /// mechanism (present when `mechanism_at_eta` is false and η_s is attained).
+    pub least_state: Option<NoMechanism>,
+    /// Every limit state above η_s, ascending in η.
+    pub limit_states_above: Vec<LimitStateCert>,
+    /// `sweep` only: every point checked without a mechanism, with its proof.
+    pub no_mechanism: Vec<NoMechanism>,
+}
+
 /// A certificate (format version 1).
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Certificate {
@@ -118,6 +184,10 @@ pub struct Certificate {
     pub gap: Option<f64>,
     /// (η_hi − η_lo)/η_hi.
     pub gap_relative: Option<f64>,
+    /// Evidence for every limit state with η in [η_s, 2) (absent in older certificates
+    /// and where the search could not be completed).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub search: Option<SearchEvidence>,
 }
 
 /// Why no certificate could be produced (a result, not bad input).
@@ -136,6 +206,10 @@ fn field_kind<'de, D: Deserializer<'de>>(d: D) -> Result<ContactKind, D::Error> 
 
 fn field_at<'de, D: Deserializer<'de>>(d: D) -> Result<Location, D::Error> {
     named(d, "at")
+}
+
+fn field_method<'de, D: Deserializer<'de>>(d: D) -> Result<SearchMethod, D::Error> {
+    named(d, "method")
 }
 
 fn field_weight<'de, D: Deserializer<'de>>(d: D) -> Result<WeightModel, D::Error> {

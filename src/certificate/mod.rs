@@ -50,6 +50,7 @@ pub mod certify;
 pub mod format;
 pub mod interval;
 pub mod verify;
+mod verify_search;
 
 pub use certify::certify;
 pub use format::*;

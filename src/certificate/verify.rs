@@ -16,8 +16,8 @@
 //!   (B λ = 0, λ ≥ 0, Σ λ = 1, L_e ≥ 0, complementarity) — evidence, not proof.
 
 use super::format::{
-    ArchSpec, CertJoint, Certificate, Claim, ContactKind, LimitStateCert, Location, WeightModel,
-    FORMAT, VERSION,
+    ArchSpec, CertJoint, Certificate, Claim, ContactKind, LimitStateCert, Location, PatternJoint,
+    WeightModel, FORMAT, VERSION,
 };
 use super::interval::{det2, det3, Interval as I};
 use std::f64::consts::PI;
@@ -39,6 +39,8 @@ pub struct Report {
     /// One line per check that passed, each saying whether it was *proved* (interval
     /// arithmetic) or *checked* (floating point, evidence only).
     pub checks: Vec<String>,
+    /// What the limit-state search lists (certificates with a `search` section).
+    pub limit_states: Option<String>,
 }
 
 impl Report {
@@ -76,20 +78,20 @@ impl Report {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Rejection(pub String);
 
-fn reject<T>(msg: impl Into<String>) -> Result<T, Rejection> {
+pub(super) fn reject<T>(msg: impl Into<String>) -> Result<T, Rejection> {
     Err(Rejection(msg.into()))
 }
 
 /// The geometry and weight of the certificate's arch, for interval evaluation.
-struct Model {
-    beta_r: f64,
-    beta_l: f64,
+pub(super) struct Model {
+    pub(super) beta_r: f64,
+    pub(super) beta_l: f64,
     centroid: bool,
-    joints: Option<Vec<f64>>,
+    pub(super) joints: Option<Vec<f64>>,
 }
 
 /// Interval values of N, T, M and their first two β-derivatives at β ∈ `b`.
-struct Ntm {
+pub(super) struct Ntm {
     n: [I; 3],
     t: [I; 3],
     m: [I; 3],
@@ -98,7 +100,7 @@ struct Ntm {
 impl Model {
     /// A joint angle must be finite, inside [β_R, β_L], and for a discrete arch one of
     /// its listed joints.
-    fn check_joint(&self, beta: f64, what: &str) -> Result<(), Rejection> {
+    pub(super) fn check_joint(&self, beta: f64, what: &str) -> Result<(), Rejection> {
         if !(beta.is_finite() && beta >= self.beta_r && beta <= self.beta_l) {
             return reject(format!(
                 "{what}: beta = {beta} lies outside the arch [beta_right, beta_left] = [{}, {}]",
@@ -115,7 +117,7 @@ impl Model {
         Ok(())
     }
 
-    fn rho(&self, eta: f64) -> I {
+    pub(super) fn rho(&self, eta: f64) -> I {
         if self.centroid {
             let e = I::point(eta);
             I::point(1.0) + e * e * I::new((1.0f64 / 12.0).next_down(), (1.0f64 / 12.0).next_up())
@@ -124,7 +126,7 @@ impl Model {
         }
     }
 
-    fn ntm(&self, b: I, x: [f64; 3], eta: f64) -> Ntm {
+    pub(super) fn ntm(&self, b: I, x: [f64; 3], eta: f64) -> Ntm {
         let (h, v, w) = (I::point(x[0]), I::point(x[1]), I::point(x[2]));
         let (s, c) = (b.sin(), b.cos());
         let br = I::point(self.beta_r);
@@ -151,13 +153,13 @@ impl Model {
 }
 
 /// Whether the activation function `kind` exists at friction `mu` (`None` = ∞: hinges only).
-fn exists(kind: ContactKind, mu: Option<f64>) -> bool {
+pub(super) fn exists(kind: ContactKind, mu: Option<f64>) -> bool {
     kind.is_hinge() || mu.is_some()
 }
 
 /// φ of `kind` (β-derivative `k`). Sliding rows need a finite μ: callers check
 /// [`exists`] first, and a sliding row at μ = ∞ evaluates to an unbounded interval.
-fn phi(kind: ContactKind, k: usize, a: &Ntm, eta: f64, mu: Option<f64>) -> I {
+pub(super) fn phi(kind: ContactKind, k: usize, a: &Ntm, eta: f64, mu: Option<f64>) -> I {
     let he = I::point(eta) * I::point(0.5);
     let slide = |sign: f64| match mu {
         Some(mu) => a.t[k].scale(sign) - I::point(mu) * a.n[k],
@@ -172,7 +174,7 @@ fn phi(kind: ContactKind, k: usize, a: &Ntm, eta: f64, mu: Option<f64>) -> I {
 }
 
 /// The activation functions that exist at friction `mu` (`None` = ∞).
-fn kinds(mu: Option<f64>) -> &'static [ContactKind] {
+pub(super) fn kinds(mu: Option<f64>) -> &'static [ContactKind] {
     match mu {
         Some(_) => &ContactKind::ALL,
         None => &ContactKind::HINGES,
@@ -211,18 +213,20 @@ fn taylor_upper(
 }
 
 /// Proves φ ≤ 0 for every activation function over the arch at (η, x).
-fn prove_admissible(
+/// With `strict`, proves φ < 0 instead (the state lies in the interior of P(η)).
+pub(super) fn prove_admissible(
     model: &Model,
     x: [f64; 3],
     eta: f64,
     mu: Option<f64>,
+    strict: bool,
 ) -> Result<usize, Rejection> {
     let mut pieces = 0usize;
     for &kind in kinds(mu) {
         if let Some(joints) = &model.joints {
             for &b in joints {
                 let v = phi(kind, 0, &model.ntm(I::point(b), x, eta), eta, mu);
-                if v.hi.is_nan() || v.hi > 0.0 {
+                if v.hi.is_nan() || v.hi > 0.0 || (strict && v.hi >= 0.0) {
                     return reject(format!("safe side: {} at the joint beta = {b} is not proved <= 0 (upper bound {:e})", kind.name(), v.hi));
                 }
                 pieces += 1;
@@ -252,7 +256,7 @@ fn prove_admissible(
                 return reject("safe side: enclosure work limit reached without a proof");
             }
             let (upper, lower_mid) = taylor_upper(model, kind, a, b, x, eta, mu);
-            if upper <= 0.0 {
+            if upper < 0.0 || (!strict && upper <= 0.0) {
                 continue;
             }
             if lower_mid > 0.0 {
@@ -454,7 +458,7 @@ fn check_finite(cert: &Certificate) -> Result<(), Rejection> {
 
 /// The arch of the certificate, checked: springings in order, the joints of a discrete
 /// arch strictly increasing from β_R to β_L.
-fn model_of(cert: &Certificate) -> Result<Model, Rejection> {
+pub(super) fn model_of(cert: &Certificate) -> Result<Model, Rejection> {
     let a = &cert.arch;
     if !(a.beta_right < a.beta_left && a.beta_left - a.beta_right <= 2.0 * PI) {
         return reject(format!(
@@ -492,9 +496,14 @@ fn model_of(cert: &Certificate) -> Result<Model, Rejection> {
 /// The pattern of the limit state: every joint inside the arch (at a listed joint of a
 /// discrete arch), `at` matching its angle, its kind existing at μ, and the list strictly
 /// increasing in (β, kind) (two contacts may share a joint).
-fn check_pattern(model: &Model, ls: &LimitStateCert, mu: Option<f64>) -> Result<(), Rejection> {
-    for (i, j) in ls.pattern.iter().enumerate() {
-        let what = format!("limit state: pattern joint {i}");
+pub(super) fn check_pattern(
+    model: &Model,
+    pattern: &[PatternJoint],
+    mu: Option<f64>,
+    whose: &str,
+) -> Result<(), Rejection> {
+    for (i, j) in pattern.iter().enumerate() {
+        let what = format!("{whose}: pattern joint {i}");
         model.check_joint(j.beta, &what)?;
         if !exists(j.kind, mu) {
             return reject(format!(
@@ -517,13 +526,12 @@ fn check_pattern(model: &Model, ls: &LimitStateCert, mu: Option<f64>) -> Result<
             ));
         }
     }
-    if let Some(w) = ls
-        .pattern
+    if let Some(w) = pattern
         .windows(2)
         .find(|w| !(w[0].beta < w[1].beta || (w[0].beta == w[1].beta && w[0].kind < w[1].kind)))
     {
         return reject(format!(
-            "limit state: pattern must be strictly increasing in (beta, kind), found {} at {} then {} at {}",
+            "{whose}: pattern must be strictly increasing in (beta, kind), found {} at {} then {} at {}",
             w[0].kind.name(),
             w[0].beta,
             w[1].kind.name(),
@@ -541,6 +549,7 @@ fn mu_text(mu: Option<f64>) -> String {
 /// Re-checks `cert`. Ok with what was proved and checked, or the first reason it fails.
 pub fn verify(cert: &Certificate) -> Result<Report, Rejection> {
     let mut checks = Vec::new();
+    let mut limit_states = None;
     if cert.format != FORMAT || cert.version != VERSION {
         return reject(format!(
             "not an {FORMAT} version {VERSION} certificate (found {} version {})",
@@ -569,7 +578,7 @@ pub fn verify(cert: &Certificate) -> Result<Report, Rejection> {
                     "collapse side: a no_equilibrium (friction-only) certificate has eta = null",
                 );
             }
-            if cert.safe.is_some() || cert.limit_state.is_some() {
+            if cert.safe.is_some() || cert.limit_state.is_some() || cert.search.is_some() {
                 return reject("a no_equilibrium claim cannot carry a safe state or a limit state");
             }
             let margin = prove_farkas(&model, &f.joints, 1.0, cert.mu, true)?;
@@ -596,9 +605,9 @@ pub fn verify(cert: &Certificate) -> Result<Report, Rejection> {
                 ));
             }
             if let Some(ls) = &cert.limit_state {
-                check_pattern(&model, ls, cert.mu)?;
+                check_pattern(&model, &ls.pattern, cert.mu, "limit state")?;
             }
-            let pieces = prove_admissible(&model, safe.x, safe.eta, cert.mu)?;
+            let pieces = prove_admissible(&model, safe.x, safe.eta, cert.mu, false)?;
             checks.push(format!(
                 "proved (interval arithmetic): the state x = [{}, {}, {}] is admissible at eta_hi = {} over the whole arch ({pieces} enclosures)",
                 safe.x[0], safe.x[1], safe.x[2], safe.eta
@@ -625,11 +634,25 @@ pub fn verify(cert: &Certificate) -> Result<Report, Rejection> {
                 }
             }
             if let Some(ls) = &cert.limit_state {
-                check_limit_state(&model, cert.mu, ls, eta_lo, safe.eta)?;
+                // the least limit state lies above η_s where η_s carries no mechanism
+                let above = cert.search.as_ref().is_some_and(|s| !s.mechanism_at_eta);
+                check_limit_state(
+                    &model,
+                    cert.mu,
+                    ls,
+                    eta_lo,
+                    if above { 2.0 } else { safe.eta },
+                )?;
                 checks.push(format!(
                     "checked (floating point, tolerance {LIMIT_STATE_TOL:e}; evidence, not proof): the limit state at eta = {} is consistent (pattern active, B lambda = 0, lambda >= 0, sum 1, L_e >= 0)",
                     ls.eta
                 ));
+            }
+            if let Some(search) = &cert.search {
+                let (lines, verdict) =
+                    super::verify_search::verify_search(&model, cert, search, eta_lo, safe)?;
+                checks.extend(lines);
+                limit_states = Some(verdict);
             }
             Some((eta_lo, safe.eta))
         }
@@ -640,6 +663,7 @@ pub fn verify(cert: &Certificate) -> Result<Report, Rejection> {
         bracket,
         arch: cert.arch.clone(),
         checks,
+        limit_states,
     })
 }
 
@@ -651,10 +675,10 @@ pub fn prove_safe_only(cert: &Certificate) -> Result<usize, Rejection> {
     let Some(safe) = &cert.safe else {
         return reject("no safe side");
     };
-    prove_admissible(&model, safe.x, safe.eta, cert.mu)
+    prove_admissible(&model, safe.x, safe.eta, cert.mu, false)
 }
 
-fn check_limit_state(
+pub(super) fn check_limit_state(
     model: &Model,
     mu: Option<f64>,
     ls: &LimitStateCert,

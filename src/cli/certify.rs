@@ -128,7 +128,19 @@ pub(crate) fn run_certify(a: CertifyArgs, settings: &Settings, io: &mut Io) -> E
             ),
             None => format!("claim: no thickness stands at mu = {}", mu_text(cert.mu)),
         };
-        io.out(&format!("wrote {}\n  {what}\n", path.display()));
+        let search = cert.search.as_ref().map_or(
+            "  limit states: not certified (the search could not be completed)\n".to_string(),
+            |s| {
+                format!(
+                    "  limit states: {} at eta_s, {} above it ({}; evidence for {} points without a mechanism)\n",
+                    if s.mechanism_at_eta { "one" } else { "none" },
+                    s.limit_states_above.len(),
+                    if s.unique { "unique" } else { "not unique" },
+                    s.no_mechanism.len() + usize::from(s.least_state.is_some())
+                )
+            },
+        );
+        io.out(&format!("wrote {}\n  {what}\n{search}", path.display()));
     } else {
         io.out(&to_json(&cert));
     }
@@ -168,6 +180,7 @@ pub(crate) fn run_verify(a: VerifyArgs, io: &mut Io) -> Exit {
         });
         if let Ok(r) = &outcome {
             doc["statement"] = serde_json::json!(r.statement());
+            doc["limit_states"] = serde_json::json!(r.limit_states);
         }
         if let Some(reason) = reason {
             doc["reason"] = serde_json::json!(reason);
@@ -176,8 +189,11 @@ pub(crate) fn run_verify(a: VerifyArgs, io: &mut Io) -> Exit {
     } else {
         match &outcome {
             Ok(r) => io.out(&format!(
-                "certificate holds\n{}\n  arch: {}\n  {}\n",
+                "certificate holds\n{}\n{}  arch: {}\n  {}\n",
                 r.statement(),
+                r.limit_states
+                    .as_ref()
+                    .map_or(String::new(), |l| format!("{l}\n")),
                 r.arch_text(),
                 r.checks.join("\n  ")
             )),

@@ -26,7 +26,7 @@ use crate::search::margin_at;
 use crate::settings::Settings;
 use crate::state::State;
 use crate::statics::Reactions;
-pub use sweep::SweptState;
+pub use sweep::{CheckedPoint, SweptState};
 
 /// Every limit state of a discrete arch at friction μ, above the least admissible state.
 #[derive(Debug, Clone)]
@@ -45,6 +45,9 @@ pub struct LimitStates {
     pub above: Vec<SweptState>,
     /// Events of the sweep (of the finer discretisation for a continuous arch).
     pub events: usize,
+    /// The points of a discrete arch's sweep whose active contacts carry no mechanism
+    /// (empty for the other methods): the evidence a certificate carries.
+    pub no_mechanism: Vec<CheckedPoint>,
     /// How the set was established: `"sweep"` (discrete arch: complete by the sweep's
     /// argument) or `"refined J/2J"` (continuous arch: the refined limit states of two
     /// discretisations agree).
@@ -139,6 +142,7 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Strin
         mechanism_at_eta_s,
         above,
         events: sw.events,
+        no_mechanism: sw.no_mechanism,
         method: "sweep".into(),
     })
 }
@@ -168,6 +172,7 @@ fn from_vanishing_thickness(
         mechanism_at_eta_s: false,
         above: sw.states.into_iter().filter(|s| s.eta > 0.0).collect(),
         events: sw.events,
+        no_mechanism: sw.no_mechanism,
         method: "sweep from eta = 0 (the arch stands at every eta > 0)".into(),
     })
 }
@@ -208,6 +213,7 @@ fn hinges_only(
         mechanism_at_eta_s,
         above: Vec::new(),
         events: 0,
+        no_mechanism: Vec::new(),
         method: "hinges only (mu = inf): P(eta) has an interior just above eta_s".into(),
     })
 }
@@ -294,6 +300,7 @@ fn continuous(
         mechanism_at_eta_s,
         above: fine,
         events,
+        no_mechanism: Vec::new(),
         method: format!(
             "refined {}/{}",
             settings.sweep_pieces,

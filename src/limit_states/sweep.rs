@@ -178,8 +178,23 @@ pub struct Sweep {
     pub states: Vec<SweptState>,
     /// Events processed.
     pub events: usize,
+    /// Every point checked whose active contacts carry no mechanism (events, and the
+    /// roots at which three contacts' columns become dependent), in the order checked:
+    /// the evidence behind "no limit state there" that a certificate can carry.
+    pub no_mechanism: Vec<CheckedPoint>,
     /// Why the sweep could not finish, if it could not.
     pub failure: Option<String>,
+}
+
+/// A point of the sweep whose active contacts were checked and carry no mechanism.
+#[derive(Debug, Clone)]
+pub struct CheckedPoint {
+    /// Thickness ratio.
+    pub eta: f64,
+    /// Reactions.
+    pub x: Reactions,
+    /// Every contact active there, by increasing (β, kind).
+    pub pattern: Vec<Contact>,
 }
 
 /// A limit state found by the sweep.
@@ -204,6 +219,7 @@ struct Sweeper<'a> {
     settings: &'a Settings,
     alive: Vec<(Vertex, Option<(f64, usize)>)>,
     states: Vec<SweptState>,
+    no_mechanism: Vec<CheckedPoint>,
 }
 
 impl Sweeper<'_> {
@@ -477,6 +493,10 @@ impl Sweeper<'_> {
                 mode,
                 mechanism: mech,
             });
+        } else {
+            // no mechanism (or an LP failure: a certificate then cannot prove this point,
+            // and says so)
+            self.no_mechanism.push(CheckedPoint { eta, x, pattern });
         }
     }
 
@@ -544,6 +564,7 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
         return Sweep {
             states: vec![],
             events: 0,
+            no_mechanism: vec![],
             failure: Some("the sweep needs the joints of a discrete arch".into()),
         };
     };
@@ -554,6 +575,7 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
         settings,
         alive: Vec::new(),
         states: Vec::new(),
+        no_mechanism: Vec::new(),
     };
     // the start: the least admissible state, or, where that state is unbounded (η_s an
     // infimum, approached only as the reactions grow without bound), the least point of
@@ -575,6 +597,7 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
                 return Sweep {
                     states: vec![],
                     events: 0,
+                    no_mechanism: vec![],
                     failure: None,
                 };
             }
@@ -582,6 +605,7 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
                 return Sweep {
                     states: vec![],
                     events: 0,
+                    no_mechanism: vec![],
                     failure: Some(f),
                 }
             }
@@ -632,6 +656,7 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
         return Sweep {
             states: vec![],
             events: 0,
+            no_mechanism: vec![],
             failure: Some(format!(
                 "no vertex of the admissible set found just above eta_s = {eta_s} ({} contacts active there)",
                 act.len()
@@ -654,6 +679,7 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
             return Sweep {
                 states: sw.states,
                 events,
+                no_mechanism: sw.no_mechanism,
                 failure: Some(format!("more than {MAX_EVENTS} events")),
             };
         }
@@ -692,6 +718,7 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
     Sweep {
         states: sw.states,
         events,
+        no_mechanism: sw.no_mechanism,
         failure: None,
     }
 }

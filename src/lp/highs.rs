@@ -111,3 +111,41 @@ pub fn kinematic(
         Err(e) => Err(LpOutcome::Failed(e.to_string())),
     }
 }
+
+/// The Farkas alternative of [`kinematic`]: maximises z ∈ [0, 1] subject to
+/// `c_j · y + z + u p_j ≤ 0` for every column c_j with power p_j, u ≥ 0 (y and u boxed at
+/// 1e6). A solution with z > 0 proves that no rates λ ≥ 0 with B λ = 0, Σ λ = 1 and
+/// p · λ ≥ 0 exist (multiply by λ and sum: 0 + z + u p·λ ≤ 0, impossible). Returns
+/// (y, z, u).
+pub fn kinematic_farkas(
+    columns: &[[f64; 3]],
+    power: &[f64],
+    tol: f64,
+) -> Result<([f64; 3], f64, f64), LpOutcome> {
+    const BOUND: f64 = 1e6;
+    let mut vars = ProblemVariables::new();
+    let y: Vec<_> = (0..3)
+        .map(|_| vars.add(variable().min(-BOUND).max(BOUND)))
+        .collect();
+    let z = vars.add(variable().min(0.0).max(1.0));
+    let u = vars.add(variable().min(0.0).max(BOUND));
+    let mut problem = configure(vars.maximise(z).using(highs), tol);
+    for (col, &p) in columns.iter().zip(power) {
+        let mut e = Expression::with_capacity(5);
+        for k in 0..3 {
+            e.add_mul(col[k], y[k]);
+        }
+        e.add_mul(1.0, z);
+        e.add_mul(p, u);
+        problem = problem.with(e.leq(0.0));
+    }
+    match problem.solve() {
+        Ok(sol) => Ok((
+            [sol.value(y[0]), sol.value(y[1]), sol.value(y[2])],
+            sol.value(z),
+            sol.value(u),
+        )),
+        Err(good_lp::ResolutionError::Infeasible) => Err(LpOutcome::Infeasible),
+        Err(e) => Err(LpOutcome::Failed(e.to_string())),
+    }
+}

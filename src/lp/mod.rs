@@ -55,3 +55,14 @@ pub fn kinematic(
     }
     highs::kinematic(columns, power, objective, settings.lp_tol)
 }
+
+/// The Farkas alternative of [`kinematic`] (used by certificates; HiGHS always): the
+/// largest z ∈ [0, 1] with `c_j · y + z + u p_j ≤ 0` for every column, u ≥ 0. z > 0
+/// proves that the kinematic LP is infeasible. Returns (y, z, u).
+pub fn kinematic_farkas(
+    columns: &[[f64; 3]],
+    power: &[f64],
+    settings: &Settings,
+) -> Result<([f64; 3], f64, f64), LpOutcome> {
+    highs::kinematic_farkas(columns, power, settings.lp_tol)
+}
