@@ -120,7 +120,7 @@ pub(super) fn verify_search(
     }
     if !search.limit_states_above.is_empty() {
         checks.push(format!(
-            "checked (floating point, tolerance {LIMIT_STATE_TOL:e}; evidence, not proof): {} limit state(s) above eta_s: admissible and, each with a mechanism without dilatancy (eta = {})",
+            "checked (floating point, tolerance {LIMIT_STATE_TOL:e}; evidence, not proof): {} limit state(s) above eta_s, admissible, each with a mechanism without dilatancy (eta = {})",
             search.limit_states_above.len(),
             search
                 .limit_states_above

@@ -553,3 +553,126 @@ fn cli_json_shapes_round_trip() {
     assert!(v["message"].as_str().unwrap().contains("field `kind`"));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Issue 10, item 5: the certificate covers η_s also where it carries no mechanism (the
+/// issue's unsymmetric arch at μ = 0.96: η_s = 0.4918696466…, the only limit state lies
+/// above, at 0.5767891524): the bracket is around η_s, the least state's active contacts
+/// are proved to carry no mechanism (Farkas), and the limit state above is listed.
+#[test]
+fn gap_case_certifies_eta_s_and_proves_no_mechanism_there() {
+    let arch = Arch::new(-0.67, 2.72, WeightModel::Centreline).unwrap();
+    let c = cert(&arch, 0.96);
+    let r = verify(&c).unwrap_or_else(|e| panic!("{e:?}"));
+    let (lo, hi) = r.bracket.unwrap();
+    assert!(lo < 0.49186964663 && hi > 0.49186964662, "[{lo}, {hi}]");
+    let s = c.search.as_ref().expect("search evidence");
+    assert!(!s.mechanism_at_eta && s.unique);
+    let least = s.least_state.as_ref().expect("least state");
+    assert!(!least.farkas.is_empty());
+    assert_eq!(s.limit_states_above.len(), 1);
+    assert!((c.limit_state.as_ref().unwrap().eta - 0.5767891524).abs() < 1e-9);
+    assert!(r
+        .checks
+        .iter()
+        .any(|l| l.starts_with("proved") && l.contains("carry no mechanism")));
+    assert!(r
+        .limit_states
+        .unwrap()
+        .contains("above eta_s (unique; none at eta_s)"));
+    // a wrong Farkas vector is caught
+    let mut bad = c.clone();
+    let f = &mut bad
+        .search
+        .as_mut()
+        .unwrap()
+        .least_state
+        .as_mut()
+        .unwrap()
+        .farkas[0];
+    f.z = 1.0;
+    let why = verify(&bad).expect_err("z = 1").0;
+    assert!(why.contains("does not prove"), "{why}");
+    // claiming a mechanism at eta_s without a state there is caught
+    let mut bad = c.clone();
+    bad.search.as_mut().unwrap().mechanism_at_eta = true;
+    assert!(verify(&bad).is_err());
+    // uniqueness must match the list
+    let mut bad = c.clone();
+    bad.search.as_mut().unwrap().unique = false;
+    let why = verify(&bad).expect_err("unique flipped").0;
+    assert!(why.contains("unique"), "{why}");
+}
+
+/// Discrete arches: every point the sweep checked without a mechanism is proved by its
+/// Farkas certificates, on random small arches of both weight models (some with limit
+/// states above η_s); a contact removed from a point's pattern is caught (it is active
+/// there), and so is a limit state above that is not admissible.
+#[test]
+fn sweep_evidence_is_proved_on_random_discrete_arches() {
+    use crate::search_reference::{random_joints, Rng};
+    let mut rng = Rng(0x5eed_cafe_0000_0010);
+    let (mut points, mut above) = (0, 0);
+    for case in 0..12 {
+        let n = 3 + (rng.next() * 6.0) as usize;
+        let br = -0.6 + 1.2 * rng.next();
+        let bl = std::f64::consts::PI - 0.6 + 1.2 * rng.next();
+        let joints = random_joints(&mut rng, br, bl, n);
+        let weight = if case % 3 == 0 {
+            WeightModel::Centroid
+        } else {
+            WeightModel::Centreline
+        };
+        let arch = Arch::new(br, bl, weight)
+            .unwrap()
+            .with_joints(&joints)
+            .unwrap();
+        let ms = least_friction(&arch, &Settings::default())
+            .unwrap()
+            .unwrap();
+        let mu = ms * (1.0 + 1e-2) + 1.5 * rng.next();
+        let c = cert(&arch, mu);
+        let r = verify(&c).unwrap_or_else(|e| panic!("case {case}: {e:?}"));
+        let s = c.search.as_ref().expect("search evidence");
+        let n_points = s.no_mechanism.len();
+        assert!(
+            r.checks.iter().any(|l| l.starts_with(&format!(
+                "proved (interval arithmetic) at {n_points} of the {n_points} points"
+            ))),
+            "case {case}: {:?}",
+            r.checks
+        );
+        points += n_points;
+        above += s.limit_states_above.len();
+        if let Some(p) = s.no_mechanism.iter().position(|p| p.pattern.len() > 3) {
+            let mut bad = c.clone();
+            bad.search.as_mut().unwrap().no_mechanism[p]
+                .pattern
+                .remove(0);
+            bad.search.as_mut().unwrap().no_mechanism[p].farkas.clear();
+            let why = verify(&bad).expect_err("contact removed").0;
+            assert!(why.contains("not in the pattern"), "case {case}: {why}");
+        }
+    }
+    println!("12 arches: {points} sweep points proved without mechanism, {above} limit states above eta_s");
+    assert!(points > 0);
+}
+
+/// At μ = ∞ the search needs no sweep: the safe state is proved strictly inside P(η_hi),
+/// which rules out every limit state above (virtual work). A safe state moved onto the
+/// boundary (η_hi lowered to η_s) loses that proof.
+#[test]
+fn infinite_friction_uniqueness_is_proved_by_an_interior_state() {
+    let arch = Arch::symmetric(0.5, WeightModel::Centreline).unwrap();
+    let c = cert(&arch, f64::INFINITY);
+    let r = verify(&c).unwrap();
+    assert!(r
+        .checks
+        .iter()
+        .any(|l| l.starts_with("proved") && l.contains("strictly inside")));
+    assert!(r.limit_states.unwrap().contains("(unique)"));
+    let mut bad = c.clone();
+    let ls = bad.limit_state.clone().unwrap();
+    bad.safe.as_mut().unwrap().x = ls.x;
+    bad.safe.as_mut().unwrap().eta = ls.eta;
+    assert!(verify(&bad).is_err());
+}

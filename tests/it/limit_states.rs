@@ -60,7 +60,7 @@ fn compare_with(
         }
     };
     let above: Vec<f64> = r.above.iter().map(|s| s.eta).collect();
-    let close = |a: f64, b: f64| (a - b).abs() <= 1e-8 * b.abs().max(1e-300);
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-10 * b.abs().max(1e-300);
     if !close(r.eta_s, reference.eta_s) {
         return Err(format!(
             "eta_s {} vs reference {}",
