@@ -132,7 +132,7 @@ pub(crate) fn run_certify(a: CertifyArgs, settings: &Settings, io: &mut Io) -> E
             "  limit states: not certified (the search could not be completed)\n".to_string(),
             |s| {
                 format!(
-                    "  limit states: {} at eta_s, {} above it ({}; evidence for {} points without a mechanism)\n",
+                    "  limit states: {} at eta_s, {} above it ({}; Farkas evidence for {} state(s) without a mechanism)\n",
                     if s.mechanism_at_eta { "one" } else { "none" },
                     s.limit_states_above.len(),
                     if s.unique { "unique" } else { "not unique" },

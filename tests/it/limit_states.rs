@@ -1,7 +1,7 @@
 //! The sweep of `limit_states` against the brute-force reference of `search_reference`
 //! (written independently from the formulation): on random small discrete arches, the
 //! same least admissible thickness, whether it carries a mechanism, and the same limit
-//! states above it (η to 1e-8 relative).
+//! states above it (η to 1e-10 relative).
 
 use crate::search_reference::{brute_force, least_friction, random_joints, RefSearch, Rng};
 use arch_enum::limit_states::search;
