@@ -19,6 +19,7 @@
 //! | `collapse` | `{eta, joints: [{beta, kind, y}]}`: d + 1 contacts whose non-negative Farkas combination rules out every state at η_lo (lower bound); `eta` null for the friction-only problem (d = 2, sliding kinds only) |
 //! | `limit_state` | `{eta, x, pattern: [{beta, kind, at}], rates, complementarity_residual}`: the limit state and a mechanism on its pattern, the pattern strictly increasing in (β, kind); absent for `no_equilibrium` |
 //! | `gap`, `gap_relative` | η_hi − η_lo and (η_hi − η_lo)/η_hi |
+//! | `search` | optional (absent where the limit-state search was not completed): `{method, events, mechanism_at_eta, unique, least_state, limit_states_above, no_mechanism}`; `method` ∈ {`sweep`, `hinges_only`, `refined`}; `least_state` and each `no_mechanism` entry are `{eta, x, pattern, farkas: [{drop, y, z, u}]}` |
 //!
 //! Every number must be finite; every joint of `collapse` and `pattern` must lie in
 //! [β_R, β_L], at a listed joint of a discrete arch, with a kind that exists at `mu`;
@@ -32,7 +33,14 @@
 //! admissible state lies in [η_lo, η_hi] (for `no_equilibrium`: no (h, v) satisfies the
 //! friction conditions at the listed joints, so no thickness stands). The limit state is
 //! only *checked* in floating point ([`verify::LIMIT_STATE_TOL`]): evidence, not proof.
-//! The [`Report`] names the arch, μ and the bracket.
+//! The [`Report`] names the arch, μ and the bracket. With a `search` section the least
+//! thickness is η_s (the bracket is around the least admissible state, which need not
+//! carry a mechanism) and [`verify()`] also re-checks the limit-state list
+//! (`verify_search.rs`): it *proves* that each state listed without a mechanism has none
+//! (Farkas alternative of the kinematic LP, interval arithmetic) and, at μ = ∞, that the
+//! safe state lies strictly inside P(η_hi) (so no limit state lies above); it *checks* the
+//! listed limit states and active sets in floating point, and does not re-prove the
+//! completeness of the sweep or of the refinement.
 //!
 //! # How certificates are built
 //! `certify` builds the two sides around the exact limit state: the safe state is the
