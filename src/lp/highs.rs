@@ -149,3 +149,50 @@ pub fn kinematic_farkas(
         Err(e) => Err(LpOutcome::Failed(e.to_string())),
     }
 }
+
+/// Optimises the multiplier λ, the last of the unknowns z = (h, v, w, λ), subject to
+/// `a · z + c ≤ 0` for every row (a, c) and λ ≥ 0: the largest λ when `maximise`, else
+/// the least. Rows are scaled to unit gradient norm. `Ok(None)` when λ is unbounded,
+/// `Err(Infeasible)` when no state with λ ≥ 0 satisfies the rows.
+pub fn multiplier_extreme(
+    rows: &[([f64; 4], f64)],
+    maximise: bool,
+    tol: f64,
+) -> Result<Option<[f64; 4]>, LpOutcome> {
+    let mut vars = ProblemVariables::new();
+    let z: Vec<_> = (0..4)
+        .map(|k| {
+            vars.add(if k == 3 {
+                variable().min(0.0)
+            } else {
+                variable()
+            })
+        })
+        .collect();
+    let objective = if maximise {
+        vars.maximise(z[3])
+    } else {
+        vars.minimise(z[3])
+    };
+    let mut problem = configure(objective.using(highs), tol);
+    for (a, c) in rows {
+        let norm = a.iter().map(|v| v * v).sum::<f64>().sqrt();
+        let scale = if norm > 0.0 { 1.0 / norm } else { 1.0 };
+        let mut e = Expression::with_capacity(4);
+        for k in 0..4 {
+            e.add_mul(a[k] * scale, z[k]);
+        }
+        problem = problem.with(e.leq(-c * scale));
+    }
+    match problem.solve() {
+        Ok(sol) => Ok(Some([
+            sol.value(z[0]),
+            sol.value(z[1]),
+            sol.value(z[2]),
+            sol.value(z[3]),
+        ])),
+        Err(good_lp::ResolutionError::Unbounded) => Ok(None),
+        Err(good_lp::ResolutionError::Infeasible) => Err(LpOutcome::Infeasible),
+        Err(e) => Err(LpOutcome::Failed(e.to_string())),
+    }
+}

@@ -66,3 +66,13 @@ pub fn kinematic_farkas(
 ) -> Result<([f64; 3], f64, f64), LpOutcome> {
     highs::kinematic_farkas(columns, power, settings.lp_tol)
 }
+
+/// The least or largest multiplier λ ≥ 0 of a load problem (unknowns (h, v, w, λ), rows
+/// `a · z + c ≤ 0`; HiGHS). `Ok(None)`: λ unbounded; `Err(Infeasible)`: no state.
+pub fn multiplier_extreme(
+    rows: &[([f64; 4], f64)],
+    maximise: bool,
+    settings: &Settings,
+) -> Result<Option<[f64; 4]>, LpOutcome> {
+    highs::multiplier_extreme(rows, maximise, settings.lp_tol)
+}

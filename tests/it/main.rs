@@ -11,6 +11,7 @@ mod invariants;
 mod jacobian;
 mod layering;
 mod limit_states;
+mod loads;
 mod model;
 mod modes;
 mod plots;

@@ -1,0 +1,143 @@
+//! Live loads with a multiplier λ (`../shared/spec/loads.md`): a uniform horizontal body
+//! force λ·(self-weight), or a vertical point load λ at an extrados point. Self-weight
+//! stays the dead load ([`crate::statics`]); the live load adds terms **linear in λ** to
+//! N, T and M, so at fixed η and μ every activation function is affine in (x, λ).
+//!
+//! Units as in [`crate::statics`]: forces in γ t d r, moments in γ t d r², r = 1; the
+//! horizontal multiplier is in units of the self-weight (λ g is the acceleration), the
+//! point load in γ t d r. Angles β are radians, counter-clockwise from the horizontal
+//! through the centre; +x points towards the right springing.
+
+use crate::arch::{Arch, Radians};
+use crate::contact::{Contact, ContactKind};
+use crate::kinematics::column;
+
+/// A live load with a multiplier λ ≥ 0.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum LiveLoad {
+    /// A uniform horizontal body force λ·(weight), applied where the weight is applied
+    /// (centreline or true centroid); `towards_right`: towards +x (the right springing),
+    /// else towards −x.
+    Horizontal {
+        /// Sense of the force.
+        towards_right: bool,
+    },
+    /// A vertical (downward) point load λ at the extrados point of angle `beta`
+    /// (radians), (1 + η/2)(cos β, sin β).
+    Point {
+        /// Angle of the loaded extrados point.
+        beta: Radians,
+    },
+}
+
+/// Which side of a section at the point load's own angle: the free body [β_R, β] of a
+/// section just before β_P does not contain the load, just after it does. Elsewhere the
+/// side makes no difference.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Side {
+    /// The section just before (smaller β) the loaded point.
+    Before,
+    /// The section just after it.
+    After,
+}
+
+impl LiveLoad {
+    /// The live parts (N_L, T_L, M_L) of the internal actions at the joint `beta` per unit
+    /// λ, from the free body [β_R, β] (loads.md):
+    ///
+    /// * horizontal (towards +x): N_L = −Δ sin β, T_L = −Δ cos β,
+    ///   M_L = −[ρ (cos β_R − cos β) − Δ sin β], Δ = β − β_R, ρ as for the weight
+    ///   (the resultant of the body force on an annular sector acts at its centroid);
+    ///   towards −x the opposite;
+    /// * point load at β_P, for β > β_P (or β = β_P on the [`Side::After`] side):
+    ///   N_L = −cos β, T_L = sin β, M_L = −[(1 + η/2) cos β_P − cos β]; zero before.
+    pub fn actions(&self, arch: &Arch, eta: f64, beta: Radians, side: Side) -> [f64; 3] {
+        let (s, c) = beta.sin_cos();
+        match *self {
+            LiveLoad::Horizontal { towards_right } => {
+                let br = arch.beta_right();
+                let d = beta - br;
+                let rho = arch.weight().rho(eta);
+                let k = if towards_right { 1.0 } else { -1.0 };
+                [-k * d * s, -k * d * c, -k * (rho * (br.cos() - c) - d * s)]
+            }
+            LiveLoad::Point { beta: bp } => {
+                let loaded = beta > bp || (beta == bp && side == Side::After);
+                if loaded {
+                    [-c, s, -((1.0 + 0.5 * eta) * bp.cos() - c)]
+                } else {
+                    [0.0; 3]
+                }
+            }
+        }
+    }
+
+    /// Whether a section at `beta` has two sides that differ (the point load's angle).
+    pub fn splits(&self, beta: Radians) -> bool {
+        matches!(*self, LiveLoad::Point { beta: bp } if bp == beta)
+    }
+
+    /// The coefficients q with L_live = λ q · rates for `contacts` (any order; a contact
+    /// at the point load's angle counts on its `side`): the power of the live load per
+    /// unit λ in the rigid motions of the blocks between consecutive distinct active
+    /// joints (the pieces beyond the first and last active joint are at rest). A unit
+    /// rate of contact j moves everything after it with (V_x(O), V_y(O), ψ) = its
+    /// compatibility column c_j, so a point G moves with (V_x − ψ G_y, V_y + ψ G_x):
+    ///
+    /// * horizontal: q_j = ±Σ_{blocks m after j} [W_m c_j,x − c_j,ψ (W G_y)_m], with
+    ///   W_m = β_{m+1} − β_m and (W G_y)_m = ρ (cos β_m − cos β_{m+1});
+    /// * point load: q_j = −[c_j,y + c_j,ψ (1 + η/2) cos β_P] when the loaded point lies
+    ///   after j (β_P > β_j, or β_P = β_j with j on the Before side), else 0. A load beyond
+    ///   the last active joint is at rest: compatible rates (B λ = 0) give it no power.
+    pub fn power(&self, arch: &Arch, eta: f64, contacts: &[(Contact, Side)]) -> Vec<f64> {
+        match *self {
+            LiveLoad::Horizontal { towards_right } => {
+                let rho = arch.weight().rho(eta);
+                let k = if towards_right { 1.0 } else { -1.0 };
+                let mut joints: Vec<Radians> = contacts.iter().map(|(c, _)| c.beta).collect();
+                joints.sort_by(f64::total_cmp);
+                joints.dedup();
+                let blocks: Vec<(Radians, f64, f64)> = joints
+                    .windows(2)
+                    .map(|w| (w[0], w[1] - w[0], rho * (w[0].cos() - w[1].cos())))
+                    .collect();
+                contacts
+                    .iter()
+                    .map(|(c, _)| {
+                        let col = column(c.kind, c.beta, eta);
+                        k * blocks
+                            .iter()
+                            .filter(|(start, _, _)| *start >= c.beta)
+                            .map(|(_, w, wgy)| w * col[0] - col[2] * wgy)
+                            .sum::<f64>()
+                    })
+                    .collect()
+            }
+            LiveLoad::Point { beta: bp } => contacts
+                .iter()
+                .map(|(c, side)| {
+                    // the section just before the loaded point has it on its far side
+                    let after = bp > c.beta || (bp == c.beta && *side == Side::Before);
+                    if !after {
+                        return 0.0;
+                    }
+                    let col = column(c.kind, c.beta, eta);
+                    -(col[1] + col[2] * (1.0 + 0.5 * eta) * bp.cos())
+                })
+                .collect(),
+        }
+    }
+}
+
+/// The live part of the activation function of `kind` per unit λ, from the live actions
+/// (N_L, T_L, M_L): E: M_L − η N_L/2; I: −M_L − η N_L/2; S±: ±T_L − μ N_L (zero for
+/// sliding rows at μ = ∞ are never asked for: they do not exist).
+pub fn live_activation(kind: ContactKind, eta: f64, mu: f64, a: [f64; 3]) -> f64 {
+    let [n, t, m] = a;
+    match kind {
+        ContactKind::HingeExtrados => m - 0.5 * eta * n,
+        ContactKind::HingeIntrados => -m - 0.5 * eta * n,
+        ContactKind::SlidePlus => t - mu * n,
+        ContactKind::SlideMinus => -t - mu * n,
+    }
+}

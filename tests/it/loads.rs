@@ -1,0 +1,224 @@
+//! Live loads with a multiplier (issue 11, first piece): the live statics against an
+//! independent quadrature, the virtual-work identity with the live power on random
+//! compatible rates, and the static multiplier of a published discrete arch.
+
+use crate::search_reference::{random_joints, Rng};
+use arch_enum::contact::{Contact, ContactKind, Location};
+use arch_enum::kinematics::{column, power};
+use arch_enum::load::{live_activation, LiveLoad, Side};
+use arch_enum::multiplier::{static_range, StaticRange};
+use arch_enum::statics::actions;
+use arch_enum::{Arch, Settings, WeightModel};
+use nalgebra::DMatrix;
+use std::f64::consts::PI;
+
+/// M_L of the horizontal body force from a quadrature over the annular sector [β_R, β]
+/// (composite Simpson in θ, two-point Gauss in r; weight density r/η per unit dr dθ, so
+/// that the weight is Δ), with the centreline model's weight on r = 1: a force F towards
+/// +x at height y gives M = F (sin β − y) at the joint's centre point.
+fn quadrature_moment(beta_r: f64, beta: f64, eta: f64, centroid: bool) -> f64 {
+    let nt = 2000; // even
+    let h = (beta - beta_r) / nt as f64;
+    let radii: Vec<(f64, f64)> = if centroid {
+        let g = eta / (2.0 * 3f64.sqrt());
+        vec![(1.0 - g, 0.5), (1.0 + g, 0.5)] // (r, weight of the mean over the radius)
+    } else {
+        vec![(1.0, 1.0)]
+    };
+    let f = |th: f64| -> f64 {
+        radii
+            .iter()
+            .map(|&(r, w)| {
+                // ∫ (r/η) dr over the thickness = 1: the mean of r·(sin β − r sin θ)
+                w * r * (beta.sin() - r * th.sin())
+            })
+            .sum()
+    };
+    let mut sum = f(beta_r) + f(beta);
+    for i in 1..nt {
+        sum += if i % 2 == 1 { 4.0 } else { 2.0 } * f(beta_r + h * i as f64);
+    }
+    sum * h / 3.0
+}
+
+#[test]
+fn horizontal_moment_matches_a_quadrature_of_the_sector() {
+    for (br, bl, eta, centroid) in [
+        (0.0, PI, 0.2, false),
+        (0.0, PI, 0.2, true),
+        (-0.6, PI + 0.3, 0.9, true),
+        (0.4, 2.5, 1.5, true),
+    ] {
+        let w = if centroid {
+            WeightModel::Centroid
+        } else {
+            WeightModel::Centreline
+        };
+        let arch = Arch::new(br, bl, w).unwrap();
+        for f in [0.1, 0.37, 0.8, 1.0] {
+            let beta = br + f * (bl - br);
+            let load = LiveLoad::Horizontal {
+                towards_right: true,
+            };
+            let [n, t, m] = load.actions(&arch, eta, beta, Side::After);
+            let q = quadrature_moment(br, beta, eta, centroid);
+            assert!(
+                (m - q).abs() < 1e-11 * (1.0 + q.abs()),
+                "M_L {m} vs quadrature {q}"
+            );
+            // the resultant λΔ towards +x, resolved on the joint (as the reaction h is,
+            // with the opposite sign: N = h sin β + ..., T = h cos β − ...)
+            let d = beta - br;
+            assert!((n + d * beta.sin()).abs() < 1e-15 && (t + d * beta.cos()).abs() < 1e-15);
+            let left = LiveLoad::Horizontal {
+                towards_right: false,
+            }
+            .actions(&arch, eta, beta, Side::After);
+            assert_eq!(left, [-n, -t, -m]);
+        }
+    }
+}
+
+/// Σ_j φ_j(x, λ) r_j = L_dead + λ L_live − μ Σ_sliding N_j(x, λ) r_j for every compatible
+/// rate vector r (B r = 0, any sign) and any state (x, λ): a direct test of the live
+/// statics against the live kinematics (loads.md), on random discrete arches with every
+/// contact of every joint, both weight models, both loads (the point load at a joint,
+/// with both sides of its section, or inside a voussoir).
+#[test]
+fn virtual_work_identity_with_the_live_load() {
+    let mut rng = Rng(0x11fe_10ad_0000_0001);
+    for case in 0..300 {
+        let n = 2 + (rng.next() * 7.0) as usize;
+        let br = -0.8 + 1.6 * rng.next();
+        let bl = PI + (-0.8 + 1.6 * rng.next());
+        let joints = random_joints(&mut rng, br, bl, n);
+        let weight = if case % 2 == 1 {
+            WeightModel::Centroid
+        } else {
+            WeightModel::Centreline
+        };
+        let arch = Arch::new(br, bl, weight)
+            .unwrap()
+            .with_joints(&joints)
+            .unwrap();
+        let mu = 0.2 + 2.0 * rng.next();
+        let eta = 0.01 + 1.9 * rng.next();
+        let load = match case % 4 {
+            0 => LiveLoad::Horizontal {
+                towards_right: true,
+            },
+            1 => LiveLoad::Horizontal {
+                towards_right: false,
+            },
+            2 => LiveLoad::Point {
+                beta: joints[(rng.next() * joints.len() as f64) as usize % joints.len()],
+            },
+            _ => LiveLoad::Point {
+                beta: br + (bl - br) * rng.next(),
+            },
+        };
+        // every contact at every joint (both sides of a loaded joint)
+        let mut contacts: Vec<(Contact, Side)> = Vec::new();
+        for (j, &beta) in joints.iter().enumerate() {
+            let at = if j == 0 || j == joints.len() - 1 {
+                Location::Springing
+            } else {
+                Location::Interior
+            };
+            let sides: &[Side] = if load.splits(beta) {
+                &[Side::Before, Side::After]
+            } else {
+                &[Side::After]
+            };
+            for &side in sides {
+                for kind in ContactKind::ALL {
+                    contacts.push((
+                        Contact {
+                            beta,
+                            kind,
+                            at,
+                            free: false,
+                        },
+                        side,
+                    ));
+                }
+            }
+        }
+        let nc = contacts.len();
+        let b = DMatrix::from_fn(3, nc, |r, c| {
+            column(contacts[c].0.kind, contacts[c].0.beta, eta)[r]
+        });
+        let svd = b.clone().svd(false, true);
+        let vt = svd.v_t.unwrap();
+        let mut rates = DMatrix::from_fn(nc, 1, |_, _| rng.next() - 0.5);
+        for r in 0..3 {
+            let row = vt.row(r).transpose();
+            let p = row.dot(&rates);
+            rates -= row * p;
+        }
+        let x = [
+            3.0 * (rng.next() - 0.5),
+            3.0 * (rng.next() - 0.5),
+            rng.next() - 0.5,
+        ];
+        let lambda = 2.0 * rng.next();
+        let plain: Vec<Contact> = contacts.iter().map(|c| c.0).collect();
+        let dead = power(&arch, eta, &plain);
+        let live = load.power(&arch, eta, &contacts);
+        let (mut lhs, mut rhs) = (0.0, 0.0);
+        for (c, &(contact, side)) in contacts.iter().enumerate() {
+            let a = actions(&arch, eta, contact.beta);
+            let la = load.actions(&arch, eta, contact.beta, side);
+            let phi = a.activation(contact.kind, 0, eta, mu).at(&x)
+                + lambda * live_activation(contact.kind, eta, mu, la);
+            lhs += rates[c] * phi;
+            rhs += rates[c] * (dead[c] + lambda * live[c]);
+            if !contact.kind.is_hinge() {
+                let normal = a.n[0].at(&x) + lambda * la[0];
+                rhs -= mu * normal * rates[c];
+            }
+        }
+        assert!(
+            (lhs - rhs).abs() < 1e-10 * (1.0 + lhs.abs()),
+            "case {case} ({load:?}): phi . r = {lhs}, L_dead + lambda L_live - mu sum N s = {rhs}"
+        );
+    }
+}
+
+/// Stockdale et al. (2018, SoftwareX 7, 174–179): a 27-voussoir semicircle, intrados
+/// radius 1.806 m, t = 0.1661 × the intrados radius, depth 0.25 m, density 1530 kg/m³,
+/// true-centroid weight, μ = ∞, a vertical point load at the 8th joint from a springing
+/// collapses at 2.751 kN (their kinematic calculator; 2.756 kN by their independent
+/// check). At μ = ∞ the largest statically admissible multiplier is the collapse load.
+#[test]
+fn stockdale_point_load_on_a_27_voussoir_semicircle() {
+    let (ri, g, rho_m, depth) = (1.806, 9.81, 1530.0, 0.25);
+    let t = 0.1661 * ri;
+    let r = ri + t / 2.0;
+    let eta = t / r;
+    let unit_kn = rho_m * g * t * depth * r / 1000.0; // γ t d r in kN
+    let arch = Arch::symmetric(0.0, WeightModel::Centroid)
+        .unwrap()
+        .with_blocks(27)
+        .unwrap();
+    let beta = 8.0 * PI / 27.0;
+    let range = static_range(
+        &arch,
+        eta,
+        f64::INFINITY,
+        &LiveLoad::Point { beta },
+        &Settings::default(),
+    )
+    .unwrap()
+    .unwrap();
+    let StaticRange::Interval { min, max } = range else {
+        panic!("{range:?}")
+    };
+    assert_eq!(min.0, 0.0, "the arch stands unloaded");
+    let kn = max.unwrap().0 * unit_kn;
+    println!(
+        "Stockdale: lambda_static = {} (x {unit_kn} kN) = {kn} kN",
+        max.unwrap().0
+    );
+    assert!((kn - 2.751).abs() < 0.0005, "{kn} kN against 2.751 kN");
+}
