@@ -8,6 +8,7 @@
 
 use crate::contact::{Contact, ContactKind};
 use crate::kinematics::{column, compatibility_residual, mirror_indices, power};
+use crate::load::{live_activation, LiveLoad, Side};
 use crate::lp::{self, LpOutcome};
 use crate::settings::Settings;
 use crate::state::State;
@@ -168,4 +169,104 @@ fn find_one_sense(
         complementarity,
         dissipation,
     }))
+}
+
+/// A collapse mechanism under a live load at multiplier λ (issue 11): non-negative rates
+/// on `contacts` (each with the side of the loaded section it belongs to) with B λ̇ = 0,
+/// Σ λ̇ = 1, total external power L_dead + λ L_live ≥ 0 and **positive live power**
+/// L_live > 0 (the load drives the mechanism; one with L_live ≤ 0 is no collapse under
+/// this load). The LP maximises L_live; a joint slides one way only, as in [`find`].
+/// Returns the mechanism (its `power` is the total external power) and its live power.
+pub fn find_under_load(
+    state: &State,
+    lambda: f64,
+    load: &LiveLoad,
+    contacts: &[(Contact, Side)],
+    settings: &Settings,
+) -> Result<Option<(Mechanism, f64)>, LpOutcome> {
+    let (arch, eta, mu, x) = (state.arch, state.eta, state.mu, &state.x);
+    let mut cs = contacts.to_vec();
+    cs.sort_by(|a, b| {
+        a.0.beta
+            .total_cmp(&b.0.beta)
+            .then((a.1 == Side::After).cmp(&(b.1 == Side::After)))
+            .then(a.0.kind.cmp(&b.0.kind))
+    });
+    // joints (angle and side) carrying both senses of sliding
+    let both: Vec<(f64, Side)> = cs
+        .iter()
+        .filter(|(c, s)| {
+            c.kind == ContactKind::SlidePlus
+                && cs.iter().any(|(d, t)| {
+                    d.kind == ContactKind::SlideMinus && d.beta == c.beta && t == s
+                })
+        })
+        .map(|(c, s)| (c.beta, *s))
+        .collect();
+    let mut best: Option<(Mechanism, f64)> = None;
+    for choice in 0..(1usize << both.len()) {
+        let keep: Vec<(Contact, Side)> = cs
+            .iter()
+            .copied()
+            .filter(|(c, s)| {
+                let Some(k) = both.iter().position(|&(b, t)| b == c.beta && t == *s) else {
+                    return true;
+                };
+                let plus = choice >> k & 1 == 0;
+                match c.kind {
+                    ContactKind::SlidePlus => plus,
+                    ContactKind::SlideMinus => !plus,
+                    _ => true,
+                }
+            })
+            .collect();
+        let plain: Vec<Contact> = keep.iter().map(|(c, _)| *c).collect();
+        let cols: Vec<[f64; 3]> = plain.iter().map(|c| column(c.kind, c.beta, eta)).collect();
+        let dead = power(arch, eta, &plain);
+        let live = load.power(arch, eta, &keep);
+        let total: Vec<f64> = dead.iter().zip(&live).map(|(d, l)| d + lambda * l).collect();
+        let rates = match lp::kinematic(&cols, &total, &live, settings) {
+            Ok(r) => r,
+            Err(LpOutcome::Infeasible) => continue,
+            Err(e) => return Err(e),
+        };
+        let live_power: f64 = live.iter().zip(&rates).map(|(a, b)| a * b).sum();
+        if live_power <= settings.rate_tol {
+            continue;
+        }
+        let sum: f64 = rates.iter().sum();
+        let rates: Vec<f64> = rates
+            .iter()
+            .map(|r| if *r / sum <= settings.rate_tol { 0.0 } else { r / sum })
+            .collect();
+        let live_power: f64 = live.iter().zip(&rates).map(|(a, b)| a * b).sum();
+        let support: Vec<usize> = (0..rates.len()).filter(|&i| rates[i] > 0.0).collect();
+        let b = DMatrix::from_fn(3, support.len(), |r, c| cols[support[c]][r]);
+        let dof = support.len() - if support.is_empty() { 0 } else { b.rank(settings.rank_tol) };
+        let residual = compatibility_residual(eta, &plain, &rates);
+        let (mut complementarity, mut dissipation) = (0.0, 0.0);
+        for ((c, side), &r) in keep.iter().zip(&rates) {
+            let a = actions(arch, eta, c.beta);
+            let la = load.actions(arch, eta, c.beta, *side);
+            let phi = a.activation(c.kind, 0, eta, mu).at(x) + lambda * live_activation(c.kind, eta, mu, la);
+            complementarity += phi.abs() * r;
+            if !c.kind.is_hinge() {
+                dissipation += mu * (a.n[0].at(x) + lambda * la[0]) * r;
+            }
+        }
+        let m = Mechanism {
+            contacts: plain,
+            power: total.iter().zip(&rates).map(|(a, b)| a * b).sum(),
+            rates,
+            dof,
+            symmetric: false,
+            compatibility: residual.iter().fold(0.0f64, |m, v| m.max(v.abs())),
+            complementarity,
+            dissipation,
+        };
+        if best.as_ref().is_none_or(|(_, l)| live_power > *l) {
+            best = Some((m, live_power));
+        }
+    }
+    Ok(best)
 }

@@ -1,5 +1,6 @@
-//! The load-multiplier problem at fixed η and μ (issue 11, first piece): the range of
-//! multipliers λ ≥ 0 of a [`LiveLoad`] at which a statically admissible state exists.
+//! The load-multiplier problem at fixed η and μ (issue 11): the range of multipliers
+//! λ ≥ 0 of a [`LiveLoad`] at which a statically admissible state exists, and every limit
+//! state in it (a state whose active contacts carry a mechanism with positive live power).
 //!
 //! Every activation function is affine in (x, λ) ([`crate::load`]), so the admissible
 //! (x, λ) form a convex polyhedron and its λ-range [λ_min, λ_static] is two LPs. For a
@@ -9,11 +10,15 @@
 //! largest statically admissible multiplier (unbounded: the load never breaks the arch).
 
 use crate::arch::{check_eta, Arch, InputError, JointLayout, Radians};
-use crate::contact::ContactKind;
+use crate::collapse_mode::{classify, CollapseMode};
+use crate::contact::{Contact, ContactKind, Location};
+use crate::limit_states::sweep::sweep_load;
 use crate::load::{live_activation, LiveLoad, Side};
 use crate::lp::{self, LpOutcome};
+use crate::mechanism::{self, Mechanism};
 use crate::settings::Settings;
-use crate::statics::{actions, Reactions};
+use crate::state::State;
+use crate::statics::{actions, magnitude, Reactions};
 
 /// The admissible multipliers λ ≥ 0 at (η, μ).
 #[derive(Debug, Clone, PartialEq)]
@@ -107,4 +112,191 @@ pub fn static_range(
         Err(LpOutcome::Failed(e)) => return Ok(Err(format!("LP back end: {e}"))),
     };
     Ok(Ok(StaticRange::Interval { min, max }))
+}
+
+/// A limit state under the live load: an admissible state at multiplier λ whose active
+/// contacts carry a mechanism with positive live power.
+#[derive(Debug, Clone)]
+pub struct LoadLimitState {
+    /// The multiplier.
+    pub lambda: f64,
+    /// Reactions.
+    pub x: Reactions,
+    /// Every contact active there, by increasing β (at the point load's joint, the side
+    /// of the loaded section in `sides`).
+    pub pattern: Vec<Contact>,
+    /// The side of the loaded section of each contact (`After` away from the point load).
+    pub sides: Vec<Side>,
+    /// The collapse mode named from the pattern.
+    pub mode: CollapseMode,
+    /// A mechanism on them (its `power` is the total external power).
+    pub mechanism: Mechanism,
+    /// The live load's power in that mechanism (> 0).
+    pub live_power: f64,
+}
+
+/// Every limit state of a loaded discrete arch at (η, μ) with λ in [λ_min, λ_static].
+#[derive(Debug, Clone)]
+pub struct LoadSurvey {
+    /// The least admissible multiplier (0 when the arch stands unloaded) and a state.
+    pub lambda_min: (f64, Reactions),
+    /// The largest admissible multiplier and a state there.
+    pub lambda_static: (f64, Reactions),
+    /// Whether the state at λ_static carries a mechanism with positive live power.
+    pub mechanism_at_static: bool,
+    /// Every limit state, ascending in λ (the one at λ_static included when it exists).
+    pub limit_states: Vec<LoadLimitState>,
+    /// Events of the sweep.
+    pub events: usize,
+}
+
+impl LoadSurvey {
+    /// The collapse multiplier: the least limit state's λ (`None`: no limit state at all,
+    /// which the static maximum without a mechanism can leave).
+    pub fn lambda(&self) -> Option<f64> {
+        self.limit_states.first().map(|s| s.lambda)
+    }
+    /// Whether exactly one limit state exists.
+    pub fn unique(&self) -> bool {
+        self.limit_states.len() == 1
+    }
+    /// 1 − λ/λ_static: how far non-associative friction lowers the collapse multiplier.
+    pub fn reduction(&self) -> Option<f64> {
+        self.lambda().map(|l| 1.0 - l / self.lambda_static.0)
+    }
+}
+
+/// The answer to the load question at (η, μ).
+#[derive(Debug, Clone)]
+pub enum LoadOutcome {
+    /// No state is admissible at any λ ≥ 0.
+    NoEquilibrium,
+    /// λ is unbounded: the load never breaks the arch (the least admissible multiplier
+    /// and a state there are given; limit states are not searched).
+    NoCollapse {
+        /// λ_min and a state there.
+        lambda_min: (f64, Reactions),
+    },
+    /// The static range and every limit state in it.
+    Limits(LoadSurvey),
+}
+
+/// Every limit state of `load` on a discrete arch at thickness `eta` and friction `mu`:
+/// the static range (two LPs), the state at λ_static checked for a mechanism with positive
+/// live power, and the sweep of P(λ) from λ_min to λ_static for the limit states below it.
+/// The inner `Err` says why no decision was reached.
+pub fn survey(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    load: &LiveLoad,
+    settings: &Settings,
+) -> Result<Result<LoadOutcome, String>, InputError> {
+    let range = match static_range(arch, eta, mu, load, settings)? {
+        Ok(r) => r,
+        Err(e) => return Ok(Err(e)),
+    };
+    let (min, max) = match range {
+        StaticRange::NoEquilibrium => return Ok(Ok(LoadOutcome::NoEquilibrium)),
+        StaticRange::Interval { min, max: None } => {
+            return Ok(Ok(LoadOutcome::NoCollapse { lambda_min: min }))
+        }
+        StaticRange::Interval {
+            min,
+            max: Some(max),
+        } => (min, max),
+    };
+    let at_static = limit_state_at(arch, eta, mu, load, max, settings);
+    let sw = sweep_load(arch, eta, mu, load, min, max.0, settings);
+    if let Some(f) = sw.failure {
+        return Ok(Err(f));
+    }
+    let mut limit_states: Vec<LoadLimitState> = sw
+        .states
+        .into_iter()
+        .filter(|s| s.eta < max.0 * (1.0 - settings.root_slack))
+        .map(|s| LoadLimitState {
+            lambda: s.eta,
+            x: s.x,
+            pattern: s.pattern,
+            sides: s.sides,
+            mode: s.mode,
+            mechanism: s.mechanism,
+            live_power: s.live_power,
+        })
+        .collect();
+    let mechanism_at_static = at_static.is_some();
+    limit_states.extend(at_static);
+    Ok(Ok(LoadOutcome::Limits(LoadSurvey {
+        lambda_min: min,
+        lambda_static: max,
+        mechanism_at_static,
+        limit_states,
+        events: sw.events,
+    })))
+}
+
+/// The limit state at the static maximum, if its active contacts carry a mechanism with
+/// positive live power.
+fn limit_state_at(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    load: &LiveLoad,
+    (lambda, x): (f64, Reactions),
+    settings: &Settings,
+) -> Option<LoadLimitState> {
+    let JointLayout::Discrete(joints) = arch.layout() else {
+        return None;
+    };
+    let last = joints.len() - 1;
+    let mut pattern: Vec<(Contact, Side)> = Vec::new();
+    for (j, &beta) in joints.iter().enumerate() {
+        let at = if j == 0 || j == last {
+            Location::Springing
+        } else {
+            Location::Interior
+        };
+        let dead = actions(arch, eta, beta);
+        let sides: &[Side] = if load.splits(beta) {
+            &[Side::Before, Side::After]
+        } else {
+            &[Side::After]
+        };
+        for &side in sides {
+            let live = load.actions(arch, eta, beta, side);
+            for &kind in ContactKind::active_at(mu) {
+                let phi = dead.activation(kind, 0, eta, mu).at(&x)
+                    + lambda * live_activation(kind, eta, mu, live);
+                let size = magnitude(kind, eta, mu, &x, settings.magnitude_floor);
+                if phi.abs() <= settings.event_tol * size {
+                    let c = Contact {
+                        beta,
+                        kind,
+                        at,
+                        free: false,
+                    };
+                    pattern.push((c, side));
+                }
+            }
+        }
+    }
+    let st = State { arch, eta, mu, x };
+    let (mechanism, live_power) =
+        mechanism::find_under_load(&st, lambda, load, &pattern, settings).ok()??;
+    let contacts: Vec<Contact> = pattern.iter().map(|p| p.0).collect();
+    let mode = classify(
+        &contacts,
+        0.5 * (arch.beta_right() + arch.beta_left()),
+        settings.same_joint,
+    );
+    Some(LoadLimitState {
+        lambda,
+        x,
+        sides: pattern.iter().map(|p| p.1).collect(),
+        pattern: contacts,
+        mode,
+        mechanism,
+        live_power,
+    })
 }

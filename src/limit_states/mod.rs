@@ -389,8 +389,10 @@ fn refine(
     Some(SweptState {
         eta: r.eta,
         x: r.x,
+        sides: vec![crate::load::Side::After; v.active.len()],
         pattern: v.active,
         mode,
         mechanism: mech,
+        live_power: 0.0,
     })
 }

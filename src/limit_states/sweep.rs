@@ -28,6 +28,7 @@ use crate::arch::{Arch, JointLayout, ETA_TOP};
 use crate::collapse_mode::{classify, CollapseMode};
 use crate::contact::{Contact, ContactKind, Location};
 use crate::kinematics::column;
+use crate::load::{live_activation, LiveLoad, Side};
 use crate::lp;
 use crate::mechanism::{self, Mechanism};
 use crate::settings::Settings;
@@ -46,6 +47,8 @@ const MAX_EVENTS: usize = 200_000;
 #[derive(Debug, Clone)]
 struct Plane {
     contact: Option<Contact>,
+    /// The side of the loaded section (load sweeps; `After` elsewhere).
+    side: Side,
     g: [Poly; 3],
     c: Poly,
 }
@@ -102,11 +105,19 @@ fn planes(arch: &Arch, joints: &[f64], mu: f64) -> Vec<Plane> {
                     at,
                     free: false,
                 }),
+                side: Side::After,
                 g: [0, 1, 2].map(|k| quad(f[0].g[k], f[1].g[k], f[2].g[k])),
                 c: quad(f[0].c, f[1].c, f[2].c),
             });
         }
     }
+    out.extend(box_planes());
+    out
+}
+
+/// The six sides |x_k| ≤ [`BOX`].
+fn box_planes() -> Vec<Plane> {
+    let mut out = Vec::new();
     for k in 0..3 {
         for s in [1.0, -1.0] {
             let mut g = [
@@ -117,11 +128,52 @@ fn planes(arch: &Arch, joints: &[f64], mu: f64) -> Vec<Plane> {
             g[k] = Poly::constant(s);
             out.push(Plane {
                 contact: None,
+                side: Side::After,
                 g,
                 c: Poly::constant(-BOX),
             });
         }
     }
+    out
+}
+
+/// The planes of a discrete arch under a live load at fixed η, as functions of the
+/// multiplier λ: constant gradients, constant terms affine in λ; a joint carrying the
+/// point load has both sides of its section. Then the six box sides.
+fn load_planes(arch: &Arch, joints: &[f64], eta: f64, mu: f64, load: &LiveLoad) -> Vec<Plane> {
+    let mut out = Vec::new();
+    let last = joints.len() - 1;
+    for (j, &beta) in joints.iter().enumerate() {
+        let at = if j == 0 || j == last {
+            Location::Springing
+        } else {
+            Location::Interior
+        };
+        let dead = actions(arch, eta, beta);
+        let sides: &[Side] = if load.splits(beta) {
+            &[Side::Before, Side::After]
+        } else {
+            &[Side::After]
+        };
+        for &side in sides {
+            let live = load.actions(arch, eta, beta, side);
+            for &kind in ContactKind::active_at(mu) {
+                let a = dead.activation(kind, 0, eta, mu);
+                out.push(Plane {
+                    contact: Some(Contact {
+                        beta,
+                        kind,
+                        at,
+                        free: false,
+                    }),
+                    side,
+                    g: a.g.map(Poly::constant),
+                    c: Poly::linear(a.c, live_activation(kind, eta, mu, live)),
+                });
+            }
+        }
+    }
+    out.extend(box_planes());
     out
 }
 
@@ -210,11 +262,27 @@ pub struct SweptState {
     pub mode: CollapseMode,
     /// A mechanism on them.
     pub mechanism: Mechanism,
+    /// The side of the loaded section of each contact (load sweeps; `After` elsewhere).
+    pub sides: Vec<Side>,
+    /// The live-load power of the mechanism (load sweeps; 0 elsewhere).
+    pub live_power: f64,
+}
+
+/// What the sweep's parameter t is.
+#[derive(Debug, Clone, Copy)]
+enum Param<'a> {
+    /// t = η: the thickness problem (self-weight only).
+    Thickness,
+    /// t = λ: the multiplier of a live load at fixed η.
+    Multiplier { eta: f64, load: &'a LiveLoad },
 }
 
 struct Sweeper<'a> {
     arch: &'a Arch,
     mu: f64,
+    param: Param<'a>,
+    /// The end of the sweep: η's thickness limit, or λ_static.
+    top: f64,
     planes: Vec<Plane>,
     settings: &'a Settings,
     alive: Vec<(Vertex, Option<(f64, usize)>)>,
@@ -230,11 +298,15 @@ impl Sweeper<'_> {
     /// Planes active at (x, η): |φ| within `event_tol` of the plane's own magnitude
     /// ([`magnitude`]: shallow arches have φ of order η).
     fn active(&self, x: &Reactions, eta: f64) -> Vec<usize> {
+        let thickness = match self.param {
+            Param::Thickness => eta,
+            Param::Multiplier { eta, .. } => eta,
+        };
         (0..self.planes.len())
             .filter(|&i| {
                 let p = &self.planes[i];
                 let size = match p.contact {
-                    Some(c) => magnitude(c.kind, eta, self.mu, x, self.settings.magnitude_floor),
+                    Some(c) => magnitude(c.kind, thickness, self.mu, x, self.settings.magnitude_floor),
                     None => BOX,
                 };
                 p.value(x, eta).abs() <= self.settings.event_tol * size
@@ -246,7 +318,7 @@ impl Sweeper<'_> {
     /// feasible), or `None` when it survives to the top.
     fn death(&self, v: &Vertex, eta0: f64) -> Option<(f64, usize)> {
         let lo = eta0 + 1e-12 * (1.0 + eta0);
-        let top = ETA_TOP;
+        let top = self.top;
         if lo >= top {
             return None;
         }
@@ -466,37 +538,71 @@ impl Sweeper<'_> {
         Ok(Some((hi, x)))
     }
 
-    /// Checks the contacts active at (x, η) for a mechanism; records a limit state.
-    fn check(&mut self, x: Reactions, eta: f64, act: &[usize]) {
-        let mut pattern: Vec<Contact> =
-            act.iter().filter_map(|&i| self.planes[i].contact).collect();
+    /// Checks the contacts active at (x, t) for a mechanism; records a limit state.
+    fn check(&mut self, x: Reactions, t: f64, act: &[usize]) {
+        let mut pattern: Vec<(Contact, Side)> = act
+            .iter()
+            .filter_map(|&i| self.planes[i].contact.map(|c| (c, self.planes[i].side)))
+            .collect();
         if pattern.len() < 3 || act.len() > pattern.len() {
             return; // too few contacts, or on the box (not a bounded state)
         }
-        pattern.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.kind.cmp(&b.kind)));
-        let st = State {
-            arch: self.arch,
-            eta,
-            mu: self.mu,
-            x,
+        pattern.sort_by(|a, b| {
+            a.0.beta
+                .total_cmp(&b.0.beta)
+                .then((a.1 == Side::After).cmp(&(b.1 == Side::After)))
+                .then(a.0.kind.cmp(&b.0.kind))
+        });
+        let contacts: Vec<Contact> = pattern.iter().map(|p| p.0).collect();
+        let sides: Vec<Side> = pattern.iter().map(|p| p.1).collect();
+        let found = match self.param {
+            Param::Thickness => {
+                let st = State {
+                    arch: self.arch,
+                    eta: t,
+                    mu: self.mu,
+                    x,
+                };
+                mechanism::find(&st, &contacts, self.settings)
+                    .ok()
+                    .flatten()
+                    .map(|m| (m, 0.0))
+            }
+            Param::Multiplier { eta, load } => {
+                let st = State {
+                    arch: self.arch,
+                    eta,
+                    mu: self.mu,
+                    x,
+                };
+                mechanism::find_under_load(&st, t, load, &pattern, self.settings)
+                    .ok()
+                    .flatten()
+            }
         };
-        if let Ok(Some(mech)) = mechanism::find(&st, &pattern, self.settings) {
+        if let Some((mech, live_power)) = found {
             let mode = classify(
-                &pattern,
+                &contacts,
                 0.5 * (self.arch.beta_right() + self.arch.beta_left()),
                 self.settings.same_joint,
             );
             self.states.push(SweptState {
-                eta,
+                eta: t,
                 x,
-                pattern,
+                pattern: contacts,
                 mode,
                 mechanism: mech,
+                sides,
+                live_power,
             });
         } else {
             // no mechanism (or an LP failure: a certificate then cannot prove this point,
             // and says so)
-            self.no_mechanism.push(CheckedPoint { eta, x, pattern });
+            self.no_mechanism.push(CheckedPoint {
+                eta: t,
+                x,
+                pattern: contacts,
+            });
         }
     }
 
@@ -516,7 +622,7 @@ impl Sweeper<'_> {
         if d.is_some_and(|(e, _)| e <= eta + 1e-9 * (1.0 + eta)) {
             return;
         }
-        self.three_contact_mechanisms(&v, eta, d.map_or(ETA_TOP, |d| d.0));
+        self.three_contact_mechanisms(&v, eta, d.map_or(self.top, |d| d.0));
         self.alive.push((v, d));
     }
 
@@ -524,6 +630,10 @@ impl Sweeper<'_> {
     /// dependent (e.g. a slide parallel to the line through two hinges): the roots of the
     /// cubic det[c₁(η) c₂(η) c₃(η)] during the vertex's life, each checked.
     fn three_contact_mechanisms(&mut self, v: &Vertex, from: f64, to: f64) {
+        if let Param::Multiplier { eta, load } = self.param {
+            self.three_contact_under_load(v, from, to, eta, load);
+            return;
+        }
         let Some(cs) = v
             .planes
             .iter()
@@ -556,6 +666,65 @@ impl Sweeper<'_> {
     }
 }
 
+impl Sweeper<'_> {
+    /// Under a live load at fixed η the columns do not depend on λ: three contacts with
+    /// dependent columns stay dependent along the whole vertex path, and their one rate
+    /// vector r (B r = 0) has total power L_dead·r + λ L_live·r, linear in λ. It is a
+    /// limit state from the least λ of the path at which that power is ≥ 0, if L_live·r > 0
+    /// (checked there by the kinematic LP like any event).
+    fn three_contact_under_load(&mut self, v: &Vertex, from: f64, to: f64, eta: f64, load: &LiveLoad) {
+        let Some(cs) = v
+            .planes
+            .iter()
+            .map(|&i| self.planes[i].contact.map(|c| (c, self.planes[i].side)))
+            .collect::<Option<Vec<(Contact, Side)>>>()
+        else {
+            return;
+        };
+        let cols: Vec<[f64; 3]> = cs.iter().map(|(c, _)| column(c.kind, c.beta, eta)).collect();
+        let m = nalgebra::Matrix3::from_fn(|r, c| cols[c][r]);
+        let scale = m.norm();
+        if m.determinant().abs() > 1e-12 * scale * scale * scale {
+            return;
+        }
+        // the rate vector: a null vector of the column matrix (cross product of two rows)
+        let rows = [m.row(0), m.row(1), m.row(2)];
+        let mut r = nalgebra::Vector3::zeros();
+        for (a, b) in [(0, 1), (0, 2), (1, 2)] {
+            let c = rows[a].transpose().cross(&rows[b].transpose());
+            if c.norm() > r.norm() {
+                r = c;
+            }
+        }
+        if r.norm() == 0.0 {
+            return;
+        }
+        let plain: Vec<Contact> = cs.iter().map(|p| p.0).collect();
+        let dead = crate::kinematics::power(self.arch, eta, &plain);
+        let live = load.power(self.arch, eta, &cs);
+        let (d, l): (f64, f64) = (0..3).fold((0.0, 0.0), |(d, l), k| (d + dead[k] * r[k], l + live[k] * r[k]));
+        let sign = if r.iter().all(|v| *v >= 0.0) {
+            1.0
+        } else if r.iter().all(|v| *v <= 0.0) {
+            -1.0
+        } else {
+            return;
+        };
+        let (d, l) = (sign * d, sign * l);
+        if l <= 0.0 {
+            return;
+        }
+        let t = from.max(-d / l);
+        if t >= to {
+            return;
+        }
+        let t = if t > from { t * (1.0 + 1e-12) + 1e-15 } else { t };
+        let x = v.at(t);
+        let act = self.active(&x, t);
+        self.check(x, t, &act);
+    }
+}
+
 /// Follows P(η) from the least admissible state (η_s, x_s) to the top and returns every
 /// limit state met on the way (η > η_s; the caller checks η_s itself). `joints` are the
 /// joint angles of a discrete arch.
@@ -571,6 +740,8 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
     let mut sw = Sweeper {
         arch,
         mu,
+        param: Param::Thickness,
+        top: ETA_TOP,
         planes: planes(arch, joints, mu),
         settings,
         alive: Vec::new(),
@@ -663,6 +834,12 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
             )),
         };
     }
+    run(sw)
+}
+
+
+/// The event loop: from the vertices alive at the start to the top.
+fn run(mut sw: Sweeper) -> Sweep {
     let mut events = 0;
     loop {
         let next = sw
@@ -721,4 +898,91 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
         no_mechanism: sw.no_mechanism,
         failure: None,
     }
+}
+
+/// Follows P(λ) = {x : φ_i(x, λ) ≤ 0} of a discrete arch under a live load at fixed η,
+/// from the least admissible multiplier λ_min (a state `x_min` there) to λ_static, and
+/// returns every limit state met on the way whose mechanism has positive live power (the
+/// caller checks λ_static itself). The same argument as in η applies: a limit state needs
+/// four active contacts at one point (or three with dependent columns, which stay
+/// dependent along a vertex path: checked where its total power turns ≥ 0), which happens
+/// only where P(λ) changes
+/// combinatorially, at the events the sweep visits. Where P(λ_min) has an interior (the
+/// arch stands unloaded, λ_min = 0) the sweep starts from all its vertices, found by a
+/// walk on its vertex graph.
+#[allow(clippy::too_many_arguments)]
+pub fn sweep_load(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    load: &LiveLoad,
+    (lambda_min, x_min): (f64, Reactions),
+    lambda_static: f64,
+    settings: &Settings,
+) -> Sweep {
+    let failure = |f: String| Sweep {
+        states: vec![],
+        events: 0,
+        no_mechanism: vec![],
+        failure: Some(f),
+    };
+    let JointLayout::Discrete(joints) = arch.layout() else {
+        return failure("the sweep needs the joints of a discrete arch".into());
+    };
+    if x_min.iter().any(|v| v.abs() >= BOX * (1.0 - 1e-9)) {
+        return failure(format!(
+            "the least admissible state at lambda = {lambda_min} lies outside the box |x| <= {BOX:e}"
+        ));
+    }
+    let mut sw = Sweeper {
+        arch,
+        mu,
+        param: Param::Multiplier { eta, load },
+        top: lambda_static,
+        planes: load_planes(arch, joints, eta, mu, load),
+        settings,
+        alive: Vec::new(),
+        states: Vec::new(),
+        no_mechanism: Vec::new(),
+    };
+    let act = sw.active(&x_min, lambda_min);
+    for v in sw.vertices_after(&x_min, lambda_min, &act) {
+        sw.push(v, lambda_min);
+    }
+    if sw.alive.is_empty() {
+        // an interior (or a degenerate least state): every vertex, by a walk from the
+        // most interior point
+        let t0 = if lambda_min == 0.0 {
+            0.0
+        } else {
+            lambda_min + 1e-6 * (lambda_static - lambda_min)
+        };
+        let rows: Vec<Affine> = sw
+            .planes
+            .iter()
+            .map(|p| Affine {
+                g: [0, 1, 2].map(|k| p.g[k].eval(t0)),
+                c: p.c.eval(t0),
+            })
+            .collect();
+        let centre = lp::max_margin(&rows, 1.0, settings).map_or(x_min, |m| m.0);
+        for t in sw.vertices_by_walk(t0, centre) {
+            let v = Vertex::new(&sw.planes, t);
+            let x = v.at(t0);
+            let feasible = sw
+                .planes
+                .iter()
+                .enumerate()
+                .all(|(i, p)| t.contains(&i) || p.value(&x, t0) <= 1e-9 * reaction_scale(&x));
+            if feasible {
+                sw.push(v, t0);
+            }
+        }
+    }
+    if sw.alive.is_empty() {
+        return failure(format!(
+            "no vertex of the admissible set found at lambda = {lambda_min}"
+        ));
+    }
+    run(sw)
 }
