@@ -197,9 +197,9 @@ pub fn find_under_load(
         .iter()
         .filter(|(c, s)| {
             c.kind == ContactKind::SlidePlus
-                && cs.iter().any(|(d, t)| {
-                    d.kind == ContactKind::SlideMinus && d.beta == c.beta && t == s
-                })
+                && cs
+                    .iter()
+                    .any(|(d, t)| d.kind == ContactKind::SlideMinus && d.beta == c.beta && t == s)
         })
         .map(|(c, s)| (c.beta, *s))
         .collect();
@@ -224,7 +224,11 @@ pub fn find_under_load(
         let cols: Vec<[f64; 3]> = plain.iter().map(|c| column(c.kind, c.beta, eta)).collect();
         let dead = power(arch, eta, &plain);
         let live = load.power(arch, eta, &keep);
-        let total: Vec<f64> = dead.iter().zip(&live).map(|(d, l)| d + lambda * l).collect();
+        let total: Vec<f64> = dead
+            .iter()
+            .zip(&live)
+            .map(|(d, l)| d + lambda * l)
+            .collect();
         let rates = match lp::kinematic(&cols, &total, &live, settings) {
             Ok(r) => r,
             Err(LpOutcome::Infeasible) => continue,
@@ -237,18 +241,30 @@ pub fn find_under_load(
         let sum: f64 = rates.iter().sum();
         let rates: Vec<f64> = rates
             .iter()
-            .map(|r| if *r / sum <= settings.rate_tol { 0.0 } else { r / sum })
+            .map(|r| {
+                if *r / sum <= settings.rate_tol {
+                    0.0
+                } else {
+                    r / sum
+                }
+            })
             .collect();
         let live_power: f64 = live.iter().zip(&rates).map(|(a, b)| a * b).sum();
         let support: Vec<usize> = (0..rates.len()).filter(|&i| rates[i] > 0.0).collect();
         let b = DMatrix::from_fn(3, support.len(), |r, c| cols[support[c]][r]);
-        let dof = support.len() - if support.is_empty() { 0 } else { b.rank(settings.rank_tol) };
+        let dof = support.len()
+            - if support.is_empty() {
+                0
+            } else {
+                b.rank(settings.rank_tol)
+            };
         let residual = compatibility_residual(eta, &plain, &rates);
         let (mut complementarity, mut dissipation) = (0.0, 0.0);
         for ((c, side), &r) in keep.iter().zip(&rates) {
             let a = actions(arch, eta, c.beta);
             let la = load.actions(arch, eta, c.beta, *side);
-            let phi = a.activation(c.kind, 0, eta, mu).at(x) + lambda * live_activation(c.kind, eta, mu, la);
+            let phi = a.activation(c.kind, 0, eta, mu).at(x)
+                + lambda * live_activation(c.kind, eta, mu, la);
             complementarity += phi.abs() * r;
             if !c.kind.is_hinge() {
                 dissipation += mu * (a.n[0].at(x) + lambda * la[0]) * r;

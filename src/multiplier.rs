@@ -12,6 +12,7 @@
 use crate::arch::{check_eta, Arch, InputError, JointLayout, Radians};
 use crate::collapse_mode::{classify, CollapseMode};
 use crate::contact::{Contact, ContactKind, Location};
+use crate::kinematics::{column, power};
 use crate::limit_states::sweep::sweep_load;
 use crate::load::{live_activation, LiveLoad, Side};
 use crate::lp::{self, LpOutcome};
@@ -35,17 +36,40 @@ pub enum StaticRange {
     },
 }
 
-/// The rows `a · (h, v, w, λ) + c ≤ 0` of a discrete arch: every activation function
-/// that exists at μ, at every joint, on both sides of a joint carrying the point load.
-pub fn rows(
-    arch: &Arch,
-    joints: &[Radians],
-    eta: f64,
-    mu: f64,
-    load: &LiveLoad,
-) -> Vec<([f64; 4], f64)> {
+/// One activation function of a loaded discrete arch: `a · (h, v, w, λ) + c ≤ 0`.
+#[derive(Debug, Clone, Copy)]
+pub struct LoadRow {
+    /// The contact.
+    pub contact: Contact,
+    /// The side of the loaded section (`After` away from the point load).
+    pub side: Side,
+    /// Coefficients of (h, v, w, λ).
+    pub a: [f64; 4],
+    /// Constant term.
+    pub c: f64,
+}
+
+impl LoadRow {
+    /// The value at (x, λ).
+    pub fn at(&self, x: &Reactions, lambda: f64) -> f64 {
+        self.a[0] * x[0] + self.a[1] * x[1] + self.a[2] * x[2] + self.a[3] * lambda + self.c
+    }
+    fn pair(&self) -> ([f64; 4], f64) {
+        (self.a, self.c)
+    }
+}
+
+/// The rows of a discrete arch: every activation function that exists at μ, at every
+/// joint, on both sides of a joint carrying the point load.
+pub fn rows(arch: &Arch, joints: &[Radians], eta: f64, mu: f64, load: &LiveLoad) -> Vec<LoadRow> {
     let mut out = Vec::with_capacity(4 * joints.len() + 4);
-    for &beta in joints {
+    let last = joints.len() - 1;
+    for (j, &beta) in joints.iter().enumerate() {
+        let at = if j == 0 || j == last {
+            Location::Springing
+        } else {
+            Location::Interior
+        };
         let sides: &[Side] = if load.splits(beta) {
             &[Side::Before, Side::After]
         } else {
@@ -57,7 +81,17 @@ pub fn rows(
             for &kind in ContactKind::active_at(mu) {
                 let a = dead.activation(kind, 0, eta, mu);
                 let l = live_activation(kind, eta, mu, live);
-                out.push(([a.g[0], a.g[1], a.g[2], l], a.c));
+                out.push(LoadRow {
+                    contact: Contact {
+                        beta,
+                        kind,
+                        at,
+                        free: false,
+                    },
+                    side,
+                    a: [a.g[0], a.g[1], a.g[2], l],
+                    c: a.c,
+                });
             }
         }
     }
@@ -98,21 +132,29 @@ pub fn static_range(
                 .into(),
         ));
     };
-    let rows = rows(arch, joints, eta, mu, load);
+    let rows: Vec<([f64; 4], f64)> = rows(arch, joints, eta, mu, load)
+        .iter()
+        .map(LoadRow::pair)
+        .collect();
     let split = |z: [f64; 4]| (z[3], [z[0], z[1], z[2]]);
-    let min = match lp::multiplier_extreme(&rows, false, settings) {
+    let min = match lp::multiplier_extreme(&rows, &[], false, settings) {
         Ok(Some(z)) => split(z),
         Ok(None) => return Ok(Err("the least multiplier came out unbounded below 0".into())),
         Err(LpOutcome::Infeasible) => return Ok(Ok(StaticRange::NoEquilibrium)),
         Err(LpOutcome::Failed(e)) => return Ok(Err(format!("LP back end: {e}"))),
     };
-    let max = match lp::multiplier_extreme(&rows, true, settings) {
+    let max = match lp::multiplier_extreme(&rows, &[], true, settings) {
         Ok(z) => z.map(split),
         Err(LpOutcome::Infeasible) => return Ok(Ok(StaticRange::NoEquilibrium)),
         Err(LpOutcome::Failed(e)) => return Ok(Err(format!("LP back end: {e}"))),
     };
     Ok(Ok(StaticRange::Interval { min, max }))
 }
+
+/// Where admissible states exist at every λ (λ_static unbounded) the sweep runs up to
+/// this multiplier; states there have reactions far beyond the box of the sweep
+/// (|x_k| ≤ 1e7), which bounds every state it follows.
+pub const UNBOUNDED_SEARCH_TOP: f64 = 1e9;
 
 /// A limit state under the live load: an admissible state at multiplier λ whose active
 /// contacts carry a mechanism with positive live power.
@@ -133,6 +175,9 @@ pub struct LoadLimitState {
     pub mechanism: Mechanism,
     /// The live load's power in that mechanism (> 0).
     pub live_power: f64,
+    /// `Some(λ_to)` when this state is the least of a continuum of limit states that
+    /// reaches up to λ_to (see [`continua`]); `None` for an isolated limit state.
+    pub continuum_to: Option<f64>,
 }
 
 /// Every limit state of a loaded discrete arch at (η, μ) with λ in [λ_min, λ_static].
@@ -140,11 +185,13 @@ pub struct LoadLimitState {
 pub struct LoadSurvey {
     /// The least admissible multiplier (0 when the arch stands unloaded) and a state.
     pub lambda_min: (f64, Reactions),
-    /// The largest admissible multiplier and a state there.
-    pub lambda_static: (f64, Reactions),
+    /// The largest admissible multiplier and a state there; `None` when admissible states
+    /// exist at every λ ≥ λ_min (the search then runs up to [`UNBOUNDED_SEARCH_TOP`]).
+    pub lambda_static: Option<(f64, Reactions)>,
     /// Whether the state at λ_static carries a mechanism with positive live power.
     pub mechanism_at_static: bool,
-    /// Every limit state, ascending in λ (the one at λ_static included when it exists).
+    /// Every limit state, ascending in λ (the one at λ_static included when it exists); a
+    /// continuum of limit states appears once, by its least state.
     pub limit_states: Vec<LoadLimitState>,
     /// Events of the sweep.
     pub events: usize,
@@ -156,13 +203,18 @@ impl LoadSurvey {
     pub fn lambda(&self) -> Option<f64> {
         self.limit_states.first().map(|s| s.lambda)
     }
-    /// Whether exactly one limit state exists.
+    /// Whether exactly one limit state exists (a continuum is not unique).
     pub fn unique(&self) -> bool {
         self.limit_states.len() == 1
+            && self.limit_states[0]
+                .continuum_to
+                .is_none_or(|to| to <= self.limit_states[0].lambda)
     }
-    /// 1 − λ/λ_static: how far non-associative friction lowers the collapse multiplier.
+    /// 1 − λ/λ_static: how far non-associative friction lowers the collapse multiplier
+    /// (1 when λ_static is unbounded and a limit state exists).
     pub fn reduction(&self) -> Option<f64> {
-        self.lambda().map(|l| 1.0 - l / self.lambda_static.0)
+        let l = self.lambda()?;
+        Some(self.lambda_static.map_or(1.0, |s| 1.0 - l / s.0))
     }
 }
 
@@ -171,11 +223,13 @@ impl LoadSurvey {
 pub enum LoadOutcome {
     /// No state is admissible at any λ ≥ 0.
     NoEquilibrium,
-    /// λ is unbounded: the load never breaks the arch (the least admissible multiplier
-    /// and a state there are given; limit states are not searched).
+    /// λ is unbounded and no limit state exists up to [`UNBOUNDED_SEARCH_TOP`]: the load
+    /// never breaks the arch (the least admissible multiplier and a state there).
     NoCollapse {
         /// λ_min and a state there.
         lambda_min: (f64, Reactions),
+        /// Events of the sweep.
+        events: usize,
     },
     /// The static range and every limit state in it.
     Limits(LoadSurvey),
@@ -198,23 +252,41 @@ pub fn survey(
     };
     let (min, max) = match range {
         StaticRange::NoEquilibrium => return Ok(Ok(LoadOutcome::NoEquilibrium)),
-        StaticRange::Interval { min, max: None } => {
-            return Ok(Ok(LoadOutcome::NoCollapse { lambda_min: min }))
-        }
-        StaticRange::Interval {
-            min,
-            max: Some(max),
-        } => (min, max),
+        StaticRange::Interval { min, max } => (min, max),
     };
-    let at_static = limit_state_at(arch, eta, mu, load, max, settings);
-    let sw = sweep_load(arch, eta, mu, load, min, max.0, settings);
+    let JointLayout::Discrete(joints) = arch.layout() else {
+        unreachable!("static_range answers discrete arches only")
+    };
+    let all_rows = rows(arch, joints, eta, mu, load);
+    let continua = match continua(arch, eta, mu, load, &all_rows, settings) {
+        Ok(c) => c,
+        Err(e) => return Ok(Err(e)),
+    };
+    // a state whose active set holds a continuum's pair belongs to that continuum
+    let in_continuum = |pattern: &[Contact], sides: &[Side]| {
+        continua.iter().any(|c| {
+            c.pattern.iter().zip(&c.sides).all(|(p, s)| {
+                pattern
+                    .iter()
+                    .zip(sides)
+                    .any(|(q, t)| q.beta == p.beta && q.kind == p.kind && t == s)
+            })
+        })
+    };
+    let at_static = max.and_then(|m| limit_state_at(arch, eta, mu, load, m, settings));
+    let top = max.map_or(UNBOUNDED_SEARCH_TOP, |m| m.0);
+    let sw = sweep_load(arch, eta, mu, load, min, top, settings);
     if let Some(f) = sw.failure {
         return Ok(Err(f));
     }
+    // where the arch does not stand unloaded (λ_min > 0) the state at λ_min is the
+    // unloading end: the arch fails there as λ decreases, and it is never reported as a
+    // collapse under the load, whatever mechanism the load could also drive there
+    let above_min = |l: f64| min.0 == 0.0 || l > min.0 * (1.0 + settings.root_slack);
     let mut limit_states: Vec<LoadLimitState> = sw
         .states
         .into_iter()
-        .filter(|s| s.eta < max.0 * (1.0 - settings.root_slack))
+        .filter(|s| s.eta < top * (1.0 - settings.root_slack) && above_min(s.eta))
         .map(|s| LoadLimitState {
             lambda: s.eta,
             x: s.x,
@@ -223,10 +295,20 @@ pub fn survey(
             mode: s.mode,
             mechanism: s.mechanism,
             live_power: s.live_power,
+            continuum_to: None,
         })
         .collect();
     let mechanism_at_static = at_static.is_some();
     limit_states.extend(at_static);
+    limit_states.retain(|s| !in_continuum(&s.pattern, &s.sides));
+    limit_states.extend(continua);
+    limit_states.sort_by(|a, b| a.lambda.total_cmp(&b.lambda));
+    if max.is_none() && limit_states.is_empty() {
+        return Ok(Ok(LoadOutcome::NoCollapse {
+            lambda_min: min,
+            events: sw.events,
+        }));
+    }
     Ok(Ok(LoadOutcome::Limits(LoadSurvey {
         lambda_min: min,
         lambda_static: max,
@@ -249,38 +331,14 @@ fn limit_state_at(
     let JointLayout::Discrete(joints) = arch.layout() else {
         return None;
     };
-    let last = joints.len() - 1;
-    let mut pattern: Vec<(Contact, Side)> = Vec::new();
-    for (j, &beta) in joints.iter().enumerate() {
-        let at = if j == 0 || j == last {
-            Location::Springing
-        } else {
-            Location::Interior
-        };
-        let dead = actions(arch, eta, beta);
-        let sides: &[Side] = if load.splits(beta) {
-            &[Side::Before, Side::After]
-        } else {
-            &[Side::After]
-        };
-        for &side in sides {
-            let live = load.actions(arch, eta, beta, side);
-            for &kind in ContactKind::active_at(mu) {
-                let phi = dead.activation(kind, 0, eta, mu).at(&x)
-                    + lambda * live_activation(kind, eta, mu, live);
-                let size = magnitude(kind, eta, mu, &x, settings.magnitude_floor);
-                if phi.abs() <= settings.event_tol * size {
-                    let c = Contact {
-                        beta,
-                        kind,
-                        at,
-                        free: false,
-                    };
-                    pattern.push((c, side));
-                }
-            }
-        }
-    }
+    let pattern: Vec<(Contact, Side)> = rows(arch, joints, eta, mu, load)
+        .iter()
+        .filter(|r| {
+            let size = magnitude(r.contact.kind, eta, mu, &x, settings.magnitude_floor);
+            r.at(&x, lambda).abs() <= settings.event_tol * size
+        })
+        .map(|r| (r.contact, r.side))
+        .collect();
     let st = State { arch, eta, mu, x };
     let (mechanism, live_power) =
         mechanism::find_under_load(&st, lambda, load, &pattern, settings).ok()??;
@@ -298,5 +356,94 @@ fn limit_state_at(
         mode,
         mechanism,
         live_power,
+        continuum_to: None,
     })
+}
+
+/// Continua of limit states. Two active contacts whose compatibility columns cancel — the
+/// two sections of the point load's joint sliding opposite ways (the zero-width piece that
+/// carries the load slides along the joint between blocks at rest), or two joints half a
+/// turn apart sliding the same way (the piece between them translates) — carry the
+/// mechanism (½, ½) wherever both are active. Its live power is fixed and its total power
+/// is affine in λ, so every admissible state with both active and total power ≥ 0 is a
+/// limit state: a polyhedron in (x, λ), whose least and largest λ are two LPs. Each
+/// continuum is returned as its least state, with `continuum_to` its largest λ.
+pub fn continua(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    load: &LiveLoad,
+    rows: &[LoadRow],
+    settings: &Settings,
+) -> Result<Vec<LoadLimitState>, String> {
+    let mut out = Vec::new();
+    if !mu.is_finite() {
+        return Ok(out); // hinge columns cancel only at η = 0
+    }
+    let ineq: Vec<([f64; 4], f64)> = rows.iter().map(LoadRow::pair).collect();
+    for i in 0..rows.len() {
+        for j in i + 1..rows.len() {
+            let (p, q) = (&rows[i], &rows[j]);
+            if p.contact.kind.is_hinge() || q.contact.kind.is_hinge() {
+                continue;
+            }
+            if p.contact.beta == q.contact.beta && p.side == q.side {
+                continue; // one joint slides one way only
+            }
+            let (cp, cq) = (
+                column(p.contact.kind, p.contact.beta, eta),
+                column(q.contact.kind, q.contact.beta, eta),
+            );
+            if (0..3).any(|k| (cp[k] + cq[k]).abs() > 1e-12) {
+                continue;
+            }
+            let pair = [(p.contact, p.side), (q.contact, q.side)];
+            let plain = [p.contact, q.contact];
+            let dead = power(arch, eta, &plain);
+            let live = load.power(arch, eta, &pair);
+            let (d, l) = (0.5 * (dead[0] + dead[1]), 0.5 * (live[0] + live[1]));
+            if l <= settings.rate_tol {
+                continue;
+            }
+            // total power d + λ l ≥ 0
+            let mut with_power = ineq.clone();
+            with_power.push(([0.0, 0.0, 0.0, -l], -d));
+            let equal = [p.pair(), q.pair()];
+            let from = match lp::multiplier_extreme(&with_power, &equal, false, settings) {
+                Ok(Some(z)) => z,
+                Ok(None) => continue,
+                Err(LpOutcome::Infeasible) => continue,
+                Err(LpOutcome::Failed(e)) => return Err(format!("LP back end: {e}")),
+            };
+            let to = match lp::multiplier_extreme(&with_power, &equal, true, settings) {
+                Ok(Some(z)) => z[3],
+                Ok(None) => f64::INFINITY,
+                Err(LpOutcome::Infeasible) => from[3],
+                Err(LpOutcome::Failed(e)) => return Err(format!("LP back end: {e}")),
+            };
+            let x = [from[0], from[1], from[2]];
+            let st = State { arch, eta, mu, x };
+            let Ok(Some((mechanism, live_power))) =
+                mechanism::find_under_load(&st, from[3], load, &pair, settings)
+            else {
+                continue;
+            };
+            let contacts: Vec<Contact> = plain.to_vec();
+            out.push(LoadLimitState {
+                lambda: from[3],
+                x,
+                mode: classify(
+                    &contacts,
+                    0.5 * (arch.beta_right() + arch.beta_left()),
+                    settings.same_joint,
+                ),
+                pattern: contacts,
+                sides: vec![p.side, q.side],
+                mechanism,
+                live_power,
+                continuum_to: Some(to),
+            });
+        }
+    }
+    Ok(out)
 }

@@ -306,7 +306,9 @@ impl Sweeper<'_> {
             .filter(|&i| {
                 let p = &self.planes[i];
                 let size = match p.contact {
-                    Some(c) => magnitude(c.kind, thickness, self.mu, x, self.settings.magnitude_floor),
+                    Some(c) => {
+                        magnitude(c.kind, thickness, self.mu, x, self.settings.magnitude_floor)
+                    }
                     None => BOX,
                 };
                 p.value(x, eta).abs() <= self.settings.event_tol * size
@@ -672,7 +674,14 @@ impl Sweeper<'_> {
     /// vector r (B r = 0) has total power L_dead·r + λ L_live·r, linear in λ. It is a
     /// limit state from the least λ of the path at which that power is ≥ 0, if L_live·r > 0
     /// (checked there by the kinematic LP like any event).
-    fn three_contact_under_load(&mut self, v: &Vertex, from: f64, to: f64, eta: f64, load: &LiveLoad) {
+    fn three_contact_under_load(
+        &mut self,
+        v: &Vertex,
+        from: f64,
+        to: f64,
+        eta: f64,
+        load: &LiveLoad,
+    ) {
         let Some(cs) = v
             .planes
             .iter()
@@ -681,7 +690,10 @@ impl Sweeper<'_> {
         else {
             return;
         };
-        let cols: Vec<[f64; 3]> = cs.iter().map(|(c, _)| column(c.kind, c.beta, eta)).collect();
+        let cols: Vec<[f64; 3]> = cs
+            .iter()
+            .map(|(c, _)| column(c.kind, c.beta, eta))
+            .collect();
         let m = nalgebra::Matrix3::from_fn(|r, c| cols[c][r]);
         let scale = m.norm();
         if m.determinant().abs() > 1e-12 * scale * scale * scale {
@@ -702,7 +714,9 @@ impl Sweeper<'_> {
         let plain: Vec<Contact> = cs.iter().map(|p| p.0).collect();
         let dead = crate::kinematics::power(self.arch, eta, &plain);
         let live = load.power(self.arch, eta, &cs);
-        let (d, l): (f64, f64) = (0..3).fold((0.0, 0.0), |(d, l), k| (d + dead[k] * r[k], l + live[k] * r[k]));
+        let (d, l): (f64, f64) = (0..3).fold((0.0, 0.0), |(d, l), k| {
+            (d + dead[k] * r[k], l + live[k] * r[k])
+        });
         let sign = if r.iter().all(|v| *v >= 0.0) {
             1.0
         } else if r.iter().all(|v| *v <= 0.0) {
@@ -718,7 +732,11 @@ impl Sweeper<'_> {
         if t >= to {
             return;
         }
-        let t = if t > from { t * (1.0 + 1e-12) + 1e-15 } else { t };
+        let t = if t > from {
+            t * (1.0 + 1e-12) + 1e-15
+        } else {
+            t
+        };
         let x = v.at(t);
         let act = self.active(&x, t);
         self.check(x, t, &act);
@@ -837,7 +855,6 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
     run(sw)
 }
 
-
 /// The event loop: from the vertices alive at the start to the top.
 fn run(mut sw: Sweeper) -> Sweep {
     let mut events = 0;
@@ -945,9 +962,14 @@ pub fn sweep_load(
         states: Vec::new(),
         no_mechanism: Vec::new(),
     };
-    let act = sw.active(&x_min, lambda_min);
-    for v in sw.vertices_after(&x_min, lambda_min, &act) {
-        sw.push(v, lambda_min);
+    // λ_min > 0: P(λ_min) is (generically) the point x_min, and the vertices just after
+    // it come from the linearisation there; λ_min = 0: P(0) is the admissible set of the
+    // unloaded arch, in general with an interior, and every one of its vertices starts
+    if lambda_min > 0.0 {
+        let act = sw.active(&x_min, lambda_min);
+        for v in sw.vertices_after(&x_min, lambda_min, &act) {
+            sw.push(v, lambda_min);
+        }
     }
     if sw.alive.is_empty() {
         // an interior (or a degenerate least state): every vertex, by a walk from the
@@ -955,7 +977,7 @@ pub fn sweep_load(
         let t0 = if lambda_min == 0.0 {
             0.0
         } else {
-            lambda_min + 1e-6 * (lambda_static - lambda_min)
+            lambda_min + 1e-6 * (lambda_static - lambda_min).min(1.0 + lambda_min)
         };
         let rows: Vec<Affine> = sw
             .planes

@@ -152,10 +152,12 @@ pub fn kinematic_farkas(
 
 /// Optimises the multiplier λ, the last of the unknowns z = (h, v, w, λ), subject to
 /// `a · z + c ≤ 0` for every row (a, c) and λ ≥ 0: the largest λ when `maximise`, else
-/// the least. Rows are scaled to unit gradient norm. `Ok(None)` when λ is unbounded,
-/// `Err(Infeasible)` when no state with λ ≥ 0 satisfies the rows.
+/// the least; the rows of `equal` hold with equality. Rows are scaled to unit gradient
+/// norm. `Ok(None)` when λ is unbounded, `Err(Infeasible)` when no state with λ ≥ 0
+/// satisfies the rows.
 pub fn multiplier_extreme(
     rows: &[([f64; 4], f64)],
+    equal: &[([f64; 4], f64)],
     maximise: bool,
     tol: f64,
 ) -> Result<Option<[f64; 4]>, LpOutcome> {
@@ -175,14 +177,18 @@ pub fn multiplier_extreme(
         vars.minimise(z[3])
     };
     let mut problem = configure(objective.using(highs), tol);
-    for (a, c) in rows {
+    for (i, (a, c)) in rows.iter().chain(equal).enumerate() {
         let norm = a.iter().map(|v| v * v).sum::<f64>().sqrt();
         let scale = if norm > 0.0 { 1.0 / norm } else { 1.0 };
         let mut e = Expression::with_capacity(4);
         for k in 0..4 {
             e.add_mul(a[k] * scale, z[k]);
         }
-        problem = problem.with(e.leq(-c * scale));
+        problem = problem.with(if i < rows.len() {
+            e.leq(-c * scale)
+        } else {
+            e.eq(-c * scale)
+        });
     }
     match problem.solve() {
         Ok(sol) => Ok(Some([

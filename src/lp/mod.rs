@@ -68,11 +68,13 @@ pub fn kinematic_farkas(
 }
 
 /// The least or largest multiplier λ ≥ 0 of a load problem (unknowns (h, v, w, λ), rows
-/// `a · z + c ≤ 0`; HiGHS). `Ok(None)`: λ unbounded; `Err(Infeasible)`: no state.
+/// `a · z + c ≤ 0`, and `= 0` for `equal`; HiGHS). `Ok(None)`: λ unbounded;
+/// `Err(Infeasible)`: no state.
 pub fn multiplier_extreme(
     rows: &[([f64; 4], f64)],
+    equal: &[([f64; 4], f64)],
     maximise: bool,
     settings: &Settings,
 ) -> Result<Option<[f64; 4]>, LpOutcome> {
-    highs::multiplier_extreme(rows, maximise, settings.lp_tol)
+    highs::multiplier_extreme(rows, equal, maximise, settings.lp_tol)
 }
