@@ -295,6 +295,25 @@ impl Sweeper<'_> {
         self.settings.event_tol * reaction_scale(x)
     }
 
+    /// Two planes that are one and the same function of (x, t) (at the point load's joint
+    /// the extrados hinge rows of both sides coincide: the load passes through the hinge
+    /// point). Their contacts differ (in the kinematics), their plane does not.
+    fn twins(&self, i: usize, j: usize) -> bool {
+        let (p, q) = (&self.planes[i], &self.planes[j]);
+        let same = |a: &Poly, b: &Poly| {
+            let (a, b) = (a.coeffs(), b.coeffs());
+            (0..a.len().max(b.len())).all(|k| {
+                let (x, y) = (a.get(k).copied().unwrap_or(0.0), b.get(k).copied().unwrap_or(0.0));
+                (x - y).abs() <= 1e-13 * (1.0 + x.abs().max(y.abs()))
+            })
+        };
+        i != j
+            && p.contact.is_some()
+            && q.contact.is_some()
+            && same(&p.c, &q.c)
+            && (0..3).all(|k| same(&p.g[k], &q.g[k]))
+    }
+
     /// Planes active at (x, η): |φ| within `event_tol` of the plane's own magnitude
     /// ([`magnitude`]: shallow arches have φ of order η).
     fn active(&self, x: &Reactions, eta: f64) -> Vec<usize> {
@@ -386,8 +405,12 @@ impl Sweeper<'_> {
             let rhs = nalgebra::Vector3::from_fn(|r, _| -slopes[t[r]].1);
             let dx = inv * rhs;
             // strictly inside the other planes just after η (a tie is not a vertex: the
-            // neighbouring triple of the tie carries the path)
-            let ok = (0..act.len()).filter(|i| !t.contains(i)).all(|i| {
+            // neighbouring triple of the tie carries the path); a plane identical to one
+            // of the triple (a twin) is not another plane
+            let ok = (0..act.len())
+                .filter(|i| !t.contains(i))
+                .filter(|&i| !t.iter().any(|&k| self.twins(act[i], act[k])))
+                .all(|i| {
                 let (g, d) = slopes[i];
                 let rate = g[0] * dx[0] + g[1] * dx[1] + g[2] * dx[2] + d;
                 let size = g[0].abs() * dx[0].abs()
