@@ -303,7 +303,10 @@ impl Sweeper<'_> {
         let same = |a: &Poly, b: &Poly| {
             let (a, b) = (a.coeffs(), b.coeffs());
             (0..a.len().max(b.len())).all(|k| {
-                let (x, y) = (a.get(k).copied().unwrap_or(0.0), b.get(k).copied().unwrap_or(0.0));
+                let (x, y) = (
+                    a.get(k).copied().unwrap_or(0.0),
+                    b.get(k).copied().unwrap_or(0.0),
+                );
                 (x - y).abs() <= 1e-13 * (1.0 + x.abs().max(y.abs()))
             })
         };
@@ -411,14 +414,14 @@ impl Sweeper<'_> {
                 .filter(|i| !t.contains(i))
                 .filter(|&i| !t.iter().any(|&k| self.twins(act[i], act[k])))
                 .all(|i| {
-                let (g, d) = slopes[i];
-                let rate = g[0] * dx[0] + g[1] * dx[1] + g[2] * dx[2] + d;
-                let size = g[0].abs() * dx[0].abs()
-                    + g[1].abs() * dx[1].abs()
-                    + g[2].abs() * dx[2].abs()
-                    + d.abs();
-                rate < -1e-12 * size
-            });
+                    let (g, d) = slopes[i];
+                    let rate = g[0] * dx[0] + g[1] * dx[1] + g[2] * dx[2] + d;
+                    let size = g[0].abs() * dx[0].abs()
+                        + g[1].abs() * dx[1].abs()
+                        + g[2].abs() * dx[2].abs()
+                        + d.abs();
+                    rate < -1e-12 * size
+                });
             if ok {
                 out.push(Vertex::new(&self.planes, [act[t[0]], act[t[1]], act[t[2]]]));
             }

@@ -43,7 +43,7 @@ impl ArchJson {
 }
 
 #[derive(Debug, Serialize)]
-struct Reactions {
+pub(crate) struct Reactions {
     h: f64,
     v: f64,
     w: f64,
@@ -57,7 +57,7 @@ struct Rate {
 }
 
 #[derive(Debug, Serialize)]
-struct MechanismJson {
+pub(crate) struct MechanismJson {
     rates: Vec<Rate>,
     dof: usize,
     power: f64,
@@ -149,7 +149,7 @@ struct SearchJson {
     reason: Option<String>,
 }
 
-fn mechanism_json(m: &crate::mechanism::Mechanism) -> MechanismJson {
+pub(crate) fn mechanism_json(m: &crate::mechanism::Mechanism) -> MechanismJson {
     MechanismJson {
         rates: m
             .contacts
@@ -170,7 +170,7 @@ fn mechanism_json(m: &crate::mechanism::Mechanism) -> MechanismJson {
     }
 }
 
-fn reactions(x: &[f64; 3]) -> Reactions {
+pub(crate) fn reactions(x: &[f64; 3]) -> Reactions {
     Reactions {
         h: x[0],
         v: x[1],

@@ -2,6 +2,7 @@
 //! draw the data that [`crate::figures`] computed and call no solver.
 
 pub mod json;
+pub mod load;
 #[cfg(feature = "svg")]
 pub mod plot;
 #[cfg(feature = "svg")]

@@ -324,7 +324,7 @@ fn limit_states(survey: &Survey) -> String {
     s
 }
 
-fn short(c: &Contact) -> &'static str {
+pub(crate) fn short(c: &Contact) -> &'static str {
     match c.kind {
         crate::contact::ContactKind::HingeExtrados => "E",
         crate::contact::ContactKind::HingeIntrados => "I",

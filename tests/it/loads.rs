@@ -222,3 +222,271 @@ fn stockdale_point_load_on_a_27_voussoir_semicircle() {
     );
     assert!((kn - 2.751).abs() < 0.0005, "{kn} kN against 2.751 kN");
 }
+
+/// `load --json`: the contract's keys, the Stockdale case through the command line (the
+/// 8th joint by index, the load in kN), and exit codes.
+#[test]
+fn load_command_json_contract() {
+    use crate::cli::json_of;
+    let (ri, t) = (1.806, 0.1661 * 1.806);
+    let r = ri + t / 2.0;
+    let eta = format!("{}", t / r);
+    let radius = format!("{r}");
+    let (v, code) = json_of(&[
+        "load",
+        "--alpha",
+        "0",
+        "--blocks",
+        "27",
+        "--weight",
+        "centroid",
+        "--eta",
+        &eta,
+        "--mu",
+        "inf",
+        "--point-load-joint",
+        "8",
+        "--radius",
+        &radius,
+        "--depth",
+        "0.25",
+        "--density",
+        "1530",
+    ]);
+    assert_eq!(code, 0, "{v}");
+    assert_eq!(v["status"], "ok");
+    for key in [
+        "lambda",
+        "lambda_static",
+        "unique",
+        "mechanism_at_static",
+        "limit_states",
+        "load",
+        "reduction",
+        "lambda_min",
+    ] {
+        assert!(v.get(key).is_some(), "missing {key}: {v}");
+    }
+    assert_eq!(v["load"]["kind"], "point");
+    assert_eq!(v["load"]["at_joint"], true);
+    assert!((v["load"]["beta"].as_f64().unwrap() - 8.0 * PI / 27.0).abs() < 1e-15);
+    let kn = v["units"]["lambda_kn"].as_f64().unwrap();
+    assert!((kn - 2.751).abs() < 0.0005, "{kn} kN");
+    // mu = inf: the static maximum is the collapse multiplier
+    assert_eq!(v["lambda"], v["lambda_static"]);
+    assert_eq!(v["unique"], true);
+    let states = v["limit_states"].as_array().unwrap();
+    assert_eq!(states.len(), 1);
+    for key in ["lambda", "mode", "pattern", "mechanism"] {
+        assert!(states[0].get(key).is_some(), "missing {key}");
+    }
+    // a horizontal load on a discrete semicircle
+    let (v, code) = json_of(&[
+        "load",
+        "--alpha",
+        "0",
+        "--blocks",
+        "20",
+        "--eta",
+        "0.3",
+        "--mu",
+        "0.8",
+        "--horizontal",
+    ]);
+    assert_eq!(code, 0);
+    assert_eq!(v["load"]["kind"], "horizontal");
+    assert_eq!(v["load"]["beta"], serde_json::Value::Null);
+    assert!(v["lambda"].as_f64().unwrap() > 0.0);
+}
+
+#[test]
+fn load_bad_input_names_the_argument() {
+    let cases: &[(&[&str], &str)] = &[
+        (
+            &[
+                "load",
+                "--alpha",
+                "0",
+                "--eta",
+                "0.3",
+                "--mu",
+                "1",
+                "--horizontal",
+            ],
+            "--blocks",
+        ),
+        (
+            &[
+                "load",
+                "--alpha",
+                "0",
+                "--blocks",
+                "8",
+                "--eta",
+                "0.3",
+                "--mu",
+                "1",
+                "--point-load",
+                "4",
+            ],
+            "--point-load",
+        ),
+        (
+            &[
+                "load",
+                "--alpha",
+                "0",
+                "--blocks",
+                "8",
+                "--eta",
+                "0.3",
+                "--mu",
+                "1",
+                "--point-load-deg",
+                "200",
+            ],
+            "--point-load-deg",
+        ),
+        (
+            &[
+                "load",
+                "--alpha",
+                "0",
+                "--blocks",
+                "8",
+                "--eta",
+                "0.3",
+                "--mu",
+                "1",
+                "--point-load-joint",
+                "9",
+            ],
+            "--point-load-joint",
+        ),
+        (
+            &[
+                "load",
+                "--alpha",
+                "0",
+                "--blocks",
+                "8",
+                "--eta",
+                "2.5",
+                "--mu",
+                "1",
+                "--horizontal",
+            ],
+            "--eta",
+        ),
+        (
+            &[
+                "load",
+                "--alpha",
+                "0",
+                "--blocks",
+                "8",
+                "--eta",
+                "0.3",
+                "--mu",
+                "0",
+                "--horizontal",
+            ],
+            "--mu",
+        ),
+        (
+            &[
+                "load", "--alpha", "0", "--blocks", "8", "--eta", "0.3", "--mu", "1",
+            ],
+            "--horizontal",
+        ),
+    ];
+    for (args, name) in cases {
+        let out = assert_cmd::Command::cargo_bin("arch-enum")
+            .unwrap()
+            .args(*args)
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(name), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+    }
+}
+
+/// On random symmetric discrete arches: the horizontal load towards either springing
+/// gives the same multipliers (mirror symmetry); at μ = ∞ the collapse multiplier is the
+/// static maximum (associative case, no reduction); at every limit state the total
+/// external power equals the frictional dissipation (virtual work) and the live power is
+/// positive.
+#[test]
+fn load_symmetry_infinite_friction_and_virtual_work() {
+    use arch_enum::multiplier::{survey, LoadOutcome};
+    let mut rng = Rng(0x5ee5_0000_0000_0011);
+    let settings = Settings::default();
+    let mut checked = 0;
+    for case in 0..30 {
+        let alpha = -0.4 + 1.2 * rng.next();
+        let blocks = 3 + (rng.next() * 12.0) as usize;
+        let weight = if case % 2 == 0 {
+            WeightModel::Centreline
+        } else {
+            WeightModel::Centroid
+        };
+        let arch = Arch::symmetric(alpha, weight)
+            .unwrap()
+            .with_blocks(blocks)
+            .unwrap();
+        let eta = 0.2 + 0.6 * rng.next();
+        let mu = if case % 3 == 0 {
+            f64::INFINITY
+        } else {
+            0.4 + 1.2 * rng.next()
+        };
+        let run = |towards_right| {
+            survey(
+                &arch,
+                eta,
+                mu,
+                &LiveLoad::Horizontal { towards_right },
+                &settings,
+            )
+            .unwrap()
+            .unwrap()
+        };
+        match (run(true), run(false)) {
+            (LoadOutcome::Limits(r), LoadOutcome::Limits(l)) => {
+                let (a, b) = (r.lambda_static.unwrap().0, l.lambda_static.unwrap().0);
+                assert!((a - b).abs() < 1e-9 * (1.0 + a), "case {case}: {a} vs {b}");
+                let la: Vec<f64> = r.limit_states.iter().map(|s| s.lambda).collect();
+                let lb: Vec<f64> = l.limit_states.iter().map(|s| s.lambda).collect();
+                assert_eq!(la.len(), lb.len(), "case {case}: {la:?} vs {lb:?}");
+                for (x, y) in la.iter().zip(&lb) {
+                    assert!(
+                        (x - y).abs() < 1e-9 * (1.0 + x),
+                        "case {case}: {la:?} vs {lb:?}"
+                    );
+                }
+                if mu.is_infinite() {
+                    assert_eq!(r.lambda(), Some(a), "case {case}: mu = inf must not reduce");
+                }
+                for s in r.limit_states.iter().chain(&l.limit_states) {
+                    assert!(s.live_power > 0.0);
+                    let m = &s.mechanism;
+                    assert!(
+                        (m.power - m.dissipation).abs() < 1e-8 * (1.0 + m.power.abs()),
+                        "case {case}: power {} vs dissipation {}",
+                        m.power,
+                        m.dissipation
+                    );
+                }
+                checked += 1;
+            }
+            (a, b) => assert_eq!(
+                std::mem::discriminant(&a),
+                std::mem::discriminant(&b),
+                "case {case}"
+            ),
+        }
+    }
+    assert!(checked >= 20, "{checked}");
+}

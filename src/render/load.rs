@@ -1,0 +1,389 @@
+//! The answer of `arch-enum load` as JSON and as text: pure functions of
+//! [`crate::multiplier::LoadOutcome`].
+
+use super::json::{mechanism_json, reactions, ArchJson, MechanismJson, Reactions, JSON_VERSION};
+use super::table::{describe_arch, fmt_mu, short, sig, Dimensions};
+use crate::arch::Arch;
+use crate::contact::Contact;
+use crate::load::{LiveLoad, Side};
+use crate::multiplier::{LoadLimitState, LoadOutcome};
+use serde::Serialize;
+use std::fmt::Write;
+
+/// The question asked: arch, η, μ and the load.
+pub struct LoadQuestion<'a> {
+    /// The arch.
+    pub arch: &'a Arch,
+    /// Thickness ratio.
+    pub eta: f64,
+    /// Friction coefficient.
+    pub mu: f64,
+    /// The live load.
+    pub load: LiveLoad,
+    /// Physical dimensions, for loads in kN or accelerations in m/s².
+    pub dims: Option<Dimensions>,
+}
+
+#[derive(Debug, Serialize)]
+struct LoadJson {
+    kind: &'static str,
+    /// Angle of the loaded extrados point (radians); null for the horizontal load.
+    beta: Option<f64>,
+    /// Horizontal load: `right` (towards +x, the right springing) or `left`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    towards: Option<&'static str>,
+    /// Point load: whether it sits at a joint (both sides of its section are checked).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    at_joint: Option<bool>,
+}
+
+#[derive(Debug, Serialize)]
+struct PatternContact {
+    #[serde(flatten)]
+    contact: Contact,
+    /// At the point load's joint: `before` or `after` the loaded section.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    side: Option<&'static str>,
+}
+
+#[derive(Debug, Serialize)]
+struct StateJson {
+    lambda: f64,
+    mode: &'static str,
+    pattern: Vec<PatternContact>,
+    reactions: Reactions,
+    mechanism: MechanismJson,
+    live_power: f64,
+    /// The largest λ of a continuum of limit states this one is the least of.
+    continuum_to: Option<f64>,
+}
+
+#[derive(Debug, Serialize)]
+struct UnitsJson {
+    /// γ t d r in kN (the unit of a point load, and of the horizontal force per unit λ).
+    force_unit_kn: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    lambda_kn: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    lambda_static_kn: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    acceleration_ms2: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    acceleration_static_ms2: Option<f64>,
+}
+
+/// The `load --json` document.
+#[derive(Debug, Serialize)]
+pub struct LoadDoc {
+    version: u32,
+    status: &'static str,
+    arch: ArchJson,
+    eta: f64,
+    mu: Option<f64>,
+    load: LoadJson,
+    lambda: Option<f64>,
+    lambda_static: Option<f64>,
+    lambda_min: Option<f64>,
+    unique: Option<bool>,
+    mechanism_at_static: Option<bool>,
+    reduction: Option<f64>,
+    limit_states: Vec<StateJson>,
+    search: Option<SearchJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    units: Option<UnitsJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    message: Option<String>,
+}
+
+#[derive(Debug, Serialize)]
+struct SearchJson {
+    method: &'static str,
+    events: usize,
+}
+
+fn load_json(q: &LoadQuestion) -> LoadJson {
+    match q.load {
+        LiveLoad::Horizontal { towards_right } => LoadJson {
+            kind: "horizontal",
+            beta: None,
+            towards: Some(if towards_right { "right" } else { "left" }),
+            at_joint: None,
+        },
+        LiveLoad::Point { beta } => LoadJson {
+            kind: "point",
+            beta: Some(beta),
+            towards: None,
+            at_joint: Some(at_joint(q.arch, beta)),
+        },
+    }
+}
+
+fn at_joint(arch: &Arch, beta: f64) -> bool {
+    match arch.layout() {
+        crate::arch::JointLayout::Discrete(j) => j.contains(&beta),
+        crate::arch::JointLayout::Continuous => false,
+    }
+}
+
+fn side_name(load: &LiveLoad, c: &Contact, side: Side) -> Option<&'static str> {
+    load.splits(c.beta).then_some(match side {
+        Side::Before => "before",
+        Side::After => "after",
+    })
+}
+
+fn state_json(load: &LiveLoad, s: &LoadLimitState) -> StateJson {
+    StateJson {
+        lambda: s.lambda,
+        mode: s.mode.name(),
+        pattern: s
+            .pattern
+            .iter()
+            .zip(&s.sides)
+            .map(|(c, &side)| PatternContact {
+                contact: *c,
+                side: side_name(load, c, side),
+            })
+            .collect(),
+        reactions: reactions(&s.x),
+        mechanism: mechanism_json(&s.mechanism),
+        live_power: s.live_power,
+        continuum_to: s.continuum_to,
+    }
+}
+
+/// γ t d r in kN, and g in m/s², for the question's dimensions.
+fn force_unit_kn(q: &LoadQuestion, d: &Dimensions) -> f64 {
+    d.density * d.g * q.eta * d.radius * d.depth * d.radius / 1000.0
+}
+
+fn units(q: &LoadQuestion, lambda: Option<f64>, lambda_static: Option<f64>) -> Option<UnitsJson> {
+    let d = q.dims.as_ref()?;
+    let unit = force_unit_kn(q, d);
+    let point = matches!(q.load, LiveLoad::Point { .. });
+    Some(UnitsJson {
+        force_unit_kn: unit,
+        lambda_kn: lambda.filter(|_| point).map(|l| l * unit),
+        lambda_static_kn: lambda_static.filter(|_| point).map(|l| l * unit),
+        acceleration_ms2: lambda.filter(|_| !point).map(|l| l * d.g),
+        acceleration_static_ms2: lambda_static.filter(|_| !point).map(|l| l * d.g),
+    })
+}
+
+/// The `load --json` document; the `Err` of the outcome is the reason no decision was
+/// reached (status `unresolved`).
+pub fn json(q: &LoadQuestion, outcome: &Result<LoadOutcome, String>) -> LoadDoc {
+    let mut doc = LoadDoc {
+        version: JSON_VERSION,
+        status: "ok",
+        arch: ArchJson::new(q.arch),
+        eta: q.eta,
+        mu: q.mu.is_finite().then_some(q.mu),
+        load: load_json(q),
+        lambda: None,
+        lambda_static: None,
+        lambda_min: None,
+        unique: None,
+        mechanism_at_static: None,
+        reduction: None,
+        limit_states: Vec::new(),
+        search: None,
+        units: None,
+        message: None,
+    };
+    match outcome {
+        Err(reason) => {
+            doc.status = "unresolved";
+            doc.message = Some(reason.clone());
+        }
+        Ok(LoadOutcome::NoEquilibrium) => {
+            doc.status = "no_equilibrium";
+            doc.message = Some("no statically admissible state at any lambda >= 0".into());
+        }
+        Ok(LoadOutcome::NoCollapse { lambda_min, events }) => {
+            doc.status = "no_collapse";
+            doc.lambda_min = Some(lambda_min.0);
+            doc.search = Some(SearchJson {
+                method: "sweep",
+                events: *events,
+            });
+            doc.message = Some(format!(
+                "admissible states exist at every lambda >= {} and no limit state was found up to lambda = {:e}: the load does not break the arch",
+                lambda_min.0,
+                crate::multiplier::UNBOUNDED_SEARCH_TOP
+            ));
+        }
+        Ok(LoadOutcome::Limits(s)) => {
+            doc.lambda = s.lambda();
+            doc.lambda_static = s.lambda_static.map(|m| m.0);
+            doc.lambda_min = Some(s.lambda_min.0);
+            doc.unique = Some(s.unique());
+            doc.mechanism_at_static = Some(s.mechanism_at_static);
+            doc.reduction = s.reduction();
+            doc.limit_states = s
+                .limit_states
+                .iter()
+                .map(|l| state_json(&q.load, l))
+                .collect();
+            doc.search = Some(SearchJson {
+                method: "sweep",
+                events: s.events,
+            });
+            doc.units = units(q, doc.lambda, doc.lambda_static);
+            if s.limit_states.is_empty() {
+                doc.message = Some("no limit state: the static maximum carries no mechanism with positive live power, and none lies below it".into());
+            }
+        }
+    }
+    doc
+}
+
+fn pattern_text(load: &LiveLoad, s: &LoadLimitState) -> String {
+    s.pattern
+        .iter()
+        .zip(&s.sides)
+        .map(|(c, &side)| {
+            let tag = match side_name(load, c, side) {
+                Some("before") => "<",
+                Some(_) => ">",
+                None => "",
+            };
+            format!("{}@{:.4}{tag}", short(c), c.beta)
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// The human-readable answer of `load`.
+pub fn table(q: &LoadQuestion, outcome: &Result<LoadOutcome, String>) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "{}", describe_arch(q.arch));
+    let _ = writeln!(
+        s,
+        "thickness           eta = t/r = {}; friction mu = {}",
+        sig(q.eta, 12),
+        fmt_mu(q.mu)
+    );
+    let load_text = match q.load {
+        LiveLoad::Horizontal { towards_right } => format!(
+            "horizontal body force lambda x self-weight, towards the {} springing",
+            if towards_right { "right" } else { "left" }
+        ),
+        LiveLoad::Point { beta } => format!(
+            "vertical point load lambda (units of gamma t d r) at the extrados point beta = {beta:.10} rad ({:.4} deg){}",
+            beta.to_degrees(),
+            if at_joint(q.arch, beta) {
+                ", at a joint (both sides of its section checked)"
+            } else {
+                ", inside a voussoir"
+            }
+        ),
+    };
+    let _ = writeln!(s, "load                {load_text}");
+    let unit = q.dims.as_ref().map(|d| (force_unit_kn(q, d), d.g));
+    let physical = |l: f64| match (unit, q.load) {
+        (Some((u, _)), LiveLoad::Point { .. }) => format!("  ({} kN)", sig(l * u, 6)),
+        (Some((_, g)), LiveLoad::Horizontal { .. }) => {
+            format!("  ({} m/s^2 = {} g)", sig(l * g, 6), sig(l, 6))
+        }
+        _ => String::new(),
+    };
+    match outcome {
+        Err(reason) => {
+            let _ = writeln!(s, "unresolved: {reason}");
+        }
+        Ok(LoadOutcome::NoEquilibrium) => {
+            let _ = writeln!(
+                s,
+                "no equilibrium: no statically admissible state at any lambda >= 0"
+            );
+        }
+        Ok(LoadOutcome::NoCollapse { lambda_min, .. }) => {
+            let _ = writeln!(
+                s,
+                "no collapse: admissible states at every lambda >= {} and no limit state up to lambda = {:e}",
+                sig(lambda_min.0, 12),
+                crate::multiplier::UNBOUNDED_SEARCH_TOP
+            );
+        }
+        Ok(LoadOutcome::Limits(sv)) => {
+            let stat = sv
+                .lambda_static
+                .map_or("unbounded".to_string(), |m| sig(m.0, 12));
+            let _ = writeln!(
+                s,
+                "admissible          lambda in [{}, {}]{}",
+                sig(sv.lambda_min.0, 12),
+                stat,
+                if sv.lambda_min.0 > 0.0 {
+                    "  (the arch needs the load to stand: the lower end is an unloading limit, never a collapse)"
+                } else {
+                    ""
+                }
+            );
+            if let Some(m) = sv.lambda_static {
+                let _ = writeln!(
+                    s,
+                    "static maximum      lambda_static = {}{}; {}",
+                    sig(m.0, 12),
+                    physical(m.0),
+                    if sv.mechanism_at_static {
+                        "carries a mechanism with positive live power"
+                    } else {
+                        "carries NO mechanism with positive live power"
+                    }
+                );
+            }
+            match sv.lambda() {
+                Some(l) => {
+                    let _ = writeln!(
+                        s,
+                        "collapse multiplier lambda = {}{}{}",
+                        sig(l, 12),
+                        physical(l),
+                        sv.reduction()
+                            .filter(|r| *r > 0.0)
+                            .map_or(String::new(), |r| format!(
+                                "; {} below the static maximum (reduction 1 - lambda/lambda_static = {})",
+                                if r >= 1.0 { "infinitely" } else { "non-associative friction brings it" },
+                                sig(r, 6)
+                            ))
+                    );
+                }
+                None => {
+                    let _ = writeln!(s, "collapse multiplier none: no limit state with lambda in the admissible range");
+                }
+            }
+            let _ = writeln!(
+                s,
+                "limit states ({} events of the sweep; E/I hinge at extrados/intrados, S+/S- sliding, < > before/after the loaded section):",
+                sv.events
+            );
+            for l in &sv.limit_states {
+                let _ = writeln!(
+                    s,
+                    "  lambda = {}  {}  {}{}",
+                    sig(l.lambda, 12),
+                    l.mode.name(),
+                    pattern_text(&q.load, l),
+                    l.continuum_to.map_or(String::new(), |to| format!(
+                        "  (least of a continuum of limit states up to lambda = {})",
+                        sig(to, 12)
+                    ))
+                );
+            }
+            let _ = writeln!(
+                s,
+                "verdict             {}",
+                if sv.limit_states.is_empty() {
+                    "no limit state"
+                } else if sv.unique() {
+                    "unique limit state"
+                } else {
+                    "not unique"
+                }
+            );
+        }
+    }
+    s.lines().map(|l| l.trim_end().to_string() + "\n").collect()
+}
