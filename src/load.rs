@@ -72,6 +72,50 @@ impl LiveLoad {
         }
     }
 
+    /// [`Self::actions`] with its first two β-derivatives: `[N_L, T_L, M_L][order]`
+    /// (order 0, 1, 2), for the scans of a continuous arch (each smooth piece; at the point
+    /// load's angle the side says which).
+    pub fn actions_d(&self, arch: &Arch, eta: f64, beta: Radians, side: Side) -> [[f64; 3]; 3] {
+        let (s, c) = beta.sin_cos();
+        match *self {
+            LiveLoad::Horizontal { towards_right } => {
+                let br = arch.beta_right();
+                let d = beta - br;
+                let rho = arch.weight().rho(eta);
+                let k = if towards_right { 1.0 } else { -1.0 };
+                [
+                    [
+                        -k * d * s,
+                        -k * d * c,
+                        -k * (rho * (br.cos() - c) - d * s),
+                    ],
+                    [
+                        -k * (s + d * c),
+                        -k * (c - d * s),
+                        -k * ((rho - 1.0) * s - d * c),
+                    ],
+                    [
+                        -k * (2.0 * c - d * s),
+                        k * (2.0 * s + d * c),
+                        -k * ((rho - 2.0) * c + d * s),
+                    ],
+                ]
+            }
+            LiveLoad::Point { beta: bp } => {
+                let loaded = beta > bp || (beta == bp && side == Side::After);
+                if loaded {
+                    [
+                        [-c, s, -((1.0 + 0.5 * eta) * bp.cos() - c)],
+                        [s, c, -s],
+                        [c, -s, -c],
+                    ]
+                } else {
+                    [[0.0; 3]; 3]
+                }
+            }
+        }
+    }
+
     /// Whether a section at `beta` has two sides that differ (the point load's angle).
     pub fn splits(&self, beta: Radians) -> bool {
         matches!(*self, LiveLoad::Point { beta: bp } if bp == beta)

@@ -85,96 +85,116 @@ impl State<'_> {
 
     fn continuous_peaks(&self, settings: &Settings) -> Vec<Peak> {
         let (a, b) = (self.arch.beta_right(), self.arch.beta_left());
-        let n = settings.scan_points.max(3);
         let modes = ContactKind::active_at(self.mu);
-        // φ and dφ/dβ on the grid, per mode.
-        let grid: Vec<Radians> = (0..n)
-            .map(|i| {
-                if i + 1 == n {
-                    b
-                } else {
-                    a + (b - a) * i as f64 / (n - 1) as f64
+        peaks_over(
+            (a, Location::Springing),
+            (b, Location::Springing),
+            modes,
+            settings.scan_points,
+            &|beta| {
+                let act = actions(self.arch, self.eta, beta);
+                let mut out = [[0.0; 3]; 4];
+                for (k, &mode) in modes.iter().enumerate() {
+                    out[k] = [0, 1, 2].map(|d| act.activation(mode, d, self.eta, self.mu).at(&self.x));
                 }
-            })
-            .collect();
-        let mut d1 = vec![[0.0; 4]; n];
-        let mut d0 = vec![[0.0; 4]; n];
-        for (i, &beta) in grid.iter().enumerate() {
-            let act = actions(self.arch, self.eta, beta);
-            for (k, &mode) in modes.iter().enumerate() {
-                d0[i][k] = act.activation(mode, 0, self.eta, self.mu).at(&self.x);
-                d1[i][k] = act.activation(mode, 1, self.eta, self.mu).at(&self.x);
-            }
-        }
-        let mut out = Vec::new();
-        for (k, &mode) in modes.iter().enumerate() {
-            let push = |out: &mut Vec<Peak>, beta: Radians, value: f64, at: Location| {
-                out.push(Peak {
-                    contact: Contact {
-                        beta,
-                        kind: mode,
-                        at,
-                        free: at == Location::Interior,
-                    },
-                    value,
-                })
-            };
-            if d1[0][k] <= 0.0 {
-                push(&mut out, a, d0[0][k], Location::Springing);
-            }
-            if d1[n - 1][k] >= 0.0 {
-                push(&mut out, b, d0[n - 1][k], Location::Springing);
-            }
-            for i in 0..n - 1 {
-                if d1[i][k] > 0.0 && d1[i + 1][k] <= 0.0 {
-                    let beta = self.refine_max(mode, grid[i], grid[i + 1], d1[i][k], d1[i + 1][k]);
-                    if beta > a && beta < b {
-                        let v = self.phi(mode, beta)[0];
-                        push(&mut out, beta, v, Location::Interior);
-                    }
-                }
-            }
-        }
-        out
+                out
+            },
+        )
     }
+}
 
-    /// Root of dφ/dβ in [lo, hi] where it goes from positive to non-positive:
-    /// Newton with the exact second derivative, safeguarded by bisection.
-    fn refine_max(
-        &self,
-        mode: ContactKind,
-        mut lo: Radians,
-        mut hi: Radians,
-        _flo: f64,
-        fhi: f64,
-    ) -> Radians {
-        if fhi == 0.0 {
-            return hi;
-        }
-        let mut beta = 0.5 * (lo + hi);
-        for _ in 0..100 {
-            let [_, f, df] = self.phi(mode, beta);
-            if f > 0.0 {
-                lo = beta;
+/// The local maxima of each activation function over the smooth piece [a, b] of a
+/// continuous arch; `phi(β)[k]` is the value and first two β-derivatives of `modes[k]`
+/// (all modes at once, from one evaluation of the actions): sampled on `n` equally
+/// spaced angles, a sign change of dφ/dβ in a cell brackets an interior maximum refined by
+/// safeguarded Newton on dφ/dβ = 0 with the exact d²φ/dβ²; an end of the piece is a
+/// maximum when φ decreases into the piece (its location as given: a springing, or the
+/// fixed angle of a point load, which is no free tangency).
+pub fn peaks_over(
+    (a, at_a): (Radians, Location),
+    (b, at_b): (Radians, Location),
+    modes: &[ContactKind],
+    n: usize,
+    phi: &dyn Fn(Radians) -> [[f64; 3]; 4],
+) -> Vec<Peak> {
+    let n = n.max(3);
+    let grid: Vec<Radians> = (0..n)
+        .map(|i| {
+            if i + 1 == n {
+                b
             } else {
-                hi = beta;
+                a + (b - a) * i as f64 / (n - 1) as f64
             }
-            let newton = if df < 0.0 { beta - f / df } else { f64::NAN };
-            let next = if newton > lo && newton < hi {
-                newton
-            } else {
-                0.5 * (lo + hi)
-            };
-            let step = (next - beta).abs();
-            beta = next;
-            if step <= 4.0 * f64::EPSILON * (1.0 + beta.abs())
-                || hi - lo <= 4.0 * f64::EPSILON * (1.0 + beta.abs())
-            {
-                break;
+        })
+        .collect();
+    let all: Vec<[[f64; 3]; 4]> = grid.iter().map(|&beta| phi(beta)).collect();
+    let mut out = Vec::new();
+    for (k, &mode) in modes.iter().enumerate() {
+        let vals: Vec<[f64; 3]> = all.iter().map(|v| v[k]).collect();
+        let push = |out: &mut Vec<Peak>, beta: Radians, value: f64, at: Location, free: bool| {
+            out.push(Peak {
+                contact: Contact {
+                    beta,
+                    kind: mode,
+                    at,
+                    free,
+                },
+                value,
+            })
+        };
+        if vals[0][1] <= 0.0 {
+            push(&mut out, a, vals[0][0], at_a, false);
+        }
+        if vals[n - 1][1] >= 0.0 {
+            push(&mut out, b, vals[n - 1][0], at_b, false);
+        }
+        for i in 0..n - 1 {
+            if vals[i][1] > 0.0 && vals[i + 1][1] <= 0.0 {
+                let beta = refine_max(&|x| phi(x)[k], grid[i], grid[i + 1], vals[i + 1][1]);
+                if beta > a && beta < b {
+                    let v = phi(beta)[k][0];
+                    push(&mut out, beta, v, Location::Interior, true);
+                }
             }
         }
-        beta
     }
+    out
+}
+
+/// Root of dφ/dβ in [lo, hi] where it goes from positive to non-positive: Newton with the
+/// exact second derivative, safeguarded by bisection.
+fn refine_max(
+    phi: &dyn Fn(Radians) -> [f64; 3],
+    mut lo: Radians,
+    mut hi: Radians,
+    fhi: f64,
+) -> Radians {
+    if fhi == 0.0 {
+        return hi;
+    }
+    let mut beta = 0.5 * (lo + hi);
+    for _ in 0..100 {
+        let [_, f, df] = phi(beta);
+        if f > 0.0 {
+            lo = beta;
+        } else {
+            hi = beta;
+        }
+        let newton = if df < 0.0 { beta - f / df } else { f64::NAN };
+        let next = if newton > lo && newton < hi {
+            newton
+        } else {
+            0.5 * (lo + hi)
+        };
+        let step = (next - beta).abs();
+        beta = next;
+        if step <= 4.0 * f64::EPSILON * (1.0 + beta.abs())
+            || hi - lo <= 4.0 * f64::EPSILON * (1.0 + beta.abs())
+        {
+            break;
+        }
+    }
+    beta
 }
 
 /// What a scan of a state over the whole arch says about it.

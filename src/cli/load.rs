@@ -136,12 +136,6 @@ pub(crate) fn run(a: LoadArgs, settings: &Settings, io: &mut Io) -> Exit {
         },
         _ => unreachable!("clap requires one load"),
     };
-    if matches!(arch.layout(), JointLayout::Continuous) {
-        return io.bad_input(&InputError::Inconsistent {
-            arg: "--blocks/--joints",
-            reason: "load needs a discrete arch (--blocks N or --joints ...) in this version: the continuous arch's exact multiplier is not implemented yet".into(),
-        });
-    }
     let outcome = match survey(&arch, a.eta, a.mu, &load, settings) {
         Ok(o) => o,
         Err(e) => {

@@ -226,7 +226,7 @@ pub fn json(q: &LoadQuestion, outcome: &Result<LoadOutcome, String>) -> LoadDoc 
                 .map(|l| state_json(&q.load, l))
                 .collect();
             doc.search = Some(SearchJson {
-                method: "sweep",
+                method: s.method,
                 events: s.events,
             });
             doc.units = units(q, doc.lambda, doc.lambda_static);
@@ -272,10 +272,10 @@ pub fn table(q: &LoadQuestion, outcome: &Result<LoadOutcome, String>) -> String 
         LiveLoad::Point { beta } => format!(
             "vertical point load lambda (units of gamma t d r) at the extrados point beta = {beta:.10} rad ({:.4} deg){}",
             beta.to_degrees(),
-            if at_joint(q.arch, beta) {
-                ", at a joint (both sides of its section checked)"
-            } else {
-                ", inside a voussoir"
+            match q.arch.layout() {
+                crate::arch::JointLayout::Continuous => ", on the continuum (both sides of the loaded section checked)",
+                _ if at_joint(q.arch, beta) => ", at a joint (both sides of its section checked)",
+                _ => ", inside a voussoir",
             }
         ),
     };
@@ -354,10 +354,14 @@ pub fn table(q: &LoadQuestion, outcome: &Result<LoadOutcome, String>) -> String 
                     let _ = writeln!(s, "collapse multiplier none: no limit state with lambda in the admissible range");
                 }
             }
+            let how = if sv.method == "sweep" {
+                format!("{} events of the sweep", sv.events)
+            } else {
+                "mu = inf: associative, the static maximum is the only limit state".to_string()
+            };
             let _ = writeln!(
                 s,
-                "limit states ({} events of the sweep; E/I hinge at extrados/intrados, S+/S- sliding, < > before/after the loaded section):",
-                sv.events
+                "limit states ({how}; E/I hinge at extrados/intrados, S+/S- sliding, < > before/after the loaded section):"
             );
             for l in &sv.limit_states {
                 let _ = writeln!(

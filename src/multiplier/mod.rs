@@ -9,6 +9,8 @@
 //! does not stand without the load (the load stabilises it up to λ_min); λ_static is the
 //! largest statically admissible multiplier (unbounded: the load never breaks the arch).
 
+pub mod continuum;
+
 use crate::arch::{check_eta, Arch, InputError, JointLayout, Radians};
 use crate::collapse_mode::{classify, CollapseMode};
 use crate::contact::{Contact, ContactKind, Location};
@@ -127,10 +129,19 @@ pub fn static_range(
     crate::arch::check_mu(mu)?;
     check_load(arch, load)?;
     let JointLayout::Discrete(joints) = arch.layout() else {
-        return Ok(Err(
-            "the static multiplier range is computed for discrete arches (given joints) only, so far"
-                .into(),
-        ));
+        let ext = |maximise| continuum::extreme(arch, eta, mu, load, maximise, settings);
+        let min = match ext(false) {
+            Ok(Some((l, x, _))) => (l, x),
+            Ok(None) => return Ok(Err("the least multiplier came out unbounded".into())),
+            Err(LpOutcome::Infeasible) => return Ok(Ok(StaticRange::NoEquilibrium)),
+            Err(LpOutcome::Failed(e)) => return Ok(Err(e)),
+        };
+        let max = match ext(true) {
+            Ok(m) => m.map(|(l, x, _)| (l, x)),
+            Err(LpOutcome::Infeasible) => return Ok(Ok(StaticRange::NoEquilibrium)),
+            Err(LpOutcome::Failed(e)) => return Ok(Err(e)),
+        };
+        return Ok(Ok(StaticRange::Interval { min, max }));
     };
     let rows: Vec<([f64; 4], f64)> = rows(arch, joints, eta, mu, load)
         .iter()
@@ -195,6 +206,9 @@ pub struct LoadSurvey {
     pub limit_states: Vec<LoadLimitState>,
     /// Events of the sweep.
     pub events: usize,
+    /// How the list was established: `sweep` (discrete arch: every event of P(λ)) or
+    /// `associative` (μ = ∞: the static maximum is the only limit state).
+    pub method: &'static str,
 }
 
 impl LoadSurvey {
@@ -255,7 +269,7 @@ pub fn survey(
         StaticRange::Interval { min, max } => (min, max),
     };
     let JointLayout::Discrete(joints) = arch.layout() else {
-        unreachable!("static_range answers discrete arches only")
+        return Ok(continuous_survey(arch, eta, mu, load, min, settings));
     };
     let all_rows = rows(arch, joints, eta, mu, load);
     let continua = match continua(arch, eta, mu, load, &all_rows, settings) {
@@ -315,6 +329,7 @@ pub fn survey(
         mechanism_at_static,
         limit_states,
         events: sw.events,
+        method: "sweep",
     })))
 }
 
@@ -446,4 +461,72 @@ pub fn continua(
         }
     }
     Ok(out)
+}
+
+/// A continuous arch: λ_static exact (exchange and Newton, [`continuum`]). At μ = ∞ every
+/// mechanism is made of hinges, with no dissipation, so a limit state at λ* has
+/// L_dead + λ* L_live = 0; an admissible state at any λ' > λ* would give
+/// L_dead + λ' L_live ≤ 0 (virtual work), impossible with L_live > 0: the only limit state
+/// is at λ_static (the associative case), and none exists when λ is unbounded. At finite
+/// μ the limit states below λ_static are not searched on the continuum yet: no decision.
+fn continuous_survey(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    load: &LiveLoad,
+    min: (f64, Reactions),
+    settings: &Settings,
+) -> Result<LoadOutcome, String> {
+    let max = match continuum::extreme(arch, eta, mu, load, true, settings) {
+        Ok(m) => m,
+        Err(LpOutcome::Infeasible) => return Ok(LoadOutcome::NoEquilibrium),
+        Err(LpOutcome::Failed(e)) => return Err(e),
+    };
+    if mu.is_finite() {
+        return Err(format!(
+            "continuous arch at finite friction: lambda_static = {} (exact), but the limit states below it are not searched on the continuum yet (give --blocks or --joints for the complete search)",
+            max.as_ref().map_or("unbounded".to_string(), |m| m.0.to_string())
+        ));
+    }
+    let Some((lambda, x, pattern)) = max else {
+        return Ok(LoadOutcome::NoCollapse {
+            lambda_min: min,
+            events: 0,
+        });
+    };
+    let pairs: Vec<(Contact, Side)> = pattern.iter().map(|c| (c.contact, c.side)).collect();
+    let st = State { arch, eta, mu, x };
+    let at_static = match mechanism::find_under_load(&st, lambda, load, &pairs, settings) {
+        Ok(m) => m,
+        Err(LpOutcome::Failed(e)) => return Err(format!("LP back end: {e}")),
+        Err(LpOutcome::Infeasible) => None,
+    };
+    let limit_states: Vec<LoadLimitState> = at_static
+        .map(|(mechanism, live_power)| {
+            let contacts: Vec<Contact> = pairs.iter().map(|p| p.0).collect();
+            LoadLimitState {
+                lambda,
+                x,
+                mode: classify(
+                    &contacts,
+                    0.5 * (arch.beta_right() + arch.beta_left()),
+                    settings.same_joint,
+                ),
+                sides: pairs.iter().map(|p| p.1).collect(),
+                pattern: contacts,
+                mechanism,
+                live_power,
+                continuum_to: None,
+            }
+        })
+        .into_iter()
+        .collect();
+    Ok(LoadOutcome::Limits(LoadSurvey {
+        lambda_min: min,
+        lambda_static: Some((lambda, x)),
+        mechanism_at_static: !limit_states.is_empty(),
+        limit_states,
+        events: 0,
+        method: "associative",
+    }))
 }
