@@ -91,11 +91,13 @@ impl State<'_> {
             (b, Location::Springing),
             modes,
             settings.scan_points,
-            &|beta| {
+            &|beta, orders| {
                 let act = actions(self.arch, self.eta, beta);
                 let mut out = [[0.0; 3]; 4];
                 for (k, &mode) in modes.iter().enumerate() {
-                    out[k] = [0, 1, 2].map(|d| act.activation(mode, d, self.eta, self.mu).at(&self.x));
+                    for d in 0..orders {
+                        out[k][d] = act.activation(mode, d, self.eta, self.mu).at(&self.x);
+                    }
                 }
                 out
             },
@@ -104,8 +106,9 @@ impl State<'_> {
 }
 
 /// The local maxima of each activation function over the smooth piece [a, b] of a
-/// continuous arch; `phi(β)[k]` is the value and first two β-derivatives of `modes[k]`
-/// (all modes at once, from one evaluation of the actions): sampled on `n` equally
+/// continuous arch; `phi(β, orders)[k]` holds the value and the first `orders − 1`
+/// β-derivatives of `modes[k]` (all modes at once, from one evaluation of the actions; the
+/// rest zero): sampled on `n` equally
 /// spaced angles, a sign change of dφ/dβ in a cell brackets an interior maximum refined by
 /// safeguarded Newton on dφ/dβ = 0 with the exact d²φ/dβ²; an end of the piece is a
 /// maximum when φ decreases into the piece (its location as given: a springing, or the
@@ -115,7 +118,7 @@ pub fn peaks_over(
     (b, at_b): (Radians, Location),
     modes: &[ContactKind],
     n: usize,
-    phi: &dyn Fn(Radians) -> [[f64; 3]; 4],
+    phi: &dyn Fn(Radians, usize) -> [[f64; 3]; 4],
 ) -> Vec<Peak> {
     let n = n.max(3);
     let grid: Vec<Radians> = (0..n)
@@ -127,10 +130,11 @@ pub fn peaks_over(
             }
         })
         .collect();
-    let all: Vec<[[f64; 3]; 4]> = grid.iter().map(|&beta| phi(beta)).collect();
+    // values and slopes on the grid (second derivatives only where Newton needs them)
+    let all: Vec<[[f64; 3]; 4]> = grid.iter().map(|&beta| phi(beta, 2)).collect();
     let mut out = Vec::new();
     for (k, &mode) in modes.iter().enumerate() {
-        let vals: Vec<[f64; 3]> = all.iter().map(|v| v[k]).collect();
+        let vals = |i: usize| all[i][k];
         let push = |out: &mut Vec<Peak>, beta: Radians, value: f64, at: Location, free: bool| {
             out.push(Peak {
                 contact: Contact {
@@ -142,17 +146,17 @@ pub fn peaks_over(
                 value,
             })
         };
-        if vals[0][1] <= 0.0 {
-            push(&mut out, a, vals[0][0], at_a, false);
+        if vals(0)[1] <= 0.0 {
+            push(&mut out, a, vals(0)[0], at_a, false);
         }
-        if vals[n - 1][1] >= 0.0 {
-            push(&mut out, b, vals[n - 1][0], at_b, false);
+        if vals(n - 1)[1] >= 0.0 {
+            push(&mut out, b, vals(n - 1)[0], at_b, false);
         }
         for i in 0..n - 1 {
-            if vals[i][1] > 0.0 && vals[i + 1][1] <= 0.0 {
-                let beta = refine_max(&|x| phi(x)[k], grid[i], grid[i + 1], vals[i + 1][1]);
+            if vals(i)[1] > 0.0 && vals(i + 1)[1] <= 0.0 {
+                let beta = refine_max(&|x| phi(x, 3)[k], grid[i], grid[i + 1], vals(i + 1)[1]);
                 if beta > a && beta < b {
-                    let v = phi(beta)[k][0];
+                    let v = phi(beta, 1)[k][0];
                     push(&mut out, beta, v, Location::Interior, true);
                 }
             }

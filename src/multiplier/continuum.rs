@@ -53,7 +53,12 @@ impl Loaded<'_> {
         let dead = actions(self.arch, self.eta, beta).activation(kind, order, self.eta, self.mu);
         let live = self.load.actions_d(self.arch, self.eta, beta, side)[order];
         (
-            [dead.g[0], dead.g[1], dead.g[2], live_activation(kind, self.eta, self.mu, live)],
+            [
+                dead.g[0],
+                dead.g[1],
+                dead.g[2],
+                live_activation(kind, self.eta, self.mu, live),
+            ],
             dead.c,
         )
     }
@@ -64,15 +69,31 @@ impl Loaded<'_> {
         let (a, b) = (self.arch.beta_right(), self.arch.beta_left());
         match *self.load {
             LiveLoad::Point { beta } if beta > a && beta < b => vec![
-                ((a, Location::Springing), (beta, Location::Interior), Side::Before),
-                ((beta, Location::Interior), (b, Location::Springing), Side::After),
+                (
+                    (a, Location::Springing),
+                    (beta, Location::Interior),
+                    Side::Before,
+                ),
+                (
+                    (beta, Location::Interior),
+                    (b, Location::Springing),
+                    Side::After,
+                ),
             ],
             // a load at the left springing is carried by the section there (its free body is
             // the whole arch); at the right springing by every section but the springing's
             LiveLoad::Point { beta } if beta == b => {
-                vec![((a, Location::Springing), (b, Location::Springing), Side::After)]
+                vec![(
+                    (a, Location::Springing),
+                    (b, Location::Springing),
+                    Side::After,
+                )]
             }
-            _ => vec![((a, Location::Springing), (b, Location::Springing), Side::Before)],
+            _ => vec![(
+                (a, Location::Springing),
+                (b, Location::Springing),
+                Side::Before,
+            )],
         }
     }
 
@@ -81,12 +102,12 @@ impl Loaded<'_> {
         let modes = ContactKind::active_at(self.mu);
         let mut out = Vec::new();
         for (from, to, side) in self.pieces() {
-            let phi = |beta: Radians| {
+            let phi = |beta: Radians, orders: usize| {
                 let mut v = [[0.0; 3]; 4];
                 let act = actions(self.arch, self.eta, beta);
                 let live = self.load.actions_d(self.arch, self.eta, beta, side);
                 for (k, &mode) in modes.iter().enumerate() {
-                    for d in 0..3 {
+                    for d in 0..orders {
                         v[k][d] = act.activation(mode, d, self.eta, self.mu).at(x)
                             + lambda * live_activation(mode, self.eta, self.mu, live[d]);
                     }
@@ -118,7 +139,12 @@ pub fn extreme(
     maximise: bool,
     settings: &Settings,
 ) -> Result<Option<(f64, Reactions, Vec<LoadedContact>)>, LpOutcome> {
-    let p = Loaded { arch, eta, mu, load };
+    let p = Loaded {
+        arch,
+        eta,
+        mu,
+        load,
+    };
     let (a, b) = (arch.beta_right(), arch.beta_left());
     let modes = ContactKind::active_at(mu);
     // the working set: equally spaced angles, both sides of a point load's section
@@ -158,7 +184,10 @@ pub fn extreme(
         let before = work.len();
         for (pk, side) in violated {
             let beta = pk.contact.beta;
-            if !work.iter().any(|(w, s)| (w - beta).abs() <= 1e-9 && s == side) {
+            if !work
+                .iter()
+                .any(|(w, s)| (w - beta).abs() <= 1e-9 && s == side)
+            {
                 work.push((beta, *side));
             }
         }

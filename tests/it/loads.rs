@@ -532,18 +532,46 @@ fn live_action_derivatives_match_differences() {
 #[test]
 fn continuous_lambda_static_against_fine_discretisations() {
     let settings = Settings::default();
-    let lam = |arch: &Arch, eta: f64, mu: f64, load: &LiveLoad| match static_range(arch, eta, mu, load, &settings)
-        .unwrap()
-        .unwrap()
+    let lam = |arch: &Arch, eta: f64, mu: f64, load: &LiveLoad| match static_range(
+        arch, eta, mu, load, &settings,
+    )
+    .unwrap()
+    .unwrap()
     {
         StaticRange::Interval { max: Some(m), .. } => m.0,
         other => panic!("{other:?}"),
     };
     for (weight, eta, mu, load) in [
-        (WeightModel::Centreline, 0.2, f64::INFINITY, LiveLoad::Horizontal { towards_right: true }),
-        (WeightModel::Centroid, 0.3, f64::INFINITY, LiveLoad::Horizontal { towards_right: false }),
-        (WeightModel::Centreline, 0.2, 0.6, LiveLoad::Horizontal { towards_right: true }),
-        (WeightModel::Centreline, 0.2, f64::INFINITY, LiveLoad::Point { beta: PI / 3.0 }),
+        (
+            WeightModel::Centreline,
+            0.2,
+            f64::INFINITY,
+            LiveLoad::Horizontal {
+                towards_right: true,
+            },
+        ),
+        (
+            WeightModel::Centroid,
+            0.3,
+            f64::INFINITY,
+            LiveLoad::Horizontal {
+                towards_right: false,
+            },
+        ),
+        (
+            WeightModel::Centreline,
+            0.2,
+            0.6,
+            LiveLoad::Horizontal {
+                towards_right: true,
+            },
+        ),
+        (
+            WeightModel::Centreline,
+            0.2,
+            f64::INFINITY,
+            LiveLoad::Point { beta: PI / 3.0 },
+        ),
     ] {
         let arch = Arch::symmetric(0.0, weight).unwrap();
         let exact = lam(&arch, eta, mu, &load);
@@ -554,11 +582,16 @@ fn continuous_lambda_static_against_fine_discretisations() {
             .iter()
             .map(|&n| lam(&arch.clone().with_blocks(n).unwrap(), eta, mu, &load))
             .collect();
-        println!("{weight:?} eta {eta} mu {mu} {load:?}: exact {exact:.13} N=600/1200/2400 {seq:.13?}");
+        println!(
+            "{weight:?} eta {eta} mu {mu} {load:?}: exact {exact:.13} N=600/1200/2400 {seq:.13?}"
+        );
         for w in seq.windows(2) {
             assert!(w[1] <= w[0] * (1.0 + 1e-12), "not monotone: {seq:?}");
         }
-        assert!(seq[2] >= exact * (1.0 - 1e-12), "discrete below the continuum: {seq:?} vs {exact}");
+        assert!(
+            seq[2] >= exact * (1.0 - 1e-12),
+            "discrete below the continuum: {seq:?} vs {exact}"
+        );
         assert!((seq[2] - exact) / exact < 2e-6, "{seq:?} vs {exact}");
     }
 }
