@@ -52,24 +52,7 @@ impl LiveLoad {
     /// * point load at β_P, for β > β_P (or β = β_P on the [`Side::After`] side):
     ///   N_L = −cos β, T_L = sin β, M_L = −[(1 + η/2) cos β_P − cos β]; zero before.
     pub fn actions(&self, arch: &Arch, eta: f64, beta: Radians, side: Side) -> [f64; 3] {
-        let (s, c) = beta.sin_cos();
-        match *self {
-            LiveLoad::Horizontal { towards_right } => {
-                let br = arch.beta_right();
-                let d = beta - br;
-                let rho = arch.weight().rho(eta);
-                let k = if towards_right { 1.0 } else { -1.0 };
-                [-k * d * s, -k * d * c, -k * (rho * (br.cos() - c) - d * s)]
-            }
-            LiveLoad::Point { beta: bp } => {
-                let loaded = beta > bp || (beta == bp && side == Side::After);
-                if loaded {
-                    [-c, s, -((1.0 + 0.5 * eta) * bp.cos() - c)]
-                } else {
-                    [0.0; 3]
-                }
-            }
-        }
+        self.actions_d(arch, eta, beta, side)[0]
     }
 
     /// [`Self::actions`] with its first two β-derivatives: `[N_L, T_L, M_L][order]`

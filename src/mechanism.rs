@@ -49,41 +49,52 @@ pub fn find(
 ) -> Result<Option<Mechanism>, LpOutcome> {
     let mut cs = contacts.to_vec();
     cs.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.kind.cmp(&b.kind)));
-    // joints carrying both senses of sliding
-    let both: Vec<f64> = cs
-        .iter()
-        .filter(|c| c.kind == ContactKind::SlidePlus)
-        .filter(|c| {
-            cs.iter().any(|d| {
-                d.kind == ContactKind::SlideMinus && (d.beta - c.beta).abs() <= settings.same_joint
-            })
-        })
-        .map(|c| c.beta)
-        .collect();
-    for choice in 0..(1usize << both.len()) {
-        let keep: Vec<Contact> = cs
-            .iter()
-            .copied()
-            .filter(|c| {
-                let Some(k) = both
-                    .iter()
-                    .position(|b| (b - c.beta).abs() <= settings.same_joint)
-                else {
-                    return true;
-                };
-                let plus = choice >> k & 1 == 0;
-                match c.kind {
-                    ContactKind::SlidePlus => plus,
-                    ContactKind::SlideMinus => !plus,
-                    _ => true,
-                }
-            })
-            .collect();
+    let same = |a: &Contact, b: &Contact| (a.beta - b.beta).abs() <= settings.same_joint;
+    for keep in one_sense_choices(&cs, |c| *c, same) {
         if let Some(m) = find_one_sense(state, keep, settings)? {
             return Ok(Some(m));
         }
     }
     Ok(None)
+}
+
+/// Every way of keeping one sliding sense at each joint where both are listed (a joint
+/// slides one way only, s⁺ s⁻ = 0): the sub-lists of `items`, whose contact is `contact(i)`,
+/// and `same(a, b)` says whether two contacts are at one joint.
+fn one_sense_choices<T: Copy>(
+    items: &[T],
+    contact: impl Fn(&T) -> Contact,
+    same: impl Fn(&T, &T) -> bool,
+) -> Vec<Vec<T>> {
+    let both: Vec<T> = items
+        .iter()
+        .filter(|c| contact(c).kind == ContactKind::SlidePlus)
+        .filter(|c| {
+            items
+                .iter()
+                .any(|d| contact(d).kind == ContactKind::SlideMinus && same(d, c))
+        })
+        .copied()
+        .collect();
+    (0..(1usize << both.len()))
+        .map(|choice| {
+            items
+                .iter()
+                .copied()
+                .filter(|c| {
+                    let Some(k) = both.iter().position(|b| same(b, c)) else {
+                        return true;
+                    };
+                    let plus = choice >> k & 1 == 0;
+                    match contact(c).kind {
+                        ContactKind::SlidePlus => plus,
+                        ContactKind::SlideMinus => !plus,
+                        _ => true,
+                    }
+                })
+                .collect()
+        })
+        .collect()
 }
 
 /// [`find`] on contacts with at most one sliding sense per joint (sorted by β).
@@ -192,34 +203,9 @@ pub fn find_under_load(
             .then((a.1 == Side::After).cmp(&(b.1 == Side::After)))
             .then(a.0.kind.cmp(&b.0.kind))
     });
-    // joints (angle and side) carrying both senses of sliding
-    let both: Vec<(f64, Side)> = cs
-        .iter()
-        .filter(|(c, s)| {
-            c.kind == ContactKind::SlidePlus
-                && cs
-                    .iter()
-                    .any(|(d, t)| d.kind == ContactKind::SlideMinus && d.beta == c.beta && t == s)
-        })
-        .map(|(c, s)| (c.beta, *s))
-        .collect();
     let mut best: Option<(Mechanism, f64)> = None;
-    for choice in 0..(1usize << both.len()) {
-        let keep: Vec<(Contact, Side)> = cs
-            .iter()
-            .copied()
-            .filter(|(c, s)| {
-                let Some(k) = both.iter().position(|&(b, t)| b == c.beta && t == *s) else {
-                    return true;
-                };
-                let plus = choice >> k & 1 == 0;
-                match c.kind {
-                    ContactKind::SlidePlus => plus,
-                    ContactKind::SlideMinus => !plus,
-                    _ => true,
-                }
-            })
-            .collect();
+    let same = |a: &(Contact, Side), b: &(Contact, Side)| a.0.beta == b.0.beta && a.1 == b.1;
+    for keep in one_sense_choices(&cs, |c| c.0, same) {
         let plain: Vec<Contact> = keep.iter().map(|(c, _)| *c).collect();
         let cols: Vec<[f64; 3]> = plain.iter().map(|c| column(c.kind, c.beta, eta)).collect();
         let dead = power(arch, eta, &plain);

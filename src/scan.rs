@@ -95,8 +95,8 @@ impl State<'_> {
                 let act = actions(self.arch, self.eta, beta);
                 let mut out = [[0.0; 3]; 4];
                 for (k, &mode) in modes.iter().enumerate() {
-                    for d in 0..orders {
-                        out[k][d] = act.activation(mode, d, self.eta, self.mu).at(&self.x);
+                    for (d, slot) in out[k].iter_mut().enumerate().take(orders) {
+                        *slot = act.activation(mode, d, self.eta, self.mu).at(&self.x);
                     }
                 }
                 out

@@ -9,6 +9,7 @@ mod arch_args;
 mod assess;
 mod certify;
 mod curve;
+mod dimension_args;
 mod load;
 mod modes;
 mod plot;

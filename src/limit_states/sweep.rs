@@ -634,6 +634,23 @@ impl Sweeper<'_> {
         }
     }
 
+    /// Starts from every vertex of P(t), found by a walk on its vertex graph from `centre`
+    /// (a point inside P(t)).
+    fn start_by_walk(&mut self, t: f64, centre: Reactions) {
+        for tri in self.vertices_by_walk(t, centre) {
+            let v = Vertex::new(&self.planes, tri);
+            let x = v.at(t);
+            let feasible = self
+                .planes
+                .iter()
+                .enumerate()
+                .all(|(i, p)| tri.contains(&i) || p.value(&x, t) <= 1e-9 * reaction_scale(&x));
+            if feasible {
+                self.push(v, t);
+            }
+        }
+    }
+
     /// Adds a vertex born at η unless it is already there, or it would end at once (within
     /// the resolution of η: a tie the first-order test could not break).
     fn push(&mut self, v: Vertex, eta: f64) {
@@ -854,18 +871,7 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
         } else {
             sw.in_box(eta0).map_or(x_s, |(_, x)| x)
         };
-        for t in sw.vertices_by_walk(eta0, centre) {
-            let v = Vertex::new(&sw.planes, t);
-            let x = v.at(eta0);
-            let feasible = sw
-                .planes
-                .iter()
-                .enumerate()
-                .all(|(i, p)| t.contains(&i) || p.value(&x, eta0) <= 1e-9 * reaction_scale(&x));
-            if feasible {
-                sw.push(v, eta0);
-            }
-        }
+        sw.start_by_walk(eta0, centre);
     }
     if sw.alive.is_empty() {
         return Sweep {
@@ -1014,18 +1020,7 @@ pub fn sweep_load(
             })
             .collect();
         let centre = lp::max_margin(&rows, 1.0, settings).map_or(x_min, |m| m.0);
-        for t in sw.vertices_by_walk(t0, centre) {
-            let v = Vertex::new(&sw.planes, t);
-            let x = v.at(t0);
-            let feasible = sw
-                .planes
-                .iter()
-                .enumerate()
-                .all(|(i, p)| t.contains(&i) || p.value(&x, t0) <= 1e-9 * reaction_scale(&x));
-            if feasible {
-                sw.push(v, t0);
-            }
-        }
+        sw.start_by_walk(t0, centre);
     }
     if sw.alive.is_empty() {
         return failure(format!(

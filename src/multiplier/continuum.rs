@@ -38,6 +38,10 @@ pub struct LoadedContact {
     pub side: Side,
 }
 
+/// A smooth piece of the arch: its two ends (angle, location) and the side of the loaded
+/// section its sections are on.
+type Piece = ((Radians, Location), (Radians, Location), Side);
+
 /// The problem: arch, η, μ, load.
 struct Loaded<'a> {
     arch: &'a Arch,
@@ -65,7 +69,7 @@ impl Loaded<'_> {
 
     /// The smooth pieces of the arch: one, or two at a point load strictly inside (each
     /// end with its location, and the side of the section that belongs to the piece).
-    fn pieces(&self) -> Vec<((Radians, Location), (Radians, Location), Side)> {
+    fn pieces(&self) -> Vec<Piece> {
         let (a, b) = (self.arch.beta_right(), self.arch.beta_left());
         match *self.load {
             LiveLoad::Point { beta } if beta > a && beta < b => vec![
@@ -107,8 +111,8 @@ impl Loaded<'_> {
                 let act = actions(self.arch, self.eta, beta);
                 let live = self.load.actions_d(self.arch, self.eta, beta, side);
                 for (k, &mode) in modes.iter().enumerate() {
-                    for d in 0..orders {
-                        v[k][d] = act.activation(mode, d, self.eta, self.mu).at(x)
+                    for (d, slot) in v[k].iter_mut().enumerate().take(orders) {
+                        *slot = act.activation(mode, d, self.eta, self.mu).at(x)
                             + lambda * live_activation(mode, self.eta, self.mu, live[d]);
                     }
                 }

@@ -205,6 +205,7 @@ impl Cont {
     /// Every local maximum of g_k(x, ·) over [β_R, β_L], for every family: (k, β, g).
     /// Interior maxima of the scan are refined by golden section on their two cells;
     /// a springing counts when g decreases away from it.
+    #[allow(clippy::needless_range_loop)]
     fn peaks(&self, eta: f64, x: &[f64; 3]) -> Vec<(usize, f64, f64)> {
         let mut out = Vec::new();
         let n = self.grid.len();

@@ -493,6 +493,7 @@ fn load_symmetry_infinite_friction_and_virtual_work() {
 
 /// The β-derivatives of the live actions against central differences of the values.
 #[test]
+#[allow(clippy::needless_range_loop)]
 fn live_action_derivatives_match_differences() {
     let arch = Arch::new(-0.3, PI + 0.2, WeightModel::Centroid).unwrap();
     let eta = 0.4;
