@@ -216,22 +216,108 @@ fn refine(
     maximise: bool,
     settings: &Settings,
 ) -> Result<(f64, Reactions, Vec<LoadedContact>), LpOutcome> {
-    let active = |x: &Reactions, lambda: f64, peaks: &[(Peak, Side)], slack: f64| {
-        peaks
-            .iter()
-            .filter(|(pk, _)| {
-                pk.value >= -slack * p.magnitude(pk.contact.kind, x, lambda, settings)
-            })
-            .map(|(pk, side)| LoadedContact {
-                contact: pk.contact,
-                side: *side,
-            })
-            .collect::<Vec<_>>()
-    };
     if !maximise && lambda == 0.0 {
-        return Ok((0.0, x, active(&x, 0.0, peaks, 10.0 * settings.adm_tol)));
+        return Ok((
+            0.0,
+            x,
+            active(p, &x, 0.0, peaks, 10.0 * settings.adm_tol, settings),
+        ));
     }
-    let mut pattern = active(&x, lambda, peaks, 1e-7);
+    let pattern = active(p, &x, lambda, peaks, 1e-7, settings);
+    let (lambda, x) =
+        newton_verified(p, x, lambda, &pattern, settings).map_err(LpOutcome::Failed)?;
+    let pattern = verify(p, &x, lambda, settings).map_err(LpOutcome::Failed)?;
+    Ok((lambda, x, pattern))
+}
+
+/// [`newton`] on `pattern`, verified over the arch; where the pattern has one equation too
+/// many (a contact within the activity slack that is not active at the root, or a
+/// redundant one), Newton on the pattern less each contact in turn, the first root that is
+/// admissible over the whole arch.
+fn newton_verified(
+    p: &Loaded,
+    x: Reactions,
+    lambda: f64,
+    pattern: &[LoadedContact],
+    settings: &Settings,
+) -> Result<(f64, Reactions), String> {
+    let first = match newton(p, x, lambda, pattern, settings) {
+        Ok(r) if verify(p, &r.1, r.0, settings).is_ok() => return Ok(r),
+        Ok(_) => "the root of the pattern's system is not admissible over the arch".to_string(),
+        Err(e) => e,
+    };
+    for drop in 0..pattern.len() {
+        let rest: Vec<LoadedContact> = (0..pattern.len())
+            .filter(|&i| i != drop)
+            .map(|i| pattern[i])
+            .collect();
+        if let Ok(r) = newton(p, x, lambda, &rest, settings) {
+            if verify(p, &r.1, r.0, settings).is_ok() {
+                return Ok(r);
+            }
+        }
+    }
+    Err(first)
+}
+
+/// The contacts among `peaks` with φ ≥ −slack × magnitude.
+fn active(
+    p: &Loaded,
+    x: &Reactions,
+    lambda: f64,
+    peaks: &[(Peak, Side)],
+    slack: f64,
+    settings: &Settings,
+) -> Vec<LoadedContact> {
+    peaks
+        .iter()
+        .filter(|(pk, _)| pk.value >= -slack * p.magnitude(pk.contact.kind, x, lambda, settings))
+        .map(|(pk, side)| LoadedContact {
+            contact: pk.contact,
+            side: *side,
+        })
+        .collect()
+}
+
+/// The state over the whole arch: admissible (every φ ≤ `adm_tol` × its magnitude), with
+/// its active contacts sorted by (β, side, kind); `Err` says why not.
+fn verify(
+    p: &Loaded,
+    x: &Reactions,
+    lambda: f64,
+    settings: &Settings,
+) -> Result<Vec<LoadedContact>, String> {
+    let peaks = p.peaks(x, lambda, settings);
+    let worst = peaks
+        .iter()
+        .map(|(pk, _)| pk.value / p.magnitude(pk.contact.kind, x, lambda, settings))
+        .fold(f64::NEG_INFINITY, f64::max);
+    if worst > settings.adm_tol {
+        return Err(format!(
+            "the refined state is not admissible over the arch (worst relative violation {worst:e})"
+        ));
+    }
+    let mut pattern = active(p, x, lambda, &peaks, 10.0 * settings.adm_tol, settings);
+    pattern.sort_by(|a, b| {
+        a.contact
+            .beta
+            .total_cmp(&b.contact.beta)
+            .then((a.side == Side::After).cmp(&(b.side == Side::After)))
+            .then(a.contact.kind.cmp(&b.contact.kind))
+    });
+    Ok(pattern)
+}
+
+/// Newton on the square system of `pattern` (twins merged): φ = 0 at each contact,
+/// dφ/dβ = 0 at each free (tangency) contact; unknowns (h, v, w, λ) and the free angles.
+fn newton(
+    p: &Loaded,
+    x: Reactions,
+    lambda: f64,
+    pattern: &[LoadedContact],
+    settings: &Settings,
+) -> Result<(f64, Reactions), String> {
+    let _ = settings;
     // twins (one function for two contacts: the extrados hinge rows of both sides of the
     // point load's section) are one equation
     let twin = |p1: &LoadedContact, p2: &LoadedContact| {
@@ -243,26 +329,24 @@ fn refine(
             && (0..4).all(|k| (a1[k] - a2[k]).abs() <= 1e-13 * (1.0 + a1[k].abs()))
     };
     let mut unique: Vec<LoadedContact> = Vec::new();
-    for c in &pattern {
+    for c in pattern {
         if !unique.iter().any(|u| twin(u, c)) {
             unique.push(*c);
         }
     }
-    std::mem::swap(&mut pattern, &mut unique);
+    let pattern = unique;
     let free: Vec<usize> = (0..pattern.len())
         .filter(|&i| pattern[i].contact.free)
         .collect();
     let unknowns = 4 + free.len();
     let equations = pattern.len() + free.len();
     if equations != unknowns {
-        return Err(LpOutcome::Failed(format!(
-            "the pattern at the {} multiplier has {} contacts ({} tangencies): not a vertex, no square system to refine",
-            if maximise { "largest" } else { "least" },
+        return Err(format!(
+            "the pattern has {} contacts ({} tangencies): not a vertex, no square system to refine",
             pattern.len(),
             free.len()
-        )));
+        ));
     }
-    // unknowns: z = (h, v, w, λ), then the free angles
     let mut u = DVector::from_fn(unknowns, |i, _| match i {
         0..=2 => x[i],
         3 => lambda,
@@ -317,30 +401,82 @@ fn refine(
     let (r, _) = residual(&u);
     let scale = 1.0 + u.iter().take(4).map(|v| v.abs()).sum::<f64>();
     if !converged && r.amax() > 1e-13 * scale {
-        return Err(LpOutcome::Failed(format!(
+        return Err(format!(
             "Newton on the active pattern did not converge (residual {:e})",
             r.amax()
-        )));
+        ));
     }
-    let (x, lambda) = ([u[0], u[1], u[2]], u[3]);
-    // verify over the whole arch
-    let peaks = p.peaks(&x, lambda, settings);
-    let worst = peaks
-        .iter()
-        .map(|(pk, _)| pk.value / p.magnitude(pk.contact.kind, &x, lambda, settings))
-        .fold(f64::NEG_INFINITY, f64::max);
-    if worst > settings.adm_tol {
-        return Err(LpOutcome::Failed(format!(
-            "the refined state is not admissible over the arch (worst relative violation {worst:e})"
-        )));
-    }
-    let mut pattern = active(&x, lambda, &peaks, 10.0 * settings.adm_tol);
-    pattern.sort_by(|a, b| {
-        a.contact
-            .beta
-            .total_cmp(&b.contact.beta)
-            .then((a.side == Side::After).cmp(&(b.side == Side::After)))
-            .then(a.contact.kind.cmp(&b.contact.kind))
+    Ok((u[3], [u[0], u[1], u[2]]))
+}
+
+/// A limit state of a discretisation carried over to the continuum: contacts of one kind
+/// on one side of the loaded section at adjacent joints (spacing `h`) become one tangency
+/// contact (a springing or the point load's section stays where it is), Newton with λ
+/// unknown on that pattern, the state verified over the whole arch; `None` when any step
+/// fails. Returns λ, the state and its active contacts.
+pub fn carry_over(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    load: &LiveLoad,
+    (lambda, x): (f64, Reactions),
+    pattern: &[LoadedContact],
+    h: f64,
+    settings: &Settings,
+) -> Option<(f64, Reactions, Vec<LoadedContact>)> {
+    let p = Loaded {
+        arch,
+        eta,
+        mu,
+        load,
+    };
+    let fixed = |c: &LoadedContact| {
+        c.contact.at == Location::Springing
+            || matches!(*load, LiveLoad::Point { beta } if beta == c.contact.beta)
+    };
+    let mut sorted = pattern.to_vec();
+    sorted.sort_by(|a, b| {
+        (a.contact.kind, a.side == Side::After)
+            .cmp(&(b.contact.kind, b.side == Side::After))
+            .then(a.contact.beta.total_cmp(&b.contact.beta))
     });
-    Ok((lambda, x, pattern))
+    let mut merged: Vec<LoadedContact> = Vec::new();
+    let mut group: Vec<LoadedContact> = Vec::new();
+    let flush = |group: &mut Vec<LoadedContact>, out: &mut Vec<LoadedContact>| {
+        if group.is_empty() {
+            return;
+        }
+        out.push(
+            group
+                .iter()
+                .copied()
+                .find(|c| fixed(c))
+                .unwrap_or(LoadedContact {
+                    contact: Contact {
+                        beta: group.iter().map(|c| c.contact.beta).sum::<f64>()
+                            / group.len() as f64,
+                        kind: group[0].contact.kind,
+                        at: Location::Interior,
+                        free: true,
+                    },
+                    side: group[0].side,
+                }),
+        );
+        group.clear();
+    };
+    for c in sorted {
+        let joins = group.last().is_some_and(|l| {
+            l.contact.kind == c.contact.kind
+                && l.side == c.side
+                && (c.contact.beta - l.contact.beta).abs() <= 1.5 * h
+        });
+        if !joins {
+            flush(&mut group, &mut merged);
+        }
+        group.push(c);
+    }
+    flush(&mut group, &mut merged);
+    let (lambda, x) = newton_verified(&p, x, lambda, &merged, settings).ok()?;
+    let active = verify(&p, &x, lambda, settings).ok()?;
+    Some((lambda, x, active))
 }

@@ -483,10 +483,7 @@ fn continuous_survey(
         Err(LpOutcome::Failed(e)) => return Err(e),
     };
     if mu.is_finite() {
-        return Err(format!(
-            "continuous arch at finite friction: lambda_static = {} (exact), but the limit states below it are not searched on the continuum yet (give --blocks or --joints for the complete search)",
-            max.as_ref().map_or("unbounded".to_string(), |m| m.0.to_string())
-        ));
+        return continuous_finite_friction(arch, eta, mu, load, min, max, settings);
     }
     let Some((lambda, x, pattern)) = max else {
         return Ok(LoadOutcome::NoCollapse {
@@ -494,33 +491,10 @@ fn continuous_survey(
             events: 0,
         });
     };
-    let pairs: Vec<(Contact, Side)> = pattern.iter().map(|c| (c.contact, c.side)).collect();
-    let st = State { arch, eta, mu, x };
-    let at_static = match mechanism::find_under_load(&st, lambda, load, &pairs, settings) {
-        Ok(m) => m,
-        Err(LpOutcome::Failed(e)) => return Err(format!("LP back end: {e}")),
-        Err(LpOutcome::Infeasible) => None,
-    };
-    let limit_states: Vec<LoadLimitState> = at_static
-        .map(|(mechanism, live_power)| {
-            let contacts: Vec<Contact> = pairs.iter().map(|p| p.0).collect();
-            LoadLimitState {
-                lambda,
-                x,
-                mode: classify(
-                    &contacts,
-                    0.5 * (arch.beta_right() + arch.beta_left()),
-                    settings.same_joint,
-                ),
-                sides: pairs.iter().map(|p| p.1).collect(),
-                pattern: contacts,
-                mechanism,
-                live_power,
-                continuum_to: None,
-            }
-        })
-        .into_iter()
-        .collect();
+    let limit_states: Vec<LoadLimitState> =
+        limit_state_on(arch, eta, mu, load, (lambda, x), &pattern, settings)?
+            .into_iter()
+            .collect();
     Ok(LoadOutcome::Limits(LoadSurvey {
         lambda_min: min,
         lambda_static: Some((lambda, x)),
@@ -529,4 +503,180 @@ fn continuous_survey(
         events: 0,
         method: "associative",
     }))
+}
+
+/// The limit state at (λ, x) on the active contacts `pattern`, if they carry a mechanism
+/// with positive live power.
+fn limit_state_on(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    load: &LiveLoad,
+    (lambda, x): (f64, Reactions),
+    pattern: &[continuum::LoadedContact],
+    settings: &Settings,
+) -> Result<Option<LoadLimitState>, String> {
+    let pairs: Vec<(Contact, Side)> = pattern.iter().map(|c| (c.contact, c.side)).collect();
+    let st = State { arch, eta, mu, x };
+    let found = match mechanism::find_under_load(&st, lambda, load, &pairs, settings) {
+        Ok(m) => m,
+        Err(LpOutcome::Failed(e)) => return Err(format!("LP back end: {e}")),
+        Err(LpOutcome::Infeasible) => None,
+    };
+    Ok(found.map(|(mechanism, live_power)| {
+        let contacts: Vec<Contact> = pairs.iter().map(|p| p.0).collect();
+        LoadLimitState {
+            lambda,
+            x,
+            mode: classify(
+                &contacts,
+                0.5 * (arch.beta_right() + arch.beta_left()),
+                settings.same_joint,
+            ),
+            sides: pairs.iter().map(|p| p.1).collect(),
+            pattern: contacts,
+            mechanism,
+            live_power,
+            continuum_to: None,
+        }
+    }))
+}
+
+/// A continuous arch at finite friction: the limit states below λ_static from two
+/// discretisations (J and 2J equal pieces, the point load's angle a joint of both), each
+/// discrete limit state carried over to the continuum ([`continuum::carry_over`]) and kept
+/// when it is one there too (a mechanism with positive live power); the answer stands when
+/// both discretisations give the same set, as for the thickness search. λ_static itself is
+/// the exact continuum's. A continuum of limit states in a discretisation (the loaded
+/// point sliding along its section) is not carried over yet: no decision then.
+fn continuous_finite_friction(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    load: &LiveLoad,
+    min: (f64, Reactions),
+    max: Option<(f64, Reactions, Vec<continuum::LoadedContact>)>,
+    settings: &Settings,
+) -> Result<LoadOutcome, String> {
+    let Some((lambda_s, x_s, pattern_s)) = max else {
+        return Err("continuous arch at finite friction with lambda_static unbounded: the limit states are not searched on the continuum in that case yet".into());
+    };
+    let (a, b) = (arch.beta_right(), arch.beta_left());
+    let above_min = |l: f64| min.0 == 0.0 || l > min.0 * (1.0 + settings.root_slack);
+    let mut sets: Vec<Vec<LoadLimitState>> = Vec::new();
+    let mut events = 0;
+    for pieces in [settings.sweep_pieces, 2 * settings.sweep_pieces] {
+        let mut joints: Vec<f64> = (0..=pieces)
+            .map(|i| {
+                if i == pieces {
+                    b
+                } else {
+                    a + (b - a) * i as f64 / pieces as f64
+                }
+            })
+            .collect();
+        if let LiveLoad::Point { beta } = *load {
+            if !joints.contains(&beta) {
+                joints.push(beta);
+                joints.sort_by(f64::total_cmp);
+            }
+        }
+        let discrete = arch
+            .clone()
+            .with_joints(&joints)
+            .map_err(|e| e.to_string())?;
+        let states = match survey(&discrete, eta, mu, load, settings).map_err(|e| e.to_string())? {
+            Ok(LoadOutcome::Limits(sv)) => {
+                events = sv.events;
+                sv.limit_states
+            }
+            Ok(LoadOutcome::NoCollapse { .. }) => Vec::new(),
+            Ok(LoadOutcome::NoEquilibrium) => {
+                return Err(format!(
+                    "the {pieces}-piece discretisation has no admissible state"
+                ))
+            }
+            Err(e) => return Err(format!("{pieces} pieces: {e}")),
+        };
+        let h = (b - a) / pieces as f64;
+        let mut found: Vec<LoadLimitState> = Vec::new();
+        for st in &states {
+            if st.continuum_to.is_some() {
+                return Err(format!(
+                    "the {pieces}-piece discretisation has a continuum of limit states from lambda = {} (the loaded point sliding along its section): not carried over to the continuous arch yet",
+                    st.lambda
+                ));
+            }
+            let pattern: Vec<continuum::LoadedContact> = st
+                .pattern
+                .iter()
+                .zip(&st.sides)
+                .map(|(c, s)| continuum::LoadedContact {
+                    contact: *c,
+                    side: *s,
+                })
+                .collect();
+            let Some((l, x, active)) = continuum::carry_over(
+                arch,
+                eta,
+                mu,
+                load,
+                (st.lambda, st.x),
+                &pattern,
+                h,
+                settings,
+            ) else {
+                continue;
+            };
+            if l >= lambda_s * (1.0 - settings.root_slack) || !above_min(l) {
+                continue;
+            }
+            let Some(ls) = limit_state_on(arch, eta, mu, load, (l, x), &active, settings)? else {
+                continue;
+            };
+            if !found.iter().any(|f| same_load_state(f, &ls)) {
+                found.push(ls);
+            }
+        }
+        found.sort_by(|p, q| p.lambda.total_cmp(&q.lambda));
+        sets.push(found);
+    }
+    let fine = sets.pop().expect("two discretisations");
+    let coarse = sets.pop().expect("two discretisations");
+    let same = fine.len() == coarse.len()
+        && fine
+            .iter()
+            .all(|p| coarse.iter().any(|q| same_load_state(p, q)));
+    if !same {
+        return Err(format!(
+            "the refined limit states of {} and {} pieces differ: {:?} vs {:?}",
+            settings.sweep_pieces,
+            2 * settings.sweep_pieces,
+            coarse.iter().map(|s| s.lambda).collect::<Vec<_>>(),
+            fine.iter().map(|s| s.lambda).collect::<Vec<_>>()
+        ));
+    }
+    let at_static = limit_state_on(arch, eta, mu, load, (lambda_s, x_s), &pattern_s, settings)?;
+    let mechanism_at_static = at_static.is_some();
+    let mut limit_states = fine;
+    limit_states.extend(at_static);
+    Ok(LoadOutcome::Limits(LoadSurvey {
+        lambda_min: min,
+        lambda_static: Some((lambda_s, x_s)),
+        mechanism_at_static,
+        limit_states,
+        events,
+        method: "refined",
+    }))
+}
+
+/// Two refined limit states are the same: equal λ (to 1e-9) and the same contacts.
+fn same_load_state(p: &LoadLimitState, q: &LoadLimitState) -> bool {
+    (p.lambda - q.lambda).abs() <= 1e-9 * (1.0 + p.lambda.abs())
+        && p.pattern.len() == q.pattern.len()
+        && p.pattern
+            .iter()
+            .zip(&q.pattern)
+            .zip(p.sides.iter().zip(&q.sides))
+            .all(|((a, b), (s, t))| a.kind == b.kind && (a.beta - b.beta).abs() <= 1e-6 && s == t)
 }

@@ -354,10 +354,13 @@ pub fn table(q: &LoadQuestion, outcome: &Result<LoadOutcome, String>) -> String 
                     let _ = writeln!(s, "collapse multiplier none: no limit state with lambda in the admissible range");
                 }
             }
-            let how = if sv.method == "sweep" {
-                format!("{} events of the sweep", sv.events)
-            } else {
-                "mu = inf: associative, the static maximum is the only limit state".to_string()
+            let how = match sv.method {
+                "sweep" => format!("{} events of the sweep", sv.events),
+                "refined" => format!(
+                    "two discretisations swept ({} events in the finer) and refined on the continuum",
+                    sv.events
+                ),
+                _ => "mu = inf: associative, the static maximum is the only limit state".to_string(),
             };
             let _ = writeln!(
                 s,
