@@ -414,6 +414,7 @@ fn newton(
 /// contact (a springing or the point load's section stays where it is), Newton with λ
 /// unknown on that pattern, the state verified over the whole arch; `None` when any step
 /// fails. Returns λ, the state and its active contacts.
+#[allow(clippy::too_many_arguments)]
 pub fn carry_over(
     arch: &Arch,
     eta: f64,
