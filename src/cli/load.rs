@@ -1,27 +1,23 @@
 //! `arch-enum load`: the collapse multiplier of a live load (horizontal acceleration or a
-//! point load) at a given thickness and friction, with every limit state.
+//! point load) at a given thickness and friction, with every limit state; `load-curve`:
+//! the same sampled over a range of friction coefficients.
 
 use super::arch_args::ArchArgs;
 use super::dimension_args::DimensionArgs;
 use super::{to_json, Exit, Io};
-use crate::arch::{fmt_value, InputError, JointLayout};
+use crate::arch::{fmt_value, Arch, InputError, JointLayout};
+use crate::friction::least_friction;
+use crate::limit_curve::mu_grid;
 use crate::load::LiveLoad;
-use crate::multiplier::{survey, LoadOutcome};
-use crate::render::load::{json, table, LoadQuestion};
+use crate::multiplier::{check_load, survey, LoadOutcome};
+use crate::render::load::{curve_json, curve_table, json, table, LoadQuestion};
 use crate::settings::Settings;
 use clap::{ArgGroup, Args};
 
+/// Which live load (exactly one).
 #[derive(Args, Debug)]
 #[command(group(ArgGroup::new("live").required(true).args(["horizontal", "horizontal_left", "point_load", "point_load_deg", "point_load_joint"])))]
-pub(crate) struct LoadArgs {
-    #[command(flatten)]
-    arch: ArchArgs,
-    /// Thickness ratio eta = t/r of the arch, 0 < eta < 2.
-    #[arg(long, allow_hyphen_values = true)]
-    eta: f64,
-    /// Friction coefficient mu = tan(phi) > 0; `inf` for no sliding.
-    #[arg(long, allow_hyphen_values = true)]
-    mu: f64,
+pub(crate) struct LiveLoadArgs {
     /// A horizontal body force lambda x self-weight towards +x (the right springing):
     /// a constant horizontal acceleration lambda g.
     #[arg(long)]
@@ -41,6 +37,84 @@ pub(crate) struct LoadArgs {
     /// from the right springing (0) to the left one.
     #[arg(long, value_name = "K")]
     point_load_joint: Option<usize>,
+}
+
+impl LiveLoadArgs {
+    /// The load on `arch`, checked (a point load must lie on the arch; the error names the
+    /// flag the angle came in).
+    fn build(&self, arch: &Arch) -> Result<LiveLoad, InputError> {
+        let joints: Vec<f64> = match arch.layout() {
+            JointLayout::Discrete(j) => j.clone(),
+            JointLayout::Continuous => Vec::new(),
+        };
+        // an angle given within 1e-9 rad of a joint means the joint (decimal degrees rarely
+        // land on it exactly)
+        let snap = |b: f64| {
+            joints
+                .iter()
+                .copied()
+                .find(|j| (j - b).abs() <= 1e-9)
+                .unwrap_or(b)
+        };
+        let load = if self.horizontal {
+            LiveLoad::Horizontal {
+                towards_right: true,
+            }
+        } else if self.horizontal_left {
+            LiveLoad::Horizontal {
+                towards_right: false,
+            }
+        } else if let Some(b) = self.point_load {
+            LiveLoad::Point { beta: snap(b) }
+        } else if let Some(d) = self.point_load_deg {
+            let load = LiveLoad::Point {
+                beta: snap(d.to_radians()),
+            };
+            return check_load(arch, &load)
+                .map(|_| load)
+                .map_err(|_| InputError::OutOfRange {
+                    arg: "--point-load-deg",
+                    value: fmt_value(d),
+                    range: format!(
+                        "between the springings, {} to {} degrees",
+                        arch.beta_right().to_degrees(),
+                        arch.beta_left().to_degrees()
+                    ),
+                });
+        } else if let Some(k) = self.point_load_joint {
+            match joints.get(k) {
+                Some(&beta) => LiveLoad::Point { beta },
+                None => {
+                    return Err(InputError::OutOfRange {
+                        arg: "--point-load-joint",
+                        value: k.to_string(),
+                        range: if joints.is_empty() {
+                            "a joint index of a discrete arch (give --blocks or --joints)".into()
+                        } else {
+                            format!("0 <= K <= {}", joints.len() - 1)
+                        },
+                    })
+                }
+            }
+        } else {
+            unreachable!("clap requires one load")
+        };
+        check_load(arch, &load).map(|_| load)
+    }
+}
+
+#[derive(Args, Debug)]
+pub(crate) struct LoadArgs {
+    #[command(flatten)]
+    arch: ArchArgs,
+    /// Thickness ratio eta = t/r of the arch, 0 < eta < 2.
+    #[arg(long, allow_hyphen_values = true)]
+    eta: f64,
+    /// Friction coefficient mu = tan(phi) > 0; `inf` for no sliding.
+    #[arg(long, allow_hyphen_values = true)]
+    mu: f64,
+    #[command(flatten)]
+    live: LiveLoadArgs,
     #[command(flatten)]
     dims: DimensionArgs,
     /// Print one JSON document instead of text.
@@ -53,80 +127,16 @@ pub(crate) fn run(a: LoadArgs, settings: &Settings, io: &mut Io) -> Exit {
         Ok(d) => d,
         Err(e) => return io.bad_input(&e),
     };
-    let arch = match a.arch.build() {
-        Ok(arch) => arch,
+    let (arch, load) = match a.arch.build().and_then(|arch| {
+        let load = a.live.build(&arch)?;
+        Ok((arch, load))
+    }) {
+        Ok(v) => v,
         Err(e) => return io.bad_input(&e),
-    };
-    let joints: Vec<f64> = match arch.layout() {
-        JointLayout::Discrete(j) => j.clone(),
-        JointLayout::Continuous => Vec::new(),
-    };
-    // an angle given within 1e-9 rad of a joint means the joint (decimal degrees rarely
-    // land on it exactly)
-    let snap = |b: f64| {
-        joints
-            .iter()
-            .copied()
-            .find(|j| (j - b).abs() <= 1e-9)
-            .unwrap_or(b)
-    };
-    let load = match (
-        a.horizontal,
-        a.horizontal_left,
-        a.point_load,
-        a.point_load_deg,
-        a.point_load_joint,
-    ) {
-        (true, ..) => LiveLoad::Horizontal {
-            towards_right: true,
-        },
-        (_, true, ..) => LiveLoad::Horizontal {
-            towards_right: false,
-        },
-        (_, _, Some(b), _, _) => LiveLoad::Point { beta: snap(b) },
-        (_, _, _, Some(d), _) => LiveLoad::Point {
-            beta: snap(d.to_radians()),
-        },
-        (_, _, _, _, Some(k)) => match joints.get(k) {
-            Some(&beta) => LiveLoad::Point { beta },
-            None => {
-                return io.bad_input(&InputError::OutOfRange {
-                    arg: "--point-load-joint",
-                    value: k.to_string(),
-                    range: if joints.is_empty() {
-                        "a joint index of a discrete arch (give --blocks or --joints)".into()
-                    } else {
-                        format!("0 <= K <= {}", joints.len() - 1)
-                    },
-                })
-            }
-        },
-        _ => unreachable!("clap requires one load"),
     };
     let outcome = match survey(&arch, a.eta, a.mu, &load, settings) {
         Ok(o) => o,
-        Err(e) => {
-            // name the degree flag when the angle came in degrees
-            if let (
-                InputError::OutOfRange {
-                    arg: "--point-load",
-                    ..
-                },
-                Some(d),
-            ) = (&e, a.point_load_deg)
-            {
-                return io.bad_input(&InputError::OutOfRange {
-                    arg: "--point-load-deg",
-                    value: fmt_value(d),
-                    range: format!(
-                        "between the springings, {} to {} degrees",
-                        arch.beta_right().to_degrees(),
-                        arch.beta_left().to_degrees()
-                    ),
-                });
-            }
-            return io.bad_input(&e);
-        }
+        Err(e) => return io.bad_input(&e),
     };
     let q = LoadQuestion {
         arch: &arch,
@@ -144,4 +154,73 @@ pub(crate) fn run(a: LoadArgs, settings: &Settings, io: &mut Io) -> Exit {
         Ok(LoadOutcome::Limits(_)) => Exit::Answered,
         _ => Exit::NoAnswer,
     }
+}
+
+#[derive(Args, Debug)]
+pub(crate) struct LoadCurveArgs {
+    #[command(flatten)]
+    arch: ArchArgs,
+    /// Thickness ratio eta = t/r of the arch, 0 < eta < 2.
+    #[arg(long, allow_hyphen_values = true)]
+    eta: f64,
+    #[command(flatten)]
+    live: LiveLoadArgs,
+    /// Smallest mu (default: mu_ms (1 + 1e-6), the least friction at which the arch can
+    /// stand at all).
+    #[arg(long, allow_hyphen_values = true)]
+    mu_min: Option<f64>,
+    /// Largest finite mu (default: 10 * mu_min); a last row at mu = inf follows.
+    #[arg(long, allow_hyphen_values = true)]
+    mu_max: Option<f64>,
+    /// Number of finite samples (1 to 100000).
+    #[arg(long, default_value_t = 12, allow_hyphen_values = true)]
+    points: usize,
+    /// Print one JSON document instead of a table.
+    #[arg(long)]
+    pub(crate) json: bool,
+}
+
+pub(crate) fn run_curve(a: LoadCurveArgs, settings: &Settings, io: &mut Io) -> Exit {
+    let (arch, load) = match a.arch.build().and_then(|arch| {
+        let load = a.live.build(&arch)?;
+        Ok((arch, load))
+    }) {
+        Ok(v) => v,
+        Err(e) => return io.bad_input(&e),
+    };
+    if let Err(e) = crate::arch::check_eta(a.eta) {
+        return io.bad_input(&e);
+    }
+    let mu_ms = least_friction(&arch, settings).ok().flatten();
+    let lo = a
+        .mu_min
+        .unwrap_or_else(|| mu_ms.map_or(0.01, |m| (m * (1.0 + 1e-6)).max(1e-6)));
+    let hi = a.mu_max.unwrap_or(10.0 * lo);
+    let mut grid = match mu_grid(lo, hi, a.points) {
+        Ok(g) => g,
+        Err(e) => return io.bad_input(&e),
+    };
+    grid.push(f64::INFINITY);
+    let bar = super::progress::Progress::new("load-curve");
+    let mut samples = Vec::with_capacity(grid.len());
+    for (i, &mu) in grid.iter().enumerate() {
+        match survey(&arch, a.eta, mu, &load, settings) {
+            Ok(o) => samples.push((mu, o)),
+            Err(e) => return io.bad_input(&e),
+        }
+        bar.update(i + 1, grid.len());
+    }
+    let q = LoadQuestion {
+        arch: &arch,
+        eta: a.eta,
+        mu: f64::INFINITY,
+        load,
+        dims: None,
+    };
+    if a.json {
+        io.out(&to_json(&curve_json(&q, &samples)));
+    } else {
+        io.out(&curve_table(&q, &samples));
+    }
+    Exit::Answered
 }

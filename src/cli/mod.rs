@@ -138,6 +138,11 @@ enum Command {
         after_help = "Example:\n  arch-enum load --alpha 0 --blocks 27 --weight centroid --eta 0.153361 --mu inf --point-load-deg 53.3333333333\n  arch-enum load --alpha 0 --blocks 20 --eta 0.3 --mu 0.8 --horizontal --json"
     )]
     Load(load::LoadArgs),
+    /// The load multiplier against friction at a fixed thickness: lambda_static and the collapse multiplier lambda (the least limit state) sampled over mu, and at mu = inf.
+    #[command(
+        after_help = "Example:\n  arch-enum load-curve --alpha 0 --blocks 20 --eta 0.3 --horizontal\n  arch-enum load-curve --alpha 0 --eta 0.2 --point-load-deg 60 --mu-min 0.4 --mu-max 2 --json"
+    )]
+    LoadCurve(load::LoadCurveArgs),
     /// eta*(mu) sampled at geometrically spaced mu, one row per mu, with the mode.
     #[command(
         after_help = "Example:\n  arch-enum curve --alpha 0 --points 10\n  arch-enum curve --alpha 1 --mu-min 1 --mu-max 100 --json"
@@ -228,6 +233,7 @@ where
         Command::Curve(a) => a.json,
         Command::Assess(a) => a.json,
         Command::Load(a) => a.json,
+        Command::LoadCurve(a) => a.json,
         Command::Plot { .. } => false,
     };
     let mut io = Io { out, err, json };
@@ -240,6 +246,7 @@ where
         Command::Curve(a) => curve::run(a, &settings, &mut io),
         Command::Assess(a) => assess::run(a, &settings, &mut io),
         Command::Load(a) => load::run(a, &settings, &mut io),
+        Command::LoadCurve(a) => load::run_curve(a, &settings, &mut io),
     };
     exit.code()
 }

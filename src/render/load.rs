@@ -394,3 +394,126 @@ pub fn table(q: &LoadQuestion, outcome: &Result<LoadOutcome, String>) -> String 
     }
     s.lines().map(|l| l.trim_end().to_string() + "\n").collect()
 }
+
+/// One sample of the λ–μ curve at fixed η.
+#[derive(Debug, Serialize)]
+pub struct LoadCurveRow {
+    mu: Option<f64>,
+    status: &'static str,
+    lambda: Option<f64>,
+    lambda_static: Option<f64>,
+    reduction: Option<f64>,
+    unique: Option<bool>,
+    mode: Option<&'static str>,
+    limit_states: usize,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    message: Option<String>,
+}
+
+/// The `load-curve --json` document.
+#[derive(Debug, Serialize)]
+pub struct LoadCurveDoc {
+    version: u32,
+    status: &'static str,
+    arch: ArchJson,
+    eta: f64,
+    load: LoadJson,
+    points: Vec<LoadCurveRow>,
+}
+
+fn curve_row(mu: f64, outcome: &Result<LoadOutcome, String>) -> LoadCurveRow {
+    let mut row = LoadCurveRow {
+        mu: mu.is_finite().then_some(mu),
+        status: "ok",
+        lambda: None,
+        lambda_static: None,
+        reduction: None,
+        unique: None,
+        mode: None,
+        limit_states: 0,
+        message: None,
+    };
+    match outcome {
+        Err(e) => {
+            row.status = "unresolved";
+            row.message = Some(e.clone());
+        }
+        Ok(LoadOutcome::NoEquilibrium) => row.status = "no_equilibrium",
+        Ok(LoadOutcome::NoCollapse { .. }) => row.status = "no_collapse",
+        Ok(LoadOutcome::Limits(s)) => {
+            row.lambda = s.lambda();
+            row.lambda_static = s.lambda_static.map(|m| m.0);
+            row.reduction = s.reduction();
+            row.unique = Some(s.unique());
+            row.mode = s.limit_states.first().map(|l| l.mode.name());
+            row.limit_states = s.limit_states.len();
+        }
+    }
+    row
+}
+
+/// The `load-curve --json` document from the samples (μ, outcome).
+pub fn curve_json(
+    q: &LoadQuestion,
+    samples: &[(f64, Result<LoadOutcome, String>)],
+) -> LoadCurveDoc {
+    LoadCurveDoc {
+        version: JSON_VERSION,
+        status: "ok",
+        arch: ArchJson::new(q.arch),
+        eta: q.eta,
+        load: load_json(q),
+        points: samples.iter().map(|(mu, o)| curve_row(*mu, o)).collect(),
+    }
+}
+
+/// The human-readable λ–μ table.
+pub fn curve_table(q: &LoadQuestion, samples: &[(f64, Result<LoadOutcome, String>)]) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "{}", describe_arch(q.arch));
+    let _ = writeln!(s, "thickness           eta = t/r = {}", sig(q.eta, 12));
+    let _ = writeln!(
+        s,
+        "load                {}",
+        match q.load {
+            LiveLoad::Horizontal { towards_right } => format!(
+                "horizontal body force lambda x self-weight, towards the {} springing",
+                if towards_right { "right" } else { "left" }
+            ),
+            LiveLoad::Point { beta } => format!(
+                "vertical point load at the extrados point beta = {beta:.10} rad ({:.4} deg)",
+                beta.to_degrees()
+            ),
+        }
+    );
+    let _ = writeln!(
+        s,
+        "{:>16}  {:>16}  {:>16}  {:>11}  {:>6}  mode of the least limit state",
+        "mu", "lambda_static", "lambda", "reduction", "states"
+    );
+    for (mu, o) in samples {
+        let r = curve_row(*mu, o);
+        let num = |v: Option<f64>| v.map_or("-".to_string(), |v| sig(v, 12));
+        if r.status == "ok" {
+            let _ = writeln!(
+                s,
+                "{:>16}  {:>16}  {:>16}  {:>11}  {:>6}  {}",
+                fmt_mu(*mu),
+                num(r.lambda_static),
+                num(r.lambda),
+                r.reduction.map_or("-".to_string(), |v| sig(v, 4)),
+                r.limit_states,
+                r.mode.unwrap_or("-")
+            );
+        } else {
+            let _ = writeln!(
+                s,
+                "{:>16}  {}{}",
+                fmt_mu(*mu),
+                r.status,
+                r.message.map_or(String::new(), |m| format!(": {m}"))
+            );
+        }
+    }
+    s.lines().map(|l| l.trim_end().to_string() + "\n").collect()
+}

@@ -645,3 +645,43 @@ fn continuous_arches_at_finite_friction() {
     println!("{total} continuous arches: {decided} decided, {reduced} with lambda below lambda_static; undecided: {undecided:#?}");
     assert!(decided * 4 >= total * 3, "{undecided:#?}");
 }
+
+/// `load-curve --json`: one row per μ and a last row at μ = ∞ (no reduction there), the
+/// collapse multiplier never above λ_static.
+#[test]
+fn load_curve_json() {
+    let (v, code) = crate::cli::json_of(&[
+        "load-curve",
+        "--beta-right",
+        "0.2442",
+        "--beta-left",
+        "3.1489",
+        "--joints",
+        "0.2442,0.8409,1.2686,2.0653,2.3805,2.7970,3.1489",
+        "--eta",
+        "0.6364",
+        "--horizontal-left",
+        "--mu-min",
+        "0.6",
+        "--mu-max",
+        "2",
+        "--points",
+        "10",
+    ]);
+    assert_eq!(code, 0);
+    let pts = v["points"].as_array().unwrap();
+    assert_eq!(pts.len(), 11);
+    assert_eq!(pts[10]["mu"], serde_json::Value::Null);
+    assert_eq!(pts[10]["reduction"].as_f64(), Some(0.0));
+    let mut reduced = 0;
+    for p in pts {
+        assert_eq!(p["status"], "ok");
+        let (l, s) = (
+            p["lambda"].as_f64().unwrap(),
+            p["lambda_static"].as_f64().unwrap(),
+        );
+        assert!(l <= s * (1.0 + 1e-12));
+        reduced += usize::from(l < s * (1.0 - 1e-9));
+    }
+    assert!(reduced >= 1, "{v}");
+}
