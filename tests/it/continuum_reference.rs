@@ -135,7 +135,7 @@ impl Cont {
         )
     }
 
-    fn families(&self) -> usize {
+    pub(crate) fn families(&self) -> usize {
         if self.mu.is_finite() {
             4
         } else {
@@ -155,7 +155,7 @@ impl Cont {
     }
 
     /// The row of family k at β (given sin β, cos β): φ_k = a·x + c (formulation §3).
-    fn row_raw(&self, k: usize, eta: f64, beta: f64, s: f64, c: f64) -> ([f64; 3], f64) {
+    pub(crate) fn row_raw(&self, k: usize, eta: f64, beta: f64, s: f64, c: f64) -> ([f64; 3], f64) {
         let (sr, cr) = (self.br.sin(), self.br.cos());
         let d = beta - self.br;
         // N = gn·x + cn, T = gt·x + ct, M = gm·x + cm
@@ -208,80 +208,29 @@ impl Cont {
     #[allow(clippy::needless_range_loop)]
     fn peaks(&self, eta: f64, x: &[f64; 3]) -> Vec<(usize, f64, f64)> {
         let mut out = Vec::new();
-        let n = self.grid.len();
-        let mut vals = vec![0.0; n];
+        let mut vals = vec![0.0; self.grid.len()];
         for k in 0..self.families() {
-            for i in 0..n {
+            for (i, v) in vals.iter_mut().enumerate() {
                 let (a, c) = self.row_sc(k, eta, self.grid[i], self.gsin[i], self.gcos[i]);
-                vals[i] = a[0] * x[0] + a[1] * x[1] + a[2] * x[2] + c;
+                *v = a[0] * x[0] + a[1] * x[1] + a[2] * x[2] + c;
             }
-            // the springings: a maximum in the end cell next to a springing is no
-            // interior local maximum of the scan (the scan sees g fall from the springing)
-            for (e, inner) in [(0, 1), (n - 1, n - 2)] {
-                if vals[e] >= vals[inner] {
-                    out.push((k, self.grid[e], vals[e]));
-                    let (lo, hi) = if e == 0 {
-                        (self.grid[0], self.grid[2])
-                    } else {
-                        (self.grid[n - 3], self.grid[n - 1])
-                    };
-                    let (b, v) = self.golden(k, eta, x, lo, hi);
-                    if v > vals[e] && (b - self.grid[e]).abs() > 1e-9 {
-                        out.push((k, b, v));
-                    }
-                }
-            }
-            for i in 1..n - 1 {
-                if vals[i] >= vals[i - 1] && vals[i] > vals[i + 1] {
-                    let (b, v) = self.golden(k, eta, x, self.grid[i - 1], self.grid[i + 1]);
-                    // never worse than the grid point itself
-                    if v >= vals[i] {
-                        out.push((k, b, v));
-                    } else {
-                        out.push((k, self.grid[i], vals[i]));
-                    }
-                }
-            }
+            let f = |t: f64| self.g(k, eta, x, t);
+            out.extend(
+                scan_peaks(&self.grid, &vals, f)
+                    .into_iter()
+                    .map(|(b, v)| (k, b, v)),
+            );
         }
         out
     }
 
-    /// Golden-section maximisation of g_k(x, ·) on [a, b] (unimodal there).
-    fn golden(&self, k: usize, eta: f64, x: &[f64; 3], mut a: f64, mut b: f64) -> (f64, f64) {
-        let r = 0.5 * (5f64.sqrt() - 1.0);
-        let f = |t: f64| self.g(k, eta, x, t);
-        let mut c = b - r * (b - a);
-        let mut d = a + r * (b - a);
-        let (mut fc, mut fd) = (f(c), f(d));
-        while b - a > 1e-11 * (1.0 + a.abs()) {
-            if fc >= fd {
-                b = d;
-                d = c;
-                fd = fc;
-                c = b - r * (b - a);
-                fc = f(c);
-            } else {
-                a = c;
-                c = d;
-                fc = fd;
-                d = a + r * (b - a);
-                fd = f(d);
-            }
-        }
-        if fc >= fd {
-            (c, fc)
-        } else {
-            (d, fd)
-        }
-    }
-
-    /// The margin LP over the working set `set` at η: (x, s, whether the box binds).
-    /// HiGHS solves it to its tolerances (1e-10 at best: a new row violated by 1e-11
-    /// counts as satisfied, and the exchange would stall), then [`dual_simplex`] finishes
-    /// it in f64 from HiGHS's basis. The box |x_i| ≤ BOX, s ≤ BOX is part of the rows.
+    /// The margin LP over the working set `set` at η: (x, s, whether the box binds), by
+    /// [`max_last`] (HiGHS, then [`dual_simplex`] in f64 from HiGHS's basis; HiGHS alone
+    /// is accurate to 1e-10 at best: a new row violated by 1e-11 counts as satisfied, and
+    /// the exchange would stall). The box |x_i| ≤ BOX, s ≤ BOX is part of the rows.
     fn lp(&self, eta: f64, set: &[f64]) -> Result<([f64; 3], f64, bool), String> {
         let nf = self.families();
-        let mut rows: Vec<([f64; 4], f64)> = set
+        let rows: Vec<([f64; 4], f64)> = set
             .iter()
             .flat_map(|&b| {
                 let (sb, cb) = (b.sin(), b.cos());
@@ -291,60 +240,9 @@ impl Cont {
                 })
             })
             .collect();
-        let boxed = rows.len();
-        for i in 0..4 {
-            for sign in [1.0, -1.0] {
-                if i == 3 && sign < 0.0 {
-                    continue;
-                }
-                let mut a = [0.0; 4];
-                a[i] = sign;
-                rows.push((a, BOX));
-            }
-        }
-        let mut vars = ProblemVariables::new();
-        let z: Vec<_> = (0..4).map(|_| vars.add(variable())).collect();
-        let mut p = vars
-            .maximise(z[3])
-            .using(highs)
-            .set_option("output_flag", false)
-            .set_option("presolve", "off")
-            .set_option("solver", "simplex")
-            .set_option("primal_feasibility_tolerance", 1e-10)
-            .set_option("dual_feasibility_tolerance", 1e-10);
-        for (a, b) in &rows {
-            let mut e = Expression::from(0.0);
-            for i in 0..4 {
-                if a[i] != 0.0 {
-                    e.add_mul(a[i], z[i]);
-                }
-            }
-            p = p.with(e.leq(*b));
-        }
-        // the box's vertex: a dual feasible basis (y = 1 on s ≤ BOX) to start from
-        // when HiGHS fails or its basis is not dual feasible
-        let box_basis = [boxed, boxed + 2, boxed + 4, boxed + 6];
-        let (zz, basis) = match p.solve() {
-            Ok(sol) => {
-                let z0 = [
-                    sol.value(z[0]),
-                    sol.value(z[1]),
-                    sol.value(z[2]),
-                    sol.value(z[3]),
-                ];
-                let duals = sol.into_inner().dual_rows().to_vec();
-                start_basis(&rows, &z0, &duals)
-                    .and_then(|b| dual_simplex(&rows, b))
-                    .or_else(|_| dual_simplex(&rows, box_basis))
-            }
-            Err(_) => dual_simplex(&rows, box_basis),
-        }
-        .map_err(|e| format!("margin LP at eta = {eta}: {e}"))?;
-        Ok((
-            [zz[0], zz[1], zz[2]],
-            zz[3],
-            basis.iter().any(|&k| k >= boxed),
-        ))
+        let (zz, boxed) =
+            max_last(rows, [BOX; 4]).map_err(|e| format!("margin LP at eta = {eta}: {e}"))?;
+        Ok(([zz[0], zz[1], zz[2]], zz[3], boxed))
     }
 
     /// The continuum margin at η by exchange, growing the working set `set` (sorted).
@@ -507,6 +405,132 @@ impl Cont {
     }
 }
 
+/// Every local maximum over [grid₀, grid_last] of a smooth function `f` sampled on `grid`
+/// (`vals[i] = f(grid[i])`): (β, f). Interior maxima of the scan are refined by golden
+/// section on their two cells; an end point counts when f decreases away from it (and a
+/// maximum a fraction of a cell inside it, found by golden section on the end cells,
+/// counts too: it is no interior local maximum of the scan).
+pub(crate) fn scan_peaks(grid: &[f64], vals: &[f64], f: impl Fn(f64) -> f64) -> Vec<(f64, f64)> {
+    let mut out = Vec::new();
+    let n = grid.len();
+    assert!(n >= 3 && vals.len() == n);
+    for (e, inner) in [(0, 1), (n - 1, n - 2)] {
+        if vals[e] >= vals[inner] {
+            out.push((grid[e], vals[e]));
+            let (lo, hi) = if e == 0 {
+                (grid[0], grid[2])
+            } else {
+                (grid[n - 3], grid[n - 1])
+            };
+            let (b, v) = golden(&f, lo, hi);
+            if v > vals[e] && (b - grid[e]).abs() > 1e-9 {
+                out.push((b, v));
+            }
+        }
+    }
+    for i in 1..n - 1 {
+        if vals[i] >= vals[i - 1] && vals[i] > vals[i + 1] {
+            let (b, v) = golden(&f, grid[i - 1], grid[i + 1]);
+            // never worse than the grid point itself
+            if v >= vals[i] {
+                out.push((b, v));
+            } else {
+                out.push((grid[i], vals[i]));
+            }
+        }
+    }
+    out
+}
+
+/// Golden-section maximisation of `f` on [a, b] (unimodal there): (argmax, max).
+pub(crate) fn golden(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> (f64, f64) {
+    let r = 0.5 * (5f64.sqrt() - 1.0);
+    let mut c = b - r * (b - a);
+    let mut d = a + r * (b - a);
+    let (mut fc, mut fd) = (f(c), f(d));
+    while b - a > 1e-11 * (1.0 + a.abs()) {
+        if fc >= fd {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - r * (b - a);
+            fc = f(c);
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + r * (b - a);
+            fd = f(d);
+        }
+    }
+    if fc >= fd {
+        (c, fc)
+    } else {
+        (d, fd)
+    }
+}
+
+/// max z₄ subject to A z ≤ b (`rows` (A_k, b_k)) and the box |z_i| ≤ `bx[i]` (i < 3),
+/// z₄ ≤ `bx[3]` (appended as rows). HiGHS (simplex, presolve off, tolerances 1e-10) gives
+/// a near-optimal basis; [`dual_simplex`] restarts from it (or from the box's vertex when
+/// HiGHS fails or its basis is not dual feasible) and pivots until no row is violated by
+/// more than 1e-15 of the state's size. Returns the vertex and whether a box row is in its
+/// basis.
+pub(crate) fn max_last(
+    mut rows: Vec<([f64; 4], f64)>,
+    bx: [f64; 4],
+) -> Result<([f64; 4], bool), String> {
+    let boxed = rows.len();
+    for (i, &bound) in bx.iter().enumerate() {
+        for sign in [1.0, -1.0] {
+            if i == 3 && sign < 0.0 {
+                continue;
+            }
+            let mut a = [0.0; 4];
+            a[i] = sign;
+            rows.push((a, bound));
+        }
+    }
+    let mut vars = ProblemVariables::new();
+    let z: Vec<_> = (0..4).map(|_| vars.add(variable())).collect();
+    let mut p = vars
+        .maximise(z[3])
+        .using(highs)
+        .set_option("output_flag", false)
+        .set_option("presolve", "off")
+        .set_option("solver", "simplex")
+        .set_option("primal_feasibility_tolerance", 1e-10)
+        .set_option("dual_feasibility_tolerance", 1e-10);
+    for (a, b) in &rows {
+        let mut e = Expression::from(0.0);
+        for i in 0..4 {
+            if a[i] != 0.0 {
+                e.add_mul(a[i], z[i]);
+            }
+        }
+        p = p.with(e.leq(*b));
+    }
+    // the box's vertex: a dual feasible basis (y = 1 on z₄ ≤ bx[3]) to start from
+    // when HiGHS fails or its basis is not dual feasible
+    let box_basis = [boxed, boxed + 2, boxed + 4, boxed + 6];
+    let (zz, basis) = match p.solve() {
+        Ok(sol) => {
+            let z0 = [
+                sol.value(z[0]),
+                sol.value(z[1]),
+                sol.value(z[2]),
+                sol.value(z[3]),
+            ];
+            let duals = sol.into_inner().dual_rows().to_vec();
+            start_basis(&rows, &z0, &duals)
+                .and_then(|b| dual_simplex(&rows, b))
+                .or_else(|_| dual_simplex(&rows, box_basis))
+        }
+        Err(_) => dual_simplex(&rows, box_basis),
+    }?;
+    Ok((zz, basis.iter().any(|&k| k >= boxed)))
+}
+
 /// A first basis for [`dual_simplex`] from HiGHS's answer `z0`: the rows with a nonzero
 /// HiGHS dual, completed by the tightest rows that keep it nonsingular.
 fn start_basis(
@@ -593,7 +617,7 @@ fn dual_simplex(
                     .unwrap()
                     .then(u[j].partial_cmp(&u[i]).unwrap())
             })
-            .ok_or("primal infeasible (cannot happen: s is free below)")?;
+            .ok_or("primal infeasible (no z satisfies the rows)")?;
         basis[leave] = r;
     }
     Err("dual simplex did not finish in 2000 pivots".into())
