@@ -23,7 +23,9 @@ pub enum LiveLoad {
         towards_right: bool,
     },
     /// A vertical (downward) point load λ at the extrados point of angle `beta`
-    /// (radians), (1 + η/2)(cos β, sin β).
+    /// (radians), (1 + η/2)(cos β, sin β). On a discrete arch a load at a joint must carry
+    /// that joint's angle exactly (sections at the load's angle are compared with `==`; the
+    /// command line snaps angles within 1e-9 rad of a joint); else it sits inside a voussoir.
     Point {
         /// Angle of the loaded extrados point.
         beta: Radians,
@@ -153,8 +155,8 @@ impl LiveLoad {
 }
 
 /// The live part of the activation function of `kind` per unit λ, from the live actions
-/// (N_L, T_L, M_L): E: M_L − η N_L/2; I: −M_L − η N_L/2; S±: ±T_L − μ N_L (zero for
-/// sliding rows at μ = ∞ are never asked for: they do not exist).
+/// (N_L, T_L, M_L) or any of their β-derivatives: E: M_L − η N_L/2; I: −M_L − η N_L/2;
+/// S±: ±T_L − μ N_L (the sliding rows exist for finite μ only).
 pub fn live_activation(kind: ContactKind, eta: f64, mu: f64, a: [f64; 3]) -> f64 {
     let [n, t, m] = a;
     match kind {
