@@ -161,13 +161,35 @@ pub fn multiplier_extreme(
     maximise: bool,
     tol: f64,
 ) -> Result<Option<[f64; 4]>, LpOutcome> {
+    // as for the margin LP: free reactions first, boxed ones only as a retry after a
+    // failure (near an unbounded multiplier HiGHS can end in "Unknown")
+    match multiplier_lp(rows, equal, maximise, tol, None) {
+        Err(LpOutcome::Failed(_)) => {
+            // an optimum on the box is no optimum of the problem: λ grows with the
+            // reactions without bound
+            match multiplier_lp(rows, equal, maximise, tol, Some(REACTION_BOX))? {
+                Some(z) if z[..3].iter().any(|v| v.abs() >= 0.999 * REACTION_BOX) => Ok(None),
+                other => Ok(other),
+            }
+        }
+        other => other,
+    }
+}
+
+fn multiplier_lp(
+    rows: &[([f64; 4], f64)],
+    equal: &[([f64; 4], f64)],
+    maximise: bool,
+    tol: f64,
+    reaction_box: Option<f64>,
+) -> Result<Option<[f64; 4]>, LpOutcome> {
     let mut vars = ProblemVariables::new();
     let z: Vec<_> = (0..4)
         .map(|k| {
-            vars.add(if k == 3 {
-                variable().min(0.0)
-            } else {
-                variable()
+            vars.add(match (k, reaction_box) {
+                (3, _) => variable().min(0.0),
+                (_, Some(b)) => variable().min(-b).max(b),
+                (_, None) => variable(),
             })
         })
         .collect();

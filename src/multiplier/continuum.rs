@@ -224,8 +224,18 @@ fn refine(
         ));
     }
     let pattern = active(p, &x, lambda, peaks, 1e-7, settings);
-    let (lambda, x) =
-        newton_verified(p, x, lambda, &pattern, settings).map_err(LpOutcome::Failed)?;
+    let (lambda, x) = newton_verified(
+        p,
+        x,
+        lambda,
+        &pattern,
+        Goal {
+            maximise: Some(maximise),
+            reach: 1e-2,
+        },
+        settings,
+    )
+    .map_err(LpOutcome::Failed)?;
     let pattern = verify(p, &x, lambda, settings).map_err(LpOutcome::Failed)?;
     Ok((lambda, x, pattern))
 }
@@ -239,9 +249,10 @@ fn newton_verified(
     x: Reactions,
     lambda: f64,
     pattern: &[LoadedContact],
+    goal: Goal,
     settings: &Settings,
 ) -> Result<(f64, Reactions), String> {
-    let first = match newton(p, x, lambda, pattern, settings) {
+    let first = match newton(p, x, lambda, pattern, goal) {
         Ok(r) if verify(p, &r.1, r.0, settings).is_ok() => return Ok(r),
         Ok(_) => "the root of the pattern's system is not admissible over the arch".to_string(),
         Err(e) => e,
@@ -251,7 +262,7 @@ fn newton_verified(
             .filter(|&i| i != drop)
             .map(|i| pattern[i])
             .collect();
-        if let Ok(r) = newton(p, x, lambda, &rest, settings) {
+        if let Ok(r) = newton(p, x, lambda, &rest, goal) {
             if verify(p, &r.1, r.0, settings).is_ok() {
                 return Ok(r);
             }
@@ -308,16 +319,30 @@ fn verify(
     Ok(pattern)
 }
 
-/// Newton on the square system of `pattern` (twins merged): φ = 0 at each contact,
-/// dφ/dβ = 0 at each free (tangency) contact; unknowns (h, v, w, λ) and the free angles.
+/// How a pattern is solved: the least or largest multiplier (an underdetermined pattern is
+/// completed by the KKT conditions of that optimum), or a limit state of a discretisation
+/// carried over (no objective); and how far from its start the root may lie (relative).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Goal {
+    /// `Some(true)`: the largest λ; `Some(false)`: the least; `None`: no objective.
+    pub(crate) maximise: Option<bool>,
+    /// The root must lie within this relative distance of the start.
+    pub(crate) reach: f64,
+}
+
+/// Newton on the system of `pattern` (twins merged): φ = 0 at each contact, dφ/dβ = 0 at
+/// each free (tangency) contact; unknowns (h, v, w, λ) and the free angles. Where that is
+/// one or more equations short and an objective is given, the KKT conditions of the optimum
+/// complete it: Σ y_i ∇_z φ_i = ±e_λ with multipliers y_i ≥ 0 (unknowns), the tangencies
+/// being their β-stationarity. A root farther than `goal.reach` from the start, or with
+/// λ < 0 or a negative multiplier, is rejected.
 fn newton(
     p: &Loaded,
     x: Reactions,
     lambda: f64,
     pattern: &[LoadedContact],
-    settings: &Settings,
+    goal: Goal,
 ) -> Result<(f64, Reactions), String> {
-    let _ = settings;
     // twins (one function for two contacts: the extrados hinge rows of both sides of the
     // point load's section) are one equation
     let twin = |p1: &LoadedContact, p2: &LoadedContact| {
@@ -335,52 +360,105 @@ fn newton(
         }
     }
     let pattern = unique;
-    let free: Vec<usize> = (0..pattern.len())
-        .filter(|&i| pattern[i].contact.free)
-        .collect();
-    let unknowns = 4 + free.len();
-    let equations = pattern.len() + free.len();
-    if equations != unknowns {
-        return Err(format!(
-            "the pattern has {} contacts ({} tangencies): not a vertex, no square system to refine",
-            pattern.len(),
-            free.len()
-        ));
-    }
+    let n = pattern.len();
+    let free: Vec<usize> = (0..n).filter(|&i| pattern[i].contact.free).collect();
+    let k = free.len();
+    let kkt = match (n + k).cmp(&(4 + k)) {
+        std::cmp::Ordering::Equal => None,
+        std::cmp::Ordering::Less => match goal.maximise {
+            Some(max) => Some(if max { 1.0 } else { -1.0 }),
+            None => {
+                return Err(format!(
+                    "the pattern has {n} contacts ({k} tangencies): too few for a vertex"
+                ))
+            }
+        },
+        std::cmp::Ordering::Greater => {
+            return Err(format!(
+                "the pattern has {n} contacts ({k} tangencies): not a vertex, no square system to refine"
+            ))
+        }
+    };
+    let unknowns = 4 + k + if kkt.is_some() { n } else { 0 };
+    let equations = n + k + if kkt.is_some() { 4 } else { 0 };
+    let beta_of = |u: &DVector<f64>, i: usize| {
+        free.iter()
+            .position(|&f| f == i)
+            .map_or(pattern[i].contact.beta, |s| u[4 + s])
+    };
     let mut u = DVector::from_fn(unknowns, |i, _| match i {
         0..=2 => x[i],
         3 => lambda,
-        _ => pattern[free[i - 4]].contact.beta,
+        _ if i < 4 + k => pattern[free[i - 4]].contact.beta,
+        _ => 0.0,
     });
+    if let Some(sign) = kkt {
+        // the multipliers of the start: least squares of Σ y_i a_i = ±e_λ
+        let a = DMatrix::from_fn(4, n, |r, c| {
+            p.row(
+                pattern[c].contact.kind,
+                pattern[c].contact.beta,
+                pattern[c].side,
+                0,
+            )
+            .0[r]
+        });
+        let e = DVector::from_fn(4, |r, _| if r == 3 { sign } else { 0.0 });
+        let y = a
+            .svd(true, true)
+            .solve(&e, 1e-12)
+            .map_err(|e| format!("no KKT multipliers at the start: {e}"))?;
+        for i in 0..n {
+            u[4 + k + i] = y[i];
+        }
+    }
     let residual = |u: &DVector<f64>| -> (DVector<f64>, DMatrix<f64>) {
         let z = [u[0], u[1], u[2], u[3]];
         let mut r = DVector::zeros(equations);
         let mut j = DMatrix::zeros(equations, unknowns);
+        let dot = |a: &[f64; 4], c: f64| a.iter().zip(&z).map(|(p, q)| p * q).sum::<f64>() + c;
         let mut row = 0;
         for (i, c) in pattern.iter().enumerate() {
             let slot = free.iter().position(|&f| f == i);
-            let beta = slot.map_or(c.contact.beta, |s| u[4 + s]);
+            let beta = beta_of(u, i);
             let (a0, c0) = p.row(c.contact.kind, beta, c.side, 0);
             let (a1, c1) = p.row(c.contact.kind, beta, c.side, 1);
-            let dot = |a: &[f64; 4], c: f64| a.iter().zip(&z).map(|(p, q)| p * q).sum::<f64>() + c;
             r[row] = dot(&a0, c0);
-            for k in 0..4 {
-                j[(row, k)] = a0[k];
+            for q in 0..4 {
+                j[(row, q)] = a0[q];
             }
             if let Some(s) = slot {
                 j[(row, 4 + s)] = dot(&a1, c1);
                 row += 1;
                 let (a2, c2) = p.row(c.contact.kind, beta, c.side, 2);
                 r[row] = dot(&a1, c1);
-                for k in 0..4 {
-                    j[(row, k)] = a1[k];
+                for q in 0..4 {
+                    j[(row, q)] = a1[q];
                 }
                 j[(row, 4 + s)] = dot(&a2, c2);
             }
             row += 1;
         }
+        if let Some(sign) = kkt {
+            // Σ y_i a_i(β_i) − sign e_λ = 0
+            for q in 0..4 {
+                let mut sum = if q == 3 { -sign } else { 0.0 };
+                for (i, c) in pattern.iter().enumerate() {
+                    let beta = beta_of(u, i);
+                    let y = u[4 + k + i];
+                    let a0 = p.row(c.contact.kind, beta, c.side, 0).0;
+                    sum += y * a0[q];
+                    j[(row + q, 4 + k + i)] = a0[q];
+                    if let Some(s) = free.iter().position(|&f| f == i) {
+                        j[(row + q, 4 + s)] += y * p.row(c.contact.kind, beta, c.side, 1).0[q];
+                    }
+                }
+                r[row + q] = sum;
+            }
+        }
         (r, j)
     };
+    let scale0 = 1.0 + x.iter().map(|v| v.abs()).sum::<f64>() + lambda.abs();
     let mut converged = false;
     for _ in 0..50 {
         let (r, j) = residual(&u);
@@ -393,7 +471,7 @@ fn newton(
             break;
         };
         u += &step;
-        if step.amax() <= 1e-16 * scale {
+        if step.iter().take(4 + k).fold(0.0f64, |m, v| m.max(v.abs())) <= 1e-16 * scale {
             converged = true;
             break;
         }
@@ -405,6 +483,18 @@ fn newton(
             "Newton on the active pattern did not converge (residual {:e})",
             r.amax()
         ));
+    }
+    let moved = (0..4).fold(0.0f64, |m, q| {
+        m.max((u[q] - if q < 3 { x[q] } else { lambda }).abs())
+    });
+    if moved > goal.reach * scale0 || u[3] < 0.0 {
+        return Err(format!(
+            "Newton left the start's neighbourhood (moved {moved:e}, lambda {})",
+            u[3]
+        ));
+    }
+    if kkt.is_some() && (0..n).any(|i| u[4 + k + i] < -1e-9) {
+        return Err("a KKT multiplier of the pattern is negative: not the optimum".into());
     }
     Ok((u[3], [u[0], u[1], u[2]]))
 }
@@ -477,7 +567,11 @@ pub fn carry_over(
         group.push(c);
     }
     flush(&mut group, &mut merged);
-    let (lambda, x) = newton_verified(&p, x, lambda, &merged, settings).ok()?;
+    let goal = Goal {
+        maximise: None,
+        reach: 0.1,
+    };
+    let (lambda, x) = newton_verified(&p, x, lambda, &merged, goal, settings).ok()?;
     let active = verify(&p, &x, lambda, settings).ok()?;
     Some((lambda, x, active))
 }
