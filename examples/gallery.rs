@@ -71,6 +71,23 @@ fn main() {
         &plot_ecc::svg(&figures::scene(&arches[1], 0.35, None, &s).expect("state"))
             .expect("eccentricity"),
     );
+    // Stockdale et al. (2018): 27 voussoirs, point load at the 8th joint, mu = inf
+    let (ri, t) = (1.806, 0.1661 * 1.806);
+    let stockdale = Arch::symmetric(0.0, WeightModel::Centroid)
+        .and_then(|a| a.with_blocks(27))
+        .expect("arch");
+    let load = arch_enum::load::LiveLoad::Point {
+        beta: 8.0 * std::f64::consts::PI / 27.0,
+    };
+    save(
+        dir,
+        "load_stockdale",
+        &plot_arch::svg_panels(
+            &figures::load_scenes(&stockdale, t / (ri + t / 2.0), f64::INFINITY, &load, &s)
+                .expect("load scenes"),
+        )
+        .expect("load figure"),
+    );
     let grid = MapGrid {
         n_eta: 36,
         n_mu: 48,

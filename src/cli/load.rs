@@ -42,7 +42,7 @@ pub(crate) struct LiveLoadArgs {
 impl LiveLoadArgs {
     /// The load on `arch`, checked (a point load must lie on the arch; the error names the
     /// flag the angle came in).
-    fn build(&self, arch: &Arch) -> Result<LiveLoad, InputError> {
+    pub(crate) fn build(&self, arch: &Arch) -> Result<LiveLoad, InputError> {
         let joints: Vec<f64> = match arch.layout() {
             JointLayout::Discrete(j) => j.clone(),
             JointLayout::Continuous => Vec::new(),

@@ -10,7 +10,7 @@ mod assess;
 mod certify;
 mod curve;
 mod dimension_args;
-mod load;
+pub(crate) mod load;
 mod modes;
 mod plot;
 mod progress;

@@ -116,6 +116,24 @@ pub(crate) enum Figure {
         #[command(flatten)]
         output: Output,
     },
+    /// Every limit state of a live load at (eta, mu), the collapse first: the arch with the load, its lines of thrust and friction under the load, and the mechanism.
+    #[command(
+        after_help = "Example:\n  arch-enum plot load --alpha 0 --blocks 27 --weight centroid --eta 0.1534 --mu inf --point-load-joint 8 --out load.png\n  arch-enum plot load --alpha 0 --eta 0.2 --mu 0.6 --horizontal"
+    )]
+    Load {
+        #[command(flatten)]
+        arch: ArchArgs,
+        /// Thickness ratio eta = t/r, 0 < eta < 2.
+        #[arg(long, allow_negative_numbers = true)]
+        eta: f64,
+        /// Friction coefficient mu > 0; `inf` for no sliding.
+        #[arg(long, allow_negative_numbers = true)]
+        mu: f64,
+        #[command(flatten)]
+        live: super::load::LiveLoadArgs,
+        #[command(flatten)]
+        output: Output,
+    },
     /// The eccentricities e_M = M/N and e_T = (T/N)/mu eta/2 against beta.
     Eccentricity {
         #[command(flatten)]
@@ -154,6 +172,7 @@ pub(crate) fn run(figure: Figure, settings: &Settings, io: &mut Io) -> Exit {
         Figure::Curve { output, .. } => ("curve", output),
         Figure::Arch { output, .. } => ("arch", output),
         Figure::Eccentricity { output, .. } => ("eccentricity", output),
+        Figure::Load { output, .. } => ("load", output),
         Figure::Map { output, .. } => ("map", output),
     };
     let (path, format, width) = match output.target(name) {
@@ -187,6 +206,22 @@ pub(crate) fn run(figure: Figure, settings: &Settings, io: &mut Io) -> Exit {
                 figures::limit_scenes(&a, st.mu, settings).map(|s| plot_arch::svg_panels(&s))
             }
             Ok(a) => figures::scene(&a, st.mu, st.eta, settings).map(|s| plot_arch::svg(&s)),
+            Err(e) => return io.bad_input(&e),
+        },
+        Figure::Load {
+            arch,
+            eta,
+            mu,
+            live,
+            ..
+        } => match arch.build().and_then(|a| {
+            check_eta(eta)?;
+            check_mu(mu)?;
+            let load = live.build(&a)?;
+            Ok((a, load))
+        }) {
+            Ok((a, load)) => figures::load_scenes(&a, eta, mu, &load, settings)
+                .map(|s| plot_arch::svg_panels(&s)),
             Err(e) => return io.bad_input(&e),
         },
         Figure::Eccentricity { state: st, .. } => match plot_inputs(&st) {

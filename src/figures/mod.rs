@@ -15,11 +15,12 @@ use crate::kinematics::block_motions;
 use crate::limit::{solve, Outcome};
 use crate::limit_curve::{trace, LimitCurve};
 use crate::limit_states::{search, survey};
+use crate::load::LiveLoad;
 use crate::mechanism::Mechanism;
 use crate::settings::Settings;
 use crate::state::State;
 use crate::statics::Reactions;
-use thrust_line::{eccentricities, Eccentricity};
+use thrust_line::{eccentricities_under, Eccentricity};
 
 /// Why a figure could not be drawn (a result, not bad input).
 #[derive(Debug, Clone, PartialEq)]
@@ -217,6 +218,8 @@ pub struct ArchScene {
     pub blocks: Vec<Block>,
     /// The lines of thrust and friction, sampled along the arch.
     pub lines: Vec<Eccentricity>,
+    /// A live load and its multiplier at this state (load figures), drawn as arrows.
+    pub load: Option<(LiveLoad, f64)>,
 }
 
 /// The state drawn by the arch and eccentricity figures: the limit state at η*(μ) when
@@ -253,6 +256,7 @@ pub fn scene(
         (eta, x),
         pattern,
         limit.map(|l| (l.mode, l.mechanism)),
+        None,
     ))
 }
 
@@ -264,6 +268,7 @@ fn build_scene(
     (eta, x): (f64, Reactions),
     pattern: Vec<Contact>,
     limit: Option<(CollapseMode, Mechanism)>,
+    load: Option<(LiveLoad, f64)>,
 ) -> ArchScene {
     let blocks = limit.as_ref().map_or_else(Vec::new, |(_, m)| {
         block_motions(eta, &m.contacts, &m.rates)
@@ -280,8 +285,78 @@ fn build_scene(
         mode: limit.as_ref().map(|l| l.0),
         mechanism: limit.map(|l| l.1),
         blocks,
-        lines: eccentricities(&State { arch, eta, mu, x }, LINE_SAMPLES),
+        lines: eccentricities_under(
+            &State { arch, eta, mu, x },
+            load.as_ref().map(|(l, lambda)| (l, *lambda)),
+            LINE_SAMPLES,
+        ),
+        load,
     }
+}
+
+/// Every limit state of a live load at (η, μ) (the least, the collapse, first), each as a
+/// scene with its load, lines of thrust and friction under the load, and mechanism.
+pub fn load_scenes(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    load: &LiveLoad,
+    settings: &Settings,
+) -> Result<Vec<(String, ArchScene)>, NoFigure> {
+    let outcome = crate::multiplier::survey(arch, eta, mu, load, settings)
+        .map_err(|e| NoFigure(e.to_string()))?
+        .map_err(|e| NoFigure(format!("no decision: {e}")))?;
+    let sv = match outcome {
+        crate::multiplier::LoadOutcome::Limits(sv) => sv,
+        crate::multiplier::LoadOutcome::NoEquilibrium => {
+            return Err(NoFigure("no admissible state at any lambda >= 0".into()))
+        }
+        crate::multiplier::LoadOutcome::NoCollapse { .. } => {
+            return Err(NoFigure(
+                "the load never breaks the arch (no collapse)".into(),
+            ))
+        }
+    };
+    let stat = sv.lambda_static.map(|m| m.0);
+    let n = sv.limit_states.len();
+    if n == 0 {
+        return Err(NoFigure(
+            "no limit state: the static maximum carries no mechanism with positive live power"
+                .into(),
+        ));
+    }
+    Ok(sv
+        .limit_states
+        .iter()
+        .enumerate()
+        .map(|(k, st)| {
+            let label = format!(
+                "{} {} of {n}: lambda = {:.9}{}{}",
+                if k == 0 {
+                    "collapse: limit state"
+                } else {
+                    "limit state"
+                },
+                k + 1,
+                st.lambda,
+                stat.map_or(String::new(), |s| format!(" (lambda_static = {s:.9})")),
+                st.continuum_to.map_or(String::new(), |to| format!(
+                    ", least of a continuum up to {to:.6}"
+                ))
+            );
+            (
+                label,
+                build_scene(
+                    arch,
+                    mu,
+                    (eta, st.x),
+                    st.pattern.clone(),
+                    Some((st.mode, st.mechanism.clone())),
+                    Some((*load, st.lambda)),
+                ),
+            )
+        })
+        .collect())
 }
 
 /// Every limit state at μ with η in [η_s, 2) (the one at η_s when it carries a
@@ -307,6 +382,7 @@ pub fn limit_scenes(
                 (ls.eta, ls.x),
                 ls.pattern.clone(),
                 Some((ls.mode, ls.mechanism.clone())),
+                None,
             ),
         ));
     }
@@ -324,6 +400,7 @@ pub fn limit_scenes(
                 (st.eta, st.x),
                 st.pattern.clone(),
                 Some((st.mode, st.mechanism.clone())),
+                None,
             ),
         ));
     }

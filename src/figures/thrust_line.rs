@@ -4,6 +4,7 @@
 //! sampled along the arch for a state x. Plain numerics for the pictures.
 
 use crate::arch::{Arch, JointLayout, Radians};
+use crate::load::{LiveLoad, Side};
 use crate::state::State;
 use crate::statics::{internal_forces, Reactions};
 
@@ -23,6 +24,16 @@ pub struct Eccentricity {
 /// e_M and e_T at `samples + 1` equally spaced angles, plus the listed joints of a discrete
 /// arch when there are at most `samples + 1` of them.
 pub fn eccentricities(state: &State, samples: usize) -> Vec<Eccentricity> {
+    eccentricities_under(state, None, samples)
+}
+
+/// [`eccentricities`] with a live load at multiplier λ added to N, T and M (the section
+/// at the point load's own angle taken after it).
+pub fn eccentricities_under(
+    state: &State,
+    live: Option<(&LiveLoad, f64)>,
+    samples: usize,
+) -> Vec<Eccentricity> {
     let (arch, eta, mu, x) = (state.arch, state.eta, state.mu, &state.x);
     let (a, b) = (arch.beta_right(), arch.beta_left());
     let mut betas: Vec<Radians> = (0..=samples)
@@ -31,20 +42,33 @@ pub fn eccentricities(state: &State, samples: usize) -> Vec<Eccentricity> {
     if let JointLayout::Discrete(j) = arch.layout() {
         if j.len() > samples + 1 {
             // more joints than samples: the dense sampling is already finer than a picture
-            return sample(arch, eta, mu, x, betas);
+            return sample(arch, eta, mu, x, live, betas);
         }
         betas.extend_from_slice(j);
         betas.sort_by(f64::total_cmp);
         betas.dedup();
     }
-    sample(arch, eta, mu, x, betas)
+    sample(arch, eta, mu, x, live, betas)
 }
 
-fn sample(arch: &Arch, eta: f64, mu: f64, x: &Reactions, betas: Vec<Radians>) -> Vec<Eccentricity> {
+fn sample(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    x: &Reactions,
+    live: Option<(&LiveLoad, f64)>,
+    betas: Vec<Radians>,
+) -> Vec<Eccentricity> {
     betas
         .into_iter()
         .map(|beta| {
-            let (n, t, m) = internal_forces(arch, eta, x, beta);
+            let (mut n, mut t, mut m) = internal_forces(arch, eta, x, beta);
+            if let Some((load, lambda)) = live {
+                let [nl, tl, ml] = load.actions(arch, eta, beta, Side::After);
+                n += lambda * nl;
+                t += lambda * tl;
+                m += lambda * ml;
+            }
             let e_t = if mu.is_finite() {
                 t / n / mu * eta / 2.0
             } else {

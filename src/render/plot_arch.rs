@@ -7,6 +7,7 @@ use crate::arch::JointLayout;
 use crate::contact::{Contact, ContactKind};
 use crate::figures::thrust_line::Eccentricity;
 use crate::figures::ArchScene;
+use crate::load::LiveLoad;
 use crate::render::plot::{mode_color, short_num, FAMILY};
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
@@ -318,6 +319,77 @@ fn arch_panel(
     for c in &scene.pattern {
         contact(&mut ch, scene, view, c, color)?;
     }
+    if let Some((load, lambda)) = &scene.load {
+        load_arrows(&mut ch, scene, view, load, *lambda)?;
+    }
+    Ok(())
+}
+
+/// The colour of live-load arrows.
+const LOAD_COLOR: RGBColor = RGBColor(30, 90, 200);
+
+/// An arrow from `tail` to `tip` with a head of `head` units.
+fn arrow(ch: &mut Chart, tail: (f64, f64), tip: (f64, f64), head: f64) -> Result<(), String> {
+    let (dx, dy) = (tip.0 - tail.0, tip.1 - tail.1);
+    let len = (dx * dx + dy * dy).sqrt().max(f64::MIN_POSITIVE);
+    let (ux, uy) = (dx / len, dy / len);
+    let wing = |side: f64| {
+        (
+            tip.0 - head * (ux + 0.5 * side * uy),
+            tip.1 - head * (uy - 0.5 * side * ux),
+        )
+    };
+    ch.draw_series([
+        PathElement::new(vec![tail, tip], LOAD_COLOR.stroke_width(3)),
+        PathElement::new(vec![wing(1.0), tip, wing(-1.0)], LOAD_COLOR.stroke_width(3)),
+    ])
+    .map_err(err)?;
+    Ok(())
+}
+
+/// The live load drawn on the arch: arrows along the centreline for the horizontal body
+/// force, one arrow onto the extrados point for a point load, with the multiplier.
+fn load_arrows(
+    ch: &mut Chart,
+    scene: &ArchScene,
+    view: &View,
+    load: &LiveLoad,
+    lambda: f64,
+) -> Result<(), String> {
+    let size = (view.x.1 - view.x.0).max(view.y.1 - view.y.0);
+    let (len, head) = (0.07 * size, 0.018 * size);
+    let (br, bl) = (scene.arch.beta_right(), scene.arch.beta_left());
+    let top = 1.0 + scene.eta / 2.0;
+    let (label, at) = match *load {
+        LiveLoad::Horizontal { towards_right } => {
+            let k = if towards_right { 1.0 } else { -1.0 };
+            for i in 1..8 {
+                let b = br + (bl - br) * i as f64 / 8.0;
+                let (s, c) = b.sin_cos();
+                arrow(ch, (c - 0.5 * k * len, s), (c + 0.5 * k * len, s), head)?;
+            }
+            let mid = 0.5 * (br + bl);
+            (
+                format!("horizontal λ·weight, λ = {}", short_num(lambda)),
+                (top * mid.cos() - 0.2 * size, top * mid.sin() + 0.06 * size),
+            )
+        }
+        LiveLoad::Point { beta } => {
+            let tip = (top * beta.cos(), top * beta.sin());
+            let tail = (tip.0, tip.1 + 2.5 * len);
+            arrow(ch, tail, tip, head)?;
+            (
+                format!("λ = {}", short_num(lambda)),
+                (tail.0 + 0.02 * size, tail.1),
+            )
+        }
+    };
+    ch.draw_series(std::iter::once(Text::new(
+        label,
+        at,
+        (FAMILY, 18).into_font().color(&LOAD_COLOR),
+    )))
+    .map_err(err)?;
     Ok(())
 }
 

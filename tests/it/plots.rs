@@ -438,3 +438,72 @@ fn every_limit_state_gets_a_panel() {
     assert_eq!(scenes.len(), 1);
     assert!(scenes[0].0.contains("above eta_s"));
 }
+
+/// `plot load`: one panel per limit state (the collapse first), the load drawn with its
+/// multiplier; a load that never breaks the arch draws nothing (exit 1, said why).
+#[test]
+fn load_figure_has_a_panel_per_limit_state_and_the_load() {
+    let dir = std::env::temp_dir().join(format!("arch-enum-plot-load-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let svg = dir.join("load.svg");
+    let out = Command::cargo_bin("arch-enum")
+        .unwrap()
+        .args([
+            "plot",
+            "load",
+            "--beta-right",
+            "0.2442",
+            "--beta-left",
+            "3.1489",
+            "--joints",
+            "0.2442,0.8409,1.2686,2.0653,2.3805,2.7970,3.1489",
+            "--eta",
+            "0.6364",
+            "--mu",
+            "1.0246",
+            "--horizontal-left",
+            "--out",
+        ])
+        .arg(&svg)
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(
+        text.contains("collapse: limit state 1 of 3: lambda = 0.880055708"),
+        "labels"
+    );
+    assert_eq!(text.matches("limit state 3 of 3").count(), 1);
+    assert_eq!(
+        text.matches("horizontal λ·weight, λ = ").count(),
+        3,
+        "one load label per panel"
+    );
+    let none = Command::cargo_bin("arch-enum")
+        .unwrap()
+        .args([
+            "plot",
+            "load",
+            "--alpha",
+            "0",
+            "--blocks",
+            "8",
+            "--eta",
+            "0.05",
+            "--mu",
+            "inf",
+            "--horizontal",
+            "--out",
+        ])
+        .arg(dir.join("none.svg"))
+        .output()
+        .unwrap();
+    assert_eq!(none.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&none.stderr).contains("no figure"));
+    std::fs::remove_dir_all(&dir).ok();
+}
