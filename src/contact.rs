@@ -13,6 +13,18 @@ pub enum Location {
     Interior,
 }
 
+impl Location {
+    /// The location of joint `j` of `count` listed joints (the first and last are the
+    /// springings).
+    pub fn of_joint(j: usize, count: usize) -> Location {
+        if j == 0 || j + 1 == count {
+            Location::Springing
+        } else {
+            Location::Interior
+        }
+    }
+}
+
 /// One active activation function at one joint.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Contact {

@@ -9,8 +9,9 @@
 //! through the centre; +x points towards the right springing.
 
 use crate::arch::{Arch, Radians};
-use crate::contact::{Contact, ContactKind};
+use crate::contact::{Contact, ContactKind, Location};
 use crate::kinematics::column;
+use crate::statics::{actions, Reactions};
 
 /// A live load with a multiplier λ ≥ 0.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -165,4 +166,62 @@ pub fn live_activation(kind: ContactKind, eta: f64, mu: f64, a: [f64; 3]) -> f64
         ContactKind::SlidePlus => t - mu * n,
         ContactKind::SlideMinus => -t - mu * n,
     }
+}
+
+/// One activation function of a loaded discrete arch: `a · (h, v, w, λ) + c ≤ 0`.
+#[derive(Debug, Clone, Copy)]
+pub struct LoadRow {
+    /// The contact.
+    pub contact: Contact,
+    /// The side of the loaded section (`After` away from the point load).
+    pub side: Side,
+    /// Coefficients of (h, v, w, λ).
+    pub a: [f64; 4],
+    /// Constant term.
+    pub c: f64,
+}
+
+impl LoadRow {
+    /// The value at (x, λ).
+    pub fn at(&self, x: &Reactions, lambda: f64) -> f64 {
+        self.a[0] * x[0] + self.a[1] * x[1] + self.a[2] * x[2] + self.a[3] * lambda + self.c
+    }
+    /// (a, c).
+    pub fn pair(&self) -> ([f64; 4], f64) {
+        (self.a, self.c)
+    }
+}
+
+/// The rows of a discrete arch: every activation function that exists at μ, at every
+/// joint, on both sides of a joint carrying the point load.
+pub fn rows(arch: &Arch, joints: &[Radians], eta: f64, mu: f64, load: &LiveLoad) -> Vec<LoadRow> {
+    let mut out = Vec::with_capacity(4 * joints.len() + 4);
+    for (j, &beta) in joints.iter().enumerate() {
+        let at = Location::of_joint(j, joints.len());
+        let sides: &[Side] = if load.splits(beta) {
+            &[Side::Before, Side::After]
+        } else {
+            &[Side::After]
+        };
+        let dead = actions(arch, eta, beta);
+        for &side in sides {
+            let live = load.actions(arch, eta, beta, side);
+            for &kind in ContactKind::active_at(mu) {
+                let a = dead.activation(kind, 0, eta, mu);
+                let l = live_activation(kind, eta, mu, live);
+                out.push(LoadRow {
+                    contact: Contact {
+                        beta,
+                        kind,
+                        at,
+                        free: false,
+                    },
+                    side,
+                    a: [a.g[0], a.g[1], a.g[2], l],
+                    c: a.c,
+                });
+            }
+        }
+    }
+    out
 }

@@ -28,7 +28,7 @@ use crate::arch::{Arch, JointLayout, ETA_TOP};
 use crate::collapse_mode::{classify, CollapseMode};
 use crate::contact::{Contact, ContactKind, Location};
 use crate::kinematics::column;
-use crate::load::{live_activation, LiveLoad, Side};
+use crate::load::{rows, LiveLoad, Side};
 use crate::lp;
 use crate::mechanism::{self, Mechanism};
 use crate::settings::Settings;
@@ -78,13 +78,8 @@ impl Plane {
 /// The planes of a discrete arch at friction μ, then the six box sides.
 fn planes(arch: &Arch, joints: &[f64], mu: f64) -> Vec<Plane> {
     let mut out = Vec::new();
-    let last = joints.len() - 1;
     for (j, &beta) in joints.iter().enumerate() {
-        let at = if j == 0 || j == last {
-            Location::Springing
-        } else {
-            Location::Interior
-        };
+        let at = Location::of_joint(j, joints.len());
         // coefficients from three thicknesses: exact for g (affine) and c (quadratic)
         let a: Vec<_> = [0.0, 1.0, 2.0]
             .iter()
@@ -141,38 +136,15 @@ fn box_planes() -> Vec<Plane> {
 /// multiplier λ: constant gradients, constant terms affine in λ; a joint carrying the
 /// point load has both sides of its section. Then the six box sides.
 fn load_planes(arch: &Arch, joints: &[f64], eta: f64, mu: f64, load: &LiveLoad) -> Vec<Plane> {
-    let mut out = Vec::new();
-    let last = joints.len() - 1;
-    for (j, &beta) in joints.iter().enumerate() {
-        let at = if j == 0 || j == last {
-            Location::Springing
-        } else {
-            Location::Interior
-        };
-        let dead = actions(arch, eta, beta);
-        let sides: &[Side] = if load.splits(beta) {
-            &[Side::Before, Side::After]
-        } else {
-            &[Side::After]
-        };
-        for &side in sides {
-            let live = load.actions(arch, eta, beta, side);
-            for &kind in ContactKind::active_at(mu) {
-                let a = dead.activation(kind, 0, eta, mu);
-                out.push(Plane {
-                    contact: Some(Contact {
-                        beta,
-                        kind,
-                        at,
-                        free: false,
-                    }),
-                    side,
-                    g: a.g.map(Poly::constant),
-                    c: Poly::linear(a.c, live_activation(kind, eta, mu, live)),
-                });
-            }
-        }
-    }
+    let mut out: Vec<Plane> = rows(arch, joints, eta, mu, load)
+        .into_iter()
+        .map(|r| Plane {
+            contact: Some(r.contact),
+            side: r.side,
+            g: [0, 1, 2].map(|k| Poly::constant(r.a[k])),
+            c: Poly::linear(r.c, r.a[3]),
+        })
+        .collect();
     out.extend(box_planes());
     out
 }

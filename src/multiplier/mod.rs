@@ -11,17 +11,17 @@
 
 pub mod continuum;
 
-use crate::arch::{check_eta, Arch, InputError, JointLayout, Radians};
+use crate::arch::{check_eta, Arch, InputError, JointLayout};
 use crate::collapse_mode::{classify, CollapseMode};
-use crate::contact::{Contact, ContactKind, Location};
+use crate::contact::Contact;
 use crate::kinematics::{column, power};
 use crate::limit_states::sweep::sweep_load;
-use crate::load::{live_activation, LiveLoad, Side};
+use crate::load::{rows, LiveLoad, LoadRow, Side};
 use crate::lp::{self, LpOutcome};
 use crate::mechanism::{self, Mechanism};
 use crate::settings::Settings;
 use crate::state::State;
-use crate::statics::{actions, magnitude, Reactions};
+use crate::statics::{magnitude, Reactions};
 
 /// The admissible multipliers λ ≥ 0 at (η, μ).
 #[derive(Debug, Clone, PartialEq)]
@@ -36,68 +36,6 @@ pub enum StaticRange {
         /// The largest admissible λ, λ_static, and a state there; `None` when unbounded.
         max: Option<(f64, Reactions)>,
     },
-}
-
-/// One activation function of a loaded discrete arch: `a · (h, v, w, λ) + c ≤ 0`.
-#[derive(Debug, Clone, Copy)]
-pub struct LoadRow {
-    /// The contact.
-    pub contact: Contact,
-    /// The side of the loaded section (`After` away from the point load).
-    pub side: Side,
-    /// Coefficients of (h, v, w, λ).
-    pub a: [f64; 4],
-    /// Constant term.
-    pub c: f64,
-}
-
-impl LoadRow {
-    /// The value at (x, λ).
-    pub fn at(&self, x: &Reactions, lambda: f64) -> f64 {
-        self.a[0] * x[0] + self.a[1] * x[1] + self.a[2] * x[2] + self.a[3] * lambda + self.c
-    }
-    fn pair(&self) -> ([f64; 4], f64) {
-        (self.a, self.c)
-    }
-}
-
-/// The rows of a discrete arch: every activation function that exists at μ, at every
-/// joint, on both sides of a joint carrying the point load.
-pub fn rows(arch: &Arch, joints: &[Radians], eta: f64, mu: f64, load: &LiveLoad) -> Vec<LoadRow> {
-    let mut out = Vec::with_capacity(4 * joints.len() + 4);
-    let last = joints.len() - 1;
-    for (j, &beta) in joints.iter().enumerate() {
-        let at = if j == 0 || j == last {
-            Location::Springing
-        } else {
-            Location::Interior
-        };
-        let sides: &[Side] = if load.splits(beta) {
-            &[Side::Before, Side::After]
-        } else {
-            &[Side::After]
-        };
-        let dead = actions(arch, eta, beta);
-        for &side in sides {
-            let live = load.actions(arch, eta, beta, side);
-            for &kind in ContactKind::active_at(mu) {
-                let a = dead.activation(kind, 0, eta, mu);
-                let l = live_activation(kind, eta, mu, live);
-                out.push(LoadRow {
-                    contact: Contact {
-                        beta,
-                        kind,
-                        at,
-                        free: false,
-                    },
-                    side,
-                    a: [a.g[0], a.g[1], a.g[2], l],
-                    c: a.c,
-                });
-            }
-        }
-    }
-    out
 }
 
 /// Checks the load against the arch: a point load must lie on it (β_R ≤ β_P ≤ β_L).
