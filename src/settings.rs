@@ -108,6 +108,11 @@ pub struct Settings {
     /// A continuous arch's limit states are searched on discretisations of this many and
     /// twice as many equal pieces (then refined on the continuum). Default 48.
     pub sweep_pieces: usize,
+    /// The complete limit-state sweep of a discrete arch (work growing faster than the
+    /// square of the number of joints) is run up to this many joints; beyond, the search
+    /// is reported as not done (η_s and λ_static stay exact). Default 256 (a 255-voussoir
+    /// arch takes about a second at finite friction).
+    pub sweep_max_joints: usize,
     /// A contact is active at an event of the limit-state sweep when |φ| is below
     /// `event_tol` × (1 + ‖x‖₁). Default 1e-9.
     pub event_tol: f64,
@@ -162,6 +167,7 @@ impl Default for Settings {
             boundary_match: 1e-9,
             event_tol: 1e-9,
             sweep_pieces: 48,
+            sweep_max_joints: 256,
             unbounded_reactions: 1e6,
             sweep_min_eta: 1e-6,
             curve_samples: 16,
@@ -245,6 +251,12 @@ impl Settings {
         count("settings.max_rounds", self.max_rounds, 1, 10_000)?;
         count("settings.curve_samples", self.curve_samples, 2, 10_000)?;
         count("settings.sweep_pieces", self.sweep_pieces, 4, 10_000)?;
+        count(
+            "settings.sweep_max_joints",
+            self.sweep_max_joints,
+            2,
+            1_000_000,
+        )?;
         Ok(())
     }
 }

@@ -770,6 +770,14 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
             failure: Some("the sweep needs the joints of a discrete arch".into()),
         };
     };
+    if let Some(f) = too_many(joints.len(), settings) {
+        return Sweep {
+            states: vec![],
+            events: 0,
+            no_mechanism: vec![],
+            failure: Some(f),
+        };
+    }
     let mut sw = Sweeper {
         arch,
         mu,
@@ -857,6 +865,18 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
         };
     }
     run(sw)
+}
+
+/// Why the sweep is not run on `joints` joints, if it is not: its work grows faster than
+/// the square of the number of joints (every vertex born is tested against every plane),
+/// so beyond `settings.sweep_max_joints` it is not attempted.
+fn too_many(joints: usize, settings: &Settings) -> Option<String> {
+    (joints > settings.sweep_max_joints).then(|| {
+        format!(
+            "the complete search over {joints} joints is beyond this version's budget (settings.sweep_max_joints = {}): the limit states were not searched",
+            settings.sweep_max_joints
+        )
+    })
 }
 
 /// The event loop: from the vertices alive at the start to the top.
@@ -950,6 +970,9 @@ pub fn sweep_load(
     let JointLayout::Discrete(joints) = arch.layout() else {
         return failure("the sweep needs the joints of a discrete arch".into());
     };
+    if let Some(f) = too_many(joints.len(), settings) {
+        return failure(f);
+    }
     if x_min.iter().any(|v| v.abs() >= BOX * (1.0 - 1e-9)) {
         return failure(format!(
             "the least admissible state at lambda = {lambda_min} lies outside the box |x| <= {BOX:e}"

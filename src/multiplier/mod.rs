@@ -226,10 +226,31 @@ pub fn survey(
         })
     };
     let at_static = max.and_then(|m| limit_state_at(arch, eta, mu, load, m, settings));
+    if mu.is_infinite() {
+        // associative (hinges only): the static maximum is the only limit state, and
+        // none exists where λ is unbounded (see `continuous_survey`)
+        return Ok(Ok(match max {
+            None => LoadOutcome::NoCollapse {
+                lambda_min: min,
+                events: 0,
+            },
+            Some(m) => LoadOutcome::Limits(LoadSurvey {
+                lambda_min: min,
+                lambda_static: Some(m),
+                mechanism_at_static: at_static.is_some(),
+                limit_states: at_static.into_iter().collect(),
+                events: 0,
+                method: "associative",
+            }),
+        }));
+    }
     let top = max.map_or(UNBOUNDED_SEARCH_TOP, |m| m.0);
     let sw = sweep_load(arch, eta, mu, load, min, top, settings);
     if let Some(f) = sw.failure {
-        return Ok(Err(f));
+        return Ok(Err(match max {
+            Some(m) => format!("{f} (lambda_static = {}, exact)", m.0),
+            None => f,
+        }));
     }
     // where the arch does not stand unloaded (λ_min > 0) the state at λ_min is the
     // unloading end: the arch fails there as λ decreases, and it is never reported as a

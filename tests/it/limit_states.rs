@@ -685,3 +685,52 @@ fn infimum_sweep_starts_inside_the_box() {
         Ok(1)
     );
 }
+
+/// The complete search of a discrete arch is bounded (`settings.sweep_max_joints`): beyond
+/// it `solve` still answers η_s exactly and fast, says the search was not done and leaves
+/// uniqueness undecided (it used to run for minutes at 1000 voussoirs); `load` at finite
+/// friction says it could not decide and gives the exact λ_static; at μ = ∞ `load`
+/// needs no search (associative) and answers.
+#[test]
+fn search_budget_is_said_not_hidden() {
+    let (v, code) =
+        crate::cli::json_of(&["solve", "--alpha", "0", "--blocks", "1000", "--mu", "0.5"]);
+    assert_eq!(code, 0);
+    assert_eq!(v["status"], "ok");
+    assert!(v["eta"].as_f64().unwrap() > 0.1);
+    assert_eq!(v["unique"], serde_json::Value::Null);
+    assert_eq!(v["search"]["complete"], false);
+    assert!(v["search"]["reason"]
+        .as_str()
+        .unwrap()
+        .contains("sweep_max_joints"));
+    let (v, code) = crate::cli::json_of(&[
+        "load",
+        "--alpha",
+        "0",
+        "--blocks",
+        "1000",
+        "--eta",
+        "0.3",
+        "--mu",
+        "0.8",
+        "--horizontal",
+    ]);
+    assert_eq!(code, 1);
+    assert_eq!(v["status"], "unresolved");
+    assert!(v["message"].as_str().unwrap().contains("lambda_static = "));
+    let (v, code) = crate::cli::json_of(&[
+        "load",
+        "--alpha",
+        "0",
+        "--blocks",
+        "1000",
+        "--eta",
+        "0.3",
+        "--mu",
+        "inf",
+        "--horizontal",
+    ]);
+    assert_eq!(code, 0);
+    assert_eq!(v["unique"], true);
+}
