@@ -88,6 +88,28 @@ fn main() {
         )
         .expect("load figure"),
     );
+    // the lambda-mu curve of an unsymmetric six-voussoir arch under a horizontal load
+    let six = Arch::new(0.2442, 3.1489, WeightModel::Centreline)
+        .and_then(|a| a.with_joints(&[0.2442, 0.8409, 1.2686, 2.0653, 2.3805, 2.7970, 3.1489]))
+        .expect("arch");
+    let left = arch_enum::load::LiveLoad::Horizontal {
+        towards_right: false,
+    };
+    let mut mus: Vec<f64> = (0..30)
+        .map(|i| 0.6 * (2.0f64 / 0.6).powf(i as f64 / 29.0))
+        .collect();
+    mus.push(f64::INFINITY);
+    let samples =
+        arch_enum::multiplier::sample(&six, 0.6364, &left, &mus, &s, &|_, _| {}).expect("samples");
+    save(
+        dir,
+        "load_curve",
+        &arch_enum::render::plot_load_curve::svg(
+            "β_R = 0.244, β_L = 3.149 — horizontal acceleration, η = 0.6364: λ against μ",
+            &samples,
+        )
+        .expect("load curve figure"),
+    );
     let grid = MapGrid {
         n_eta: 36,
         n_mu: 48,

@@ -9,7 +9,7 @@ use crate::arch::{fmt_value, Arch, InputError, JointLayout};
 use crate::friction::least_friction;
 use crate::limit_curve::mu_grid;
 use crate::load::LiveLoad;
-use crate::multiplier::{check_load, survey, LoadOutcome};
+use crate::multiplier::{check_load, sample, survey, CurveSample, LoadOutcome};
 use crate::render::load::{curve_json, curve_table, json, table, LoadQuestion};
 use crate::settings::Settings;
 use clap::{ArgGroup, Args};
@@ -159,7 +159,7 @@ pub(crate) fn run(a: LoadArgs, settings: &Settings, io: &mut Io) -> Exit {
 #[derive(Args, Debug)]
 pub(crate) struct LoadCurveArgs {
     #[command(flatten)]
-    arch: ArchArgs,
+    pub(crate) arch: ArchArgs,
     /// Thickness ratio eta = t/r of the arch, 0 < eta < 2.
     #[arg(long, allow_hyphen_values = true)]
     eta: f64,
@@ -180,6 +180,23 @@ pub(crate) struct LoadCurveArgs {
     pub(crate) json: bool,
 }
 
+/// The friction coefficients of a λ–μ curve: `points` geometrically spaced from `mu_min`
+/// (default μ_ms (1 + 1e-6)) to `mu_max` (default 10 μ_min), then μ = ∞.
+pub(crate) fn mu_samples(
+    arch: &Arch,
+    mu_min: Option<f64>,
+    mu_max: Option<f64>,
+    points: usize,
+    settings: &Settings,
+) -> Result<Vec<f64>, InputError> {
+    let mu_ms = least_friction(arch, settings).ok().flatten();
+    let lo = mu_min.unwrap_or_else(|| mu_ms.map_or(0.01, |m| (m * (1.0 + 1e-6)).max(1e-6)));
+    let hi = mu_max.unwrap_or(10.0 * lo);
+    let mut grid = mu_grid(lo, hi, points)?;
+    grid.push(f64::INFINITY);
+    Ok(grid)
+}
+
 pub(crate) fn run_curve(a: LoadCurveArgs, settings: &Settings, io: &mut Io) -> Exit {
     let (arch, load) = match a.arch.build().and_then(|arch| {
         let load = a.live.build(&arch)?;
@@ -188,28 +205,17 @@ pub(crate) fn run_curve(a: LoadCurveArgs, settings: &Settings, io: &mut Io) -> E
         Ok(v) => v,
         Err(e) => return io.bad_input(&e),
     };
-    if let Err(e) = crate::arch::check_eta(a.eta) {
-        return io.bad_input(&e);
-    }
-    let mu_ms = least_friction(&arch, settings).ok().flatten();
-    let lo = a
-        .mu_min
-        .unwrap_or_else(|| mu_ms.map_or(0.01, |m| (m * (1.0 + 1e-6)).max(1e-6)));
-    let hi = a.mu_max.unwrap_or(10.0 * lo);
-    let mut grid = match mu_grid(lo, hi, a.points) {
-        Ok(g) => g,
+    let bar = super::progress::Progress::new("load-curve");
+    let samples = match crate::arch::check_eta(a.eta)
+        .and_then(|_| mu_samples(&arch, a.mu_min, a.mu_max, a.points, settings))
+        .and_then(|grid| {
+            sample(&arch, a.eta, &load, &grid, settings, &|d, t| {
+                bar.update(d, t)
+            })
+        }) {
+        Ok(s) => s,
         Err(e) => return io.bad_input(&e),
     };
-    grid.push(f64::INFINITY);
-    let bar = super::progress::Progress::new("load-curve");
-    let mut samples = Vec::with_capacity(grid.len());
-    for (i, &mu) in grid.iter().enumerate() {
-        match survey(&arch, a.eta, mu, &load, settings) {
-            Ok(o) => samples.push((mu, o)),
-            Err(e) => return io.bad_input(&e),
-        }
-        bar.update(i + 1, grid.len());
-    }
     let q = LoadQuestion {
         arch: &arch,
         eta: a.eta,
@@ -223,4 +229,30 @@ pub(crate) fn run_curve(a: LoadCurveArgs, settings: &Settings, io: &mut Io) -> E
         io.out(&curve_table(&q, &samples));
     }
     Exit::Answered
+}
+
+impl LoadCurveArgs {
+    /// The figure's title and its samples (the `plot load-curve` figure).
+    pub(crate) fn samples(
+        &self,
+        settings: &Settings,
+    ) -> Result<(String, Vec<CurveSample>), InputError> {
+        let arch = self.arch.build()?;
+        let load = self.live.build(&arch)?;
+        crate::arch::check_eta(self.eta)?;
+        let grid = mu_samples(&arch, self.mu_min, self.mu_max, self.points, settings)?;
+        let samples = sample(&arch, self.eta, &load, &grid, settings, &|_, _| {})?;
+        let what = match load {
+            LiveLoad::Horizontal { .. } => "horizontal acceleration".to_string(),
+            LiveLoad::Point { beta } => format!("point load at {:.2}°", beta.to_degrees()),
+        };
+        Ok((
+            format!(
+                "{} — {what}, η = {}: λ against μ",
+                crate::render::plot::arch_label(&arch),
+                self.eta
+            ),
+            samples,
+        ))
+    }
 }

@@ -134,6 +134,16 @@ pub(crate) enum Figure {
         #[command(flatten)]
         output: Output,
     },
+    /// The load multiplier against friction at a fixed thickness: lambda_static and the collapse multiplier lambda (coloured by mode), the gap between them shaded.
+    #[command(
+        after_help = "Example:\n  arch-enum plot load-curve --alpha 0 --blocks 20 --eta 0.3 --horizontal --out lambda_mu.png"
+    )]
+    LoadCurve {
+        #[command(flatten)]
+        curve: super::load::LoadCurveArgs,
+        #[command(flatten)]
+        output: Output,
+    },
     /// The eccentricities e_M = M/N and e_T = (T/N)/mu eta/2 against beta.
     Eccentricity {
         #[command(flatten)]
@@ -173,6 +183,7 @@ pub(crate) fn run(figure: Figure, settings: &Settings, io: &mut Io) -> Exit {
         Figure::Arch { output, .. } => ("arch", output),
         Figure::Eccentricity { output, .. } => ("eccentricity", output),
         Figure::Load { output, .. } => ("load", output),
+        Figure::LoadCurve { output, .. } => ("load_curve", output),
         Figure::Map { output, .. } => ("map", output),
     };
     let (path, format, width) = match output.target(name) {
@@ -222,6 +233,10 @@ pub(crate) fn run(figure: Figure, settings: &Settings, io: &mut Io) -> Exit {
         }) {
             Ok((a, load)) => figures::load_scenes(&a, eta, mu, &load, settings)
                 .map(|s| plot_arch::svg_panels(&s)),
+            Err(e) => return io.bad_input(&e),
+        },
+        Figure::LoadCurve { curve, .. } => match curve.samples(settings) {
+            Ok((title, samples)) => Ok(crate::render::plot_load_curve::svg(&title, &samples)),
             Err(e) => return io.bad_input(&e),
         },
         Figure::Eccentricity { state: st, .. } => match plot_inputs(&st) {

@@ -12,5 +12,7 @@ pub mod plot_curve;
 #[cfg(feature = "svg")]
 pub mod plot_ecc;
 #[cfg(feature = "svg")]
+pub mod plot_load_curve;
+#[cfg(feature = "svg")]
 pub mod plot_map;
 pub mod table;

@@ -507,3 +507,49 @@ fn load_figure_has_a_panel_per_limit_state_and_the_load() {
     assert!(String::from_utf8_lossy(&none.stderr).contains("no figure"));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `plot load-curve`: the λ–μ figure names λ_static, λ and the μ = ∞ value, and shades the
+/// window where λ < λ_static (one polygon per interval of it).
+#[test]
+fn load_curve_figure_shades_the_reduction() {
+    let dir = std::env::temp_dir().join(format!("arch-enum-plot-lmu-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let svg = dir.join("lmu.svg");
+    let out = Command::cargo_bin("arch-enum")
+        .unwrap()
+        .args([
+            "plot",
+            "load-curve",
+            "--beta-right",
+            "0.2442",
+            "--beta-left",
+            "3.1489",
+            "--joints",
+            "0.2442,0.8409,1.2686,2.0653,2.3805,2.7970,3.1489",
+            "--eta",
+            "0.6364",
+            "--horizontal-left",
+            "--mu-min",
+            "0.6",
+            "--mu-max",
+            "2",
+            "--points",
+            "30",
+            "--out",
+        ])
+        .arg(&svg)
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(text.contains("λ_static (largest admissible)"));
+    assert!(text.contains("μ = ∞: λ = 1.33"));
+    let shaded = text.matches("fill=\"#D62728\"").count();
+    assert!(shaded >= 3, "{shaded} shaded intervals");
+    std::fs::remove_dir_all(&dir).ok();
+}

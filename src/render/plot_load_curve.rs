@@ -1,0 +1,179 @@
+//! Figure: the load multiplier against friction at a fixed thickness — λ_static (the
+//! largest statically admissible multiplier, dashed grey) and the collapse multiplier λ
+//! (the least limit state, points coloured by its collapse mode, joined), over a log μ axis,
+//! with the μ = ∞ value as a dotted asymptote. Where λ < λ_static non-associative friction
+//! lowers the collapse load; the gap is shaded.
+
+use crate::collapse_mode::CollapseMode;
+use crate::multiplier::LoadOutcome;
+use crate::render::plot::{mode_color, short_num, Axis, AxisCoord, FAMILY};
+use plotters::prelude::*;
+
+const W: u32 = 1100;
+const H: u32 = 620;
+
+fn err(e: impl std::fmt::Display) -> String {
+    e.to_string()
+}
+
+/// One sample: μ, λ_static, and the least limit state (λ, mode) where there is one.
+type Sample = (f64, Option<f64>, Option<(f64, CollapseMode)>);
+
+/// Draws the samples `(μ, outcome)` (a last one at μ = ∞ allowed) with `title` on top.
+pub fn svg(title: &str, samples: &[(f64, Result<LoadOutcome, String>)]) -> Result<String, String> {
+    let pts: Vec<Sample> = samples
+        .iter()
+        .map(|(mu, o)| match o {
+            Ok(LoadOutcome::Limits(s)) => (
+                *mu,
+                s.lambda_static.map(|m| m.0),
+                s.limit_states.first().map(|l| (l.lambda, l.mode)),
+            ),
+            _ => (*mu, None, None),
+        })
+        .collect();
+    let finite: Vec<&Sample> = pts.iter().filter(|p| p.0.is_finite()).collect();
+    let at_inf = pts.iter().find(|p| p.0.is_infinite());
+    if finite.iter().all(|p| p.1.is_none()) {
+        return Err("no sample with a finite static maximum to draw".into());
+    }
+    let (mu_lo, mu_hi) = finite.iter().fold((f64::INFINITY, 0.0f64), |(a, b), p| {
+        (a.min(p.0), b.max(p.0))
+    });
+    let lam_hi = pts
+        .iter()
+        .filter_map(|p| p.1)
+        .fold(0.0f64, f64::max)
+        .max(1e-12);
+    let mu_ax = Axis {
+        lo: mu_lo,
+        hi: mu_hi.max(mu_lo * 1.01),
+        log: true,
+    };
+    let lam_ax = Axis {
+        lo: 0.0,
+        hi: lam_hi * 1.12,
+        log: false,
+    };
+    let mut buf = String::new();
+    {
+        let root = SVGBackend::with_string(&mut buf, (W, H)).into_drawing_area();
+        root.fill(&WHITE).map_err(err)?;
+        let x: AxisCoord = mu_ax.range();
+        let y: AxisCoord = lam_ax.range();
+        let mut chart = ChartBuilder::on(&root)
+            .caption(title, (FAMILY, 20))
+            .margin(16)
+            .margin_right(40)
+            .x_label_area_size(56)
+            .y_label_area_size(70)
+            .build_cartesian_2d(x, y)
+            .map_err(err)?;
+        chart
+            .configure_mesh()
+            .x_desc("friction coefficient μ = tan φ   (labels: μ (φ))")
+            .y_desc("load multiplier λ")
+            .x_label_formatter(&|u| mu_ax.mu_label(*u))
+            .y_label_formatter(&|u| lam_ax.label(*u))
+            .label_style((FAMILY, 13))
+            .axis_desc_style((FAMILY, 15))
+            .draw()
+            .map_err(err)?;
+        // the gap between λ and λ_static, shaded
+        for w in finite.windows(2) {
+            if let ((m0, Some(s0), Some((l0, _))), (m1, Some(s1), Some((l1, _)))) = (*w[0], *w[1]) {
+                if l0 < s0 * (1.0 - 1e-9) || l1 < s1 * (1.0 - 1e-9) {
+                    let (u0, u1) = (mu_ax.to(m0), mu_ax.to(m1));
+                    chart
+                        .draw_series(std::iter::once(Polygon::new(
+                            vec![(u0, l0), (u1, l1), (u1, s1), (u0, s0)],
+                            RGBColor(214, 39, 40).mix(0.25),
+                        )))
+                        .map_err(err)?;
+                }
+            }
+        }
+        let stat: Vec<(f64, f64)> = finite
+            .iter()
+            .filter_map(|p| p.1.map(|s| (mu_ax.to(p.0), s)))
+            .collect();
+        chart
+            .draw_series(DashedLineSeries::new(
+                stat,
+                8,
+                5,
+                RGBColor(110, 110, 110).stroke_width(2),
+            ))
+            .map_err(err)?
+            .label("λ_static (largest admissible)")
+            .legend(|(x, y)| {
+                PathElement::new(
+                    vec![(x, y), (x + 20, y)],
+                    RGBColor(110, 110, 110).stroke_width(2),
+                )
+            });
+        let lam: Vec<(f64, f64)> = finite
+            .iter()
+            .filter_map(|p| p.2.map(|(l, _)| (mu_ax.to(p.0), l)))
+            .collect();
+        chart
+            .draw_series(std::iter::once(PathElement::new(
+                lam,
+                BLACK.stroke_width(2),
+            )))
+            .map_err(err)?
+            .label("λ (least limit state: collapse)")
+            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(2)));
+        let mut modes: Vec<CollapseMode> = Vec::new();
+        for p in &finite {
+            if let Some((l, m)) = p.2 {
+                if !modes.contains(&m) {
+                    modes.push(m);
+                }
+                chart
+                    .draw_series(std::iter::once(Circle::new(
+                        (mu_ax.to(p.0), l),
+                        5,
+                        mode_color(m).filled(),
+                    )))
+                    .map_err(err)?;
+            }
+        }
+        for m in modes {
+            chart
+                .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())
+                .map_err(err)?
+                .label(m.name())
+                .legend(move |(x, y)| Circle::new((x + 10, y), 5, mode_color(m).filled()));
+        }
+        if let Some((_, Some(s), _)) = at_inf {
+            let (u0, u1) = (mu_ax.to(mu_ax.lo), mu_ax.to(mu_ax.hi));
+            chart
+                .draw_series(DashedLineSeries::new(
+                    vec![(u0, *s), (u1, *s)],
+                    2,
+                    6,
+                    RGBColor(30, 90, 200).stroke_width(1),
+                ))
+                .map_err(err)?
+                .label(format!("μ = ∞: λ = {}", short_num(*s)))
+                .legend(|(x, y)| {
+                    PathElement::new(
+                        vec![(x, y), (x + 20, y)],
+                        RGBColor(30, 90, 200).stroke_width(1),
+                    )
+                });
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::LowerRight)
+            .margin(8)
+            .border_style(BLACK)
+            .background_style(WHITE.mix(0.9))
+            .label_font((FAMILY, 13))
+            .draw()
+            .map_err(err)?;
+        root.present().map_err(err)?;
+    }
+    Ok(buf)
+}
