@@ -25,7 +25,7 @@ fn configure(
 }
 
 /// Half-width of the box on (h, v, w) in the margin LP (units of γ t d r).
-const REACTION_BOX: f64 = 1e12;
+pub const REACTION_BOX: f64 = 1e12;
 
 /// Maximises s subject to `row(x) + s·‖∇row‖ ≤ 0` for every row and `s ≤ s_cap`.
 /// Returns the optimal x and s. The LP is always feasible (s may be very negative).
@@ -164,14 +164,9 @@ pub fn multiplier_extreme(
     // as for the margin LP: free reactions first, boxed ones only as a retry after a
     // failure (near an unbounded multiplier HiGHS can end in "Unknown")
     match multiplier_lp(rows, equal, maximise, tol, None) {
-        Err(LpOutcome::Failed(_)) => {
-            // an optimum on the box is no optimum of the problem: λ grows with the
-            // reactions without bound
-            match multiplier_lp(rows, equal, maximise, tol, Some(REACTION_BOX))? {
-                Some(z) if z[..3].iter().any(|v| v.abs() >= 0.999 * REACTION_BOX) => Ok(None),
-                other => Ok(other),
-            }
-        }
+        // the caller judges an optimum on the box (see `REACTION_BOX` and
+        // `lp::multiplier_extreme`)
+        Err(LpOutcome::Failed(_)) => multiplier_lp(rows, equal, maximise, tol, Some(REACTION_BOX)),
         other => other,
     }
 }

@@ -69,7 +69,9 @@ pub fn kinematic_farkas(
 
 /// The least or largest multiplier λ ≥ 0 of a load problem (unknowns (h, v, w, λ), rows
 /// `a · z + c ≤ 0`, and `= 0` for `equal`; HiGHS). `Ok(None)`: λ unbounded;
-/// `Err(Infeasible)`: no state.
+/// `Err(Infeasible)`: no state. After a back-end failure the LP is solved again with the
+/// reactions boxed at [`highs::REACTION_BOX`]: an optimum with a reaction on that box
+/// (see [`on_box`]) is no optimum of the problem, and the caller must say so.
 pub fn multiplier_extreme(
     rows: &[([f64; 4], f64)],
     equal: &[([f64; 4], f64)],
@@ -77,4 +79,12 @@ pub fn multiplier_extreme(
     settings: &Settings,
 ) -> Result<Option<[f64; 4]>, LpOutcome> {
     highs::multiplier_extreme(rows, equal, maximise, settings.lp_tol)
+}
+
+/// Whether a solution of [`multiplier_extreme`] has a reaction on the retry's box (λ then
+/// grows with the reactions without bound on these rows).
+pub fn on_box(z: &[f64; 4]) -> bool {
+    z[..3]
+        .iter()
+        .any(|v| v.abs() >= 0.999 * highs::REACTION_BOX)
 }

@@ -175,9 +175,6 @@ pub fn extreme(
             None => return Ok(None),
         };
         let (x, lambda) = ([z[0], z[1], z[2]], z[3]);
-        if maximise && lambda >= LAMBDA_CAP * (1.0 - 1e-9) {
-            return Ok(None);
-        }
         let peaks = p.peaks(&x, lambda, settings);
         let violated: Vec<&(Peak, Side)> = peaks
             .iter()
@@ -198,6 +195,11 @@ pub fn extreme(
         // admissible to the exchange's tolerance, or every violation sits at an angle
         // already in the working set (the LP's own tolerance): Newton takes over
         if work.len() == before {
+            // at the cap on a working set the multiplier may still be bounded on the whole
+            // arch: only a state at the cap admissible over the whole arch says unbounded
+            if maximise && (lambda >= LAMBDA_CAP * (1.0 - 1e-9) || lp::on_box(&z)) {
+                return Ok(None);
+            }
             return refine(&p, x, lambda, &peaks, maximise, settings).map(Some);
         }
     }

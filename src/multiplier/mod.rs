@@ -93,7 +93,7 @@ pub fn static_range(
         Err(LpOutcome::Failed(e)) => return Ok(Err(format!("LP back end: {e}"))),
     };
     let max = match lp::multiplier_extreme(&rows, &[], true, settings) {
-        Ok(z) => z.map(split),
+        Ok(z) => z.filter(|z| !lp::on_box(z)).map(split),
         Err(LpOutcome::Infeasible) => return Ok(Ok(StaticRange::NoEquilibrium)),
         Err(LpOutcome::Failed(e)) => return Ok(Err(format!("LP back end: {e}"))),
     };
