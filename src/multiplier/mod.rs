@@ -198,6 +198,13 @@ pub fn survey(
     load: &LiveLoad,
     settings: &Settings,
 ) -> Result<Result<LoadOutcome, String>, InputError> {
+    if !matches!(arch.layout(), JointLayout::Discrete(_)) {
+        // the exchange for each end once (static_range would run the largest twice)
+        check_eta(eta)?;
+        crate::arch::check_mu(mu)?;
+        check_load(arch, load)?;
+        return Ok(continuous_survey(arch, eta, mu, load, settings));
+    }
     let range = match static_range(arch, eta, mu, load, settings)? {
         Ok(r) => r,
         Err(e) => return Ok(Err(e)),
@@ -207,7 +214,7 @@ pub fn survey(
         StaticRange::Interval { min, max } => (min, max),
     };
     let JointLayout::Discrete(joints) = arch.layout() else {
-        return Ok(continuous_survey(arch, eta, mu, load, min, settings));
+        unreachable!("continuous arches answered above")
     };
     let all_rows = rows(arch, joints, eta, mu, load);
     let continua = match continua(arch, eta, mu, load, &all_rows, settings) {
@@ -225,7 +232,12 @@ pub fn survey(
             })
         })
     };
-    let at_static = max.and_then(|m| limit_state_at(arch, eta, mu, load, m, settings));
+    // an LP failure at the static maximum is no decision, never "no mechanism"
+    let at_static = match max.map(|m| limit_state_at(arch, eta, mu, load, m, settings)) {
+        Some(Err(e)) => return Ok(Err(e)),
+        Some(Ok(s)) => s,
+        None => None,
+    };
     if mu.is_infinite() {
         // associative (hinges only): the static maximum is the only limit state, and
         // none exists where λ is unbounded (see `continuous_survey`)
@@ -301,37 +313,22 @@ fn limit_state_at(
     load: &LiveLoad,
     (lambda, x): (f64, Reactions),
     settings: &Settings,
-) -> Option<LoadLimitState> {
+) -> Result<Option<LoadLimitState>, String> {
     let JointLayout::Discrete(joints) = arch.layout() else {
-        return None;
+        return Ok(None);
     };
-    let pattern: Vec<(Contact, Side)> = rows(arch, joints, eta, mu, load)
+    let pattern: Vec<continuum::LoadedContact> = rows(arch, joints, eta, mu, load)
         .iter()
         .filter(|r| {
             let size = magnitude(r.contact.kind, eta, mu, &x, settings.magnitude_floor);
             r.at(&x, lambda).abs() <= settings.event_tol * size
         })
-        .map(|r| (r.contact, r.side))
+        .map(|r| continuum::LoadedContact {
+            contact: r.contact,
+            side: r.side,
+        })
         .collect();
-    let st = State { arch, eta, mu, x };
-    let (mechanism, live_power) =
-        mechanism::find_under_load(&st, lambda, load, &pattern, settings).ok()??;
-    let contacts: Vec<Contact> = pattern.iter().map(|p| p.0).collect();
-    let mode = classify(
-        &contacts,
-        0.5 * (arch.beta_right() + arch.beta_left()),
-        settings.same_joint,
-    );
-    Some(LoadLimitState {
-        lambda,
-        x,
-        sides: pattern.iter().map(|p| p.1).collect(),
-        pattern: contacts,
-        mode,
-        mechanism,
-        live_power,
-        continuum_to: None,
-    })
+    limit_state_on(arch, eta, mu, load, (lambda, x), &pattern, settings)
 }
 
 /// Continua of limit states. Two active contacts whose compatibility columns cancel — the
@@ -433,9 +430,14 @@ fn continuous_survey(
     eta: f64,
     mu: f64,
     load: &LiveLoad,
-    min: (f64, Reactions),
     settings: &Settings,
 ) -> Result<LoadOutcome, String> {
+    let min = match continuum::extreme(arch, eta, mu, load, false, settings) {
+        Ok(Some((l, x, _))) => (l, x),
+        Ok(None) => return Err("the least multiplier came out unbounded".into()),
+        Err(LpOutcome::Infeasible) => return Ok(LoadOutcome::NoEquilibrium),
+        Err(LpOutcome::Failed(e)) => return Err(e),
+    };
     let max = match continuum::extreme(arch, eta, mu, load, true, settings) {
         Ok(m) => m,
         Err(LpOutcome::Infeasible) => return Ok(LoadOutcome::NoEquilibrium),
