@@ -9,7 +9,7 @@ use crate::arch::{fmt_value, Arch, InputError, JointLayout};
 use crate::friction::least_friction;
 use crate::limit_curve::mu_grid;
 use crate::load::LiveLoad;
-use crate::multiplier::{check_load, sample, survey, CurveSample, LoadOutcome};
+use crate::multiplier::{check_load, sample, survey, trace, CurveSample, LoadOutcome};
 use crate::render::load::{curve_json, curve_table, json, table, LoadQuestion};
 use crate::settings::Settings;
 use clap::{ArgGroup, Args};
@@ -206,10 +206,10 @@ pub(crate) fn run_curve(a: LoadCurveArgs, settings: &Settings, io: &mut Io) -> E
         Err(e) => return io.bad_input(&e),
     };
     let bar = super::progress::Progress::new("load-curve");
-    let samples = match crate::arch::check_eta(a.eta)
+    let curve = match crate::arch::check_eta(a.eta)
         .and_then(|_| mu_samples(&arch, a.mu_min, a.mu_max, a.points, settings))
         .and_then(|grid| {
-            sample(&arch, a.eta, &load, &grid, settings, &|d, t| {
+            trace(&arch, a.eta, &load, &grid, settings, &|d, t| {
                 bar.update(d, t)
             })
         }) {
@@ -224,9 +224,9 @@ pub(crate) fn run_curve(a: LoadCurveArgs, settings: &Settings, io: &mut Io) -> E
         dims: None,
     };
     if a.json {
-        io.out(&to_json(&curve_json(&q, &samples)));
+        io.out(&to_json(&curve_json(&q, &curve)));
     } else {
-        io.out(&curve_table(&q, &samples));
+        io.out(&curve_table(&q, &curve));
     }
     Exit::Answered
 }

@@ -10,6 +10,9 @@
 //! largest statically admissible multiplier (unbounded: the load never breaks the arch).
 
 pub mod continuum;
+pub mod curve;
+
+pub use curve::{sample, trace, CurveSample, LoadCurve};
 
 use crate::arch::{check_eta, Arch, InputError, JointLayout};
 use crate::collapse_mode::{classify, CollapseMode};
@@ -640,25 +643,4 @@ fn same_load_state(p: &LoadLimitState, q: &LoadLimitState) -> bool {
             .zip(&q.pattern)
             .zip(p.sides.iter().zip(&q.sides))
             .all(|((a, b), (s, t))| a.kind == b.kind && (a.beta - b.beta).abs() <= 1e-6 && s == t)
-}
-
-/// One sample of the λ–μ curve: μ and the answer there (`Err`: no decision, why).
-pub type CurveSample = (f64, Result<LoadOutcome, String>);
-
-/// The answer at each friction coefficient of `mus` (any order; μ = ∞ allowed): the λ–μ
-/// curve at fixed η, sampled. `progress(done, total)` is called after each sample.
-pub fn sample(
-    arch: &Arch,
-    eta: f64,
-    load: &LiveLoad,
-    mus: &[f64],
-    settings: &Settings,
-    progress: &dyn Fn(usize, usize),
-) -> Result<Vec<CurveSample>, InputError> {
-    let mut out = Vec::with_capacity(mus.len());
-    for (i, &mu) in mus.iter().enumerate() {
-        out.push((mu, survey(arch, eta, mu, load, settings)?));
-        progress(i + 1, mus.len());
-    }
-    Ok(out)
 }

@@ -6,7 +6,7 @@ use super::table::{describe_arch, fmt_mu, short, sig, Dimensions};
 use crate::arch::Arch;
 use crate::contact::Contact;
 use crate::load::{LiveLoad, Side};
-use crate::multiplier::{LoadLimitState, LoadOutcome};
+use crate::multiplier::{LoadCurve, LoadLimitState, LoadOutcome};
 use serde::Serialize;
 use std::fmt::Write;
 
@@ -132,18 +132,40 @@ fn side_name(load: &LiveLoad, c: &Contact, side: Side) -> Option<&'static str> {
     })
 }
 
+/// The contacts of a pattern with the side of a loaded section each is on (`None`: no
+/// section split there; `Some("both")`: one hinge seen from both sides). The extrados hinge
+/// rows on the two sides of a point load's section are one function — the load acts at the
+/// extrados point, so its moment about it is nil — and appear once, as `both`.
+fn merged<'a>(
+    load: &LiveLoad,
+    pattern: impl Iterator<Item = (&'a Contact, Side)>,
+) -> Vec<(Contact, Option<&'static str>)> {
+    let mut out: Vec<(Contact, Option<&'static str>)> = Vec::new();
+    for (c, side) in pattern {
+        let name = side_name(load, c, side);
+        if let Some(last) = out.last_mut() {
+            if name.is_some()
+                && last.1.is_some()
+                && last.0.beta == c.beta
+                && last.0.kind == c.kind
+                && c.kind == crate::contact::ContactKind::HingeExtrados
+            {
+                last.1 = Some("both");
+                continue;
+            }
+        }
+        out.push((*c, name));
+    }
+    out
+}
+
 fn state_json(load: &LiveLoad, s: &LoadLimitState) -> StateJson {
     StateJson {
         lambda: s.lambda,
         mode: s.mode.name(),
-        pattern: s
-            .pattern
-            .iter()
-            .zip(&s.sides)
-            .map(|(c, &side)| PatternContact {
-                contact: *c,
-                side: side_name(load, c, side),
-            })
+        pattern: merged(load, s.pattern.iter().zip(s.sides.iter().copied()))
+            .into_iter()
+            .map(|(contact, side)| PatternContact { contact, side })
             .collect(),
         reactions: reactions(&s.x),
         mechanism: mechanism_json(&s.mechanism),
@@ -239,14 +261,13 @@ pub fn json(q: &LoadQuestion, outcome: &Result<LoadOutcome, String>) -> LoadDoc 
 }
 
 fn pattern_text(load: &LiveLoad, s: &LoadLimitState) -> String {
-    s.pattern
+    merged(load, s.pattern.iter().zip(s.sides.iter().copied()))
         .iter()
-        .zip(&s.sides)
-        .map(|(c, &side)| {
-            let tag = match side_name(load, c, side) {
+        .map(|(c, side)| {
+            let tag = match side {
                 Some("before") => "<",
-                Some(_) => ">",
-                None => "",
+                Some("after") => ">",
+                _ => "",
             };
             format!("{}@{:.4}{tag}", short(c), c.beta)
         })
@@ -419,6 +440,7 @@ pub struct LoadCurveDoc {
     eta: f64,
     load: LoadJson,
     points: Vec<LoadCurveRow>,
+    corners: Vec<CornerJson>,
 }
 
 fn curve_row(mu: f64, outcome: &Result<LoadOutcome, String>) -> LoadCurveRow {
@@ -452,23 +474,111 @@ fn curve_row(mu: f64, outcome: &Result<LoadOutcome, String>) -> LoadCurveRow {
     row
 }
 
-/// The `load-curve --json` document from the samples (μ, outcome).
-pub fn curve_json(
-    q: &LoadQuestion,
-    samples: &[(f64, Result<LoadOutcome, String>)],
-) -> LoadCurveDoc {
+/// One side of a corner of the λ–μ curve: the sample's row, and the least limit state's
+/// pattern.
+#[derive(Debug, Serialize)]
+struct CornerSide {
+    #[serde(flatten)]
+    row: LoadCurveRow,
+    pattern: Vec<PatternContact>,
+}
+
+/// A corner of the λ–μ curve in `load-curve --json`.
+#[derive(Debug, Serialize)]
+struct CornerJson {
+    /// The corner's friction coefficient: exact (five activation functions vanish at one
+    /// state, Newton in (h, v, w, λ, μ)) when `exact`, else null (see the bracket).
+    mu: Option<f64>,
+    /// λ at the exact corner.
+    lambda: Option<f64>,
+    exact: bool,
+    /// The bisection's bracket: answers at μ just below and just above (neighbouring floats
+    /// when `bracketed`; around an exact corner, the survey's active-set tolerance widens it).
+    mu_below: f64,
+    mu_above: Option<f64>,
+    bracketed: bool,
+    /// λ continuous across the corner (two limit states cross) or not (a jump).
+    continuous: bool,
+    below: CornerSide,
+    above: CornerSide,
+}
+
+fn corner_side(load: &LiveLoad, (mu, o): &(f64, Result<LoadOutcome, String>)) -> CornerSide {
+    let pattern = match o {
+        Ok(LoadOutcome::Limits(sv)) => sv.limit_states.first().map_or(Vec::new(), |l| {
+            merged(load, l.pattern.iter().zip(l.sides.iter().copied()))
+                .into_iter()
+                .map(|(contact, side)| PatternContact { contact, side })
+                .collect()
+        }),
+        _ => Vec::new(),
+    };
+    CornerSide {
+        row: curve_row(*mu, o),
+        pattern,
+    }
+}
+
+/// λ equal on both sides of a corner to this relative tolerance: continuous.
+const CONTINUOUS_TOL: f64 = 1e-9;
+
+/// The `load-curve --json` document: the samples and the corners.
+pub fn curve_json(q: &LoadQuestion, curve: &LoadCurve) -> LoadCurveDoc {
     LoadCurveDoc {
         version: JSON_VERSION,
         status: "ok",
         arch: ArchJson::new(q.arch),
         eta: q.eta,
         load: load_json(q),
-        points: samples.iter().map(|(mu, o)| curve_row(*mu, o)).collect(),
+        points: curve
+            .samples
+            .iter()
+            .map(|(mu, o)| curve_row(*mu, o))
+            .collect(),
+        corners: curve
+            .corners
+            .iter()
+            .map(|c| CornerJson {
+                mu: c.exact.as_ref().map(|e| e.mu),
+                lambda: c.exact.as_ref().map(|e| e.lambda),
+                exact: c.exact.is_some(),
+                mu_below: c.below.0,
+                mu_above: c.above.0.is_finite().then_some(c.above.0),
+                bracketed: c.bracketed,
+                continuous: c.continuous(CONTINUOUS_TOL),
+                below: corner_side(&q.load, &c.below),
+                above: corner_side(&q.load, &c.above),
+            })
+            .collect(),
+    }
+}
+
+/// The least limit state of an answer in words: mode and pattern (or the status).
+fn least_text(load: &LiveLoad, o: &Result<LoadOutcome, String>) -> String {
+    match o {
+        Err(_) => "unresolved".into(),
+        Ok(LoadOutcome::NoEquilibrium) => "no equilibrium".into(),
+        Ok(LoadOutcome::NoCollapse { .. }) => "no collapse".into(),
+        Ok(LoadOutcome::Limits(sv)) => match sv.limit_states.first() {
+            None => "no limit state".into(),
+            Some(l) => format!(
+                "lambda = {}  {}  {}{}",
+                sig(l.lambda, 12),
+                l.mode.name(),
+                pattern_text(load, l),
+                if sv.reduction().is_some_and(|r| r > 0.0) {
+                    "  (below lambda_static)"
+                } else {
+                    ""
+                }
+            ),
+        },
     }
 }
 
 /// The human-readable λ–μ table.
-pub fn curve_table(q: &LoadQuestion, samples: &[(f64, Result<LoadOutcome, String>)]) -> String {
+pub fn curve_table(q: &LoadQuestion, curve: &LoadCurve) -> String {
+    let samples = &curve.samples;
     let mut s = String::new();
     let _ = writeln!(s, "{}", describe_arch(q.arch));
     let _ = writeln!(s, "thickness           eta = t/r = {}", sig(q.eta, 12));
@@ -514,6 +624,42 @@ pub fn curve_table(q: &LoadQuestion, samples: &[(f64, Result<LoadOutcome, String
                 r.message.map_or(String::new(), |m| format!(": {m}"))
             );
         }
+    }
+    if curve.corners.is_empty() {
+        let _ = writeln!(s, "corners             none between the samples");
+    } else {
+        let _ = writeln!(
+            s,
+            "corners             where the least limit state changes, bisected to neighbouring floats in mu:"
+        );
+    }
+    for c in &curve.corners {
+        let (below, above) = c.lambdas();
+        let change = match (below, above) {
+            (Some(_), Some(_)) if c.continuous(CONTINUOUS_TOL) => "continuous".into(),
+            (Some(a), Some(b)) => format!("lambda jumps {} -> {}", sig(a, 12), sig(b, 12)),
+            _ => "a change of status".into(),
+        };
+        let at = match &c.exact {
+            Some(e) => format!("mu = {}  lambda = {} (exact)", e.mu, sig(e.lambda, 15)),
+            None => format!(
+                "mu in [{}, {}]{}",
+                c.below.0,
+                if c.above.0.is_finite() {
+                    c.above.0.to_string()
+                } else {
+                    "inf".into()
+                },
+                if c.bracketed {
+                    ""
+                } else {
+                    " (not bisected to the end)"
+                }
+            ),
+        };
+        let _ = writeln!(s, "  {at}  {change}");
+        let _ = writeln!(s, "      below: {}", least_text(&q.load, &c.below.1));
+        let _ = writeln!(s, "      above: {}", least_text(&q.load, &c.above.1));
     }
     s.lines().map(|l| l.trim_end().to_string() + "\n").collect()
 }

@@ -1,0 +1,492 @@
+//! The λ–μ curve at fixed η: the answer of [`survey`] at sampled friction coefficients, and
+//! its **corners** — the friction coefficients where the collapse pattern changes — located
+//! by bisection on the answer itself down to adjacent floating-point numbers in μ.
+//!
+//! A *branch* is a range of μ on which the least limit state keeps its pattern (contacts,
+//! kinds, sides of a loaded section; the tangency angles of a continuous arch move with μ),
+//! and whether it is the static maximum or lies below it. Between two samples on different
+//! branches the answer is evaluated at the midpoint (geometric while the ends are more than a
+//! factor 2 apart) until the two ends are neighbouring floats; a third branch met on the
+//! way is bracketed in turn. The bracket is exact in μ: the answer of the survey at each end
+//! is the one reported. Along a branch λ(μ) is smooth; at a corner it is continuous (two
+//! limit states cross) or jumps (a limit state appears or vanishes — non-associative
+//! friction opens or closes a window below the static maximum; the arch starts or stops
+//! standing). A branch shorter than the sampling step between two samples on one branch is
+//! not seen: sample densely where that matters.
+
+use super::{survey, LoadOutcome};
+use crate::arch::{Arch, InputError, JointLayout};
+use crate::contact::{Contact, ContactKind, Location};
+use crate::load::{rows, LiveLoad, LoadRow, Side};
+use crate::settings::Settings;
+use crate::statics::{magnitude, Reactions};
+use nalgebra::{Matrix5, Vector5};
+
+/// One sample of the λ–μ curve: μ and the answer there (`Err`: no decision, why).
+pub type CurveSample = (f64, Result<LoadOutcome, String>);
+
+/// The answer at each friction coefficient of `mus` (any order; μ = ∞ allowed): the λ–μ
+/// curve at fixed η, sampled. `progress(done, total)` is called after each sample.
+pub fn sample(
+    arch: &Arch,
+    eta: f64,
+    load: &LiveLoad,
+    mus: &[f64],
+    settings: &Settings,
+    progress: &dyn Fn(usize, usize),
+) -> Result<Vec<CurveSample>, InputError> {
+    let mut out = Vec::with_capacity(mus.len());
+    for (i, &mu) in mus.iter().enumerate() {
+        out.push((mu, survey(arch, eta, mu, load, settings)?));
+        progress(i + 1, mus.len());
+    }
+    Ok(out)
+}
+
+/// One contact of a branch's pattern: its kind, location, side of a loaded section, and
+/// its angle where the angle is fixed (a joint of a discrete arch, a springing, a point
+/// load's section), `None` for a tangency of a continuous arch (it moves with μ).
+pub type BranchContact = (ContactKind, Location, Side, Option<u64>);
+
+/// What stays the same along a branch of the λ–μ curve.
+#[derive(Debug, Clone, PartialEq)]
+pub enum BranchKey {
+    /// No state is admissible at any λ ≥ 0.
+    NoEquilibrium,
+    /// λ is unbounded and no limit state exists.
+    NoCollapse,
+    /// No decision at this μ.
+    Unresolved,
+    /// Admissible states but no limit state at all (the static maximum has no mechanism
+    /// with positive live power and none lies below).
+    NoLimitState,
+    /// The least limit state's pattern, and whether it is the static maximum.
+    Collapse {
+        /// Contacts of the least limit state, by increasing β.
+        pattern: Vec<BranchContact>,
+        /// The least limit state is the static maximum (no reduction).
+        at_static: bool,
+    },
+}
+
+/// The branch an answer belongs to.
+pub fn branch_key(
+    arch: &Arch,
+    load: &LiveLoad,
+    answer: &Result<LoadOutcome, String>,
+    settings: &Settings,
+) -> BranchKey {
+    let sv = match answer {
+        Err(_) => return BranchKey::Unresolved,
+        Ok(LoadOutcome::NoEquilibrium) => return BranchKey::NoEquilibrium,
+        Ok(LoadOutcome::NoCollapse { .. }) => return BranchKey::NoCollapse,
+        Ok(LoadOutcome::Limits(sv)) => sv,
+    };
+    let Some(least) = sv.limit_states.first() else {
+        return BranchKey::NoLimitState;
+    };
+    let discrete = matches!(arch.layout(), JointLayout::Discrete(_));
+    let loaded = match *load {
+        LiveLoad::Point { beta } => Some(beta),
+        LiveLoad::Horizontal { .. } => None,
+    };
+    let pattern = least
+        .pattern
+        .iter()
+        .zip(&least.sides)
+        .map(|(c, s)| {
+            let fixed = discrete || c.at == Location::Springing || Some(c.beta) == loaded;
+            (c.kind, c.at, *s, fixed.then_some(c.beta.to_bits()))
+        })
+        .collect();
+    let at_static = sv
+        .lambda_static
+        .is_some_and(|(top, _)| least.lambda >= top - settings.root_slack * top.abs().max(1.0));
+    BranchKey::Collapse { pattern, at_static }
+}
+
+/// A corner of the λ–μ curve: the branch changes between two friction coefficients.
+#[derive(Debug, Clone)]
+pub struct Corner {
+    /// The sample just below the corner (μ and the answer).
+    pub below: CurveSample,
+    /// The sample just above (μ and the answer; μ = ∞ when the last branch is the
+    /// associative one itself).
+    pub above: CurveSample,
+    /// Whether the bisection ended on neighbouring floats (false: it stopped at its
+    /// evaluation budget).
+    pub bracketed: bool,
+    /// The corner solved exactly, where the branches on both sides meet at one degenerate
+    /// state (see [`ExactCorner`]); `None` where the change is not such a meeting (or not on
+    /// a discrete arch): then the bracket is the answer.
+    pub exact: Option<ExactCorner>,
+}
+
+/// A corner at which the patterns on both sides are active at once: five activation
+/// functions vanish at one state (x, λ) at one friction coefficient μ (five equations in
+/// h, v, w, λ, μ), solved by Newton from the bisection's state and checked admissible at
+/// every joint. The survey's active-set tolerance makes such a meeting look like a narrow
+/// band of μ (relative width ~1e-8) where all five contacts appear active; this is its
+/// exact point.
+#[derive(Debug, Clone)]
+pub struct ExactCorner {
+    /// The friction coefficient.
+    pub mu: f64,
+    /// The multiplier.
+    pub lambda: f64,
+    /// Reactions.
+    pub x: Reactions,
+    /// The five contacts active there (with the side of a loaded section).
+    pub pattern: Vec<(Contact, Side)>,
+    /// λ is continuous across the corner: each side's least limit state is on these five
+    /// contacts, or its λ is the corner's to `SAME_LAMBDA` (else a limit state appears or
+    /// vanishes there and λ jumps).
+    pub continuous: bool,
+}
+
+impl Corner {
+    /// The collapse multipliers on both sides, when both exist.
+    pub fn lambdas(&self) -> (Option<f64>, Option<f64>) {
+        let l = |a: &Result<LoadOutcome, String>| match a {
+            Ok(LoadOutcome::Limits(sv)) => sv.lambda(),
+            _ => None,
+        };
+        (l(&self.below.1), l(&self.above.1))
+    }
+    /// λ is continuous across the corner: at an exact corner, both sides' least limit
+    /// states lie on its five contacts; else both sides have a collapse multiplier, equal to
+    /// `tol` relative (the bracket is then two neighbouring floats).
+    pub fn continuous(&self, tol: f64) -> bool {
+        if let Some(e) = &self.exact {
+            return e.continuous;
+        }
+        match self.lambdas() {
+            (Some(a), Some(b)) => (a - b).abs() <= tol * a.abs().max(b.abs()).max(1.0),
+            _ => false,
+        }
+    }
+}
+
+/// The sampled λ–μ curve and its corners.
+#[derive(Debug, Clone)]
+pub struct LoadCurve {
+    /// The samples, by increasing μ (μ = ∞ last, when sampled).
+    pub samples: Vec<CurveSample>,
+    /// The corners between them, by increasing μ.
+    pub corners: Vec<Corner>,
+}
+
+/// At most this many survey evaluations per bracket of two samples.
+const MAX_EVALUATIONS: usize = 4000;
+/// At most this many corners between two samples.
+const MAX_CORNERS: usize = 64;
+/// The search for the last corner below μ = ∞ stops at this friction coefficient.
+const LARGE_MU: f64 = 1e12;
+
+/// The λ–μ curve: the samples at `mus` (sorted by increasing μ, μ = ∞ allowed) and every
+/// corner between two samples on different branches, bisected to neighbouring floats. When
+/// the last finite sample and μ = ∞ differ, the μ above which the answer is the associative
+/// one is looked for up to μ = 1e12.
+pub fn trace(
+    arch: &Arch,
+    eta: f64,
+    load: &LiveLoad,
+    mus: &[f64],
+    settings: &Settings,
+    progress: &dyn Fn(usize, usize),
+) -> Result<LoadCurve, InputError> {
+    let mut mus = mus.to_vec();
+    mus.sort_by(f64::total_cmp);
+    mus.dedup();
+    let samples = sample(arch, eta, load, &mus, settings, progress)?;
+    let at = |mu: f64| -> Result<CurveSample, InputError> {
+        Ok((mu, survey(arch, eta, mu, load, settings)?))
+    };
+    let key = |s: &CurveSample| branch_key(arch, load, &s.1, settings);
+    let mut corners = Vec::new();
+    for w in samples.windows(2) {
+        let (lo, hi) = (&w[0], &w[1]);
+        if key(lo) == key(hi) {
+            continue;
+        }
+        let hi = if hi.0.is_finite() {
+            hi.clone()
+        } else {
+            // a finite μ on the associative branch: μ_last × 10^k
+            let mut found = None;
+            let mut mu = lo.0;
+            while mu < LARGE_MU {
+                mu = (mu * 10.0).min(LARGE_MU);
+                let s = at(mu)?;
+                if key(&s) == key(hi) {
+                    found = Some(s);
+                    break;
+                }
+            }
+            match found {
+                Some(s) => s,
+                None => {
+                    corners.push(Corner {
+                        below: (mu, at(mu)?.1),
+                        above: hi.clone(),
+                        bracketed: false,
+                        exact: None,
+                    });
+                    continue;
+                }
+            }
+        };
+        let mut budget = MAX_EVALUATIONS;
+        let mut found = Vec::new();
+        bisect(lo.clone(), hi.clone(), &at, &key, &mut budget, &mut found)?;
+        // a short branch beside a corner (between the bisection's points) shows 1e-6 away:
+        // bracket it too
+        let mut extra = Vec::new();
+        for c in &found {
+            for (probe, side) in [
+                (c.below.0 * (1.0 - PROBE_REL), &c.below),
+                (c.above.0 * (1.0 + PROBE_REL), &c.above),
+            ] {
+                if probe <= lo.0 || probe >= hi.0 {
+                    continue;
+                }
+                let p = at(probe)?;
+                if key(&p) != key(side) {
+                    let (a, b) = if probe < side.0 {
+                        (p, side.clone())
+                    } else {
+                        (side.clone(), p)
+                    };
+                    bisect(a, b, &at, &key, &mut budget, &mut extra)?;
+                }
+            }
+        }
+        found.extend(extra);
+        found.sort_by(|a, b| a.below.0.total_cmp(&b.below.0));
+        found.dedup_by(|a, b| a.below.0 == b.below.0 && a.above.0 == b.above.0);
+        corners.extend(clusters(arch, eta, load, found, settings));
+    }
+    corners.sort_by(|a, b| a.below.0.total_cmp(&b.below.0));
+    Ok(LoadCurve { samples, corners })
+}
+
+/// Across an exact corner the two sides' λ (at the ends of the survey's tolerance band,
+/// ~1e-8 wide in μ) are the corner's own to this relative tolerance when λ is continuous
+/// (a limit state on a contact outside the five met there).
+const SAME_LAMBDA: f64 = 1e-6;
+
+/// Each corner's neighbourhood is probed this far away (relative in μ) for a short branch.
+const PROBE_REL: f64 = 1e-6;
+
+/// Changes of branch closer than this (relative in μ) are one corner seen through the
+/// survey's active-set tolerance.
+const CLUSTER_REL: f64 = 1e-6;
+
+/// Groups the bisected changes of branch into corners: consecutive changes within
+/// `CLUSTER_REL` are one corner, solved exactly where their patterns meet at one degenerate
+/// state (see [`ExactCorner`]).
+fn clusters(
+    arch: &Arch,
+    eta: f64,
+    load: &LiveLoad,
+    found: Vec<Corner>,
+    settings: &Settings,
+) -> Vec<Corner> {
+    let mut out: Vec<Corner> = Vec::new();
+    let mut group: Vec<Corner> = Vec::new();
+    let flush = |group: &mut Vec<Corner>, out: &mut Vec<Corner>| {
+        if group.is_empty() {
+            return;
+        }
+        let first = group.first().expect("non-empty");
+        let last = group.last().expect("non-empty");
+        let mut inner: Vec<&CurveSample> = vec![&first.below];
+        inner.extend(group.iter().map(|c| &c.above));
+        let exact = exact_corner(arch, eta, load, &inner, settings);
+        if group.len() > 1 && exact.is_none() {
+            out.append(group); // separate changes after all
+            return;
+        }
+        out.push(Corner {
+            below: first.below.clone(),
+            above: last.above.clone(),
+            bracketed: group.iter().all(|c| c.bracketed),
+            exact,
+        });
+        group.clear();
+    };
+    for c in found {
+        if let Some(prev) = group.last() {
+            if c.below.0 > prev.above.0 + CLUSTER_REL * prev.above.0.abs() {
+                flush(&mut group, &mut out);
+            }
+        }
+        group.push(c);
+    }
+    flush(&mut group, &mut out);
+    out
+}
+
+/// The least limit state of an answer: (λ, x, pattern with sides).
+fn least(answer: &Result<LoadOutcome, String>) -> Option<(f64, Reactions, Vec<(Contact, Side)>)> {
+    let Ok(LoadOutcome::Limits(sv)) = answer else {
+        return None;
+    };
+    let l = sv.limit_states.first()?;
+    Some((
+        l.lambda,
+        l.x,
+        l.pattern.iter().copied().zip(l.sides.iter().copied()).collect(),
+    ))
+}
+
+/// Newton on five activation functions in (h, v, w, λ, μ) — the union of the least limit
+/// states' patterns of `answers` (samples across one corner, by increasing μ) — from the
+/// state of the answer with the most contacts; kept when it converges inside the answers'
+/// μ-range (widened by `CLUSTER_REL`), to a state admissible at every joint.
+fn exact_corner(
+    arch: &Arch,
+    eta: f64,
+    load: &LiveLoad,
+    answers: &[&CurveSample],
+    settings: &Settings,
+) -> Option<ExactCorner> {
+    let JointLayout::Discrete(joints) = arch.layout() else {
+        return None;
+    };
+    let (mu_lo, mu_hi) = (answers.first()?.0, answers.last()?.0);
+    if !mu_hi.is_finite() {
+        return None;
+    }
+    let states: Vec<(f64, f64, Reactions, Vec<(Contact, Side)>)> = answers
+        .iter()
+        .filter_map(|(mu, a)| least(a).map(|(l, x, p)| (*mu, l, x, p)))
+        .collect();
+    let start = states.iter().max_by_key(|s| s.3.len())?;
+    let row_of = |mu: f64, c: &Contact, side: Side| -> Option<LoadRow> {
+        rows(arch, joints, eta, mu, load)
+            .into_iter()
+            .find(|r| r.contact.beta == c.beta && r.contact.kind == c.kind && r.side == side)
+    };
+    // distinct activation functions (the extrados hinge on both sides of a loaded
+    // section is one)
+    let distinct = |pats: &[&Vec<(Contact, Side)>]| -> Option<Vec<(Contact, Side)>> {
+        let mut union: Vec<(Contact, Side)> = Vec::new();
+        for p in pats {
+            for &(c, side) in p.iter() {
+                let r = row_of(start.0, &c, side)?;
+                let same = union.iter().any(|&(d, t)| {
+                    row_of(start.0, &d, t)
+                        .is_some_and(|q| (0..4).all(|k| q.a[k] == r.a[k]) && q.c == r.c)
+                });
+                if !same {
+                    union.push((c, side));
+                }
+            }
+        }
+        Some(union)
+    };
+    // the pattern of five: the largest single pattern, or the union of the two ends, or of all
+    let ends = [&states.first()?.3, &states.last()?.3];
+    let all: Vec<&Vec<(Contact, Side)>> = states.iter().map(|s| &s.3).collect();
+    let candidates = [distinct(&[&start.3])?, distinct(&ends)?, distinct(&all)?];
+    let union = candidates.into_iter().find(|u| u.len() == 5)?;
+    let on_union = |p: &Vec<(Contact, Side)>| distinct(&[&union, p]).is_some_and(|u| u.len() == 5);
+    let continuous_at = |s: &(f64, f64, Reactions, Vec<(Contact, Side)>), lambda: f64| {
+        on_union(&s.3) || (s.1 - lambda).abs() <= SAME_LAMBDA * (1.0 + lambda.abs())
+    };
+    let eval = |z: &Vector5<f64>| -> Option<(Vector5<f64>, Matrix5<f64>)> {
+        let (mu, mu1) = (z[4], z[4] + 1.0);
+        let mut f = Vector5::zeros();
+        let mut jac = Matrix5::zeros();
+        for (i, &(c, side)) in union.iter().enumerate() {
+            let (r, r1) = (row_of(mu, &c, side)?, row_of(mu1, &c, side)?);
+            let v = [z[0], z[1], z[2], z[3]];
+            f[i] = (0..4).map(|k| r.a[k] * v[k]).sum::<f64>() + r.c;
+            for k in 0..4 {
+                jac[(i, k)] = r.a[k];
+            }
+            // affine in μ: the derivative is the difference of the rows at μ + 1 and μ
+            jac[(i, 4)] = (0..4).map(|k| (r1.a[k] - r.a[k]) * v[k]).sum::<f64>() + (r1.c - r.c);
+        }
+        Some((f, jac))
+    };
+    let mut z = Vector5::new(start.2[0], start.2[1], start.2[2], start.1, start.0);
+    let mut converged = false;
+    for _ in 0..40 {
+        let (f, jac) = eval(&z)?;
+        let step = jac.lu().solve(&f)?;
+        z -= step;
+        if !z.iter().all(|v| v.is_finite()) || z[4] <= 0.0 {
+            return None;
+        }
+        if step.norm() <= 1e-14 * (1.0 + z.norm()) {
+            converged = true;
+            break;
+        }
+    }
+    if !converged {
+        return None;
+    }
+    let (mu, lambda, x) = (z[4], z[3], [z[0], z[1], z[2]]);
+    let widen = CLUSTER_REL * mu_hi;
+    if mu < mu_lo - widen || mu > mu_hi + widen {
+        return None;
+    }
+    // admissible at every joint (to the survey's event tolerance)
+    let admissible = rows(arch, joints, eta, mu, load).iter().all(|r| {
+        let size = magnitude(r.contact.kind, eta, mu, &x, settings.magnitude_floor)
+            * (1.0 + lambda.abs());
+        r.at(&x, lambda) <= settings.event_tol * size
+    });
+    let continuous =
+        continuous_at(states.first()?, lambda) && continuous_at(states.last()?, lambda);
+    admissible.then(|| ExactCorner {
+        mu,
+        lambda,
+        x,
+        pattern: union,
+        continuous,
+    })
+}
+
+/// Brackets every change of branch between `lo` and `hi` (on different branches).
+fn bisect(
+    mut lo: CurveSample,
+    mut hi: CurveSample,
+    at: &dyn Fn(f64) -> Result<CurveSample, InputError>,
+    key: &dyn Fn(&CurveSample) -> BranchKey,
+    budget: &mut usize,
+    corners: &mut Vec<Corner>,
+) -> Result<(), InputError> {
+    let (k_lo, k_hi) = (key(&lo), key(&hi));
+    loop {
+        let mid = if hi.0 > 2.0 * lo.0 && lo.0 > 0.0 {
+            (lo.0 * hi.0).sqrt()
+        } else {
+            lo.0 + 0.5 * (hi.0 - lo.0)
+        };
+        let tight = mid <= lo.0 || mid >= hi.0;
+        if tight || *budget == 0 || corners.len() >= MAX_CORNERS {
+            corners.push(Corner {
+                below: lo,
+                above: hi,
+                bracketed: tight,
+                exact: None,
+            });
+            return Ok(());
+        }
+        *budget -= 1;
+        let m = at(mid)?;
+        let k = key(&m);
+        if k == k_lo {
+            lo = m;
+        } else if k == k_hi {
+            hi = m;
+        } else {
+            // a third branch between: bracket both sides of it
+            bisect(lo, m.clone(), at, key, budget, corners)?;
+            return bisect(m, hi, at, key, budget, corners);
+        }
+    }
+}
