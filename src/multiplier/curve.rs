@@ -411,23 +411,26 @@ fn exact_corner(
         }
         Some((f, jac))
     };
-    let mut z = Vector5::new(start.2[0], start.2[1], start.2[2], start.1, start.0);
-    let mut converged = false;
-    for _ in 0..40 {
-        let (f, jac) = eval(&z)?;
-        let step = jac.lu().solve(&f)?;
-        z -= step;
-        if !z.iter().all(|v| v.is_finite()) || z[4] <= 0.0 {
-            return None;
+    let newton = |mut z: Vector5<f64>| -> Option<Vector5<f64>> {
+        for _ in 0..40 {
+            let (f, jac) = eval(&z)?;
+            let step = jac.lu().solve(&f)?;
+            z -= step;
+            if !z.iter().all(|v| v.is_finite()) || z[4] <= 0.0 {
+                return None;
+            }
+            if step.norm() <= 1e-14 * (1.0 + z.norm()) {
+                return Some(z);
+            }
         }
-        if step.norm() <= 1e-14 * (1.0 + z.norm()) {
-            converged = true;
-            break;
-        }
-    }
-    if !converged {
-        return None;
-    }
+        None
+    };
+    let z = newton(Vector5::new(
+        start.2[0], start.2[1], start.2[2], start.1, start.0,
+    ))?;
+    // again from the root rounded to 9 digits: the start's last bits (LP noise) do not
+    // reach the answer, which is then the same run to run
+    let z = newton(z.map(|v| format!("{v:.8e}").parse().unwrap_or(v)))?;
     let (mu, lambda, x) = (z[4], z[3], [z[0], z[1], z[2]]);
     let widen = CLUSTER_REL * mu_hi;
     if mu < mu_lo - widen || mu > mu_hi + widen {
