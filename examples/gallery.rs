@@ -99,14 +99,14 @@ fn main() {
         .map(|i| 0.6 * (2.0f64 / 0.6).powf(i as f64 / 29.0))
         .collect();
     mus.push(f64::INFINITY);
-    let samples =
-        arch_enum::multiplier::sample(&six, 0.6364, &left, &mus, &s, &|_, _| {}).expect("samples");
+    let traced =
+        arch_enum::multiplier::trace(&six, 0.6364, &left, &mus, &s, &|_, _| {}).expect("curve");
     save(
         dir,
         "load_curve",
         &arch_enum::render::plot_load_curve::svg(
             "β_R = 0.244, β_L = 3.149 — horizontal acceleration, η = 0.6364: λ against μ",
-            &samples,
+            &traced,
         )
         .expect("load curve figure"),
     );

@@ -9,7 +9,7 @@ use crate::arch::{fmt_value, Arch, InputError, JointLayout};
 use crate::friction::least_friction;
 use crate::limit_curve::mu_grid;
 use crate::load::LiveLoad;
-use crate::multiplier::{check_load, sample, survey, trace, CurveSample, LoadOutcome};
+use crate::multiplier::{check_load, survey, trace, LoadCurve, LoadOutcome};
 use crate::render::load::{curve_json, curve_table, json, table, LoadQuestion};
 use crate::settings::Settings;
 use clap::{ArgGroup, Args};
@@ -232,16 +232,13 @@ pub(crate) fn run_curve(a: LoadCurveArgs, settings: &Settings, io: &mut Io) -> E
 }
 
 impl LoadCurveArgs {
-    /// The figure's title and its samples (the `plot load-curve` figure).
-    pub(crate) fn samples(
-        &self,
-        settings: &Settings,
-    ) -> Result<(String, Vec<CurveSample>), InputError> {
+    /// The figure's title and the traced curve (the `plot load-curve` figure).
+    pub(crate) fn trace(&self, settings: &Settings) -> Result<(String, LoadCurve), InputError> {
         let arch = self.arch.build()?;
         let load = self.live.build(&arch)?;
         crate::arch::check_eta(self.eta)?;
         let grid = mu_samples(&arch, self.mu_min, self.mu_max, self.points, settings)?;
-        let samples = sample(&arch, self.eta, &load, &grid, settings, &|_, _| {})?;
+        let samples = trace(&arch, self.eta, &load, &grid, settings, &|_, _| {})?;
         let what = match load {
             LiveLoad::Horizontal { .. } => "horizontal acceleration".to_string(),
             LiveLoad::Point { beta } => format!("point load at {:.2}°", beta.to_degrees()),

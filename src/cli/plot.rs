@@ -235,8 +235,14 @@ pub(crate) fn run(figure: Figure, settings: &Settings, io: &mut Io) -> Exit {
                 .map(|s| plot_arch::svg_panels(&s)),
             Err(e) => return io.bad_input(&e),
         },
-        Figure::LoadCurve { curve, .. } => match curve.samples(settings) {
-            Ok((title, samples)) => Ok(crate::render::plot_load_curve::svg(&title, &samples)),
+        Figure::LoadCurve { curve, .. } if curve.json => {
+            return io.bad_input(&InputError::Inconsistent {
+                arg: "--json",
+                reason: "plot load-curve draws a figure; `arch-enum load-curve --json` prints the numbers".into(),
+            })
+        }
+        Figure::LoadCurve { curve, .. } => match curve.trace(settings) {
+            Ok((title, traced)) => Ok(crate::render::plot_load_curve::svg(&title, &traced)),
             Err(e) => return io.bad_input(&e),
         },
         Figure::Eccentricity { state: st, .. } => match plot_inputs(&st) {

@@ -336,7 +336,11 @@ fn least(answer: &Result<LoadOutcome, String>) -> Option<(f64, Reactions, Vec<(C
     Some((
         l.lambda,
         l.x,
-        l.pattern.iter().copied().zip(l.sides.iter().copied()).collect(),
+        l.pattern
+            .iter()
+            .copied()
+            .zip(l.sides.iter().copied())
+            .collect(),
     ))
 }
 
@@ -438,8 +442,8 @@ fn exact_corner(
     }
     // admissible at every joint (to the survey's event tolerance)
     let admissible = rows(arch, joints, eta, mu, load).iter().all(|r| {
-        let size = magnitude(r.contact.kind, eta, mu, &x, settings.magnitude_floor)
-            * (1.0 + lambda.abs());
+        let size =
+            magnitude(r.contact.kind, eta, mu, &x, settings.magnitude_floor) * (1.0 + lambda.abs());
         r.at(&x, lambda) <= settings.event_tol * size
     });
     let continuous =

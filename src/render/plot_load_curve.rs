@@ -5,7 +5,7 @@
 //! lowers the collapse load; the gap is shaded.
 
 use crate::collapse_mode::CollapseMode;
-use crate::multiplier::LoadOutcome;
+use crate::multiplier::{LoadCurve, LoadOutcome};
 use crate::render::plot::{mode_color, short_num, Axis, AxisCoord, FAMILY};
 use plotters::prelude::*;
 
@@ -19,19 +19,31 @@ fn err(e: impl std::fmt::Display) -> String {
 /// One sample: μ, λ_static, and the least limit state (λ, mode) where there is one.
 type Sample = (f64, Option<f64>, Option<(f64, CollapseMode)>);
 
-/// Draws the samples `(μ, outcome)` (a last one at μ = ∞ allowed) with `title` on top.
-pub fn svg(title: &str, samples: &[(f64, Result<LoadOutcome, String>)]) -> Result<String, String> {
-    let pts: Vec<Sample> = samples
-        .iter()
-        .map(|(mu, o)| match o {
-            Ok(LoadOutcome::Limits(s)) => (
-                *mu,
-                s.lambda_static.map(|m| m.0),
-                s.limit_states.first().map(|l| (l.lambda, l.mode)),
-            ),
-            _ => (*mu, None, None),
-        })
-        .collect();
+fn point((mu, o): &(f64, Result<LoadOutcome, String>)) -> Sample {
+    match o {
+        Ok(LoadOutcome::Limits(s)) => (
+            *mu,
+            s.lambda_static.map(|m| m.0),
+            s.limit_states.first().map(|l| (l.lambda, l.mode)),
+        ),
+        _ => (*mu, None, None),
+    }
+}
+
+/// Draws the traced curve (samples, a last one at μ = ∞ allowed, and the corners: the
+/// answers on both sides of each join the line, which breaks where λ jumps; exact corners
+/// are marked) with `title` on top.
+pub fn svg(title: &str, curve: &LoadCurve) -> Result<String, String> {
+    // samples and both sides of every corner, by μ; `true` after a corner's below side
+    // where λ jumps (the line breaks there)
+    let mut seq: Vec<(Sample, bool)> = curve.samples.iter().map(|s| (point(s), false)).collect();
+    for c in &curve.corners {
+        let jump = !c.continuous(1e-9);
+        seq.push((point(&c.below), jump));
+        seq.push((point(&c.above), false));
+    }
+    seq.sort_by(|a, b| a.0 .0.total_cmp(&b.0 .0));
+    let pts: Vec<Sample> = seq.iter().map(|p| p.0).collect();
     let finite: Vec<&Sample> = pts.iter().filter(|p| p.0.is_finite()).collect();
     let at_inf = pts.iter().find(|p| p.0.is_infinite());
     if finite.iter().all(|p| p.1.is_none()) {
@@ -112,20 +124,75 @@ pub fn svg(title: &str, samples: &[(f64, Result<LoadOutcome, String>)]) -> Resul
                     RGBColor(110, 110, 110).stroke_width(2),
                 )
             });
-        let lam: Vec<(f64, f64)> = finite
-            .iter()
-            .filter_map(|p| p.2.map(|(l, _)| (mu_ax.to(p.0), l)))
-            .collect();
-        chart
-            .draw_series(std::iter::once(PathElement::new(
-                lam,
-                BLACK.stroke_width(2),
-            )))
-            .map_err(err)?
-            .label("λ (least limit state: collapse)")
-            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(2)));
+        // λ: one polyline per stretch without a jump
+        let mut pieces: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
+        for (p, breaks) in seq.iter().filter(|p| p.0 .0.is_finite()) {
+            if let Some((l, _)) = p.2 {
+                pieces.last_mut().expect("one").push((mu_ax.to(p.0), l));
+            } else if !pieces.last().expect("one").is_empty() {
+                pieces.push(Vec::new());
+            }
+            if *breaks {
+                pieces.push(Vec::new());
+            }
+        }
+        for (i, piece) in pieces.into_iter().enumerate() {
+            let drawn = chart
+                .draw_series(std::iter::once(PathElement::new(
+                    piece,
+                    BLACK.stroke_width(2),
+                )))
+                .map_err(err)?;
+            if i == 0 {
+                drawn
+                    .label("λ (least limit state: collapse)")
+                    .legend(|(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(2))
+                    });
+            }
+        }
+        // corners: exact ones marked by a cross; a jump by a dotted vertical
+        let mut labelled = false;
+        for c in &curve.corners {
+            if let (Some(e), true) = (&c.exact, c.above.0.is_finite()) {
+                let (u, l) = (mu_ax.to(e.mu), e.lambda);
+                let drawn = chart
+                    .draw_series(std::iter::once(Cross::new(
+                        (u, l),
+                        6,
+                        BLACK.stroke_width(2),
+                    )))
+                    .map_err(err)?;
+                if !labelled {
+                    labelled = true;
+                    drawn
+                        .label("exact corner (five contacts active)")
+                        .legend(|(x, y)| Cross::new((x + 10, y), 6, BLACK.stroke_width(2)));
+                }
+            }
+            if let ((Some(a), Some(b)), false, true) =
+                (c.lambdas(), c.continuous(1e-9), c.above.0.is_finite())
+            {
+                let u = mu_ax.to(c.exact.as_ref().map_or(c.below.0, |e| e.mu));
+                chart
+                    .draw_series(DashedLineSeries::new(
+                        vec![(u, a), (u, b)],
+                        3,
+                        3,
+                        BLACK.stroke_width(1),
+                    ))
+                    .map_err(err)?;
+            }
+        }
         let mut modes: Vec<CollapseMode> = Vec::new();
-        for p in &finite {
+        for p in curve
+            .samples
+            .iter()
+            .map(point)
+            .filter(|p| p.0.is_finite())
+            .collect::<Vec<_>>()
+            .iter()
+        {
             if let Some((l, m)) = p.2 {
                 if !modes.contains(&m) {
                     modes.push(m);

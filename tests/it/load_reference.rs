@@ -518,7 +518,8 @@ fn load_curve_corners_match_the_brute_force() {
         .unwrap_or(6);
     let mut rng = Rng(0xc0_4e45_0000_0002);
     let settings = Settings::default();
-    let (mut exact, mut bracketed, mut jumps, mut far, mut clustered, mut chatter) = (0, 0, 0, 0, 0, 0);
+    let (mut exact, mut bracketed, mut jumps, mut far, mut clustered, mut chatter) =
+        (0, 0, 0, 0, 0, 0);
     let mut failures = Vec::new();
     let least = |r: &[f64]| r.first().copied();
     for case in 0..count {
@@ -548,7 +549,8 @@ fn load_curve_corners_match_the_brute_force() {
             Ok(LoadOutcome::Limits(s)) => s.lambda(),
             _ => None,
         };
-        let at_of = |c: &arch_enum::multiplier::curve::Corner| c.exact.as_ref().map_or(c.below.0, |e| e.mu);
+        let at_of =
+            |c: &arch_enum::multiplier::curve::Corner| c.exact.as_ref().map_or(c.below.0, |e| e.mu);
         for (ci, c) in curve.corners.iter().enumerate() {
             if !c.above.0.is_finite() {
                 continue;
@@ -646,7 +648,8 @@ fn load_curve_corners_match_the_brute_force() {
                             .iter()
                             .position(|s| {
                                 s.beta == contact.beta
-                                    && (s.loaded_side == (*side == Side::After && load.splits(s.beta)))
+                                    && (s.loaded_side
+                                        == (*side == Side::After && load.splits(s.beta)))
                             })
                             .expect("a section of the reference");
                         let v = value(reference.row((s, contact.kind)));
@@ -676,6 +679,9 @@ fn load_curve_corners_match_the_brute_force() {
         "{count} curves: {exact} exact corners, {bracketed} bracketed to neighbouring floats, {jumps} where lambda jumps, {far} with lambda or lambda_static > 1e3 and {clustered} in clusters not compared; {chatter} sides where another change of branch lies within 1e-7; {} disagreements",
         failures.len()
     );
-    assert!(exact + bracketed > 0, "no corner met: the test checks nothing");
+    assert!(
+        exact + bracketed > 0,
+        "no corner met: the test checks nothing"
+    );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }

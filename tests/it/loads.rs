@@ -684,4 +684,53 @@ fn load_curve_json() {
         reduced += usize::from(l < s * (1.0 - 1e-9));
     }
     assert!(reduced >= 1, "{v}");
+    // the corners, by increasing μ: each between its two sides, an exact one with its
+    // five contacts; the reduction window opens and closes with a jump of λ
+    let corners = v["corners"].as_array().unwrap();
+    assert!(corners.len() >= 5, "{v}");
+    let mut last = 0.0;
+    let mut jumps = 0;
+    for c in corners {
+        let (lo, hi) = (
+            c["mu_below"].as_f64().unwrap(),
+            c["mu_above"].as_f64().unwrap(),
+        );
+        assert!(lo > last && hi > lo, "{c}");
+        last = hi;
+        if c["exact"].as_bool().unwrap() {
+            let mu = c["mu"].as_f64().unwrap();
+            assert!(mu >= lo * (1.0 - 1e-6) && mu <= hi * (1.0 + 1e-6), "{c}");
+            assert!(c["lambda"].as_f64().unwrap() > 0.0);
+        } else {
+            assert_eq!(hi, lo.next_up(), "bracket of neighbouring floats: {c}");
+        }
+        if !c["continuous"].as_bool().unwrap() {
+            jumps += 1;
+            assert_ne!(c["below"]["pattern"], c["above"]["pattern"]);
+        }
+    }
+    assert!(jumps >= 2, "{v}");
+}
+
+/// `plot load-curve` draws; `--json` there is refused, naming the flag.
+#[test]
+fn plot_load_curve_refuses_json() {
+    let out = assert_cmd::Command::cargo_bin("arch-enum")
+        .unwrap()
+        .args([
+            "plot",
+            "load-curve",
+            "--alpha",
+            "0",
+            "--blocks",
+            "6",
+            "--eta",
+            "0.3",
+            "--horizontal",
+            "--json",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--json"));
 }
