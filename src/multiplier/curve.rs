@@ -328,7 +328,13 @@ fn clusters(
 }
 
 /// The least limit state of an answer: (λ, x, pattern with sides).
-fn least(answer: &Result<LoadOutcome, String>) -> Option<(f64, Reactions, Vec<(Contact, Side)>)> {
+/// Contacts with the side of a loaded section.
+type Pattern = Vec<(Contact, Side)>;
+
+/// A least limit state: (λ, x, pattern).
+type LeastState = (f64, Reactions, Vec<(Contact, Side)>);
+
+fn least(answer: &Result<LoadOutcome, String>) -> Option<LeastState> {
     let Ok(LoadOutcome::Limits(sv)) = answer else {
         return None;
     };
@@ -362,7 +368,7 @@ fn exact_corner(
     if !mu_hi.is_finite() {
         return None;
     }
-    let states: Vec<(f64, f64, Reactions, Vec<(Contact, Side)>)> = answers
+    let states: Vec<(f64, f64, Reactions, Pattern)> = answers
         .iter()
         .filter_map(|(mu, a)| least(a).map(|(l, x, p)| (*mu, l, x, p)))
         .collect();
@@ -396,7 +402,7 @@ fn exact_corner(
     let candidates = [distinct(&[&start.3])?, distinct(&ends)?, distinct(&all)?];
     let union = candidates.into_iter().find(|u| u.len() == 5)?;
     let on_union = |p: &Vec<(Contact, Side)>| distinct(&[&union, p]).is_some_and(|u| u.len() == 5);
-    let continuous_at = |s: &(f64, f64, Reactions, Vec<(Contact, Side)>), lambda: f64| {
+    let continuous_at = |s: &(f64, f64, Reactions, Pattern), lambda: f64| {
         on_union(&s.3) || (s.1 - lambda).abs() <= SAME_LAMBDA * (1.0 + lambda.abs())
     };
     let eval = |z: &Vector5<f64>| -> Option<(Vector5<f64>, Matrix5<f64>)> {
@@ -448,7 +454,7 @@ fn exact_corner(
     });
     let continuous =
         continuous_at(states.first()?, lambda) && continuous_at(states.last()?, lambda);
-    admissible.then(|| ExactCorner {
+    admissible.then_some(ExactCorner {
         mu,
         lambda,
         x,
