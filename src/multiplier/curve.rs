@@ -120,6 +120,12 @@ pub struct Corner {
     /// state (see [`ExactCorner`]); `None` where the change is not such a meeting (or not on
     /// a discrete arch): then the bracket is the answer.
     pub exact: Option<ExactCorner>,
+    /// How many changes of branch the bisection bracketed here: 1 for a simple corner;
+    /// more for a cluster (changes within `CLUSTER_REL` of each other), which is one
+    /// exact corner seen through the survey's tolerance, or — without `exact` — a stretch
+    /// where the answer flickers (near a singularity, e.g. λ growing without bound), whose
+    /// ends are `below` and `above`.
+    pub changes: usize,
 }
 
 /// A corner at which the patterns on both sides are active at once: five activation
@@ -155,11 +161,18 @@ impl Corner {
     }
     /// λ is continuous across the corner: at an exact corner, both sides' least limit
     /// states lie on its five contacts; else both sides have a collapse multiplier, equal to
-    /// `tol` relative (the bracket is then two neighbouring floats).
+    /// `tol` relative (the bracket is then two neighbouring floats), or to `SAME_LAMBDA` at
+    /// least across a cluster.
     pub fn continuous(&self, tol: f64) -> bool {
         if let Some(e) = &self.exact {
             return e.continuous;
         }
+        // a cluster spans the survey's tolerance band (~1e-8 in μ), across which λ moves
+        let tol = if self.changes > 1 {
+            tol.max(SAME_LAMBDA)
+        } else {
+            tol
+        };
         match self.lambdas() {
             (Some(a), Some(b)) => (a - b).abs() <= tol * a.abs().max(b.abs()).max(1.0),
             _ => false,
@@ -231,6 +244,7 @@ pub fn trace(
                         above: hi.clone(),
                         bracketed: false,
                         exact: None,
+                        changes: 1,
                     });
                     continue;
                 }
@@ -303,15 +317,12 @@ fn clusters(
         let mut inner: Vec<&CurveSample> = vec![&first.below];
         inner.extend(group.iter().map(|c| &c.above));
         let exact = exact_corner(arch, eta, load, &inner, settings);
-        if group.len() > 1 && exact.is_none() {
-            out.append(group); // separate changes after all
-            return;
-        }
         out.push(Corner {
             below: first.below.clone(),
             above: last.above.clone(),
             bracketed: group.iter().all(|c| c.bracketed),
             exact,
+            changes: group.len(),
         });
         group.clear();
     };
@@ -385,9 +396,12 @@ fn exact_corner(
         for p in pats {
             for &(c, side) in p.iter() {
                 let r = row_of(start.0, &c, side)?;
+                // one function to rounding (the extrados hinge rows on both sides of a
+                // loaded section differ in the last bits only)
+                let close = |p: f64, q: f64| (p - q).abs() <= 1e-13 * (1.0 + p.abs().max(q.abs()));
                 let same = union.iter().any(|&(d, t)| {
                     row_of(start.0, &d, t)
-                        .is_some_and(|q| (0..4).all(|k| q.a[k] == r.a[k]) && q.c == r.c)
+                        .is_some_and(|q| (0..4).all(|k| close(q.a[k], r.a[k])) && close(q.c, r.c))
                 });
                 if !same {
                     union.push((c, side));
@@ -486,6 +500,7 @@ fn bisect(
                 above: hi,
                 bracketed: tight,
                 exact: None,
+                changes: 1,
             });
             return Ok(());
         }

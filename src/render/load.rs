@@ -143,16 +143,15 @@ fn merged<'a>(
     let mut out: Vec<(Contact, Option<&'static str>)> = Vec::new();
     for (c, side) in pattern {
         let name = side_name(load, c, side);
-        if let Some(last) = out.last_mut() {
-            if name.is_some()
-                && last.1.is_some()
-                && last.0.beta == c.beta
-                && last.0.kind == c.kind
+        if let Some(twin) = out.iter_mut().find(|(d, side)| {
+            name.is_some()
+                && side.is_some()
+                && d.beta == c.beta
+                && d.kind == c.kind
                 && c.kind == crate::contact::ContactKind::HingeExtrados
-            {
-                last.1 = Some("both");
-                continue;
-            }
+        }) {
+            twin.1 = Some("both");
+            continue;
         }
         out.push((*c, name));
     }
@@ -497,6 +496,9 @@ struct CornerJson {
     mu_below: f64,
     mu_above: Option<f64>,
     bracketed: bool,
+    /// Changes of branch bracketed here (more than 1 without `exact`: the answer flickers
+    /// in this stretch).
+    changes: usize,
     /// λ continuous across the corner (two limit states cross) or not (a jump).
     continuous: bool,
     below: CornerSide,
@@ -545,6 +547,7 @@ pub fn curve_json(q: &LoadQuestion, curve: &LoadCurve) -> LoadCurveDoc {
                 mu_below: c.below.0,
                 mu_above: c.above.0.is_finite().then_some(c.above.0),
                 bracketed: c.bracketed,
+                changes: c.changes,
                 continuous: c.continuous(CONTINUOUS_TOL),
                 below: corner_side(&q.load, &c.below),
                 above: corner_side(&q.load, &c.above),
@@ -636,6 +639,10 @@ pub fn curve_table(q: &LoadQuestion, curve: &LoadCurve) -> String {
     for c in &curve.corners {
         let (below, above) = c.lambdas();
         let change = match (below, above) {
+            _ if c.exact.is_none() && c.changes > 1 => format!(
+                "the answer changes {} times in this stretch (no single corner: near a singularity the survey's answer flickers)",
+                c.changes
+            ),
             (Some(_), Some(_)) if c.continuous(CONTINUOUS_TOL) => "continuous".into(),
             (Some(a), Some(b)) => format!("lambda jumps {} -> {}", sig(a, 12), sig(b, 12)),
             _ => "a change of status".into(),
@@ -650,7 +657,7 @@ pub fn curve_table(q: &LoadQuestion, curve: &LoadCurve) -> String {
                 } else {
                     "inf".into()
                 },
-                if c.bracketed {
+                if c.bracketed || c.changes > 1 {
                     ""
                 } else {
                     " (not bisected to the end)"
