@@ -61,44 +61,9 @@ pub fn max_margin(rows: &[Affine], cap: f64, tol: f64) -> Result<(Reactions, f64
             }
         }
     }
-    let m = a.len();
     let unused: [bool; 3] = std::array::from_fn(|k| a[7..].iter().all(|r| r[k] == 0.0));
-    let mut basis = [0usize, 1, 2, 3];
-    let mut in_basis = vec![false; m];
-    for &i in &basis {
-        in_basis[i] = true;
-    }
-    let mut degenerate = 0usize;
-    for _ in 0..(50 * m + 100) {
-        let bmat = Matrix4::from_fn(|r, c| a[basis[c]][r]);
-        let lu = bmat.lu();
-        // primal point z solves Bᵀ z = b_B
-        let bt = bmat.transpose().lu();
-        let z = bt
-            .solve(&Vector4::from_fn(|i, _| b[basis[i]]))
-            .ok_or_else(|| LpOutcome::Failed("singular basis".into()))?;
-        // dual values y_B solve B y = c = e_s
-        let y = lu
-            .solve(&Vector4::new(0.0, 0.0, 0.0, 1.0))
-            .ok_or_else(|| LpOutcome::Failed("singular basis".into()))?;
-        // pricing: the most violated primal row (Bland: the first one after stalls)
-        let scale = 1.0 + z[0].abs() + z[1].abs() + z[2].abs();
-        let mut enter = None;
-        let mut worst = -tol * scale;
-        for j in 0..m {
-            if in_basis[j] {
-                continue;
-            }
-            let slack = b[j] - (a[j][0] * z[0] + a[j][1] * z[1] + a[j][2] * z[2] + a[j][3] * z[3]);
-            if slack < worst {
-                enter = Some(j);
-                if degenerate > 8 {
-                    break; // Bland: lowest index
-                }
-                worst = slack;
-            }
-        }
-        let Some(j) = enter else {
+    match dual_simplex(&a, &b, S, [0, 1, 2, 3], 3, tol)? {
+        End::Optimal { z, basis, .. } => {
             // A box row still basic: its coordinate sits on the box. That is harmless only
             // for a coordinate no row involves (w in the friction-only problem), which is
             // then set to 0; otherwise let the caller fall back to the reference path.
@@ -115,7 +80,79 @@ pub fn max_margin(rows: &[Affine], cap: f64, tol: f64) -> Result<(Reactions, f64
                     }
                 }
             }
-            return Ok((x, z[3]));
+            Ok((x, z[3]))
+        }
+        End::DualUnbounded => Err(LpOutcome::Failed(
+            "dual unbounded: primal infeasible".into(),
+        )),
+    }
+}
+
+/// The objective e₄ of the margin LP (maximise s).
+const S: [f64; 4] = [0.0, 0.0, 0.0, 1.0];
+
+/// How [`dual_simplex`] ended.
+enum End {
+    /// Every row holds at z (to the tolerance): the optimal vertex z = B⁻ᵀ b_B and its
+    /// basis (dual values B⁻¹c ≥ 0).
+    Optimal { z: Vector4<f64>, basis: [usize; 4] },
+    /// The entering row has no positive pivot: the dual is unbounded, the primal (with
+    /// every row given, box rows included) infeasible.
+    DualUnbounded,
+}
+
+/// The revised simplex method on the dual of max cᵀz subject to a_j·z ≤ b_j (z ∈ R⁴),
+/// from the dual-feasible `basis` (B⁻¹c ≥ 0): each iteration prices every row (its
+/// reduced cost is the primal slack at z = B⁻ᵀ b_B), lets the most violated one enter
+/// (Bland's rule, the first violated, after more than 8 degenerate steps) and does the
+/// ratio test on B⁻¹ a_j. A row is violated when its slack is below −`tol` × (1 + the
+/// 1-norm of the first `scale_dims` coordinates of z).
+fn dual_simplex(
+    a: &[[f64; 4]],
+    b: &[f64],
+    c: [f64; 4],
+    mut basis: [usize; 4],
+    scale_dims: usize,
+    tol: f64,
+) -> Result<End, LpOutcome> {
+    let m = a.len();
+    let mut in_basis = vec![false; m];
+    for &i in &basis {
+        in_basis[i] = true;
+    }
+    let c = Vector4::from_row_slice(&c);
+    let mut degenerate = 0usize;
+    for _ in 0..(50 * m + 100) {
+        let bmat = Matrix4::from_fn(|r, c| a[basis[c]][r]);
+        let lu = bmat.lu();
+        // primal point z solves Bᵀ z = b_B
+        let bt = bmat.transpose().lu();
+        let z = bt
+            .solve(&Vector4::from_fn(|i, _| b[basis[i]]))
+            .ok_or_else(|| LpOutcome::Failed("singular basis".into()))?;
+        // dual values y_B solve B y = c
+        let y = lu
+            .solve(&c)
+            .ok_or_else(|| LpOutcome::Failed("singular basis".into()))?;
+        // pricing: the most violated primal row (Bland: the first one after stalls)
+        let scale = z.iter().take(scale_dims).fold(1.0, |s, v| s + v.abs());
+        let mut enter = None;
+        let mut worst = -tol * scale;
+        for j in 0..m {
+            if in_basis[j] {
+                continue;
+            }
+            let slack = b[j] - (a[j][0] * z[0] + a[j][1] * z[1] + a[j][2] * z[2] + a[j][3] * z[3]);
+            if slack < worst {
+                enter = Some(j);
+                if degenerate > 8 {
+                    break; // Bland: lowest index
+                }
+                worst = slack;
+            }
+        }
+        let Some(j) = enter else {
+            return Ok(End::Optimal { z, basis });
         };
         // ratio test on d = B⁻¹ a_j
         let d = lu
@@ -138,9 +175,7 @@ pub fn max_margin(rows: &[Affine], cap: f64, tol: f64) -> Result<(Reactions, f64
             }
         }
         let Some((k, ratio)) = leave else {
-            return Err(LpOutcome::Failed(
-                "dual unbounded: primal infeasible".into(),
-            ));
+            return Ok(End::DualUnbounded);
         };
         degenerate = if ratio <= RATIO_TIE {
             degenerate + 1
@@ -207,4 +242,102 @@ pub fn kinematic(
         }
     }
     Some(best.map(|b| b.1).ok_or(LpOutcome::Infeasible))
+}
+
+/// Rows 0..[`MULTIPLIER_ROWS`] of the dense multiplier LP are its own: λ ≥ 0, the box
+/// |x_k| ≤ [`BOX`] and λ ≤ [`LAMBDA_BOX`]; the caller's rows follow.
+pub const MULTIPLIER_ROWS: usize = 8;
+/// The bound on λ that, with the box on the reactions, starts the simplex of the
+/// largest multiplier (an optimum on it is no optimum of the problem).
+pub const LAMBDA_BOX: f64 = 1e12;
+/// A warm-start basis is used when its dual values are ≥ −this (rounding of B⁻¹c).
+const WARM_DUAL_TOL: f64 = 1e-12;
+
+/// The least or largest multiplier λ ≥ 0 of [`super::highs::multiplier_extreme`] without
+/// equality rows: optimise λ, the last of z = (h, v, w, λ), subject to `a · z + c ≤ 0`
+/// for every row (scaled to unit gradient norm, as on the HiGHS path). Returns the optimal
+/// z and its basis (indices into this LP's rows: [`MULTIPLIER_ROWS`] of its own, then the
+/// caller's), which starts the next call through `warm` when the caller only appends
+/// rows: the basis stays dual feasible, so the simplex goes on from the previous optimum.
+/// `warm` is checked (in range, nonsingular, dual feasible) and ignored otherwise.
+///
+/// The dense path decides only what it can prove without its artificial bounds: an
+/// optimum with the box or λ's bound in the basis, an infeasible boxed LP (primal
+/// infeasibility of the problem itself, or a box that cuts every state off) and an
+/// unbounded λ all come back as `Failed`, and the caller falls back to HiGHS. `tol` is
+/// the feasibility tolerance on normalised rows, relative to 1 + ‖z‖₁.
+pub fn multiplier_extreme(
+    rows: &[([f64; 4], f64)],
+    maximise: bool,
+    tol: f64,
+    warm: Option<[usize; 4]>,
+) -> Result<([f64; 4], [usize; 4]), LpOutcome> {
+    let m = rows.len() + MULTIPLIER_ROWS;
+    let mut a: Vec<[f64; 4]> = Vec::with_capacity(m);
+    let mut b: Vec<f64> = Vec::with_capacity(m);
+    // 0: −λ ≤ 0; 1..=3: x_k ≤ BOX; 4..=6: −x_k ≤ BOX; 7: λ ≤ LAMBDA_BOX
+    a.push([0.0, 0.0, 0.0, -1.0]);
+    b.push(0.0);
+    for sign in [1.0, -1.0] {
+        for k in 0..3 {
+            let mut e = [0.0; 4];
+            e[k] = sign;
+            a.push(e);
+            b.push(BOX);
+        }
+    }
+    a.push([0.0, 0.0, 0.0, 1.0]);
+    b.push(LAMBDA_BOX);
+    for (g, c) in rows {
+        let n = g.iter().map(|v| v * v).sum::<f64>().sqrt();
+        if n > 0.0 {
+            a.push(g.map(|v| v / n));
+            b.push(-c / n);
+        } else if *c > 0.0 {
+            return Err(LpOutcome::Failed("a constant row is violated".into()));
+        } else {
+            // 0 ≤ −c holds: a row that never binds (kept so that indices stay the caller's)
+            a.push([0.0; 4]);
+            b.push(0.0);
+        }
+    }
+    let objective = if maximise {
+        [0.0, 0.0, 0.0, 1.0]
+    } else {
+        [0.0, 0.0, 0.0, -1.0]
+    };
+    // the cold start: λ's own bound in the objective's direction and the upper box
+    let cold = [if maximise { 7 } else { 0 }, 1, 2, 3];
+    let start = warm
+        .filter(|w| dual_feasible(&a, w, objective))
+        .unwrap_or(cold);
+    match dual_simplex(&a, &b, objective, start, 4, tol)? {
+        End::Optimal { z, basis, .. } => {
+            if basis.iter().any(|&i| (1..MULTIPLIER_ROWS).contains(&i)) {
+                return Err(LpOutcome::Failed(
+                    "the optimum touches the starting box".into(),
+                ));
+            }
+            // λ's own bound in the basis: λ = 0 exactly (as a bound on the HiGHS path)
+            let lambda = if basis.contains(&0) { 0.0 } else { z[3] };
+            Ok(([z[0], z[1], z[2], lambda], basis))
+        }
+        End::DualUnbounded => Err(LpOutcome::Failed(
+            "dual unbounded: the boxed LP is infeasible".into(),
+        )),
+    }
+}
+
+/// Whether `basis` indexes four distinct rows of `a` forming a nonsingular B with
+/// B⁻¹c ≥ −[`WARM_DUAL_TOL`].
+fn dual_feasible(a: &[[f64; 4]], basis: &[usize; 4], c: [f64; 4]) -> bool {
+    if basis.iter().any(|&i| i >= a.len())
+        || (0..4).any(|p| (p + 1..4).any(|q| basis[p] == basis[q]))
+    {
+        return false;
+    }
+    let bmat = Matrix4::from_fn(|r, col| a[basis[col]][r]);
+    bmat.lu()
+        .solve(&Vector4::from_row_slice(&c))
+        .is_some_and(|y| y.iter().all(|&v| v >= -WARM_DUAL_TOL))
 }

@@ -68,17 +68,50 @@ pub fn kinematic_farkas(
 }
 
 /// The least or largest multiplier λ ≥ 0 of a load problem (unknowns (h, v, w, λ), rows
-/// `a · z + c ≤ 0`, and `= 0` for `equal`; HiGHS). `Ok(None)`: λ unbounded;
-/// `Err(Infeasible)`: no state. After a back-end failure the LP is solved again with the
-/// reactions boxed at [`highs::REACTION_BOX`]: an optimum with a reaction on that box
-/// (see [`on_box`]) is no optimum of the problem, and the caller must say so.
+/// `a · z + c ≤ 0`, and `= 0` for `equal`). `Ok(None)`: λ unbounded;
+/// `Err(Infeasible)`: no state. Without equality rows the dense path
+/// ([`dense::multiplier_extreme`]) solves it when [`Settings::lp_backend`] says so, falling
+/// back to HiGHS whenever it cannot decide (unbounded, infeasible, an optimum on its
+/// box). After a HiGHS failure the LP is solved again with the reactions boxed at
+/// [`highs::REACTION_BOX`]: an optimum with a reaction on that box (see [`on_box`]) is no
+/// optimum of the problem, and the caller must say so.
 pub fn multiplier_extreme(
     rows: &[([f64; 4], f64)],
     equal: &[([f64; 4], f64)],
     maximise: bool,
     settings: &Settings,
 ) -> Result<Option<[f64; 4]>, LpOutcome> {
+    if equal.is_empty() {
+        return multiplier_extreme_warm(rows, maximise, settings, &mut WarmStart::default());
+    }
     highs::multiplier_extreme(rows, equal, maximise, settings.lp_tol)
+}
+
+/// The optimal basis of the last dense solve of [`multiplier_extreme_warm`] (none after a
+/// HiGHS solve): it starts the next one.
+#[derive(Debug, Clone, Default)]
+pub struct WarmStart(Option<[usize; 4]>);
+
+/// [`multiplier_extreme`] without equality rows, started from `warm` and leaving the new
+/// optimal basis there: for a sequence of LPs each of which appends rows to the last
+/// (the exchange method), where the previous optimum stays dual feasible. Any `warm` is
+/// safe: the dense path checks it and starts cold when it does not fit.
+pub fn multiplier_extreme_warm(
+    rows: &[([f64; 4], f64)],
+    maximise: bool,
+    settings: &Settings,
+    warm: &mut WarmStart,
+) -> Result<Option<[f64; 4]>, LpOutcome> {
+    if settings.lp_backend == LpBackend::Dense {
+        match dense::multiplier_extreme(rows, maximise, settings.dense_lp_tol, warm.0) {
+            Ok((z, basis)) => {
+                warm.0 = Some(basis);
+                return Ok(Some(z));
+            }
+            Err(_) => warm.0 = None,
+        }
+    }
+    highs::multiplier_extreme(rows, &[], maximise, settings.lp_tol)
 }
 
 /// Whether a solution of [`multiplier_extreme`] has a reaction on the retry's box (λ then

@@ -160,17 +160,22 @@ pub fn extreme(
         work.push((beta, Side::Before));
         work.push((beta, Side::After));
     }
+    // the rows of the working set, appended as angles join it (each LP extends the last,
+    // so its optimal basis starts the next: `lp::WarmStart`); the cap first
+    let mut rows: Vec<([f64; 4], f64)> = Vec::with_capacity(modes.len() * (work.len() + 16) + 1);
+    if maximise {
+        rows.push(([0.0, 0.0, 0.0, 1.0], -LAMBDA_CAP));
+    }
+    let mut in_rows = 0;
+    let mut warm = lp::WarmStart::default();
     for _ in 0..MAX_ROUNDS {
-        let mut rows: Vec<([f64; 4], f64)> = Vec::new();
-        for &(beta, side) in &work {
+        for &(beta, side) in &work[in_rows..] {
             for &kind in modes {
                 rows.push(p.row(kind, beta, side, 0));
             }
         }
-        if maximise {
-            rows.push(([0.0, 0.0, 0.0, 1.0], -LAMBDA_CAP));
-        }
-        let z = match lp::multiplier_extreme(&rows, &[], maximise, settings)? {
+        in_rows = work.len();
+        let z = match lp::multiplier_extreme_warm(&rows, maximise, settings, &mut warm)? {
             Some(z) => z,
             None => return Ok(None),
         };

@@ -141,3 +141,156 @@ fn settings_validate_names_the_field() {
     let e = bad.validate().unwrap_err().to_string();
     assert!(e.contains("settings.scan_points"), "{e}");
 }
+
+/// A 64-bit LCG in [0, 1) (a fixed stream: the cases below are reproducible).
+struct Lcg(u64);
+
+impl Lcg {
+    fn next(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+/// The dense multiplier LP (least and largest λ of `a · (h, v, w, λ) + c ≤ 0`, λ ≥ 0)
+/// against HiGHS on 400 random row sets: the rows of loaded arches at random joints
+/// (horizontal and point loads, hinges only and with friction, thick and thin) and rows
+/// drawn at random in R⁴. Wherever the dense path answers, HiGHS has an optimum with the
+/// same λ to 1e-9 relative and the dense z satisfies every row; where HiGHS finds λ
+/// unbounded or no state, the dense path declines (the caller then uses HiGHS), and
+/// `lp::multiplier_extreme` with the dense back end gives HiGHS's answer. A warm start
+/// from the optimum on half the rows gives the cold answer on all of them. Each kind of
+/// outcome occurs, and the dense path decides every bounded largest λ and most least ones.
+#[test]
+fn dense_multiplier_lp_matches_highs() {
+    use arch_enum::load::{rows, LiveLoad, LoadRow};
+    use arch_enum::lp::{self, dense, highs, LpOutcome};
+    use arch_enum::settings::LpBackend;
+    let settings = arch_enum::Settings {
+        lp_backend: LpBackend::Dense,
+        ..arch_enum::Settings::default()
+    };
+    let mut rng = Lcg(0x5eed_1a3b_da00_0011);
+    // bounded and decided: [least, largest]
+    let (mut bounded, mut decided) = ([0; 2], [0; 2]);
+    let (mut unbounded, mut infeasible) = (0, 0);
+    let rel = |a: f64, b: f64| (a - b).abs() / b.abs().max(1.0);
+    for case in 0..400 {
+        let physical = case % 2 == 0;
+        let maximise = (case / 2) % 2 == 0;
+        let set: Vec<([f64; 4], f64)> = if physical {
+            let alpha = -1.2 + 2.4 * rng.next();
+            let weight = if rng.next() < 0.5 {
+                WeightModel::Centreline
+            } else {
+                WeightModel::Centroid
+            };
+            let arch = Arch::symmetric(alpha, weight).unwrap();
+            let eta = 0.02 + 0.8 * rng.next();
+            let mu = if rng.next() < 0.4 {
+                f64::INFINITY
+            } else {
+                0.2 + 2.0 * rng.next()
+            };
+            let n = 3 + (rng.next() * 40.0) as usize;
+            let mut joints: Vec<f64> = (0..n)
+                .map(|_| arch.beta_right() + rng.next() * arch.span())
+                .collect();
+            joints.push(arch.beta_right());
+            joints.push(arch.beta_left());
+            joints.sort_by(f64::total_cmp);
+            let load = if rng.next() < 0.5 {
+                LiveLoad::Horizontal {
+                    towards_right: rng.next() < 0.5,
+                }
+            } else {
+                LiveLoad::Point {
+                    beta: joints[(rng.next() * joints.len() as f64) as usize],
+                }
+            };
+            rows(&arch, &joints, eta, mu, &load)
+                .iter()
+                .map(LoadRow::pair)
+                .collect()
+        } else {
+            let n = 3 + (rng.next() * 30.0) as usize;
+            (0..n)
+                .map(|_| {
+                    let a = [0; 4].map(|_| 2.0 * rng.next() - 1.0);
+                    (a, 2.0 * rng.next() - 1.0 - 0.3)
+                })
+                .collect()
+        };
+        let reference = highs::multiplier_extreme(&set, &[], maximise, 1e-10);
+        let fast = dense::multiplier_extreme(&set, maximise, 1e-13, None);
+        let combined = lp::multiplier_extreme(&set, &[], maximise, &settings);
+        let label = format!("case {case} (physical {physical}, maximise {maximise})");
+        match &reference {
+            Ok(Some(z)) if !lp::on_box(z) => bounded[maximise as usize] += 1,
+            Ok(_) => unbounded += 1,
+            Err(LpOutcome::Infeasible) => infeasible += 1,
+            Err(LpOutcome::Failed(e)) => panic!("{label}: HiGHS failed: {e}"),
+        }
+        if let Ok((z, _)) = fast {
+            decided[maximise as usize] += 1;
+            let Ok(Some(zr)) = reference else {
+                panic!("{label}: dense optimum {z:?}, HiGHS {reference:?}");
+            };
+            assert!(
+                !lp::on_box(&zr) && rel(z[3], zr[3]) <= 1e-9,
+                "{label}: dense lambda {} vs HiGHS {}",
+                z[3],
+                zr[3]
+            );
+            assert!(z[3] >= 0.0, "{label}: lambda {} < 0", z[3]);
+            let size = 1.0 + z.iter().map(|v| v.abs()).sum::<f64>();
+            for (a, c) in &set {
+                let norm = a.iter().map(|v| v * v).sum::<f64>().sqrt();
+                let value = a.iter().zip(&z).map(|(p, q)| p * q).sum::<f64>() + c;
+                assert!(
+                    value <= 1e-9 * norm * size,
+                    "{label}: row violated by {value}"
+                );
+            }
+        }
+        // the dense back end's answer is the dense optimum or HiGHS's
+        match (&combined, &fast, &reference) {
+            (Ok(Some(z)), Ok((zf, _)), _) => assert_eq!(z, zf, "{label}"),
+            (c, Err(_), r) => assert_eq!(c, r, "{label}"),
+            (c, _, _) => panic!("{label}: combined {c:?} after a dense optimum"),
+        }
+        // a warm start from the optimum on the first half of the rows
+        let half = set.len() / 2;
+        if let (Ok((_, basis)), Ok((cold, _))) = (
+            dense::multiplier_extreme(&set[..half], maximise, 1e-13, None),
+            &fast,
+        ) {
+            match dense::multiplier_extreme(&set, maximise, 1e-13, Some(basis)) {
+                Ok((warm, _)) => assert!(
+                    rel(warm[3], cold[3]) <= 1e-9,
+                    "{label}: warm {} vs cold {}",
+                    warm[3],
+                    cold[3]
+                ),
+                Err(e) => panic!("{label}: warm start failed where the cold one did not: {e:?}"),
+            }
+        }
+    }
+    println!(
+        "dense multiplier LP: bounded {bounded:?} (least, largest), decided by the dense path {decided:?}, {unbounded} unbounded, {infeasible} infeasible"
+    );
+    assert!(bounded[0] >= 50 && bounded[1] >= 50 && unbounded >= 20 && infeasible >= 20);
+    // every largest λ; the least λ = 0 is often attained on a face of states that
+    // reaches the dense path's box, where it declines
+    assert!(
+        decided[1] == bounded[1],
+        "largest: {decided:?} of {bounded:?}"
+    );
+    assert!(
+        decided[0] * 4 >= bounded[0] * 3,
+        "least: {decided:?} of {bounded:?}"
+    );
+}
