@@ -17,8 +17,9 @@ use crate::load::{live_activation, LiveLoad, Side};
 use crate::lp::{self, LpOutcome};
 use crate::scan::peaks_over;
 use crate::settings::Settings;
-use crate::statics::{actions, magnitude, Reactions};
+use crate::statics::{actions, magnitude, Affine, Reactions};
 use nalgebra::{DMatrix, DVector};
+use std::cell::{Cell, OnceCell};
 
 /// Relative violation at which the exchange stops (Newton finishes the job).
 const EXCHANGE_TOL: f64 = 1e-9;
@@ -42,15 +43,120 @@ pub struct LoadedContact {
 /// section its sections are on.
 type Piece = ((Radians, Location), (Radians, Location), Side);
 
-/// The problem: arch, η, μ, load.
+/// The problem: arch, η, μ, load; and, from the second scan of a solve on (every scan
+/// evaluates the activation functions at the same angles, and their trigonometry is most
+/// of a scan's work), those values on the scan's grid of each smooth piece.
 struct Loaded<'a> {
     arch: &'a Arch,
     eta: f64,
     mu: f64,
     load: &'a LiveLoad,
+    scans: Cell<usize>,
+    grids: OnceCell<Vec<Grid>>,
 }
 
-impl Loaded<'_> {
+/// The sampling grid of one smooth piece as [`peaks_over`] lays it out (`n` angles from
+/// `a` to `b`, the last one `b` itself), with each mode's activation function and its
+/// β-derivative there: the dead part (affine in x) and the live coefficient of λ.
+struct Grid {
+    a: Radians,
+    b: Radians,
+    betas: Vec<Radians>,
+    rows: Vec<[[(Affine, f64); 2]; 4]>,
+}
+
+impl Grid {
+    /// The cached rows at `beta` if it is one of the grid's angles.
+    fn at(&self, beta: Radians) -> Option<&[[(Affine, f64); 2]; 4]> {
+        let n = self.betas.len();
+        let t = (beta - self.a) / (self.b - self.a) * (n - 1) as f64;
+        if !(t >= 0.0 && t <= (n - 1) as f64) {
+            return None;
+        }
+        let i = t.round() as usize;
+        (self.betas[i] == beta).then(|| &self.rows[i])
+    }
+}
+
+impl<'a> Loaded<'a> {
+    fn new(arch: &'a Arch, eta: f64, mu: f64, load: &'a LiveLoad) -> Loaded<'a> {
+        Loaded {
+            arch,
+            eta,
+            mu,
+            load,
+            scans: Cell::new(0),
+            grids: OnceCell::new(),
+        }
+    }
+
+    /// The grid of each smooth piece with the activation functions there.
+    fn grids(&self, settings: &Settings) -> Vec<Grid> {
+        let modes = ContactKind::active_at(self.mu);
+        let n = settings.scan_points.max(3);
+        self.pieces()
+            .into_iter()
+            .map(|((a, _), (b, _), side)| {
+                // the grid of `peaks_over`, angle for angle
+                let betas: Vec<Radians> = (0..n)
+                    .map(|i| {
+                        if i + 1 == n {
+                            b
+                        } else {
+                            a + (b - a) * i as f64 / (n - 1) as f64
+                        }
+                    })
+                    .collect();
+                let rows = betas
+                    .iter()
+                    .map(|&beta| {
+                        let act = actions(self.arch, self.eta, beta);
+                        let live = self.load.actions_d(self.arch, self.eta, beta, side);
+                        let mut r = [[(
+                            Affine {
+                                g: [0.0; 3],
+                                c: 0.0,
+                            },
+                            0.0,
+                        ); 2]; 4];
+                        for (k, &mode) in modes.iter().enumerate() {
+                            for (d, slot) in r[k].iter_mut().enumerate() {
+                                *slot = (
+                                    act.activation(mode, d, self.eta, self.mu),
+                                    live_activation(mode, self.eta, self.mu, live[d]),
+                                );
+                            }
+                        }
+                        r
+                    })
+                    .collect();
+                Grid { a, b, betas, rows }
+            })
+            .collect()
+    }
+
+    /// (a, c) of every mode's activation function at β on `side` (β-derivative 0), in the
+    /// order of [`ContactKind::active_at`]: [`Self::row`] for all modes at once.
+    fn rows_at(&self, beta: Radians, side: Side) -> Vec<([f64; 4], f64)> {
+        let act = actions(self.arch, self.eta, beta);
+        let live = self.load.actions_d(self.arch, self.eta, beta, side)[0];
+        ContactKind::active_at(self.mu)
+            .iter()
+            .map(|&kind| {
+                let dead = act.activation(kind, 0, self.eta, self.mu);
+                (
+                    [
+                        dead.g[0],
+                        dead.g[1],
+                        dead.g[2],
+                        live_activation(kind, self.eta, self.mu, live),
+                    ],
+                    dead.c,
+                )
+            })
+            .collect()
+    }
+
     /// (a, c) of the activation function `kind` at β on `side`, β-derivative `order`:
     /// a · (h, v, w, λ) + c.
     fn row(&self, kind: ContactKind, beta: Radians, side: Side, order: usize) -> ([f64; 4], f64) {
@@ -105,9 +211,23 @@ impl Loaded<'_> {
     fn peaks(&self, x: &Reactions, lambda: f64, settings: &Settings) -> Vec<(Peak, Side)> {
         let modes = ContactKind::active_at(self.mu);
         let mut out = Vec::new();
-        for (from, to, side) in self.pieces() {
+        let grids = (self.scans.replace(self.scans.get() + 1) > 0)
+            .then(|| self.grids.get_or_init(|| self.grids(settings)));
+        for (i, (from, to, side)) in self.pieces().into_iter().enumerate() {
+            let grid = grids.map(|g| &g[i]);
             let phi = |beta: Radians, orders: usize| {
                 let mut v = [[0.0; 3]; 4];
+                if orders <= 2 {
+                    if let Some(rows) = grid.and_then(|g| g.at(beta)) {
+                        for (k, _) in modes.iter().enumerate() {
+                            for (d, slot) in v[k].iter_mut().enumerate().take(orders) {
+                                let (dead, live) = &rows[k][d];
+                                *slot = dead.at(x) + lambda * live;
+                            }
+                        }
+                        return v;
+                    }
+                }
                 let act = actions(self.arch, self.eta, beta);
                 let live = self.load.actions_d(self.arch, self.eta, beta, side);
                 for (k, &mode) in modes.iter().enumerate() {
@@ -143,12 +263,7 @@ pub fn extreme(
     maximise: bool,
     settings: &Settings,
 ) -> Result<Option<(f64, Reactions, Vec<LoadedContact>)>, LpOutcome> {
-    let p = Loaded {
-        arch,
-        eta,
-        mu,
-        load,
-    };
+    let p = Loaded::new(arch, eta, mu, load);
     let (a, b) = (arch.beta_right(), arch.beta_left());
     let modes = ContactKind::active_at(mu);
     // the working set: equally spaced angles, both sides of a point load's section
@@ -160,6 +275,15 @@ pub fn extreme(
         work.push((beta, Side::Before));
         work.push((beta, Side::After));
     }
+    // λ_min = 0 when the arch stands unloaded: the state of largest margin at λ = 0 on
+    // the working set, verified over the whole arch, proves it (one margin LP and one
+    // scan instead of an exchange whose every feasible state at λ = 0 is optimal, so
+    // that its LP vertices wander over the unloaded admissible set)
+    if !maximise {
+        if let Some(found) = stands_unloaded(&p, &work, settings) {
+            return Ok(Some(found));
+        }
+    }
     // the rows of the working set, appended as angles join it (each LP extends the last,
     // so its optimal basis starts the next: `lp::WarmStart`); the cap first
     let mut rows: Vec<([f64; 4], f64)> = Vec::with_capacity(modes.len() * (work.len() + 16) + 1);
@@ -170,9 +294,7 @@ pub fn extreme(
     let mut warm = lp::WarmStart::default();
     for _ in 0..MAX_ROUNDS {
         for &(beta, side) in &work[in_rows..] {
-            for &kind in modes {
-                rows.push(p.row(kind, beta, side, 0));
-            }
+            rows.extend(p.rows_at(beta, side));
         }
         in_rows = work.len();
         let z = match lp::multiplier_extreme_warm(&rows, maximise, settings, &mut warm)? {
@@ -213,6 +335,31 @@ pub fn extreme(
     )))
 }
 
+/// An admissible state at λ = 0, if the most interior state of the working set `work`
+/// (the static margin LP at λ = 0, [`lp::max_margin`]) is admissible over the whole arch
+/// ([`verify`]): the state and its active contacts. `None` says nothing (the arch may
+/// still stand unloaded; the exchange decides).
+fn stands_unloaded(
+    p: &Loaded,
+    work: &[(Radians, Side)],
+    settings: &Settings,
+) -> Option<(f64, Reactions, Vec<LoadedContact>)> {
+    let modes = ContactKind::active_at(p.mu);
+    let rows: Vec<Affine> = work
+        .iter()
+        .flat_map(|&(beta, _)| {
+            let a = actions(p.arch, p.eta, beta);
+            modes.iter().map(move |&m| a.activation(m, 0, p.eta, p.mu))
+        })
+        .collect();
+    let (x, s) = lp::max_margin(&rows, p.arch.span(), settings).ok()?;
+    if s < 0.0 {
+        return None;
+    }
+    let pattern = verify(p, &x, 0.0, settings).ok()?;
+    Some((0.0, x, pattern))
+}
+
 /// Newton on the active pattern from the exchange's (x, λ), verified by a scan; λ = 0
 /// with the arch standing unloaded needs no refinement.
 fn refine(
@@ -231,7 +378,7 @@ fn refine(
         ));
     }
     let pattern = active(p, &x, lambda, peaks, 1e-7, settings);
-    let (lambda, x) = newton_verified(
+    newton_verified(
         p,
         x,
         lambda,
@@ -242,15 +389,14 @@ fn refine(
         },
         settings,
     )
-    .map_err(LpOutcome::Failed)?;
-    let pattern = verify(p, &x, lambda, settings).map_err(LpOutcome::Failed)?;
-    Ok((lambda, x, pattern))
+    .map_err(LpOutcome::Failed)
 }
 
 /// [`newton`] on `pattern`, verified over the arch; where the pattern has one equation too
 /// many (a contact within the activity slack that is not active at the root, or a
 /// redundant one), Newton on the pattern less each contact in turn, the first root that is
-/// admissible over the whole arch.
+/// admissible over the whole arch. Returns λ, the state and its active contacts
+/// ([`verify`]).
 fn newton_verified(
     p: &Loaded,
     x: Reactions,
@@ -258,10 +404,15 @@ fn newton_verified(
     pattern: &[LoadedContact],
     goal: Goal,
     settings: &Settings,
-) -> Result<(f64, Reactions), String> {
+) -> Result<(f64, Reactions, Vec<LoadedContact>), String> {
+    let verified = |(l, x): (f64, Reactions)| verify(p, &x, l, settings).map(|a| (l, x, a));
     let first = match newton(p, x, lambda, pattern, goal) {
-        Ok(r) if verify(p, &r.1, r.0, settings).is_ok() => return Ok(r),
-        Ok(_) => "the root of the pattern's system is not admissible over the arch".to_string(),
+        Ok(r) => match verified(r) {
+            Ok(found) => return Ok(found),
+            Err(_) => {
+                "the root of the pattern's system is not admissible over the arch".to_string()
+            }
+        },
         Err(e) => e,
     };
     for drop in 0..pattern.len() {
@@ -269,10 +420,8 @@ fn newton_verified(
             .filter(|&i| i != drop)
             .map(|i| pattern[i])
             .collect();
-        if let Ok(r) = newton(p, x, lambda, &rest, goal) {
-            if verify(p, &r.1, r.0, settings).is_ok() {
-                return Ok(r);
-            }
+        if let Ok(Ok(found)) = newton(p, x, lambda, &rest, goal).map(verified) {
+            return Ok(found);
         }
     }
     Err(first)
@@ -342,7 +491,9 @@ pub(crate) struct Goal {
 /// one or more equations short and an objective is given, the KKT conditions of the optimum
 /// complete it: Σ y_i ∇_z φ_i = ±e_λ with multipliers y_i ≥ 0 (unknowns), the tangencies
 /// being their β-stationarity. A root farther than `goal.reach` from the start, or with
-/// λ < 0 or a negative multiplier, is rejected.
+/// λ < 0 or a negative multiplier, is rejected; so is a square pattern's root (a vertex)
+/// whose multipliers, Σ y_i ∇_z φ_i = ±e_λ, are not all ≥ 0 when an objective is given:
+/// an admissible vertex that is not the optimum (a back end's inexact z can point at one).
 fn newton(
     p: &Loaded,
     x: Reactions,
@@ -503,6 +654,21 @@ fn newton(
     if kkt.is_some() && (0..n).any(|i| u[4 + k + i] < -1e-9) {
         return Err("a KKT multiplier of the pattern is negative: not the optimum".into());
     }
+    if let (None, Some(max)) = (kkt, goal.maximise) {
+        // a vertex: its multipliers Σ y_i a_i = ±e_λ must be ≥ 0 for it to be the optimum
+        let a = DMatrix::from_fn(4, n, |r, c| {
+            p.row(pattern[c].contact.kind, beta_of(&u, c), pattern[c].side, 0)
+                .0[r]
+        });
+        let sign = if max { 1.0 } else { -1.0 };
+        let e = DVector::from_fn(4, |r, _| if r == 3 { sign } else { 0.0 });
+        if a.lu()
+            .solve(&e)
+            .is_some_and(|y| y.iter().any(|&v| v < -1e-9))
+        {
+            return Err("a multiplier of the vertex is negative: not the optimum".into());
+        }
+    }
     Ok((u[3], [u[0], u[1], u[2]]))
 }
 
@@ -522,12 +688,7 @@ pub fn carry_over(
     h: f64,
     settings: &Settings,
 ) -> Option<(f64, Reactions, Vec<LoadedContact>)> {
-    let p = Loaded {
-        arch,
-        eta,
-        mu,
-        load,
-    };
+    let p = Loaded::new(arch, eta, mu, load);
     let fixed = |c: &LoadedContact| {
         c.contact.at == Location::Springing
             || matches!(*load, LiveLoad::Point { beta } if beta == c.contact.beta)
@@ -578,7 +739,5 @@ pub fn carry_over(
         maximise: None,
         reach: 0.1,
     };
-    let (lambda, x) = newton_verified(&p, x, lambda, &merged, goal, settings).ok()?;
-    let active = verify(&p, &x, lambda, settings).ok()?;
-    Some((lambda, x, active))
+    newton_verified(&p, x, lambda, &merged, goal, settings).ok()
 }

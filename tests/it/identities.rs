@@ -294,3 +294,61 @@ fn dense_multiplier_lp_matches_highs() {
         "least: {decided:?} of {bounded:?}"
     );
 }
+
+/// A hard case of the continuous exchange (found comparing the dense and HiGHS paths on
+/// random arches): a point load on an unsymmetric arch, λ_static ≈ 433 with reactions
+/// ≈ 400, where HiGHS's z (to its 1e-10 tolerance) pointed Newton at an admissible vertex
+/// that is not the optimum (λ = 431.91, a multiplier of −418). The dense path's exact
+/// vertex gives the optimum, which fine discretisations bound from above and attain (their
+/// joints include every contact: the springings and the loaded section); the HiGHS path
+/// now rejects the wrong vertex by its multipliers and answers no decision rather than a
+/// wrong λ.
+#[test]
+fn continuous_lambda_static_is_the_optimum_not_an_admissible_vertex() {
+    use arch_enum::load::LiveLoad;
+    use arch_enum::multiplier::{static_range, StaticRange};
+    use arch_enum::settings::LpBackend;
+    let (br, bl, eta, mu, bp) = (
+        -0.21973324701638386,
+        2.4199860547471412,
+        0.3472361077353397,
+        0.828971296174701,
+        1.026148395555269,
+    );
+    let arch = Arch::new(br, bl, WeightModel::Centreline).unwrap();
+    let load = LiveLoad::Point { beta: bp };
+    let largest = |arch: &Arch, settings: &arch_enum::Settings| match static_range(
+        arch, eta, mu, &load, settings,
+    )
+    .unwrap()
+    {
+        Ok(StaticRange::Interval { max: Some(m), .. }) => Ok(m.0),
+        other => Err(format!("{other:?}")),
+    };
+    let dense = arch_enum::Settings::default();
+    let n = 4000;
+    let mut joints: Vec<f64> = (0..=n)
+        .map(|i| {
+            if i == n {
+                bl
+            } else {
+                br + (bl - br) * i as f64 / n as f64
+            }
+        })
+        .collect();
+    joints.push(bp);
+    joints.sort_by(f64::total_cmp);
+    let fine = largest(&arch.clone().with_joints(&joints).unwrap(), &dense).unwrap();
+    let exact = largest(&arch, &dense).unwrap();
+    assert!(
+        (exact - fine).abs() <= 1e-9 * fine,
+        "continuous {exact} vs {n} joints {fine}"
+    );
+    let reference = arch_enum::Settings {
+        lp_backend: LpBackend::Highs,
+        ..dense
+    };
+    if let Ok(l) = largest(&arch, &reference) {
+        assert!((l - fine).abs() <= 1e-9 * fine, "HiGHS path {l} vs {fine}");
+    }
+}
