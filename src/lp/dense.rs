@@ -245,11 +245,11 @@ pub fn kinematic(
 }
 
 /// Rows 0..[`MULTIPLIER_ROWS`] of the dense multiplier LP are its own: λ ≥ 0, the box
-/// |x_k| ≤ [`BOX`] and λ ≤ [`LAMBDA_BOX`]; the caller's rows follow.
+/// |x_k| ≤ `reaction_box` and λ ≤ [`LAMBDA_BOX`]; the caller's rows follow.
 pub const MULTIPLIER_ROWS: usize = 8;
 /// The bound on λ that, with the box on the reactions, starts the simplex of the
 /// largest multiplier (an optimum on it is no optimum of the problem).
-pub const LAMBDA_BOX: f64 = 1e12;
+pub const LAMBDA_BOX: f64 = 1e15;
 /// A warm-start basis is used when its dual values are ≥ −this (rounding of B⁻¹c).
 const WARM_DUAL_TOL: f64 = 1e-12;
 
@@ -258,8 +258,9 @@ const WARM_DUAL_TOL: f64 = 1e-12;
 /// for every row (scaled to unit gradient norm, as on the HiGHS path). Returns the optimal
 /// z and its basis (indices into this LP's rows: [`MULTIPLIER_ROWS`] of its own, then the
 /// caller's), which starts the next call through `warm` when the caller only appends
-/// rows: the basis stays dual feasible, so the simplex goes on from the previous optimum.
-/// `warm` is checked (in range, nonsingular, dual feasible) and ignored otherwise.
+/// rows or changes the box: the basis stays dual feasible (that depends on the rows'
+/// gradients only), so the simplex goes on from the previous optimum. `warm` is checked
+/// (in range, nonsingular, dual feasible) and ignored otherwise.
 ///
 /// The dense path decides only what it can prove without its artificial bounds: an
 /// optimum with the box or λ's bound in the basis, an infeasible boxed LP (primal
@@ -271,11 +272,12 @@ pub fn multiplier_extreme(
     maximise: bool,
     tol: f64,
     warm: Option<[usize; 4]>,
+    reaction_box: f64,
 ) -> Result<([f64; 4], [usize; 4]), LpOutcome> {
     let m = rows.len() + MULTIPLIER_ROWS;
     let mut a: Vec<[f64; 4]> = Vec::with_capacity(m);
     let mut b: Vec<f64> = Vec::with_capacity(m);
-    // 0: −λ ≤ 0; 1..=3: x_k ≤ BOX; 4..=6: −x_k ≤ BOX; 7: λ ≤ LAMBDA_BOX
+    // 0: −λ ≤ 0; 1..=3: x_k ≤ reaction_box; 4..=6: −x_k ≤ reaction_box; 7: λ ≤ LAMBDA_BOX
     a.push([0.0, 0.0, 0.0, -1.0]);
     b.push(0.0);
     for sign in [1.0, -1.0] {
@@ -283,7 +285,7 @@ pub fn multiplier_extreme(
             let mut e = [0.0; 4];
             e[k] = sign;
             a.push(e);
-            b.push(BOX);
+            b.push(reaction_box);
         }
     }
     a.push([0.0, 0.0, 0.0, 1.0]);

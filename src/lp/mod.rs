@@ -70,9 +70,9 @@ pub fn kinematic_farkas(
 /// The least or largest multiplier λ ≥ 0 of a load problem (unknowns (h, v, w, λ), rows
 /// `a · z + c ≤ 0`, and `= 0` for `equal`). `Ok(None)`: λ unbounded;
 /// `Err(Infeasible)`: no state. Without equality rows the dense path
-/// ([`dense::multiplier_extreme`]) solves it when [`Settings::lp_backend`] says so, falling
-/// back to HiGHS whenever it cannot decide (unbounded, infeasible, an optimum on its
-/// box). After a HiGHS failure the LP is solved again with the reactions boxed at
+/// ([`dense::multiplier_extreme`]) solves it when [`Settings::lp_backend`] says so (in the
+/// box of [`dense::BOX`], then of [`highs::REACTION_BOX`]), falling back to HiGHS whenever
+/// it cannot decide (unbounded, infeasible, an optimum on its box). After a HiGHS failure the LP is solved again with the reactions boxed at
 /// [`highs::REACTION_BOX`]: an optimum with a reaction on that box (see [`on_box`]) is no
 /// optimum of the problem, and the caller must say so.
 pub fn multiplier_extreme(
@@ -103,13 +103,20 @@ pub fn multiplier_extreme_warm(
     warm: &mut WarmStart,
 ) -> Result<Option<[f64; 4]>, LpOutcome> {
     if settings.lp_backend == LpBackend::Dense {
-        match dense::multiplier_extreme(rows, maximise, settings.dense_lp_tol, warm.0) {
-            Ok((z, basis)) => {
-                warm.0 = Some(basis);
-                return Ok(Some(z));
+        // the box of the margin LP first; an optimum on it again in HiGHS's retry box
+        // (states far out along a direction in which λ grows, at a caller's cap on λ)
+        for reaction_box in [dense::BOX, highs::REACTION_BOX] {
+            let tol = settings.dense_lp_tol;
+            match dense::multiplier_extreme(rows, maximise, tol, warm.0, reaction_box) {
+                Ok((z, basis)) => {
+                    warm.0 = Some(basis);
+                    return Ok(Some(z));
+                }
+                Err(LpOutcome::Failed(e)) if e.contains("box") => continue,
+                Err(_) => break,
             }
-            Err(_) => warm.0 = None,
         }
+        warm.0 = None;
     }
     highs::multiplier_extreme(rows, &[], maximise, settings.lp_tol)
 }

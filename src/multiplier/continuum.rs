@@ -250,6 +250,20 @@ impl<'a> Loaded<'a> {
     fn magnitude(&self, kind: ContactKind, x: &Reactions, lambda: f64, settings: &Settings) -> f64 {
         magnitude(kind, self.eta, self.mu, x, settings.magnitude_floor) * (1.0 + lambda.abs())
     }
+
+    /// The size of an activation function along the direction (x/λ, 1), times λ: its
+    /// magnitude with λ added to the reactions' norm, (1 + ‖x‖₁ + λ) × η or min(μ, 1).
+    fn ray_magnitude(
+        &self,
+        kind: ContactKind,
+        x: &Reactions,
+        lambda: f64,
+        settings: &Settings,
+    ) -> f64 {
+        let floor = settings.magnitude_floor;
+        magnitude(kind, self.eta, self.mu, x, floor)
+            + lambda.abs() * magnitude(kind, self.eta, self.mu, &[0.0; 3], floor)
+    }
 }
 
 /// The least (`maximise` false) or largest admissible λ ≥ 0 of a continuous arch, with the
@@ -303,11 +317,22 @@ pub fn extreme(
         };
         let (x, lambda) = ([z[0], z[1], z[2]], z[3]);
         let peaks = p.peaks(&x, lambda, settings);
+        // at the cap (or on the back end's box) the working set leaves λ free to grow and
+        // the state stands for the direction (x/λ, 1) in which it grows: its violations are
+        // measured against that direction's size, (1 + ‖x‖₁ + λ), and join the working set
+        // until the direction is admissible over the whole arch (against the state's own
+        // magnitude, which grows like λ² there, every violation would pass)
+        let at_cap = maximise && (lambda >= LAMBDA_CAP * (1.0 - 1e-9) || lp::on_box(&z));
+        let size = |kind: ContactKind| {
+            if at_cap {
+                p.ray_magnitude(kind, &x, lambda, settings)
+            } else {
+                p.magnitude(kind, &x, lambda, settings)
+            }
+        };
         let violated: Vec<&(Peak, Side)> = peaks
             .iter()
-            .filter(|(pk, _)| {
-                pk.value > EXCHANGE_TOL * p.magnitude(pk.contact.kind, &x, lambda, settings)
-            })
+            .filter(|(pk, _)| pk.value > EXCHANGE_TOL * size(pk.contact.kind))
             .collect();
         let before = work.len();
         for (pk, side) in violated {
@@ -324,7 +349,7 @@ pub fn extreme(
         if work.len() == before {
             // at the cap on a working set the multiplier may still be bounded on the whole
             // arch: only a state at the cap admissible over the whole arch says unbounded
-            if maximise && (lambda >= LAMBDA_CAP * (1.0 - 1e-9) || lp::on_box(&z)) {
+            if at_cap {
                 return Ok(None);
             }
             return refine(&p, x, lambda, &peaks, maximise, settings).map(Some);
