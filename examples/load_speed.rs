@@ -1,7 +1,8 @@
 //! Library time of the load-multiplier answer (`multiplier::survey`), in one run: the
 //! continuous semicircle under a horizontal acceleration at μ = ∞ (exact λ_static by the
-//! exchange method and Newton; the only limit state), and discrete arches (static range
-//! plus the complete sweep in λ). Medians of 9. Run:
+//! exchange method and Newton; the only limit state), the same at finite μ (two discrete
+//! sweeps, 48 and 96 pieces, carried over to the continuum), and discrete arches (static
+//! range plus the complete sweep in λ). Medians of 9. Run:
 //! `cargo run --release --example load_speed`.
 
 use arch_enum::load::LiveLoad;
@@ -35,6 +36,13 @@ fn main() {
         LiveLoad::Point {
             beta: std::f64::consts::PI / 3.0,
         },
+    ));
+    cases.push((
+        "continuous semicircle, centreline, eta = 0.2, mu = 0.6".into(),
+        semi(WeightModel::Centreline),
+        0.2,
+        0.6,
+        right,
     ));
     for blocks in [20, 100] {
         cases.push((

@@ -4,7 +4,9 @@
 //!   activation functions, each row scaled to unit gradient norm so that s is a distance
 //!   in x-space (formulation §5, static LP);
 //! * the kinematic LP in the rates λ of a pattern: B λ = 0, L_e ≥ 0, Σ λ = 1, λ ≥ 0
-//!   (formulation §4–5).
+//!   (formulation §4–5);
+//! * the multiplier LP of a live load in z = (h, v, w, λ): the least or largest λ ≥ 0
+//!   subject to affine rows (the load problem).
 //!
 //! Back ends, one file each: [`dense`] (exact small solvers, the fast path) and
 //! [`highs`] (HiGHS through good_lp, the reference path). [`Settings::lp_backend`]

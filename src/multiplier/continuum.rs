@@ -5,7 +5,10 @@
 //! of the continuum (at the point load's angle on both sides). The LP on a finite working
 //! set of angles gives z; a scan of each smooth piece of the arch at z
 //! ([`crate::scan::peaks_over`], exact derivatives) finds the most violated angles, which
-//! join the working set, until the whole arch is admissible to `EXCHANGE_TOL`. The LP's z
+//! join the working set, until the whole arch is admissible to `EXCHANGE_TOL` (at the cap on
+//! λ, the direction in which λ grows must be). Each round's LP starts from the last one's
+//! optimal basis ([`lp::WarmStart`]); λ_min = 0 is settled first, where the arch stands
+//! unloaded, by one margin LP at λ = 0 and a scan of its state. The LP's z
 //! (good to the back end's tolerance) then starts Newton on the square system of the active
 //! pattern — φ = 0 at each contact, dφ/dβ = 0 at each interior tangency, unknowns z and
 //! the tangency angles — whose root is verified by a scan (every φ ≤ `adm_tol` × its
