@@ -70,22 +70,23 @@ pub fn kinematic_farkas(
 }
 
 /// The least or largest multiplier λ ≥ 0 of a load problem (unknowns (h, v, w, λ), rows
-/// `a · z + c ≤ 0`, and `= 0` for `equal`). `Ok(None)`: λ unbounded;
-/// `Err(Infeasible)`: no state. Without equality rows the dense path
-/// ([`dense::multiplier_extreme`]) solves it when [`Settings::lp_backend`] says so (in the
-/// box of [`dense::BOX`], then of [`highs::REACTION_BOX`]), falling back to HiGHS whenever
-/// it cannot decide (unbounded, infeasible, an optimum on its box). After a HiGHS failure the LP is solved again with the reactions boxed at
-/// [`highs::REACTION_BOX`]: an optimum with a reaction on that box (see [`on_box`]) is no
-/// optimum of the problem, and the caller must say so.
+/// `a · z + c ≤ 0`, and `= 0` for `equal`; HiGHS). `Ok(None)`: λ unbounded;
+/// `Err(Infeasible)`: no state. After a back-end failure the LP is solved again with the
+/// reactions boxed at [`highs::REACTION_BOX`]: an optimum with a reaction on that box
+/// (see [`on_box`]) is no optimum of the problem, and the caller must say so.
+///
+/// HiGHS always, whatever [`Settings::lp_backend`]: a discrete arch's λ_static is often
+/// attained on a face of states, and the state this returns there (a vertex, the back end's
+/// choice) picks the active contacts reported at λ_static — the dense path's vertex has the
+/// same λ but can carry another pattern (and move the corners of the λ–μ curve). The
+/// continuous exchange, whose answer Newton refines on the whole arch, uses
+/// [`multiplier_extreme_warm`].
 pub fn multiplier_extreme(
     rows: &[([f64; 4], f64)],
     equal: &[([f64; 4], f64)],
     maximise: bool,
     settings: &Settings,
 ) -> Result<Option<[f64; 4]>, LpOutcome> {
-    if equal.is_empty() {
-        return multiplier_extreme_warm(rows, maximise, settings, &mut WarmStart::default());
-    }
     highs::multiplier_extreme(rows, equal, maximise, settings.lp_tol)
 }
 
@@ -97,7 +98,10 @@ pub struct WarmStart(Option<[usize; 4]>);
 /// [`multiplier_extreme`] without equality rows, started from `warm` and leaving the new
 /// optimal basis there: for a sequence of LPs each of which appends rows to the last
 /// (the exchange method), where the previous optimum stays dual feasible. Any `warm` is
-/// safe: the dense path checks it and starts cold when it does not fit.
+/// safe: the dense path checks it and starts cold when it does not fit. With the dense
+/// back end ([`Settings::lp_backend`]) the dense path ([`dense::multiplier_extreme`]) solves
+/// it, in the box of [`dense::BOX`], then of [`highs::REACTION_BOX`], and HiGHS wherever
+/// it cannot decide (unbounded, infeasible, an optimum on its box).
 pub fn multiplier_extreme_warm(
     rows: &[([f64; 4], f64)],
     maximise: bool,

@@ -161,7 +161,7 @@ impl Lcg {
 /// drawn at random in R⁴. Wherever the dense path answers (in either of its boxes), HiGHS
 /// has an optimum with the same λ to 1e-9 relative and the dense z satisfies every row; where HiGHS finds λ
 /// unbounded or no state, the dense path declines (the caller then uses HiGHS), and
-/// `lp::multiplier_extreme` with the dense back end gives HiGHS's answer. A warm start
+/// `lp::multiplier_extreme_warm` with the dense back end gives HiGHS's answer. A warm start
 /// from the optimum on half the rows gives the cold answer on all of them. Each kind of
 /// outcome occurs, and the dense path decides every bounded largest λ and most least ones.
 #[test]
@@ -228,7 +228,8 @@ fn dense_multiplier_lp_matches_highs() {
         // the dense path in its two boxes: that of the margin LP, and HiGHS's retry's
         let fast = dense::multiplier_extreme(&set, maximise, 1e-13, None, dense::BOX);
         let wide = dense::multiplier_extreme(&set, maximise, 1e-13, None, highs::REACTION_BOX);
-        let combined = lp::multiplier_extreme(&set, &[], maximise, &settings);
+        let combined =
+            lp::multiplier_extreme_warm(&set, maximise, &settings, &mut lp::WarmStart::default());
         let label = format!("case {case} (physical {physical}, maximise {maximise})");
         match &reference {
             Ok(Some(z)) if !lp::on_box(z) => bounded[maximise as usize] += 1,
