@@ -98,6 +98,8 @@ pub struct Arch {
     beta_left: Radians,
     layout: JointLayout,
     weight: WeightModel,
+    /// (sin β_R, cos β_R), computed once: every internal action needs them.
+    right_trig: (f64, f64),
 }
 
 /// Formats a number for messages: plain for ordinary magnitudes, scientific otherwise.
@@ -148,12 +150,14 @@ impl Arch {
                 ),
             });
         }
+        // + 0.0 turns a negative zero (alpha = 0) into +0.
+        let beta_right = beta_right + 0.0;
         Ok(Arch {
-            // + 0.0 turns a negative zero (alpha = 0) into +0.
-            beta_right: beta_right + 0.0,
+            beta_right,
             beta_left: beta_left + 0.0,
             layout: JointLayout::Continuous,
             weight,
+            right_trig: beta_right.sin_cos(),
         })
     }
 
@@ -230,6 +234,11 @@ impl Arch {
         })
     }
 
+    /// (sin β_R, cos β_R) of the right springing, computed once with the arch.
+    #[inline]
+    pub fn right_sin_cos(&self) -> (f64, f64) {
+        self.right_trig
+    }
     /// Right springing β_R.
     pub fn beta_right(&self) -> Radians {
         self.beta_right
@@ -272,11 +281,13 @@ impl Arch {
                 JointLayout::Discrete(j.iter().rev().map(|b| PI - b).collect())
             }
         };
+        let beta_right = PI - self.beta_left;
         Arch {
-            beta_right: PI - self.beta_left,
+            beta_right,
             beta_left: PI - self.beta_right,
             layout,
             weight: self.weight,
+            right_trig: beta_right.sin_cos(),
         }
     }
 }

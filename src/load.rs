@@ -70,7 +70,11 @@ impl LiveLoad {
                 let rho = arch.weight().rho(eta);
                 let k = if towards_right { 1.0 } else { -1.0 };
                 [
-                    [-k * d * s, -k * d * c, -k * (rho * (br.cos() - c) - d * s)],
+                    [
+                        -k * d * s,
+                        -k * d * c,
+                        -k * (rho * (arch.right_sin_cos().1 - c) - d * s),
+                    ],
                     [
                         -k * (s + d * c),
                         -k * (c - d * s),

@@ -79,7 +79,7 @@ pub struct Actions {
 pub fn actions(arch: &Arch, eta: f64, beta: Radians) -> Actions {
     let br = arch.beta_right();
     let (s, c) = beta.sin_cos();
-    let (sr, cr) = br.sin_cos();
+    let (sr, cr) = arch.right_sin_cos();
     let d = beta - br;
     let rho = arch.weight().rho(eta);
     let drho = arch.weight().drho_deta(eta);
