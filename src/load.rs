@@ -12,6 +12,7 @@ use crate::arch::{Arch, Radians};
 use crate::contact::{Contact, ContactKind, Location};
 use crate::kinematics::column;
 use crate::statics::{actions, Reactions};
+use serde::{Deserialize, Serialize};
 
 /// A live load with a multiplier λ ≥ 0.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -35,8 +36,9 @@ pub enum LiveLoad {
 
 /// Which side of a section at the point load's own angle: the free body [β_R, β] of a
 /// section just before β_P does not contain the load, just after it does. Elsewhere the
-/// side makes no difference.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// side makes no difference. In JSON and certificates: `before`, `after`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum Side {
     /// The section just before (smaller β) the loaded point.
     Before,

@@ -17,7 +17,7 @@ use crate::state::State;
 use crate::statics::{actions, Affine, Reactions};
 use itertools::Itertools;
 
-fn spec(arch: &Arch) -> ArchSpec {
+pub(super) fn spec(arch: &Arch) -> ArchSpec {
     ArchSpec {
         beta_right: arch.beta_right(),
         beta_left: arch.beta_left(),
@@ -29,7 +29,7 @@ fn spec(arch: &Arch) -> ArchSpec {
     }
 }
 
-fn empty(arch: &Arch, mu: f64, claim: Claim) -> Certificate {
+pub(super) fn empty(arch: &Arch, mu: f64, claim: Claim) -> Certificate {
     Certificate {
         format: FORMAT.into(),
         version: VERSION,
@@ -43,21 +43,42 @@ fn empty(arch: &Arch, mu: f64, claim: Claim) -> Certificate {
         gap: None,
         gap_relative: None,
         search: None,
+        load: None,
+        multiplier: None,
+        load_search: None,
+    }
+}
+
+/// An affine function of d unknowns (d = 2, 3 or 4): `g · u + c`.
+#[derive(Debug, Clone)]
+pub(super) struct Row {
+    /// Gradient (the first d components are used).
+    pub(super) g: Vec<f64>,
+    /// Constant term.
+    pub(super) c: f64,
+}
+
+impl From<Affine> for Row {
+    fn from(a: Affine) -> Row {
+        Row {
+            g: a.g.to_vec(),
+            c: a.c,
+        }
     }
 }
 
 /// Float cofactor multipliers of d + 1 affine functions (gradients in the first d
 /// components), normalised to sum 1 when they share a sign, with the Farkas constant.
-fn farkas_float(rows: &[Affine], d: usize) -> Option<(Vec<f64>, f64)> {
+fn farkas_float(rows: &[Row], d: usize) -> Option<(Vec<f64>, f64)> {
     let y: Vec<f64> = (0..=d)
         .map(|i| {
             let cols: Vec<usize> = (0..=d).filter(|&k| k != i).collect();
             let sign = if i % 2 == 0 { 1.0 } else { -1.0 };
             let g = |k: usize, r: usize| rows[cols[k]].g[r];
-            sign * if d == 3 {
-                nalgebra::Matrix3::from_fn(|r, k| g(k, r)).determinant()
-            } else {
-                nalgebra::Matrix2::from_fn(|r, k| g(k, r)).determinant()
+            sign * match d {
+                4 => nalgebra::Matrix4::from_fn(|r, k| g(k, r)).determinant(),
+                3 => nalgebra::Matrix3::from_fn(|r, k| g(k, r)).determinant(),
+                _ => nalgebra::Matrix2::from_fn(|r, k| g(k, r)).determinant(),
             }
         })
         .collect();
@@ -70,34 +91,17 @@ fn farkas_float(rows: &[Affine], d: usize) -> Option<(Vec<f64>, f64)> {
     (c > 0.0).then_some((y, c))
 }
 
-fn joints_of(contacts: &[Contact], y: &[f64]) -> Vec<CertJoint> {
-    contacts
-        .iter()
-        .zip(y)
-        .map(|(c, &y)| CertJoint {
-            beta: c.beta,
-            kind: c.kind,
-            y,
-        })
-        .collect()
-}
-
-/// Searches `pool` for a (d+1)-subset with a valid float Farkas combination at (η, μ),
-/// best margin first, and returns the first that the verifier proves.
-fn find_farkas(
-    arch: &Arch,
-    pool: &[Contact],
-    eta: f64,
-    mu: f64,
+/// Searches `pool` (labels and their rows) for a (d+1)-subset with a valid float Farkas
+/// combination, best margin first, and returns the first (labels with their multipliers)
+/// that `check` accepts (the verifier proves).
+pub(super) fn find_farkas<T: Clone>(
+    pool: &[(T, Row)],
     d: usize,
-    check: impl Fn(&Farkas) -> bool,
-) -> Option<Farkas> {
-    let mut found: Vec<(f64, Vec<Contact>, Vec<f64>)> = Vec::new();
-    for sub in pool.iter().copied().combinations(d + 1) {
-        let rows: Vec<Affine> = sub
-            .iter()
-            .map(|c| actions(arch, eta, c.beta).activation(c.kind, 0, eta, mu))
-            .collect();
+    check: impl Fn(&[(T, f64)]) -> bool,
+) -> Option<Vec<(T, f64)>> {
+    let mut found: Vec<(f64, Vec<usize>, Vec<f64>)> = Vec::new();
+    for sub in (0..pool.len()).combinations(d + 1) {
+        let rows: Vec<Row> = sub.iter().map(|&i| pool[i].1.clone()).collect();
         if let Some((y, c)) = farkas_float(&rows, d) {
             let norm: f64 = y
                 .iter()
@@ -110,12 +114,52 @@ fn find_farkas(
     }
     found.sort_by(|a, b| b.0.total_cmp(&a.0));
     found.into_iter().take(12).find_map(|(_, sub, y)| {
-        let f = Farkas {
-            eta: (d == 3).then_some(eta),
-            joints: joints_of(&sub, &y),
-        };
-        check(&f).then_some(f)
+        let labelled: Vec<(T, f64)> = sub
+            .iter()
+            .zip(&y)
+            .map(|(&i, &y)| (pool[i].0.clone(), y))
+            .collect();
+        check(&labelled).then_some(labelled)
     })
+}
+
+fn joints_of(contacts: &[Contact], y: &[f64]) -> Vec<CertJoint> {
+    contacts
+        .iter()
+        .zip(y)
+        .map(|(c, &y)| CertJoint {
+            beta: c.beta,
+            kind: c.kind,
+            side: None,
+            y,
+        })
+        .collect()
+}
+
+/// The thickness problem's Farkas search over contacts at (η, μ).
+fn find_contact_farkas(
+    arch: &Arch,
+    pool: &[Contact],
+    eta: f64,
+    mu: f64,
+    d: usize,
+    check: impl Fn(&Farkas) -> bool,
+) -> Option<Farkas> {
+    let rows: Vec<(Contact, Row)> = pool
+        .iter()
+        .map(|c| {
+            let row = actions(arch, eta, c.beta).activation(c.kind, 0, eta, mu);
+            (*c, Row::from(row))
+        })
+        .collect();
+    let make = |labelled: &[(Contact, f64)]| {
+        let (contacts, y): (Vec<Contact>, Vec<f64>) = labelled.iter().copied().unzip();
+        Farkas {
+            eta: (d == 3).then_some(eta),
+            joints: joints_of(&contacts, &y),
+        }
+    };
+    find_farkas(&rows, d, |l| check(&make(l))).map(|l| make(&l))
 }
 
 /// Builds a certificate for `arch` at friction `mu` with requested relative gap `gap`
@@ -150,7 +194,7 @@ fn certify_no_equilibrium(
         .map_err(NotCertified)?
         .ok_or_else(|| NotCertified("no finite friction admits equilibrium".into()))?;
     let mut cert = empty(arch, mu, Claim::NoEquilibrium);
-    let f = find_farkas(arch, &fl.pattern, 1.0, mu, 2, |f| {
+    let f = find_contact_farkas(arch, &fl.pattern, 1.0, mu, 2, |f| {
         let mut c = cert.clone();
         c.collapse = Some(f.clone());
         verify(&c).is_ok()
@@ -183,11 +227,12 @@ fn limit_state_cert(eta: f64, x: Reactions, mechanism: &Mechanism) -> LimitState
     }
 }
 
-fn pattern_joint(c: &Contact) -> PatternJoint {
+pub(super) fn pattern_joint(c: &Contact) -> PatternJoint {
     PatternJoint {
         beta: c.beta,
         kind: c.kind,
         at: c.at,
+        side: None,
     }
 }
 
@@ -202,7 +247,9 @@ fn kinematic_farkas(
     pattern: &[Contact],
     settings: &Settings,
 ) -> Vec<KinematicFarkas> {
-    let one = |drop: Vec<usize>| -> Option<KinematicFarkas> {
+    let keys: Vec<(f64, ContactKind, bool)> =
+        pattern.iter().map(|c| (c.beta, c.kind, false)).collect();
+    farkas_cover(&keys, |drop: Vec<usize>| {
         let kept: Vec<Contact> = (0..pattern.len())
             .filter(|i| !drop.contains(i))
             .map(|i| pattern[i])
@@ -215,18 +262,30 @@ fn kinematic_farkas(
             y,
             z: 0.5 * z,
             u: u.max(0.0),
+            v: 0.0,
         })
-    };
+    })
+}
+
+/// Farkas certificates for every one-sense choice of a pattern whose contacts have the
+/// keys (angle, kind, section): first `one` on the whole pattern, else on each choice of
+/// one sliding sense per section where both are listed (indices of the left-out contacts).
+pub(super) fn farkas_cover<S: PartialEq>(
+    keys: &[(f64, ContactKind, S)],
+    one: impl Fn(Vec<usize>) -> Option<KinematicFarkas>,
+) -> Vec<KinematicFarkas> {
     if let Some(f) = one(Vec::new()) {
         return vec![f];
     }
-    // joints with both senses: (index of S+, index of S−)
-    let both: Vec<(usize, usize)> = (0..pattern.len())
-        .filter(|&i| pattern[i].kind == ContactKind::SlidePlus)
+    // sections with both senses: (index of S+, index of S−)
+    let both: Vec<(usize, usize)> = (0..keys.len())
+        .filter(|&i| keys[i].1 == ContactKind::SlidePlus)
         .filter_map(|i| {
-            (0..pattern.len())
+            (0..keys.len())
                 .find(|&k| {
-                    pattern[k].kind == ContactKind::SlideMinus && pattern[k].beta == pattern[i].beta
+                    keys[k].1 == ContactKind::SlideMinus
+                        && keys[k].0 == keys[i].0
+                        && keys[k].2 == keys[i].2
                 })
                 .map(|k| (i, k))
         })
@@ -373,7 +432,7 @@ fn certify_limit(
                 prove_safe_only(&probe).is_ok()
             };
             if safe_ok {
-                let found = find_farkas(arch, &pool, eta_lo, mu, 3, |f| {
+                let found = find_contact_farkas(arch, &pool, eta_lo, mu, 3, |f| {
                     let mut full = c.clone();
                     full.collapse = Some(f.clone());
                     full.gap = Some(eta_hi - eta_lo);
@@ -404,16 +463,27 @@ fn safe_state(
     eta_hi: f64,
     settings: &Settings,
 ) -> Option<Reactions> {
-    let k = 1.0 / (eta_hi - eta_s);
     let rows: Vec<Affine> = pattern
         .iter()
-        .map(|c| {
-            let a = actions(arch, eta_hi, c.beta).activation(c.kind, 0, eta_hi, mu);
-            let at_x = a.at(&x_s);
-            Affine {
-                g: a.g,
-                c: k * at_x,
-            }
+        .map(|c| actions(arch, eta_hi, c.beta).activation(c.kind, 0, eta_hi, mu))
+        .collect();
+    move_inside(&rows, x_s, 1.0 / (eta_hi - eta_s), settings)
+}
+
+/// A state near `x_s` strictly inside the `rows` (affine in x, at the target parameter):
+/// the margin LP in the displacement δ with every row's value at x_s scaled by `k`
+/// (1 over the parameter step, so that the LP works with O(1) numbers).
+pub(super) fn move_inside(
+    rows: &[Affine],
+    x_s: Reactions,
+    k: f64,
+    settings: &Settings,
+) -> Option<Reactions> {
+    let rows: Vec<Affine> = rows
+        .iter()
+        .map(|a| Affine {
+            g: a.g,
+            c: k * a.at(&x_s),
         })
         .collect();
     let (d, s) = lp::max_margin(&rows, 1.0, settings).ok()?;

@@ -2,6 +2,7 @@
 
 pub use crate::arch::WeightModel;
 pub use crate::contact::{ContactKind, Location};
+pub use crate::load::Side;
 use serde::{de::Error as _, Deserialize, Deserializer, Serialize};
 
 /// The `format` field of every certificate.
@@ -15,8 +16,14 @@ pub const VERSION: u32 = 1;
 pub enum Claim {
     /// η*(μ) ∈ [η_lo, η_hi].
     LeastThickness,
-    /// No thickness stands at this μ (μ < μ_ms).
+    /// No thickness stands at this μ (μ < μ_ms); with a `load` section: at the load's η
+    /// no state is admissible at any multiplier λ ≥ 0.
     NoEquilibrium,
+    /// λ_static ∈ [λ_lo, λ_hi]: the largest admissible multiplier of the live load at
+    /// (η, μ) (`load` and `multiplier` sections).
+    LargestMultiplier,
+    /// λ_static = ∞: admissible states exist at every λ from λ_lo on.
+    UnboundedMultiplier,
 }
 
 /// The arch of a certificate.
@@ -51,6 +58,14 @@ pub struct CertJoint {
     /// is rejected when read).
     #[serde(deserialize_with = "field_kind")]
     pub kind: ContactKind,
+    /// At the point load's own angle: which section, `before` or `after` the loaded
+    /// point; absent elsewhere (and in thickness certificates).
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        deserialize_with = "field_side"
+    )]
+    pub side: Option<Side>,
     /// Non-negative multiplier (normalised to sum 1).
     pub y: f64,
 }
@@ -76,6 +91,14 @@ pub struct PatternJoint {
     /// `springing` or `interior`.
     #[serde(deserialize_with = "field_at")]
     pub at: Location,
+    /// At the point load's own angle: which section, `before` or `after` the loaded
+    /// point; absent elsewhere (and in thickness certificates).
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        deserialize_with = "field_side"
+    )]
+    pub side: Option<Side>,
 }
 
 /// The limit state (consistency-checked, not proved).
@@ -121,8 +144,19 @@ pub struct KinematicFarkas {
     pub y: [f64; 3],
     /// The multiplier of Σ λ = 1 (> 0).
     pub z: f64,
-    /// The multiplier of L_e ≥ 0 (≥ 0).
+    /// The multiplier of L_e ≥ 0 (≥ 0); under a live load, of the total power
+    /// L_dead + λ L_live ≥ 0.
     pub u: f64,
+    /// Under a live load: the multiplier of L_live ≥ 0 (≥ 0), so that
+    /// `c_j · y + z + u P_j + v q_j ≤ 0` (P_j total and q_j live power coefficients)
+    /// rules out every rate vector with B λ = 0, Σ λ = 1, total power ≥ 0 and live power
+    /// ≥ 0. Absent (zero) in thickness certificates.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub v: f64,
+}
+
+fn is_zero(v: &f64) -> bool {
+    *v == 0.0
 }
 
 /// A state whose active contacts carry no mechanism, with the proof.
@@ -188,6 +222,204 @@ pub struct Certificate {
     /// and where the search could not be completed).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub search: Option<SearchEvidence>,
+    /// Load claims: the thickness and the live load (absent in thickness certificates).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub load: Option<LoadSpec>,
+    /// Load claims: the sides of the multiplier claim.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub multiplier: Option<MultiplierSides>,
+    /// Load claims: evidence for every limit state under the load (absent where the
+    /// search could not be completed).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub load_search: Option<LoadSearchEvidence>,
+}
+
+/// The kind of a live load (a closed set).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LoadKind {
+    /// A uniform horizontal body force λ·(self-weight), applied where the weight is.
+    Horizontal,
+    /// A vertical (downward) point load λ (units of γ t d r) at an extrados point.
+    Point,
+}
+
+/// The sense of a horizontal body force (a closed set).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Towards {
+    /// Towards +x, the right springing.
+    Right,
+    /// Towards −x, the left springing.
+    Left,
+}
+
+/// The load problem of a load certificate: thickness and live load (docs/loads.md).
+/// Conventions: forces in γ t d r; the horizontal multiplier in units of the
+/// self-weight, applied where the weight is (centreline or true centroid, `arch.weight`);
+/// the point load vertical and downward at the extrados point (1 + η/2)(cos β, sin β).
+/// At the point load's own angle a section has two sides: `before` (free body [β_R, β]
+/// without the load) and `after` (with it); joints and contacts there carry `side`.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct LoadSpec {
+    /// Thickness ratio η at which the multiplier is sought.
+    pub eta: f64,
+    /// `horizontal` or `point` (anything else is rejected when read).
+    #[serde(deserialize_with = "field_load_kind")]
+    pub kind: LoadKind,
+    /// Horizontal: `right` or `left`; absent for a point load.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        deserialize_with = "field_towards"
+    )]
+    pub towards: Option<Towards>,
+    /// Point load: the angle β_P of the loaded extrados point (radians); absent for a
+    /// horizontal load.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub beta: Option<f64>,
+}
+
+/// A state (x, λ) of the load problem, or a direction (d_x, d_λ).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct LoadState {
+    /// Multiplier λ (or d_λ).
+    pub lambda: f64,
+    /// Reactions (h, v, w) (or d_x).
+    pub x: [f64; 3],
+}
+
+/// A Farkas certificate of the load problem: d + 1 contacts whose non-negative
+/// combination of activation functions is independent of the unknowns and positive.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct LoadFarkas {
+    /// λ_hi (unknowns x = (h, v, w), d = 3, four joints); `null` for `no_equilibrium`
+    /// (unknowns (h, v, w, λ) with λ ≥ 0, d = 4: five rows, the joints and, when used,
+    /// the row −λ ≤ 0 with multiplier `lambda_row`).
+    pub lambda: Option<f64>,
+    /// The contacts and their multipliers.
+    pub joints: Vec<CertJoint>,
+    /// The multiplier of −λ ≤ 0 (`no_equilibrium` only; absent when not used).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub lambda_row: Option<f64>,
+}
+
+/// How an unbounded multiplier is carried (a closed set): the direction along which
+/// every state stays admissible as λ grows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Transfer {
+    /// The point load goes into the right springing: the reactions change by
+    /// d_x = (0, 1, (1 + η/2) cos β_P − cos β_R) per unit λ, which leaves N, T, M of every
+    /// section that carries the load unchanged (an identity of the statics); the sections
+    /// that do not carry it (β < β_P, and β_P's `before` side) take an upward unit force
+    /// at the loaded point.
+    Right,
+    /// The point load goes into the left springing: the reactions do not change, and only
+    /// the sections that carry the load (β > β_P, and β_P's `after` side) take it.
+    Left,
+}
+
+/// The sides of a load claim.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct MultiplierSides {
+    /// A state admissible at λ_lo (`largest_multiplier`: λ_static ≥ λ_lo; `unbounded_multiplier`:
+    /// the start of the ray); absent for `no_equilibrium`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub admissible: Option<LoadState>,
+    /// `largest_multiplier`: no state is admissible at λ_hi; `no_equilibrium`: none at any
+    /// λ ≥ 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub infeasible: Option<LoadFarkas>,
+    /// `unbounded_multiplier`: the transfer that keeps the state admissible as λ grows.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        deserialize_with = "field_transfer"
+    )]
+    pub transfer: Option<Transfer>,
+}
+
+/// How the list of limit states under the load was established (a closed set).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LoadSearchMethod {
+    /// A discrete arch: the sweep of P(λ) from λ_min to λ_static; `no_mechanism` lists
+    /// every point it checked without a mechanism with positive live power.
+    Sweep,
+    /// μ = ∞: the static maximum is the only limit state (virtual work: a hinge-only
+    /// mechanism dissipates nothing, so a limit state at λ* admits no state at λ > λ*).
+    Associative,
+    /// A continuous arch at finite μ: two discretisations, refined on the continuum,
+    /// agreed (not re-checked by `verify`).
+    Refined,
+}
+
+/// The end of a continuum of limit states (two contacts whose columns cancel, carrying
+/// one mechanism wherever both are active).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct ContinuumEnd {
+    /// The largest λ of the continuum (`null`: unbounded).
+    pub to: Option<f64>,
+}
+
+/// A limit state under the load (consistency-checked, not proved).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct LoadLimitStateCert {
+    /// The multiplier.
+    pub lambda: f64,
+    /// Reactions.
+    pub x: [f64; 3],
+    /// Every contact active there, strictly increasing in (β, side, kind).
+    pub pattern: Vec<PatternJoint>,
+    /// Mechanism rates, one per pattern joint (zero for a sliding sense left out).
+    pub rates: Vec<f64>,
+    /// The live load's power in the mechanism (> 0).
+    pub live_power: f64,
+    /// Present when this is the least state of a continuum of limit states.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub continuum: Option<ContinuumEnd>,
+}
+
+/// A state under the load whose active contacts carry no mechanism with positive live
+/// power, with the proof.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct LoadNoMechanism {
+    /// The multiplier.
+    pub lambda: f64,
+    /// Reactions.
+    pub x: [f64; 3],
+    /// Every contact active there, strictly increasing in (β, side, kind).
+    pub pattern: Vec<PatternJoint>,
+    /// Farkas certificates covering every one-sense choice of the pattern.
+    pub farkas: Vec<KinematicFarkas>,
+}
+
+/// Evidence for the list of limit states under the load (issue 11).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct LoadSearchEvidence {
+    /// `sweep`, `associative` or `refined` (anything else is rejected when read).
+    #[serde(deserialize_with = "field_load_method")]
+    pub method: LoadSearchMethod,
+    /// Events of the sweep.
+    pub events: usize,
+    /// The least admissible multiplier (reported, not proved; where it is positive the
+    /// state there is the unloading end, never a collapse).
+    pub lambda_min: f64,
+    /// Whether the state at λ_static carries a mechanism with positive live power.
+    pub mechanism_at_static: bool,
+    /// Whether exactly one limit state exists (a continuum is not unique).
+    pub unique: bool,
+    /// The collapse multiplier: the least listed limit state's λ (`null`: none).
+    pub lambda: Option<f64>,
+    /// Every limit state, ascending in λ (the one at λ_static included).
+    pub limit_states: Vec<LoadLimitStateCert>,
+    /// The state at λ_static and the proof that its active contacts carry no mechanism
+    /// (present when `mechanism_at_static` is false and λ_static is finite).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub static_state: Option<LoadNoMechanism>,
+    /// `sweep` only: every point checked without a mechanism, with its proof.
+    pub no_mechanism: Vec<LoadNoMechanism>,
 }
 
 /// Why no certificate could be produced (a result, not bad input).
@@ -216,12 +448,41 @@ fn field_weight<'de, D: Deserializer<'de>>(d: D) -> Result<WeightModel, D::Error
     named(d, "weight")
 }
 
+fn field_side<'de, D: Deserializer<'de>>(d: D) -> Result<Option<Side>, D::Error> {
+    named(d, "side")
+}
+
+fn field_load_kind<'de, D: Deserializer<'de>>(d: D) -> Result<LoadKind, D::Error> {
+    named(d, "load.kind")
+}
+
+fn field_towards<'de, D: Deserializer<'de>>(d: D) -> Result<Option<Towards>, D::Error> {
+    named(d, "load.towards")
+}
+
+fn field_transfer<'de, D: Deserializer<'de>>(d: D) -> Result<Option<Transfer>, D::Error> {
+    named(d, "multiplier.transfer")
+}
+
+fn field_load_method<'de, D: Deserializer<'de>>(d: D) -> Result<LoadSearchMethod, D::Error> {
+    named(d, "load_search.method")
+}
+
 impl Certificate {
     /// The claimed bracket (η_lo, η_hi) of a least-thickness claim.
     pub fn bracket(&self) -> Option<(f64, f64)> {
         match self.claim {
             Claim::LeastThickness => Some((self.collapse.as_ref()?.eta?, self.safe.as_ref()?.eta)),
-            Claim::NoEquilibrium => None,
+            _ => None,
+        }
+    }
+
+    /// The claimed bracket (λ_lo, λ_hi) of a largest-multiplier claim.
+    pub fn lambda_bracket(&self) -> Option<(f64, f64)> {
+        let m = self.multiplier.as_ref()?;
+        match self.claim {
+            Claim::LargestMultiplier => Some((m.admissible.as_ref()?.lambda, m.infeasible.as_ref()?.lambda?)),
+            _ => None,
         }
     }
 
@@ -230,10 +491,13 @@ impl Certificate {
     /// no-equilibrium claim always (it has no gap).
     pub fn delivers_gap(&self, requested: f64) -> bool {
         match self.claim {
-            Claim::NoEquilibrium => true,
+            Claim::NoEquilibrium | Claim::UnboundedMultiplier => true,
             Claim::LeastThickness => self
                 .bracket()
                 .is_some_and(|(lo, hi)| (hi - lo) / hi <= requested),
+            Claim::LargestMultiplier => self
+                .lambda_bracket()
+                .is_some_and(|(lo, hi)| hi - lo <= requested * hi),
         }
     }
 }

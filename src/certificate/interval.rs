@@ -150,6 +150,16 @@ pub fn det3(c: [[Interval; 3]; 3]) -> Interval {
         + m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0))
 }
 
+/// The determinant of a 4×4 matrix of intervals (columns), by expansion along the
+/// first row.
+pub fn det4(c: [[Interval; 4]; 4]) -> Interval {
+    let minor = |skip: usize| {
+        let cols: Vec<usize> = (0..4).filter(|&k| k != skip).collect();
+        det3([0, 1, 2].map(|k| [1, 2, 3].map(|r| c[cols[k]][r])))
+    };
+    c[0][0] * minor(0) - c[1][0] * minor(1) + c[2][0] * minor(2) - c[3][0] * minor(3)
+}
+
 /// The determinant of a 2×2 matrix of intervals (columns).
 pub fn det2(c: [[Interval; 2]; 2]) -> Interval {
     c[0][0] * c[1][1] - c[1][0] * c[0][1]

@@ -57,7 +57,10 @@
 pub mod certify;
 pub mod format;
 pub mod interval;
+mod live;
 pub mod verify;
+mod verify_load;
+mod verify_load_search;
 mod verify_search;
 
 pub use certify::certify;

@@ -17,9 +17,9 @@
 
 use super::format::{
     ArchSpec, CertJoint, Certificate, Claim, ContactKind, LimitStateCert, Location, PatternJoint,
-    WeightModel, FORMAT, VERSION,
+    Side, WeightModel, FORMAT, VERSION,
 };
-use super::interval::{det2, det3, Interval as I};
+use super::interval::{det2, det3, det4, Interval as I};
 use std::f64::consts::PI;
 
 /// Tolerances of the floating-point consistency checks of the limit state.
@@ -41,6 +41,11 @@ pub struct Report {
     pub checks: Vec<String>,
     /// What the limit-state search lists (certificates with a `search` section).
     pub limit_states: Option<String>,
+    /// Load certificates: the load in words.
+    pub load: Option<String>,
+    /// (λ_lo, λ_hi) of a largest-multiplier claim; for an unbounded multiplier, the λ from
+    /// which states are proved admissible at every larger λ, and `None`.
+    pub lambda_bracket: Option<(f64, Option<f64>)>,
 }
 
 impl Report {
@@ -62,6 +67,20 @@ impl Report {
     /// The proved statement, in one line.
     pub fn statement(&self) -> String {
         let mu = mu_text(self.mu);
+        if let Some(load) = &self.load {
+            return match (self.claim, self.lambda_bracket) {
+                (Claim::LargestMultiplier, Some((lo, Some(hi)))) => format!(
+                    "proved: for this arch at mu = {mu} under the {load}, lambda_static lies in [{lo}, {hi}] (relative gap {:.3e}; lambda_static = the largest multiplier with a statically admissible state)",
+                    (hi - lo) / hi
+                ),
+                (Claim::UnboundedMultiplier, Some((lo, None))) => format!(
+                    "proved: for this arch at mu = {mu} under the {load}, statically admissible states exist at every lambda >= {lo}: lambda_static is unbounded"
+                ),
+                _ => format!(
+                    "proved: for this arch at mu = {mu} under the {load}, no state is statically admissible at any lambda >= 0"
+                ),
+            };
+        }
         match self.bracket {
             Some((lo, hi)) => format!(
                 "proved: for this arch at mu = {mu}, eta* lies in [{lo}, {hi}] (relative gap {:.3e}; eta* = the least thickness with a statically admissible state)",
@@ -91,10 +110,24 @@ pub(super) struct Model {
 }
 
 /// Interval values of N, T, M and their first two β-derivatives at β ∈ `b`.
+#[derive(Clone, Copy)]
 pub(super) struct Ntm {
-    n: [I; 3],
-    t: [I; 3],
-    m: [I; 3],
+    pub(super) n: [I; 3],
+    pub(super) t: [I; 3],
+    pub(super) m: [I; 3],
+}
+
+impl Ntm {
+    /// `self + k·o`, term by term (the dead actions plus λ times the live ones).
+    pub(super) fn plus(&self, k: f64, o: &Ntm) -> Ntm {
+        let k = I::point(k);
+        let add = |a: [I; 3], b: [I; 3]| [0, 1, 2].map(|i| a[i] + k * b[i]);
+        Ntm {
+            n: add(self.n, o.n),
+            t: add(self.t, o.t),
+            m: add(self.m, o.m),
+        }
+    }
 }
 
 impl Model {
@@ -181,20 +214,20 @@ pub(super) fn kinds(mu: Option<f64>) -> &'static [ContactKind] {
     }
 }
 
-/// Upper bound of φ over [a, b] by the second-order Taylor form at the midpoint.
+/// Upper bound of φ over [a, b] by the second-order Taylor form at the midpoint
+/// (`eval`: the actions over an interval of angles).
 fn taylor_upper(
-    model: &Model,
+    eval: &dyn Fn(I) -> Ntm,
     kind: ContactKind,
     a: f64,
     b: f64,
-    x: [f64; 3],
     eta: f64,
     mu: Option<f64>,
 ) -> (f64, f64) {
     let m = 0.5 * (a + b);
     let r = (b - m).max(m - a);
-    let at_m = model.ntm(I::point(m), x, eta);
-    let over = model.ntm(I::new(a, b), x, eta);
+    let at_m = eval(I::point(m));
+    let over = eval(I::new(a, b));
     let f0 = phi(kind, 0, &at_m, eta, mu);
     let f1 = phi(kind, 1, &at_m, eta, mu);
     let f2 = phi(kind, 2, &over, eta, mu);
@@ -221,67 +254,107 @@ pub(super) fn prove_admissible(
     mu: Option<f64>,
     strict: bool,
 ) -> Result<usize, Rejection> {
-    let mut pieces = 0usize;
+    let eval = |b: I| model.ntm(b, x, eta);
+    let whole = Piece {
+        a: model.beta_r,
+        b: model.beta_l,
+        eval: &eval,
+    };
+    prove_pieces(model, &[whole], eta, mu, strict, "safe side")
+}
+
+/// A smooth piece [a, b] of the arch and its actions over an interval of angles (the
+/// sections of one side of a loaded section, for a point load).
+pub(super) struct Piece<'a> {
+    /// First angle.
+    pub(super) a: f64,
+    /// Last angle.
+    pub(super) b: f64,
+    /// N, T, M and their β-derivatives over an interval of angles inside [a, b].
+    pub(super) eval: &'a dyn Fn(I) -> Ntm,
+}
+
+/// Proves φ ≤ 0 (φ < 0 with `strict`) for every activation function on every piece: at
+/// each listed joint inside it (discrete arch), else over its whole continuum of angles
+/// (Taylor enclosures, adaptive splitting). `what` starts the rejection messages.
+pub(super) fn prove_pieces(
+    model: &Model,
+    pieces: &[Piece],
+    eta: f64,
+    mu: Option<f64>,
+    strict: bool,
+    what: &str,
+) -> Result<usize, Rejection> {
+    let mut count = 0usize;
     for &kind in kinds(mu) {
-        if let Some(joints) = &model.joints {
-            for &b in joints {
-                let v = phi(kind, 0, &model.ntm(I::point(b), x, eta), eta, mu);
-                if v.hi.is_nan() || v.hi > 0.0 || (strict && v.hi >= 0.0) {
-                    return reject(format!("safe side: {} at the joint beta = {b} is not proved <= 0 (upper bound {:e})", kind.name(), v.hi));
+        for piece in pieces {
+            let eval = piece.eval;
+            if let Some(joints) = &model.joints {
+                for &b in joints.iter().filter(|&&b| b >= piece.a && b <= piece.b) {
+                    let v = phi(kind, 0, &eval(I::point(b)), eta, mu);
+                    if v.hi.is_nan() || v.hi > 0.0 || (strict && v.hi >= 0.0) {
+                        return reject(format!("{what}: {} at the joint beta = {b} is not proved <= 0 (upper bound {:e})", kind.name(), v.hi));
+                    }
+                    count += 1;
                 }
-                pieces += 1;
-            }
-            continue;
-        }
-        let n0 = 64;
-        let (lo, hi) = (model.beta_r, model.beta_l);
-        let mut stack: Vec<(f64, f64, usize)> = (0..n0)
-            .map(|i| {
-                let a = if i == 0 {
-                    lo
-                } else {
-                    lo + (hi - lo) * i as f64 / n0 as f64
-                };
-                let b = if i + 1 == n0 {
-                    hi
-                } else {
-                    lo + (hi - lo) * (i + 1) as f64 / n0 as f64
-                };
-                (a, b, 0)
-            })
-            .collect();
-        while let Some((a, b, depth)) = stack.pop() {
-            pieces += 1;
-            if pieces > 2_000_000 {
-                return reject("safe side: enclosure work limit reached without a proof");
-            }
-            let (upper, lower_mid) = taylor_upper(model, kind, a, b, x, eta, mu);
-            if upper < 0.0 || (!strict && upper <= 0.0) {
                 continue;
             }
-            if lower_mid > 0.0 {
-                return reject(format!(
-                    "safe side: {} is positive at beta = {} (phi >= {lower_mid:e}): the state is not admissible",
-                    kind.name(),
-                    0.5 * (a + b)
-                ));
+            let n0 = 64;
+            let (lo, hi) = (piece.a, piece.b);
+            let mut stack: Vec<(f64, f64, usize)> = (0..n0)
+                .map(|i| {
+                    let a = if i == 0 {
+                        lo
+                    } else {
+                        lo + (hi - lo) * i as f64 / n0 as f64
+                    };
+                    let b = if i + 1 == n0 {
+                        hi
+                    } else {
+                        lo + (hi - lo) * (i + 1) as f64 / n0 as f64
+                    };
+                    (a, b, 0)
+                })
+                .collect();
+            while let Some((a, b, depth)) = stack.pop() {
+                count += 1;
+                if count > 2_000_000 {
+                    return reject(format!("{what}: enclosure work limit reached without a proof"));
+                }
+                let (upper, lower_mid) = taylor_upper(eval, kind, a, b, eta, mu);
+                if upper < 0.0 || (!strict && upper <= 0.0) {
+                    continue;
+                }
+                if lower_mid > 0.0 {
+                    return reject(format!(
+                        "{what}: {} is positive at beta = {} (phi >= {lower_mid:e}): the state is not admissible",
+                        kind.name(),
+                        0.5 * (a + b)
+                    ));
+                }
+                if depth >= 60 || b - a <= 4.0 * f64::EPSILON * a.abs().max(1.0) || upper.is_nan() {
+                    return reject(format!(
+                        "{what}: {} near beta = {a} could not be proved <= 0 (bound {upper:e})",
+                        kind.name()
+                    ));
+                }
+                let m = 0.5 * (a + b);
+                stack.push((a, m, depth + 1));
+                stack.push((m, b, depth + 1));
             }
-            if depth >= 60 || b - a <= 4.0 * f64::EPSILON * a.abs().max(1.0) || upper.is_nan() {
-                return reject(format!(
-                    "safe side: {} near beta = {a} could not be proved <= 0 (bound {upper:e})",
-                    kind.name()
-                ));
-            }
-            let m = 0.5 * (a + b);
-            stack.push((a, m, depth + 1));
-            stack.push((m, b, depth + 1));
         }
     }
-    Ok(pieces)
+    Ok(count)
 }
 
 /// Interval gradient (w.r.t. x) and constant term of an activation function at β.
-fn affine(model: &Model, kind: ContactKind, beta: f64, eta: f64, mu: f64) -> ([I; 3], I) {
+pub(super) fn affine(
+    model: &Model,
+    kind: ContactKind,
+    beta: f64,
+    eta: f64,
+    mu: f64,
+) -> ([I; 3], I) {
     let b = I::point(beta);
     let (s, c) = (b.sin(), b.cos());
     let br = I::point(model.beta_r);
@@ -313,6 +386,51 @@ fn affine(model: &Model, kind: ContactKind, beta: f64, eta: f64, mu: f64) -> ([I
     }
 }
 
+/// A joint of a Farkas certificate: on the arch (a listed joint of a discrete arch), a
+/// kind that exists at μ, a finite multiplier, and a `side` exactly at the point load's
+/// angle `split` (never without a point load).
+pub(super) fn check_farkas_joint(
+    model: &Model,
+    i: usize,
+    j: &CertJoint,
+    mu: Option<f64>,
+    split: Option<f64>,
+) -> Result<(), Rejection> {
+    model.check_joint(j.beta, &format!("collapse side: joint {i}"))?;
+    if !exists(j.kind, mu) {
+        return reject(format!(
+            "collapse side: joint {i} is {} at beta = {}, but there is no sliding at infinite friction (mu = null): that constraint does not exist in this problem",
+            j.kind.name(),
+            j.beta
+        ));
+    }
+    if !(j.y.is_finite()) {
+        return reject(format!(
+            "collapse side: multiplier of joint {i} is not a finite number"
+        ));
+    }
+    check_side(j.beta, j.side, split, &format!("collapse side: joint {i}"))
+}
+
+/// `side` must be given exactly at the point load's angle `split` (the two sections
+/// there differ) and nowhere else.
+pub(super) fn check_side(
+    beta: f64,
+    side: Option<Side>,
+    split: Option<f64>,
+    what: &str,
+) -> Result<(), Rejection> {
+    match (split == Some(beta), side) {
+        (true, None) => reject(format!(
+            "{what}: beta = {beta} is the point load's angle: give the side of the loaded section (before or after)"
+        )),
+        (false, Some(_)) => reject(format!(
+            "{what}: a side is given at beta = {beta}, but only the point load's own section has two sides"
+        )),
+        _ => Ok(()),
+    }
+}
+
 /// Proves that the Farkas joints rule out every state at η (or, with `friction_only`,
 /// every (h, v) for the sliding conditions alone).
 fn prove_farkas(
@@ -332,39 +450,44 @@ fn prove_farkas(
     }
     let mut aff: Vec<([I; 3], I)> = Vec::with_capacity(joints.len());
     for (i, j) in joints.iter().enumerate() {
-        model.check_joint(j.beta, &format!("collapse side: joint {i}"))?;
-        if !exists(j.kind, mu) {
-            return reject(format!(
-                "collapse side: joint {i} is {} at beta = {}, but there is no sliding at infinite friction (mu = null): that constraint does not exist in this problem",
-                j.kind.name(),
-                j.beta
-            ));
-        }
+        check_farkas_joint(model, i, j, mu, None)?;
         if friction_only && j.kind.is_hinge() {
             return reject(format!(
                 "collapse side: joint {i} is {}, but the friction-only certificate may use sliding joints only",
                 j.kind.name()
             ));
         }
-        if !(j.y.is_finite()) {
-            return reject(format!(
-                "collapse side: multiplier of joint {i} is not a finite number"
-            ));
-        }
         // `exists` guarantees a finite μ for sliding rows; hinge rows do not use it
         aff.push(affine(model, j.kind, j.beta, eta, mu.unwrap_or(0.0)));
     }
+    let rows: Vec<(Vec<I>, I)> = aff.iter().map(|(g, c)| (g[..d].to_vec(), *c)).collect();
+    let stored: Vec<(f64, String)> = joints
+        .iter()
+        .map(|j| (j.y, format!("beta = {}", j.beta)))
+        .collect();
+    prove_cofactors(&rows, &stored)
+}
+
+/// The Farkas proof for d + 1 affine rows `g · u + c ≤ 0` in d unknowns (d = 2, 3 or 4):
+/// the exact multipliers are the signed cofactors of the gradients, enclosed in
+/// intervals; they must share a sign, match the `stored` ones (normalised to sum 1; each
+/// with a label for the messages), and give Σ yᵢ cᵢ > 0 rigorously, so that
+/// Σ yᵢ rowᵢ(u) = Σ yᵢ cᵢ > 0 for every u: no u satisfies all rows. Returns the margin
+/// Σ yᵢ cᵢ / Σ yᵢ (lower bound).
+pub(super) fn prove_cofactors(
+    rows: &[(Vec<I>, I)],
+    stored: &[(f64, String)],
+) -> Result<f64, Rejection> {
+    let d = rows.len() - 1;
     let y: Vec<I> = (0..=d)
         .map(|i| {
             let cols: Vec<usize> = (0..=d).filter(|&k| k != i).collect();
             let sign = if i % 2 == 0 { 1.0 } else { -1.0 };
-            let det = if d == 3 {
-                det3([aff[cols[0]].0, aff[cols[1]].0, aff[cols[2]].0])
-            } else {
-                det2([
-                    [aff[cols[0]].0[0], aff[cols[0]].0[1]],
-                    [aff[cols[1]].0[0], aff[cols[1]].0[1]],
-                ])
+            let g = |k: usize, r: usize| rows[cols[k]].0[r];
+            let det = match d {
+                4 => det4([0, 1, 2, 3].map(|k| [0, 1, 2, 3].map(|r| g(k, r)))),
+                3 => det3([0, 1, 2].map(|k| [0, 1, 2].map(|r| g(k, r)))),
+                _ => det2([[g(0, 0), g(0, 1)], [g(1, 0), g(1, 1)]]),
             };
             det.scale(sign)
         })
@@ -381,20 +504,20 @@ fn prove_farkas(
     };
     // the stored multipliers must be the recomputed ones (normalised to sum 1)
     let total: f64 = y.iter().map(|v| v.mid()).sum();
-    let stored_total: f64 = joints.iter().map(|j| j.y).sum();
-    for (j, v) in joints.iter().zip(&y) {
-        let (a, b) = (v.mid() / total, j.y / stored_total);
+    let stored_total: f64 = stored.iter().map(|s| s.0).sum();
+    for ((sy, label), v) in stored.iter().zip(&y) {
+        let (a, b) = (v.mid() / total, sy / stored_total);
         if stored_total.is_nan()
             || stored_total <= 0.0
             || (a - b).abs() > 1e-6 * (1.0 + a.abs())
-            || j.y < 0.0
+            || *sy < 0.0
         {
-            return reject(format!("collapse side: stored multiplier {} at beta = {} does not match the recomputed {a:.9e} (normalised)", j.y, j.beta));
+            return reject(format!("collapse side: stored multiplier {sy} at {label} does not match the recomputed {a:.9e} (normalised)"));
         }
     }
     let c = y
         .iter()
-        .zip(&aff)
+        .zip(rows)
         .fold(I::point(0.0), |acc, (yi, (_, ci))| acc + *yi * *ci);
     if c.lo.is_nan() || c.lo <= 0.0 {
         return reject(format!(
@@ -500,11 +623,13 @@ pub(super) fn check_pattern(
     model: &Model,
     pattern: &[PatternJoint],
     mu: Option<f64>,
+    split: Option<f64>,
     whose: &str,
 ) -> Result<(), Rejection> {
     for (i, j) in pattern.iter().enumerate() {
         let what = format!("{whose}: pattern joint {i}");
         model.check_joint(j.beta, &what)?;
+        check_side(j.beta, j.side, split, &what)?;
         if !exists(j.kind, mu) {
             return reject(format!(
                 "{what} is {}, but there is no sliding at infinite friction (mu = null)",
@@ -526,12 +651,15 @@ pub(super) fn check_pattern(
             ));
         }
     }
+    // the side of the loaded section orders `before` first (no side: one section)
+    let key = |j: &PatternJoint| (j.side != Some(Side::Before), j.kind);
     if let Some(w) = pattern
         .windows(2)
-        .find(|w| !(w[0].beta < w[1].beta || (w[0].beta == w[1].beta && w[0].kind < w[1].kind)))
+        .find(|w| !(w[0].beta < w[1].beta || (w[0].beta == w[1].beta && key(&w[0]) < key(&w[1]))))
     {
         return reject(format!(
-            "{whose}: pattern must be strictly increasing in (beta, kind), found {} at {} then {} at {}",
+            "{whose}: pattern must be strictly increasing in (beta, {}kind), found {} at {} then {} at {}",
+            if split.is_some() { "side, " } else { "" },
             w[0].kind.name(),
             w[0].beta,
             w[1].kind.name(),
@@ -565,7 +693,18 @@ pub fn verify(cert: &Certificate) -> Result<Report, Rejection> {
             ));
         }
     }
+    let load_claim = matches!(
+        cert.claim,
+        Claim::LargestMultiplier | Claim::UnboundedMultiplier
+    );
+    if load_claim || cert.load.is_some() || cert.multiplier.is_some() || cert.load_search.is_some()
+    {
+        return super::verify_load::verify_load(cert, &model);
+    }
     let bracket = match cert.claim {
+        Claim::LargestMultiplier | Claim::UnboundedMultiplier => {
+            unreachable!("load claims are verified by verify_load")
+        }
         Claim::NoEquilibrium => {
             let Some(f) = &cert.collapse else {
                 return reject("no_equilibrium claim without a Farkas certificate");
@@ -605,7 +744,7 @@ pub fn verify(cert: &Certificate) -> Result<Report, Rejection> {
                 ));
             }
             if let Some(ls) = &cert.limit_state {
-                check_pattern(&model, &ls.pattern, cert.mu, "limit state")?;
+                check_pattern(&model, &ls.pattern, cert.mu, None, "limit state")?;
             }
             let pieces = prove_admissible(&model, safe.x, safe.eta, cert.mu, false)?;
             checks.push(format!(
@@ -664,6 +803,8 @@ pub fn verify(cert: &Certificate) -> Result<Report, Rejection> {
         arch: cert.arch.clone(),
         checks,
         limit_states,
+        load: None,
+        lambda_bracket: None,
     })
 }
 

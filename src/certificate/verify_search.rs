@@ -20,12 +20,13 @@
 
 use super::format::{
     Certificate, ContactKind, KinematicFarkas, LimitStateCert, NoMechanism, SafeSide,
-    SearchEvidence, SearchMethod,
+    SearchEvidence, SearchMethod, Side,
 };
 use super::interval::Interval as I;
+use super::live::Live;
 use super::verify::{
-    check_limit_state, check_pattern, kinds, phi, prove_admissible, reject, Model, Rejection,
-    LIMIT_STATE_TOL,
+    check_limit_state, check_pattern, kinds, phi, prove_admissible, reject, Model, Ntm,
+    Rejection, LIMIT_STATE_TOL,
 };
 
 /// A contact not listed in a state's pattern must lie at least this far below zero,
@@ -85,7 +86,7 @@ pub(super) fn verify_search(
                 ls.eta
             ));
         }
-        let proved = no_mechanism(model, mu, ls, "search: least_state")?;
+        let proved = thickness_no_mechanism(model, mu, ls, "search: least_state")?;
         checks.push(if proved {
             format!(
                 "proved (interval arithmetic): the {} contacts active at the least admissible state (eta = {}) carry no mechanism without dilatancy (Farkas); checked (floating point): they are its whole active set{}",
@@ -107,7 +108,7 @@ pub(super) fn verify_search(
     for (i, ls) in search.limit_states_above.iter().enumerate() {
         let whose = format!("search: limit state above eta_s {i}");
         finite(ls, &whose)?;
-        check_pattern(model, &ls.pattern, mu, &whose)?;
+        check_pattern(model, &ls.pattern, mu, None, &whose)?;
         if ls.eta < last {
             return reject(format!(
                 "{whose}: eta = {} is not above eta_hi and the previous listed state (not ascending)",
@@ -138,7 +139,7 @@ pub(super) fn verify_search(
             }
             let mut proved = 0;
             for (i, p) in search.no_mechanism.iter().enumerate() {
-                if no_mechanism(model, mu, p, &format!("search: no_mechanism {i}"))? {
+                if thickness_no_mechanism(model, mu, p, &format!("search: no_mechanism {i}"))? {
                     proved += 1;
                 }
             }
@@ -194,6 +195,21 @@ pub(super) fn verify_search(
     ))
 }
 
+/// [`no_mechanism`] for a state of the thickness problem.
+fn thickness_no_mechanism(
+    model: &Model,
+    mu: Option<f64>,
+    p: &NoMechanism,
+    whose: &str,
+) -> Result<bool, Rejection> {
+    let state = StateAt {
+        x: p.x,
+        eta: p.eta,
+        load: None,
+    };
+    no_mechanism(model, mu, state, &p.pattern, &p.farkas, whose)
+}
+
 fn method_name(m: SearchMethod) -> &'static str {
     match m {
         SearchMethod::Sweep => "sweep",
@@ -244,28 +260,72 @@ fn admissible_at_samples(
     Ok(())
 }
 
-/// Checks a state listed without mechanism; `Ok(true)` when the Farkas certificates prove
-/// it for every one-sense choice, `Ok(false)` when they do not cover them all, `Err` when
-/// something stated is false.
-fn no_mechanism(
+/// A state of either problem, for the checks of a listed state: reactions x at thickness
+/// η and, under a live load, its multiplier λ.
+#[derive(Clone, Copy)]
+pub(super) struct StateAt<'a> {
+    /// Reactions.
+    pub(super) x: [f64; 3],
+    /// Thickness.
+    pub(super) eta: f64,
+    /// The live load and λ (load certificates).
+    pub(super) load: Option<(&'a Live, f64)>,
+}
+
+impl StateAt<'_> {
+    /// N, T, M (with β-derivatives) at the joint β on `side`: the dead actions of x,
+    /// plus λ times the live ones where the section carries the load.
+    pub(super) fn ntm(&self, model: &Model, beta: f64, side: Option<Side>) -> Ntm {
+        let b = I::point(beta);
+        let dead = model.ntm(b, self.x, self.eta);
+        match self.load {
+            Some((live, lambda)) => match live.ntm(model, b, live.carries(beta, side)) {
+                Some(l) => dead.plus(lambda, &l),
+                None => dead,
+            },
+            None => dead,
+        }
+    }
+
+    /// The point load's angle (two sections there).
+    fn split(&self) -> Option<f64> {
+        self.load.and_then(|(live, _)| live.split())
+    }
+}
+
+/// Checks a state listed without mechanism (its `pattern` and `farkas` at `state`);
+/// `Ok(true)` when the Farkas certificates prove it for every one-sense choice,
+/// `Ok(false)` when they do not cover them all, `Err` when something stated is false.
+pub(super) fn no_mechanism(
     model: &Model,
     mu: Option<f64>,
-    p: &NoMechanism,
+    state: StateAt,
+    pattern: &[super::format::PatternJoint],
+    farkas: &[KinematicFarkas],
     whose: &str,
 ) -> Result<bool, Rejection> {
-    if !(p.eta.is_finite() && p.eta > 0.0 && p.eta < 2.0 && p.x.iter().all(|v| v.is_finite())) {
+    if !(state.eta.is_finite()
+        && state.eta > 0.0
+        && state.eta < 2.0
+        && state.x.iter().all(|v| v.is_finite()))
+    {
         return reject(format!("{whose}: eta must lie in (0, 2) and x be finite"));
     }
-    if p.pattern.len() > 64 {
+    if let Some((_, lambda)) = state.load {
+        if !(lambda.is_finite() && lambda >= 0.0) {
+            return reject(format!("{whose}: lambda = {lambda} must be finite and >= 0"));
+        }
+    }
+    if pattern.len() > 64 {
         return reject(format!("{whose}: more than 64 contacts"));
     }
-    let pattern: Vec<(f64, ContactKind)> = p.pattern.iter().map(|j| (j.beta, j.kind)).collect();
+    let keyed: Vec<(f64, ContactKind, Option<Side>)> =
+        pattern.iter().map(|j| (j.beta, j.kind, j.side)).collect();
     // the pattern: valid joints, active (floating point), and the whole active set
-    let pj: Vec<super::format::PatternJoint> = p.pattern.clone();
-    check_pattern(model, &pj, mu, whose)?;
-    let scale = 1.0 + p.x.iter().map(|v| v.abs()).sum::<f64>();
-    for &(b, k) in &pattern {
-        let v = phi(k, 0, &model.ntm(I::point(b), p.x, p.eta), p.eta, mu).mid();
+    check_pattern(model, pattern, mu, state.split(), whose)?;
+    let scale = 1.0 + state.x.iter().map(|v| v.abs()).sum::<f64>();
+    for &(b, k, side) in &keyed {
+        let v = phi(k, 0, &state.ntm(model, b, side), state.eta, mu).mid();
         if v.is_nan() || v.abs() > LIMIT_STATE_TOL * scale {
             return reject(format!(
                 "{whose}: {} at beta = {b} is not active (phi = {v:e})",
@@ -275,27 +335,35 @@ fn no_mechanism(
     }
     if let Some(joints) = &model.joints {
         for &b in joints {
-            let a = model.ntm(I::point(b), p.x, p.eta);
-            for &k in kinds(mu) {
-                if pattern.contains(&(b, k)) {
-                    continue;
-                }
-                let v = phi(k, 0, &a, p.eta, mu).mid();
-                if v.is_nan() || v > -INACTIVE_REL * scale {
-                    return reject(format!(
-                        "{whose}: {} at beta = {b} is active or violated (phi = {v:e}) but not in the pattern",
-                        k.name()
-                    ));
+            for side in sections(b, state.split()) {
+                let a = state.ntm(model, b, side);
+                for &k in kinds(mu) {
+                    if keyed.contains(&(b, k, side)) {
+                        continue;
+                    }
+                    let v = phi(k, 0, &a, state.eta, mu).mid();
+                    if v.is_nan() || v > -INACTIVE_REL * scale {
+                        return reject(format!(
+                            "{whose}: {} at beta = {b}{} is active or violated (phi = {v:e}) but not in the pattern",
+                            k.name(),
+                            side_text(side)
+                        ));
+                    }
                 }
             }
         }
     }
-    // every one-sense choice must be covered by a proved Farkas certificate
-    let both: Vec<(usize, usize)> = (0..pattern.len())
-        .filter(|&i| pattern[i].1 == ContactKind::SlidePlus)
+    // every one-sense choice must be covered by a proved Farkas certificate (a section
+    // slides one way only)
+    let both: Vec<(usize, usize)> = (0..keyed.len())
+        .filter(|&i| keyed[i].1 == ContactKind::SlidePlus)
         .filter_map(|i| {
-            (0..pattern.len())
-                .find(|&k| pattern[k].1 == ContactKind::SlideMinus && pattern[k].0 == pattern[i].0)
+            (0..keyed.len())
+                .find(|&k| {
+                    keyed[k].1 == ContactKind::SlideMinus
+                        && keyed[k].0 == keyed[i].0
+                        && keyed[k].2 == keyed[i].2
+                })
                 .map(|k| (i, k))
         })
         .collect();
@@ -303,13 +371,18 @@ fn no_mechanism(
         return Ok(false);
     }
     let mut proved: Vec<&KinematicFarkas> = Vec::new();
-    for (i, f) in p.farkas.iter().enumerate() {
-        if f.drop.iter().any(|&d| d >= pattern.len()) {
+    for (i, f) in farkas.iter().enumerate() {
+        if f.drop.iter().any(|&d| d >= keyed.len()) {
             return reject(format!(
                 "{whose}: farkas {i} drops a contact that is not in the pattern"
             ));
         }
-        if prove_farkas(model, p, f) {
+        if state.load.is_none() && f.v != 0.0 {
+            return reject(format!(
+                "{whose}: farkas {i} has a live-power multiplier v, but there is no live load"
+            ));
+        }
+        if prove_farkas(model, state, &keyed, f) {
             proved.push(f);
         } else {
             return reject(format!(
@@ -330,8 +403,26 @@ fn no_mechanism(
     Ok(covered)
 }
 
+/// The sections at a joint: two (`before`, `after`) at the point load's angle, else one.
+pub(super) fn sections(beta: f64, split: Option<f64>) -> Vec<Option<Side>> {
+    if split == Some(beta) {
+        vec![Some(Side::Before), Some(Side::After)]
+    } else {
+        vec![None]
+    }
+}
+
+/// " (before)" / " (after)" / "".
+pub(super) fn side_text(side: Option<Side>) -> &'static str {
+    match side {
+        Some(Side::Before) => " (before the loaded point)",
+        Some(Side::After) => " (after the loaded point)",
+        None => "",
+    }
+}
+
 /// The compatibility column of a contact at η (formulation §4), in intervals.
-fn column(kind: ContactKind, beta: f64, eta: f64) -> [I; 3] {
+pub(super) fn column(kind: ContactKind, beta: f64, eta: f64) -> [I; 3] {
     let b = I::point(beta);
     let (s, c) = (b.sin(), b.cos());
     let half = I::point(0.5) * I::point(eta);
@@ -349,20 +440,61 @@ fn column(kind: ContactKind, beta: f64, eta: f64) -> [I; 3] {
 /// and u ≥ 0. The external power p_j of a contact: minus the work of the weight of the
 /// blocks beyond it (between consecutive distinct kept joints) in its unit motion,
 /// p_j = −Σ_m [W_m c_j,y + ρ (sin β_{m+1} − sin β_m) c_j,ψ], W_m = β_{m+1} − β_m.
-fn prove_farkas(model: &Model, p: &NoMechanism, f: &KinematicFarkas) -> bool {
-    if !(f.z > 0.0 && f.u >= 0.0 && f.z.is_finite() && f.u.is_finite())
+/// Under a live load at λ the power is the total one, P_j = p_j + λ q_j, and the live
+/// power q_j ([`Live::power`]) enters again with its own multiplier v ≥ 0:
+/// `c_j · y + z + u P_j + v q_j ≤ 0`.
+pub(super) fn prove_farkas(
+    model: &Model,
+    state: StateAt,
+    pattern: &[(f64, ContactKind, Option<Side>)],
+    f: &KinematicFarkas,
+) -> bool {
+    if !(f.z > 0.0 && f.u >= 0.0 && f.v >= 0.0 && f.z.is_finite() && f.u.is_finite() && f.v.is_finite())
         || f.y.iter().any(|v| !v.is_finite())
     {
         return false;
     }
-    let kept: Vec<(f64, ContactKind)> = (0..p.pattern.len())
+    let kept: Vec<(f64, ContactKind, Option<Side>)> = (0..pattern.len())
         .filter(|i| !f.drop.contains(i))
-        .map(|i| (p.pattern[i].beta, p.pattern[i].kind))
+        .map(|i| pattern[i])
         .collect();
-    let mut angles: Vec<f64> = kept.iter().map(|&(b, _)| b).collect();
+    let columns: Vec<[I; 3]> = kept
+        .iter()
+        .map(|&(beta, kind, _)| column(kind, beta, state.eta))
+        .collect();
+    let work = weight_work(model, state.eta, &kept, &columns);
+    let live: Option<(Vec<I>, I)> = state.load.map(|(l, lambda)| {
+        (
+            l.power(model, &kept, &columns),
+            I::point(f.u) * I::point(lambda) + I::point(f.v),
+        )
+    });
+    let y = f.y.map(I::point);
+    (0..kept.len()).all(|i| {
+        let col = &columns[i];
+        let mut value = col[0] * y[0] + col[1] * y[1] + col[2] * y[2] + I::point(f.z)
+            - I::point(f.u) * work[i];
+        if let Some((q, k)) = &live {
+            value = value + *k * q[i];
+        }
+        value.hi <= 0.0
+    })
+}
+
+/// The work of the weight in the unit motion of each contact of `kept` (with its
+/// compatibility `columns`): Σ over the blocks after it (between consecutive distinct
+/// kept angles) of W_m c_y + ρ (sin β_{m+1} − sin β_m) c_ψ, W_m = β_{m+1} − β_m; the
+/// external power of the weight is its negative, p_j.
+pub(super) fn weight_work(
+    model: &Model,
+    eta: f64,
+    kept: &[(f64, ContactKind, Option<Side>)],
+    columns: &[[I; 3]],
+) -> Vec<I> {
+    let mut angles: Vec<f64> = kept.iter().map(|&(b, _, _)| b).collect();
     angles.sort_by(f64::total_cmp);
     angles.dedup();
-    let rho = model.rho(p.eta);
+    let rho = model.rho(eta);
     let blocks: Vec<(f64, I, I)> = angles
         .windows(2)
         .map(|w| {
@@ -370,17 +502,15 @@ fn prove_farkas(model: &Model, p: &NoMechanism, f: &KinematicFarkas) -> bool {
             (w[0], b - a, rho * (b.sin() - a.sin()))
         })
         .collect();
-    let y = f.y.map(I::point);
-    kept.iter().all(|&(beta, kind)| {
-        let col = column(kind, beta, p.eta);
-        let power = blocks
-            .iter()
-            .filter(|(start, _, _)| *start >= beta)
-            .fold(I::point(0.0), |acc, &(_, w, wgx)| {
-                acc + w * col[1] + wgx * col[2]
-            });
-        let value =
-            col[0] * y[0] + col[1] * y[1] + col[2] * y[2] + I::point(f.z) - I::point(f.u) * power;
-        value.hi <= 0.0
-    })
+    kept.iter()
+        .zip(columns)
+        .map(|(&(beta, _, _), col)| {
+            blocks
+                .iter()
+                .filter(|(start, _, _)| *start >= beta)
+                .fold(I::point(0.0), |acc, &(_, w, wgx)| {
+                    acc + w * col[1] + wgx * col[2]
+                })
+        })
+        .collect()
 }

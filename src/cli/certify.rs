@@ -42,6 +42,8 @@ fn claim_name(c: Claim) -> &'static str {
     match c {
         Claim::LeastThickness => "least_thickness",
         Claim::NoEquilibrium => "no_equilibrium",
+        Claim::LargestMultiplier => "largest_multiplier",
+        Claim::UnboundedMultiplier => "unbounded_multiplier",
     }
 }
 

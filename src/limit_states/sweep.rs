@@ -217,8 +217,10 @@ pub struct CheckedPoint {
     pub eta: f64,
     /// Reactions.
     pub x: Reactions,
-    /// Every contact active there, by increasing (β, kind).
+    /// Every contact active there, by increasing (β, side, kind).
     pub pattern: Vec<Contact>,
+    /// The side of the loaded section of each contact (load sweeps; `After` elsewhere).
+    pub sides: Vec<Side>,
 }
 
 /// A limit state found by the sweep.
@@ -602,6 +604,7 @@ impl Sweeper<'_> {
                 eta: t,
                 x,
                 pattern: contacts,
+                sides,
             });
         }
     }

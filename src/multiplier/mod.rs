@@ -18,7 +18,7 @@ use crate::arch::{check_eta, Arch, InputError, JointLayout};
 use crate::collapse_mode::{classify, CollapseMode};
 use crate::contact::Contact;
 use crate::kinematics::{column, power};
-use crate::limit_states::sweep::sweep_load;
+use crate::limit_states::sweep::{sweep_load, CheckedPoint};
 use crate::load::{rows, LiveLoad, LoadRow, Side};
 use crate::lp::{self, LpOutcome};
 use crate::mechanism::{self, Mechanism};
@@ -150,6 +150,10 @@ pub struct LoadSurvey {
     /// How the list was established: `sweep` (discrete arch: every event of P(λ)) or
     /// `associative` (μ = ∞: the static maximum is the only limit state).
     pub method: &'static str,
+    /// `sweep` only: every point the sweep checked whose active contacts carry no
+    /// mechanism with positive live power (the evidence a certificate carries); empty
+    /// otherwise.
+    pub no_mechanism: Vec<CheckedPoint>,
 }
 
 impl LoadSurvey {
@@ -256,6 +260,7 @@ pub fn survey(
                 limit_states: at_static.into_iter().collect(),
                 events: 0,
                 method: "associative",
+                no_mechanism: Vec::new(),
             }),
         }));
     }
@@ -304,6 +309,7 @@ pub fn survey(
         limit_states,
         events: sw.events,
         method: "sweep",
+        no_mechanism: sw.no_mechanism,
     })))
 }
 
@@ -466,6 +472,7 @@ fn continuous_survey(
         limit_states,
         events: 0,
         method: "associative",
+        no_mechanism: Vec::new(),
     }))
 }
 
@@ -631,6 +638,7 @@ fn continuous_finite_friction(
         limit_states,
         events,
         method: "refined",
+        no_mechanism: Vec::new(),
     }))
 }
 

@@ -1,0 +1,216 @@
+//! The live load of a load certificate, for `verify`: its internal actions and its power
+//! in interval arithmetic, written out again from the formulas of docs/loads.md (not the
+//! solver's [`crate::load`]).
+//!
+//! Per unit λ, for the free body [β_R, β] (Δ = β − β_R, ρ as for the weight):
+//! * horizontal body force towards +x (k = 1) or −x (k = −1):
+//!   N_L = −k Δ sin β, T_L = −k Δ cos β, M_L = −k [ρ (cos β_R − cos β) − Δ sin β];
+//! * vertical point load at the extrados point of β_P, for the sections that carry it
+//!   (β > β_P, and the `after` side of β_P): N_L = −cos β, T_L = sin β,
+//!   M_L = −[(1 + η/2) cos β_P − cos β]; zero for the others.
+//!
+//! Their β-derivatives (for the Taylor enclosures over a continuum) are derived here:
+//! horizontal dN_L = −k (sin β + Δ cos β), d²N_L = −k (2 cos β − Δ sin β),
+//! dT_L = −k (cos β − Δ sin β), d²T_L = k (2 sin β + Δ cos β),
+//! dM_L = −k [(ρ − 1) sin β − Δ cos β], d²M_L = −k [(ρ − 2) cos β + Δ sin β];
+//! point dN_L = sin β, d²N_L = cos β, dT_L = cos β, d²T_L = −sin β, dM_L = −sin β,
+//! d²M_L = −cos β.
+
+use super::format::{ContactKind, LoadKind, LoadSpec, Side, Towards};
+use super::interval::Interval as I;
+use super::verify::{reject, Model, Ntm, Rejection};
+
+/// The live load of a certificate with its thickness.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Live {
+    /// The thickness η of the load problem.
+    pub(super) eta: f64,
+    kind: LiveKind,
+}
+
+#[derive(Debug, Clone, Copy)]
+enum LiveKind {
+    /// Horizontal body force; `k` = +1 towards +x, −1 towards −x.
+    Horizontal { k: f64 },
+    /// Vertical point load at the extrados point of `beta`.
+    Point { beta: f64 },
+}
+
+impl Live {
+    /// The load of `spec` on the certificate's arch, checked: η in (0, 2), `towards`
+    /// exactly for a horizontal load, `beta` exactly for a point load and on the arch.
+    pub(super) fn of(spec: &LoadSpec, model: &Model) -> Result<Live, Rejection> {
+        if !(spec.eta.is_finite() && spec.eta > 0.0 && spec.eta < 2.0) {
+            return reject(format!(
+                "load.eta = {}: must lie in (0, 2)",
+                spec.eta
+            ));
+        }
+        let kind = match (spec.kind, spec.towards, spec.beta) {
+            (LoadKind::Horizontal, Some(t), None) => LiveKind::Horizontal {
+                k: if t == Towards::Right { 1.0 } else { -1.0 },
+            },
+            (LoadKind::Point, None, Some(beta)) => {
+                if !(beta.is_finite() && beta >= model.beta_r && beta <= model.beta_l) {
+                    return reject(format!(
+                        "load.beta = {beta}: the loaded point must lie on the arch [beta_right, beta_left] = [{}, {}]",
+                        model.beta_r, model.beta_l
+                    ));
+                }
+                LiveKind::Point { beta }
+            }
+            (LoadKind::Horizontal, _, _) => {
+                return reject("load: a horizontal load needs `towards` (right or left) and no `beta`")
+            }
+            (LoadKind::Point, _, _) => {
+                return reject("load: a point load needs `beta` and no `towards`")
+            }
+        };
+        Ok(Live {
+            eta: spec.eta,
+            kind,
+        })
+    }
+
+    /// The point load's angle, where a section has two sides.
+    pub(super) fn split(&self) -> Option<f64> {
+        match self.kind {
+            LiveKind::Point { beta } => Some(beta),
+            LiveKind::Horizontal { .. } => None,
+        }
+    }
+
+    /// Whether the section at β (on `side`, at the point load's angle) carries the load.
+    pub(super) fn carries(&self, beta: f64, side: Option<Side>) -> bool {
+        match self.kind {
+            LiveKind::Horizontal { .. } => true,
+            LiveKind::Point { beta: bp } => beta > bp || (beta == bp && side == Some(Side::After)),
+        }
+    }
+
+    /// The smooth pieces of the arch, each with whether its sections carry the load: the
+    /// whole arch for a horizontal load; [β_R, β_P] (the `before` side at β_P) and
+    /// [β_P, β_L] (the `after` side) for a point load, so that both sides of the loaded
+    /// section are covered.
+    pub(super) fn pieces(&self, model: &Model) -> Vec<(f64, f64, bool)> {
+        match self.kind {
+            LiveKind::Horizontal { .. } => vec![(model.beta_r, model.beta_l, true)],
+            LiveKind::Point { beta } => {
+                vec![(model.beta_r, beta, false), (beta, model.beta_l, true)]
+            }
+        }
+    }
+
+    /// N_L, T_L, M_L and their first two β-derivatives per unit λ over the angles `b` of
+    /// sections that carry the load (`carries`); `None` for sections that do not (zero).
+    pub(super) fn ntm(&self, model: &Model, b: I, carries: bool) -> Option<Ntm> {
+        let (s, c) = (b.sin(), b.cos());
+        let two = I::point(2.0);
+        match self.kind {
+            LiveKind::Horizontal { k } => {
+                let br = I::point(model.beta_r);
+                let d = b - br;
+                let rho = model.rho(self.eta);
+                let one = I::point(1.0);
+                let n = [-(d * s), -(s + d * c), -(two * c - d * s)];
+                let t = [-(d * c), -(c - d * s), two * s + d * c];
+                let m = [
+                    -(rho * (br.cos() - c) - d * s),
+                    -((rho - one) * s - d * c),
+                    -((rho - two) * c + d * s),
+                ];
+                let k3 = |v: [I; 3]| v.map(|e| e.scale(k));
+                Some(Ntm {
+                    n: k3(n),
+                    t: k3(t),
+                    m: k3(m),
+                })
+            }
+            LiveKind::Point { beta } => {
+                if !carries {
+                    return None;
+                }
+                let re = I::point(1.0) + I::point(0.5) * I::point(self.eta);
+                let m0 = -(re * I::point(beta).cos() - c);
+                Some(Ntm {
+                    n: [-c, s, c],
+                    t: [s, c, -s],
+                    m: [m0, -s, -c],
+                })
+            }
+        }
+    }
+
+    /// The live power per unit λ of a unit rate of each contact of `kept` (angle, kind,
+    /// side): everything after contact j moves with its compatibility column
+    /// c_j = (V_x(O), V_y(O), ψ), so a point G moves with (V_x − ψ G_y, V_y + ψ G_x);
+    /// the blocks are the pieces between consecutive distinct angles of `kept` (those
+    /// beyond the last are at rest when B λ = 0).
+    /// * horizontal: q_j = k Σ_{blocks m after j} [W_m c_j,x − c_j,ψ ρ (cos β_m − cos β_{m+1})],
+    ///   W_m = β_{m+1} − β_m (the weight of block m and its centroid height times W_m);
+    /// * point: q_j = −[c_j,y + c_j,ψ (1 + η/2) cos β_P] when the loaded point moves with
+    ///   the blocks after j (β_P > β_j, or β_P = β_j and j on the `before` side), else 0.
+    pub(super) fn power(
+        &self,
+        model: &Model,
+        kept: &[(f64, ContactKind, Option<Side>)],
+        columns: &[[I; 3]],
+    ) -> Vec<I> {
+        match self.kind {
+            LiveKind::Horizontal { k } => {
+                let mut angles: Vec<f64> = kept.iter().map(|j| j.0).collect();
+                angles.sort_by(f64::total_cmp);
+                angles.dedup();
+                let rho = model.rho(self.eta);
+                let blocks: Vec<(f64, I, I)> = angles
+                    .windows(2)
+                    .map(|w| {
+                        let (a, b) = (I::point(w[0]), I::point(w[1]));
+                        (w[0], b - a, rho * (a.cos() - b.cos()))
+                    })
+                    .collect();
+                kept.iter()
+                    .zip(columns)
+                    .map(|(j, col)| {
+                        blocks
+                            .iter()
+                            .filter(|(start, _, _)| *start >= j.0)
+                            .fold(I::point(0.0), |acc, &(_, w, wgy)| {
+                                acc + w * col[0] - col[2] * wgy
+                            })
+                            .scale(k)
+                    })
+                    .collect()
+            }
+            LiveKind::Point { beta } => {
+                let re = I::point(1.0) + I::point(0.5) * I::point(self.eta);
+                let xp = re * I::point(beta).cos();
+                kept.iter()
+                    .zip(columns)
+                    .map(|(j, col)| {
+                        if beta > j.0 || (beta == j.0 && j.2 == Some(Side::Before)) {
+                            -(col[1] + col[2] * xp)
+                        } else {
+                            I::point(0.0)
+                        }
+                    })
+                    .collect()
+            }
+        }
+    }
+
+    /// The load in words.
+    pub(super) fn text(&self) -> String {
+        match self.kind {
+            LiveKind::Horizontal { k } => format!(
+                "horizontal body force lambda x self-weight towards the {} springing, eta = {}",
+                if k > 0.0 { "right" } else { "left" },
+                self.eta
+            ),
+            LiveKind::Point { beta } => format!(
+                "vertical point load lambda at the extrados point beta = {beta}, eta = {}",
+                self.eta
+            ),
+        }
+    }
+}

@@ -1,0 +1,406 @@
+//! Re-checking a load certificate (issue 11): the claims about the largest admissible
+//! multiplier λ_static of a live load at fixed (η, μ), with the live actions of
+//! [`super::live`] (docs/loads.md, written out again) and the same interval arithmetic
+//! as the thickness certificates.
+//!
+//! * `largest_multiplier`: the state (x_lo, λ_lo) is *proved* admissible — at every joint
+//!   of a discrete arch, or over the whole continuum by Taylor enclosures, on both sides of
+//!   a loaded section — and the Farkas certificate at λ_hi is *proved* (four contacts, the
+//!   signed cofactors of their x-gradients; the live terms enter the constants). The
+//!   admissible (x, λ) form a convex set: a state at some λ ≥ λ_hi would put one at λ_hi on
+//!   the segment from (x_lo, λ_lo). So λ_lo ≤ λ_static < λ_hi.
+//! * `unbounded_multiplier`: (x_0, λ_0) is *proved* admissible and the stated transfer is
+//!   *proved* to keep it admissible as λ grows: along (x_0 + t d, λ_0 + t) every activation
+//!   function is φ(x_0, λ_0) + t ψ, with ψ ≤ 0 proved at every section (ψ = 0 identically
+//!   where the transfer cancels the load, by an identity of the statics).
+//! * `no_equilibrium` under a load: five rows in (h, v, w, λ) (with, possibly, −λ ≤ 0),
+//!   the cofactors of their 4-gradients: no state at any λ ≥ 0.
+
+use super::format::{
+    Certificate, CertJoint, Claim, ContactKind, LoadFarkas, LoadState, Transfer,
+};
+use super::interval::Interval as I;
+use super::live::Live;
+use super::verify::{
+    affine, check_farkas_joint, kinds, phi, prove_cofactors, prove_pieces, reject, Model,
+    Ntm, Piece, Rejection, Report,
+};
+use super::verify_search::{sections, side_text};
+
+/// Verifies a certificate with a `load` section (`cert.load` must be present).
+pub(super) fn verify_load(cert: &Certificate, model: &Model) -> Result<Report, Rejection> {
+    let Some(spec) = &cert.load else {
+        return reject(format!(
+            "a {} claim needs a load section",
+            claim_name(cert.claim)
+        ));
+    };
+    if matches!(cert.claim, Claim::LeastThickness) {
+        return reject("a least_thickness claim carries no load section");
+    }
+    if cert.safe.is_some()
+        || cert.collapse.is_some()
+        || cert.limit_state.is_some()
+        || cert.search.is_some()
+    {
+        return reject("a load certificate carries none of the thickness sections (safe, collapse, limit_state, search)");
+    }
+    let live = Live::of(spec, model)?;
+    let Some(sides) = &cert.multiplier else {
+        return reject("a load certificate needs a multiplier section");
+    };
+    let mu = cert.mu;
+    let mut checks = Vec::new();
+    let lambda_bracket = match cert.claim {
+        Claim::LargestMultiplier => {
+            let (Some(adm), Some(inf), None) = (&sides.admissible, &sides.infeasible, sides.transfer)
+            else {
+                return reject("largest_multiplier: needs multiplier.admissible and multiplier.infeasible (and no transfer)");
+            };
+            let Some(lambda_hi) = inf.lambda else {
+                return reject("largest_multiplier: multiplier.infeasible.lambda (lambda_hi) is missing");
+            };
+            check_state(adm, "multiplier.admissible")?;
+            if !(lambda_hi.is_finite() && adm.lambda <= lambda_hi) {
+                return reject(format!(
+                    "need 0 <= lambda_lo <= lambda_hi, found lambda_lo = {}, lambda_hi = {lambda_hi}",
+                    adm.lambda
+                ));
+            }
+            let pieces = prove_state(model, &live, adm, mu, "admissible side")?;
+            checks.push(format!(
+                "proved (interval arithmetic): the state x = [{}, {}, {}] is admissible at lambda_lo = {} {} ({pieces} enclosures)",
+                adm.x[0], adm.x[1], adm.x[2], adm.lambda, everywhere(model, &live)
+            ));
+            let margin = prove_farkas_at(model, &live, inf, lambda_hi, mu)?;
+            checks.push(format!(
+                "proved (interval arithmetic): no state is admissible at lambda_hi = {lambda_hi} (Farkas on {} joints, margin {margin:.3e}); the admissible (x, lambda) are convex, so none at any lambda >= lambda_hi",
+                inf.joints.len()
+            ));
+            check_gap(cert, adm.lambda, lambda_hi)?;
+            Some((adm.lambda, Some(lambda_hi)))
+        }
+        Claim::UnboundedMultiplier => {
+            let (Some(adm), None, Some(transfer)) = (&sides.admissible, &sides.infeasible, sides.transfer)
+            else {
+                return reject("unbounded_multiplier: needs multiplier.admissible and multiplier.transfer (and no infeasible side)");
+            };
+            check_state(adm, "multiplier.admissible")?;
+            if cert.gap.is_some() || cert.gap_relative.is_some() {
+                return reject("unbounded_multiplier: a gap is stated, but there is no bracket");
+            }
+            let pieces = prove_state(model, &live, adm, mu, "admissible side")?;
+            checks.push(format!(
+                "proved (interval arithmetic): the state x = [{}, {}, {}] is admissible at lambda = {} {} ({pieces} enclosures)",
+                adm.x[0], adm.x[1], adm.x[2], adm.lambda, everywhere(model, &live)
+            ));
+            checks.push(prove_transfer(model, &live, transfer, mu)?);
+            Some((adm.lambda, None))
+        }
+        Claim::NoEquilibrium => {
+            let (None, Some(inf), None) = (&sides.admissible, &sides.infeasible, sides.transfer)
+            else {
+                return reject("no_equilibrium under a load: needs multiplier.infeasible only");
+            };
+            if inf.lambda.is_some() {
+                return reject("no_equilibrium under a load: multiplier.infeasible.lambda must be null (the certificate covers every lambda >= 0)");
+            }
+            if cert.gap.is_some() || cert.gap_relative.is_some() {
+                return reject("no_equilibrium: a gap is stated, but there is no bracket");
+            }
+            let margin = prove_farkas_any(model, &live, inf, mu)?;
+            checks.push(format!(
+                "proved (interval arithmetic): no state (h, v, w, lambda) with lambda >= 0 is admissible (Farkas on {} joints{}, margin {margin:.3e})",
+                inf.joints.len(),
+                if inf.lambda_row.is_some() { " and the row -lambda <= 0" } else { "" }
+            ));
+            None
+        }
+        Claim::LeastThickness => unreachable!("checked above"),
+    };
+    let limit_states = match &cert.load_search {
+        Some(search) => {
+            let Some((lo, hi)) = lambda_bracket else {
+                return reject("load_search: the limit states need a multiplier claim with an admissible state");
+            };
+            let (lines, verdict) = super::verify_load_search::verify_load_search(
+                model, &live, mu, search, lo, hi,
+            )?;
+            checks.extend(lines);
+            Some(verdict)
+        }
+        None => None,
+    };
+    Ok(Report {
+        claim: cert.claim,
+        mu,
+        bracket: None,
+        arch: cert.arch.clone(),
+        checks,
+        limit_states,
+        load: Some(live.text()),
+        lambda_bracket,
+    })
+}
+
+fn claim_name(c: Claim) -> &'static str {
+    match c {
+        Claim::LeastThickness => "least_thickness",
+        Claim::NoEquilibrium => "no_equilibrium",
+        Claim::LargestMultiplier => "largest_multiplier",
+        Claim::UnboundedMultiplier => "unbounded_multiplier",
+    }
+}
+
+fn everywhere(model: &Model, live: &Live) -> &'static str {
+    match (&model.joints, live.split()) {
+        (Some(_), Some(_)) => "at every joint (both sides of the loaded section)",
+        (Some(_), None) => "at every joint",
+        (None, Some(_)) => "over the whole arch (both sides of the loaded section)",
+        (None, None) => "over the whole arch",
+    }
+}
+
+fn check_state(s: &LoadState, what: &str) -> Result<(), Rejection> {
+    if !(s.lambda.is_finite() && s.lambda >= 0.0 && s.x.iter().all(|v| v.is_finite())) {
+        return reject(format!(
+            "{what}: lambda must be finite and >= 0 and x finite, found lambda = {}",
+            s.lambda
+        ));
+    }
+    Ok(())
+}
+
+/// The stated gaps must be λ_hi − λ_lo and (λ_hi − λ_lo)/λ_hi.
+fn check_gap(cert: &Certificate, lo: f64, hi: f64) -> Result<(), Rejection> {
+    let gap = hi - lo;
+    if let Some(g) = cert.gap {
+        if !g.is_finite() || (g - gap).abs() > 1e-15 * hi.abs() + 1e-300 {
+            return reject(format!(
+                "stated gap {g} differs from lambda_hi - lambda_lo = {gap}"
+            ));
+        }
+    }
+    if let Some(g) = cert.gap_relative {
+        let r = gap / hi;
+        if !g.is_finite() || (g - r).abs() > 1e-15 + 1e-9 * r.abs() {
+            return reject(format!(
+                "stated gap_relative {g} differs from (lambda_hi - lambda_lo)/lambda_hi = {r}"
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Proves the state (x, λ) admissible on every piece of the arch (both sides of a
+/// loaded section): the dead actions of x plus λ times the live ones.
+pub(super) fn prove_state(
+    model: &Model,
+    live: &Live,
+    s: &LoadState,
+    mu: Option<f64>,
+    what: &str,
+) -> Result<usize, Rejection> {
+    let (x, lambda, eta) = (s.x, s.lambda, live.eta);
+    let evals: Vec<(f64, f64, Box<dyn Fn(I) -> Ntm + '_>)> = live
+        .pieces(model)
+        .into_iter()
+        .map(|(a, b, carries)| {
+            let f: Box<dyn Fn(I) -> Ntm> = Box::new(move |bi: I| {
+                let dead = model.ntm(bi, x, eta);
+                match live.ntm(model, bi, carries) {
+                    Some(l) => dead.plus(lambda, &l),
+                    None => dead,
+                }
+            });
+            (a, b, f)
+        })
+        .collect();
+    let pieces: Vec<Piece> = evals
+        .iter()
+        .map(|(a, b, f)| Piece {
+            a: *a,
+            b: *b,
+            eval: f.as_ref(),
+        })
+        .collect();
+    prove_pieces(model, &pieces, eta, mu, false, what)
+}
+
+/// The live part per unit λ of the activation function `kind` at the joint β on `side`
+/// (zero where the section does not carry the load).
+fn live_row(model: &Model, live: &Live, j: &CertJoint, mu: Option<f64>) -> I {
+    match live.ntm(model, I::point(j.beta), live.carries(j.beta, j.side)) {
+        Some(l) => phi(j.kind, 0, &l, live.eta, mu),
+        None => I::point(0.0),
+    }
+}
+
+fn checked_joints(
+    model: &Model,
+    live: &Live,
+    joints: &[CertJoint],
+    mu: Option<f64>,
+    count: usize,
+) -> Result<(), Rejection> {
+    if joints.len() != count {
+        return reject(format!(
+            "collapse side: a Farkas certificate here needs exactly {count} joints, found {}",
+            joints.len()
+        ));
+    }
+    for (i, j) in joints.iter().enumerate() {
+        check_farkas_joint(model, i, j, mu, live.split())?;
+    }
+    Ok(())
+}
+
+fn labels(joints: &[CertJoint]) -> Vec<(f64, String)> {
+    joints
+        .iter()
+        .map(|j| (j.y, format!("beta = {}{}", j.beta, side_text(j.side))))
+        .collect()
+}
+
+/// The Farkas certificate at λ_hi: four rows in x = (h, v, w), constants with the live
+/// terms at λ_hi.
+fn prove_farkas_at(
+    model: &Model,
+    live: &Live,
+    f: &LoadFarkas,
+    lambda: f64,
+    mu: Option<f64>,
+) -> Result<f64, Rejection> {
+    if f.lambda_row.is_some() {
+        return reject("collapse side: the row -lambda <= 0 belongs to a no_equilibrium certificate only");
+    }
+    checked_joints(model, live, &f.joints, mu, 4)?;
+    let rows: Vec<(Vec<I>, I)> = f
+        .joints
+        .iter()
+        .map(|j| {
+            let (g, c) = affine(model, j.kind, j.beta, live.eta, mu.unwrap_or(0.0));
+            (g.to_vec(), c + I::point(lambda) * live_row(model, live, j, mu))
+        })
+        .collect();
+    prove_cofactors(&rows, &labels(&f.joints))
+}
+
+/// The Farkas certificate over every λ ≥ 0: five rows in (h, v, w, λ) — the joints', and
+/// −λ ≤ 0 when `lambda_row` is given.
+fn prove_farkas_any(
+    model: &Model,
+    live: &Live,
+    f: &LoadFarkas,
+    mu: Option<f64>,
+) -> Result<f64, Rejection> {
+    let count = if f.lambda_row.is_some() { 4 } else { 5 };
+    checked_joints(model, live, &f.joints, mu, count)?;
+    let mut rows: Vec<(Vec<I>, I)> = f
+        .joints
+        .iter()
+        .map(|j| {
+            let (g, c) = affine(model, j.kind, j.beta, live.eta, mu.unwrap_or(0.0));
+            (vec![g[0], g[1], g[2], live_row(model, live, j, mu)], c)
+        })
+        .collect();
+    let mut stored = labels(&f.joints);
+    if let Some(y) = f.lambda_row {
+        if !y.is_finite() {
+            return reject("collapse side: the multiplier of -lambda <= 0 is not a finite number");
+        }
+        let z = I::point(0.0);
+        rows.push((vec![z, z, z, I::point(-1.0)], z));
+        stored.push((y, "the row -lambda <= 0".to_string()));
+    }
+    prove_cofactors(&rows, &stored)
+}
+
+/// Proves that a transfer keeps every section admissible as λ grows (see [`Transfer`]):
+/// the sections whose actions change along the ray (those that do not carry the load for
+/// `right`, those that do for `left`) change by ∓ the live unit actions u = (−cos β,
+/// sin β, cos β − (1 + η/2) cos β_P), and φ of that change must be ≤ 0. At β_P itself
+/// the extrados hinge row is identically zero (the force passes through the extrados
+/// point of its own section); every other row is proved in intervals, section by section,
+/// so the changing sections must be isolated joints (a discrete arch, or the springing
+/// itself).
+fn prove_transfer(
+    model: &Model,
+    live: &Live,
+    transfer: Transfer,
+    mu: Option<f64>,
+) -> Result<String, Rejection> {
+    let Some(bp) = live.split() else {
+        return reject("multiplier.transfer: a transfer carries a point load, not a horizontal one");
+    };
+    // the sections that change along the ray, and the sign of the change
+    let (changing, sign): (Vec<(f64, Option<super::format::Side>)>, f64) = {
+        let joints: Vec<f64> = match &model.joints {
+            Some(j) => j.clone(),
+            None => {
+                let end = match transfer {
+                    Transfer::Right => model.beta_r,
+                    Transfer::Left => model.beta_l,
+                };
+                if bp != end {
+                    return reject(format!(
+                        "multiplier.transfer {}: on a continuous arch only a load at that springing (beta = {end}) is transferred section by section; here a continuum of sections would change",
+                        transfer_name(transfer)
+                    ));
+                }
+                vec![end]
+            }
+        };
+        let carrying = |want: bool| {
+            joints
+                .iter()
+                .flat_map(|&b| sections(b, Some(bp)).into_iter().map(move |s| (b, s)))
+                .filter(|&(b, s)| live.carries(b, s) == want)
+                .collect::<Vec<_>>()
+        };
+        match transfer {
+            Transfer::Right => (carrying(false), -1.0),
+            Transfer::Left => (carrying(true), 1.0),
+        }
+    };
+    let mut proved = 0usize;
+    let mut zero = 0usize;
+    for &(b, side) in &changing {
+        let u = live
+            .ntm(model, I::point(b), true)
+            .expect("a point load's unit actions");
+        for &kind in kinds(mu) {
+            if b == bp && kind == ContactKind::HingeExtrados {
+                zero += 1; // identically zero: through the extrados point of β_P
+                continue;
+            }
+            let v = phi(kind, 0, &u, live.eta, mu).scale(sign);
+            if v.hi.is_nan() || v.hi > 0.0 {
+                return reject(format!(
+                    "multiplier.transfer {}: {} at beta = {b}{} grows along the ray (upper bound {:e}): not proved",
+                    transfer_name(transfer),
+                    kind.name(),
+                    side_text(side),
+                    v.hi
+                ));
+            }
+            proved += 1;
+        }
+    }
+    Ok(format!(
+        "proved (interval arithmetic): transferring the load to the {} springing (reactions changed by {} per unit lambda) keeps every activation function <= 0 as lambda grows: {} section(s) change, {proved} rows proved non-increasing, {zero} identically zero (the extrados hinge of the loaded section); the others are unchanged (an identity of the statics)",
+        transfer_name(transfer),
+        match transfer {
+            Transfer::Right => "(0, 1, (1 + eta/2) cos beta_P - cos beta_R)",
+            Transfer::Left => "nothing",
+        },
+        changing.len()
+    ))
+}
+
+fn transfer_name(t: Transfer) -> &'static str {
+    match t {
+        Transfer::Right => "right",
+        Transfer::Left => "left",
+    }
+}

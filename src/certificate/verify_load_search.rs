@@ -1,0 +1,416 @@
+//! Re-checking the evidence of the limit states under a live load (the `load_search`
+//! section of a load certificate, issue 11).
+//!
+//! * **No mechanism** at a listed state (the state at λ_static, or a point of the sweep):
+//!   *proved* in interval arithmetic by the Farkas alternative of the kinematic LP with the
+//!   live power — `c_j · y + z + u P_j + v q_j ≤ 0` for every kept contact, z > 0,
+//!   u, v ≥ 0, with P_j = p_j + λ q_j the total and q_j the live power of a unit rate — so no
+//!   rates λ̇ ≥ 0, Σ λ̇ = 1, B λ̇ = 0 have total power ≥ 0 and live power ≥ 0, for every
+//!   choice of one sliding sense per section. That the listed contacts are the state's
+//!   whole active set is *checked* in floating point (discrete arches).
+//! * **Limit states**: admissibility (every joint, or 2000 samples per piece of a
+//!   continuous arch), the pattern active, B λ̇ = 0, λ̇ ≥ 0, Σ λ̇ = 1, one sliding sense per
+//!   section, total power ≥ 0 and live power > 0 — *checked* in floating point.
+//! * **μ = ∞** (`associative`): every mechanism is made of hinges and dissipates nothing,
+//!   so for compatible rates Σ φ λ̇ = L_dead + λ L_live (virtual work, docs/loads.md); a
+//!   limit state at λ* has L_dead + λ* L_live = 0 with L_live > 0, and a state admissible
+//!   at λ' > λ* would give (λ' − λ*) L_live ≤ 0. With the state *proved* admissible at
+//!   λ_lo, no limit state lies below λ_lo (none at all when λ is unbounded).
+//!
+//! Not re-proved: that the sweep met every event, that two discretisations agreed
+//! (`refined`), and λ_min.
+
+use super::format::{ContactKind, LoadLimitStateCert, LoadSearchEvidence, LoadSearchMethod, Side};
+use super::interval::Interval as I;
+use super::live::Live;
+use super::verify::{check_pattern, kinds, phi, reject, Model, Rejection, LIMIT_STATE_TOL};
+use super::verify_search::{column, no_mechanism, sections, side_text, weight_work, StateAt};
+
+/// Samples per piece of a continuous arch for the floating-point admissibility check of a
+/// listed limit state.
+const SAMPLES: usize = 2000;
+
+/// Re-checks `search` against the claim: λ_static in [λ_lo, λ_hi] (`hi` `None`: unbounded,
+/// admissible states from λ_lo on). Returns the report's lines and the verdict.
+pub(super) fn verify_load_search(
+    model: &Model,
+    live: &Live,
+    mu: Option<f64>,
+    search: &LoadSearchEvidence,
+    lo: f64,
+    hi: Option<f64>,
+) -> Result<(Vec<String>, String), Rejection> {
+    let mut checks = Vec::new();
+    let states = &search.limit_states;
+    let unique = states.len() == 1
+        && states[0]
+            .continuum
+            .as_ref()
+            .is_none_or(|c| c.to.is_some_and(|to| to <= states[0].lambda));
+    if search.unique != unique {
+        return reject(format!(
+            "load_search: unique = {} but {} limit state(s) are listed{}",
+            search.unique,
+            states.len(),
+            if states.iter().any(|s| s.continuum.is_some()) {
+                " (with a continuum)"
+            } else {
+                ""
+            }
+        ));
+    }
+    if search.lambda != states.first().map(|s| s.lambda) {
+        return reject(format!(
+            "load_search: the collapse multiplier lambda = {:?} is not the least listed limit state's ({:?})",
+            search.lambda,
+            states.first().map(|s| s.lambda)
+        ));
+    }
+    if !(search.lambda_min.is_finite() && search.lambda_min >= 0.0 && search.lambda_min <= lo) {
+        return reject(format!(
+            "load_search: lambda_min = {} must lie in [0, lambda_lo = {lo}]",
+            search.lambda_min
+        ));
+    }
+    // the listed limit states
+    let mut last = f64::NEG_INFINITY;
+    for (i, ls) in states.iter().enumerate() {
+        let whose = format!("load_search: limit state {i}");
+        if !(ls.lambda >= last) {
+            return reject(format!("{whose}: lambda = {} is not ascending", ls.lambda));
+        }
+        last = ls.lambda;
+        if hi.is_some_and(|h| ls.lambda >= h) {
+            return reject(format!(
+                "{whose}: lambda = {} is not below lambda_hi = {} (no state is admissible there)",
+                ls.lambda,
+                hi.unwrap_or(f64::INFINITY)
+            ));
+        }
+        check_limit_state(model, live, mu, ls, &whose)?;
+    }
+    if !states.is_empty() {
+        checks.push(format!(
+            "checked (floating point, tolerance {LIMIT_STATE_TOL:e}; evidence, not proof): {} limit state(s), admissible, each with a mechanism without dilatancy of positive live power (lambda = {})",
+            states.len(),
+            states.iter().map(|s| s.lambda.to_string()).collect::<Vec<_>>().join(", ")
+        ));
+    }
+    if let Some(c) = states.iter().find(|s| s.continuum.is_some()) {
+        checks.push(format!(
+            "not re-checked: the continuum of limit states from lambda = {} (only its least state is checked)",
+            c.lambda
+        ));
+    }
+    // the state at λ_static
+    let at_static = states.last().is_some_and(|s| s.lambda >= lo);
+    match (search.mechanism_at_static, hi) {
+        (true, None) => {
+            return reject("load_search: mechanism_at_static is true, but lambda_static is unbounded")
+        }
+        (true, Some(_)) if !at_static => {
+            return reject(format!(
+                "load_search: mechanism_at_static is true, but no listed limit state lies in [lambda_lo, lambda_hi] (from {lo})"
+            ))
+        }
+        (false, Some(_)) if at_static => {
+            return reject(format!(
+                "load_search: mechanism_at_static is false, but a listed limit state lies in [lambda_lo, lambda_hi] (from {lo})"
+            ))
+        }
+        _ => {}
+    }
+    let state_at = |lambda: f64, x: [f64; 3]| StateAt {
+        x,
+        eta: live.eta,
+        load: Some((live, lambda)),
+    };
+    match (&search.static_state, hi) {
+        (Some(_), _) if search.mechanism_at_static => {
+            return reject("load_search: a static_state without mechanism is listed, but mechanism_at_static is true")
+        }
+        (Some(_), None) => {
+            return reject("load_search: a static_state is listed, but lambda_static is unbounded")
+        }
+        (Some(p), Some(h)) => {
+            if !(p.lambda >= lo && p.lambda <= h) {
+                return reject(format!(
+                    "load_search: static_state lambda = {} lies outside [lambda_lo, lambda_hi]",
+                    p.lambda
+                ));
+            }
+            let proved = no_mechanism(
+                model,
+                mu,
+                state_at(p.lambda, p.x),
+                &p.pattern,
+                &p.farkas,
+                "load_search: static_state",
+            )?;
+            checks.push(if proved {
+                format!(
+                    "proved (interval arithmetic): the {} contacts active at the state at lambda_static (lambda = {}) carry no mechanism with non-negative total and live power (Farkas); checked (floating point): they are its whole active set{}",
+                    p.pattern.len(),
+                    p.lambda,
+                    if model.joints.is_some() { "" } else { " (at the listed contacts; a continuous arch's other angles are not enumerated)" }
+                )
+            } else {
+                format!(
+                    "not proved: the state at lambda_static (lambda = {}) carries no mechanism (no Farkas certificate covers every sliding sense)",
+                    p.lambda
+                )
+            });
+        }
+        (None, Some(_)) if !search.mechanism_at_static => checks.push(
+            "not proved: that the state at lambda_static carries no mechanism (no evidence listed)"
+                .into(),
+        ),
+        _ => {}
+    }
+    // the method's own evidence
+    match search.method {
+        LoadSearchMethod::Sweep => {
+            if model.joints.is_none() {
+                return reject("load_search: method sweep needs a discrete arch");
+            }
+            if mu.is_none() {
+                return reject("load_search: method sweep is for finite friction (mu = inf is associative)");
+            }
+            let mut proved = 0;
+            for (i, p) in search.no_mechanism.iter().enumerate() {
+                let top = hi.unwrap_or(f64::INFINITY);
+                if !(p.lambda >= search.lambda_min && p.lambda <= top) {
+                    return reject(format!(
+                        "load_search: no_mechanism {i}: lambda = {} lies outside [lambda_min, lambda_hi]",
+                        p.lambda
+                    ));
+                }
+                if no_mechanism(
+                    model,
+                    mu,
+                    state_at(p.lambda, p.x),
+                    &p.pattern,
+                    &p.farkas,
+                    &format!("load_search: no_mechanism {i}"),
+                )? {
+                    proved += 1;
+                }
+            }
+            let n = search.no_mechanism.len();
+            checks.push(format!(
+                "proved (interval arithmetic) at {proved} of the {n} points the sweep checked without finding a mechanism ({} events): their active contacts carry no mechanism with non-negative total and live power (Farkas); not re-proved: that the sweep met every event of P(lambda) (docs/loads.md), so that no limit state lies between them",
+                search.events
+            ));
+            if proved < n {
+                checks.push(format!(
+                    "not proved: {} points of the sweep have no Farkas certificate covering every sliding sense",
+                    n - proved
+                ));
+            }
+        }
+        LoadSearchMethod::Associative => {
+            if mu.is_some() {
+                return reject("load_search: method associative needs infinite friction (mu = null)");
+            }
+            if !search.no_mechanism.is_empty() {
+                return reject("load_search: method associative lists no sweep points");
+            }
+            if states.iter().any(|s| s.lambda < lo) {
+                return reject(format!(
+                    "load_search (associative): a limit state below lambda_lo = {lo} is listed, which virtual work rules out"
+                ));
+            }
+            checks.push(match hi {
+                Some(_) => format!(
+                    "proved (virtual work, mu = inf): no limit state lies below lambda_lo = {lo}: a hinge-only mechanism dissipates nothing, so a limit state at lambda* admits no state at any lambda > lambda*, and one is proved admissible at lambda_lo; with lambda_hi, every limit state lies in [lambda_lo, lambda_hi)"
+                ),
+                None => "proved (virtual work, mu = inf): no limit state exists: a hinge-only mechanism dissipates nothing, so a limit state at lambda* admits no state at any lambda > lambda*, and states are proved admissible at every lambda from lambda_lo on".to_string(),
+            });
+        }
+        LoadSearchMethod::Refined => {
+            if model.joints.is_some() {
+                return reject("load_search: method refined is for a continuous arch");
+            }
+            if !search.no_mechanism.is_empty() {
+                return reject("load_search: method refined lists no sweep points");
+            }
+            checks.push("not re-checked: that the refined limit states of two discretisations agreed (method refined); the listed states are checked above".into());
+        }
+    }
+    if search.lambda_min > 0.0 {
+        checks.push(format!(
+            "not proved: lambda_min = {} (below it the arch does not stand; the state there is an unloading limit, never a collapse)",
+            search.lambda_min
+        ));
+    }
+    let verdict = match (states.len(), unique) {
+        (0, _) => "no limit state: the load never drives a mechanism".to_string(),
+        (1, true) => format!(
+            "one limit state, lambda = {} (unique{})",
+            states[0].lambda,
+            if search.mechanism_at_static {
+                ", at lambda_static"
+            } else {
+                ""
+            }
+        ),
+        (n, _) => format!(
+            "{n} limit states, the least at lambda = {} (not unique{})",
+            states[0].lambda,
+            if states.iter().any(|s| s.continuum.is_some()) {
+                "; with a continuum"
+            } else {
+                ""
+            }
+        ),
+    };
+    Ok((
+        checks,
+        format!(
+            "the search ({}) lists {verdict}",
+            match search.method {
+                LoadSearchMethod::Sweep => "sweep",
+                LoadSearchMethod::Associative => "associative",
+                LoadSearchMethod::Refined => "refined",
+            }
+        ),
+    ))
+}
+
+/// The floating-point consistency checks of a listed limit state under the load.
+fn check_limit_state(
+    model: &Model,
+    live: &Live,
+    mu: Option<f64>,
+    ls: &LoadLimitStateCert,
+    whose: &str,
+) -> Result<(), Rejection> {
+    let tol = LIMIT_STATE_TOL;
+    let finite = ls.lambda.is_finite()
+        && ls.lambda >= 0.0
+        && ls.live_power.is_finite()
+        && ls.x.iter().all(|v| v.is_finite())
+        && ls.rates.iter().all(|v| v.is_finite())
+        && ls.pattern.iter().all(|j| j.beta.is_finite())
+        && ls
+            .continuum
+            .as_ref()
+            .is_none_or(|c| c.to.is_none_or(|t| t.is_finite() && t >= ls.lambda));
+    if !finite {
+        return reject(format!(
+            "{whose}: every number must be finite, lambda >= 0 and a continuum's end not below it"
+        ));
+    }
+    check_pattern(model, &ls.pattern, mu, live.split(), whose)?;
+    if ls.rates.len() != ls.pattern.len() || ls.rates.iter().any(|&r| r < 0.0) {
+        return reject(format!(
+            "{whose}: rates must be one non-negative number per pattern joint"
+        ));
+    }
+    if (ls.rates.iter().sum::<f64>() - 1.0).abs() > tol {
+        return reject(format!("{whose}: rates do not sum to 1"));
+    }
+    let state = StateAt {
+        x: ls.x,
+        eta: live.eta,
+        load: Some((live, ls.lambda)),
+    };
+    let scale = 1.0 + ls.x.iter().map(|v| v.abs()).sum::<f64>();
+    // the pattern is active; one sliding sense per section
+    for (i, j) in ls.pattern.iter().enumerate() {
+        let v = phi(j.kind, 0, &state.ntm(model, j.beta, j.side), live.eta, mu).mid();
+        if v.is_nan() || v.abs() > tol * scale {
+            return reject(format!(
+                "{whose}: {} at beta = {}{} is not active (phi = {v:e})",
+                j.kind.name(),
+                j.beta,
+                side_text(j.side)
+            ));
+        }
+        let both = ls.pattern.iter().enumerate().any(|(k, o)| {
+            k != i
+                && o.beta == j.beta
+                && o.side == j.side
+                && j.kind == ContactKind::SlidePlus
+                && o.kind == ContactKind::SlideMinus
+                && ls.rates[i] > 0.0
+                && ls.rates[k] > 0.0
+        });
+        if both {
+            return reject(format!(
+                "{whose}: the section at beta = {} slides both ways at once",
+                j.beta
+            ));
+        }
+    }
+    // admissible at every joint, or at samples of each piece of a continuous arch
+    let angles: Vec<(f64, Option<Side>)> = match &model.joints {
+        Some(js) => js
+            .iter()
+            .flat_map(|&b| sections(b, live.split()).into_iter().map(move |s| (b, s)))
+            .collect(),
+        None => live
+            .pieces(model)
+            .into_iter()
+            .flat_map(|(a, b, carries)| {
+                (0..=SAMPLES).map(move |i| {
+                    let beta = if i == SAMPLES {
+                        b
+                    } else {
+                        a + (b - a) * i as f64 / SAMPLES as f64
+                    };
+                    // at the loaded angle, the piece's own side of the section
+                    let side = (live.split() == Some(beta))
+                        .then_some(if carries { Side::After } else { Side::Before });
+                    (beta, side)
+                })
+            })
+            .collect(),
+    };
+    for &(b, side) in &angles {
+        let a = state.ntm(model, b, side);
+        for &k in kinds(mu) {
+            let v = phi(k, 0, &a, live.eta, mu).mid();
+            if v.is_nan() || v > tol * scale {
+                return reject(format!(
+                    "{whose}: not admissible, {} = {v:e} > 0 at beta = {b}{}",
+                    k.name(),
+                    side_text(side)
+                ));
+            }
+        }
+    }
+    // B λ̇ = 0, total power ≥ 0, live power > 0 (and as stated)
+    let kept: Vec<(f64, ContactKind, Option<Side>)> =
+        ls.pattern.iter().map(|j| (j.beta, j.kind, j.side)).collect();
+    let columns: Vec<[I; 3]> = kept
+        .iter()
+        .map(|&(b, k, _)| column(k, b, live.eta))
+        .collect();
+    let work = weight_work(model, live.eta, &kept, &columns);
+    let q = live.power(model, &kept, &columns);
+    let mut b = [0.0; 3];
+    let (mut total, mut live_power) = (0.0, 0.0);
+    for (i, &r) in ls.rates.iter().enumerate() {
+        for k in 0..3 {
+            b[k] += r * columns[i][k].mid();
+        }
+        total += r * (-work[i].mid() + ls.lambda * q[i].mid());
+        live_power += r * q[i].mid();
+    }
+    if b.iter().any(|v| v.abs() > tol) {
+        return reject(format!("{whose}: B lambda = {b:?} is not zero"));
+    }
+    if total < -tol {
+        return reject(format!(
+            "{whose}: total external power {total:e} is negative"
+        ));
+    }
+    if live_power <= 0.0 || (live_power - ls.live_power).abs() > tol * (1.0 + live_power.abs()) {
+        return reject(format!(
+            "{whose}: the live power of the rates is {live_power:e}, stated {:e} (must be positive and equal)",
+            ls.live_power
+        ));
+    }
+    Ok(())
+}
