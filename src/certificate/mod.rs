@@ -55,6 +55,7 @@
 //! reports `gap_not_reached` and exits 1).
 
 pub mod certify;
+pub mod certify_load;
 pub mod format;
 pub mod interval;
 mod live;
@@ -64,5 +65,6 @@ mod verify_load_search;
 mod verify_search;
 
 pub use certify::certify;
+pub use certify_load::certify_load;
 pub use format::*;
 pub use verify::{verify, Rejection, Report};

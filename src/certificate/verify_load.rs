@@ -236,23 +236,31 @@ fn live_row(model: &Model, live: &Live, j: &CertJoint, mu: Option<f64>) -> I {
     }
 }
 
+/// The joints of a Farkas certificate in `unknowns` unknowns that include w: `unknowns`
+/// + 1 joints, or one fewer when every joint is a sliding one (T and N, hence the sliding
+/// rows, do not involve w: the certificate is then one dimension lower). Returns whether w
+/// is dropped.
 fn checked_joints(
     model: &Model,
     live: &Live,
     joints: &[CertJoint],
     mu: Option<f64>,
-    count: usize,
-) -> Result<(), Rejection> {
-    if joints.len() != count {
+    unknowns: usize,
+) -> Result<bool, Rejection> {
+    let sliding = joints.iter().all(|j| !j.kind.is_hinge());
+    let without_w = sliding && joints.len() == unknowns;
+    if joints.len() != unknowns + 1 && !without_w {
         return reject(format!(
-            "collapse side: a Farkas certificate here needs exactly {count} joints, found {}",
+            "collapse side: a Farkas certificate here needs exactly {} joints ({} if all are sliding ones, which do not involve w), found {}",
+            unknowns + 1,
+            unknowns,
             joints.len()
         ));
     }
     for (i, j) in joints.iter().enumerate() {
         check_farkas_joint(model, i, j, mu, live.split())?;
     }
-    Ok(())
+    Ok(without_w)
 }
 
 fn labels(joints: &[CertJoint]) -> Vec<(f64, String)> {
@@ -262,8 +270,21 @@ fn labels(joints: &[CertJoint]) -> Vec<(f64, String)> {
         .collect()
 }
 
-/// The Farkas certificate at λ_hi: four rows in x = (h, v, w), constants with the live
-/// terms at λ_hi.
+/// The gradient of a row with w's component (index 2) left out when `without_w`.
+fn gradient(g: Vec<I>, without_w: bool) -> Vec<I> {
+    if without_w {
+        g.iter()
+            .enumerate()
+            .filter(|&(k, _)| k != 2)
+            .map(|(_, v)| *v)
+            .collect()
+    } else {
+        g
+    }
+}
+
+/// The Farkas certificate at λ_hi: four rows in x = (h, v, w) (three sliding rows in
+/// (h, v)), constants with the live terms at λ_hi.
 fn prove_farkas_at(
     model: &Model,
     live: &Live,
@@ -274,34 +295,49 @@ fn prove_farkas_at(
     if f.lambda_row.is_some() {
         return reject("collapse side: the row -lambda <= 0 belongs to a no_equilibrium certificate only");
     }
-    checked_joints(model, live, &f.joints, mu, 4)?;
+    let without_w = checked_joints(model, live, &f.joints, mu, 3)?;
     let rows: Vec<(Vec<I>, I)> = f
         .joints
         .iter()
         .map(|j| {
             let (g, c) = affine(model, j.kind, j.beta, live.eta, mu.unwrap_or(0.0));
-            (g.to_vec(), c + I::point(lambda) * live_row(model, live, j, mu))
+            (
+                gradient(g.to_vec(), without_w),
+                c + I::point(lambda) * live_row(model, live, j, mu),
+            )
         })
         .collect();
     prove_cofactors(&rows, &labels(&f.joints))
 }
 
-/// The Farkas certificate over every λ ≥ 0: five rows in (h, v, w, λ) — the joints', and
-/// −λ ≤ 0 when `lambda_row` is given.
+/// The Farkas certificate over every λ ≥ 0: five rows in (h, v, w, λ) (four sliding rows
+/// in (h, v, λ)) — the joints', and −λ ≤ 0 when `lambda_row` is given.
 fn prove_farkas_any(
     model: &Model,
     live: &Live,
     f: &LoadFarkas,
     mu: Option<f64>,
 ) -> Result<f64, Rejection> {
-    let count = if f.lambda_row.is_some() { 4 } else { 5 };
-    checked_joints(model, live, &f.joints, mu, count)?;
+    let extra = usize::from(f.lambda_row.is_some());
+    // the joints and the λ row together: 5 rows, or 4 when all joints slide
+    let sliding = f.joints.iter().all(|j| !j.kind.is_hinge());
+    let total = f.joints.len() + extra;
+    let without_w = sliding && total == 4;
+    if total != 5 && !without_w {
+        return reject(format!(
+            "collapse side: a Farkas certificate over (h, v, w, lambda) needs exactly 5 rows (4 if all joints are sliding ones), found {total}"
+        ));
+    }
+    for (i, j) in f.joints.iter().enumerate() {
+        check_farkas_joint(model, i, j, mu, live.split())?;
+    }
     let mut rows: Vec<(Vec<I>, I)> = f
         .joints
         .iter()
         .map(|j| {
             let (g, c) = affine(model, j.kind, j.beta, live.eta, mu.unwrap_or(0.0));
-            (vec![g[0], g[1], g[2], live_row(model, live, j, mu)], c)
+            let g = vec![g[0], g[1], g[2], live_row(model, live, j, mu)];
+            (gradient(g, without_w), c)
         })
         .collect();
     let mut stored = labels(&f.joints);
@@ -310,7 +346,7 @@ fn prove_farkas_any(
             return reject("collapse side: the multiplier of -lambda <= 0 is not a finite number");
         }
         let z = I::point(0.0);
-        rows.push((vec![z, z, z, I::point(-1.0)], z));
+        rows.push((gradient(vec![z, z, z, I::point(-1.0)], without_w), z));
         stored.push((y, "the row -lambda <= 0".to_string()));
     }
     prove_cofactors(&rows, &stored)
@@ -403,4 +439,19 @@ fn transfer_name(t: Transfer) -> &'static str {
         Transfer::Right => "right",
         Transfer::Left => "left",
     }
+}
+
+/// Proves only the admissible side of a load certificate, `multiplier.admissible` (used
+/// by `certify` while it searches for the other side).
+pub(super) fn prove_admissible_side(cert: &Certificate) -> Result<usize, Rejection> {
+    let model = super::verify::model_of(cert)?;
+    let (Some(spec), Some(m)) = (&cert.load, &cert.multiplier) else {
+        return reject("no load or multiplier section");
+    };
+    let Some(adm) = &m.admissible else {
+        return reject("no admissible side");
+    };
+    check_state(adm, "multiplier.admissible")?;
+    let live = Live::of(spec, &model)?;
+    prove_state(&model, &live, adm, cert.mu, "admissible side")
 }

@@ -2,22 +2,33 @@
 //! independent re-check.
 
 use super::arch_args::ArchArgs;
+use super::load::LiveLoadArgs;
 use super::{to_json, Exit, Io};
-use crate::arch::{check_mu, fmt_value, InputError};
-use crate::certificate::{certify, verify, ArchSpec, Certificate, Claim, NotCertified, Rejection};
+use crate::arch::{check_eta, check_mu, fmt_value, InputError};
+use crate::certificate::{
+    certify, certify_load, verify, ArchSpec, Certificate, Claim, LoadSearchMethod, NotCertified,
+    Rejection,
+};
 use crate::render::json::JSON_VERSION;
 use crate::settings::Settings;
 use clap::Args;
 use std::path::PathBuf;
 
 #[derive(Args, Debug)]
+#[command(mut_group("live", |g| g.required(false)))]
 pub(crate) struct CertifyArgs {
     #[command(flatten)]
     arch: ArchArgs,
     /// Friction coefficient mu > 0; `inf` for no sliding.
     #[arg(long, allow_negative_numbers = true)]
     mu: f64,
-    /// Requested relative gap (eta_hi - eta_lo)/eta_hi, 1e-15 to 1e-4. If it cannot be proved, the best certificate found (gap widened tenfold up to 1e-4) is still written, with status gap_not_reached and exit 1.
+    /// With a live-load flag: the thickness ratio eta = t/r, 0 < eta < 2, at which the load multiplier is certified.
+    #[arg(long, allow_hyphen_values = true)]
+    eta: Option<f64>,
+    /// A live load (as for `load`): certify its largest admissible multiplier lambda_static and its limit states instead of eta*.
+    #[command(flatten)]
+    live: Option<LiveLoadArgs>,
+    /// Requested relative gap (hi - lo)/hi of the bracket (of eta*, or of lambda_static under a load), 1e-15 to 1e-4. If it cannot be proved, the best certificate found (gap widened tenfold up to 1e-4) is still written, with status gap_not_reached and exit 1.
     #[arg(long, default_value_t = 1e-12, allow_negative_numbers = true)]
     gap: f64,
     /// Write the certificate here instead of standard output.
@@ -78,7 +89,32 @@ pub(crate) fn run_certify(a: CertifyArgs, settings: &Settings, io: &mut Io) -> E
             range: "1e-15 <= gap <= 1e-4".into(),
         });
     }
-    let cert = match certify(&arch, a.mu, a.gap, settings) {
+    // a live load and its thickness come together
+    let load = match (&a.live, a.eta) {
+        (Some(live), Some(eta)) => match check_eta(eta).and_then(|_| live.build(&arch)) {
+            Ok(load) => Some((eta, load)),
+            Err(e) => return io.bad_input(&e),
+        },
+        (Some(_), None) => {
+            return io.bad_input(&InputError::Inconsistent {
+                arg: "--eta",
+                reason: "a live-load certificate needs the thickness ratio --eta (0 < eta < 2)"
+                    .into(),
+            })
+        }
+        (None, Some(_)) => {
+            return io.bad_input(&InputError::Inconsistent {
+                arg: "--eta",
+                reason: "--eta is used only with a live load (--horizontal, --horizontal-left, --point-load, --point-load-deg or --point-load-joint); without one, certify finds eta* itself".into(),
+            })
+        }
+        (None, None) => None,
+    };
+    let made = match &load {
+        Some((eta, live)) => certify_load(&arch, *eta, a.mu, live, a.gap, settings),
+        None => certify(&arch, a.mu, a.gap, settings),
+    };
+    let cert = match made {
         Ok(cert) => cert,
         Err(NotCertified(reason)) => {
             if a.json {
@@ -93,7 +129,7 @@ pub(crate) fn run_certify(a: CertifyArgs, settings: &Settings, io: &mut Io) -> E
         }
     };
     let delivered = cert.delivers_gap(a.gap);
-    let bracket = cert.bracket();
+    let bracket = cert.bracket().or(cert.lambda_bracket());
     let gap_relative = bracket.map(|(lo, hi)| (hi - lo) / hi);
     if let Some(path) = &a.out {
         if let Err(e) = std::fs::write(path, to_json(&cert)) {
@@ -108,41 +144,32 @@ pub(crate) fn run_certify(a: CertifyArgs, settings: &Settings, io: &mut Io) -> E
         ));
     }
     if a.json {
-        io.out(&to_json(&serde_json::json!({
+        let mut doc = serde_json::json!({
             "version": JSON_VERSION,
             "status": if delivered { "ok" } else { "gap_not_reached" },
             "file": a.out.as_ref().map(|p| p.display().to_string()),
             "claim": cert.claim,
             "mu": cert.mu,
-            "eta_lo": bracket.map(|b| b.0),
-            "eta_hi": bracket.map(|b| b.1),
+            "eta_lo": cert.bracket().map(|b| b.0),
+            "eta_hi": cert.bracket().map(|b| b.1),
             "gap_requested": a.gap,
             "gap_relative": gap_relative,
-            "certificate": cert,
-        })));
+        });
+        if let Some(spec) = &cert.load {
+            doc["eta"] = serde_json::json!(spec.eta);
+            doc["load"] = serde_json::json!(spec);
+            doc["lambda_lo"] = serde_json::json!(cert.lambda_bracket().map(|b| b.0));
+            doc["lambda_hi"] = serde_json::json!(cert.lambda_bracket().map(|b| b.1));
+        }
+        doc["certificate"] = serde_json::json!(cert);
+        io.out(&to_json(&doc));
     } else if let Some(path) = &a.out {
-        let what = match bracket {
-            Some((lo, hi)) => format!(
-                "claim: eta* lies in [{lo}, {hi}] at mu = {}, relative gap {:e} (requested {:e})",
-                mu_text(cert.mu),
-                (hi - lo) / hi,
-                a.gap
-            ),
-            None => format!("claim: no thickness stands at mu = {}", mu_text(cert.mu)),
-        };
-        let search = cert.search.as_ref().map_or(
-            "  limit states: not certified (the search could not be completed)\n".to_string(),
-            |s| {
-                format!(
-                    "  limit states: {} at eta_s, {} above it ({}; Farkas evidence for {} state(s) without a mechanism)\n",
-                    if s.mechanism_at_eta { "one" } else { "none" },
-                    s.limit_states_above.len(),
-                    if s.unique { "unique" } else { "not unique" },
-                    s.no_mechanism.len() + usize::from(s.least_state.is_some())
-                )
-            },
-        );
-        io.out(&format!("wrote {}\n  {what}\n{search}", path.display()));
+        io.out(&format!(
+            "wrote {}\n  {}\n{}",
+            path.display(),
+            claim_text(&cert, a.gap),
+            limit_states_text(&cert)
+        ));
     } else {
         io.out(&to_json(&cert));
     }
@@ -151,6 +178,74 @@ pub(crate) fn run_certify(a: CertifyArgs, settings: &Settings, io: &mut Io) -> E
     } else {
         Exit::NoAnswer
     }
+}
+
+/// The certificate's claim in one line.
+fn claim_text(cert: &Certificate, requested: f64) -> String {
+    let mu = mu_text(cert.mu);
+    let eta = cert.load.as_ref().map(|l| l.eta);
+    match (cert.bracket(), cert.lambda_bracket(), eta) {
+        (Some((lo, hi)), _, _) => format!(
+            "claim: eta* lies in [{lo}, {hi}] at mu = {mu}, relative gap {:e} (requested {requested:e})",
+            (hi - lo) / hi
+        ),
+        (None, Some((lo, hi)), Some(eta)) => format!(
+            "claim: lambda_static lies in [{lo}, {hi}] at eta = {eta}, mu = {mu}, relative gap {:e} (requested {requested:e})",
+            (hi - lo) / hi
+        ),
+        (None, None, Some(eta)) if cert.claim == Claim::UnboundedMultiplier => format!(
+            "claim: lambda_static is unbounded at eta = {eta}, mu = {mu} (admissible states at every lambda >= {})",
+            cert.multiplier
+                .as_ref()
+                .and_then(|m| m.admissible.as_ref())
+                .map_or(f64::NAN, |s| s.lambda)
+        ),
+        (None, None, Some(eta)) => {
+            format!("claim: no state is admissible at any lambda >= 0 at eta = {eta}, mu = {mu}")
+        }
+        (None, _, None) => format!("claim: no thickness stands at mu = {mu}"),
+    }
+}
+
+/// What the certificate says about the limit states, one line.
+fn limit_states_text(cert: &Certificate) -> String {
+    if cert.load.is_some() {
+        if cert.claim == Claim::NoEquilibrium {
+            return String::new();
+        }
+        return cert.load_search.as_ref().map_or(
+            "  limit states: not certified (the search could not be completed)\n".to_string(),
+            |s| {
+                format!(
+                    "  limit states: {} ({}{}; {} method; Farkas evidence for {} state(s) without a mechanism)\n",
+                    match s.lambda {
+                        Some(l) => format!("{}, the collapse multiplier lambda = {l}", s.limit_states.len()),
+                        None => "none".to_string(),
+                    },
+                    if s.unique { "unique" } else { "not unique" },
+                    if s.mechanism_at_static { ", one at lambda_static" } else { "" },
+                    match s.method {
+                        LoadSearchMethod::Sweep => "sweep",
+                        LoadSearchMethod::Associative => "associative",
+                        LoadSearchMethod::Refined => "refined",
+                    },
+                    s.no_mechanism.len() + usize::from(s.static_state.is_some())
+                )
+            },
+        );
+    }
+    cert.search.as_ref().map_or(
+        "  limit states: not certified (the search could not be completed)\n".to_string(),
+        |s| {
+            format!(
+                "  limit states: {} at eta_s, {} above it ({}; Farkas evidence for {} state(s) without a mechanism)\n",
+                if s.mechanism_at_eta { "one" } else { "none" },
+                s.limit_states_above.len(),
+                if s.unique { "unique" } else { "not unique" },
+                s.no_mechanism.len() + usize::from(s.least_state.is_some())
+            )
+        },
+    )
 }
 
 pub(crate) fn run_verify(a: VerifyArgs, io: &mut Io) -> Exit {
@@ -180,6 +275,16 @@ pub(crate) fn run_verify(a: VerifyArgs, io: &mut Io) -> Exit {
             "arch": arch_json(&cert.arch),
             "checks": checks,
         });
+        if let Some(spec) = &cert.load {
+            doc["eta"] = serde_json::json!(spec.eta);
+            doc["load"] = serde_json::json!(spec);
+            doc["lambda_lo"] = serde_json::json!(cert
+                .multiplier
+                .as_ref()
+                .and_then(|m| m.admissible.as_ref())
+                .map(|s| s.lambda));
+            doc["lambda_hi"] = serde_json::json!(cert.lambda_bracket().map(|b| b.1));
+        }
         if let Ok(r) = &outcome {
             doc["statement"] = serde_json::json!(r.statement());
             doc["limit_states"] = serde_json::json!(r.limit_states);
