@@ -259,6 +259,7 @@ fn bracket(
                 }),
                 infeasible: None,
                 transfer: None,
+                recession: None,
             });
             if prove_admissible_side(&c).is_ok() {
                 let hi_rows: Vec<(Loaded, Row)> = pool
@@ -369,9 +370,6 @@ fn unbounded(
             "lambda_static is unbounded (admissible states at every lambda >= {lambda_min}), but it is not certified: {why}"
         ))
     };
-    if !matches!(load, LiveLoad::Point { .. }) {
-        return Err(unproved("an unbounded multiplier is proved only for a point load carried into a springing"));
-    }
     // a state strictly inside the admissible set at the start of the ray
     let start = if lambda_min == 0.0 {
         let mut ws = WorkingSet::initial(arch);
@@ -401,19 +399,54 @@ fn unbounded(
         None
     };
     let (lambda, x) = start.unwrap_or((lambda_min, x_min));
+    let sides = |transfer, recession| MultiplierSides {
+        admissible: Some(LoadState { lambda, x }),
+        infeasible: None,
+        transfer,
+        recession,
+    };
     for transfer in [Transfer::Right, Transfer::Left] {
-        cert.multiplier = Some(MultiplierSides {
-            admissible: Some(LoadState { lambda, x }),
-            infeasible: None,
-            transfer: Some(transfer),
-        });
+        cert.multiplier = Some(sides(Some(transfer), None));
         if verify(&cert).is_ok() {
             return Ok(cert);
         }
     }
+    // a direction along which every row decreases strictly: the margin LP on the rows'
+    // linear parts g · d_x + a_λ (every joint, or a fine sample of a continuous arch)
+    let joints: Vec<f64> = match arch.layout() {
+        JointLayout::Discrete(j) => j.clone(),
+        JointLayout::Continuous => sample(arch, load),
+    };
+    let linear: Vec<Affine> = rows(arch, &joints, eta, mu, load)
+        .iter()
+        .map(|r| Affine {
+            g: [r.a[0], r.a[1], r.a[2]],
+            c: r.a[3],
+        })
+        .collect();
+    if let Ok((d, s)) = lp::max_margin(&linear, 1.0, settings) {
+        if s > 0.0 {
+            cert.multiplier = Some(sides(None, Some(LoadState { lambda: 1.0, x: d })));
+            if verify(&cert).is_ok() {
+                return Ok(cert);
+            }
+        }
+    }
     Err(unproved(
-        "no state strictly inside the admissible set with a transfer of the load to a springing was proved (the recession direction of the admissible set leaves activation functions exactly at zero, which interval arithmetic cannot prove <= 0)",
+        "neither a transfer of the load to a springing nor a direction along which every activation function decreases strictly was proved (the recession directions of the admissible set leave some activation functions exactly at zero, which interval arithmetic cannot prove <= 0)",
     ))
+}
+
+/// 721 equally spaced angles of a continuous arch, and the point load's own.
+fn sample(arch: &Arch, load: &LiveLoad) -> Vec<f64> {
+    let (a, b) = (arch.beta_right(), arch.beta_left());
+    let mut j: Vec<f64> = (0..=720).map(|i| a + (b - a) * i as f64 / 720.0).collect();
+    if let LiveLoad::Point { beta } = *load {
+        j.push(beta);
+        j.sort_by(f64::total_cmp);
+        j.dedup();
+    }
+    j
 }
 
 /// No state at any λ ≥ 0: a Farkas certificate over (h, v, w, λ).
@@ -429,16 +462,7 @@ fn no_equilibrium(
     // subset of sections holds for the whole arch)
     let joints: Vec<f64> = match arch.layout() {
         JointLayout::Discrete(j) => j.clone(),
-        JointLayout::Continuous => {
-            let (a, b) = (arch.beta_right(), arch.beta_left());
-            let mut j: Vec<f64> = (0..=720).map(|i| a + (b - a) * i as f64 / 720.0).collect();
-            if let LiveLoad::Point { beta } = *load {
-                j.push(beta);
-                j.sort_by(f64::total_cmp);
-                j.dedup();
-            }
-            j
-        }
+        JointLayout::Continuous => sample(arch, load),
     };
     let all: Vec<(Loaded, [f64; 4], f64)> = rows(arch, &joints, eta, mu, load)
         .iter()
@@ -526,6 +550,7 @@ fn no_equilibrium(
                 lambda_row: labelled.iter().find(|(l, _)| l.is_none()).map(|p| p.1),
             }),
             transfer: None,
+            recession: None,
         });
         c
     };

@@ -331,13 +331,18 @@ pub struct MultiplierSides {
     /// λ ≥ 0.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub infeasible: Option<LoadFarkas>,
-    /// `unbounded_multiplier`: the transfer that keeps the state admissible as λ grows.
+    /// `unbounded_multiplier`: the transfer that keeps the state admissible as λ grows
+    /// (exactly one of `transfer` and `recession`).
     #[serde(
         default,
         skip_serializing_if = "Option::is_none",
         deserialize_with = "field_transfer"
     )]
     pub transfer: Option<Transfer>,
+    /// `unbounded_multiplier`: a direction (d_x, d_λ), d_λ > 0, along which no activation
+    /// function grows (its linear part g · d_x + a_λ d_λ ≤ 0 at every section).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub recession: Option<LoadState>,
 }
 
 /// How the list of limit states under the load was established (a closed set).

@@ -159,6 +159,24 @@ impl Model {
         }
     }
 
+    /// N, T, M of the reactions x alone (no weight): the linear part of the statics,
+    /// N = h sin β + v cos β, T = h cos β − v sin β, M = −h (sin β − sin β_R) +
+    /// v (cos β_R − cos β) + w, with dN = T, dT = −N, dM = −T.
+    pub(super) fn ntm_weightless(&self, b: I, x: [f64; 3]) -> Ntm {
+        let (h, v, w) = (I::point(x[0]), I::point(x[1]), I::point(x[2]));
+        let (s, c) = (b.sin(), b.cos());
+        let br = I::point(self.beta_r);
+        let (sr, cr) = (br.sin(), br.cos());
+        let n0 = h * s + v * c;
+        let t0 = h * c - v * s;
+        let m0 = -(h * (s - sr)) + v * (cr - c) + w;
+        Ntm {
+            n: [n0, t0, -n0],
+            t: [t0, -n0, -t0],
+            m: [m0, -t0, n0],
+        }
+    }
+
     pub(super) fn ntm(&self, b: I, x: [f64; 3], eta: f64) -> Ntm {
         let (h, v, w) = (I::point(x[0]), I::point(x[1]), I::point(x[2]));
         let (s, c) = (b.sin(), b.cos());

@@ -53,9 +53,10 @@ pub(super) fn verify_load(cert: &Certificate, model: &Model) -> Result<Report, R
     let mut checks = Vec::new();
     let lambda_bracket = match cert.claim {
         Claim::LargestMultiplier => {
-            let (Some(adm), Some(inf), None) = (&sides.admissible, &sides.infeasible, sides.transfer)
+            let (Some(adm), Some(inf), None, None) =
+                (&sides.admissible, &sides.infeasible, sides.transfer, &sides.recession)
             else {
-                return reject("largest_multiplier: needs multiplier.admissible and multiplier.infeasible (and no transfer)");
+                return reject("largest_multiplier: needs multiplier.admissible and multiplier.infeasible (and no transfer or recession)");
             };
             let Some(lambda_hi) = inf.lambda else {
                 return reject("largest_multiplier: multiplier.infeasible.lambda (lambda_hi) is missing");
@@ -81,9 +82,8 @@ pub(super) fn verify_load(cert: &Certificate, model: &Model) -> Result<Report, R
             Some((adm.lambda, Some(lambda_hi)))
         }
         Claim::UnboundedMultiplier => {
-            let (Some(adm), None, Some(transfer)) = (&sides.admissible, &sides.infeasible, sides.transfer)
-            else {
-                return reject("unbounded_multiplier: needs multiplier.admissible and multiplier.transfer (and no infeasible side)");
+            let (Some(adm), None) = (&sides.admissible, &sides.infeasible) else {
+                return reject("unbounded_multiplier: needs multiplier.admissible and a transfer or a recession direction (and no infeasible side)");
             };
             check_state(adm, "multiplier.admissible")?;
             if cert.gap.is_some() || cert.gap_relative.is_some() {
@@ -94,11 +94,16 @@ pub(super) fn verify_load(cert: &Certificate, model: &Model) -> Result<Report, R
                 "proved (interval arithmetic): the state x = [{}, {}, {}] is admissible at lambda = {} {} ({pieces} enclosures)",
                 adm.x[0], adm.x[1], adm.x[2], adm.lambda, everywhere(model, &live)
             ));
-            checks.push(prove_transfer(model, &live, transfer, mu)?);
+            checks.push(match (sides.transfer, &sides.recession) {
+                (Some(transfer), None) => prove_transfer(model, &live, transfer, mu)?,
+                (None, Some(d)) => prove_recession(model, &live, d, mu)?,
+                _ => return reject("unbounded_multiplier: needs exactly one of multiplier.transfer and multiplier.recession"),
+            });
             Some((adm.lambda, None))
         }
         Claim::NoEquilibrium => {
-            let (None, Some(inf), None) = (&sides.admissible, &sides.infeasible, sides.transfer)
+            let (None, Some(inf), None, None) =
+                (&sides.admissible, &sides.infeasible, sides.transfer, &sides.recession)
             else {
                 return reject("no_equilibrium under a load: needs multiplier.infeasible only");
             };
@@ -154,8 +159,10 @@ fn claim_name(c: Claim) -> &'static str {
 
 fn everywhere(model: &Model, live: &Live) -> &'static str {
     match (&model.joints, live.split()) {
-        (Some(_), Some(_)) => "at every joint (both sides of the loaded section)",
-        (Some(_), None) => "at every joint",
+        (Some(j), Some(bp)) if j.contains(&bp) => {
+            "at every joint (both sides of the loaded section)"
+        }
+        (Some(_), _) => "at every joint",
         (None, Some(_)) => "over the whole arch (both sides of the loaded section)",
         (None, None) => "over the whole arch",
     }
@@ -431,6 +438,53 @@ fn prove_transfer(
             Transfer::Left => "nothing",
         },
         changing.len()
+    ))
+}
+
+/// Proves that a direction (d_x, d_λ), d_λ > 0, is a recession direction of the admissible
+/// set: the linear part of every activation function along it — the weightless actions of
+/// d_x plus d_λ times the live ones — is ≤ 0 at every section (every joint, or over each
+/// piece of a continuous arch by Taylor enclosures), so that (x + t d_x, λ + t d_λ) stays
+/// admissible for every t ≥ 0.
+fn prove_recession(
+    model: &Model,
+    live: &Live,
+    d: &LoadState,
+    mu: Option<f64>,
+) -> Result<String, Rejection> {
+    if !(d.lambda.is_finite() && d.lambda > 0.0 && d.x.iter().all(|v| v.is_finite())) {
+        return reject(format!(
+            "multiplier.recession: needs a finite direction with lambda > 0, found lambda = {}",
+            d.lambda
+        ));
+    }
+    let (dx, dl) = (d.x, d.lambda);
+    let evals: Vec<(f64, f64, Box<dyn Fn(I) -> Ntm + '_>)> = live
+        .pieces(model)
+        .into_iter()
+        .map(|(a, b, carries)| {
+            let f: Box<dyn Fn(I) -> Ntm> = Box::new(move |bi: I| {
+                let hom = model.ntm_weightless(bi, dx);
+                match live.ntm(model, bi, carries) {
+                    Some(l) => hom.plus(dl, &l),
+                    None => hom,
+                }
+            });
+            (a, b, f)
+        })
+        .collect();
+    let pieces: Vec<Piece> = evals
+        .iter()
+        .map(|(a, b, f)| Piece {
+            a: *a,
+            b: *b,
+            eval: f.as_ref(),
+        })
+        .collect();
+    let count = prove_pieces(model, &pieces, live.eta, mu, false, "multiplier.recession")?;
+    Ok(format!(
+        "proved (interval arithmetic): along the direction (d_x, d_lambda) = ([{}, {}, {}], {dl}) no activation function grows {} ({count} enclosures), so the admissible state stays admissible at every larger lambda",
+        dx[0], dx[1], dx[2], everywhere(model, live)
     ))
 }
 

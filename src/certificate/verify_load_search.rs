@@ -103,17 +103,26 @@ pub(super) fn verify_load_search(
         ));
     }
     // the state at λ_static
-    let at_static = states.last().is_some_and(|s| s.lambda >= lo);
+    // a state at λ_static: an isolated one in the bracket, or a continuum reaching it
+    let isolated_at_static = states
+        .iter()
+        .any(|s| s.continuum.is_none() && s.lambda >= lo);
+    let at_static = isolated_at_static
+        || states.iter().any(|s| {
+            s.continuum
+                .as_ref()
+                .is_some_and(|c| c.to.is_none_or(|to| to >= lo))
+        });
     match (search.mechanism_at_static, hi) {
         (true, None) => {
             return reject("load_search: mechanism_at_static is true, but lambda_static is unbounded")
         }
         (true, Some(_)) if !at_static => {
             return reject(format!(
-                "load_search: mechanism_at_static is true, but no listed limit state lies in [lambda_lo, lambda_hi] (from {lo})"
+                "load_search: mechanism_at_static is true, but no listed limit state (or continuum of them) reaches [lambda_lo, lambda_hi] (from {lo})"
             ))
         }
-        (false, Some(_)) if at_static => {
+        (false, Some(_)) if isolated_at_static => {
             return reject(format!(
                 "load_search: mechanism_at_static is false, but a listed limit state lies in [lambda_lo, lambda_hi] (from {lo})"
             ))

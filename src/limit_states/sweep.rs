@@ -620,8 +620,26 @@ impl Sweeper<'_> {
                 .iter()
                 .enumerate()
                 .all(|(i, p)| tri.contains(&i) || p.value(&x, t) <= 1e-9 * reaction_scale(&x));
-            if feasible {
+            if !feasible {
+                continue;
+            }
+            // a degenerate vertex (more planes through it than its three): only the
+            // triples whose path stays inside the others just after t continue — e.g. at
+            // λ = 0 the two sides of a loaded section are one plane, and the vertex on the
+            // side that is violated for λ > 0 ends at once
+            let mut act = self.active(&x, t);
+            for p in tri {
+                if !act.contains(&p) {
+                    act.push(p);
+                }
+            }
+            act.sort_unstable();
+            if act.len() == 3 {
                 self.push(v, t);
+            } else {
+                for w in self.vertices_after(&x, t, &act) {
+                    self.push(w, t);
+                }
             }
         }
     }

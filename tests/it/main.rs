@@ -12,6 +12,7 @@ mod invariants;
 mod jacobian;
 mod layering;
 mod limit_states;
+mod load_certificates;
 mod load_continuum_reference;
 mod load_reference;
 mod loads;
