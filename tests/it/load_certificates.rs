@@ -305,3 +305,262 @@ fn random_discrete_arches_certify_and_verify() {
     assert!(wide * 5 <= bracketed, "{wide} of {bracketed} brackets widened");
     assert_eq!(proved, points);
 }
+
+/// Sets λ_lo and keeps the stated gaps consistent, so that a rejection comes from the
+/// proof, not from the bookkeeping.
+fn with_bracket(c: &Certificate, lo: f64, hi: f64) -> Certificate {
+    let mut t = c.clone();
+    let m = t.multiplier.as_mut().unwrap();
+    m.admissible.as_mut().unwrap().lambda = lo;
+    m.infeasible.as_mut().unwrap().lambda = Some(hi);
+    t.gap = Some(hi - lo);
+    t.gap_relative = Some((hi - lo) / hi);
+    t
+}
+
+#[test]
+fn tampering_with_the_bracket_and_the_farkas_vectors_is_caught() {
+    let (arch, eta, mu, load) = unsymmetric();
+    let good = cert(&arch, eta, mu, &load, 1e-12);
+    holds(&good);
+    let (lo, hi) = good.lambda_bracket().unwrap();
+    let ls = lambda_static(&arch, eta, mu, &load);
+    // λ_lo moved above λ_static: the state is not admissible there
+    let why = rejected(&with_bracket(&good, ls + 0.5 * (hi - ls), hi), "lambda_lo above");
+    assert!(why.contains("admissible side"), "{why}");
+    let why = rejected(&with_bracket(&good, 1.1 * ls, 1.2 * ls), "both above");
+    assert!(why.contains("admissible side"), "{why}");
+    // λ_hi moved below λ_static: the Farkas combination is no longer positive
+    let why = rejected(&with_bracket(&good, lo, lo + 0.5 * (ls - lo)), "lambda_hi below");
+    assert!(why.contains("is not proved > 0"), "{why}");
+    // the stated gap must be the bracket's
+    let mut t = good.clone();
+    t.gap = Some(0.5 * good.gap.unwrap());
+    assert!(rejected(&t, "gap").contains("stated gap"));
+    // a multiplier of the Farkas certificate at λ_hi perturbed
+    let mut t = good.clone();
+    let joints = &mut t.multiplier.as_mut().unwrap().infeasible.as_mut().unwrap().joints;
+    let k = (0..joints.len())
+        .max_by(|&a, &b| joints[a].y.total_cmp(&joints[b].y))
+        .unwrap();
+    joints[k].y *= 1.01;
+    assert!(rejected(&t, "y").contains("does not match the recomputed"));
+    // a joint of it moved to another joint of the arch
+    let mut t = good.clone();
+    let j = &mut t.multiplier.as_mut().unwrap().infeasible.as_mut().unwrap().joints[0];
+    j.beta = if j.beta == 0.8409 { 1.2686 } else { 0.8409 };
+    rejected(&t, "moved joint");
+    // a Farkas vector of the kinematic LP zeroed (then c_j·y + z + u P_j + v q_j = z > 0),
+    // its z made zero, its u or v negative
+    let s = good.load_search.as_ref().unwrap();
+    let i = s.no_mechanism.iter().position(|p| !p.farkas.is_empty()).unwrap();
+    for (what, f) in [
+        (
+            "kinematic y",
+            (|f: &mut arch_enum::certificate::KinematicFarkas| {
+                f.y = [0.0; 3];
+                f.u = 0.0;
+                f.v = 0.0;
+            }) as fn(&mut _),
+        ),
+        ("z", |f| f.z = 0.0),
+        ("u", |f| f.u = -1.0),
+        ("v", |f| f.v = -1.0),
+    ] {
+        let mut t = good.clone();
+        f(&mut t.load_search.as_mut().unwrap().no_mechanism[i].farkas[0]);
+        let why = rejected(&t, what);
+        assert!(why.contains("does not prove"), "{what}: {why}");
+    }
+    // a contact dropped from a listed state's pattern: it is active but not listed
+    let mut t = good.clone();
+    let p = &mut t.load_search.as_mut().unwrap().no_mechanism[i];
+    p.pattern.remove(0);
+    p.farkas.clear();
+    assert!(rejected(&t, "dropped contact").contains("not in the pattern"));
+    // a rate of a limit state changed: B lambda no longer vanishes
+    let mut t = good.clone();
+    let ls0 = &mut t.load_search.as_mut().unwrap().limit_states[0];
+    ls0.rates[0] += 0.01;
+    ls0.rates[1] -= 0.01;
+    rejected(&t, "rate");
+    // the load changed: the other sense, or a point load
+    let mut t = good.clone();
+    t.load.as_mut().unwrap().towards = Some(arch_enum::certificate::Towards::Right);
+    rejected(&t, "sense of the load");
+    let mut t = good.clone();
+    let l = t.load.as_mut().unwrap();
+    l.kind = arch_enum::certificate::LoadKind::Point;
+    assert!(rejected(&t, "kind").contains("point load needs `beta`"));
+    // the claim changed
+    let mut t = good.clone();
+    t.claim = Claim::UnboundedMultiplier;
+    rejected(&t, "claim");
+}
+
+#[test]
+fn removing_a_limit_state_is_noticed_where_it_can_be_and_said_otherwise() {
+    let (arch, eta, mu, load) = unsymmetric();
+    let good = cert(&arch, eta, mu, &load, 1e-12);
+    let n = good.load_search.as_ref().unwrap().limit_states.len();
+    assert_eq!(n, 3);
+    let edit = |f: &dyn Fn(&mut arch_enum::certificate::LoadSearchEvidence)| {
+        let mut t = good.clone();
+        f(t.load_search.as_mut().unwrap());
+        t
+    };
+    // the least one: the collapse multiplier no longer matches the list
+    let t = edit(&|s| {
+        s.limit_states.remove(0);
+    });
+    assert!(rejected(&t, "least removed").contains("collapse multiplier"));
+    // the one at lambda_static: mechanism_at_static says there is one
+    let t = edit(&|s| {
+        s.limit_states.pop();
+    });
+    assert!(rejected(&t, "static removed").contains("mechanism_at_static"));
+    // all but one, still "not unique"
+    let t = edit(&|s| {
+        s.limit_states.truncate(1);
+    });
+    assert!(rejected(&t, "two removed").contains("unique"));
+    // the least one, with the collapse multiplier moved to the next: consistent, so verify
+    // cannot notice — and its report says that the completeness of the list is not proved
+    let t = edit(&|s| {
+        s.limit_states.remove(0);
+        s.lambda = Some(s.limit_states[0].lambda);
+    });
+    let r = holds(&t);
+    assert!(r
+        .checks
+        .iter()
+        .any(|l| l.contains("not re-proved: that the sweep met every event")));
+    // a state the sweep checked without a mechanism, removed: not noticed either, and the
+    // report counts what it proved
+    let t = edit(&|s| {
+        s.no_mechanism.remove(0);
+    });
+    let r = holds(&t);
+    let m = t.load_search.as_ref().unwrap().no_mechanism.len();
+    assert!(r
+        .checks
+        .iter()
+        .any(|l| l.starts_with(&format!("proved (interval arithmetic) at {m} of the {m} points"))));
+}
+
+#[test]
+fn sides_of_the_loaded_section_are_checked() {
+    let (arch, eta, mu, load) = stockdale();
+    let good = cert(&arch, eta, mu, &load, 1e-12);
+    let p = &good.load_search.as_ref().unwrap().limit_states[0].pattern;
+    let k = p.iter().position(|j| j.side == Some(Side::Before)).unwrap();
+    // the side left out at the loaded joint
+    let mut t = good.clone();
+    t.load_search.as_mut().unwrap().limit_states[0].pattern[k].side = None;
+    assert!(rejected(&t, "no side").contains("give the side"));
+    // a side where the section has one
+    let mut t = good.clone();
+    let q = &mut t.load_search.as_mut().unwrap().limit_states[0].pattern;
+    let other = q.iter().position(|j| j.side.is_none()).unwrap();
+    q[other].side = Some(Side::After);
+    assert!(rejected(&t, "side elsewhere").contains("only the point load's own section"));
+    // both sides the same: the pattern is no longer strictly increasing
+    let mut t = good.clone();
+    t.load_search.as_mut().unwrap().limit_states[0].pattern[k].side = Some(Side::After);
+    assert!(rejected(&t, "same side twice").contains("strictly increasing"));
+    // a side in a thickness certificate
+    let mut t = arch_enum::certificate::certify(&arch, f64::INFINITY, 1e-12, &Settings::default())
+        .unwrap();
+    t.collapse.as_mut().unwrap().joints[0].side = Some(Side::Before);
+    assert!(rejected(&t, "side in a thickness certificate").contains("side"));
+}
+
+fn bin() -> Command {
+    Command::cargo_bin("arch-enum").unwrap()
+}
+
+#[test]
+fn cli_certify_and_verify_under_a_load() {
+    let dir = std::env::temp_dir().join(format!("arch-enum-loadcert-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("load.json");
+    let out = bin()
+        .args(["certify", "--alpha", "0", "--blocks", "8", "--eta", "0.3", "--mu", "0.8"])
+        .args(["--horizontal", "--out"])
+        .arg(&file)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("claim: lambda_static lies in ["), "{text}");
+    let out = bin().arg("verify").arg(&file).output().unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.starts_with("certificate holds\nproved: for this arch at mu = 0.8 under the horizontal body force"), "{text}");
+    // JSON of both
+    let out = bin()
+        .args(["certify", "--alpha", "0", "--blocks", "8", "--eta", "0.3", "--mu", "0.8"])
+        .args(["--point-load-joint", "3", "--json"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["status"], "ok");
+    assert_eq!(v["claim"], "largest_multiplier");
+    assert_eq!(v["load"]["kind"], "point");
+    assert_eq!(v["eta"], 0.3);
+    let (lo, hi) = (v["lambda_lo"].as_f64().unwrap(), v["lambda_hi"].as_f64().unwrap());
+    assert!(lo < hi && hi - lo <= 1e-12 * hi);
+    std::fs::write(&file, serde_json::to_string(&v["certificate"]).unwrap()).unwrap();
+    let out = bin().arg("verify").arg(&file).arg("--json").output().unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let r: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(r["status"], "ok");
+    assert_eq!(r["lambda_lo"], v["lambda_lo"]);
+    assert_eq!(r["lambda_hi"], v["lambda_hi"]);
+    assert!(r["limit_states"].as_str().unwrap().starts_with("the search (sweep) lists"));
+    // closed sets are read as such: an unknown side or load kind is not a certificate
+    let text = serde_json::to_string(&v["certificate"]).unwrap();
+    for (from, to, field) in [
+        ("\"kind\":\"point\"", "\"kind\":\"wind\"", "load.kind"),
+        ("\"side\":\"before\"", "\"side\":\"middle\"", "side"),
+    ] {
+        assert!(text.contains(from), "{from}");
+        std::fs::write(&file, text.replacen(from, to, 1)).unwrap();
+        let out = bin().arg("verify").arg(&file).output().unwrap();
+        assert_eq!(out.status.code(), Some(2), "{field}");
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert!(err.contains(&format!("field `{field}`")), "{err}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn cli_bad_input_names_the_flag() {
+    for (args, flag) in [
+        (&["--alpha", "0", "--mu", "0.8", "--eta", "0.3"][..], "--eta"),
+        (&["--alpha", "0", "--mu", "0.8", "--horizontal"][..], "--eta"),
+        (&["--alpha", "0", "--mu", "0.8", "--eta", "2.5", "--horizontal"][..], "--eta"),
+        (&["--alpha", "0", "--mu", "0.8", "--eta", "-1", "--horizontal"][..], "--eta"),
+        (
+            &["--alpha", "0", "--blocks", "8", "--mu", "0.8", "--eta", "0.3", "--point-load-joint", "9"][..],
+            "--point-load-joint",
+        ),
+        (&["--alpha", "0", "--mu", "0.8", "--eta", "0.3", "--point-load", "4"][..], "--point-load"),
+        (&["--alpha", "0", "--mu", "0.8", "--eta", "0.3", "--point-load-deg", "200"][..], "--point-load-deg"),
+        (&["--alpha", "0", "--mu", "0.8", "--eta", "0.3", "--horizontal", "--gap", "1"][..], "--gap"),
+        (&["--alpha", "0", "--mu", "-1", "--eta", "0.3", "--horizontal"][..], "--mu"),
+        (&["--alpha", "0", "--mu", "0.8", "--eta", "0.3", "--horizontal", "--point-load", "1"][..], "--horizontal"),
+    ] {
+        let out = bin().arg("certify").args(args).output().unwrap();
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert!(err.contains(flag), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{err}");
+        // with --json, one JSON document on standard output
+        let out = bin().arg("certify").args(args).arg("--json").output().unwrap();
+        assert_eq!(out.status.code(), Some(2));
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(v["status"], "error");
+    }
+}
