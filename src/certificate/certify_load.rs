@@ -212,7 +212,7 @@ fn bracket(
     gap: f64,
     settings: &Settings,
 ) -> Result<Certificate, NotCertified> {
-    if !(lambda_s > 0.0) {
+    if lambda_s.is_nan() || lambda_s <= 0.0 {
         return Err(NotCertified(format!(
             "lambda_static = {lambda_s}: a relative bracket needs lambda_static > 0"
         )));
@@ -305,20 +305,16 @@ fn bracket(
 /// The sliding rows of a pool with w's component (index 2) left out: T and N, hence the
 /// sliding rows, do not involve w, so a Farkas certificate among them is one dimension
 /// lower.
-fn without_w<T: Clone>(pool: &[(T, Row)]) -> Vec<(T, Row)>
-where
-    T: SlidingLabel,
-{
+fn without_w<T: Clone + SlidingLabel>(pool: &[(T, Row)]) -> Vec<(T, Row)> {
     pool.iter()
         .filter(|(l, _)| l.sliding())
         .map(|(l, r)| {
-            let g = r
-                .g
-                .iter()
-                .enumerate()
-                .filter(|&(k, _)| k != 2)
-                .map(|(_, v)| *v)
-                .collect();
+            let g =
+                r.g.iter()
+                    .enumerate()
+                    .filter(|&(k, _)| k != 2)
+                    .map(|(_, v)| *v)
+                    .collect();
             (l.clone(), Row { g, c: r.c })
         })
         .collect()
@@ -469,7 +465,10 @@ fn no_equilibrium(
         .map(|r| ((r.contact, r.side), r.a, r.c))
         .collect();
     let margin = |lambda: f64| {
-        let r: Vec<Affine> = all.iter().map(|(_, a, c)| at_lambda((*a, *c), lambda)).collect();
+        let r: Vec<Affine> = all
+            .iter()
+            .map(|(_, a, c)| at_lambda((*a, *c), lambda))
+            .collect();
         lp::max_margin(&r, 1.0, settings).ok()
     };
     // s(λ) = max_x min_i (−φ_i / ‖∇ₓφ_i‖) is concave in λ: bracket its maximum by
@@ -666,7 +665,12 @@ fn checked(
     points
         .iter()
         .map(|p| {
-            let pattern: Vec<Loaded> = p.pattern.iter().copied().zip(p.sides.iter().copied()).collect();
+            let pattern: Vec<Loaded> = p
+                .pattern
+                .iter()
+                .copied()
+                .zip(p.sides.iter().copied())
+                .collect();
             no_mechanism(arch, eta, load, (p.eta, p.x, sorted(pattern)), settings)
         })
         .collect()
@@ -677,7 +681,13 @@ fn limit_state_cert(
     load: &LiveLoad,
     s: &LoadLimitState,
 ) -> Result<LoadLimitStateCert, NotCertified> {
-    let pattern = sorted(s.pattern.iter().copied().zip(s.sides.iter().copied()).collect());
+    let pattern = sorted(
+        s.pattern
+            .iter()
+            .copied()
+            .zip(s.sides.iter().copied())
+            .collect(),
+    );
     let rates = rates_on(&pattern, &s.mechanism.contacts, &s.mechanism.rates).ok_or_else(|| {
         NotCertified(format!(
             "the mechanism of the limit state at lambda = {} does not match its pattern",
@@ -711,11 +721,11 @@ fn rates_on(pattern: &[Loaded], kept: &[Contact], rates: &[f64]) -> Option<Vec<f
             .find(|&k| pattern[k].0.beta != beta || pattern[k].1 != side)
             .unwrap_or(pattern.len());
         let has = |kind| (i..end).any(|k| pattern[k].0.kind == kind);
-        let n = end - i
-            - usize::from(has(ContactKind::SlidePlus) && has(ContactKind::SlideMinus));
+        let n = end - i - usize::from(has(ContactKind::SlidePlus) && has(ContactKind::SlideMinus));
         for _ in 0..n {
             let c = kept.get(next)?;
-            let k = (i..end).find(|&k| pattern[k].0.kind == c.kind && pattern[k].0.beta == c.beta)?;
+            let k =
+                (i..end).find(|&k| pattern[k].0.kind == c.kind && pattern[k].0.beta == c.beta)?;
             out[k] = *rates.get(next)?;
             next += 1;
         }
@@ -735,10 +745,8 @@ fn no_mechanism(
     (lambda, x, pattern): (f64, Reactions, Vec<Loaded>),
     settings: &Settings,
 ) -> LoadNoMechanism {
-    let keys: Vec<(f64, ContactKind, Side)> = pattern
-        .iter()
-        .map(|(c, s)| (c.beta, c.kind, *s))
-        .collect();
+    let keys: Vec<(f64, ContactKind, Side)> =
+        pattern.iter().map(|(c, s)| (c.beta, c.kind, *s)).collect();
     let farkas = farkas_cover(&keys, |drop: Vec<usize>| {
         let kept: Vec<Loaded> = (0..pattern.len())
             .filter(|i| !drop.contains(i))
@@ -748,20 +756,36 @@ fn no_mechanism(
         let cols: Vec<[f64; 3]> = plain.iter().map(|c| column(c.kind, c.beta, eta)).collect();
         let dead = power(arch, eta, &plain);
         let live = load.power(arch, eta, &kept);
-        let total: Vec<f64> = dead.iter().zip(&live).map(|(d, l)| d + lambda * l).collect();
-        [(1.0, 0.0), (0.0, 1.0), (1.0, 1.0), (1.0, 0.1), (0.1, 1.0), (1.0, 0.01), (0.01, 1.0)]
+        let total: Vec<f64> = dead
             .iter()
-            .find_map(|&(a, b)| {
-                let p: Vec<f64> = total.iter().zip(&live).map(|(t, l)| a * t + b * l).collect();
-                let (y, z, u) = lp::kinematic_farkas(&cols, &p, settings).ok()?;
-                (z > 0.0).then_some(KinematicFarkas {
-                    drop: drop.clone(),
-                    y,
-                    z: 0.5 * z,
-                    u: (a * u).max(0.0),
-                    v: (b * u).max(0.0),
-                })
+            .zip(&live)
+            .map(|(d, l)| d + lambda * l)
+            .collect();
+        [
+            (1.0, 0.0),
+            (0.0, 1.0),
+            (1.0, 1.0),
+            (1.0, 0.1),
+            (0.1, 1.0),
+            (1.0, 0.01),
+            (0.01, 1.0),
+        ]
+        .iter()
+        .find_map(|&(a, b)| {
+            let p: Vec<f64> = total
+                .iter()
+                .zip(&live)
+                .map(|(t, l)| a * t + b * l)
+                .collect();
+            let (y, z, u) = lp::kinematic_farkas(&cols, &p, settings).ok()?;
+            (z > 0.0).then_some(KinematicFarkas {
+                drop: drop.clone(),
+                y,
+                z: 0.5 * z,
+                u: (a * u).max(0.0),
+                v: (b * u).max(0.0),
             })
+        })
     });
     LoadNoMechanism {
         lambda,

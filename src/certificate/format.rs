@@ -486,7 +486,10 @@ impl Certificate {
     pub fn lambda_bracket(&self) -> Option<(f64, f64)> {
         let m = self.multiplier.as_ref()?;
         match self.claim {
-            Claim::LargestMultiplier => Some((m.admissible.as_ref()?.lambda, m.infeasible.as_ref()?.lambda?)),
+            Claim::LargestMultiplier => Some((
+                m.admissible.as_ref()?.lambda,
+                m.infeasible.as_ref()?.lambda?,
+            )),
             _ => None,
         }
     }

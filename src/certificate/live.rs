@@ -41,10 +41,7 @@ impl Live {
     /// exactly for a horizontal load, `beta` exactly for a point load and on the arch.
     pub(super) fn of(spec: &LoadSpec, model: &Model) -> Result<Live, Rejection> {
         if !(spec.eta.is_finite() && spec.eta > 0.0 && spec.eta < 2.0) {
-            return reject(format!(
-                "load.eta = {}: must lie in (0, 2)",
-                spec.eta
-            ));
+            return reject(format!("load.eta = {}: must lie in (0, 2)", spec.eta));
         }
         let kind = match (spec.kind, spec.towards, spec.beta) {
             (LoadKind::Horizontal, Some(t), None) => LiveKind::Horizontal {
@@ -60,7 +57,9 @@ impl Live {
                 LiveKind::Point { beta }
             }
             (LoadKind::Horizontal, _, _) => {
-                return reject("load: a horizontal load needs `towards` (right or left) and no `beta`")
+                return reject(
+                    "load: a horizontal load needs `towards` (right or left) and no `beta`",
+                )
             }
             (LoadKind::Point, _, _) => {
                 return reject("load: a point load needs `beta` and no `towards`")

@@ -337,7 +337,9 @@ pub(super) fn prove_pieces(
             while let Some((a, b, depth)) = stack.pop() {
                 count += 1;
                 if count > 2_000_000 {
-                    return reject(format!("{what}: enclosure work limit reached without a proof"));
+                    return reject(format!(
+                        "{what}: enclosure work limit reached without a proof"
+                    ));
                 }
                 let (upper, lower_mid) = taylor_upper(eval, kind, a, b, eta, mu);
                 if upper < 0.0 || (!strict && upper <= 0.0) {

@@ -16,14 +16,12 @@
 //! * `no_equilibrium` under a load: five rows in (h, v, w, λ) (with, possibly, −λ ≤ 0),
 //!   the cofactors of their 4-gradients: no state at any λ ≥ 0.
 
-use super::format::{
-    Certificate, CertJoint, Claim, ContactKind, LoadFarkas, LoadState, Transfer,
-};
+use super::format::{CertJoint, Certificate, Claim, ContactKind, LoadFarkas, LoadState, Transfer};
 use super::interval::Interval as I;
 use super::live::Live;
 use super::verify::{
-    affine, check_farkas_joint, kinds, phi, prove_cofactors, prove_pieces, reject, Model,
-    Ntm, Piece, Rejection, Report,
+    affine, check_farkas_joint, kinds, phi, prove_cofactors, prove_pieces, reject, Model, Ntm,
+    Piece, Rejection, Report,
 };
 use super::verify_search::{sections, side_text};
 
@@ -53,13 +51,18 @@ pub(super) fn verify_load(cert: &Certificate, model: &Model) -> Result<Report, R
     let mut checks = Vec::new();
     let lambda_bracket = match cert.claim {
         Claim::LargestMultiplier => {
-            let (Some(adm), Some(inf), None, None) =
-                (&sides.admissible, &sides.infeasible, sides.transfer, &sides.recession)
-            else {
+            let (Some(adm), Some(inf), None, None) = (
+                &sides.admissible,
+                &sides.infeasible,
+                sides.transfer,
+                &sides.recession,
+            ) else {
                 return reject("largest_multiplier: needs multiplier.admissible and multiplier.infeasible (and no transfer or recession)");
             };
             let Some(lambda_hi) = inf.lambda else {
-                return reject("largest_multiplier: multiplier.infeasible.lambda (lambda_hi) is missing");
+                return reject(
+                    "largest_multiplier: multiplier.infeasible.lambda (lambda_hi) is missing",
+                );
             };
             check_state(adm, "multiplier.admissible")?;
             if !(lambda_hi.is_finite() && adm.lambda <= lambda_hi) {
@@ -102,9 +105,12 @@ pub(super) fn verify_load(cert: &Certificate, model: &Model) -> Result<Report, R
             Some((adm.lambda, None))
         }
         Claim::NoEquilibrium => {
-            let (None, Some(inf), None, None) =
-                (&sides.admissible, &sides.infeasible, sides.transfer, &sides.recession)
-            else {
+            let (None, Some(inf), None, None) = (
+                &sides.admissible,
+                &sides.infeasible,
+                sides.transfer,
+                &sides.recession,
+            ) else {
                 return reject("no_equilibrium under a load: needs multiplier.infeasible only");
             };
             if inf.lambda.is_some() {
@@ -128,9 +134,8 @@ pub(super) fn verify_load(cert: &Certificate, model: &Model) -> Result<Report, R
             let Some((lo, hi)) = lambda_bracket else {
                 return reject("load_search: the limit states need a multiplier claim with an admissible state");
             };
-            let (lines, verdict) = super::verify_load_search::verify_load_search(
-                model, &live, mu, search, lo, hi,
-            )?;
+            let (lines, verdict) =
+                super::verify_load_search::verify_load_search(model, &live, mu, search, lo, hi)?;
             checks.extend(lines);
             Some(verdict)
         }
@@ -208,30 +213,47 @@ pub(super) fn prove_state(
     mu: Option<f64>,
     what: &str,
 ) -> Result<usize, Rejection> {
-    let (x, lambda, eta) = (s.x, s.lambda, live.eta);
-    let evals: Vec<(f64, f64, Box<dyn Fn(I) -> Ntm + '_>)> = live
-        .pieces(model)
-        .into_iter()
-        .map(|(a, b, carries)| {
-            let f: Box<dyn Fn(I) -> Ntm> = Box::new(move |bi: I| {
-                let dead = model.ntm(bi, x, eta);
-                match live.ntm(model, bi, carries) {
-                    Some(l) => dead.plus(lambda, &l),
-                    None => dead,
+    let (x, eta) = (s.x, live.eta);
+    let dead = move |b: I| model.ntm(b, x, eta);
+    prove_with_live(model, live, &dead, s.lambda, mu, what)
+}
+
+/// The actions over an interval of angles, boxed.
+type Eval<'a> = Box<dyn Fn(I) -> Ntm + 'a>;
+
+/// Proves φ ≤ 0 on every piece of the arch for the actions `base(β) + λ live(β)` (the
+/// live part only where the piece's sections carry the load).
+fn prove_with_live(
+    model: &Model,
+    live: &Live,
+    base: &dyn Fn(I) -> Ntm,
+    lambda: f64,
+    mu: Option<f64>,
+    what: &str,
+) -> Result<usize, Rejection> {
+    let spec = live.pieces(model);
+    let evals: Vec<Eval> = spec
+        .iter()
+        .map(|&(_, _, carries)| -> Eval {
+            Box::new(move |b: I| {
+                let n = base(b);
+                match live.ntm(model, b, carries) {
+                    Some(l) => n.plus(lambda, &l),
+                    None => n,
                 }
-            });
-            (a, b, f)
+            })
         })
         .collect();
-    let pieces: Vec<Piece> = evals
+    let pieces: Vec<Piece> = spec
         .iter()
-        .map(|(a, b, f)| Piece {
-            a: *a,
-            b: *b,
+        .zip(&evals)
+        .map(|(&(a, b, _), f)| Piece {
+            a,
+            b,
             eval: f.as_ref(),
         })
         .collect();
-    prove_pieces(model, &pieces, eta, mu, false, what)
+    prove_pieces(model, &pieces, live.eta, mu, false, what)
 }
 
 /// The live part per unit λ of the activation function `kind` at the joint β on `side`
@@ -243,10 +265,10 @@ fn live_row(model: &Model, live: &Live, j: &CertJoint, mu: Option<f64>) -> I {
     }
 }
 
-/// The joints of a Farkas certificate in `unknowns` unknowns that include w: `unknowns`
-/// + 1 joints, or one fewer when every joint is a sliding one (T and N, hence the sliding
-/// rows, do not involve w: the certificate is then one dimension lower). Returns whether w
-/// is dropped.
+/// The joints of a Farkas certificate in `unknowns` unknowns that include w: one more
+/// joint than unknowns, or as many when every joint is a sliding one (T and N, hence the
+/// sliding rows, do not involve w: the certificate is then one dimension lower). Returns
+/// whether w is dropped.
 fn checked_joints(
     model: &Model,
     live: &Live,
@@ -300,7 +322,9 @@ fn prove_farkas_at(
     mu: Option<f64>,
 ) -> Result<f64, Rejection> {
     if f.lambda_row.is_some() {
-        return reject("collapse side: the row -lambda <= 0 belongs to a no_equilibrium certificate only");
+        return reject(
+            "collapse side: the row -lambda <= 0 belongs to a no_equilibrium certificate only",
+        );
     }
     let without_w = checked_joints(model, live, &f.joints, mu, 3)?;
     let rows: Vec<(Vec<I>, I)> = f
@@ -374,7 +398,9 @@ fn prove_transfer(
     mu: Option<f64>,
 ) -> Result<String, Rejection> {
     let Some(bp) = live.split() else {
-        return reject("multiplier.transfer: a transfer carries a point load, not a horizontal one");
+        return reject(
+            "multiplier.transfer: a transfer carries a point load, not a horizontal one",
+        );
     };
     // the sections that change along the ray, and the sign of the change
     let (changing, sign): (Vec<(f64, Option<super::format::Side>)>, f64) = {
@@ -459,29 +485,8 @@ fn prove_recession(
         ));
     }
     let (dx, dl) = (d.x, d.lambda);
-    let evals: Vec<(f64, f64, Box<dyn Fn(I) -> Ntm + '_>)> = live
-        .pieces(model)
-        .into_iter()
-        .map(|(a, b, carries)| {
-            let f: Box<dyn Fn(I) -> Ntm> = Box::new(move |bi: I| {
-                let hom = model.ntm_weightless(bi, dx);
-                match live.ntm(model, bi, carries) {
-                    Some(l) => hom.plus(dl, &l),
-                    None => hom,
-                }
-            });
-            (a, b, f)
-        })
-        .collect();
-    let pieces: Vec<Piece> = evals
-        .iter()
-        .map(|(a, b, f)| Piece {
-            a: *a,
-            b: *b,
-            eval: f.as_ref(),
-        })
-        .collect();
-    let count = prove_pieces(model, &pieces, live.eta, mu, false, "multiplier.recession")?;
+    let weightless = move |b: I| model.ntm_weightless(b, dx);
+    let count = prove_with_live(model, live, &weightless, dl, mu, "multiplier.recession")?;
     Ok(format!(
         "proved (interval arithmetic): along the direction (d_x, d_lambda) = ([{}, {}, {}], {dl}) no activation function grows {} ({count} enclosures), so the admissible state stays admissible at every larger lambda",
         dx[0], dx[1], dx[2], everywhere(model, live)

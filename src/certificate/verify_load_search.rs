@@ -76,7 +76,7 @@ pub(super) fn verify_load_search(
     let mut last = f64::NEG_INFINITY;
     for (i, ls) in states.iter().enumerate() {
         let whose = format!("load_search: limit state {i}");
-        if !(ls.lambda >= last) {
+        if ls.lambda.is_nan() || ls.lambda < last {
             return reject(format!("{whose}: lambda = {} is not ascending", ls.lambda));
         }
         last = ls.lambda;
@@ -183,7 +183,9 @@ pub(super) fn verify_load_search(
                 return reject("load_search: method sweep needs a discrete arch");
             }
             if mu.is_none() {
-                return reject("load_search: method sweep is for finite friction (mu = inf is associative)");
+                return reject(
+                    "load_search: method sweep is for finite friction (mu = inf is associative)",
+                );
             }
             let mut proved = 0;
             for (i, p) in search.no_mechanism.iter().enumerate() {
@@ -219,7 +221,9 @@ pub(super) fn verify_load_search(
         }
         LoadSearchMethod::Associative => {
             if mu.is_some() {
-                return reject("load_search: method associative needs infinite friction (mu = null)");
+                return reject(
+                    "load_search: method associative needs infinite friction (mu = null)",
+                );
             }
             if !search.no_mechanism.is_empty() {
                 return reject("load_search: method associative lists no sweep points");
@@ -369,8 +373,11 @@ fn check_limit_state(
                         a + (b - a) * i as f64 / SAMPLES as f64
                     };
                     // at the loaded angle, the piece's own side of the section
-                    let side = (live.split() == Some(beta))
-                        .then_some(if carries { Side::After } else { Side::Before });
+                    let side = (live.split() == Some(beta)).then_some(if carries {
+                        Side::After
+                    } else {
+                        Side::Before
+                    });
                     (beta, side)
                 })
             })
@@ -390,8 +397,11 @@ fn check_limit_state(
         }
     }
     // B λ̇ = 0, total power ≥ 0, live power > 0 (and as stated)
-    let kept: Vec<(f64, ContactKind, Option<Side>)> =
-        ls.pattern.iter().map(|j| (j.beta, j.kind, j.side)).collect();
+    let kept: Vec<(f64, ContactKind, Option<Side>)> = ls
+        .pattern
+        .iter()
+        .map(|j| (j.beta, j.kind, j.side))
+        .collect();
     let columns: Vec<[I; 3]> = kept
         .iter()
         .map(|&(b, k, _)| column(k, b, live.eta))

@@ -25,8 +25,8 @@ use super::format::{
 use super::interval::Interval as I;
 use super::live::Live;
 use super::verify::{
-    check_limit_state, check_pattern, kinds, phi, prove_admissible, reject, Model, Ntm,
-    Rejection, LIMIT_STATE_TOL,
+    check_limit_state, check_pattern, kinds, phi, prove_admissible, reject, Model, Ntm, Rejection,
+    LIMIT_STATE_TOL,
 };
 
 /// A contact not listed in a state's pattern must lie at least this far below zero,
@@ -313,7 +313,9 @@ pub(super) fn no_mechanism(
     }
     if let Some((_, lambda)) = state.load {
         if !(lambda.is_finite() && lambda >= 0.0) {
-            return reject(format!("{whose}: lambda = {lambda} must be finite and >= 0"));
+            return reject(format!(
+                "{whose}: lambda = {lambda} must be finite and >= 0"
+            ));
         }
     }
     if pattern.len() > 64 {
@@ -449,7 +451,12 @@ pub(super) fn prove_farkas(
     pattern: &[(f64, ContactKind, Option<Side>)],
     f: &KinematicFarkas,
 ) -> bool {
-    if !(f.z > 0.0 && f.u >= 0.0 && f.v >= 0.0 && f.z.is_finite() && f.u.is_finite() && f.v.is_finite())
+    if !(f.z > 0.0
+        && f.u >= 0.0
+        && f.v >= 0.0
+        && f.z.is_finite()
+        && f.u.is_finite()
+        && f.v.is_finite())
         || f.y.iter().any(|v| !v.is_finite())
     {
         return false;
@@ -472,8 +479,8 @@ pub(super) fn prove_farkas(
     let y = f.y.map(I::point);
     (0..kept.len()).all(|i| {
         let col = &columns[i];
-        let mut value = col[0] * y[0] + col[1] * y[1] + col[2] * y[2] + I::point(f.z)
-            - I::point(f.u) * work[i];
+        let mut value =
+            col[0] * y[0] + col[1] * y[1] + col[2] * y[2] + I::point(f.z) - I::point(f.u) * work[i];
         if let Some((q, k)) = &live {
             value = value + *k * q[i];
         }

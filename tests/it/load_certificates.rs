@@ -94,7 +94,10 @@ fn stockdale_point_load_is_certified() {
     let p = &s.limit_states[0].pattern;
     assert!(p.iter().any(|j| j.side == Some(Side::Before)));
     assert!(p.iter().any(|j| j.side == Some(Side::After)));
-    assert!(r.checks.iter().any(|l| l.contains("proved (virtual work, mu = inf)")));
+    assert!(r
+        .checks
+        .iter()
+        .any(|l| l.contains("proved (virtual work, mu = inf)")));
     assert!(r.statement().contains("lambda_static lies in"));
 }
 
@@ -114,7 +117,11 @@ fn unsymmetric_reduced_non_unique_case_is_certified_with_its_sweep() {
     let n = s.no_mechanism.len();
     assert!(n > 10, "{n}");
     let line = format!("proved (interval arithmetic) at {n} of the {n} points");
-    assert!(r.checks.iter().any(|l| l.starts_with(&line)), "{:?}", r.checks);
+    assert!(
+        r.checks.iter().any(|l| l.starts_with(&line)),
+        "{:?}",
+        r.checks
+    );
     assert!(r
         .checks
         .iter()
@@ -133,7 +140,11 @@ fn continuous_semicircle_horizontal_at_infinite_friction_is_certified() {
     let ls = lambda_static(&arch, 0.2, f64::INFINITY, &load);
     assert!(lo <= ls && ls < hi);
     assert!(hi - lo <= 1e-12 * hi);
-    assert!(r.checks[0].contains("over the whole arch"), "{}", r.checks[0]);
+    assert!(
+        r.checks[0].contains("over the whole arch"),
+        "{}",
+        r.checks[0]
+    );
     assert!(c.load_search.as_ref().unwrap().unique);
 }
 
@@ -170,11 +181,20 @@ fn no_equilibrium_and_unbounded_multipliers_are_certified() {
     let eight = semi.clone().with_blocks(8).unwrap();
     // too thin to stand, and a crown load does not help
     for arch in [&eight, &semi] {
-        let c = certify_load(arch, 0.05, 0.8, &LiveLoad::Point { beta: PI / 2.0 }, 1e-12, &s)
-            .unwrap();
+        let c = certify_load(
+            arch,
+            0.05,
+            0.8,
+            &LiveLoad::Point { beta: PI / 2.0 },
+            1e-12,
+            &s,
+        )
+        .unwrap();
         assert_eq!(c.claim, Claim::NoEquilibrium);
         let r = holds(&round_trip(&c));
-        assert!(r.statement().contains("no state is statically admissible at any lambda >= 0"));
+        assert!(r
+            .statement()
+            .contains("no state is statically admissible at any lambda >= 0"));
     }
     // a load on a springing goes straight into the support
     for (arch, mu, beta, transfer) in [
@@ -302,7 +322,10 @@ fn random_discrete_arches_certify_and_verify() {
     );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     assert!(bracketed >= count / 2, "{bracketed}");
-    assert!(wide * 5 <= bracketed, "{wide} of {bracketed} brackets widened");
+    assert!(
+        wide * 5 <= bracketed,
+        "{wide} of {bracketed} brackets widened"
+    );
     assert_eq!(proved, points);
 }
 
@@ -326,12 +349,18 @@ fn tampering_with_the_bracket_and_the_farkas_vectors_is_caught() {
     let (lo, hi) = good.lambda_bracket().unwrap();
     let ls = lambda_static(&arch, eta, mu, &load);
     // λ_lo moved above λ_static: the state is not admissible there
-    let why = rejected(&with_bracket(&good, ls + 0.5 * (hi - ls), hi), "lambda_lo above");
+    let why = rejected(
+        &with_bracket(&good, ls + 0.5 * (hi - ls), hi),
+        "lambda_lo above",
+    );
     assert!(why.contains("admissible side"), "{why}");
     let why = rejected(&with_bracket(&good, 1.1 * ls, 1.2 * ls), "both above");
     assert!(why.contains("admissible side"), "{why}");
     // λ_hi moved below λ_static: the Farkas combination is no longer positive
-    let why = rejected(&with_bracket(&good, lo, lo + 0.5 * (ls - lo)), "lambda_hi below");
+    let why = rejected(
+        &with_bracket(&good, lo, lo + 0.5 * (ls - lo)),
+        "lambda_hi below",
+    );
     assert!(why.contains("is not proved > 0"), "{why}");
     // the stated gap must be the bracket's
     let mut t = good.clone();
@@ -339,7 +368,14 @@ fn tampering_with_the_bracket_and_the_farkas_vectors_is_caught() {
     assert!(rejected(&t, "gap").contains("stated gap"));
     // a multiplier of the Farkas certificate at λ_hi perturbed
     let mut t = good.clone();
-    let joints = &mut t.multiplier.as_mut().unwrap().infeasible.as_mut().unwrap().joints;
+    let joints = &mut t
+        .multiplier
+        .as_mut()
+        .unwrap()
+        .infeasible
+        .as_mut()
+        .unwrap()
+        .joints;
     let k = (0..joints.len())
         .max_by(|&a, &b| joints[a].y.total_cmp(&joints[b].y))
         .unwrap();
@@ -347,13 +383,24 @@ fn tampering_with_the_bracket_and_the_farkas_vectors_is_caught() {
     assert!(rejected(&t, "y").contains("does not match the recomputed"));
     // a joint of it moved to another joint of the arch
     let mut t = good.clone();
-    let j = &mut t.multiplier.as_mut().unwrap().infeasible.as_mut().unwrap().joints[0];
+    let j = &mut t
+        .multiplier
+        .as_mut()
+        .unwrap()
+        .infeasible
+        .as_mut()
+        .unwrap()
+        .joints[0];
     j.beta = if j.beta == 0.8409 { 1.2686 } else { 0.8409 };
     rejected(&t, "moved joint");
     // a Farkas vector of the kinematic LP zeroed (then c_j·y + z + u P_j + v q_j = z > 0),
     // its z made zero, its u or v negative
     let s = good.load_search.as_ref().unwrap();
-    let i = s.no_mechanism.iter().position(|p| !p.farkas.is_empty()).unwrap();
+    let i = s
+        .no_mechanism
+        .iter()
+        .position(|p| !p.farkas.is_empty())
+        .unwrap();
     for (what, f) in [
         (
             "kinematic y",
@@ -442,10 +489,9 @@ fn removing_a_limit_state_is_noticed_where_it_can_be_and_said_otherwise() {
     });
     let r = holds(&t);
     let m = t.load_search.as_ref().unwrap().no_mechanism.len();
-    assert!(r
-        .checks
-        .iter()
-        .any(|l| l.starts_with(&format!("proved (interval arithmetic) at {m} of the {m} points"))));
+    assert!(r.checks.iter().any(|l| l.starts_with(&format!(
+        "proved (interval arithmetic) at {m} of the {m} points"
+    ))));
 }
 
 #[test]
@@ -469,8 +515,8 @@ fn sides_of_the_loaded_section_are_checked() {
     t.load_search.as_mut().unwrap().limit_states[0].pattern[k].side = Some(Side::After);
     assert!(rejected(&t, "same side twice").contains("strictly increasing"));
     // a side in a thickness certificate
-    let mut t = arch_enum::certificate::certify(&arch, f64::INFINITY, 1e-12, &Settings::default())
-        .unwrap();
+    let mut t =
+        arch_enum::certificate::certify(&arch, f64::INFINITY, 1e-12, &Settings::default()).unwrap();
     t.collapse.as_mut().unwrap().joints[0].side = Some(Side::Before);
     assert!(rejected(&t, "side in a thickness certificate").contains("side"));
 }
@@ -485,7 +531,9 @@ fn cli_certify_and_verify_under_a_load() {
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("load.json");
     let out = bin()
-        .args(["certify", "--alpha", "0", "--blocks", "8", "--eta", "0.3", "--mu", "0.8"])
+        .args([
+            "certify", "--alpha", "0", "--blocks", "8", "--eta", "0.3", "--mu", "0.8",
+        ])
         .args(["--horizontal", "--out"])
         .arg(&file)
         .output()
@@ -496,10 +544,17 @@ fn cli_certify_and_verify_under_a_load() {
     let out = bin().arg("verify").arg(&file).output().unwrap();
     assert_eq!(out.status.code(), Some(0));
     let text = String::from_utf8(out.stdout).unwrap();
-    assert!(text.starts_with("certificate holds\nproved: for this arch at mu = 0.8 under the horizontal body force"), "{text}");
+    assert!(
+        text.starts_with(
+            "certificate holds\nproved: for this arch at mu = 0.8 under the horizontal body force"
+        ),
+        "{text}"
+    );
     // JSON of both
     let out = bin()
-        .args(["certify", "--alpha", "0", "--blocks", "8", "--eta", "0.3", "--mu", "0.8"])
+        .args([
+            "certify", "--alpha", "0", "--blocks", "8", "--eta", "0.3", "--mu", "0.8",
+        ])
         .args(["--point-load-joint", "3", "--json"])
         .output()
         .unwrap();
@@ -509,16 +564,27 @@ fn cli_certify_and_verify_under_a_load() {
     assert_eq!(v["claim"], "largest_multiplier");
     assert_eq!(v["load"]["kind"], "point");
     assert_eq!(v["eta"], 0.3);
-    let (lo, hi) = (v["lambda_lo"].as_f64().unwrap(), v["lambda_hi"].as_f64().unwrap());
+    let (lo, hi) = (
+        v["lambda_lo"].as_f64().unwrap(),
+        v["lambda_hi"].as_f64().unwrap(),
+    );
     assert!(lo < hi && hi - lo <= 1e-12 * hi);
     std::fs::write(&file, serde_json::to_string(&v["certificate"]).unwrap()).unwrap();
-    let out = bin().arg("verify").arg(&file).arg("--json").output().unwrap();
+    let out = bin()
+        .arg("verify")
+        .arg(&file)
+        .arg("--json")
+        .output()
+        .unwrap();
     assert_eq!(out.status.code(), Some(0));
     let r: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(r["status"], "ok");
     assert_eq!(r["lambda_lo"], v["lambda_lo"]);
     assert_eq!(r["lambda_hi"], v["lambda_hi"]);
-    assert!(r["limit_states"].as_str().unwrap().starts_with("the search (sweep) lists"));
+    assert!(r["limit_states"]
+        .as_str()
+        .unwrap()
+        .starts_with("the search (sweep) lists"));
     // closed sets are read as such: an unknown side or load kind is not a certificate
     let text = serde_json::to_string(&v["certificate"]).unwrap();
     for (from, to, field) in [
@@ -538,19 +604,103 @@ fn cli_certify_and_verify_under_a_load() {
 #[test]
 fn cli_bad_input_names_the_flag() {
     for (args, flag) in [
-        (&["--alpha", "0", "--mu", "0.8", "--eta", "0.3"][..], "--eta"),
-        (&["--alpha", "0", "--mu", "0.8", "--horizontal"][..], "--eta"),
-        (&["--alpha", "0", "--mu", "0.8", "--eta", "2.5", "--horizontal"][..], "--eta"),
-        (&["--alpha", "0", "--mu", "0.8", "--eta", "-1", "--horizontal"][..], "--eta"),
         (
-            &["--alpha", "0", "--blocks", "8", "--mu", "0.8", "--eta", "0.3", "--point-load-joint", "9"][..],
+            &["--alpha", "0", "--mu", "0.8", "--eta", "0.3"][..],
+            "--eta",
+        ),
+        (
+            &["--alpha", "0", "--mu", "0.8", "--horizontal"][..],
+            "--eta",
+        ),
+        (
+            &[
+                "--alpha",
+                "0",
+                "--mu",
+                "0.8",
+                "--eta",
+                "2.5",
+                "--horizontal",
+            ][..],
+            "--eta",
+        ),
+        (
+            &["--alpha", "0", "--mu", "0.8", "--eta", "-1", "--horizontal"][..],
+            "--eta",
+        ),
+        (
+            &[
+                "--alpha",
+                "0",
+                "--blocks",
+                "8",
+                "--mu",
+                "0.8",
+                "--eta",
+                "0.3",
+                "--point-load-joint",
+                "9",
+            ][..],
             "--point-load-joint",
         ),
-        (&["--alpha", "0", "--mu", "0.8", "--eta", "0.3", "--point-load", "4"][..], "--point-load"),
-        (&["--alpha", "0", "--mu", "0.8", "--eta", "0.3", "--point-load-deg", "200"][..], "--point-load-deg"),
-        (&["--alpha", "0", "--mu", "0.8", "--eta", "0.3", "--horizontal", "--gap", "1"][..], "--gap"),
-        (&["--alpha", "0", "--mu", "-1", "--eta", "0.3", "--horizontal"][..], "--mu"),
-        (&["--alpha", "0", "--mu", "0.8", "--eta", "0.3", "--horizontal", "--point-load", "1"][..], "--horizontal"),
+        (
+            &[
+                "--alpha",
+                "0",
+                "--mu",
+                "0.8",
+                "--eta",
+                "0.3",
+                "--point-load",
+                "4",
+            ][..],
+            "--point-load",
+        ),
+        (
+            &[
+                "--alpha",
+                "0",
+                "--mu",
+                "0.8",
+                "--eta",
+                "0.3",
+                "--point-load-deg",
+                "200",
+            ][..],
+            "--point-load-deg",
+        ),
+        (
+            &[
+                "--alpha",
+                "0",
+                "--mu",
+                "0.8",
+                "--eta",
+                "0.3",
+                "--horizontal",
+                "--gap",
+                "1",
+            ][..],
+            "--gap",
+        ),
+        (
+            &["--alpha", "0", "--mu", "-1", "--eta", "0.3", "--horizontal"][..],
+            "--mu",
+        ),
+        (
+            &[
+                "--alpha",
+                "0",
+                "--mu",
+                "0.8",
+                "--eta",
+                "0.3",
+                "--horizontal",
+                "--point-load",
+                "1",
+            ][..],
+            "--horizontal",
+        ),
     ] {
         let out = bin().arg("certify").args(args).output().unwrap();
         assert_eq!(out.status.code(), Some(2), "{args:?}");
@@ -558,7 +708,12 @@ fn cli_bad_input_names_the_flag() {
         assert!(err.contains(flag), "{args:?}: {err}");
         assert!(!err.contains("panicked"), "{err}");
         // with --json, one JSON document on standard output
-        let out = bin().arg("certify").args(args).arg("--json").output().unwrap();
+        let out = bin()
+            .arg("certify")
+            .args(args)
+            .arg("--json")
+            .output()
+            .unwrap();
         assert_eq!(out.status.code(), Some(2));
         let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
         assert_eq!(v["status"], "error");
