@@ -1,5 +1,6 @@
-//! Certificates: checkable evidence for η*(μ) that anyone can re-check with
-//! [`verify()`] (no LP, no solver).
+//! Certificates: checkable evidence for η*(μ), and for the largest multiplier λ_static of a
+//! live load ([`certify_load()`]), that anyone can re-check with [`verify()`] (no LP, no
+//! solver).
 //!
 //! # Format (version 1)
 //! A JSON object (the serde types of [`format`] are the schema; `null` stands for +∞
@@ -21,6 +22,20 @@
 //! | `gap`, `gap_relative` | η_hi − η_lo and (η_hi − η_lo)/η_hi |
 //! | `search` | optional (absent where the limit-state search was not completed): `{method, events, mechanism_at_eta, unique, least_state, limit_states_above, no_mechanism}`; `method` ∈ {`sweep`, `hinges_only`, `refined`}; `least_state` and each `no_mechanism` entry are `{eta, x, pattern, farkas: [{drop, y, z, u}]}` |
 //!
+//! **Load certificates** (issue 11; `claim` ∈ {`largest_multiplier`, `unbounded_multiplier`,
+//! `no_equilibrium`} with a `load` section) carry none of `safe`, `collapse`, `limit_state`,
+//! `search`, and instead:
+//!
+//! | key | meaning |
+//! |---|---|
+//! | `load` | `{eta, kind, towards, beta}`: η, `kind` ∈ {`horizontal`, `point`}, `towards` ∈ {`right`, `left`} (horizontal only), `beta` (point only) |
+//! | `multiplier` | `admissible: {lambda, x}` (a state admissible at λ_lo), `infeasible: {lambda, joints: [{beta, kind, side, y}], lambda_row}` (Farkas at λ_hi; `lambda` null for `no_equilibrium`: rows in (h, v, w, λ) and `lambda_row` the multiplier of −λ ≤ 0), `transfer` ∈ {`right`, `left`} or `recession: {lambda, x}` (`unbounded_multiplier`) |
+//! | `gap`, `gap_relative` | λ_hi − λ_lo and (λ_hi − λ_lo)/λ_hi |
+//! | `load_search` | `{method, events, lambda_min, mechanism_at_static, unique, lambda, limit_states, static_state, no_mechanism}`; `method` ∈ {`sweep`, `associative`, `refined`}; limit states `{lambda, x, pattern, rates, live_power, continuum}`; `static_state` and `no_mechanism` entries `{lambda, x, pattern, farkas: [{drop, y, z, u, v}]}` |
+//!
+//! `side` ∈ {`before`, `after`} is given exactly at the point load's own angle (the section
+//! just before the loaded point, or just after it), on joints and pattern contacts alike.
+//!
 //! Every number must be finite; every joint of `collapse` and `pattern` must lie in
 //! [β_R, β_L], at a listed joint of a discrete arch, with a kind that exists at `mu`;
 //! `at` must be `springing` exactly at β_R and β_L. [`verify()`] rejects anything else,
@@ -41,6 +56,16 @@
 //! safe state lies strictly inside P(η_hi) (so no limit state lies above); it *checks* the
 //! listed limit states and active sets in floating point, and does not re-prove the
 //! completeness of the sweep or of the refinement.
+//!
+//! For a load certificate [`verify()`] *proves* the admissible state at λ_lo (at every joint
+//! and both sides of a loaded section, or over the continuum) and the Farkas certificate at
+//! λ_hi, so λ_lo ≤ λ_static < λ_hi (the admissible (x, λ) are convex); or that no state exists
+//! at any λ ≥ 0; or that a state stays admissible along a transfer of the point load to a
+//! springing or a recession direction (λ_static unbounded). With a `load_search` section it
+//! *proves* each listed state without a mechanism (Farkas alternative of the kinematic LP
+//! with the live power) and, at μ = ∞, that no limit state lies below λ_lo (virtual work);
+//! it *checks* the limit states in floating point and does not re-prove the completeness of
+//! the sweep (docs/loads.md).
 //!
 //! # How certificates are built
 //! `certify` builds the two sides around the exact limit state: the safe state is the

@@ -78,8 +78,9 @@ pub(super) fn verify_load(cert: &Certificate, model: &Model) -> Result<Report, R
             ));
             let margin = prove_farkas_at(model, &live, inf, lambda_hi, mu)?;
             checks.push(format!(
-                "proved (interval arithmetic): no state is admissible at lambda_hi = {lambda_hi} (Farkas on {} joints, margin {margin:.3e}); the admissible (x, lambda) are convex, so none at any lambda >= lambda_hi",
-                inf.joints.len()
+                "proved (interval arithmetic): no state is admissible at lambda_hi = {lambda_hi} (Farkas on {} joints{}, margin {margin:.3e}); the admissible (x, lambda) are convex, so none at any lambda >= lambda_hi",
+                inf.joints.len(),
+                if inf.joints.len() == 3 { ", sliding rows in (h, v): w does not enter them" } else { "" }
             ));
             check_gap(cert, adm.lambda, lambda_hi)?;
             Some((adm.lambda, Some(lambda_hi)))

@@ -222,7 +222,11 @@ fn limit_states_text(cert: &Certificate) -> String {
                         Some(l) => format!("{}, the collapse multiplier lambda = {l}", s.limit_states.len()),
                         None => "none".to_string(),
                     },
-                    if s.unique { "unique" } else { "not unique" },
+                    match (s.unique, s.limit_states.is_empty()) {
+                        (_, true) => "the load drives no mechanism",
+                        (true, false) => "unique",
+                        (false, false) => "not unique",
+                    },
                     if s.mechanism_at_static { ", one at lambda_static" } else { "" },
                     match s.method {
                         LoadSearchMethod::Sweep => "sweep",
