@@ -213,3 +213,152 @@ impl Live {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    //! The verifier's live actions against the solver's (`crate::load`, whose β-derivatives
+    //! are checked against differences in `tests/it/loads.rs`): two implementations of the
+    //! spec, every order, both loads, both weight models, both sides.
+    use super::super::certify::empty;
+    use super::super::format::{Claim, LoadKind, LoadSpec, Side, Towards};
+    use super::super::interval::Interval as I;
+    use super::super::verify::model_of;
+    use super::Live;
+    use crate::load::{LiveLoad, Side as SolverSide};
+    use crate::{Arch, WeightModel};
+
+    #[test]
+    fn live_actions_and_their_derivatives_match_the_solver() {
+        for weight in [WeightModel::Centreline, WeightModel::Centroid] {
+            let arch = Arch::new(-0.4, 3.3, weight).unwrap();
+            let model = model_of(&empty(&arch, 0.7, Claim::LargestMultiplier)).unwrap();
+            let eta = 0.37;
+            for (spec, load) in [
+                (
+                    (LoadKind::Horizontal, Some(Towards::Right), None),
+                    LiveLoad::Horizontal {
+                        towards_right: true,
+                    },
+                ),
+                (
+                    (LoadKind::Horizontal, Some(Towards::Left), None),
+                    LiveLoad::Horizontal {
+                        towards_right: false,
+                    },
+                ),
+                (
+                    (LoadKind::Point, None, Some(1.2)),
+                    LiveLoad::Point { beta: 1.2 },
+                ),
+            ] {
+                let live = Live::of(
+                    &LoadSpec {
+                        eta,
+                        kind: spec.0,
+                        towards: spec.1,
+                        beta: spec.2,
+                    },
+                    &model,
+                )
+                .unwrap();
+                // 41 angles and the point load's own (both sides there)
+                let angles = (0..=40).map(|i| -0.4 + 3.7 * i as f64 / 40.0).chain([1.2]);
+                for beta in angles {
+                    for (side, solver_side) in [
+                        (Some(Side::Before), SolverSide::Before),
+                        (Some(Side::After), SolverSide::After),
+                    ] {
+                        let side = live.split().filter(|&b| b == beta).and(side);
+                        let carries = live.carries(beta, side.or(Some(Side::After)));
+                        let want = load.actions_d(&arch, eta, beta, solver_side);
+                        let got = live.ntm(&model, I::point(beta), carries);
+                        for order in 0..3 {
+                            let g = got.map_or([0.0; 3], |n| {
+                                [n.n[order].mid(), n.t[order].mid(), n.m[order].mid()]
+                            });
+                            for k in 0..3 {
+                                assert!(
+                                    (g[k] - want[order][k]).abs() <= 1e-13,
+                                    "{weight:?} {load:?} beta {beta} order {order} component {k}: {} vs {}",
+                                    g[k],
+                                    want[order][k]
+                                );
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn live_power_matches_the_solver() {
+        use super::super::verify_search::column;
+        use crate::contact::{Contact, ContactKind, Location};
+        for weight in [WeightModel::Centreline, WeightModel::Centroid] {
+            let arch = Arch::new(-0.3, 3.4, weight).unwrap();
+            let model = model_of(&empty(&arch, 0.7, Claim::LargestMultiplier)).unwrap();
+            let eta = 0.42;
+            let bp = 1.1;
+            // contacts at four joints, two sides at the loaded one
+            let kept: Vec<(f64, ContactKind, Option<Side>)> = vec![
+                (-0.3, ContactKind::HingeExtrados, None),
+                (0.5, ContactKind::SlidePlus, None),
+                (bp, ContactKind::HingeIntrados, Some(Side::Before)),
+                (bp, ContactKind::SlideMinus, Some(Side::After)),
+                (2.4, ContactKind::HingeIntrados, None),
+                (3.4, ContactKind::HingeExtrados, None),
+            ];
+            let columns: Vec<[I; 3]> = kept.iter().map(|&(b, k, _)| column(k, b, eta)).collect();
+            let pairs: Vec<(Contact, SolverSide)> = kept
+                .iter()
+                .map(|&(beta, kind, side)| {
+                    (
+                        Contact {
+                            beta,
+                            kind,
+                            at: Location::Interior,
+                            free: false,
+                        },
+                        if side == Some(Side::Before) {
+                            SolverSide::Before
+                        } else {
+                            SolverSide::After
+                        },
+                    )
+                })
+                .collect();
+            for (spec, load) in [
+                (
+                    (LoadKind::Horizontal, Some(Towards::Left), None),
+                    LiveLoad::Horizontal {
+                        towards_right: false,
+                    },
+                ),
+                (
+                    (LoadKind::Point, None, Some(bp)),
+                    LiveLoad::Point { beta: bp },
+                ),
+            ] {
+                let live = Live::of(
+                    &LoadSpec {
+                        eta,
+                        kind: spec.0,
+                        towards: spec.1,
+                        beta: spec.2,
+                    },
+                    &model,
+                )
+                .unwrap();
+                let got = live.power(&model, &kept, &columns);
+                let want = load.power(&arch, eta, &pairs);
+                for (g, w) in got.iter().zip(&want) {
+                    assert!(
+                        g.lo <= *w + 1e-13 && *w - 1e-13 <= g.hi,
+                        "{load:?}: {g:?} vs {w}"
+                    );
+                }
+            }
+        }
+    }
+}

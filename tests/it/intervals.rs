@@ -1,12 +1,12 @@
 //! The interval arithmetic of the certificate verifier (`certificate::interval`), on
 //! seeded random intervals: every enclosure (sum, difference, negation, product, scale,
-//! sin, cos, det2, det3) contains the float value of the same expression at sample points
+//! sin, cos, det2, det3, det4) contains the float value of the same expression at sample points
 //! of its inputs (by induction over the expression, an outward-rounded enclosure must
 //! contain every float evaluation of it; sums and products are also checked against the
 //! exact real result, via TwoSum and FMA), and is not absurdly wide: never wider than a
 //! first-order bound of the true range plus a few ulps.
 
-use arch_enum::certificate::interval::{det2, det3, Interval as I};
+use arch_enum::certificate::interval::{det2, det3, det4, Interval as I};
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
 
@@ -146,6 +146,34 @@ proptest! {
         let big = m.iter().map(|&x| mag(x)).fold(0.0, f64::max) + w;
         prop_assert!(d3.width() <= 6.0 * big * big * w + ulps(6.0 * big.powi(3)), "det3 {d3:?} too wide");
         prop_assert!(d2.width() <= 2.0 * big * w + ulps(2.0 * big * big), "det2 {d2:?} too wide");
+    }
+
+    #[test]
+    fn det4_encloses_and_is_tight(
+        cs in proptest::collection::vec((-3.0f64..3.0, prop_oneof![Just(0.0), 0.0f64..1e-9, 0.0f64..0.1]), 16),
+        picks in proptest::collection::vec(0usize..7, 64),
+    ) {
+        let m: Vec<I> = cs.iter().map(|&(c, w)| iv(c, w)).collect();
+        let col = |k: usize| [m[4 * k], m[4 * k + 1], m[4 * k + 2], m[4 * k + 3]];
+        let d4 = det4([col(0), col(1), col(2), col(3)]);
+        for s in picks.chunks(16).filter(|s| s.len() == 16) {
+            let v: Vec<f64> = (0..16).map(|i| samples(m[i], 6)[s[i]]).collect();
+            let e = |r: usize, k: usize| v[4 * k + r];
+            // the float determinant by the same expansion as det4: along the first row,
+            // each minor (rows 1..3, the other columns) by det3's expansion
+            let minor = |skip: usize| {
+                let c: Vec<usize> = (0..4).filter(|&k| k != skip).collect();
+                let f = |r: usize, k: usize| e(r + 1, c[k]);
+                f(0, 0) * (f(1, 1) * f(2, 2) - f(1, 2) * f(2, 1))
+                    - f(0, 1) * (f(1, 0) * f(2, 2) - f(1, 2) * f(2, 0))
+                    + f(0, 2) * (f(1, 0) * f(2, 1) - f(1, 1) * f(2, 0))
+            };
+            let f4 = e(0, 0) * minor(0) - e(0, 1) * minor(1) + e(0, 2) * minor(2) - e(0, 3) * minor(3);
+            prop_assert!(contains(d4, f4), "det4 {d4:?} misses {f4}");
+        }
+        let w: f64 = m.iter().map(|x| x.width()).sum();
+        let big = m.iter().map(|&x| mag(x)).fold(0.0, f64::max) + w;
+        prop_assert!(d4.width() <= 24.0 * big.powi(3) * w + ulps(24.0 * big.powi(4)), "det4 {d4:?} too wide");
     }
 }
 
