@@ -272,16 +272,16 @@ mod tests {
                         let carries = live.carries(beta, side.or(Some(Side::After)));
                         let want = load.actions_d(&arch, eta, beta, solver_side);
                         let got = live.ntm(&model, I::point(beta), carries);
-                        for order in 0..3 {
+                        for (order, w) in want.iter().enumerate() {
                             let g = got.map_or([0.0; 3], |n| {
                                 [n.n[order].mid(), n.t[order].mid(), n.m[order].mid()]
                             });
                             for k in 0..3 {
                                 assert!(
-                                    (g[k] - want[order][k]).abs() <= 1e-13,
+                                    (g[k] - w[k]).abs() <= 1e-13,
                                     "{weight:?} {load:?} beta {beta} order {order} component {k}: {} vs {}",
                                     g[k],
-                                    want[order][k]
+                                    w[k]
                                 );
                             }
                         }
