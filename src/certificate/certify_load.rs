@@ -16,7 +16,9 @@
 //!   nearest to binding there (and −λ ≤ 0), as for the other Farkas certificates.
 //! * the limit states: the survey's list with its mechanisms, the state at λ_static
 //!   without a mechanism and every point the sweep checked without one, each with the
-//!   Farkas alternative of the kinematic LP with the live power.
+//!   Farkas alternative of the kinematic LP with the live power. Where the survey leaves
+//!   the limit states undecided, the certificate covers the static range alone (no
+//!   `load_search`).
 
 use super::certify::{empty, farkas_cover, find_farkas, move_inside, Row};
 use super::format::*;
@@ -30,7 +32,10 @@ use crate::limit_states::sweep::{sweep_load, CheckedPoint};
 use crate::load::{live_activation, rows, LiveLoad};
 use crate::lp;
 use crate::multiplier::continuum::{extreme, LoadedContact};
-use crate::multiplier::{survey, LoadLimitState, LoadOutcome, LoadSurvey, UNBOUNDED_SEARCH_TOP};
+use crate::multiplier::{
+    static_range, survey, LoadLimitState, LoadOutcome, LoadSurvey, StaticRange,
+    UNBOUNDED_SEARCH_TOP,
+};
 use crate::settings::Settings;
 use crate::statics::{actions, magnitude, Affine, Reactions};
 
@@ -51,14 +56,55 @@ pub fn certify_load(
     gap: f64,
     settings: &Settings,
 ) -> Result<Certificate, NotCertified> {
-    let outcome = survey(arch, eta, mu, load, settings)
-        .map_err(|e| NotCertified(e.to_string()))?
-        .map_err(|e| NotCertified(format!("the load question is not decided: {e}")))?;
     let base = |claim: Claim| {
         let mut c = empty(arch, mu, claim);
         c.load = Some(load_spec(eta, load));
         c
     };
+    let outcome =
+        match survey(arch, eta, mu, load, settings).map_err(|e| NotCertified(e.to_string()))? {
+            Ok(o) => o,
+            // the limit states undecided: the static range alone, without their evidence
+            Err(reason) => {
+                let range = static_range(arch, eta, mu, load, settings)
+                    .map_err(|e| NotCertified(e.to_string()))?
+                    .map_err(|e| NotCertified(format!("the load question is not decided: {e}")))?;
+                return match range {
+                    StaticRange::NoEquilibrium => {
+                        no_equilibrium(arch, eta, mu, load, base(Claim::NoEquilibrium), settings)
+                    }
+                    StaticRange::Interval { min, max: None } => unbounded(
+                        arch,
+                        eta,
+                        mu,
+                        load,
+                        min,
+                        base(Claim::UnboundedMultiplier),
+                        settings,
+                    ),
+                    StaticRange::Interval { max: Some(top), .. } => {
+                        let (lambda_s, x_s, pattern) =
+                            static_state(arch, eta, mu, load, top, settings)?;
+                        bracket(
+                            arch,
+                            eta,
+                            mu,
+                            load,
+                            (lambda_s, x_s, &pattern),
+                            base(Claim::LargestMultiplier),
+                            gap,
+                            settings,
+                        )
+                    }
+                }
+                .map_err(|e| {
+                    NotCertified(format!(
+                        "{} (the limit states are not decided: {reason})",
+                        e.0
+                    ))
+                });
+            }
+        };
     match outcome {
         LoadOutcome::NoEquilibrium => {
             no_equilibrium(arch, eta, mu, load, base(Claim::NoEquilibrium), settings)

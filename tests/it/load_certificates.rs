@@ -161,6 +161,29 @@ fn continuous_point_load_checks_both_sides_of_the_section() {
     );
 }
 
+/// A continuous arch whose static maximum carries no mechanism with positive live power
+/// (refined search at finite friction): the proof that its active contacts carry none.
+#[test]
+fn continuous_static_maximum_without_a_mechanism_is_proved() {
+    let arch = Arch::symmetric(0.5, WeightModel::Centreline).unwrap();
+    let load = LiveLoad::Horizontal {
+        towards_right: true,
+    };
+    let c = cert(&arch, 0.5, 0.9, &load, 1e-12);
+    let r = holds(&round_trip(&c));
+    let s = c.load_search.as_ref().unwrap();
+    assert_eq!(s.method, LoadSearchMethod::Refined);
+    assert!(!s.mechanism_at_static && s.limit_states.is_empty() && s.lambda.is_none());
+    assert!(s
+        .static_state
+        .as_ref()
+        .is_some_and(|p| !p.farkas.is_empty()));
+    assert!(r.checks.iter().any(|l| l.starts_with(
+        "proved (interval arithmetic): the 4 contacts active at the state at lambda_static"
+    )));
+    assert!(r.limit_states.unwrap().contains("no limit state"));
+}
+
 #[test]
 fn the_requested_gap_is_delivered() {
     let (arch, eta, mu, load) = unsymmetric();
@@ -196,17 +219,24 @@ fn no_equilibrium_and_unbounded_multipliers_are_certified() {
             .statement()
             .contains("no state is statically admissible at any lambda >= 0"));
     }
-    // a load on a springing goes straight into the support
+    // a load on a springing goes straight into the support (on the continuous arch at
+    // finite friction the limit states are not searched then: the certificate covers the
+    // static range alone)
     for (arch, mu, beta, transfer) in [
         (&eight, 0.8, 0.0, Transfer::Right),
         (&eight, 0.8, PI, Transfer::Left),
         (&semi, f64::INFINITY, 0.0, Transfer::Right),
+        (&semi, 0.8, 0.0, Transfer::Right),
     ] {
         let c = certify_load(arch, 0.3, mu, &LiveLoad::Point { beta }, 1e-12, &s).unwrap();
         assert_eq!(c.claim, Claim::UnboundedMultiplier);
         assert_eq!(c.multiplier.as_ref().unwrap().transfer, Some(transfer));
         let r = holds(&round_trip(&c));
         assert!(r.statement().contains("lambda_static is unbounded"));
+        assert_eq!(
+            c.load_search.is_none(),
+            arch.layout() == &arch_enum::JointLayout::Continuous && mu.is_finite()
+        );
         // the wrong transfer is not proved
         let mut t = c.clone();
         t.multiplier.as_mut().unwrap().transfer = Some(match transfer {
