@@ -117,6 +117,18 @@ pub(super) struct Ntm {
     pub(super) m: [I; 3],
 }
 
+impl Default for Ntm {
+    /// All zero.
+    fn default() -> Ntm {
+        let z = I::point(0.0);
+        Ntm {
+            n: [z; 3],
+            t: [z; 3],
+            m: [z; 3],
+        }
+    }
+}
+
 impl Ntm {
     /// `self + k·o`, term by term (the dead actions plus λ times the live ones).
     pub(super) fn plus(&self, k: f64, o: &Ntm) -> Ntm {
@@ -278,7 +290,7 @@ pub(super) fn prove_admissible(
         b: model.beta_l,
         eval: &eval,
     };
-    prove_pieces(model, &[whole], eta, mu, strict, "safe side")
+    prove_pieces(model, &[whole], eta, mu, kinds(mu), strict, "safe side")
 }
 
 /// A smooth piece [a, b] of the arch and its actions over an interval of angles (the
@@ -292,19 +304,20 @@ pub(super) struct Piece<'a> {
     pub(super) eval: &'a dyn Fn(I) -> Ntm,
 }
 
-/// Proves φ ≤ 0 (φ < 0 with `strict`) for every activation function on every piece: at
-/// each listed joint inside it (discrete arch), else over its whole continuum of angles
-/// (Taylor enclosures, adaptive splitting). `what` starts the rejection messages.
+/// Proves φ ≤ 0 (φ < 0 with `strict`) for the activation functions `kinds` on every
+/// piece: at each listed joint inside it (discrete arch), else over its whole continuum of
+/// angles (Taylor enclosures, adaptive splitting). `what` starts the rejection messages.
 pub(super) fn prove_pieces(
     model: &Model,
     pieces: &[Piece],
     eta: f64,
     mu: Option<f64>,
+    kinds: &[ContactKind],
     strict: bool,
     what: &str,
 ) -> Result<usize, Rejection> {
     let mut count = 0usize;
-    for &kind in kinds(mu) {
+    for &kind in kinds {
         for piece in pieces {
             let eval = piece.eval;
             if let Some(joints) = &model.joints {

@@ -254,7 +254,7 @@ fn prove_with_live(
             eval: f.as_ref(),
         })
         .collect();
-    prove_pieces(model, &pieces, live.eta, mu, false, what)
+    prove_pieces(model, &pieces, live.eta, mu, kinds(mu), false, what)
 }
 
 /// The live part per unit λ of the activation function `kind` at the joint β on `side`
@@ -387,11 +387,14 @@ fn prove_farkas_any(
 /// Proves that a transfer keeps every section admissible as λ grows (see [`Transfer`]):
 /// the sections whose actions change along the ray (those that do not carry the load for
 /// `right`, those that do for `left`) change by ∓ the live unit actions u = (−cos β,
-/// sin β, cos β − (1 + η/2) cos β_P), and φ of that change must be ≤ 0. At β_P itself
-/// the extrados hinge row is identically zero (the force passes through the extrados
-/// point of its own section); every other row is proved in intervals, section by section,
-/// so the changing sections must be isolated joints (a discrete arch, or the springing
-/// itself).
+/// sin β, cos β − (1 + η/2) cos β_P), and φ of that change must be ≤ 0. Its extrados
+/// hinge row is (1 + η/2)(cos β_P − cos β) for `right` and the opposite for `left`: zero at
+/// β_P itself (the force passes through the extrados point of its own section), and on a
+/// continuous piece between β_P and a springing ≤ 0 exactly when sin((β + β_P)/2) ≥ 0 there
+/// (cos β − cos β_P = 2 sin((β + β_P)/2) sin((β_P − β)/2), the second factor of known sign
+/// on the arch's span ≤ 2π), proved on the enclosure of (β + β_P)/2 over the piece. Every
+/// other row is proved in intervals: joint by joint, or over the piece by Taylor
+/// enclosures.
 fn prove_transfer(
     model: &Model,
     live: &Live,
@@ -403,68 +406,95 @@ fn prove_transfer(
             "multiplier.transfer: a transfer carries a point load, not a horizontal one",
         );
     };
-    // the sections that change along the ray, and the sign of the change
-    let (changing, sign): (Vec<(f64, Option<super::format::Side>)>, f64) = {
-        let joints: Vec<f64> = match &model.joints {
-            Some(j) => j.clone(),
-            None => {
-                let end = match transfer {
-                    Transfer::Right => model.beta_r,
-                    Transfer::Left => model.beta_l,
-                };
-                if bp != end {
-                    return reject(format!(
-                        "multiplier.transfer {}: on a continuous arch only a load at that springing (beta = {end}) is transferred section by section; here a continuum of sections would change",
-                        transfer_name(transfer)
-                    ));
-                }
-                vec![end]
-            }
-        };
-        let carrying = |want: bool| {
-            joints
+    let name = transfer_name(transfer);
+    // right: the sections that do not carry the load change by −u; left: those that do, by u
+    let (sign, carrying) = match transfer {
+        Transfer::Right => (-1.0, false),
+        Transfer::Left => (1.0, true),
+    };
+    let others: Vec<ContactKind> = kinds(mu)
+        .iter()
+        .copied()
+        .filter(|&k| k != ContactKind::HingeExtrados)
+        .collect();
+    let unit = |b: I| -> Ntm {
+        let u = live
+            .ntm(model, b, true)
+            .expect("a point load's unit actions");
+        Ntm::default().plus(sign, &u)
+    };
+    let (mut proved, mut zero) = (0usize, 0usize);
+    let changing = match &model.joints {
+        Some(joints) => {
+            let sections: Vec<(f64, Option<super::format::Side>)> = joints
                 .iter()
                 .flat_map(|&b| sections(b, Some(bp)).into_iter().map(move |s| (b, s)))
-                .filter(|&(b, s)| live.carries(b, s) == want)
-                .collect::<Vec<_>>()
-        };
-        match transfer {
-            Transfer::Right => (carrying(false), -1.0),
-            Transfer::Left => (carrying(true), 1.0),
+                .filter(|&(b, s)| live.carries(b, s) == carrying)
+                .collect();
+            for &(b, side) in &sections {
+                let u = unit(I::point(b));
+                for &kind in kinds(mu) {
+                    let v = phi(kind, 0, &u, live.eta, mu);
+                    if b == bp && kind == ContactKind::HingeExtrados {
+                        zero += 1; // identically zero: through the extrados point of β_P
+                        continue;
+                    }
+                    if v.hi.is_nan() || v.hi > 0.0 {
+                        return reject(format!(
+                            "multiplier.transfer {name}: {} at beta = {b}{} grows along the ray (upper bound {:e}): not proved",
+                            kind.name(),
+                            side_text(side),
+                            v.hi
+                        ));
+                    }
+                    proved += 1;
+                }
+            }
+            format!("{} section(s)", sections.len())
+        }
+        None => {
+            let (a, b) = match transfer {
+                Transfer::Right => (model.beta_r, bp),
+                Transfer::Left => (bp, model.beta_l),
+            };
+            // the extrados hinge row: the sign of sin((β + β_P)/2) over the piece
+            let half = (I::point(a) + I::point(bp)) * I::point(0.5);
+            let other = (I::point(b) + I::point(bp)) * I::point(0.5);
+            let arg = I::new(half.lo.min(other.lo), half.hi.max(other.hi));
+            if a < b {
+                let s = arg.sin();
+                if s.lo.is_nan() || s.lo < 0.0 {
+                    return reject(format!(
+                        "multiplier.transfer {name}: hinge_extrados over [{a}, {b}] is not proved <= 0 (sin((beta + beta_P)/2) >= {:e})",
+                        s.lo
+                    ));
+                }
+            }
+            zero += 1;
+            let piece = Piece { a, b, eval: &unit };
+            proved += prove_pieces(
+                model,
+                &[piece],
+                live.eta,
+                mu,
+                &others,
+                false,
+                &format!("multiplier.transfer {name}"),
+            )?;
+            format!("the sections over [{a}, {b}]")
         }
     };
-    let mut proved = 0usize;
-    let mut zero = 0usize;
-    for &(b, side) in &changing {
-        let u = live
-            .ntm(model, I::point(b), true)
-            .expect("a point load's unit actions");
-        for &kind in kinds(mu) {
-            if b == bp && kind == ContactKind::HingeExtrados {
-                zero += 1; // identically zero: through the extrados point of β_P
-                continue;
-            }
-            let v = phi(kind, 0, &u, live.eta, mu).scale(sign);
-            if v.hi.is_nan() || v.hi > 0.0 {
-                return reject(format!(
-                    "multiplier.transfer {}: {} at beta = {b}{} grows along the ray (upper bound {:e}): not proved",
-                    transfer_name(transfer),
-                    kind.name(),
-                    side_text(side),
-                    v.hi
-                ));
-            }
-            proved += 1;
-        }
-    }
     Ok(format!(
-        "proved (interval arithmetic): transferring the load to the {} springing (reactions changed by {} per unit lambda) keeps every activation function <= 0 as lambda grows: {} section(s) change, {proved} rows proved non-increasing, {zero} identically zero (the extrados hinge of the loaded section); the others are unchanged (an identity of the statics)",
-        transfer_name(transfer),
+        "proved (interval arithmetic): transferring the load to the {name} springing (reactions changed by {} per unit lambda) keeps every activation function <= 0 as lambda grows: {changing} change ({proved} rows or enclosures proved non-increasing; the extrados hinge row {}); the others are unchanged (an identity of the statics)",
         match transfer {
             Transfer::Right => "(0, 1, (1 + eta/2) cos beta_P - cos beta_R)",
             Transfer::Left => "nothing",
         },
-        changing.len()
+        if model.joints.is_some() {
+            format!("of the loaded section identically zero ({zero})")
+        } else {
+            "by the sign of sin((beta + beta_P)/2)".to_string()
+        }
     ))
 }
 
