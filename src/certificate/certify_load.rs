@@ -326,7 +326,7 @@ fn bracket(
                     full
                 };
                 // four rows in x, or three sliding rows in (h, v) (they do not involve w)
-                let sliding = without_w(&hi_rows);
+                let sliding = reduced(&hi_rows, |l| !l.0.kind.is_hinge(), &[2]);
                 let found = find_farkas(&hi_rows, 3, |l| verify(&probe(&with(l))).is_ok())
                     .or_else(|| find_farkas(&sliding, 2, |l| verify(&probe(&with(l))).is_ok()));
                 if let Some(l) = found {
@@ -348,17 +348,22 @@ fn bracket(
     )))
 }
 
-/// The sliding rows of a pool with w's component (index 2) left out: T and N, hence the
-/// sliding rows, do not involve w, so a Farkas certificate among them is one dimension
-/// lower.
-fn without_w<T: Clone + SlidingLabel>(pool: &[(T, Row)]) -> Vec<(T, Row)> {
+/// The rows of `pool` that `keep` accepts, with the coordinates `drop` left out: they do
+/// not enter those rows (w in the sliding rows: T and N do not involve it; λ in the rows of
+/// sections that do not carry the point load, or, through x − λ d, in all that do), so a
+/// Farkas certificate among them is that much lower in dimension.
+fn reduced<T: Clone>(
+    pool: &[(T, Row)],
+    keep: impl Fn(&T) -> bool,
+    drop: &[usize],
+) -> Vec<(T, Row)> {
     pool.iter()
-        .filter(|(l, _)| l.sliding())
+        .filter(|(l, _)| keep(l))
         .map(|(l, r)| {
             let g =
                 r.g.iter()
                     .enumerate()
-                    .filter(|&(k, _)| k != 2)
+                    .filter(|(k, _)| !drop.contains(k))
                     .map(|(_, v)| *v)
                     .collect();
             (l.clone(), Row { g, c: r.c })
@@ -366,21 +371,12 @@ fn without_w<T: Clone + SlidingLabel>(pool: &[(T, Row)]) -> Vec<(T, Row)> {
         .collect()
 }
 
-/// A row label that says whether its row is a sliding one (the −λ ≤ 0 row counts: it
-/// does not involve w either).
-trait SlidingLabel {
-    fn sliding(&self) -> bool;
-}
-
-impl SlidingLabel for Loaded {
-    fn sliding(&self) -> bool {
-        !self.0.kind.is_hinge()
-    }
-}
-
-impl SlidingLabel for Option<Loaded> {
-    fn sliding(&self) -> bool {
-        self.is_none_or(|l| l.sliding())
+/// Whether the section of a loaded contact carries the live load (every section for a
+/// horizontal load; for a point load those after it, and the `After` side of its own).
+fn carries(load: &LiveLoad, (c, side): Loaded) -> bool {
+    match *load {
+        LiveLoad::Horizontal { .. } => true,
+        LiveLoad::Point { beta } => c.beta > beta || (c.beta == beta && side == Side::After),
     }
 }
 
@@ -482,7 +478,16 @@ fn unbounded(
 /// 721 equally spaced angles of a continuous arch, and the point load's own.
 fn sample(arch: &Arch, load: &LiveLoad) -> Vec<f64> {
     let (a, b) = (arch.beta_right(), arch.beta_left());
-    let mut j: Vec<f64> = (0..=720).map(|i| a + (b - a) * i as f64 / 720.0).collect();
+    // the last angle exactly the springing (a + (b − a) can round past it)
+    let mut j: Vec<f64> = (0..=720)
+        .map(|i| {
+            if i == 720 {
+                b
+            } else {
+                a + (b - a) * i as f64 / 720.0
+            }
+        })
+        .collect();
     if let LiveLoad::Point { beta } = *load {
         j.push(beta);
         j.sort_by(f64::total_cmp);
@@ -566,10 +571,29 @@ fn no_equilibrium(
         })
         .collect();
     near.sort_by(|p, q| p.0.total_cmp(&q.0));
-    let mut pool: Vec<(Option<Loaded>, Row)> = near
+    // on a sampled continuum the neighbours of one binding angle crowd the nearest rows:
+    // one row per (kind, side) within a few samples
+    let spacing = match arch.layout() {
+        JointLayout::Continuous => 3.5 * (arch.beta_left() - arch.beta_right()) / 720.0,
+        JointLayout::Discrete(_) => 0.0,
+    };
+    let mut chosen: Vec<usize> = Vec::new();
+    for &(_, i) in &near {
+        if chosen.len() == 10 {
+            break;
+        }
+        let (c, side) = all[i].0;
+        let crowded = chosen.iter().any(|&k| {
+            let (o, s) = all[k].0;
+            o.kind == c.kind && s == side && (o.beta - c.beta).abs() < spacing
+        });
+        if !crowded {
+            chosen.push(i);
+        }
+    }
+    let mut pool: Vec<(Option<Loaded>, Row)> = chosen
         .iter()
-        .take(10)
-        .map(|&(_, i)| {
+        .map(|&i| {
             let (l, a, c) = all[i];
             (Some(l), Row { g: a.to_vec(), c })
         })
@@ -599,9 +623,24 @@ fn no_equilibrium(
         });
         c
     };
-    let sliding = without_w(&pool);
-    find_farkas(&pool, 4, |l| verify(&with(l)).is_ok())
-        .or_else(|| find_farkas(&sliding, 3, |l| verify(&with(l)).is_ok()))
+    // all five rows, or fewer where w (sliding rows) or λ does not enter them: sections the
+    // point load does not reach fail on their own, whatever λ; those it reaches see it only
+    // through x − λ d (a certificate in x among them holds at every λ)
+    let slides = |l: &Option<Loaded>| l.is_none_or(|l| !l.0.kind.is_hinge());
+    let unloaded = |l: &Option<Loaded>| l.is_some_and(|l| !carries(load, l));
+    let point = matches!(load, LiveLoad::Point { .. });
+    let loaded = |l: &Option<Loaded>| point && l.is_some_and(|l| carries(load, l));
+    let tries = [
+        (pool.clone(), 4),
+        (reduced(&pool, slides, &[2]), 3),
+        (reduced(&pool, unloaded, &[3]), 3),
+        (reduced(&pool, |l| slides(l) && unloaded(l), &[2, 3]), 2),
+        (reduced(&pool, loaded, &[3]), 3),
+        (reduced(&pool, |l| slides(l) && loaded(l), &[2, 3]), 2),
+    ];
+    tries
+        .iter()
+        .find_map(|(p, d)| find_farkas(p, *d, |l| verify(&with(l)).is_ok()))
         .map(|l| with(&l))
         .ok_or_else(|| {
             NotCertified(format!(

@@ -266,33 +266,6 @@ fn live_row(model: &Model, live: &Live, j: &CertJoint, mu: Option<f64>) -> I {
     }
 }
 
-/// The joints of a Farkas certificate in `unknowns` unknowns that include w: one more
-/// joint than unknowns, or as many when every joint is a sliding one (T and N, hence the
-/// sliding rows, do not involve w: the certificate is then one dimension lower). Returns
-/// whether w is dropped.
-fn checked_joints(
-    model: &Model,
-    live: &Live,
-    joints: &[CertJoint],
-    mu: Option<f64>,
-    unknowns: usize,
-) -> Result<bool, Rejection> {
-    let sliding = joints.iter().all(|j| !j.kind.is_hinge());
-    let without_w = sliding && joints.len() == unknowns;
-    if joints.len() != unknowns + 1 && !without_w {
-        return reject(format!(
-            "collapse side: a Farkas certificate here needs exactly {} joints ({} if all are sliding ones, which do not involve w), found {}",
-            unknowns + 1,
-            unknowns,
-            joints.len()
-        ));
-    }
-    for (i, j) in joints.iter().enumerate() {
-        check_farkas_joint(model, i, j, mu, live.split())?;
-    }
-    Ok(without_w)
-}
-
 fn labels(joints: &[CertJoint]) -> Vec<(f64, String)> {
     joints
         .iter()
@@ -300,17 +273,79 @@ fn labels(joints: &[CertJoint]) -> Vec<(f64, String)> {
         .collect()
 }
 
-/// The gradient of a row with w's component (index 2) left out when `without_w`.
-fn gradient(g: Vec<I>, without_w: bool) -> Vec<I> {
-    if without_w {
-        g.iter()
-            .enumerate()
-            .filter(|&(k, _)| k != 2)
-            .map(|(_, v)| *v)
-            .collect()
-    } else {
-        g
+/// The Farkas proof for rows over the unknowns (h, v, w) — and λ when `with_lambda` — after
+/// leaving out the coordinates that do not enter them: w when every joint slides (T and N
+/// do not involve w); λ, when the row −λ ≤ 0 is not used, if no joint's section carries
+/// the point load (their λ-coefficients are zero) or if every one does (a point load enters
+/// the sections that carry it only through x − λ d, d = (0, 1, (1 + η/2) cos β_P − cos β_R):
+/// the live actions there are minus the weightless actions of d — an identity of the
+/// statics — so a certificate in x covers every (x, λ)). The certificate must have one row
+/// more than the coordinates kept; `rows` are (gradient, constant) with the full gradient.
+fn prove_reduced(
+    model: &Model,
+    live: &Live,
+    f: &LoadFarkas,
+    mu: Option<f64>,
+    rows: Vec<(Vec<I>, I)>,
+    with_lambda: bool,
+) -> Result<f64, Rejection> {
+    for (i, j) in f.joints.iter().enumerate() {
+        check_farkas_joint(model, i, j, mu, live.split())?;
     }
+    let mut dropped = Vec::new();
+    if f.joints.iter().all(|j| !j.kind.is_hinge()) {
+        dropped.push(2); // w
+    }
+    let carried: Vec<bool> = f
+        .joints
+        .iter()
+        .map(|j| live.carries(j.beta, j.side))
+        .collect();
+    let point = live.split().is_some();
+    if with_lambda
+        && f.lambda_row.is_none()
+        && (carried.iter().all(|c| !c) || (point && carried.iter().all(|&c| c)))
+    {
+        dropped.push(3); // λ
+    }
+    let unknowns = if with_lambda { 4 } else { 3 } - dropped.len();
+    if rows.len() != unknowns + 1 {
+        return reject(format!(
+            "collapse side: a Farkas certificate here needs exactly {} rows ({} unknowns{}), found {}",
+            unknowns + 1,
+            unknowns,
+            if dropped.is_empty() {
+                String::new()
+            } else {
+                format!(
+                    " once {} left out: they do not enter these rows",
+                    dropped
+                        .iter()
+                        .map(|&k| if k == 2 { "w" } else { "lambda" })
+                        .collect::<Vec<_>>()
+                        .join(" and ")
+                )
+            },
+            rows.len()
+        ));
+    }
+    let rows: Vec<(Vec<I>, I)> = rows
+        .into_iter()
+        .map(|(g, c)| {
+            let g = g
+                .into_iter()
+                .enumerate()
+                .filter(|(k, _)| !dropped.contains(k))
+                .map(|(_, v)| v)
+                .collect();
+            (g, c)
+        })
+        .collect();
+    let mut stored = labels(&f.joints);
+    if let Some(y) = f.lambda_row {
+        stored.push((y, "the row -lambda <= 0".to_string()));
+    }
+    prove_cofactors(&rows, &stored)
 }
 
 /// The Farkas certificate at λ_hi: four rows in x = (h, v, w) (three sliding rows in
@@ -327,61 +362,44 @@ fn prove_farkas_at(
             "collapse side: the row -lambda <= 0 belongs to a no_equilibrium certificate only",
         );
     }
-    let without_w = checked_joints(model, live, &f.joints, mu, 3)?;
     let rows: Vec<(Vec<I>, I)> = f
         .joints
         .iter()
         .map(|j| {
             let (g, c) = affine(model, j.kind, j.beta, live.eta, mu.unwrap_or(0.0));
             (
-                gradient(g.to_vec(), without_w),
+                g.to_vec(),
                 c + I::point(lambda) * live_row(model, live, j, mu),
             )
         })
         .collect();
-    prove_cofactors(&rows, &labels(&f.joints))
+    prove_reduced(model, live, f, mu, rows, false)
 }
 
-/// The Farkas certificate over every λ ≥ 0: five rows in (h, v, w, λ) (four sliding rows
-/// in (h, v, λ)) — the joints', and −λ ≤ 0 when `lambda_row` is given.
+/// The Farkas certificate over every λ ≥ 0: five rows in (h, v, w, λ) — the joints', and
+/// −λ ≤ 0 when `lambda_row` is given — or fewer where w or λ does not enter them.
 fn prove_farkas_any(
     model: &Model,
     live: &Live,
     f: &LoadFarkas,
     mu: Option<f64>,
 ) -> Result<f64, Rejection> {
-    let extra = usize::from(f.lambda_row.is_some());
-    // the joints and the λ row together: 5 rows, or 4 when all joints slide
-    let sliding = f.joints.iter().all(|j| !j.kind.is_hinge());
-    let total = f.joints.len() + extra;
-    let without_w = sliding && total == 4;
-    if total != 5 && !without_w {
-        return reject(format!(
-            "collapse side: a Farkas certificate over (h, v, w, lambda) needs exactly 5 rows (4 if all joints are sliding ones), found {total}"
-        ));
-    }
-    for (i, j) in f.joints.iter().enumerate() {
-        check_farkas_joint(model, i, j, mu, live.split())?;
-    }
     let mut rows: Vec<(Vec<I>, I)> = f
         .joints
         .iter()
         .map(|j| {
             let (g, c) = affine(model, j.kind, j.beta, live.eta, mu.unwrap_or(0.0));
-            let g = vec![g[0], g[1], g[2], live_row(model, live, j, mu)];
-            (gradient(g, without_w), c)
+            (vec![g[0], g[1], g[2], live_row(model, live, j, mu)], c)
         })
         .collect();
-    let mut stored = labels(&f.joints);
     if let Some(y) = f.lambda_row {
         if !y.is_finite() {
             return reject("collapse side: the multiplier of -lambda <= 0 is not a finite number");
         }
         let z = I::point(0.0);
-        rows.push((gradient(vec![z, z, z, I::point(-1.0)], without_w), z));
-        stored.push((y, "the row -lambda <= 0".to_string()));
+        rows.push((vec![z, z, z, I::point(-1.0)], z));
     }
-    prove_cofactors(&rows, &stored)
+    prove_reduced(model, live, f, mu, rows, true)
 }
 
 /// Proves that a transfer keeps every section admissible as λ grows (see [`Transfer`]):
