@@ -18,7 +18,8 @@
 
 use super::format::{ContactKind, LoadKind, LoadSpec, Side, Towards};
 use super::interval::Interval as I;
-use super::verify::{reject, Model, Ntm, Rejection};
+use super::verify::{reject, Rejection};
+use super::verify_statics::{Model, Ntm};
 
 /// The live load of a certificate with its thickness.
 #[derive(Debug, Clone, Copy)]

@@ -81,6 +81,8 @@
 
 pub mod certify;
 pub mod certify_load;
+mod certify_load_ends;
+mod certify_load_search;
 pub mod format;
 pub mod interval;
 mod live;
@@ -88,6 +90,7 @@ pub mod verify;
 mod verify_load;
 mod verify_load_search;
 mod verify_search;
+mod verify_statics;
 
 pub use certify::certify;
 pub use certify_load::certify_load;

@@ -19,11 +19,9 @@
 use super::format::{CertJoint, Certificate, Claim, ContactKind, LoadFarkas, LoadState, Transfer};
 use super::interval::Interval as I;
 use super::live::Live;
-use super::verify::{
-    affine, check_farkas_joint, kinds, phi, prove_cofactors, prove_pieces, reject, Model, Ntm,
-    Piece, Rejection, Report,
-};
+use super::verify::{check_farkas_joint, prove_cofactors, reject, Rejection, Report};
 use super::verify_search::{sections, side_text};
+use super::verify_statics::{affine, kinds, phi, prove_pieces, Model, Ntm, Piece};
 
 /// Verifies a certificate with a `load` section (`cert.load` must be present).
 pub(super) fn verify_load(cert: &Certificate, model: &Model) -> Result<Report, Rejection> {

@@ -23,8 +23,9 @@
 use super::format::{ContactKind, LoadLimitStateCert, LoadSearchEvidence, LoadSearchMethod, Side};
 use super::interval::Interval as I;
 use super::live::Live;
-use super::verify::{check_pattern, kinds, phi, reject, Model, Rejection, LIMIT_STATE_TOL};
+use super::verify::{check_pattern, reject, Rejection, LIMIT_STATE_TOL};
 use super::verify_search::{column, no_mechanism, sections, side_text, weight_work, StateAt};
+use super::verify_statics::{kinds, phi, Model};
 
 /// Samples per piece of a continuous arch for the floating-point admissibility check of a
 /// listed limit state.

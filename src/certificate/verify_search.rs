@@ -24,10 +24,8 @@ use super::format::{
 };
 use super::interval::Interval as I;
 use super::live::Live;
-use super::verify::{
-    check_limit_state, check_pattern, kinds, phi, prove_admissible, reject, Model, Ntm, Rejection,
-    LIMIT_STATE_TOL,
-};
+use super::verify::{check_limit_state, check_pattern, reject, Rejection, LIMIT_STATE_TOL};
+use super::verify_statics::{kinds, phi, prove_admissible, Model, Ntm};
 
 /// A contact not listed in a state's pattern must lie at least this far below zero,
 /// relative to (1 + ‖x‖₁), for the pattern to count as the state's whole active set.

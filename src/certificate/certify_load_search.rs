@@ -1,0 +1,247 @@
+//! The `load_search` section of a load certificate (see [`super::certify_load`]): the
+//! survey's limit states with their mechanisms, and the Farkas alternative of the kinematic
+//! LP with the live power for every state listed without a mechanism.
+
+use super::certify::farkas_cover;
+use super::certify_load::{joint, sorted, Loaded};
+use super::format::*;
+use crate::arch::{Arch, JointLayout};
+use crate::contact::{Contact, ContactKind};
+use crate::kinematics::{column, power};
+use crate::limit_states::sweep::{sweep_load, CheckedPoint};
+use crate::load::LiveLoad;
+use crate::lp;
+use crate::multiplier::{LoadLimitState, LoadSurvey, UNBOUNDED_SEARCH_TOP};
+use crate::settings::Settings;
+use crate::statics::Reactions;
+
+/// The evidence of the limit states of a survey (`static`: the state at λ_static and its
+/// active contacts, when finite).
+pub(super) fn evidence(
+    arch: &Arch,
+    eta: f64,
+    load: &LiveLoad,
+    sv: &LoadSurvey,
+    at_static: Option<(f64, Reactions, &[Loaded])>,
+    settings: &Settings,
+) -> Result<LoadSearchEvidence, NotCertified> {
+    let method = match sv.method {
+        "sweep" => LoadSearchMethod::Sweep,
+        "associative" => LoadSearchMethod::Associative,
+        _ => LoadSearchMethod::Refined,
+    };
+    let limit_states = sv
+        .limit_states
+        .iter()
+        .map(|s| limit_state_cert(load, s))
+        .collect::<Result<Vec<_>, _>>()?;
+    let static_state = match at_static {
+        Some((lambda, x, pattern)) if !sv.mechanism_at_static => Some(no_mechanism(
+            arch,
+            eta,
+            load,
+            (lambda, x, pattern.to_vec()),
+            settings,
+        )),
+        _ => None,
+    };
+    Ok(LoadSearchEvidence {
+        method,
+        events: sv.events,
+        lambda_min: sv.lambda_min.0,
+        mechanism_at_static: sv.mechanism_at_static,
+        unique: sv.unique(),
+        lambda: sv.lambda(),
+        limit_states,
+        static_state,
+        no_mechanism: checked(arch, eta, load, &sv.no_mechanism, settings),
+    })
+}
+
+/// Where λ_static is unbounded and no limit state exists (`NoCollapse`): at μ = ∞ the
+/// associative argument; at finite μ on a discrete arch the sweep again (the survey keeps
+/// no list there), its points without a mechanism as evidence.
+pub(super) fn unbounded_evidence(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    load: &LiveLoad,
+    (lambda_min, x_min): (f64, Reactions),
+    settings: &Settings,
+) -> Option<LoadSearchEvidence> {
+    let empty = |method, events, no_mechanism| LoadSearchEvidence {
+        method,
+        events,
+        lambda_min,
+        mechanism_at_static: false,
+        unique: false,
+        lambda: None,
+        limit_states: Vec::new(),
+        static_state: None,
+        no_mechanism,
+    };
+    if mu.is_infinite() {
+        return Some(empty(LoadSearchMethod::Associative, 0, Vec::new()));
+    }
+    if !matches!(arch.layout(), JointLayout::Discrete(_)) {
+        return None;
+    }
+    let sw = sweep_load(
+        arch,
+        eta,
+        mu,
+        load,
+        (lambda_min, x_min),
+        UNBOUNDED_SEARCH_TOP,
+        settings,
+    );
+    if sw.failure.is_some() || !sw.states.is_empty() {
+        return None;
+    }
+    Some(empty(
+        LoadSearchMethod::Sweep,
+        sw.events,
+        checked(arch, eta, load, &sw.no_mechanism, settings),
+    ))
+}
+
+/// The sweep's points without a mechanism, each with its proof.
+fn checked(
+    arch: &Arch,
+    eta: f64,
+    load: &LiveLoad,
+    points: &[CheckedPoint],
+    settings: &Settings,
+) -> Vec<LoadNoMechanism> {
+    points
+        .iter()
+        .map(|p| {
+            let pattern: Vec<Loaded> = p
+                .pattern
+                .iter()
+                .copied()
+                .zip(p.sides.iter().copied())
+                .collect();
+            no_mechanism(arch, eta, load, (p.eta, p.x, sorted(pattern)), settings)
+        })
+        .collect()
+}
+
+/// A limit state under the load in the certificate's order, its rates on its pattern.
+fn limit_state_cert(
+    load: &LiveLoad,
+    s: &LoadLimitState,
+) -> Result<LoadLimitStateCert, NotCertified> {
+    let pattern = sorted(
+        s.pattern
+            .iter()
+            .copied()
+            .zip(s.sides.iter().copied())
+            .collect(),
+    );
+    let rates = rates_on(&pattern, &s.mechanism.contacts, &s.mechanism.rates).ok_or_else(|| {
+        NotCertified(format!(
+            "the mechanism of the limit state at lambda = {} does not match its pattern",
+            s.lambda
+        ))
+    })?;
+    Ok(LoadLimitStateCert {
+        lambda: s.lambda,
+        x: s.x,
+        pattern: pattern.iter().map(|&l| joint(load, l)).collect(),
+        rates,
+        live_power: s.live_power,
+        continuum: s.continuum_to.map(|to| ContinuumEnd {
+            to: to.is_finite().then_some(to),
+        }),
+    })
+}
+
+/// The rates of a mechanism (on the kept contacts of one sliding sense per section, in
+/// the pattern's (β, side, kind) order but without sides) on the whole `pattern`: at each
+/// angle the kept contacts of the `before` side come first, one fewer than listed where a
+/// section has both sliding senses; a contact left out gets rate 0.
+fn rates_on(pattern: &[Loaded], kept: &[Contact], rates: &[f64]) -> Option<Vec<f64>> {
+    let mut out = vec![0.0; pattern.len()];
+    let mut next = 0;
+    let mut i = 0;
+    while i < pattern.len() {
+        // the section (β, side) from i
+        let (beta, side) = (pattern[i].0.beta, pattern[i].1);
+        let end = (i..pattern.len())
+            .find(|&k| pattern[k].0.beta != beta || pattern[k].1 != side)
+            .unwrap_or(pattern.len());
+        let has = |kind| (i..end).any(|k| pattern[k].0.kind == kind);
+        let n = end - i - usize::from(has(ContactKind::SlidePlus) && has(ContactKind::SlideMinus));
+        for _ in 0..n {
+            let c = kept.get(next)?;
+            let k =
+                (i..end).find(|&k| pattern[k].0.kind == c.kind && pattern[k].0.beta == c.beta)?;
+            out[k] = *rates.get(next)?;
+            next += 1;
+        }
+        i = end;
+    }
+    (next == kept.len()).then_some(out)
+}
+
+/// A state without a mechanism with positive live power, with the Farkas alternative of
+/// the kinematic LP for every one-sense choice: max z with c_j·y + z + u P_j + v q_j ≤ 0
+/// (P total, q live power), tried with the power rows combined as a P + b q (u = a w,
+/// v = b w) for a few ratios; z is halved to leave the verifier room for rounding.
+fn no_mechanism(
+    arch: &Arch,
+    eta: f64,
+    load: &LiveLoad,
+    (lambda, x, pattern): (f64, Reactions, Vec<Loaded>),
+    settings: &Settings,
+) -> LoadNoMechanism {
+    let keys: Vec<(f64, ContactKind, Side)> =
+        pattern.iter().map(|(c, s)| (c.beta, c.kind, *s)).collect();
+    let farkas = farkas_cover(&keys, |drop: Vec<usize>| {
+        let kept: Vec<Loaded> = (0..pattern.len())
+            .filter(|i| !drop.contains(i))
+            .map(|i| pattern[i])
+            .collect();
+        let plain: Vec<Contact> = kept.iter().map(|p| p.0).collect();
+        let cols: Vec<[f64; 3]> = plain.iter().map(|c| column(c.kind, c.beta, eta)).collect();
+        let dead = power(arch, eta, &plain);
+        let live = load.power(arch, eta, &kept);
+        let total: Vec<f64> = dead
+            .iter()
+            .zip(&live)
+            .map(|(d, l)| d + lambda * l)
+            .collect();
+        [
+            (1.0, 0.0),
+            (0.0, 1.0),
+            (1.0, 1.0),
+            (1.0, 0.1),
+            (0.1, 1.0),
+            (1.0, 0.01),
+            (0.01, 1.0),
+        ]
+        .iter()
+        .find_map(|&(a, b)| {
+            let p: Vec<f64> = total
+                .iter()
+                .zip(&live)
+                .map(|(t, l)| a * t + b * l)
+                .collect();
+            let (y, z, u) = lp::kinematic_farkas(&cols, &p, settings).ok()?;
+            (z > 0.0).then_some(KinematicFarkas {
+                drop: drop.clone(),
+                y,
+                z: 0.5 * z,
+                u: (a * u).max(0.0),
+                v: (b * u).max(0.0),
+            })
+        })
+    });
+    LoadNoMechanism {
+        lambda,
+        x,
+        pattern: pattern.iter().map(|&l| joint(load, l)).collect(),
+        farkas,
+    }
+}
