@@ -116,9 +116,9 @@ enum Command {
         after_long_help = concat!("Example:\n  arch-enum modes --alpha 1.0\n  arch-enum modes --alpha-deg 30 --json\n  arch-enum modes --alpha 0 --blocks 20\n\n", mode_names!())
     )]
     Modes(modes::ModesArgs),
-    /// A certificate for eta*(mu): an admissible state at eta_hi (upper bound), a Farkas certificate at eta_lo (lower bound), the limit state.
+    /// A certificate for eta*(mu): an admissible state at eta_hi (upper bound), a Farkas certificate at eta_lo (lower bound), the limit state; with --eta and a live load, for lambda_static and the limit states under the load.
     #[command(
-        after_help = "Example:\n  arch-enum certify --alpha 0 --mu 0.35 --out cert.json\n  arch-enum verify cert.json"
+        after_help = "Example:\n  arch-enum certify --alpha 0 --mu 0.35 --out cert.json\n  arch-enum verify cert.json\n  arch-enum certify --alpha 0 --blocks 20 --eta 0.3 --mu 0.8 --horizontal --out load.json"
     )]
     Certify(certify::CertifyArgs),
     /// Re-checks a certificate independently (no LP, no solver); exit 0 only if it holds.
