@@ -495,8 +495,9 @@ impl Certificate {
     }
 
     /// Whether the certificate delivers a requested relative gap: a least-thickness claim
-    /// when (η_hi − η_lo)/η_hi ≤ `requested` as computed in floating point; a
-    /// no-equilibrium claim always (it has no gap).
+    /// when (η_hi − η_lo)/η_hi ≤ `requested` as computed in floating point, a
+    /// largest-multiplier claim when λ_hi − λ_lo ≤ `requested` λ_hi; a no-equilibrium or
+    /// unbounded-multiplier claim always (it has no gap).
     pub fn delivers_gap(&self, requested: f64) -> bool {
         match self.claim {
             Claim::NoEquilibrium | Claim::UnboundedMultiplier => true,
