@@ -1,4 +1,4 @@
-//! The two ends of the load question for a certificate (see [`super::certify_load`]): no
+//! The two ends of the load question for a certificate (see [`mod@super::certify_load`]): no
 //! admissible multiplier at all (`no_equilibrium`, a Farkas certificate in (h, v, w, λ)),
 //! or no largest one (`unbounded_multiplier`, a state and a transfer or recession direction).
 

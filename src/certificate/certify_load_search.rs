@@ -1,4 +1,4 @@
-//! The `load_search` section of a load certificate (see [`super::certify_load`]): the
+//! The `load_search` section of a load certificate (see [`mod@super::certify_load`]): the
 //! survey's limit states with their mechanisms, and the Farkas alternative of the kinematic
 //! LP with the live power for every state listed without a mechanism.
 
