@@ -824,3 +824,44 @@ fn random_continuous_arches_certify_and_verify() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+
+/// Hard case (found by `verify`): a point load at a joint of an arch that stands unloaded.
+/// At λ = 0 the rows of both sides of the loaded section are one plane, so the sweep's walk
+/// over P(0) meets vertices on either; for λ > 0 one side is violated along the path, and
+/// the vertex on it used to run outside P(λ): the sweep then checked inadmissible points.
+/// Every point it checks must be an admissible state.
+#[test]
+fn sweep_from_lambda_zero_checks_only_admissible_states() {
+    let joints = [
+        0.12166998194405476,
+        0.7810265694235115,
+        1.780229063881067,
+        3.128173708311097,
+    ];
+    let arch = Arch::new(joints[0], joints[3], WeightModel::Centreline)
+        .unwrap()
+        .with_joints(&joints)
+        .unwrap();
+    let load = LiveLoad::Point { beta: joints[1] };
+    let (eta, mu) = (0.251763577369992, 1.15876492035495);
+    let s = match survey(&arch, eta, mu, &load, &Settings::default()).unwrap() {
+        Ok(LoadOutcome::Limits(s)) => s,
+        other => panic!("{other:?}"),
+    };
+    assert!(!s.no_mechanism.is_empty());
+    for p in &s.no_mechanism {
+        let scale = 1.0 + p.x.iter().map(|v| v.abs()).sum::<f64>();
+        for r in arch_enum::load::rows(&arch, &joints, eta, mu, &load) {
+            let v = r.at(&p.x, p.eta);
+            assert!(
+                v <= 1e-9 * scale,
+                "lambda {}: {:?} at {} ({:?}) = {v:e}",
+                p.eta,
+                r.contact.kind,
+                r.contact.beta,
+                r.side
+            );
+        }
+    }
+    holds(&cert(&arch, eta, mu, &load, 1e-12));
+}
