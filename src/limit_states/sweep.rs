@@ -262,6 +262,9 @@ struct Sweeper<'a> {
     alive: Vec<(Vertex, Option<(f64, usize)>)>,
     states: Vec<SweptState>,
     no_mechanism: Vec<CheckedPoint>,
+    /// The first kinematic LP that the back end could not decide: the sweep then decides
+    /// nothing (an undecided point is neither a limit state nor "no mechanism").
+    lp_failure: Option<String>,
 }
 
 impl Sweeper<'_> {
@@ -565,10 +568,15 @@ impl Sweeper<'_> {
                     mu: self.mu,
                     x,
                 };
-                mechanism::find(&st, &contacts, self.settings)
-                    .ok()
-                    .flatten()
-                    .map(|m| (m, 0.0))
+                match mechanism::find(&st, &contacts, self.settings) {
+                    Ok(m) => m.map(|m| (m, 0.0)),
+                    Err(e) => {
+                        self.lp_failure.get_or_insert(format!(
+                            "the kinematic LP at eta = {t} was not decided by the LP back end: {e:?}"
+                        ));
+                        return;
+                    }
+                }
             }
             Param::Multiplier { eta, load } => {
                 let st = State {
@@ -577,9 +585,15 @@ impl Sweeper<'_> {
                     mu: self.mu,
                     x,
                 };
-                mechanism::find_under_load(&st, t, load, &pattern, self.settings)
-                    .ok()
-                    .flatten()
+                match mechanism::find_under_load(&st, t, load, &pattern, self.settings) {
+                    Ok(m) => m,
+                    Err(e) => {
+                        self.lp_failure.get_or_insert(format!(
+                            "the kinematic LP at lambda = {t} was not decided by the LP back end: {e:?}"
+                        ));
+                        return;
+                    }
+                }
             }
         };
         if let Some((mech, live_power)) = found {
@@ -598,8 +612,6 @@ impl Sweeper<'_> {
                 live_power,
             });
         } else {
-            // no mechanism (or an LP failure: a certificate then cannot prove this point,
-            // and says so)
             self.no_mechanism.push(CheckedPoint {
                 eta: t,
                 x,
@@ -809,6 +821,7 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
         alive: Vec::new(),
         states: Vec::new(),
         no_mechanism: Vec::new(),
+        lp_failure: None,
     };
     // the start: the least admissible state, or, where that state is unbounded (η_s an
     // infimum, approached only as the reactions grow without bound), the least point of
@@ -958,7 +971,7 @@ fn run(mut sw: Sweeper) -> Sweep {
         states: sw.states,
         events,
         no_mechanism: sw.no_mechanism,
-        failure: None,
+        failure: sw.lp_failure,
     }
 }
 
@@ -1009,6 +1022,7 @@ pub fn sweep_load(
         alive: Vec::new(),
         states: Vec::new(),
         no_mechanism: Vec::new(),
+        lp_failure: None,
     };
     // λ_min > 0: P(λ_min) is (generically) the point x_min, and the vertices just after
     // it come from the linearisation there; λ_min = 0: P(0) is the admissible set of the
