@@ -2,11 +2,13 @@
 
 use super::arch_args::ArchArgs;
 use super::{to_json, Exit, Io};
+use crate::figures::survey_scene;
 use crate::limit::Outcome;
 use crate::limit_states::survey;
-use crate::render::{json, table};
+use crate::render::{compas, json, table};
 use crate::settings::Settings;
 use clap::Args;
+use std::path::PathBuf;
 
 #[derive(Args, Debug)]
 pub(crate) struct SolveArgs {
@@ -21,12 +23,24 @@ pub(crate) struct SolveArgs {
     /// Print one JSON document instead of tables.
     #[arg(long)]
     pub(crate) json: bool,
+    /// Also write the limit state as a COMPAS JSON file (compas 2, `compas.json_load`):
+    /// the outline and the line of thrust as Polylines, hinges and sliding joints as
+    /// Points, in the XZ plane with z up.
+    #[arg(long, value_name = "FILE")]
+    compas: Option<PathBuf>,
+    /// Mean radius the COMPAS drawing is scaled by (default 1: lengths in units of r).
+    #[arg(
+        long,
+        requires = "compas",
+        allow_hyphen_values = true,
+        default_value_t = 1.0
+    )]
+    radius: f64,
 }
 
 pub(crate) fn run(a: SolveArgs, settings: &Settings, io: &mut Io) -> Exit {
-    let survey = match a
-        .arch
-        .build()
+    let survey = match compas::check_radius(a.radius)
+        .and_then(|_| a.arch.build())
         .and_then(|arch| survey(&arch, a.mu, settings))
     {
         Ok(s) => s,
@@ -37,6 +51,20 @@ pub(crate) fn run(a: SolveArgs, settings: &Settings, io: &mut Io) -> Exit {
         io.out(&to_json(&json::solve(&survey, a.explain)));
     } else {
         io.out(&table::solve(&survey, a.explain));
+    }
+    if let Some(path) = &a.compas {
+        match survey_scene(&survey) {
+            Ok(scene) => {
+                let doc = compas::document(&scene, a.radius);
+                if let Err(e) = std::fs::write(path, to_json(&doc)) {
+                    return io.bad(format!("cannot write --compas {}: {e}", path.display()));
+                }
+            }
+            Err(why) => {
+                io.err(&format!("no COMPAS file written: {why}\n"));
+                return Exit::NoAnswer;
+            }
+        }
     }
     // decided: η_s exact and every limit state above it searched (an arch that stands at
     // every η > 0 has no least thickness: exit 1 with status no_collapse, as `modes` says)

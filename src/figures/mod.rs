@@ -6,15 +6,16 @@
 //! Lengths are divided by r and angles are in radians, as everywhere in the crate.
 
 pub mod margin_map;
+pub mod polylines;
 pub mod thrust_line;
 
 use crate::arch::{Arch, Radians};
 use crate::collapse_mode::CollapseMode;
 use crate::contact::Contact;
 use crate::kinematics::block_motions;
-use crate::limit::{solve, Outcome};
+use crate::limit::{solve, LimitState, Outcome};
 use crate::limit_curve::{trace, LimitCurve};
-use crate::limit_states::{search, survey};
+use crate::limit_states::{search, survey, Survey};
 use crate::load::LiveLoad;
 use crate::mechanism::Mechanism;
 use crate::settings::Settings;
@@ -237,7 +238,7 @@ pub fn scene(
         | Outcome::Unresolved { reason, .. }
         | Outcome::NoCollapse { reason } => return Err(NoFigure(reason)),
     };
-    let (eta, x, pattern, limit) = match eta {
+    let (eta, x, pattern) = match eta {
         Some(e) if e < ls.eta * (1.0 - AT_LIMIT) => {
             return Err(NoFigure(format!(
             "no admissible state at eta = {e}: the least thickness at this friction is eta* = {}",
@@ -246,18 +247,55 @@ pub fn scene(
         }
         Some(e) if e > ls.eta * (1.0 + AT_LIMIT) => {
             let (x, pattern) = safe_state(arch, e, mu, settings)?;
-            (e, x, pattern, None)
+            (e, x, pattern)
         }
-        _ => (ls.eta, ls.x, ls.pattern.clone(), Some(ls)),
+        _ => return Ok(limit_scene(arch, mu, &ls)),
     };
-    Ok(build_scene(
+    Ok(build_scene(arch, mu, (eta, x), pattern, None, None))
+}
+
+/// The least limit state of a survey, as `solve` reports it at the top level: the state at
+/// η_s when it carries a mechanism (or when the search above it could not be completed),
+/// else the least limit state above η_s.
+pub fn survey_scene(survey: &Survey) -> Result<ArchScene, NoFigure> {
+    let sol = &survey.solution;
+    let (arch, mu) = (&sol.arch, sol.mu);
+    if let Ok(found) = &survey.states {
+        if !found.mechanism_at_eta_s {
+            let st = found.above.first().ok_or_else(|| {
+                NoFigure(format!(
+                    "no limit state with eta in [eta_s, 2) at mu = {mu}: the arch is safe from eta_s = {} on",
+                    found.eta_s
+                ))
+            })?;
+            return Ok(build_scene(
+                arch,
+                mu,
+                (st.eta, st.x),
+                st.pattern.clone(),
+                Some((st.mode, st.mechanism.clone())),
+                None,
+            ));
+        }
+    }
+    match &sol.outcome {
+        Outcome::Limit(ls) => Ok(limit_scene(arch, mu, ls)),
+        Outcome::NoEquilibrium { reason, .. }
+        | Outcome::Unresolved { reason, .. }
+        | Outcome::NoCollapse { reason } => Err(NoFigure(reason.clone())),
+    }
+}
+
+/// The scene of a limit state `ls` found at friction `mu` (what [`scene`] draws at η*).
+pub fn limit_scene(arch: &Arch, mu: f64, ls: &LimitState) -> ArchScene {
+    build_scene(
         arch,
         mu,
-        (eta, x),
-        pattern,
-        limit.map(|l| (l.mode, l.mechanism)),
+        (ls.eta, ls.x),
+        ls.pattern.clone(),
+        Some((ls.mode, ls.mechanism.clone())),
         None,
-    ))
+    )
 }
 
 /// The scene of a state (η, x) with its contacts, and the mode and mechanism when it is

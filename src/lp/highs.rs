@@ -1,5 +1,8 @@
-//! The HiGHS back end (through good_lp): the reference path of both LPs, and the only
-//! file of the crate that imports good_lp.
+//! The good_lp back end: the reference path of both LPs, and the only file of the crate
+//! that imports good_lp. The solver is chosen here by cargo feature: HiGHS (`highs`, the
+//! default and the reference), else microlp (`microlp`, pure Rust: no C++ compiler, cmake
+//! or libclang; the Python wheel's build). With microlp the tolerance `tol` is not passed
+//! on: microlp has fixed internal tolerances.
 //!
 //! Two small LPs are solved here:
 //! * the static margin LP in x = (h, v, w): maximise the margin s of a finite set of
@@ -10,18 +13,36 @@
 
 use super::LpOutcome;
 use crate::statics::{Affine, Reactions};
-use good_lp::{highs, variable, Expression, ProblemVariables, Solution, SolverModel};
+use good_lp::{variable, Expression, ProblemVariables, Solution, SolverModel};
 
-fn configure(
-    problem: good_lp::solvers::highs::HighsProblem,
-    tol: f64,
-) -> good_lp::solvers::highs::HighsProblem {
+#[cfg(not(any(feature = "highs", feature = "microlp")))]
+compile_error!("arch-enum needs an LP back end: enable the feature `highs` (default) or `microlp`");
+
+#[cfg(feature = "highs")]
+use good_lp::{highs as lp_solver, solvers::highs::HighsProblem as Problem};
+#[cfg(all(feature = "microlp", not(feature = "highs")))]
+use good_lp::{microlp as lp_solver, solvers::microlp::MicroLpProblem as Problem};
+
+/// The LP solver of this build (`"HiGHS"` or `"microlp"`).
+#[cfg(feature = "highs")]
+pub const SOLVER: &str = "HiGHS";
+/// The LP solver of this build (`"HiGHS"` or `"microlp"`).
+#[cfg(all(feature = "microlp", not(feature = "highs")))]
+pub const SOLVER: &str = "microlp";
+
+#[cfg(feature = "highs")]
+fn configure(problem: Problem, tol: f64) -> Problem {
     problem
         .set_option("primal_feasibility_tolerance", tol)
         .set_option("dual_feasibility_tolerance", tol)
         .set_option("output_flag", false)
         .set_option("presolve", "off")
         .set_threads(1)
+}
+
+#[cfg(all(feature = "microlp", not(feature = "highs")))]
+fn configure(problem: Problem, _tol: f64) -> Problem {
+    problem
 }
 
 /// Half-width of the box on (h, v, w) in the margin LP (units of γ t d r).
@@ -55,7 +76,7 @@ fn margin_lp(
     let v = vars.add(bound(variable()));
     let w = vars.add(bound(variable()));
     let s = vars.add(variable().max(s_cap));
-    let mut problem = configure(vars.maximise(s).using(highs), tol);
+    let mut problem = configure(vars.maximise(s).using(lp_solver), tol);
     for row in rows {
         let norm = row.grad_norm();
         let scale = if norm > 0.0 { 1.0 / norm } else { 1.0 };
@@ -90,7 +111,7 @@ pub fn kinematic(
     for (&l, &c) in lambda.iter().zip(objective) {
         obj.add_mul(c, l);
     }
-    let mut problem = configure(vars.maximise(obj).using(highs), tol);
+    let mut problem = configure(vars.maximise(obj).using(lp_solver), tol);
     for i in 0..3 {
         let mut e = Expression::with_capacity(lambda.len());
         for (&l, col) in lambda.iter().zip(columns) {
@@ -129,7 +150,7 @@ pub fn kinematic_farkas(
         .collect();
     let z = vars.add(variable().min(0.0).max(1.0));
     let u = vars.add(variable().min(0.0).max(BOUND));
-    let mut problem = configure(vars.maximise(z).using(highs), tol);
+    let mut problem = configure(vars.maximise(z).using(lp_solver), tol);
     for (col, &p) in columns.iter().zip(power) {
         let mut e = Expression::with_capacity(5);
         for k in 0..3 {
@@ -193,7 +214,7 @@ fn multiplier_lp(
     } else {
         vars.minimise(z[3])
     };
-    let mut problem = configure(objective.using(highs), tol);
+    let mut problem = configure(objective.using(lp_solver), tol);
     for (i, (a, c)) in rows.iter().chain(equal).enumerate() {
         let norm = a.iter().map(|v| v * v).sum::<f64>().sqrt();
         let scale = if norm > 0.0 { 1.0 / norm } else { 1.0 };

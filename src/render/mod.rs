@@ -1,6 +1,7 @@
 //! Output formatting: pure functions from results to text. No numerics here: the figures
 //! draw the data that [`crate::figures`] computed and call no solver.
 
+pub mod compas;
 pub mod json;
 pub mod load;
 #[cfg(feature = "svg")]

@@ -1,0 +1,230 @@
+"""arch_enum: exact limit analysis of circular masonry arches with limited friction.
+
+The Python face of the Rust library ``arch-enum`` (the same code as the command line
+``arch-enum``; no numerics in Python). Each function answers the question of one
+command and returns a frozen dataclass:
+
+>>> import arch_enum as ae
+>>> r = ae.solve(ae.Arch(alpha=0), mu=0.35)
+>>> print(f"{r.eta:.11f} {r.mode}")
+0.15291973385 mixed_sliding_rotational
+
+Lengths are divided by the mean radius r (eta = t/r), angles are radians
+counter-clockwise from the horizontal through the centre (a symmetric arch of opening
+alpha has beta_right = -alpha, beta_left = pi + alpha). ``math.inf`` is mu = infinity
+(no sliding). Bad input raises ``ValueError`` naming the argument and its valid range;
+"no equilibrium", "unresolved" and the like are a ``status`` in the result.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+from typing import Any, Optional, Union
+
+import numpy as np
+
+from . import _native
+from ._results import (
+    Arch,
+    AssessResult,
+    Branch,
+    CertifyResult,
+    Checks,
+    Contact,
+    Corner,
+    CurveResult,
+    LimitState,
+    Lines,
+    LiveLoad,
+    LoadLimitState,
+    LoadResult,
+    Mechanism,
+    ModesResult,
+    Reactions,
+    SafestState,
+    Search,
+    SolveResult,
+    ThicknessLimit,
+    VerifyResult,
+)
+
+__version__: str = _native.__version__
+#: The LP solver this build of the library uses (``"microlp"`` in the wheel: pure Rust).
+LP_SOLVER: str = _native.LP_SOLVER
+
+__all__ = [
+    "Arch",
+    "AssessResult",
+    "Branch",
+    "CertifyResult",
+    "Checks",
+    "Contact",
+    "Corner",
+    "CurveResult",
+    "LP_SOLVER",
+    "LimitState",
+    "Lines",
+    "LiveLoad",
+    "LoadLimitState",
+    "LoadResult",
+    "Mechanism",
+    "ModesResult",
+    "Reactions",
+    "SafestState",
+    "Search",
+    "SolveResult",
+    "ThicknessLimit",
+    "VerifyResult",
+    "assess",
+    "certify",
+    "curve",
+    "load",
+    "modes",
+    "solve",
+    "verify",
+]
+
+
+def _arch(arch: Any) -> Arch:
+    if not isinstance(arch, Arch):
+        raise TypeError(f"arch must be an arch_enum.Arch, got {type(arch).__name__}")
+    return arch
+
+
+def _scalar(name: str, v: Any) -> float:
+    """A real number (``math.inf`` allowed; the library checks the range)."""
+    if isinstance(v, (bool, np.bool_)):
+        raise TypeError(f"{name} must be a number, got {v!r}")
+    try:
+        return float(v)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must be a number, got {v!r}") from None
+
+
+def solve(arch: Arch, mu: float) -> SolveResult:
+    """The least thickness eta*(mu) of ``arch`` at friction ``mu`` (> 0, or
+    ``math.inf``), its collapse mode, pattern, reactions and mechanism, and every limit
+    state with eta in [eta_s, 2) (``arch-enum solve``)."""
+    a = _arch(arch)
+    return SolveResult._of(a, _native.solve(a._spec(), _scalar("mu", mu)))
+
+
+def curve(arch: Arch, mu: Any, *, threads: Optional[int] = None) -> CurveResult:
+    """eta*(mu) at every friction coefficient of ``mu`` (a number or a 1-D array; each
+    > 0 or ``math.inf``), in the order given (``arch-enum curve``). The solves run in
+    parallel on ``threads`` threads (default: every core) with the GIL released."""
+    a = _arch(arch)
+    if isinstance(mu, (bool, np.bool_)):
+        raise TypeError(f"mu must be numbers, got {mu!r}")
+    try:
+        mus = np.asarray(mu, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError(f"mu must be a number or an array of numbers, got {mu!r}") from None
+    if mus.ndim > 1:
+        raise ValueError(
+            f"invalid value for mu: an array of shape {mus.shape} (valid: a number or a 1-D array)"
+        )
+    if threads is not None:
+        import operator
+
+        threads = operator.index(threads)
+        if threads < 1:
+            raise ValueError(
+                f"invalid value for threads: {threads} (valid range: 1 or more, or None for every core)"
+            )
+    d = _native.curve(a._spec(), [float(m) for m in mus.ravel()], threads)
+    return CurveResult._of(a, d)
+
+
+def modes(arch: Arch) -> ModesResult:
+    """The whole eta-mu limit curve of ``arch``: branches with their collapse modes,
+    exact corners and the limit states above the boundary (``arch-enum modes``)."""
+    a = _arch(arch)
+    return ModesResult._of(a, _native.modes(a._spec()))
+
+
+def assess(arch: Arch, eta: float, mu: float) -> AssessResult:
+    """A given thickness ratio ``eta`` (0 < eta < 2) at friction ``mu``: does it stand,
+    with what geometric and friction factors of safety, and the safest state
+    (``arch-enum assess``)."""
+    a = _arch(arch)
+    return AssessResult._of(a, _native.assess(a._spec(), _scalar("eta", eta), _scalar("mu", mu)))
+
+
+def load(
+    arch: Arch,
+    eta: float,
+    mu: float,
+    *,
+    horizontal: Optional[str] = None,
+    point_load: Optional[float] = None,
+    point_load_deg: Optional[float] = None,
+    point_load_joint: Optional[int] = None,
+) -> LoadResult:
+    """The collapse multiplier of a live load at (``eta``, ``mu``) with every limit
+    state (``arch-enum load``). Give exactly one load: ``horizontal="right"`` or
+    ``"left"`` (a body force lambda x self-weight: an acceleration lambda g), or a
+    vertical point load lambda (units of gamma t d r) at the extrados point of angle
+    ``point_load`` (radians) or ``point_load_deg`` (degrees; within 1e-9 rad of a joint
+    it is that joint), or at joint ``point_load_joint`` of a discrete arch."""
+    a = _arch(arch)
+    given = [k for k, v in (("horizontal", horizontal), ("point_load", point_load),
+                            ("point_load_deg", point_load_deg),
+                            ("point_load_joint", point_load_joint)) if v is not None]
+    if len(given) != 1:
+        raise ValueError(
+            "invalid horizontal/point_load/point_load_deg/point_load_joint: give exactly one "
+            f"live load (got {', '.join(given) if given else 'none'})"
+        )
+    kind, towards_right, beta, joint, arg = "point", True, None, None, "point_load"
+    if horizontal is not None:
+        if horizontal not in ("right", "left"):
+            raise ValueError(
+                f"invalid value for horizontal: {horizontal!r} (valid values: \"right\", \"left\")"
+            )
+        kind, towards_right = "horizontal", horizontal == "right"
+    elif point_load is not None:
+        beta = _scalar("point_load", point_load)
+    elif point_load_deg is not None:
+        beta, arg = math.radians(_scalar("point_load_deg", point_load_deg)), "point_load_deg"
+    else:
+        import operator
+
+        joint = operator.index(point_load_joint)  # type: ignore[arg-type]
+    call = (a._spec(), _scalar("eta", eta), _scalar("mu", mu), kind, towards_right, beta, joint,
+            arg)
+    return LoadResult._of(a, _native.load(*call), call)
+
+
+def certify(arch: Arch, mu: float, gap: float = 1e-12) -> CertifyResult:
+    """A certificate for eta*(mu): an admissible state at eta_hi, a Farkas certificate at
+    eta_lo with (eta_hi - eta_lo)/eta_hi <= ``gap`` (1e-15 to 1e-4), and the limit
+    states (``arch-enum certify``). Check it with :func:`verify`."""
+    a = _arch(arch)
+    m = _scalar("mu", mu)
+    return CertifyResult._of(_native.certify(a._spec(), m, _scalar("gap", gap)), m)
+
+
+def verify(certificate: Union[CertifyResult, dict, str, "os.PathLike[str]"]) -> VerifyResult:
+    """Re-checks a certificate independently (no LP, no solver; interval arithmetic)
+    (``arch-enum verify``). ``certificate`` is a :class:`CertifyResult`, the certificate
+    document (a dict), its JSON text, or the path of a certificate file."""
+    if isinstance(certificate, CertifyResult):
+        text = certificate.to_json()
+    elif isinstance(certificate, dict):
+        text = json.dumps(certificate)
+    elif isinstance(certificate, os.PathLike) or (
+        isinstance(certificate, str) and not certificate.lstrip().startswith("{")
+    ):
+        with open(certificate, encoding="utf-8") as f:
+            text = f.read()
+    elif isinstance(certificate, str):
+        text = certificate
+    else:
+        raise TypeError(
+            "certificate must be a CertifyResult, a dict, JSON text or a path, got "
+            f"{type(certificate).__name__}"
+        )
+    return VerifyResult._of(_native.verify(text))

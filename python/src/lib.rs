@@ -1,0 +1,564 @@
+//! `arch_enum._native`: the Rust library behind the Python package `arch_enum`.
+//!
+//! A thin layer, no numerics: every function builds the arch from the Python arguments,
+//! calls one library function with the GIL released, and returns the command line's JSON
+//! document for that question (`render::json`, `render::load`) as Python dicts and lists,
+//! plus the bulk data of the figures (lines of thrust and friction) and, on request, the
+//! library's own SVG figures and COMPAS documents. Bad input raises `ValueError` with the
+//! library's message, the argument named as in Python (`beta_right`, not `--beta-right`).
+//! The Python side (`arch_enum/*.py`) turns the dicts into frozen dataclasses.
+
+use arch_enum::arch::{check_eta, check_mu, fmt_value, InputError, JointLayout};
+use arch_enum::certificate::{certify as certify_eta, verify as verify_cert, Certificate};
+use arch_enum::figures::{self, ArchScene};
+use arch_enum::friction::least_friction;
+use arch_enum::limit::solve as solve_eta;
+use arch_enum::limit_curve::{trace, CurvePoint};
+use arch_enum::limit_states::survey;
+use arch_enum::load::LiveLoad;
+use arch_enum::multiplier::{check_load, survey as load_survey};
+use arch_enum::render::json::JSON_VERSION;
+use arch_enum::render::load::{json as load_json, LoadQuestion};
+use arch_enum::render::{compas, json, plot_arch, plot_curve};
+use arch_enum::{Arch, Settings, WeightModel};
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+use serde_json::Value;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
+
+/// The arch as Python describes it: (alpha, beta_right, beta_left, blocks, joints, weight).
+type ArchIn = (
+    Option<f64>,
+    Option<f64>,
+    Option<f64>,
+    Option<i64>,
+    Option<Vec<f64>>,
+    String,
+);
+
+/// The Python name of a command-line argument: `--beta-right/--beta-left` →
+/// `beta_right/beta_left`.
+fn py_name(arg: &str) -> String {
+    arg.split('/')
+        .map(|a| a.trim_start_matches("--").replace('-', "_"))
+        .collect::<Vec<_>>()
+        .join("/")
+}
+
+/// `ValueError` with the library's message, the argument named as in Python (`rename`
+/// may name it differently still, e.g. `mu[3]` for one element of an array).
+fn value_error_as(e: InputError, rename: Option<&str>) -> PyErr {
+    let message = match e {
+        InputError::OutOfRange { arg, value, range } => format!(
+            "invalid value for {}: {value} (valid range: {range})",
+            rename.map_or_else(|| py_name(arg), str::to_string)
+        ),
+        InputError::Inconsistent { arg, reason } => format!(
+            "invalid {}: {reason}",
+            rename.map_or_else(|| py_name(arg), str::to_string)
+        ),
+    };
+    PyValueError::new_err(message)
+}
+
+fn value_error(e: InputError) -> PyErr {
+    value_error_as(e, None)
+}
+
+fn inconsistent(arg: &'static str, reason: &str) -> PyErr {
+    value_error(InputError::Inconsistent {
+        arg,
+        reason: reason.into(),
+    })
+}
+
+/// Builds and validates the arch (as `ArchArgs::build` does for the command line).
+fn build_arch(a: &ArchIn) -> PyResult<Arch> {
+    let (alpha, beta_right, beta_left, blocks, joints, weight) = a;
+    let weight = match weight.as_str() {
+        "centreline" => WeightModel::Centreline,
+        "centroid" => WeightModel::Centroid,
+        other => {
+            return Err(PyValueError::new_err(format!(
+                "invalid value for weight: {other:?} (valid values: \"centreline\", \"centroid\")"
+            )))
+        }
+    };
+    let arch = match (alpha, beta_right, beta_left) {
+        (Some(a), None, None) => Arch::symmetric(*a, weight),
+        (None, Some(r), Some(l)) => Arch::new(*r, *l, weight),
+        (Some(_), _, _) => {
+            return Err(inconsistent(
+                "alpha/beta_right/beta_left",
+                "give alpha (a symmetric arch) or beta_right and beta_left, not both",
+            ))
+        }
+        (None, None, None) => {
+            return Err(inconsistent(
+                "alpha/beta_right/beta_left",
+                "describe the arch with alpha=A (radians), or beta_right=B1 and beta_left=B2",
+            ))
+        }
+        _ => {
+            return Err(inconsistent(
+                "beta_right/beta_left",
+                "an unsymmetric arch needs both springings, beta_right and beta_left",
+            ))
+        }
+    }
+    .map_err(value_error)?;
+    match (blocks, joints) {
+        (Some(_), Some(_)) => Err(inconsistent(
+            "blocks/joints",
+            "give blocks or joints, not both",
+        )),
+        (Some(n), None) => {
+            // a negative count is out of the same range as 0
+            let n = usize::try_from(*n).map_err(|_| {
+                value_error(InputError::OutOfRange {
+                    arg: "blocks",
+                    value: n.to_string(),
+                    range: "whole numbers 1 to 100000".into(),
+                })
+            })?;
+            arch.with_blocks(n).map_err(value_error)
+        }
+        (None, Some(j)) => arch.with_joints(j).map_err(value_error),
+        (None, None) => Ok(arch),
+    }
+}
+
+/// A JSON value as a Python object (`null` → `None`).
+fn to_py<'py>(py: Python<'py>, v: &Value) -> PyResult<Bound<'py, PyAny>> {
+    Ok(match v {
+        Value::Null => py.None().into_bound(py),
+        Value::Bool(b) => b.into_pyobject(py)?.to_owned().into_any(),
+        Value::Number(n) => match (n.as_i64(), n.as_f64()) {
+            (Some(i), _) if !n.is_f64() => i.into_pyobject(py)?.into_any(),
+            (_, Some(f)) => f.into_pyobject(py)?.into_any(),
+            _ => return Err(PyRuntimeError::new_err(format!("number out of range: {n}"))),
+        },
+        Value::String(s) => s.into_pyobject(py)?.into_any(),
+        Value::Array(a) => {
+            let items = a
+                .iter()
+                .map(|x| to_py(py, x))
+                .collect::<PyResult<Vec<_>>>()?;
+            PyList::new(py, items)?.into_any()
+        }
+        Value::Object(o) => {
+            let d = PyDict::new(py);
+            for (k, x) in o {
+                d.set_item(k, to_py(py, x)?)?;
+            }
+            d.into_any()
+        }
+    })
+}
+
+fn figure_error(e: impl std::fmt::Display) -> PyErr {
+    PyRuntimeError::new_err(format!("no figure: {e}"))
+}
+
+/// The lines of a scene as plain numbers: the samples (β, N, e_M, e_T) and the lines of
+/// thrust and friction as (x, y) points in units of r.
+fn lines_json(scene: &ArchScene) -> Value {
+    let col = |f: fn(&figures::thrust_line::Eccentricity) -> f64| -> Vec<f64> {
+        scene.lines.iter().map(f).collect()
+    };
+    let pts =
+        |p: Vec<(f64, f64)>| -> Vec<[f64; 2]> { p.into_iter().map(|(x, y)| [x, y]).collect() };
+    serde_json::json!({
+        "beta": col(|e| e.beta),
+        "n": col(|e| e.n),
+        "e_m": col(|e| e.e_m),
+        "e_t": col(|e| e.e_t),
+        "eta": scene.eta,
+        "thrust_line": pts(scene.thrust_line()),
+        "friction_line": pts(scene.friction_line()),
+        "outline": pts(scene.outline()),
+    })
+}
+
+/// Validates and describes the arch: the `arch` object of every JSON document.
+#[pyfunction]
+fn arch<'py>(py: Python<'py>, spec: ArchIn) -> PyResult<Bound<'py, PyAny>> {
+    let arch = build_arch(&spec)?;
+    let d = serde_json::to_value(json::ArchJson::new(&arch)).expect("serialisable");
+    to_py(py, &d)
+}
+
+/// `solve --json` (η*(μ) and every limit state above η_s), with `lines`: the samples of the
+/// lines of thrust and friction of the least limit state (`None` when there is none).
+#[pyfunction]
+fn solve<'py>(py: Python<'py>, spec: ArchIn, mu: f64) -> PyResult<Bound<'py, PyAny>> {
+    let arch = build_arch(&spec)?;
+    let (d, lines) = py
+        .detach(|| -> Result<(Value, Value), InputError> {
+            let sv = survey(&arch, mu, &Settings::default())?;
+            let d = serde_json::to_value(json::solve(&sv, false)).expect("serialisable");
+            let lines = figures::survey_scene(&sv).map_or(Value::Null, |s| lines_json(&s));
+            Ok((d, lines))
+        })
+        .map_err(value_error)?;
+    let out = to_py(py, &d)?;
+    out.set_item("lines", to_py(py, &lines)?)?;
+    Ok(out)
+}
+
+/// The scene `solve` reports at the top level, or the reason there is none.
+fn solve_scene(spec: &ArchIn, mu: f64, py: Python<'_>) -> PyResult<ArchScene> {
+    let arch = build_arch(spec)?;
+    py.detach(|| {
+        let sv = survey(&arch, mu, &Settings::default()).map_err(value_error)?;
+        figures::survey_scene(&sv).map_err(figure_error)
+    })
+}
+
+/// The `plot arch` figure (SVG) of the state `solve` reports.
+#[pyfunction]
+fn solve_svg(py: Python<'_>, spec: ArchIn, mu: f64) -> PyResult<String> {
+    let scene = solve_scene(&spec, mu, py)?;
+    plot_arch::svg(&scene).map_err(figure_error)
+}
+
+/// The COMPAS document (JSON text, as `solve --compas FILE` writes it) of the state
+/// `solve` reports, scaled by `radius`.
+#[pyfunction]
+fn solve_compas(py: Python<'_>, spec: ArchIn, mu: f64, radius: f64) -> PyResult<String> {
+    compas::check_radius(radius).map_err(value_error)?;
+    let scene = solve_scene(&spec, mu, py)?;
+    Ok(serde_json::to_string_pretty(&compas::document(&scene, radius)).expect("serialisable"))
+}
+
+/// `curve --json` at the given friction coefficients, solved on `threads` threads (default:
+/// every core) with the GIL released.
+#[pyfunction]
+#[pyo3(signature = (spec, mus, threads=None))]
+fn curve<'py>(
+    py: Python<'py>,
+    spec: ArchIn,
+    mus: Vec<f64>,
+    threads: Option<usize>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let arch = build_arch(&spec)?;
+    for (i, &mu) in mus.iter().enumerate() {
+        check_mu(mu).map_err(|e| value_error_as(e, Some(&format!("mu[{i}]"))))?;
+    }
+    let threads = match threads {
+        Some(0) => {
+            return Err(PyValueError::new_err(
+                "invalid value for threads: 0 (valid range: 1 or more, or None for every core)",
+            ))
+        }
+        Some(n) => n,
+        None => figures::margin_map::available_threads(),
+    };
+    let d = py
+        .detach(|| {
+            let settings = Settings::default();
+            let points = solve_all(&arch, &mus, threads, &settings)?;
+            let mu_ms = least_friction(&arch, &settings).ok().flatten();
+            Ok::<_, InputError>(
+                serde_json::to_value(json::curve(&arch, mu_ms, &points)).expect("serialisable"),
+            )
+        })
+        .map_err(value_error)?;
+    to_py(py, &d)
+}
+
+/// η*(μ) at every μ of `mus`, in order, on `threads` scoped threads taking one μ at a time.
+fn solve_all(
+    arch: &Arch,
+    mus: &[f64],
+    threads: usize,
+    settings: &Settings,
+) -> Result<Vec<CurvePoint>, InputError> {
+    let next = AtomicUsize::new(0);
+    let slots: Vec<Mutex<Option<Result<CurvePoint, InputError>>>> =
+        mus.iter().map(|_| Mutex::new(None)).collect();
+    std::thread::scope(|scope| {
+        for _ in 0..threads.clamp(1, mus.len().max(1)) {
+            scope.spawn(|| loop {
+                let i = next.fetch_add(1, Ordering::Relaxed);
+                let Some(&mu) = mus.get(i) else { break };
+                let point = solve_eta(arch, mu, settings).map(|s| CurvePoint {
+                    mu,
+                    outcome: s.outcome,
+                });
+                *slots[i].lock().unwrap_or_else(|e| e.into_inner()) = Some(point);
+            });
+        }
+    });
+    slots
+        .into_iter()
+        .map(|s| {
+            s.into_inner()
+                .unwrap_or_else(|e| e.into_inner())
+                .expect("every mu solved")
+        })
+        .collect()
+}
+
+/// `modes --json`: the whole η–μ limit curve.
+#[pyfunction]
+fn modes<'py>(py: Python<'py>, spec: ArchIn) -> PyResult<Bound<'py, PyAny>> {
+    let arch = build_arch(&spec)?;
+    let d = py.detach(|| {
+        let c = trace(&arch, &Settings::default());
+        serde_json::to_value(json::modes(&arch, &c)).expect("serialisable")
+    });
+    to_py(py, &d)
+}
+
+/// The `plot curve` figure (SVG) of one arch.
+#[pyfunction]
+fn modes_svg(py: Python<'_>, spec: ArchIn) -> PyResult<String> {
+    let arch = build_arch(&spec)?;
+    py.detach(|| {
+        let data = figures::curves(&[arch], &Settings::default()).map_err(figure_error)?;
+        plot_curve::svg(&data, false).map_err(figure_error)
+    })
+}
+
+/// `assess --json`: a given thickness at a given friction.
+#[pyfunction]
+fn assess<'py>(py: Python<'py>, spec: ArchIn, eta: f64, mu: f64) -> PyResult<Bound<'py, PyAny>> {
+    let arch = build_arch(&spec)?;
+    let d = py
+        .detach(|| {
+            let a = arch_enum::assess::assess(&arch, eta, mu, &Settings::default())?;
+            Ok::<_, InputError>(
+                serde_json::to_value(json::assess(&arch, &a)).expect("serialisable"),
+            )
+        })
+        .map_err(value_error)?;
+    to_py(py, &d)
+}
+
+/// The `plot arch --eta` figure (SVG): the state of greatest margin at η (the limit state
+/// when η = η*).
+#[pyfunction]
+fn assess_svg(py: Python<'_>, spec: ArchIn, eta: f64, mu: f64) -> PyResult<String> {
+    let arch = build_arch(&spec)?;
+    check_eta(eta).map_err(value_error)?;
+    check_mu(mu).map_err(value_error)?;
+    py.detach(|| {
+        let scene =
+            figures::scene(&arch, mu, Some(eta), &Settings::default()).map_err(figure_error)?;
+        plot_arch::svg(&scene).map_err(figure_error)
+    })
+}
+
+/// The live load: `kind` "horizontal" (towards "right" or "left") or "point" (at `beta`
+/// radians, snapped to a joint within 1e-9 rad as on the command line, or at joint
+/// `joint` of a discrete arch). `arg` names the Python argument the angle came in.
+fn build_load(
+    arch: &Arch,
+    kind: &str,
+    towards_right: bool,
+    beta: Option<f64>,
+    joint: Option<i64>,
+    arg: &'static str,
+) -> PyResult<LiveLoad> {
+    let joints: Vec<f64> = match arch.layout() {
+        JointLayout::Discrete(j) => j.clone(),
+        JointLayout::Continuous => Vec::new(),
+    };
+    let load = match (kind, beta, joint) {
+        ("horizontal", None, None) => LiveLoad::Horizontal { towards_right },
+        ("point", Some(b), None) => {
+            let beta = joints
+                .iter()
+                .copied()
+                .find(|j| (j - b).abs() <= 1e-9)
+                .unwrap_or(b);
+            LiveLoad::Point { beta }
+        }
+        ("point", None, Some(k)) => match usize::try_from(k).ok().and_then(|k| joints.get(k)) {
+            Some(&beta) => LiveLoad::Point { beta },
+            None => {
+                return Err(value_error(InputError::OutOfRange {
+                    arg: "point_load_joint",
+                    value: k.to_string(),
+                    range: if joints.is_empty() {
+                        "a joint index of a discrete arch (give blocks or joints)".into()
+                    } else {
+                        format!("0 <= point_load_joint <= {}", joints.len() - 1)
+                    },
+                }))
+            }
+        },
+        _ => {
+            return Err(inconsistent(
+                "horizontal/point_load/point_load_deg/point_load_joint",
+                "give exactly one live load",
+            ))
+        }
+    };
+    check_load(arch, &load).map_err(|e| value_error_as(e, Some(arg)))?;
+    Ok(load)
+}
+
+/// `load --json`: the collapse multiplier of a live load at (η, μ).
+#[pyfunction]
+#[pyo3(signature = (spec, eta, mu, kind, towards_right, beta, joint, arg))]
+#[allow(clippy::too_many_arguments)]
+fn load<'py>(
+    py: Python<'py>,
+    spec: ArchIn,
+    eta: f64,
+    mu: f64,
+    kind: &str,
+    towards_right: bool,
+    beta: Option<f64>,
+    joint: Option<i64>,
+    arg: &str,
+) -> PyResult<Bound<'py, PyAny>> {
+    let arch = build_arch(&spec)?;
+    let arg = static_arg(arg);
+    let live = build_load(&arch, kind, towards_right, beta, joint, arg)?;
+    let d = py
+        .detach(|| {
+            let outcome = load_survey(&arch, eta, mu, &live, &Settings::default())?;
+            let q = LoadQuestion {
+                arch: &arch,
+                eta,
+                mu,
+                load: live,
+                dims: None,
+            };
+            Ok::<_, InputError>(
+                serde_json::to_value(load_json(&q, &outcome)).expect("serialisable"),
+            )
+        })
+        .map_err(value_error)?;
+    to_py(py, &d)
+}
+
+/// The `plot load` figure (SVG): every limit state of the live load, one panel each.
+#[pyfunction]
+#[pyo3(signature = (spec, eta, mu, kind, towards_right, beta, joint, arg))]
+#[allow(clippy::too_many_arguments)]
+fn load_svg(
+    py: Python<'_>,
+    spec: ArchIn,
+    eta: f64,
+    mu: f64,
+    kind: &str,
+    towards_right: bool,
+    beta: Option<f64>,
+    joint: Option<i64>,
+    arg: &str,
+) -> PyResult<String> {
+    let arch = build_arch(&spec)?;
+    let live = build_load(&arch, kind, towards_right, beta, joint, static_arg(arg))?;
+    check_eta(eta).map_err(value_error)?;
+    check_mu(mu).map_err(value_error)?;
+    py.detach(|| {
+        let scenes = figures::load_scenes(&arch, eta, mu, &live, &Settings::default())
+            .map_err(figure_error)?;
+        plot_arch::svg_panels(&scenes).map_err(figure_error)
+    })
+}
+
+/// The Python names a point load's angle can come in.
+fn static_arg(arg: &str) -> &'static str {
+    match arg {
+        "point_load_deg" => "point_load_deg",
+        _ => "point_load",
+    }
+}
+
+/// `certify --json` (without `file`): the certificate of η*(μ), or `not_certified`.
+#[pyfunction]
+fn certify<'py>(py: Python<'py>, spec: ArchIn, mu: f64, gap: f64) -> PyResult<Bound<'py, PyAny>> {
+    let arch = build_arch(&spec)?;
+    check_mu(mu).map_err(value_error)?;
+    // the command line's range for --gap
+    if !(gap.is_finite() && (1e-15..=1e-4).contains(&gap)) {
+        return Err(value_error(InputError::OutOfRange {
+            arg: "gap",
+            value: fmt_value(gap),
+            range: "1e-15 <= gap <= 1e-4".into(),
+        }));
+    }
+    let d = py.detach(|| match certify_eta(&arch, mu, gap, &Settings::default()) {
+        Err(why) => serde_json::json!({
+            "version": JSON_VERSION,
+            "status": "not_certified",
+            "message": why.0,
+        }),
+        Ok(cert) => {
+            let delivered = cert.delivers_gap(gap);
+            let bracket = cert.bracket();
+            serde_json::json!({
+                "version": JSON_VERSION,
+                "status": if delivered { "ok" } else { "gap_not_reached" },
+                "claim": cert.claim,
+                "mu": cert.mu,
+                "eta_lo": bracket.map(|b| b.0),
+                "eta_hi": bracket.map(|b| b.1),
+                "gap_requested": gap,
+                "gap_relative": bracket.map(|(lo, hi)| (hi - lo) / hi),
+                "certificate": cert,
+            })
+        }
+    });
+    to_py(py, &d)
+}
+
+/// `verify --json` of a certificate given as JSON text; `ValueError` when the text is not
+/// a certificate.
+#[pyfunction]
+fn verify<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyAny>> {
+    let cert: Certificate = serde_json::from_str(text).map_err(|e| {
+        PyValueError::new_err(format!("invalid certificate: not a certificate: {e}"))
+    })?;
+    let d = py.detach(|| {
+        let outcome = verify_cert(&cert);
+        let bracket = cert.bracket();
+        let mut d = serde_json::json!({
+            "version": JSON_VERSION,
+            "status": if outcome.is_ok() { "ok" } else { "rejected" },
+            "claim": cert.claim,
+            "mu": cert.mu,
+            "eta_lo": bracket.map(|b| b.0),
+            "eta_hi": bracket.map(|b| b.1),
+            "checks": outcome.as_ref().map_or(Vec::new(), |r| r.checks.clone()),
+        });
+        match &outcome {
+            Ok(r) => {
+                d["statement"] = serde_json::json!(r.statement());
+                d["limit_states"] = serde_json::json!(r.limit_states);
+            }
+            Err(why) => d["reason"] = serde_json::json!(why.0),
+        }
+        d
+    });
+    to_py(py, &d)
+}
+
+/// The Rust side of the Python package `arch_enum`.
+#[pymodule]
+fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add("LP_SOLVER", arch_enum::lp::highs::SOLVER)?;
+    m.add("JSON_VERSION", JSON_VERSION)?;
+    m.add_function(wrap_pyfunction!(arch, m)?)?;
+    m.add_function(wrap_pyfunction!(solve, m)?)?;
+    m.add_function(wrap_pyfunction!(solve_svg, m)?)?;
+    m.add_function(wrap_pyfunction!(solve_compas, m)?)?;
+    m.add_function(wrap_pyfunction!(curve, m)?)?;
+    m.add_function(wrap_pyfunction!(modes, m)?)?;
+    m.add_function(wrap_pyfunction!(modes_svg, m)?)?;
+    m.add_function(wrap_pyfunction!(assess, m)?)?;
+    m.add_function(wrap_pyfunction!(assess_svg, m)?)?;
+    m.add_function(wrap_pyfunction!(load, m)?)?;
+    m.add_function(wrap_pyfunction!(load_svg, m)?)?;
+    m.add_function(wrap_pyfunction!(certify, m)?)?;
+    m.add_function(wrap_pyfunction!(verify, m)?)?;
+    Ok(())
+}
