@@ -19,7 +19,6 @@ alpha has beta_right = -alpha, beta_left = pi + alpha). ``math.inf`` is mu = inf
 from __future__ import annotations
 
 import json
-import math
 import os
 from typing import Any, Optional, Union
 
@@ -178,7 +177,7 @@ def load(
             "invalid horizontal/point_load/point_load_deg/point_load_joint: give exactly one "
             f"live load (got {', '.join(given) if given else 'none'})"
         )
-    kind, towards_right, beta, joint, arg = "point", True, None, None, "point_load"
+    kind, towards_right, beta, beta_deg, joint = "point", True, None, None, None
     if horizontal is not None:
         if horizontal not in ("right", "left"):
             raise ValueError(
@@ -188,13 +187,13 @@ def load(
     elif point_load is not None:
         beta = _scalar("point_load", point_load)
     elif point_load_deg is not None:
-        beta, arg = math.radians(_scalar("point_load_deg", point_load_deg)), "point_load_deg"
+        beta_deg = _scalar("point_load_deg", point_load_deg)
     else:
         import operator
 
         joint = operator.index(point_load_joint)  # type: ignore[arg-type]
-    call = (a._spec(), _scalar("eta", eta), _scalar("mu", mu), kind, towards_right, beta, joint,
-            arg)
+    call = (a._spec(), _scalar("eta", eta), _scalar("mu", mu), kind, towards_right, beta,
+            beta_deg, joint)
     return LoadResult._of(a, _native.load(*call), call)
 
 

@@ -352,45 +352,68 @@ fn assess_svg(py: Python<'_>, spec: ArchIn, eta: f64, mu: f64) -> PyResult<Strin
     })
 }
 
-/// The live load: `kind` "horizontal" (towards "right" or "left") or "point" (at `beta`
-/// radians, snapped to a joint within 1e-9 rad as on the command line, or at joint
-/// `joint` of a discrete arch). `arg` names the Python argument the angle came in.
+/// The live load: `kind` "horizontal" (towards the right springing or not) or "point" at
+/// `beta` radians or `beta_deg` degrees (snapped to a joint within 1e-9 rad, as on the
+/// command line), or at joint `joint` of a discrete arch. Errors name the Python argument.
 fn build_load(
     arch: &Arch,
     kind: &str,
     towards_right: bool,
     beta: Option<f64>,
+    beta_deg: Option<f64>,
     joint: Option<i64>,
-    arg: &'static str,
 ) -> PyResult<LiveLoad> {
     let joints: Vec<f64> = match arch.layout() {
         JointLayout::Discrete(j) => j.clone(),
         JointLayout::Continuous => Vec::new(),
     };
-    let load = match (kind, beta, joint) {
-        ("horizontal", None, None) => LiveLoad::Horizontal { towards_right },
-        ("point", Some(b), None) => {
-            let beta = joints
-                .iter()
-                .copied()
-                .find(|j| (j - b).abs() <= 1e-9)
-                .unwrap_or(b);
-            LiveLoad::Point { beta }
+    let snap = |b: f64| {
+        joints
+            .iter()
+            .copied()
+            .find(|j| (j - b).abs() <= 1e-9)
+            .unwrap_or(b)
+    };
+    let load = match (kind, beta, beta_deg, joint) {
+        ("horizontal", None, None, None) => LiveLoad::Horizontal { towards_right },
+        ("point", Some(b), None, None) => {
+            let load = LiveLoad::Point { beta: snap(b) };
+            check_load(arch, &load).map_err(|e| value_error_as(e, Some("point_load")))?;
+            load
         }
-        ("point", None, Some(k)) => match usize::try_from(k).ok().and_then(|k| joints.get(k)) {
-            Some(&beta) => LiveLoad::Point { beta },
-            None => {
-                return Err(value_error(InputError::OutOfRange {
-                    arg: "point_load_joint",
-                    value: k.to_string(),
-                    range: if joints.is_empty() {
-                        "a joint index of a discrete arch (give blocks or joints)".into()
-                    } else {
-                        format!("0 <= point_load_joint <= {}", joints.len() - 1)
-                    },
-                }))
+        ("point", None, Some(d), None) => {
+            let load = LiveLoad::Point {
+                beta: snap(d.to_radians()),
+            };
+            check_load(arch, &load).map_err(|_| {
+                value_error(InputError::OutOfRange {
+                    arg: "point_load_deg",
+                    value: fmt_value(d),
+                    range: format!(
+                        "between the springings, {} to {} degrees",
+                        arch.beta_right().to_degrees(),
+                        arch.beta_left().to_degrees()
+                    ),
+                })
+            })?;
+            load
+        }
+        ("point", None, None, Some(k)) => {
+            match usize::try_from(k).ok().and_then(|k| joints.get(k)) {
+                Some(&beta) => LiveLoad::Point { beta },
+                None => {
+                    return Err(value_error(InputError::OutOfRange {
+                        arg: "point_load_joint",
+                        value: k.to_string(),
+                        range: if joints.is_empty() {
+                            "a joint index of a discrete arch (give blocks or joints)".into()
+                        } else {
+                            format!("0 <= point_load_joint <= {}", joints.len() - 1)
+                        },
+                    }))
+                }
             }
-        },
+        }
         _ => {
             return Err(inconsistent(
                 "horizontal/point_load/point_load_deg/point_load_joint",
@@ -398,13 +421,12 @@ fn build_load(
             ))
         }
     };
-    check_load(arch, &load).map_err(|e| value_error_as(e, Some(arg)))?;
     Ok(load)
 }
 
 /// `load --json`: the collapse multiplier of a live load at (η, μ).
 #[pyfunction]
-#[pyo3(signature = (spec, eta, mu, kind, towards_right, beta, joint, arg))]
+#[pyo3(signature = (spec, eta, mu, kind, towards_right, beta, beta_deg, joint))]
 #[allow(clippy::too_many_arguments)]
 fn load<'py>(
     py: Python<'py>,
@@ -414,12 +436,11 @@ fn load<'py>(
     kind: &str,
     towards_right: bool,
     beta: Option<f64>,
+    beta_deg: Option<f64>,
     joint: Option<i64>,
-    arg: &str,
 ) -> PyResult<Bound<'py, PyAny>> {
     let arch = build_arch(&spec)?;
-    let arg = static_arg(arg);
-    let live = build_load(&arch, kind, towards_right, beta, joint, arg)?;
+    let live = build_load(&arch, kind, towards_right, beta, beta_deg, joint)?;
     let d = py
         .detach(|| {
             let outcome = load_survey(&arch, eta, mu, &live, &Settings::default())?;
@@ -440,7 +461,7 @@ fn load<'py>(
 
 /// The `plot load` figure (SVG): every limit state of the live load, one panel each.
 #[pyfunction]
-#[pyo3(signature = (spec, eta, mu, kind, towards_right, beta, joint, arg))]
+#[pyo3(signature = (spec, eta, mu, kind, towards_right, beta, beta_deg, joint))]
 #[allow(clippy::too_many_arguments)]
 fn load_svg(
     py: Python<'_>,
@@ -450,11 +471,11 @@ fn load_svg(
     kind: &str,
     towards_right: bool,
     beta: Option<f64>,
+    beta_deg: Option<f64>,
     joint: Option<i64>,
-    arg: &str,
 ) -> PyResult<String> {
     let arch = build_arch(&spec)?;
-    let live = build_load(&arch, kind, towards_right, beta, joint, static_arg(arg))?;
+    let live = build_load(&arch, kind, towards_right, beta, beta_deg, joint)?;
     check_eta(eta).map_err(value_error)?;
     check_mu(mu).map_err(value_error)?;
     py.detach(|| {
@@ -462,14 +483,6 @@ fn load_svg(
             .map_err(figure_error)?;
         plot_arch::svg_panels(&scenes).map_err(figure_error)
     })
-}
-
-/// The Python names a point load's angle can come in.
-fn static_arg(arg: &str) -> &'static str {
-    match arg {
-        "point_load_deg" => "point_load_deg",
-        _ => "point_load",
-    }
 }
 
 /// `certify --json` (without `file`): the certificate of η*(μ), or `not_certified`.
@@ -527,8 +540,17 @@ fn verify<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyAny>> {
             "mu": cert.mu,
             "eta_lo": bracket.map(|b| b.0),
             "eta_hi": bracket.map(|b| b.1),
+            "arch": {
+                "beta_right": cert.arch.beta_right,
+                "beta_left": cert.arch.beta_left,
+                "weight": cert.arch.weight,
+                "joints": if cert.arch.joint_angles.is_some() { "discrete" } else { "continuous" },
+            },
             "checks": outcome.as_ref().map_or(Vec::new(), |r| r.checks.clone()),
         });
+        if let Some(j) = &cert.arch.joint_angles {
+            d["arch"]["joint_angles"] = serde_json::json!(j);
+        }
         match &outcome {
             Ok(r) => {
                 d["statement"] = serde_json::json!(r.statement());

@@ -1,8 +1,9 @@
 //! The good_lp back end: the reference path of both LPs, and the only file of the crate
 //! that imports good_lp. The solver is chosen here by cargo feature: HiGHS (`highs`, the
 //! default and the reference), else microlp (`microlp`, pure Rust: no C++ compiler, cmake
-//! or libclang; the Python wheel's build). With microlp the tolerance `tol` is not passed
-//! on: microlp has fixed internal tolerances.
+//! or libclang; the Python wheel's build; used when `highs` is off). microlp takes no
+//! options: `tol` is not passed on (its fixed tolerance is 1e-10, the default of
+//! `Settings::lp_tol`).
 //!
 //! Two small LPs are solved here:
 //! * the static margin LP in x = (h, v, w): maximise the margin s of a finite set of

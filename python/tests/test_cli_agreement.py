@@ -1,0 +1,135 @@
+"""The Python answers agree with the command line's JSON (`arch-enum ... --json`) on a
+set of cases. The wheel's library solves its LPs with microlp, the command line with
+HiGHS: strings, flags, counts and patterns must be equal, numbers equal to 1e-12
+relative (1e-14 absolute for residuals near zero); on these cases they agree bitwise."""
+
+import math
+
+import numpy as np
+import pytest
+
+import arch_enum as ae
+from arch_enum import _native
+
+
+def agree(mine, cli, path="doc"):
+    if isinstance(cli, dict):
+        assert isinstance(mine, dict), path
+        assert set(mine) == set(cli), f"{path}: keys differ: {set(mine) ^ set(cli)}"
+        for k in cli:
+            agree(mine[k], cli[k], f"{path}.{k}")
+    elif isinstance(cli, list):
+        assert isinstance(mine, list) and len(mine) == len(cli), path
+        for i, (a, b) in enumerate(zip(mine, cli)):
+            agree(a, b, f"{path}[{i}]")
+    elif isinstance(cli, float) or isinstance(mine, float):
+        assert isinstance(mine, (int, float)) and isinstance(cli, (int, float)), path
+        assert math.isclose(mine, cli, rel_tol=1e-12, abs_tol=1e-14), f"{path}: {mine} vs {cli}"
+    else:
+        assert mine == cli, f"{path}: {mine!r} vs {cli!r}"
+
+
+# (Arch keyword arguments, the same as command-line flags)
+ARCHES = [
+    (dict(alpha=0), ["--alpha", "0"]),
+    (dict(alpha=0.5, blocks=12), ["--alpha", "0.5", "--blocks", "12"]),
+    (dict(beta_right=-0.2, beta_left=3.0), ["--beta-right", "-0.2", "--beta-left", "3.0"]),
+    (dict(alpha=1.0, weight="centroid"), ["--alpha", "1.0", "--weight", "centroid"]),
+    (dict(alpha=0, blocks=20), ["--alpha", "0", "--blocks", "20"]),
+    (dict(alpha=0, joints=[0.3, 1.2, 1.9, 2.8]), ["--alpha", "0", "--joints", "0.3,1.2,1.9,2.8"]),
+]
+MUS = ["0.2", "0.35", "0.8", "2", "inf"]
+
+
+@pytest.mark.parametrize("arch_kw,flags", ARCHES)
+@pytest.mark.parametrize("mu", MUS)
+def test_solve(cli, arch_kw, flags, mu):
+    code, doc = cli("solve", *flags, "--mu", mu, "--json")
+    arch = ae.Arch(**arch_kw)
+    raw = _native.solve(arch._spec(), float(mu))
+    raw.pop("lines")
+    agree(raw, doc)
+    # and the dataclass carries the same answer
+    r = ae.solve(arch, float(mu))
+    assert r.status == doc["status"] and r.mode == doc.get("mode")
+    assert r.mu == (math.inf if doc["mu"] is None else doc["mu"])
+    assert r.eta == doc.get("eta")
+    if doc.get("pattern") is not None:
+        assert [(c.beta, c.kind, c.at) for c in r.pattern] == [
+            (c["beta"], c["kind"], c["at"]) for c in doc["pattern"]]
+        assert r.reactions.h == doc["reactions"]["h"]
+        np.testing.assert_array_equal(
+            r.mechanism.rate, [x["rate"] for x in doc["mechanism"]["rates"]])
+    assert [s.eta for s in r.limit_states] == [s["eta"] for s in doc.get("limit_states") or []]
+    assert (code == 0) == (r.status == "ok")
+
+
+@pytest.mark.parametrize("arch_kw,flags", ARCHES[:4])
+def test_curve(cli, arch_kw, flags):
+    code, doc = cli("curve", *flags, "--mu-min", "0.25", "--mu-max", "5", "--points", "12",
+                    "--json")
+    assert code == 0
+    mus = [p["mu"] for p in doc["points"]]
+    arch = ae.Arch(**arch_kw)
+    agree(_native.curve(arch._spec(), mus, None), doc)
+    c = ae.curve(arch, mus)
+    assert list(c.status) == [p["status"] for p in doc["points"]]
+    np.testing.assert_array_equal(
+        c.eta, [math.nan if p["eta"] is None else p["eta"] for p in doc["points"]])
+
+
+@pytest.mark.parametrize("arch_kw,flags", [ARCHES[0], ARCHES[1], ARCHES[3]])
+def test_modes(cli, arch_kw, flags):
+    code, doc = cli("modes", *flags, "--json")
+    arch = ae.Arch(**arch_kw)
+    agree(_native.modes(arch._spec()), doc)
+    m = ae.modes(arch)
+    assert m.status == doc["status"] and len(m.corners) == len(doc["corners"])
+    assert [b.mode for b in m.branches] == [b["mode"] for b in doc["branches"]]
+
+
+@pytest.mark.parametrize("eta,mu", [("0.2", "0.35"), ("0.12", "inf"), ("0.3", "0.25")])
+def test_assess(cli, eta, mu):
+    code, doc = cli("assess", "--alpha", "0", "--eta", eta, "--mu", mu, "--json")
+    arch = ae.Arch(alpha=0)
+    agree(_native.assess(arch._spec(), float(eta), float(mu)), doc)
+    a = ae.assess(arch, float(eta), float(mu))
+    assert a.stands == doc["stands"] and a.eta_min == doc["eta_min"]
+
+
+@pytest.mark.parametrize("kw,flags", [
+    (dict(horizontal="right"), ["--horizontal"]),
+    (dict(horizontal="left"), ["--horizontal-left"]),
+    (dict(point_load_deg=63.0), ["--point-load-deg", "63"]),
+    (dict(point_load_joint=5), ["--point-load-joint", "5"]),
+    (dict(point_load=1.0), ["--point-load", "1.0"]),
+])
+def test_load(cli, kw, flags):
+    code, doc = cli("load", "--alpha", "0", "--blocks", "20", "--eta", "0.3", "--mu", "0.8",
+                    *flags, "--json")
+    arch = ae.Arch(alpha=0, blocks=20)
+    r = ae.load(arch, 0.3, 0.8, **kw)
+    agree(_native.load(*r._call), doc)
+    assert r.status == doc["status"] and r.lambda_ == doc["lambda"]
+    assert r.lambda_static == doc["lambda_static"]
+    assert [s.lambda_ for s in r.limit_states] == [s["lambda"] for s in doc["limit_states"]]
+
+
+def test_certify_and_verify_cross(cli, tmp_path):
+    """A certificate from Python verifies with the command line, and one from the
+    command line verifies in Python; the claims agree."""
+    c = ae.certify(ae.Arch(alpha=0), mu=0.35)
+    path = tmp_path / "py.json"
+    c.save(path)
+    code, doc = cli("verify", str(path), "--json")
+    assert code == 0 and doc["status"] == "ok"
+    mine = _native.verify(c.to_json())
+    agree(mine, doc)
+
+    cli_path = tmp_path / "cli.json"
+    code, cdoc = cli("certify", "--alpha", "0", "--mu", "0.35", "--out", str(cli_path), "--json")
+    assert code == 0
+    v = ae.verify(cli_path)
+    assert v.status == "ok" and v.eta_lo == cdoc["eta_lo"] and v.eta_hi == cdoc["eta_hi"]
+    assert c.eta_lo == pytest.approx(cdoc["eta_lo"], rel=1e-12)
+    assert c.eta_hi == pytest.approx(cdoc["eta_hi"], rel=1e-12)
