@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Sets the machine up if needed, then runs the whole test suite in release mode.
-# Snapshots are never written here: a missing or changed snapshot fails.
+# Sets the machine up if needed, then runs the whole test suite in release mode, then the
+# Python package's tests (scripts/test_python.sh: the wheel, a fresh virtual environment,
+# pytest). Snapshots are never written here: a missing or changed snapshot fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 INSTA_UPDATE=no cargo test --release
+bash scripts/test_python.sh
