@@ -1,7 +1,9 @@
 """The Python answers agree with the command line's JSON (`arch-enum ... --json`) on a
 set of cases. The wheel's library solves its LPs with microlp, the command line with
 HiGHS: strings, flags, counts and patterns must be equal, numbers equal to 1e-12
-relative (1e-14 absolute for residuals near zero); on these cases they agree bitwise."""
+relative (1e-14 absolute for residuals near zero). One count is not part of the answer
+and may differ: the number of events a load's sweep visited (`search.events`), which
+depends on the vertex the LP starts it from."""
 
 import math
 
@@ -12,16 +14,18 @@ import arch_enum as ae
 from arch_enum import _native
 
 
-def agree(mine, cli, path="doc"):
+def agree(mine, cli, path="doc", skip=()):
+    if path in skip:
+        return
     if isinstance(cli, dict):
         assert isinstance(mine, dict), path
         assert set(mine) == set(cli), f"{path}: keys differ: {set(mine) ^ set(cli)}"
         for k in cli:
-            agree(mine[k], cli[k], f"{path}.{k}")
+            agree(mine[k], cli[k], f"{path}.{k}", skip)
     elif isinstance(cli, list):
         assert isinstance(mine, list) and len(mine) == len(cli), path
         for i, (a, b) in enumerate(zip(mine, cli)):
-            agree(a, b, f"{path}[{i}]")
+            agree(a, b, f"{path}[{i}]", skip)
     elif isinstance(cli, float) or isinstance(mine, float):
         assert isinstance(mine, (int, float)) and isinstance(cli, (int, float)), path
         assert math.isclose(mine, cli, rel_tol=1e-12, abs_tol=1e-14), f"{path}: {mine} vs {cli}"
@@ -53,14 +57,19 @@ def test_solve(cli, arch_kw, flags, mu):
     r = ae.solve(arch, float(mu))
     assert r.status == doc["status"] and r.mode == doc.get("mode")
     assert r.mu == (math.inf if doc["mu"] is None else doc["mu"])
-    assert r.eta == doc.get("eta")
+    assert (r.eta is None) == (doc.get("eta") is None)
+    if r.eta is not None:
+        assert r.eta == pytest.approx(doc["eta"], rel=1e-12)
     if doc.get("pattern") is not None:
-        assert [(c.beta, c.kind, c.at) for c in r.pattern] == [
-            (c["beta"], c["kind"], c["at"]) for c in doc["pattern"]]
-        assert r.reactions.h == doc["reactions"]["h"]
-        np.testing.assert_array_equal(
-            r.mechanism.rate, [x["rate"] for x in doc["mechanism"]["rates"]])
-    assert [s.eta for s in r.limit_states] == [s["eta"] for s in doc.get("limit_states") or []]
+        assert [(c.kind, c.at) for c in r.pattern] == [(c["kind"], c["at"]) for c in doc["pattern"]]
+        np.testing.assert_allclose([c.beta for c in r.pattern], [c["beta"] for c in doc["pattern"]],
+                                   rtol=1e-12, atol=1e-14)
+        assert r.reactions.h == pytest.approx(doc["reactions"]["h"], rel=1e-12, abs=1e-14)
+        np.testing.assert_allclose(
+            r.mechanism.rate, [x["rate"] for x in doc["mechanism"]["rates"]], rtol=1e-12,
+            atol=1e-14)
+    assert [s.eta for s in r.limit_states] == pytest.approx(
+        [s["eta"] for s in doc.get("limit_states") or []], rel=1e-12)
     assert (code == 0) == (r.status == "ok")
 
 
@@ -74,8 +83,8 @@ def test_curve(cli, arch_kw, flags):
     agree(_native.curve(arch._spec(), mus, None), doc)
     c = ae.curve(arch, mus)
     assert list(c.status) == [p["status"] for p in doc["points"]]
-    np.testing.assert_array_equal(
-        c.eta, [math.nan if p["eta"] is None else p["eta"] for p in doc["points"]])
+    np.testing.assert_allclose(
+        c.eta, [math.nan if p["eta"] is None else p["eta"] for p in doc["points"]], rtol=1e-12)
 
 
 @pytest.mark.parametrize("arch_kw,flags", [ARCHES[0], ARCHES[1], ARCHES[3]])
@@ -94,7 +103,9 @@ def test_assess(cli, eta, mu):
     arch = ae.Arch(alpha=0)
     agree(_native.assess(arch._spec(), float(eta), float(mu)), doc)
     a = ae.assess(arch, float(eta), float(mu))
-    assert a.stands == doc["stands"] and a.eta_min == doc["eta_min"]
+    assert a.stands == doc["stands"] and (a.eta_min is None) == (doc["eta_min"] is None)
+    if a.eta_min is not None:
+        assert a.eta_min == pytest.approx(doc["eta_min"], rel=1e-12)
 
 
 @pytest.mark.parametrize("kw,flags", [
@@ -109,10 +120,13 @@ def test_load(cli, kw, flags):
                     *flags, "--json")
     arch = ae.Arch(alpha=0, blocks=20)
     r = ae.load(arch, 0.3, 0.8, **kw)
-    agree(_native.load(*r._call), doc)
-    assert r.status == doc["status"] and r.lambda_ == doc["lambda"]
-    assert r.lambda_static == doc["lambda_static"]
-    assert [s.lambda_ for s in r.limit_states] == [s["lambda"] for s in doc["limit_states"]]
+    agree(_native.load(*r._call), doc, skip={"doc.search.events"})
+    assert r.status == doc["status"]
+    assert r.lambda_ == pytest.approx(doc["lambda"], rel=1e-12)
+    assert r.lambda_static == pytest.approx(doc["lambda_static"], rel=1e-12)
+    assert [s.lambda_ for s in r.limit_states] == pytest.approx(
+        [s["lambda"] for s in doc["limit_states"]], rel=1e-12)
+    assert [s.mode for s in r.limit_states] == [s["mode"] for s in doc["limit_states"]]
 
 
 def test_certify_and_verify_cross(cli, tmp_path):
