@@ -55,8 +55,8 @@ def main():
         import json
         etas = []
         for m in mus:
-            out = subprocess.run([binary, "curve", "--alpha", "0", "--mu-min", repr(m),
-                                  "--mu-max", repr(m), "--points", "1", "--json"],
+            out = subprocess.run([binary, "curve", "--alpha", "0", "--mu-min", repr(float(m)),
+                                  "--mu-max", repr(float(m)), "--points", "1", "--json"],
                                  capture_output=True, text=True, check=True)
             etas.append(json.loads(out.stdout)["points"][0]["eta"])
         return np.array(etas, dtype=float)
