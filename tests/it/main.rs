@@ -3,6 +3,7 @@
 mod assess;
 mod certificates;
 mod cli;
+mod compas;
 mod continuum_reference;
 mod dense_grid;
 mod hard_cases;
