@@ -27,7 +27,9 @@ fn solve_writes_the_limit_state_as_compas_geometry() {
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("arch.json");
     let out = arch_enum()
-        .args(["solve", "--alpha", "0", "--mu", "0.35", "--json", "--compas"])
+        .args([
+            "solve", "--alpha", "0", "--mu", "0.35", "--json", "--compas",
+        ])
         .arg(&file)
         .args(["--radius", "4"])
         .output()
@@ -50,7 +52,10 @@ fn solve_writes_the_limit_state_as_compas_geometry() {
     // the line of thrust stays within the thickness
     for p in points(&doc["thrust_line"]) {
         let r = p[0].hypot(p[2]) / 4.0;
-        assert!(r >= 1.0 - eta / 2.0 - 1e-9 && r <= 1.0 + eta / 2.0 + 1e-9, "{r}");
+        assert!(
+            r >= 1.0 - eta / 2.0 - 1e-9 && r <= 1.0 + eta / 2.0 + 1e-9,
+            "{r}"
+        );
     }
     // one point per contact of the pattern, named by kind, on the extrados or intrados
     let pattern = solve["pattern"].as_array().unwrap();
@@ -77,7 +82,9 @@ fn solve_writes_the_limit_state_as_compas_geometry() {
 fn compas_bad_input_exits_2() {
     // a radius outside (0, inf), named
     let out = arch_enum()
-        .args(["solve", "--alpha", "0", "--mu", "0.35", "--compas", "x.json", "--radius", "0"])
+        .args([
+            "solve", "--alpha", "0", "--mu", "0.35", "--compas", "x.json", "--radius", "0",
+        ])
         .output()
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
@@ -91,14 +98,30 @@ fn compas_bad_input_exits_2() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("--compas"));
     // a file that cannot be written
     let out = arch_enum()
-        .args(["solve", "--alpha", "0", "--mu", "0.35", "--compas", "/nonexistent/dir/a.json"])
+        .args([
+            "solve",
+            "--alpha",
+            "0",
+            "--mu",
+            "0.35",
+            "--compas",
+            "/nonexistent/dir/a.json",
+        ])
         .output()
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("cannot write --compas"));
     // no limit state to draw: the answer's exit code, and no file
     let out = arch_enum()
-        .args(["solve", "--alpha", "0", "--mu", "0.2", "--compas", "/nonexistent/b.json"])
+        .args([
+            "solve",
+            "--alpha",
+            "0",
+            "--mu",
+            "0.2",
+            "--compas",
+            "/nonexistent/b.json",
+        ])
         .output()
         .unwrap();
     assert_eq!(out.status.code(), Some(1));
