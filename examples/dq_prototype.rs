@@ -1,0 +1,735 @@
+//! Prototype (issue 12 groundwork): every limit state of a DISCRETE arch (centreline weight,
+//! finite μ) above η_s, found on the boundary of the friction polygon Q in the (h, v) plane
+//! instead of by the sweep of P(η) in η. Design and proof: docs/design/limit-states-on-boundary.md.
+//!
+//! For each random arch: `limit_states::survey` (the reference: the sweep), then the
+//! candidates on ∂Q — V (vertices of Q: crossings of two hinge lines in the (η, w) plane,
+//! which covers the apex case V2 too), E1 (an edge of Q: three concurrent hinge rows, a
+//! quadratic per triple), E2 (an edge: two hinges with dependent columns, det B(η) = 0) —
+//! each checked with the crate's public API (`State::verdict`, `mechanism::find`). Prints the
+//! agreements, the disagreements (with details), the checks of the theorem on the sweep's
+//! states, and the median times.
+//!
+//! `cargo run --release --example dq_prototype [CASES]` (default 240).
+
+use arch_enum::contact::{Contact, ContactKind, Location};
+use arch_enum::kinematics::column;
+use arch_enum::limit_states::survey;
+use arch_enum::mechanism;
+use arch_enum::state::State;
+use arch_enum::statics::actions;
+use arch_enum::{least_friction, solve, Arch, Settings, WeightModel};
+use std::f64::consts::PI;
+use std::time::Instant;
+
+/// Q is clipped by |h|, |v| ≤ BOX (an unbounded Q); points on the box are not candidates.
+const BOX: f64 = 1e6;
+/// Relative feasibility tolerance of the prototype's own pre-filters (the verdict is the
+/// crate's: `Settings::adm_tol`).
+const TOL: f64 = 1e-9;
+
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> f64 {
+        // xorshift64* (as tests/it/search_reference.rs)
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        let v = self.0.wrapping_mul(0x2545_f491_4f6c_dd1d);
+        (v >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+fn random_joints(rng: &mut Rng, br: f64, bl: f64, blocks: usize) -> Vec<f64> {
+    let w: Vec<f64> = (0..blocks).map(|_| 0.4 + rng.next()).collect();
+    let tot: f64 = w.iter().sum();
+    let mut j = vec![br];
+    let mut acc = 0.0;
+    for wi in &w[..blocks - 1] {
+        acc += wi;
+        j.push(br + (bl - br) * acc / tot);
+    }
+    j.push(bl);
+    j
+}
+
+/// N, T, m (= M − w) at each joint as affine functions of (h, v): [coef h, coef v, const].
+struct Joints {
+    beta: Vec<f64>,
+    n: Vec<[f64; 3]>,
+    t: Vec<[f64; 3]>,
+    m: Vec<[f64; 3]>,
+}
+
+fn ev(a: &[f64; 3], p: [f64; 2]) -> f64 {
+    a[0] * p[0] + a[1] * p[1] + a[2]
+}
+
+/// A half-plane a·p + b ≤ 0 of the (h, v) plane: a sliding row (joint, kind) or a box side.
+#[derive(Clone, Copy)]
+struct Row {
+    a: [f64; 2],
+    b: f64,
+    slide: Option<(usize, ContactKind)>,
+}
+
+/// A hinge row along a line of the (h, v) plane p = p0 + t d:
+/// w = A + B t + η (C + D t) is where it is active (E: upper bound on w, I: lower bound).
+#[derive(Clone, Copy)]
+struct HRow {
+    j: usize,
+    upper: bool,
+    c: [f64; 4],
+}
+
+fn hinge_rows(js: &Joints, p0: [f64; 2], d: [f64; 2]) -> Vec<HRow> {
+    let mut out = Vec::with_capacity(2 * js.beta.len());
+    for j in 0..js.beta.len() {
+        let (m, n) = (&js.m[j], &js.n[j]);
+        let m0 = ev(m, p0);
+        let m1 = m[0] * d[0] + m[1] * d[1];
+        let n0 = ev(n, p0);
+        let n1 = n[0] * d[0] + n[1] * d[1];
+        out.push(HRow {
+            j,
+            upper: true,
+            c: [-m0, -m1, 0.5 * n0, 0.5 * n1],
+        });
+        out.push(HRow {
+            j,
+            upper: false,
+            c: [-m0, -m1, -0.5 * n0, -0.5 * n1],
+        });
+    }
+    out
+}
+
+fn hkind(r: &HRow) -> (usize, ContactKind) {
+    (
+        r.j,
+        if r.upper {
+            ContactKind::HingeExtrados
+        } else {
+            ContactKind::HingeIntrados
+        },
+    )
+}
+
+fn hval(r: &HRow, t: f64, eta: f64) -> f64 {
+    r.c[0] + r.c[1] * t + eta * (r.c[2] + r.c[3] * t)
+}
+
+/// Whether w lies in the band [max l, min u] of the hinge rows at (t, η), up to `tol`.
+fn in_band(rows: &[HRow], t: f64, eta: f64, w: f64, tol: f64) -> bool {
+    rows.iter().all(|r| {
+        let v = hval(r, t, eta);
+        if r.upper {
+            w <= v + tol
+        } else {
+            w >= v - tol
+        }
+    })
+}
+
+/// One candidate point (h, v, w, η) and the case that produced it.
+#[derive(Clone, Copy, Debug)]
+struct Cand {
+    x: [f64; 3],
+    eta: f64,
+    case: &'static str,
+    /// The rows that define the point: (joint, kind); 3 (E2) or 4.
+    support: [(usize, ContactKind); 4],
+    size: usize,
+}
+
+#[derive(Default, Debug)]
+struct Counts {
+    vertices: usize,
+    edges: usize,
+    candidates: usize,
+    checked: usize,
+    families: usize,
+}
+
+/// Every candidate on ∂Q with η in (eta_lo, eta_hi).
+fn candidates(js: &Joints, mu: f64, eta_lo: f64, eta_hi: f64, cnt: &mut Counts) -> Vec<Cand> {
+    let nj = js.beta.len();
+    let mut rows: Vec<Row> = Vec::new();
+    for j in 0..nj {
+        for (sg, kind) in [
+            (1.0, ContactKind::SlidePlus),
+            (-1.0, ContactKind::SlideMinus),
+        ] {
+            let (t, n) = (&js.t[j], &js.n[j]);
+            rows.push(Row {
+                a: [sg * t[0] - mu * n[0], sg * t[1] - mu * n[1]],
+                b: sg * t[2] - mu * n[2],
+                slide: Some((j, kind)),
+            });
+        }
+    }
+    for (a, b) in [
+        ([1.0, 0.0], 1.0),
+        ([-1.0, 0.0], 1.0),
+        ([0.0, 1.0], 1.0),
+        ([0.0, -1.0], 1.0),
+    ] {
+        rows.push(Row {
+            a,
+            b: -b * BOX,
+            slide: None,
+        });
+    }
+    let scale = |p: [f64; 2]| 1.0 + p[0].abs() + p[1].abs();
+    let feasible = |p: [f64; 2]| {
+        rows.iter()
+            .all(|r| r.a[0] * p[0] + r.a[1] * p[1] + r.b <= TOL * scale(p))
+    };
+    let mut out = Vec::new();
+
+    // V: vertices of Q (pairs of rows), then crossings of two hinge lines in (η, w)
+    let mut verts: Vec<[f64; 2]> = Vec::new();
+    for i in 0..rows.len() {
+        for k in i + 1..rows.len() {
+            let (r, s) = (&rows[i], &rows[k]);
+            let det = r.a[0] * s.a[1] - r.a[1] * s.a[0];
+            if det.abs() <= 1e-14 * (r.a[0].abs() + r.a[1].abs()) * (s.a[0].abs() + s.a[1].abs()) {
+                continue;
+            }
+            let p = [
+                (-r.b * s.a[1] + s.b * r.a[1]) / det,
+                (-r.a[0] * s.b + s.a[0] * r.b) / det,
+            ];
+            if !feasible(p)
+                || verts
+                    .iter()
+                    .any(|q| (q[0] - p[0]).abs() + (q[1] - p[1]).abs() <= 1e-9 * scale(p))
+            {
+                continue;
+            }
+            verts.push(p);
+            // a point on the box is not a state of the arch
+            if p[0].abs() >= BOX * (1.0 - 1e-9) || p[1].abs() >= BOX * (1.0 - 1e-9) {
+                continue;
+            }
+            cnt.vertices += 1;
+            let hr = hinge_rows(js, p, [0.0, 0.0]);
+            let tol = TOL * scale(p);
+            for a in 0..hr.len() {
+                for b in a + 1..hr.len() {
+                    let (ra, rb) = (&hr[a], &hr[b]);
+                    let ds = ra.c[2] - rb.c[2];
+                    if ds.abs() <= 1e-14 * (ra.c[2].abs() + rb.c[2].abs()) {
+                        continue; // parallel lines (equal N, or the flat pair of an apex)
+                    }
+                    let eta = (rb.c[0] - ra.c[0]) / ds;
+                    if !(eta > eta_lo && eta < eta_hi) {
+                        continue;
+                    }
+                    let w = ra.c[0] + ra.c[2] * eta;
+                    if in_band(&hr, 0.0, eta, w, tol) {
+                        let (Some(s1), Some(s2)) = (r.slide, s.slide) else {
+                            continue;
+                        };
+                        out.push(Cand {
+                            x: [p[0], p[1], w],
+                            eta,
+                            case: "V",
+                            support: [s1, s2, hkind(ra), hkind(rb)],
+                            size: 4,
+                        });
+                    }
+                }
+            }
+        }
+    }
+
+    // E1, E2: the open edges of Q (one sliding row active)
+    for r in rows.iter().filter(|r| r.slide.is_some()) {
+        let na = (r.a[0] * r.a[0] + r.a[1] * r.a[1]).sqrt();
+        let p0 = [-r.b * r.a[0] / (na * na), -r.b * r.a[1] / (na * na)];
+        let d = [-r.a[1] / na, r.a[0] / na];
+        let (mut t0, mut t1) = (f64::NEG_INFINITY, f64::INFINITY);
+        let mut empty = false;
+        for s in &rows {
+            let sd = s.a[0] * d[0] + s.a[1] * d[1];
+            let sp = s.a[0] * p0[0] + s.a[1] * p0[1] + s.b;
+            if std::ptr::eq(s, r) {
+                continue;
+            }
+            if sd.abs() <= 1e-14 * (s.a[0].abs() + s.a[1].abs()) {
+                if sp > TOL * scale(p0) {
+                    empty = true;
+                }
+                continue;
+            }
+            let tb = -sp / sd;
+            if sd > 0.0 {
+                t1 = t1.min(tb);
+            } else {
+                t0 = t0.max(tb);
+            }
+        }
+        if empty || !(t0 < t1) {
+            continue;
+        }
+        cnt.edges += 1;
+        let hr = hinge_rows(js, p0, d);
+        let pt = |t: f64| [p0[0] + t * d[0], p0[1] + t * d[1]];
+        let span = 1e-12 * (1.0 + t0.abs() + t1.abs());
+        let sl = r.slide.expect("sliding row");
+        let push =
+            |t: f64, eta: f64, w: f64, case: &'static str, hs: &[&HRow], out: &mut Vec<Cand>| {
+                if !(t >= t0 - span && t <= t1 + span && eta > eta_lo && eta < eta_hi) {
+                    return;
+                }
+                let p = pt(t);
+                if p[0].abs() >= BOX * (1.0 - 1e-9) || p[1].abs() >= BOX * (1.0 - 1e-9) {
+                    return;
+                }
+                if in_band(&hr, t, eta, w, TOL * scale(p)) {
+                    let mut support = [sl; 4];
+                    for (k, h) in hs.iter().enumerate() {
+                        support[k + 1] = hkind(h);
+                    }
+                    out.push(Cand {
+                        x: [p[0], p[1], w],
+                        eta,
+                        case,
+                        support,
+                        size: 1 + hs.len(),
+                    });
+                }
+            };
+        // E1: three concurrent hinge rows at three distinct joints
+        for a in 0..hr.len() {
+            for b in a + 1..hr.len() {
+                if hr[a].j == hr[b].j {
+                    continue;
+                }
+                let d1: [f64; 4] = std::array::from_fn(|i| hr[a].c[i] - hr[b].c[i]);
+                for c in b + 1..hr.len() {
+                    if hr[c].j == hr[a].j || hr[c].j == hr[b].j {
+                        continue;
+                    }
+                    let d2: [f64; 4] = std::array::from_fn(|i| hr[a].c[i] - hr[c].c[i]);
+                    // (d1[0] + d1[1] t)(d2[2] + d2[3] t) − (d2[0] + d2[1] t)(d1[2] + d1[3] t) = 0
+                    let q2 = d1[1] * d2[3] - d2[1] * d1[3];
+                    let q1 = d1[0] * d2[3] + d1[1] * d2[2] - d2[0] * d1[3] - d2[1] * d1[2];
+                    let q0 = d1[0] * d2[2] - d2[0] * d1[2];
+                    let mag = d1.iter().chain(&d2).fold(0.0f64, |m, v| m.max(v.abs()));
+                    let small = 1e-13 * mag * mag;
+                    if q2.abs() <= small && q1.abs() <= small {
+                        if q0.abs() <= small {
+                            cnt.families += 1;
+                        }
+                        continue;
+                    }
+                    for t in quadratic_roots(q2, q1, q0, small) {
+                        let Some((t, eta, w)) = polish3([&hr[a], &hr[b], &hr[c]], t) else {
+                            continue;
+                        };
+                        push(t, eta, w, "E1", &[&hr[a], &hr[b], &hr[c]], &mut out);
+                    }
+                }
+            }
+        }
+        // E2: the sliding row and two hinges at distinct joints with dependent columns
+        let (ja, ka) = r.slide.expect("sliding row");
+        let cs = column(ka, js.beta[ja], 0.0);
+        for a in 0..hr.len() {
+            for b in a + 1..hr.len() {
+                if hr[a].j == hr[b].j {
+                    continue;
+                }
+                let kind = |h: &HRow| {
+                    if h.upper {
+                        ContactKind::HingeExtrados
+                    } else {
+                        ContactKind::HingeIntrados
+                    }
+                };
+                let det = |eta: f64| {
+                    let c1 = column(kind(&hr[a]), js.beta[hr[a].j], eta);
+                    let c2 = column(kind(&hr[b]), js.beta[hr[b].j], eta);
+                    det3(cs, c1, c2)
+                };
+                // det is a quadratic in η: interpolate at 0, 1, 2
+                let (f0, f1, f2) = (det(0.0), det(1.0), det(2.0));
+                let q2 = 0.5 * (f2 - 2.0 * f1 + f0);
+                let q1 = f1 - f0 - q2;
+                let small = 1e-14 * (f0.abs() + f1.abs() + f2.abs());
+                if q2.abs() <= small && q1.abs() <= small {
+                    if f0.abs() <= small {
+                        cnt.families += 1;
+                    }
+                    continue;
+                }
+                for eta in quadratic_roots(q2, q1, f0, small) {
+                    let dd: [f64; 4] = std::array::from_fn(|i| hr[a].c[i] - hr[b].c[i]);
+                    let den = dd[1] + eta * dd[3];
+                    if den.abs() <= 1e-14 * (dd[1].abs() + eta * dd[3].abs()) {
+                        continue;
+                    }
+                    let t = -(dd[0] + eta * dd[2]) / den;
+                    push(
+                        t,
+                        eta,
+                        hval(&hr[a], t, eta),
+                        "E2",
+                        &[&hr[a], &hr[b]],
+                        &mut out,
+                    );
+                }
+            }
+        }
+    }
+    cnt.candidates += out.len();
+    out
+}
+
+fn det3(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> f64 {
+    a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+        + a[2] * (b[0] * c[1] - b[1] * c[0])
+}
+
+/// Real roots of q2 t² + q1 t + q0 (a linear equation when |q2| ≤ small).
+fn quadratic_roots(q2: f64, q1: f64, q0: f64, small: f64) -> Vec<f64> {
+    if q2.abs() <= small {
+        return vec![-q0 / q1];
+    }
+    let disc = q1 * q1 - 4.0 * q2 * q0;
+    if disc < -1e-12 * q1 * q1 {
+        return Vec::new();
+    }
+    let sq = disc.max(0.0).sqrt();
+    let qq = -0.5 * (q1 + q1.signum() * sq);
+    if qq == 0.0 {
+        return vec![0.0];
+    }
+    vec![qq / q2, q0 / qq]
+}
+
+/// Newton on the three equations w = row_i(t, η) from t (η, w from the first two rows).
+fn polish3(r: [&HRow; 3], t: f64) -> Option<(f64, f64, f64)> {
+    let d1: [f64; 4] = std::array::from_fn(|i| r[0].c[i] - r[1].c[i]);
+    let den = d1[2] + d1[3] * t;
+    let (mut t, mut eta) = if den.abs() > 1e-14 * (d1[2].abs() + d1[3].abs() * t.abs()) {
+        (t, -(d1[0] + d1[1] * t) / den)
+    } else {
+        let d2: [f64; 4] = std::array::from_fn(|i| r[0].c[i] - r[2].c[i]);
+        let den2 = d2[2] + d2[3] * t;
+        if den2 == 0.0 {
+            return None;
+        }
+        (t, -(d2[0] + d2[1] * t) / den2)
+    };
+    if !t.is_finite() || !eta.is_finite() {
+        return None;
+    }
+    let mut w = hval(r[0], t, eta);
+    for _ in 0..3 {
+        // F_k = row_k(t, η) − w; J_k = [B + η D, C + D t, −1]
+        let f: [f64; 3] = std::array::from_fn(|k| hval(r[k], t, eta) - w);
+        let jm: [[f64; 3]; 3] =
+            std::array::from_fn(|k| [r[k].c[1] + eta * r[k].c[3], r[k].c[2] + r[k].c[3] * t, -1.0]);
+        let cols = |k: usize| [jm[0][k], jm[1][k], jm[2][k]];
+        let det = det3(cols(0), cols(1), cols(2));
+        if det == 0.0 || !det.is_finite() {
+            break;
+        }
+        let dt = det3(f, cols(1), cols(2)) / det;
+        let de = det3(cols(0), f, cols(2)) / det;
+        let dw = det3(cols(0), cols(1), f) / det;
+        t -= dt;
+        eta -= de;
+        w -= dw;
+    }
+    Some((t, eta, w))
+}
+
+/// A limit state found by the prototype: η, x, the case, the active set, sliding rate.
+#[derive(Clone, Debug)]
+struct Found {
+    eta: f64,
+    x: [f64; 3],
+    case: &'static str,
+    active: Vec<Contact>,
+}
+
+fn both_senses(s: &[(usize, ContactKind); 4]) -> bool {
+    s.iter().any(|&(j, k)| {
+        k == ContactKind::SlidePlus
+            && s.iter()
+                .any(|&(i, l)| i == j && l == ContactKind::SlideMinus)
+    })
+}
+
+fn check(arch: &Arch, beta: &[f64], mu: f64, c: &Cand, settings: &Settings) -> Option<Found> {
+    let st = State {
+        arch,
+        eta: c.eta,
+        mu,
+        x: c.x,
+    };
+    let v = st.verdict(ContactKind::active_at(mu), settings);
+    if v.worst > settings.adm_tol {
+        return None;
+    }
+    // the O(1) test: exactly the 4 defining rows active, at 4 distinct contacts, one
+    // sliding sense per joint ⇒ a mechanism iff the cofactor null vector of B (3 × 4) has
+    // one strict sign. Otherwise (more rows active, E2, a zero cofactor) the LP decides.
+    if c.size == 4 && v.active.len() == 4 && !both_senses(&c.support) {
+        let cols: Vec<[f64; 3]> = c
+            .support
+            .iter()
+            .map(|&(j, k)| column(k, beta[j], c.eta))
+            .collect();
+        let lam = [
+            det3(cols[1], cols[2], cols[3]),
+            -det3(cols[0], cols[2], cols[3]),
+            det3(cols[0], cols[1], cols[3]),
+            -det3(cols[0], cols[1], cols[2]),
+        ];
+        let big = lam.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        if lam.iter().all(|v| v.abs() > 1e-9 * big) {
+            let pos = lam.iter().all(|&v| v > 0.0) || lam.iter().all(|&v| v < 0.0);
+            if !pos {
+                return None;
+            }
+        } else {
+            mechanism::find(&st, &v.active, settings).ok()??;
+        }
+    } else {
+        mechanism::find(&st, &v.active, settings).ok()??;
+    }
+    Some(Found {
+        eta: c.eta,
+        x: c.x,
+        case: c.case,
+        active: v.active,
+    })
+}
+
+fn same(a: (f64, [f64; 3]), b: (f64, [f64; 3])) -> bool {
+    let sc = 1.0 + a.1.iter().map(|v| v.abs()).sum::<f64>();
+    (a.0 - b.0).abs() <= 1e-8 * a.0.max(1e-3)
+        && (0..3).all(|k| (a.1[k] - b.1[k]).abs() <= 1e-6 * sc)
+}
+
+fn joints_of(arch: &Arch, joints: &[f64]) -> Joints {
+    let mut js = Joints {
+        beta: joints.to_vec(),
+        n: Vec::new(),
+        t: Vec::new(),
+        m: Vec::new(),
+    };
+    for &b in joints {
+        let a = actions(arch, 1.0, b);
+        js.n.push([a.n[0].g[0], a.n[0].g[1], a.n[0].c]);
+        js.t.push([a.t[0].g[0], a.t[0].g[1], a.t[0].c]);
+        js.m.push([a.m[0].g[0], a.m[0].g[1], a.m[0].c]);
+    }
+    js
+}
+
+fn median(v: &mut [f64]) -> f64 {
+    v.sort_by(f64::total_cmp);
+    if v.is_empty() {
+        f64::NAN
+    } else {
+        v[v.len() / 2]
+    }
+}
+
+fn main() {
+    let cases: usize = std::env::args()
+        .nth(1)
+        .map(|s| s.parse().expect("CASES: a positive integer"))
+        .unwrap_or(240);
+    let settings = Settings::default();
+    let mut rng = Rng(0x1234_5678_9abc_def1);
+    let (mut agree, mut agree_nonempty, mut differ, mut skipped) = (0usize, 0usize, 0usize, 0usize);
+    let (mut states_ref, mut states_dq) = (0usize, 0usize);
+    let (mut hinge_only, mut off_boundary) = (0usize, 0usize);
+    let mut by_case = std::collections::BTreeMap::<&str, usize>::new();
+    let (mut t_survey, mut t_solve, mut t_dq) = (Vec::new(), Vec::new(), Vec::new());
+    let mut cnt = Counts::default();
+    let mut reports = Vec::new();
+    let mut sizes = Vec::new();
+    let mut case = 0;
+    let mut wild_count = 0;
+    while sizes.len() < cases {
+        case += 1;
+        // three quarters arch-like (springings within 0.6 rad of a semicircle's, 3-8
+        // voussoirs), one quarter arbitrary (spans 0.3-3.8 rad anywhere, 3-4 voussoirs), as
+        // tests/it/search_reference.rs; μ within 2 % of μ_ms, within 30 %, or up to 3
+        let wild = case % 4 == 3;
+        let (n, br, bl) = if wild {
+            let n = 3 + (rng.next() * 2.0) as usize;
+            let br = -1.2 + 2.6 * rng.next();
+            (n, br, br + 0.3 + 3.5 * rng.next())
+        } else {
+            (
+                3 + (rng.next() * 6.0) as usize,
+                -0.6 + 1.2 * rng.next(),
+                PI - 0.6 + 1.2 * rng.next(),
+            )
+        };
+        let joints = random_joints(&mut rng, br, bl, n);
+        let u = rng.next();
+        let arch = Arch::new(br, bl, WeightModel::Centreline)
+            .and_then(|a| a.with_joints(&joints))
+            .expect("valid arch");
+        let Ok(Some(ms)) = least_friction(&arch, &settings) else {
+            continue;
+        };
+        let mu = match case % 3 {
+            0 => ms * (1.0 + 0.02 * u) + 1e-6 * ms,
+            1 => ms * (1.0 + 0.3 * u * u) + 1e-3 * ms,
+            _ if ms < 3.0 => ms + (3.0 - ms) * u * u + 1e-3 * ms,
+            _ => ms * (1.0 + u),
+        };
+        if wild {
+            wild_count += 1;
+        }
+        sizes.push(n);
+        let t = Instant::now();
+        let sv = survey(&arch, mu, &settings).expect("valid input");
+        t_survey.push(t.elapsed().as_secs_f64());
+        let t = Instant::now();
+        let sol = solve(&arch, mu, &settings).expect("valid input");
+        t_solve.push(t.elapsed().as_secs_f64());
+        let _ = sol;
+        let Ok(reference) = &sv.states else {
+            skipped += 1;
+            reports.push(format!(
+                "case {case}: survey incomplete: {:?}",
+                sv.states.as_ref().err()
+            ));
+            continue;
+        };
+        let eta_lo = reference.eta_s * (1.0 + settings.root_slack);
+        let js = joints_of(&arch, &joints);
+        let t = Instant::now();
+        let cands = candidates(&js, mu, eta_lo, 2.0 * (1.0 - 1e-9), &mut cnt);
+        let mut found: Vec<Found> = Vec::new();
+        for c in &cands {
+            if found.iter().any(|f| same((f.eta, f.x), (c.eta, c.x))) {
+                continue;
+            }
+            cnt.checked += 1;
+            if let Some(f) = check(&arch, &joints, mu, c, &settings) {
+                found.push(f);
+            }
+        }
+        found.sort_by(|a, b| a.eta.total_cmp(&b.eta));
+        t_dq.push(t.elapsed().as_secs_f64());
+
+        // the theorem on the sweep's states: no hinge-only mechanism, (h, v) on ∂Q
+        for s in &reference.above {
+            let hinges: Vec<Contact> = s
+                .pattern
+                .iter()
+                .copied()
+                .filter(|c| c.kind.is_hinge())
+                .collect();
+            let st = State {
+                arch: &arch,
+                eta: s.eta,
+                mu,
+                x: s.x,
+            };
+            if !hinges.is_empty() && matches!(mechanism::find(&st, &hinges, &settings), Ok(Some(_)))
+            {
+                hinge_only += 1;
+            }
+            if !s.pattern.iter().any(|c| !c.kind.is_hinge()) {
+                off_boundary += 1;
+            }
+        }
+        states_ref += reference.above.len();
+        states_dq += found.len();
+        for f in &found {
+            *by_case.entry(f.case).or_default() += 1;
+        }
+        let missing: Vec<_> = reference
+            .above
+            .iter()
+            .filter(|s| !found.iter().any(|f| same((f.eta, f.x), (s.eta, s.x))))
+            .collect();
+        let extra: Vec<_> = found
+            .iter()
+            .filter(|f| {
+                !reference
+                    .above
+                    .iter()
+                    .any(|s| same((f.eta, f.x), (s.eta, s.x)))
+            })
+            .collect();
+        if missing.is_empty() && extra.is_empty() {
+            agree += 1;
+            if !found.is_empty() {
+                agree_nonempty += 1;
+            }
+        } else {
+            differ += 1;
+            let mut r = format!(
+                "case {case}: beta_r = {br:?}, beta_l = {bl:?}, joints = {joints:?}, mu = {mu:?} (mu_ms = {ms:?}), eta_s = {:?}",
+                reference.eta_s
+            );
+            for s in &missing {
+                let pat: Vec<String> = s
+                    .pattern
+                    .iter()
+                    .map(|c| format!("{}@{:.6}", c.kind.name(), c.beta))
+                    .collect();
+                r += &format!(
+                    "\n  missed (sweep only): eta = {:.15}, x = {:?}, pattern {}",
+                    s.eta,
+                    s.x,
+                    pat.join(" ")
+                );
+            }
+            for f in &extra {
+                let pat: Vec<String> = f
+                    .active
+                    .iter()
+                    .map(|c| format!("{}@{:.6}", c.kind.name(), c.beta))
+                    .collect();
+                r += &format!(
+                    "\n  extra (prototype only, case {}): eta = {:.15}, x = {:?}, pattern {}",
+                    f.case,
+                    f.eta,
+                    f.x,
+                    pat.join(" ")
+                );
+            }
+            reports.push(r);
+        }
+    }
+    let _ = Location::Interior;
+    let ms = |v: &mut Vec<f64>| median(v) * 1e6;
+    println!("=== dq_prototype: {cases} random discrete arches (centreline weight; {wild_count} with arbitrary springings; mu in (mu_ms, max(3, 2 mu_ms)]) ===");
+    println!("survey incomplete (not compared): {skipped}");
+    println!(
+        "agree: {agree} (of which with limit states above eta_s: {agree_nonempty}), disagree: {differ}"
+    );
+    println!("limit states above eta_s: sweep {states_ref}, prototype {states_dq}; prototype by case: {by_case:?}");
+    println!(
+        "theorem on the sweep's states: hinge-only mechanism on the active set: {hinge_only}, no active sliding row: {off_boundary}"
+    );
+    println!(
+        "prototype work: Q vertices {} edges {} candidates {} checked (distinct) {} degenerate supports (families) {}",
+        cnt.vertices, cnt.edges, cnt.candidates, cnt.checked, cnt.families
+    );
+    println!(
+        "median time per arch: survey (solve + sweep) {:.1} us, solve alone {:.1} us, prototype (given eta_s) {:.1} us",
+        ms(&mut t_survey),
+        ms(&mut t_solve),
+        ms(&mut t_dq)
+    );
+    for r in reports.iter().take(12) {
+        println!("{r}");
+    }
+}
