@@ -152,7 +152,13 @@ struct Counts {
 }
 
 /// Every candidate on ∂Q with η in (eta_lo, eta_hi).
-fn candidates(js: &Joints, mu: f64, eta_lo: f64, eta_hi: f64, cnt: &mut Counts) -> Vec<Cand> {
+fn candidates(
+    js: &Joints,
+    mu: f64,
+    (eta_lo, eta_hi): (f64, f64),
+    all_kinds: bool,
+    cnt: &mut Counts,
+) -> Vec<Cand> {
     let nj = js.beta.len();
     let mut rows: Vec<Row> = Vec::new();
     for j in 0..nj {
@@ -218,6 +224,9 @@ fn candidates(js: &Joints, mu: f64, eta_lo: f64, eta_hi: f64, cnt: &mut Counts) 
             for a in 0..hr.len() {
                 for b in a + 1..hr.len() {
                     let (ra, rb) = (&hr[a], &hr[b]);
+                    if !all_kinds && ra.upper == rb.upper {
+                        continue; // two E (or two I) rows: no mechanism (third components)
+                    }
                     let ds = ra.c[2] - rb.c[2];
                     if ds.abs() <= 1e-14 * (ra.c[2].abs() + rb.c[2].abs()) {
                         continue; // parallel lines (equal N, or the flat pair of an apex)
@@ -270,7 +279,7 @@ fn candidates(js: &Joints, mu: f64, eta_lo: f64, eta_hi: f64, cnt: &mut Counts) 
                 t0 = t0.max(tb);
             }
         }
-        if empty || !(t0 < t1) {
+        if empty || t0 >= t1 {
             continue;
         }
         cnt.edges += 1;
@@ -312,6 +321,9 @@ fn candidates(js: &Joints, mu: f64, eta_lo: f64, eta_hi: f64, cnt: &mut Counts) 
                     if hr[c].j == hr[a].j || hr[c].j == hr[b].j {
                         continue;
                     }
+                    if !all_kinds && hr[a].upper == hr[b].upper && hr[b].upper == hr[c].upper {
+                        continue; // three E (or three I) rows: no mechanism
+                    }
                     let d2: [f64; 4] = std::array::from_fn(|i| hr[a].c[i] - hr[c].c[i]);
                     // (d1[0] + d1[1] t)(d2[2] + d2[3] t) − (d2[0] + d2[1] t)(d1[2] + d1[3] t) = 0
                     let q2 = d1[1] * d2[3] - d2[1] * d1[3];
@@ -339,7 +351,7 @@ fn candidates(js: &Joints, mu: f64, eta_lo: f64, eta_hi: f64, cnt: &mut Counts) 
         let cs = column(ka, js.beta[ja], 0.0);
         for a in 0..hr.len() {
             for b in a + 1..hr.len() {
-                if hr[a].j == hr[b].j {
+                if hr[a].j == hr[b].j || (!all_kinds && hr[a].upper == hr[b].upper) {
                     continue;
                 }
                 let kind = |h: &HRow| {
@@ -451,21 +463,16 @@ fn polish3(r: [&HRow; 3], t: f64) -> Option<(f64, f64, f64)> {
 /// A limit state found by the prototype: η, x, the case, the active set, sliding rate.
 #[derive(Clone, Debug)]
 struct Found {
+    /// The rows that produced the candidate (joint, kind), the first `size` of them.
+    support: [(usize, ContactKind); 4],
+    size: usize,
     eta: f64,
     x: [f64; 3],
     case: &'static str,
     active: Vec<Contact>,
 }
 
-fn both_senses(s: &[(usize, ContactKind); 4]) -> bool {
-    s.iter().any(|&(j, k)| {
-        k == ContactKind::SlidePlus
-            && s.iter()
-                .any(|&(i, l)| i == j && l == ContactKind::SlideMinus)
-    })
-}
-
-fn check(arch: &Arch, beta: &[f64], mu: f64, c: &Cand, settings: &Settings) -> Option<Found> {
+fn check(arch: &Arch, mu: f64, c: &Cand, settings: &Settings) -> Option<Found> {
     let st = State {
         arch,
         eta: c.eta,
@@ -476,15 +483,19 @@ fn check(arch: &Arch, beta: &[f64], mu: f64, c: &Cand, settings: &Settings) -> O
     if v.worst > settings.adm_tol {
         return None;
     }
-    // the O(1) test: exactly the 4 defining rows active, at 4 distinct contacts, one
-    // sliding sense per joint ⇒ a mechanism iff the cofactor null vector of B (3 × 4) has
-    // one strict sign. Otherwise (more rows active, E2, a zero cofactor) the LP decides.
-    if c.size == 4 && v.active.len() == 4 && !both_senses(&c.support) {
-        let cols: Vec<[f64; 3]> = c
-            .support
-            .iter()
-            .map(|&(j, k)| column(k, beta[j], c.eta))
-            .collect();
+    // the O(1) test: exactly 4 contacts active, one sliding sense per joint ⇒ a mechanism
+    // iff the cofactor null vector of their columns (3 × 4) has one strict sign. Otherwise
+    // (3 or ≥ 5 active, both senses at a joint, a zero cofactor) the LP decides.
+    let a = &v.active;
+    let two_senses = a.iter().any(|p| {
+        p.kind == ContactKind::SlidePlus
+            && a.iter().any(|q| {
+                q.kind == ContactKind::SlideMinus && (q.beta - p.beta).abs() <= settings.same_joint
+            })
+    });
+    let mut decided = false;
+    if a.len() == 4 && !two_senses {
+        let cols: Vec<[f64; 3]> = a.iter().map(|p| column(p.kind, p.beta, c.eta)).collect();
         let lam = [
             det3(cols[1], cols[2], cols[3]),
             -det3(cols[0], cols[2], cols[3]),
@@ -493,17 +504,18 @@ fn check(arch: &Arch, beta: &[f64], mu: f64, c: &Cand, settings: &Settings) -> O
         ];
         let big = lam.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         if lam.iter().all(|v| v.abs() > 1e-9 * big) {
-            let pos = lam.iter().all(|&v| v > 0.0) || lam.iter().all(|&v| v < 0.0);
-            if !pos {
+            if !(lam.iter().all(|&v| v > 0.0) || lam.iter().all(|&v| v < 0.0)) {
                 return None;
             }
-        } else {
-            mechanism::find(&st, &v.active, settings).ok()??;
+            decided = true;
         }
-    } else {
+    }
+    if !decided {
         mechanism::find(&st, &v.active, settings).ok()??;
     }
     Some(Found {
+        support: c.support,
+        size: c.size,
         eta: c.eta,
         x: c.x,
         case: c.case,
@@ -548,12 +560,16 @@ fn main() {
         .map(|s| s.parse().expect("CASES: a positive integer"))
         .unwrap_or(240);
     let settings = Settings::default();
+    // DQ_ALL_KINDS=1: also the E,E / I,I crossings and E,E,E / I,I,I triples (which carry no
+    // mechanism generically: the third components of the hinge columns are -1 and +1)
+    let all_kinds = std::env::var("DQ_ALL_KINDS").is_ok_and(|v| v == "1");
     let mut rng = Rng(0x1234_5678_9abc_def1);
     let (mut agree, mut agree_nonempty, mut differ, mut skipped) = (0usize, 0usize, 0usize, 0usize);
     let (mut states_ref, mut states_dq) = (0usize, 0usize);
     let (mut hinge_only, mut off_boundary) = (0usize, 0usize);
     let mut by_case = std::collections::BTreeMap::<&str, usize>::new();
     let (mut t_survey, mut t_solve, mut t_dq) = (Vec::new(), Vec::new(), Vec::new());
+    let mut t_gen = Vec::new();
     let mut cnt = Counts::default();
     let mut reports = Vec::new();
     let mut sizes = Vec::new();
@@ -612,14 +628,15 @@ fn main() {
         let eta_lo = reference.eta_s * (1.0 + settings.root_slack);
         let js = joints_of(&arch, &joints);
         let t = Instant::now();
-        let cands = candidates(&js, mu, eta_lo, 2.0 * (1.0 - 1e-9), &mut cnt);
+        let cands = candidates(&js, mu, (eta_lo, 2.0 * (1.0 - 1e-9)), all_kinds, &mut cnt);
+        t_gen.push(t.elapsed().as_secs_f64());
         let mut found: Vec<Found> = Vec::new();
         for c in &cands {
             if found.iter().any(|f| same((f.eta, f.x), (c.eta, c.x))) {
                 continue;
             }
             cnt.checked += 1;
-            if let Some(f) = check(&arch, &joints, mu, c, &settings) {
+            if let Some(f) = check(&arch, mu, c, &settings) {
                 found.push(f);
             }
         }
@@ -698,8 +715,9 @@ fn main() {
                     .map(|c| format!("{}@{:.6}", c.kind.name(), c.beta))
                     .collect();
                 r += &format!(
-                    "\n  extra (prototype only, case {}): eta = {:.15}, x = {:?}, pattern {}",
+                    "\n  extra (prototype only, case {} from rows {:?}): eta = {:.15}, x = {:?}, pattern {}",
                     f.case,
+                    &f.support[..f.size],
                     f.eta,
                     f.x,
                     pat.join(" ")
@@ -711,6 +729,14 @@ fn main() {
     let _ = Location::Interior;
     let ms = |v: &mut Vec<f64>| median(v) * 1e6;
     println!("=== dq_prototype: {cases} random discrete arches (centreline weight; {wild_count} with arbitrary springings; mu in (mu_ms, max(3, 2 mu_ms)]) ===");
+    println!(
+        "candidate rows: {}",
+        if all_kinds {
+            "all hinge kinds (DQ_ALL_KINDS=1)"
+        } else {
+            "E and I mixed only"
+        }
+    );
     println!("survey incomplete (not compared): {skipped}");
     println!(
         "agree: {agree} (of which with limit states above eta_s: {agree_nonempty}), disagree: {differ}"
@@ -724,10 +750,11 @@ fn main() {
         cnt.vertices, cnt.edges, cnt.candidates, cnt.checked, cnt.families
     );
     println!(
-        "median time per arch: survey (solve + sweep) {:.1} us, solve alone {:.1} us, prototype (given eta_s) {:.1} us",
+        "median time per arch: survey (solve + sweep) {:.1} us, solve alone {:.1} us, prototype (given eta_s) {:.1} us, of which candidates {:.1} us",
         ms(&mut t_survey),
         ms(&mut t_solve),
-        ms(&mut t_dq)
+        ms(&mut t_dq),
+        ms(&mut t_gen)
     );
     for r in reports.iter().take(12) {
         println!("{r}");
