@@ -149,6 +149,8 @@ struct Counts {
     candidates: usize,
     checked: usize,
     families: usize,
+    pieces: usize,
+    walk_failures: usize,
 }
 
 /// Every candidate on ∂Q with η in (eta_lo, eta_hi).
@@ -157,6 +159,7 @@ fn candidates(
     mu: f64,
     (eta_lo, eta_hi): (f64, f64),
     all_kinds: bool,
+    walk: bool,
     cnt: &mut Counts,
 ) -> Vec<Cand> {
     let nj = js.beta.len();
@@ -219,6 +222,9 @@ fn candidates(
                 continue;
             }
             cnt.vertices += 1;
+            if walk {
+                continue; // the walk of each edge starts and ends at the vertices
+            }
             let hr = hinge_rows(js, p, [0.0, 0.0]);
             let tol = TOL * scale(p);
             for a in 0..hr.len() {
@@ -310,6 +316,17 @@ fn candidates(
                     });
                 }
             };
+        if walk {
+            let cs = column(sl.1, js.beta[sl.0], 0.0);
+            for (t, eta, w, case, e, i, r) in walk_edge(&hr, (t0, t1), cs, js, cnt) {
+                let mut rows = vec![&hr[e], &hr[i]];
+                if let Some(r) = r {
+                    rows.push(&hr[r]);
+                }
+                push(t, eta, w, case, &rows, &mut out);
+            }
+            continue;
+        }
         // E1: three concurrent hinge rows at three distinct joints
         for a in 0..hr.len() {
             for b in a + 1..hr.len() {
@@ -397,6 +414,140 @@ fn candidates(
         }
     }
     cnt.candidates += out.len();
+    out
+}
+
+/// The ridge of P over one edge of Q: G(t) = least η with a non-empty w-band at p(t),
+/// followed from t0 to t1. On each piece one E row (index `e` of `hr`) and one I row (`i`)
+/// close the band: η(t) = −(a + b t)/(c + d t) with (a, b, c, d) = row_e − row_i. The piece
+/// ends where a third row reaches w (a quadratic per row, O(n)); there the pair changes to
+/// the one that dominates after (the larger dη/dt). Returns the points (t, η, w, case, e, i,
+/// third row): the two ends of the edge (vertices of Q, case "V"), the breakpoints ("E1"),
+/// and the points of each piece where the sliding column and the pair's columns are
+/// dependent ("E2", det B(η) = 0, a quadratic in η).
+#[allow(clippy::type_complexity)]
+fn walk_edge(
+    hr: &[HRow],
+    (t0, t1): (f64, f64),
+    cs: [f64; 3],
+    js: &Joints,
+    cnt: &mut Counts,
+) -> Vec<(f64, f64, f64, &'static str, usize, usize, Option<usize>)> {
+    let mut out = Vec::new();
+    let diff =
+        |e: usize, i: usize| -> [f64; 4] { std::array::from_fn(|k| hr[e].c[k] - hr[i].c[k]) };
+    let eta_of = |d: &[f64; 4], t: f64| -(d[0] + d[1] * t) / (d[2] + d[3] * t);
+    let slope = |d: &[f64; 4], t: f64| {
+        let q = d[2] + d[3] * t;
+        (d[0] * d[3] - d[1] * d[2]) / (q * q)
+    };
+    // the pair at t0: the largest η over (E, I) pairs at distinct joints, ties by slope
+    let mut best: Option<(usize, usize, f64, f64)> = None;
+    for e in (0..hr.len()).filter(|&e| hr[e].upper) {
+        for i in (0..hr.len()).filter(|&i| !hr[i].upper && hr[i].j != hr[e].j) {
+            let d = diff(e, i);
+            if d[2] + d[3] * t0 <= 1e-14 * (d[2].abs() + d[3].abs() * t0.abs()) {
+                continue;
+            }
+            let (eta, sl) = (eta_of(&d, t0), slope(&d, t0));
+            let tol = 1e-12 * (1.0 + eta.abs());
+            let better = match best {
+                None => true,
+                Some((_, _, be, bs)) => eta > be + tol || (eta >= be - tol && sl > bs),
+            };
+            if better {
+                best = Some((e, i, eta, sl));
+            }
+        }
+    }
+    let Some((mut e, mut i, _, _)) = best else {
+        return out;
+    };
+    let w_at = |e: usize, d: &[f64; 4], t: f64| hval(&hr[e], t, eta_of(d, t));
+    let d = diff(e, i);
+    out.push((t0, eta_of(&d, t0), w_at(e, &d, t0), "V", e, i, None));
+    let mut t = t0;
+    let kind = |h: &HRow| {
+        if h.upper {
+            ContactKind::HingeExtrados
+        } else {
+            ContactKind::HingeIntrados
+        }
+    };
+    for _ in 0..4 * hr.len() + 4 {
+        cnt.pieces += 1;
+        let d = diff(e, i);
+        let q = |t: f64| d[2] + d[3] * t;
+        // the next row to reach w along the pair's curve
+        let eps = 1e-12 * (1.0 + t.abs() + (t1 - t0).abs());
+        let mut next: Option<(f64, usize)> = None;
+        for r in (0..hr.len()).filter(|&r| r != e && r != i) {
+            // (row_r − row_e)(t, η(t)) · q(t) = 0: (A + B t) q(t) − (C + D t)(a + b t)
+            let g = diff(r, e);
+            let q2 = g[1] * d[3] - g[3] * d[1];
+            let q1 = g[0] * d[3] + g[1] * d[2] - g[2] * d[1] - g[3] * d[0];
+            let q0 = g[0] * d[2] - g[2] * d[0];
+            let mag = g.iter().chain(&d).fold(0.0f64, |m, v| m.max(v.abs()));
+            let small = 1e-13 * mag * mag;
+            if q2.abs() <= small && q1.abs() <= small {
+                if q0.abs() <= small {
+                    cnt.families += 1;
+                }
+                continue;
+            }
+            for tr in quadratic_roots(q2, q1, q0, small) {
+                if tr > t + eps
+                    && tr <= t1 + eps
+                    && q(tr) > 0.0
+                    && next.is_none_or(|(tn, _)| tr < tn)
+                {
+                    next = Some((tr, r));
+                }
+            }
+        }
+        let t_end = next.map_or(t1, |(tn, _)| tn.min(t1));
+        // E2 on the piece (t, t_end)
+        let (ce, ci) = (
+            (kind(&hr[e]), js.beta[hr[e].j]),
+            (kind(&hr[i]), js.beta[hr[i].j]),
+        );
+        let det = |eta: f64| det3(cs, column(ce.0, ce.1, eta), column(ci.0, ci.1, eta));
+        let (f0, f1, f2) = (det(0.0), det(1.0), det(2.0));
+        let k2 = 0.5 * (f2 - 2.0 * f1 + f0);
+        let k1 = f1 - f0 - k2;
+        let small = 1e-14 * (f0.abs() + f1.abs() + f2.abs());
+        if k2.abs() > small || k1.abs() > small {
+            for eta in quadratic_roots(k2, k1, f0, small) {
+                let den = d[1] + eta * d[3];
+                if den == 0.0 {
+                    continue;
+                }
+                let te = -(d[0] + eta * d[2]) / den;
+                if te > t - eps && te < t_end + eps {
+                    out.push((te, eta, w_at(e, &d, te), "E2", e, i, None));
+                }
+            }
+        } else if f0.abs() <= small {
+            cnt.families += 1;
+        }
+        let Some((tn, r)) = next.filter(|(tn, _)| *tn < t1 - eps) else {
+            out.push((t1, eta_of(&d, t1), w_at(e, &d, t1), "V", e, i, None));
+            return out;
+        };
+        let w = w_at(e, &d, tn);
+        out.push((tn, eta_of(&d, tn), w, "E1", e, i, Some(r)));
+        // the pair after the breakpoint: the one with the larger dη/dt
+        let (ne, ni) = if hr[r].upper { (r, i) } else { (e, r) };
+        if hr[ne].j != hr[ni].j {
+            let dn = diff(ne, ni);
+            if q(tn) > 0.0 && dn[2] + dn[3] * tn > 0.0 && slope(&dn, tn) >= slope(&d, tn) {
+                e = ne;
+                i = ni;
+            }
+        }
+        t = tn;
+    }
+    cnt.walk_failures += 1;
     out
 }
 
@@ -563,6 +714,9 @@ fn main() {
     // DQ_ALL_KINDS=1: also the E,E / I,I crossings and E,E,E / I,I,I triples (which carry no
     // mechanism generically: the third components of the hinge columns are -1 and +1)
     let all_kinds = std::env::var("DQ_ALL_KINDS").is_ok_and(|v| v == "1");
+    // DQ_BRUTE=1: every pair/triple of hinge rows (O(n^3) per edge) instead of the walk of
+    // the ridge along each edge (O(n) per breakpoint)
+    let walk = !std::env::var("DQ_BRUTE").is_ok_and(|v| v == "1");
     let mut rng = Rng(0x1234_5678_9abc_def1);
     let (mut agree, mut agree_nonempty, mut differ, mut skipped) = (0usize, 0usize, 0usize, 0usize);
     let (mut states_ref, mut states_dq) = (0usize, 0usize);
@@ -628,7 +782,14 @@ fn main() {
         let eta_lo = reference.eta_s * (1.0 + settings.root_slack);
         let js = joints_of(&arch, &joints);
         let t = Instant::now();
-        let cands = candidates(&js, mu, (eta_lo, 2.0 * (1.0 - 1e-9)), all_kinds, &mut cnt);
+        let cands = candidates(
+            &js,
+            mu,
+            (eta_lo, 2.0 * (1.0 - 1e-9)),
+            all_kinds,
+            walk,
+            &mut cnt,
+        );
         t_gen.push(t.elapsed().as_secs_f64());
         let mut found: Vec<Found> = Vec::new();
         for c in &cands {
@@ -730,11 +891,13 @@ fn main() {
     let ms = |v: &mut Vec<f64>| median(v) * 1e6;
     println!("=== dq_prototype: {cases} random discrete arches (centreline weight; {wild_count} with arbitrary springings; mu in (mu_ms, max(3, 2 mu_ms)]) ===");
     println!(
-        "candidate rows: {}",
-        if all_kinds {
-            "all hinge kinds (DQ_ALL_KINDS=1)"
+        "candidates: {}",
+        if walk {
+            "walk of the ridge G along each edge of Q"
+        } else if all_kinds {
+            "brute force, all hinge kinds (DQ_BRUTE=1 DQ_ALL_KINDS=1)"
         } else {
-            "E and I mixed only"
+            "brute force, E and I mixed (DQ_BRUTE=1)"
         }
     );
     println!("survey incomplete (not compared): {skipped}");
@@ -746,8 +909,8 @@ fn main() {
         "theorem on the sweep's states: hinge-only mechanism on the active set: {hinge_only}, no active sliding row: {off_boundary}"
     );
     println!(
-        "prototype work: Q vertices {} edges {} candidates {} checked (distinct) {} degenerate supports (families) {}",
-        cnt.vertices, cnt.edges, cnt.candidates, cnt.checked, cnt.families
+        "prototype work: Q vertices {} edges {} ridge pieces {} candidates {} checked (distinct) {} degenerate supports (families) {} walks cut off {}",
+        cnt.vertices, cnt.edges, cnt.pieces, cnt.candidates, cnt.checked, cnt.families, cnt.walk_failures
     );
     println!(
         "median time per arch: survey (solve + sweep) {:.1} us, solve alone {:.1} us, prototype (given eta_s) {:.1} us, of which candidates {:.1} us",
