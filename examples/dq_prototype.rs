@@ -27,6 +27,8 @@ const BOX: f64 = 1e6;
 /// Relative feasibility tolerance of the prototype's own pre-filters (the verdict is the
 /// crate's: `Settings::adm_tol`).
 const TOL: f64 = 1e-9;
+/// DQ_DEBUG=<case>: print that case's polygon and walk.
+static DEBUG: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
 
 struct Rng(u64);
 impl Rng {
@@ -196,6 +198,65 @@ fn candidates(
     };
     let mut out = Vec::new();
 
+    if walk {
+        // Q as a polygon (the box clipped by every sliding half-plane), then the walk of the
+        // ridge along each of its sliding edges
+        let poly = q_polygon(&rows);
+        if DEBUG.load(std::sync::atomic::Ordering::Relaxed) {
+            for (q, e) in &poly {
+                eprintln!("vertex {q:?} edge row {e} {:?}", rows[*e].slide);
+            }
+        }
+        cnt.vertices += poly.len();
+        for k in 0..poly.len() {
+            let (q0, ri) = poly[k];
+            let q1 = poly[(k + 1) % poly.len()].0;
+            let Some(sl) = rows[ri].slide else {
+                continue; // a side of the box
+            };
+            let len = ((q1[0] - q0[0]).powi(2) + (q1[1] - q0[1]).powi(2)).sqrt();
+            if len <= 1e-12 * scale(q0) {
+                continue;
+            }
+            cnt.edges += 1;
+            // parametrised from the foot of the perpendicular from the origin (not from a
+            // vertex, which may be on the box, 10⁶ away: t would lose ~10 digits)
+            let (a, b) = (rows[ri].a, rows[ri].b);
+            let na2 = a[0] * a[0] + a[1] * a[1];
+            let p0 = [-b * a[0] / na2, -b * a[1] / na2];
+            let d = [-a[1] / na2.sqrt(), a[0] / na2.sqrt()];
+            let tof = |q: [f64; 2]| (q[0] - p0[0]) * d[0] + (q[1] - p0[1]) * d[1];
+            let (t0, t1) = (tof(q0), tof(q1));
+            let q0 = p0;
+            let hr = hinge_rows(js, q0, d);
+            let cs = column(sl.1, js.beta[sl.0], 0.0);
+            for (t, eta, w, case, e, i, r) in walk_edge(&hr, (t0, t1), cs, js, cnt) {
+                if DEBUG.load(std::sync::atomic::Ordering::Relaxed) {
+                    eprintln!("  edge {k}: t = {t} in [{t0}, {t1}], eta = {eta}, w = {w}, {case}, rows {:?} {:?} {:?}", hkind(&hr[e]), hkind(&hr[i]), r.map(|r| hkind(&hr[r])));
+                }
+                let p = [q0[0] + t * d[0], q0[1] + t * d[1]];
+                let on_box = p[0].abs() >= BOX * (1.0 - 1e-9) || p[1].abs() >= BOX * (1.0 - 1e-9);
+                if !(eta > eta_lo && eta < eta_hi) || on_box {
+                    continue;
+                }
+                let mut support = [sl, hkind(&hr[e]), hkind(&hr[i]), sl];
+                let mut size = 3;
+                if let Some(r) = r {
+                    support[3] = hkind(&hr[r]);
+                    size = 4;
+                }
+                out.push(Cand {
+                    x: [p[0], p[1], w],
+                    eta,
+                    case,
+                    support,
+                    size,
+                });
+            }
+        }
+        cnt.candidates += out.len();
+        return out;
+    }
     // V: vertices of Q (pairs of rows), then crossings of two hinge lines in (η, w)
     let mut verts: Vec<[f64; 2]> = Vec::new();
     for i in 0..rows.len() {
@@ -551,6 +612,74 @@ fn walk_edge(
     out
 }
 
+/// Q ∩ box as a convex polygon: its vertices in order, each with the index (in `rows`) of
+/// the row whose line carries the edge from it to the next vertex. Sutherland–Hodgman
+/// clipping of the box by each sliding half-plane: O(rows · vertices).
+fn q_polygon(rows: &[Row]) -> Vec<([f64; 2], usize)> {
+    let boxes: Vec<usize> = (0..rows.len())
+        .filter(|&k| rows[k].slide.is_none())
+        .collect();
+    // box rows in the order h ≤ B, −h ≤ B, v ≤ B, −v ≤ B; counter-clockwise from (B, −B)
+    let (hp, hm, vp, vm) = (boxes[0], boxes[1], boxes[2], boxes[3]);
+    let mut poly = vec![
+        ([BOX, -BOX], hp),
+        ([BOX, BOX], vp),
+        ([-BOX, BOX], hm),
+        ([-BOX, -BOX], vm),
+    ];
+    for (ri, r) in rows.iter().enumerate().filter(|(_, r)| r.slide.is_some()) {
+        if poly.is_empty() {
+            break;
+        }
+        let f = |p: [f64; 2]| r.a[0] * p[0] + r.a[1] * p[1] + r.b;
+        let mut next = Vec::with_capacity(poly.len() + 1);
+        for k in 0..poly.len() {
+            let (p, e) = poly[k];
+            let q = poly[(k + 1) % poly.len()].0;
+            let (fp, fq) = (f(p), f(q));
+            if fp <= 0.0 {
+                next.push((p, e));
+                if fq > 0.0 {
+                    let s = fp / (fp - fq);
+                    next.push(([p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])], ri));
+                }
+            } else if fq <= 0.0 {
+                let s = fp / (fp - fq);
+                next.push(([p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])], e));
+            }
+        }
+        // drop zero-length edges (a vertex repeated)
+        let mut clean: Vec<([f64; 2], usize)> = Vec::with_capacity(next.len());
+        for k in 0..next.len() {
+            let (p, _) = next[k];
+            let q = next[(k + 1) % next.len()].0;
+            let sc = 1.0 + p[0].abs() + p[1].abs();
+            if (p[0] - q[0]).abs() + (p[1] - q[1]).abs() > 1e-13 * sc || next.len() == 1 {
+                clean.push(next[k]);
+            }
+        }
+        poly = clean;
+    }
+    // each vertex again from its two lines (clipping from the box's corners leaves absolute
+    // errors of order BOX · 1e-16)
+    let m = poly.len();
+    (0..m)
+        .map(|k| {
+            let (p, e) = poly[k];
+            let (r, s) = (&rows[poly[(k + m - 1) % m].1], &rows[e]);
+            let det = r.a[0] * s.a[1] - r.a[1] * s.a[0];
+            if det == 0.0 {
+                return (p, e);
+            }
+            let q = [
+                (-r.b * s.a[1] + s.b * r.a[1]) / det,
+                (-r.a[0] * s.b + s.a[0] * r.b) / det,
+            ];
+            (q, e)
+        })
+        .collect()
+}
+
 fn det3(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> f64 {
     a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
         + a[2] * (b[0] * c[1] - b[1] * c[0])
@@ -717,6 +846,16 @@ fn main() {
     // DQ_BRUTE=1: every pair/triple of hinge rows (O(n^3) per edge) instead of the walk of
     // the ridge along each edge (O(n) per breakpoint)
     let walk = !std::env::var("DQ_BRUTE").is_ok_and(|v| v == "1");
+    // DQ_MODE: "random" (default: arch-like and arbitrary springings, 3-8 voussoirs),
+    // "symmetric" (equal voussoirs, 3-12: mirror pairs, where families may appear) or
+    // "large" (arch-like, 12-24 voussoirs: how the times scale) or "p48" (48 equal
+    // voussoirs, symmetric: the coarse discretisation `survey` uses for a continuous arch)
+    let mode_s = std::env::var("DQ_MODE").unwrap_or_else(|_| "random".into());
+    let mode = mode_s.as_str();
+    assert!(
+        ["random", "symmetric", "large", "p48"].contains(&mode),
+        "DQ_MODE must be random, symmetric, large or p48, not {mode}"
+    );
     let mut rng = Rng(0x1234_5678_9abc_def1);
     let (mut agree, mut agree_nonempty, mut differ, mut skipped) = (0usize, 0usize, 0usize, 0usize);
     let (mut states_ref, mut states_dq) = (0usize, 0usize);
@@ -734,19 +873,41 @@ fn main() {
         // three quarters arch-like (springings within 0.6 rad of a semicircle's, 3-8
         // voussoirs), one quarter arbitrary (spans 0.3-3.8 rad anywhere, 3-4 voussoirs), as
         // tests/it/search_reference.rs; μ within 2 % of μ_ms, within 30 %, or up to 3
-        let wild = case % 4 == 3;
+        let wild = mode == "random" && case % 4 == 3;
         let (n, br, bl) = if wild {
             let n = 3 + (rng.next() * 2.0) as usize;
             let br = -1.2 + 2.6 * rng.next();
             (n, br, br + 0.3 + 3.5 * rng.next())
         } else {
-            (
-                3 + (rng.next() * 6.0) as usize,
-                -0.6 + 1.2 * rng.next(),
-                PI - 0.6 + 1.2 * rng.next(),
-            )
+            let n = match mode {
+                "large" => 12 + (rng.next() * 13.0) as usize, // 12..=24 voussoirs
+                "symmetric" => 3 + (rng.next() * 10.0) as usize, // 3..=12
+                "p48" => 48,
+                _ => 3 + (rng.next() * 6.0) as usize, // 3..=8
+            };
+            let br = -0.6 + 1.2 * rng.next();
+            let bl = if mode == "symmetric" || mode == "p48" {
+                PI - br
+            } else {
+                PI - 0.6 + 1.2 * rng.next()
+            };
+            (n, br, bl)
         };
-        let joints = random_joints(&mut rng, br, bl, n);
+        let joints = if mode == "symmetric" || mode == "p48" {
+            // equal voussoirs, exactly mirror-symmetric angles
+            let mut j: Vec<f64> = (0..=n)
+                .map(|k| br + (bl - br) * k as f64 / n as f64)
+                .collect();
+            for k in 0..=n / 2 {
+                j[n - k] = PI - j[k];
+            }
+            if n % 2 == 0 {
+                j[n / 2] = 0.5 * PI;
+            }
+            j
+        } else {
+            random_joints(&mut rng, br, bl, n)
+        };
         let u = rng.next();
         let arch = Arch::new(br, bl, WeightModel::Centreline)
             .and_then(|a| a.with_joints(&joints))
@@ -781,6 +942,10 @@ fn main() {
         };
         let eta_lo = reference.eta_s * (1.0 + settings.root_slack);
         let js = joints_of(&arch, &joints);
+        DEBUG.store(
+            std::env::var("DQ_DEBUG").is_ok_and(|v| v == case.to_string()),
+            std::sync::atomic::Ordering::Relaxed,
+        );
         let t = Instant::now();
         let cands = candidates(
             &js,
@@ -889,7 +1054,7 @@ fn main() {
     }
     let _ = Location::Interior;
     let ms = |v: &mut Vec<f64>| median(v) * 1e6;
-    println!("=== dq_prototype: {cases} random discrete arches (centreline weight; {wild_count} with arbitrary springings; mu in (mu_ms, max(3, 2 mu_ms)]) ===");
+    println!("=== dq_prototype: {cases} random discrete arches, DQ_MODE={mode} (centreline weight; {wild_count} with arbitrary springings; mu in (mu_ms, max(3, 2 mu_ms)]; median voussoirs {}) ===", median(&mut sizes.iter().map(|&v| v as f64).collect::<Vec<_>>()));
     println!(
         "candidates: {}",
         if walk {
