@@ -3,12 +3,19 @@
 //! instead of by the sweep of P(η) in η. Design and proof: docs/design/limit-states-on-boundary.md.
 //!
 //! For each random arch: `limit_states::survey` (the reference: the sweep), then the
-//! candidates on ∂Q — V (vertices of Q: crossings of two hinge lines in the (η, w) plane,
-//! which covers the apex case V2 too), E1 (an edge of Q: three concurrent hinge rows, a
-//! quadratic per triple), E2 (an edge: two hinges with dependent columns, det B(η) = 0) —
-//! each checked with the crate's public API (`State::verdict`, `mechanism::find`). Prints the
-//! agreements, the disagreements (with details), the checks of the theorem on the sweep's
-//! states, and the median times.
+//! candidates on ∂Q. Every mechanism has Σϑ⁺ = Σϑ⁻ (third row of B) so, unless it is pure
+//! sliding, an E and an I row are active and the w-band at (h, v) is closed: η = g(h, v).
+//! The default search walks this ridge along each edge of the polygon Q (Q ∩ box, by
+//! clipping): its ends (vertices of Q, case "V"), its breakpoints where a third hinge row
+//! joins ("E1", a quadratic per row, O(n) per breakpoint) and the points of each piece where
+//! the sliding column and the piece's E and I columns are dependent ("E2", det B(η) = 0).
+//! DQ_BRUTE=1 instead crosses every E/I pair of hinge lines at every vertex of Q and solves
+//! every mixed triple of hinge rows on every edge (O(n³) per edge), DQ_ALL_KINDS=1 with it
+//! also the E,E / I,I pairs and E,E,E / I,I,I triples. Each candidate is checked with the
+//! crate's public API (`State::verdict`; a cofactor sign test when exactly 4 contacts are
+//! active, `mechanism::find` otherwise). Prints the agreements, the disagreements (with
+//! details), checks of the claims on the sweep's states, the work and the median times.
+//! DQ_MODE = random (default) | symmetric | large | p48 selects the arches (see `main`).
 //!
 //! `cargo run --release --example dq_prototype [CASES]` (default 240).
 
@@ -859,7 +866,7 @@ fn main() {
     let mut rng = Rng(0x1234_5678_9abc_def1);
     let (mut agree, mut agree_nonempty, mut differ, mut skipped) = (0usize, 0usize, 0usize, 0usize);
     let (mut states_ref, mut states_dq) = (0usize, 0usize);
-    let (mut hinge_only, mut off_boundary) = (0usize, 0usize);
+    let (mut hinge_only, mut off_boundary, mut band_open) = (0usize, 0usize, 0usize);
     let mut by_case = std::collections::BTreeMap::<&str, usize>::new();
     let (mut t_survey, mut t_solve, mut t_dq) = (Vec::new(), Vec::new(), Vec::new());
     let mut t_gen = Vec::new();
@@ -990,6 +997,21 @@ fn main() {
             if !s.pattern.iter().any(|c| !c.kind.is_hinge()) {
                 off_boundary += 1;
             }
+            // the band of w at (h, v) is closed there: η = g(h, v)
+            let hr = hinge_rows(&js, [s.x[0], s.x[1]], [0.0, 0.0]);
+            let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+            for r in &hr {
+                let v = hval(r, 0.0, s.eta);
+                if r.upper {
+                    hi = hi.min(v);
+                } else {
+                    lo = lo.max(v);
+                }
+            }
+            let sc = 1.0 + s.x.iter().map(|v| v.abs()).sum::<f64>();
+            if hi - lo > 1e-9 * sc * s.eta.max(1e-3) {
+                band_open += 1;
+            }
         }
         states_ref += reference.above.len();
         states_dq += found.len();
@@ -1071,7 +1093,7 @@ fn main() {
     );
     println!("limit states above eta_s: sweep {states_ref}, prototype {states_dq}; prototype by case: {by_case:?}");
     println!(
-        "theorem on the sweep's states: hinge-only mechanism on the active set: {hinge_only}, no active sliding row: {off_boundary}"
+        "theorem on the sweep's states: hinge-only mechanism on the active set: {hinge_only}, no active sliding row: {off_boundary}, w-band not closed (eta > g(h, v)): {band_open}"
     );
     println!(
         "prototype work: Q vertices {} edges {} ridge pieces {} candidates {} checked (distinct) {} degenerate supports (families) {} walks cut off {}",
