@@ -215,6 +215,41 @@ fn candidates(
             }
         }
         cnt.vertices += poly.len();
+        // V2: an apex of joint k (both its sliding lines meet: N_k = T_k = 0) has M_k = 0,
+        // so w = −m_k(q) for every η, and E_k, I_k are always active: the ridge is the
+        // vertical segment over q; its events are where another hinge row reaches w
+        for k in 0..poly.len() {
+            let (q, e1) = poly[k];
+            let e0 = poly[(k + poly.len() - 1) % poly.len()].1;
+            let (Some((j0, _)), Some((j1, _))) = (rows[e0].slide, rows[e1].slide) else {
+                continue;
+            };
+            if j0 != j1 {
+                continue;
+            }
+            let hr = hinge_rows(js, q, [0.0, 0.0]);
+            let w = -ev(&js.m[j0], q);
+            for r in hr.iter().filter(|r| r.j != j0) {
+                if r.c[2] == 0.0 {
+                    continue;
+                }
+                let eta = (w - r.c[0]) / r.c[2];
+                if eta > eta_lo && eta < eta_hi && in_band(&hr, 0.0, eta, w, TOL * scale(q)) {
+                    out.push(Cand {
+                        x: [q[0], q[1], w],
+                        eta,
+                        case: "V2",
+                        support: [
+                            rows[e0].slide.unwrap(),
+                            rows[e1].slide.unwrap(),
+                            hkind(r),
+                            hkind(r),
+                        ],
+                        size: 3,
+                    });
+                }
+            }
+        }
         for k in 0..poly.len() {
             let (q0, ri) = poly[k];
             let q1 = poly[(k + 1) % poly.len()].0;
