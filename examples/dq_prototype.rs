@@ -894,6 +894,9 @@ fn main() {
     // voussoirs, symmetric: the coarse discretisation `survey` uses for a continuous arch)
     let mode_s = std::env::var("DQ_MODE").unwrap_or_else(|_| "random".into());
     let mode = mode_s.as_str();
+    let skip: Vec<String> = std::env::var("DQ_SKIP")
+        .map(|v| v.split(',').map(str::to_string).collect())
+        .unwrap_or_default();
     assert!(
         ["random", "symmetric", "large", "p48"].contains(&mode),
         "DQ_MODE must be random, symmetric, large or p48, not {mode}"
@@ -989,7 +992,7 @@ fn main() {
             std::sync::atomic::Ordering::Relaxed,
         );
         let t = Instant::now();
-        let cands = candidates(
+        let mut cands = candidates(
             &js,
             mu,
             (eta_lo, 2.0 * (1.0 - 1e-9)),
@@ -997,6 +1000,8 @@ fn main() {
             walk,
             &mut cnt,
         );
+        // DQ_SKIP=V,E1,...: drop those cases (shows that each case is needed)
+        cands.retain(|c| !skip.iter().any(|k| k == c.case));
         t_gen.push(t.elapsed().as_secs_f64());
         let mut found: Vec<Found> = Vec::new();
         for c in &cands {
