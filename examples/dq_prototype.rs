@@ -892,14 +892,15 @@ fn main() {
     // "symmetric" (equal voussoirs, 3-12: mirror pairs, where families may appear) or
     // "large" (arch-like, 12-24 voussoirs: how the times scale) or "p48" (48 equal
     // voussoirs, symmetric: the coarse discretisation `survey` uses for a continuous arch)
+    // or "p96" (96: the fine one)
     let mode_s = std::env::var("DQ_MODE").unwrap_or_else(|_| "random".into());
     let mode = mode_s.as_str();
     let skip: Vec<String> = std::env::var("DQ_SKIP")
         .map(|v| v.split(',').map(str::to_string).collect())
         .unwrap_or_default();
     assert!(
-        ["random", "symmetric", "large", "p48"].contains(&mode),
-        "DQ_MODE must be random, symmetric, large or p48, not {mode}"
+        ["random", "symmetric", "large", "p48", "p96"].contains(&mode),
+        "DQ_MODE must be random, symmetric, large, p48 or p96, not {mode}"
     );
     let mut rng = Rng(0x1234_5678_9abc_def1);
     let (mut agree, mut agree_nonempty, mut differ, mut skipped) = (0usize, 0usize, 0usize, 0usize);
@@ -928,17 +929,18 @@ fn main() {
                 "large" => 12 + (rng.next() * 13.0) as usize, // 12..=24 voussoirs
                 "symmetric" => 3 + (rng.next() * 10.0) as usize, // 3..=12
                 "p48" => 48,
+                "p96" => 96,
                 _ => 3 + (rng.next() * 6.0) as usize, // 3..=8
             };
             let br = -0.6 + 1.2 * rng.next();
-            let bl = if mode == "symmetric" || mode == "p48" {
+            let bl = if mode == "symmetric" || mode == "p48" || mode == "p96" {
                 PI - br
             } else {
                 PI - 0.6 + 1.2 * rng.next()
             };
             (n, br, bl)
         };
-        let joints = if mode == "symmetric" || mode == "p48" {
+        let joints = if mode == "symmetric" || mode == "p48" || mode == "p96" {
             // equal voussoirs, exactly mirror-symmetric angles
             let mut j: Vec<f64> = (0..=n)
                 .map(|k| br + (bl - br) * k as f64 / n as f64)
