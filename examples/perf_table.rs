@@ -96,7 +96,11 @@ fn main() {
         ),
         ("process_solve_ms", {
             let (bin, _) = binaries();
-            process_cpu_ms(&bin, &["solve", "--alpha", "0", "--mu", "0.35", "--json"], 50)
+            process_cpu_ms(
+                &bin,
+                &["solve", "--alpha", "0", "--mu", "0.35", "--json"],
+                50,
+            )
         }),
         ("process_hello_ms", {
             let (_, hello) = binaries();

@@ -234,6 +234,18 @@ impl Arch {
         })
     }
 
+    /// The joint within 1e-9 rad of `beta` on a discrete arch, else `beta`: an angle given
+    /// in decimal (degrees, say) that is meant as a joint rarely lands on it exactly.
+    pub fn snap_to_joint(&self, beta: Radians) -> Radians {
+        match &self.layout {
+            JointLayout::Discrete(j) => j
+                .iter()
+                .copied()
+                .find(|j| (j - beta).abs() <= 1e-9)
+                .unwrap_or(beta),
+            JointLayout::Continuous => beta,
+        }
+    }
     /// (sin β_R, cos β_R) of the right springing, computed once with the arch.
     #[inline]
     pub fn right_sin_cos(&self) -> (f64, f64) {

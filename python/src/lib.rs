@@ -363,17 +363,11 @@ fn build_load(
     beta_deg: Option<f64>,
     joint: Option<i64>,
 ) -> PyResult<LiveLoad> {
-    let joints: Vec<f64> = match arch.layout() {
-        JointLayout::Discrete(j) => j.clone(),
-        JointLayout::Continuous => Vec::new(),
+    let joints: &[f64] = match arch.layout() {
+        JointLayout::Discrete(j) => j,
+        JointLayout::Continuous => &[],
     };
-    let snap = |b: f64| {
-        joints
-            .iter()
-            .copied()
-            .find(|j| (j - b).abs() <= 1e-9)
-            .unwrap_or(b)
-    };
+    let snap = |b: f64| arch.snap_to_joint(b);
     let load = match (kind, beta, beta_deg, joint) {
         ("horizontal", None, None, None) => LiveLoad::Horizontal { towards_right },
         ("point", Some(b), None, None) => {

@@ -43,19 +43,11 @@ impl LiveLoadArgs {
     /// The load on `arch`, checked (a point load must lie on the arch; the error names the
     /// flag the angle came in).
     pub(crate) fn build(&self, arch: &Arch) -> Result<LiveLoad, InputError> {
-        let joints: Vec<f64> = match arch.layout() {
-            JointLayout::Discrete(j) => j.clone(),
-            JointLayout::Continuous => Vec::new(),
+        let joints: &[f64] = match arch.layout() {
+            JointLayout::Discrete(j) => j,
+            JointLayout::Continuous => &[],
         };
-        // an angle given within 1e-9 rad of a joint means the joint (decimal degrees rarely
-        // land on it exactly)
-        let snap = |b: f64| {
-            joints
-                .iter()
-                .copied()
-                .find(|j| (j - b).abs() <= 1e-9)
-                .unwrap_or(b)
-        };
+        let snap = |b: f64| arch.snap_to_joint(b);
         let load = if self.horizontal {
             LiveLoad::Horizontal {
                 towards_right: true,
