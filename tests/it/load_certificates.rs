@@ -3,7 +3,7 @@
 //! tampering (the bracket, a Farkas vector, the list of limit states, the load); bad
 //! input on the command line.
 
-use crate::search_reference::{random_joints, Rng};
+use crate::search_reference::Rng;
 use arch_enum::certificate::{
     certify_load, verify, Certificate, Claim, LoadSearchMethod, Report, Side, Transfer,
 };
@@ -280,39 +280,14 @@ fn random_discrete_arches_certify_and_verify() {
     let (mut bracketed, mut other, mut points, mut proved, mut wide) = (0, 0, 0, 0, 0);
     let mut failures = Vec::new();
     for case in 0..count {
-        let n = 3 + (rng.next() * 4.0) as usize;
-        let br = -0.5 + 1.0 * rng.next();
-        let bl = PI - 0.5 + 1.0 * rng.next();
-        let joints = random_joints(&mut rng, br, bl, n);
-        let weight = if rng.next() < 0.3 {
-            WeightModel::Centroid
-        } else {
-            WeightModel::Centreline
-        };
-        let arch = Arch::new(br, bl, weight)
-            .unwrap()
-            .with_joints(&joints)
-            .unwrap();
-        let mu = if rng.next() < 0.2 {
-            f64::INFINITY
-        } else {
-            0.3 + 1.5 * rng.next()
-        };
-        let eta = 0.15 + 0.5 * rng.next();
-        let load = match (rng.next() * 4.0) as usize {
-            0 => LiveLoad::Horizontal {
-                towards_right: true,
-            },
-            1 => LiveLoad::Horizontal {
-                towards_right: false,
-            },
-            2 => LiveLoad::Point {
-                beta: joints[1 + (rng.next() * (joints.len() - 2) as f64) as usize],
-            },
-            _ => LiveLoad::Point {
-                beta: br + (bl - br) * (0.05 + 0.9 * rng.next()),
-            },
-        };
+        let crate::load_reference::RandomLoaded {
+            joints,
+            weight,
+            arch,
+            mu,
+            eta,
+            load,
+        } = crate::load_reference::random_loaded(&mut rng);
         let what = format!("case {case}: joints {joints:?} {weight:?} eta {eta} mu {mu} {load:?}");
         let outcome = survey(&arch, eta, mu, &load, &settings).unwrap();
         let c = match certify_load(&arch, eta, mu, &load, 1e-12, &settings) {

@@ -409,6 +409,63 @@ impl Case {
     }
 }
 
+/// A random small loaded discrete arch: 3–6 voussoirs, springings within ±0.5 rad of the
+/// semicircle's, 30 % true-centroid weight, 20 % μ = ∞ else μ in [0.3, 1.8], η in
+/// [0.15, 0.65], a horizontal load either way or a point load at a joint or inside a voussoir.
+pub(crate) struct RandomLoaded {
+    pub joints: Vec<f64>,
+    pub weight: WeightModel,
+    pub arch: Arch,
+    pub mu: f64,
+    pub eta: f64,
+    pub load: LiveLoad,
+}
+
+/// Draws a [`RandomLoaded`] case.
+pub(crate) fn random_loaded(rng: &mut Rng) -> RandomLoaded {
+    let n = 3 + (rng.next() * 4.0) as usize;
+    let br = -0.5 + 1.0 * rng.next();
+    let bl = PI - 0.5 + 1.0 * rng.next();
+    let joints = random_joints(rng, br, bl, n);
+    let weight = if rng.next() < 0.3 {
+        WeightModel::Centroid
+    } else {
+        WeightModel::Centreline
+    };
+    let arch = Arch::new(br, bl, weight)
+        .unwrap()
+        .with_joints(&joints)
+        .unwrap();
+    let mu = if rng.next() < 0.2 {
+        f64::INFINITY
+    } else {
+        0.3 + 1.5 * rng.next()
+    };
+    let eta = 0.15 + 0.5 * rng.next();
+    let load = match (rng.next() * 4.0) as usize {
+        0 => LiveLoad::Horizontal {
+            towards_right: true,
+        },
+        1 => LiveLoad::Horizontal {
+            towards_right: false,
+        },
+        2 => LiveLoad::Point {
+            beta: joints[1 + (rng.next() * (joints.len() - 2) as f64) as usize],
+        },
+        _ => LiveLoad::Point {
+            beta: br + (bl - br) * (0.05 + 0.9 * rng.next()),
+        },
+    };
+    RandomLoaded {
+        joints,
+        weight,
+        arch,
+        mu,
+        eta,
+        load,
+    }
+}
+
 /// The crate's limit states against the brute force on random small discrete arches:
 /// horizontal loads either way and point loads at a joint or inside a voussoir, both
 /// weight models, finite and infinite friction, thicknesses around the unloaded least
@@ -424,40 +481,15 @@ fn loaded_arches_match_the_brute_force() {
     let (mut compared, mut reduced, mut nonunique, mut skipped) = (0, 0, 0, 0);
     let mut failures = Vec::new();
     for case in 0..count {
-        let n = 3 + (rng.next() * 4.0) as usize;
-        let br = -0.5 + 1.0 * rng.next();
-        let bl = PI - 0.5 + 1.0 * rng.next();
-        let joints = random_joints(&mut rng, br, bl, n);
-        let centroid = rng.next() < 0.3;
-        let weight = if centroid {
-            WeightModel::Centroid
-        } else {
-            WeightModel::Centreline
-        };
-        let arch = Arch::new(br, bl, weight)
-            .unwrap()
-            .with_joints(&joints)
-            .unwrap();
-        let mu = if rng.next() < 0.2 {
-            f64::INFINITY
-        } else {
-            0.3 + 1.5 * rng.next()
-        };
-        let eta = 0.15 + 0.5 * rng.next();
-        let load = match (rng.next() * 4.0) as usize {
-            0 => LiveLoad::Horizontal {
-                towards_right: true,
-            },
-            1 => LiveLoad::Horizontal {
-                towards_right: false,
-            },
-            2 => LiveLoad::Point {
-                beta: joints[1 + (rng.next() * (joints.len() - 2) as f64) as usize],
-            },
-            _ => LiveLoad::Point {
-                beta: br + (bl - br) * (0.05 + 0.9 * rng.next()),
-            },
-        };
+        let RandomLoaded {
+            joints,
+            weight,
+            arch,
+            mu,
+            eta,
+            load,
+        } = random_loaded(&mut rng);
+        let centroid = weight == WeightModel::Centroid;
         let reference = Case::new(&joints, centroid, eta, mu, load).brute_force();
         let crate_states: Vec<f64> = match survey(&arch, eta, mu, &load, &settings).unwrap() {
             Ok(LoadOutcome::Limits(s)) => {
