@@ -227,20 +227,20 @@ pub fn trace(
         } else {
             // a finite μ on the associative branch: μ_last × 10^k
             let mut found = None;
-            let mut mu = lo.0;
-            while mu < LARGE_MU {
-                mu = (mu * 10.0).min(LARGE_MU);
-                let s = at(mu)?;
+            let mut last = lo.clone();
+            while last.0 < LARGE_MU {
+                let s = at((last.0 * 10.0).min(LARGE_MU))?;
                 if key(&s) == key(hi) {
                     found = Some(s);
                     break;
                 }
+                last = s;
             }
             match found {
                 Some(s) => s,
                 None => {
                     corners.push(Corner {
-                        below: (mu, at(mu)?.1),
+                        below: last,
                         above: hi.clone(),
                         bracketed: false,
                         exact: None,
@@ -384,23 +384,25 @@ fn exact_corner(
         .filter_map(|(mu, a)| least(a).map(|(l, x, p)| (*mu, l, x, p)))
         .collect();
     let start = states.iter().max_by_key(|s| s.3.len())?;
-    let row_of = |mu: f64, c: &Contact, side: Side| -> Option<LoadRow> {
-        rows(arch, joints, eta, mu, load)
-            .into_iter()
+    // a contact's row in a list of the arch's rows at one μ
+    let row_in = |list: &[LoadRow], c: &Contact, side: Side| -> Option<LoadRow> {
+        list.iter()
+            .copied()
             .find(|r| r.contact.beta == c.beta && r.contact.kind == c.kind && r.side == side)
     };
+    let at_start = rows(arch, joints, eta, start.0, load);
     // distinct activation functions (the extrados hinge on both sides of a loaded
     // section is one)
     let distinct = |pats: &[&Vec<(Contact, Side)>]| -> Option<Vec<(Contact, Side)>> {
         let mut union: Vec<(Contact, Side)> = Vec::new();
         for p in pats {
             for &(c, side) in p.iter() {
-                let r = row_of(start.0, &c, side)?;
+                let r = row_in(&at_start, &c, side)?;
                 // one function to rounding (the extrados hinge rows on both sides of a
                 // loaded section differ in the last bits only)
                 let close = |p: f64, q: f64| (p - q).abs() <= 1e-13 * (1.0 + p.abs().max(q.abs()));
                 let same = union.iter().any(|&(d, t)| {
-                    row_of(start.0, &d, t)
+                    row_in(&at_start, &d, t)
                         .is_some_and(|q| (0..4).all(|k| close(q.a[k], r.a[k])) && close(q.c, r.c))
                 });
                 if !same {
@@ -420,11 +422,14 @@ fn exact_corner(
         on_union(&s.3) || (s.1 - lambda).abs() <= SAME_LAMBDA * (1.0 + lambda.abs())
     };
     let eval = |z: &Vector5<f64>| -> Option<(Vector5<f64>, Matrix5<f64>)> {
-        let (mu, mu1) = (z[4], z[4] + 1.0);
+        let (at_mu, at_mu1) = (
+            rows(arch, joints, eta, z[4], load),
+            rows(arch, joints, eta, z[4] + 1.0, load),
+        );
         let mut f = Vector5::zeros();
         let mut jac = Matrix5::zeros();
         for (i, &(c, side)) in union.iter().enumerate() {
-            let (r, r1) = (row_of(mu, &c, side)?, row_of(mu1, &c, side)?);
+            let (r, r1) = (row_in(&at_mu, &c, side)?, row_in(&at_mu1, &c, side)?);
             let v = [z[0], z[1], z[2], z[3]];
             f[i] = (0..4).map(|k| r.a[k] * v[k]).sum::<f64>() + r.c;
             for k in 0..4 {
