@@ -268,14 +268,7 @@ pub fn survey_scene(survey: &Survey) -> Result<ArchScene, NoFigure> {
                     found.eta_s
                 ))
             })?;
-            return Ok(build_scene(
-                arch,
-                mu,
-                (st.eta, st.x),
-                st.pattern.clone(),
-                Some((st.mode, st.mechanism.clone())),
-                None,
-            ));
+            return Ok(swept_scene(arch, mu, st));
         }
     }
     match &sol.outcome {
@@ -294,6 +287,18 @@ pub fn limit_scene(arch: &Arch, mu: f64, ls: &LimitState) -> ArchScene {
         (ls.eta, ls.x),
         ls.pattern.clone(),
         Some((ls.mode, ls.mechanism.clone())),
+        None,
+    )
+}
+
+/// The scene of a limit state found by the search above η_s.
+fn swept_scene(arch: &Arch, mu: f64, st: &crate::limit_states::SweptState) -> ArchScene {
+    build_scene(
+        arch,
+        mu,
+        (st.eta, st.x),
+        st.pattern.clone(),
+        Some((st.mode, st.mechanism.clone())),
         None,
     )
 }
@@ -414,14 +419,7 @@ pub fn limit_scenes(
     if let (true, Outcome::Limit(ls)) = (found.mechanism_at_eta_s, &sv.solution.outcome) {
         out.push((
             format!("at eta_s: eta = {:.9}", ls.eta),
-            build_scene(
-                arch,
-                mu,
-                (ls.eta, ls.x),
-                ls.pattern.clone(),
-                Some((ls.mode, ls.mechanism.clone())),
-                None,
-            ),
+            limit_scene(arch, mu, ls),
         ));
     }
     for st in &found.above {
@@ -432,14 +430,7 @@ pub fn limit_scenes(
                 st.eta - found.eta_s,
                 st.eta
             ),
-            build_scene(
-                arch,
-                mu,
-                (st.eta, st.x),
-                st.pattern.clone(),
-                Some((st.mode, st.mechanism.clone())),
-                None,
-            ),
+            swept_scene(arch, mu, st),
         ));
     }
     let n = out.len();
