@@ -17,6 +17,18 @@ pub enum LpBackend {
     Highs,
 }
 
+/// How the limit states above η_s are searched where both methods apply (a discrete arch,
+/// or a continuous arch's discretisations, with the centreline weight at finite μ).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LimitStateSearch {
+    /// The walk along the ridge over the friction polygon ([`crate::limit_states::ridge`])
+    /// where P(η) has an interior point just above η_s; the sweep otherwise.
+    Ridge,
+    /// The sweep of P(η) in η ([`crate::limit_states::sweep`]) always: the reference, and
+    /// the method whose checked points a certificate carries.
+    Sweep,
+}
+
 /// Solver settings. `Settings::default()` is what the CLI uses.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Settings {
@@ -113,6 +125,10 @@ pub struct Settings {
     /// is reported as not done (η_s and λ_static stay exact). Default 256 (a 255-voussoir
     /// arch takes about a second at finite friction).
     pub sweep_max_joints: usize,
+    /// The ridge walk over the friction polygon (work about n² for n joints: a piece per
+    /// joint the thrust line moves across, each scanning every row) is run up to this many
+    /// joints; beyond, the sweep's budget decides. Default 2048 (about 0.3 s).
+    pub ridge_max_joints: usize,
     /// A contact is active at an event of the limit-state sweep when |φ| is below
     /// `event_tol` × (1 + ‖x‖₁). Default 1e-9.
     pub event_tol: f64,
@@ -132,6 +148,8 @@ pub struct Settings {
     /// `slope_step`; the extrapolation is second order, so ~δ² ≈ 1e-12 on a smooth side).
     /// Default 1e-9.
     pub boundary_match: f64,
+    /// How limit states above η_s are searched. Default `Ridge`.
+    pub limit_state_search: LimitStateSearch,
 }
 
 impl Default for Settings {
@@ -168,10 +186,12 @@ impl Default for Settings {
             event_tol: 1e-9,
             sweep_pieces: 48,
             sweep_max_joints: 256,
+            ridge_max_joints: 2048,
             unbounded_reactions: 1e6,
             sweep_min_eta: 1e-6,
             curve_samples: 16,
             lp_backend: LpBackend::Dense,
+            limit_state_search: LimitStateSearch::Ridge,
         }
     }
 }
@@ -254,6 +274,12 @@ impl Settings {
         count(
             "settings.sweep_max_joints",
             self.sweep_max_joints,
+            2,
+            1_000_000,
+        )?;
+        count(
+            "settings.ridge_max_joints",
+            self.ridge_max_joints,
             2,
             1_000_000,
         )?;

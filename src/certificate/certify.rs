@@ -12,7 +12,7 @@ use crate::limit::{LimitState, Outcome};
 use crate::limit_states::{survey, LimitStates, Survey, SweptState};
 use crate::lp;
 use crate::mechanism::Mechanism;
-use crate::settings::Settings;
+use crate::settings::{LimitStateSearch, Settings};
 use crate::state::State;
 use crate::statics::{actions, Affine, Reactions};
 use itertools::Itertools;
@@ -173,6 +173,15 @@ pub fn certify(
     gap: f64,
     settings: &Settings,
 ) -> Result<Certificate, NotCertified> {
+    // a discrete arch's certificate carries the sweep's checked points as evidence (the
+    // ridge walk has no evidence format yet): its search is the sweep
+    let settings = &match arch.layout() {
+        JointLayout::Discrete(_) => Settings {
+            limit_state_search: LimitStateSearch::Sweep,
+            ..settings.clone()
+        },
+        JointLayout::Continuous => settings.clone(),
+    };
     let survey = survey(arch, mu, settings).map_err(|e| NotCertified(e.to_string()))?;
     match survey.solution.outcome.clone() {
         Outcome::Limit(ls) => certify_limit(arch, mu, &survey, &ls, gap, settings),

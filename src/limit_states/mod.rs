@@ -13,6 +13,7 @@
 //!   stands at every η > 0 (`solve` says `NoCollapse`, η_s = 0) is swept from η = 0.
 
 pub mod poly;
+pub mod ridge;
 pub mod sweep;
 
 use crate::admissibility::WorkingSet;
@@ -23,7 +24,7 @@ use crate::limit::{bounded, solve, Outcome, Solution};
 use crate::mechanism;
 use crate::refine::{solve_system, Unknowns};
 use crate::search::margin_at;
-use crate::settings::Settings;
+use crate::settings::{LimitStateSearch, Settings};
 use crate::state::State;
 use crate::statics::Reactions;
 pub use sweep::{CheckedPoint, SweptState};
@@ -120,25 +121,47 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Strin
             settings.sweep_min_eta
         ));
     }
-    if let Some(ls) = hinges_only(arch, mu, eta_s, &x_s, mechanism_at_eta_s, settings) {
-        return Ok(ls);
+    // P(η) with an interior point just above η_s: at μ = ∞ no limit state lies above
+    // (`hinges_only`), at finite μ every one lies on the ridge over ∂Q (`ridge`)
+    let interior = interior_above(arch, mu, eta_s, settings);
+    if interior && mu.is_infinite() {
+        return Ok(hinges_only(arch, eta_s, &x_s, mechanism_at_eta_s, settings));
     }
+    let attained = bounded(arch, &x_s, settings);
+    let ridge = interior
+        && settings.limit_state_search == LimitStateSearch::Ridge
+        && matches!(arch.weight(), crate::arch::WeightModel::Centreline);
     if !matches!(arch.layout(), JointLayout::Discrete(_)) {
-        let attained = bounded(arch, &x_s, settings);
-        return continuous(arch, mu, eta_s, attained, mechanism_at_eta_s, settings);
+        return continuous(arch, mu, eta_s, attained, mechanism_at_eta_s, ridge, settings);
+    }
+    let lo = eta_s * (1.0 + settings.root_slack);
+    let mut walk_failure = None;
+    if ridge {
+        match ridge::search(arch, mu, lo, settings) {
+            Err(e) => walk_failure = Some(e),
+            Ok(r) => return Ok(LimitStates {
+                eta_s,
+                attained,
+                mechanism_at_eta_s,
+                above: r.states,
+                events: r.candidates,
+                no_mechanism: Vec::new(),
+                method: "ridge".into(),
+            }),
+        }
     }
     let sw = sweep::sweep(arch, mu, eta_s, x_s, settings);
     if let Some(f) = sw.failure {
-        return Err(f);
+        return Err(match walk_failure {
+            Some(w) => format!("{f}; {w}"),
+            None => f,
+        });
     }
-    let above = sw
-        .states
-        .into_iter()
-        .filter(|s| s.eta > eta_s * (1.0 + settings.root_slack))
-        .collect();
+    let mut above: Vec<SweptState> = sw.states.into_iter().filter(|s| s.eta > lo).collect();
+    ridge::sort_states(&mut above);
     Ok(LimitStates {
         eta_s,
-        attained: bounded(arch, &x_s, settings),
+        attained,
         mechanism_at_eta_s,
         above,
         events: sw.events,
@@ -166,39 +189,26 @@ fn from_vanishing_thickness(
     if let Some(f) = sw.failure {
         return Err(f);
     }
+    let mut above: Vec<SweptState> = sw.states.into_iter().filter(|s| s.eta > 0.0).collect();
+    ridge::sort_states(&mut above);
     Ok(LimitStates {
         eta_s: 0.0,
         attained: bounded(arch, &x0, settings),
         mechanism_at_eta_s: false,
-        above: sw.states.into_iter().filter(|s| s.eta > 0.0).collect(),
+        above,
         events: sw.events,
         no_mechanism: sw.no_mechanism,
         method: "sweep from eta = 0 (the arch stands at every eta > 0)".into(),
     })
 }
 
-/// At μ = ∞ every mechanism is made of hinges, and a hinge-only λ has λᵀφ(x) = L_e(λ)
-/// for every x (virtual work, formulation §6). At a limit state λᵀφ = 0, so L_e = 0 and
-/// every contact that moves is active at *every* admissible state: the admissible set
-/// P(η) has no interior. P(η) grows with η, so once a state with every φ strictly
-/// negative exists (a positive continuum margin, verified by the scan at the margin LP's
-/// state) there is no limit state at any larger η. Checked at η_s(1 + `root_slack`), the
-/// resolution at which η_s itself is decided: the search is then complete without a
-/// sweep. `None` when μ is finite or the margin there is not positive.
-fn hinges_only(
-    arch: &Arch,
-    mu: f64,
-    eta_s: f64,
-    x_s: &Reactions,
-    mechanism_at_eta_s: bool,
-    settings: &Settings,
-) -> Option<LimitStates> {
-    if mu.is_finite() {
-        return None;
-    }
+/// Whether P(η) has an interior point at η_s(1 + `root_slack`), the resolution at which η_s
+/// itself is decided: a positive continuum margin of the margin LP (verified by the scan at
+/// its state). P(η) grows with η, so it then has one at every larger η.
+fn interior_above(arch: &Arch, mu: f64, eta_s: f64, settings: &Settings) -> bool {
     let eta1 = eta_s * (1.0 + settings.root_slack);
     let mut ws = WorkingSet::initial(arch);
-    let m = margin_at(
+    margin_at(
         arch,
         eta1,
         mu,
@@ -206,8 +216,22 @@ fn hinges_only(
         &mut ws,
         settings,
     )
-    .ok()?;
-    (m.margin > 0.0).then(|| LimitStates {
+    .is_ok_and(|m| m.margin > 0.0)
+}
+
+/// At μ = ∞ every mechanism is made of hinges, and a hinge-only λ has λᵀφ(x) = L_e(λ)
+/// for every x (virtual work, formulation §6). At a limit state λᵀφ = 0, so L_e = 0 and
+/// every contact that moves is active at *every* admissible state: the admissible set
+/// P(η) has no interior. So once P(η) has an interior point ([`interior_above`]) there is
+/// no limit state at any larger η: the search is complete without a sweep.
+fn hinges_only(
+    arch: &Arch,
+    eta_s: f64,
+    x_s: &Reactions,
+    mechanism_at_eta_s: bool,
+    settings: &Settings,
+) -> LimitStates {
+    LimitStates {
         eta_s,
         attained: bounded(arch, x_s, settings),
         mechanism_at_eta_s,
@@ -215,7 +239,7 @@ fn hinges_only(
         events: 0,
         no_mechanism: Vec::new(),
         method: "hinges only (mu = inf): P(eta) has an interior just above eta_s".into(),
-    })
+    }
 }
 
 /// A continuous arch: sweep two discretisations (J and 2J equal pieces), carry each discrete
@@ -228,9 +252,11 @@ fn continuous(
     eta_s: f64,
     attained: bool,
     mechanism_at_eta_s: bool,
+    ridge: bool,
     settings: &Settings,
 ) -> Result<LimitStates, String> {
     let mut sets: Vec<(Vec<SweptState>, usize)> = Vec::new();
+    let mut walked = 0;
     for pieces in [settings.sweep_pieces, 2 * settings.sweep_pieces] {
         let (a, b) = (arch.beta_right(), arch.beta_left());
         let joints: Vec<f64> = (0..=pieces)
@@ -246,28 +272,43 @@ fn continuous(
             .clone()
             .with_joints(&joints)
             .map_err(|e| e.to_string())?;
-        let start = match solve(&discrete, mu, settings)
-            .map_err(|e| e.to_string())?
-            .outcome
-        {
-            Outcome::Limit(ls) => (ls.eta_static, ls.x_static),
-            Outcome::Unresolved {
-                least_static: Some(s),
-                ..
-            } => s,
-            _ => {
-                return Err(format!(
-                    "the {pieces}-piece discretisation has no least state"
-                ))
+        // the ridge of the discretisation, from η = 0: every point it gives is checked, and
+        // the list is complete wherever P(η) of the continuum (hence of the discretisation,
+        // which has fewer joints) has an interior point, i.e. above η_s(1 + root_slack)
+        let walk = ridge
+            .then(|| ridge::search(&discrete, mu, 0.0, settings).ok())
+            .flatten();
+        let (states, events) = match walk {
+            Some(r) => {
+                walked += 1;
+                (r.states, r.candidates)
+            }
+            None => {
+                let start = match solve(&discrete, mu, settings)
+                    .map_err(|e| e.to_string())?
+                    .outcome
+                {
+                    Outcome::Limit(ls) => (ls.eta_static, ls.x_static),
+                    Outcome::Unresolved {
+                        least_static: Some(s),
+                        ..
+                    } => s,
+                    _ => {
+                        return Err(format!(
+                            "the {pieces}-piece discretisation has no least state"
+                        ))
+                    }
+                };
+                let sw = sweep::sweep(&discrete, mu, start.0, start.1, settings);
+                if let Some(f) = sw.failure {
+                    return Err(format!("{pieces} pieces: {f}"));
+                }
+                (sw.states, sw.events)
             }
         };
-        let sw = sweep::sweep(&discrete, mu, start.0, start.1, settings);
-        if let Some(f) = sw.failure {
-            return Err(format!("{pieces} pieces: {f}"));
-        }
         let h = (b - a) / pieces as f64;
         let mut found: Vec<SweptState> = Vec::new();
-        for s in &sw.states {
+        for s in &states {
             let Some(r) = refine(arch, mu, s.eta, s.x, &merge(&s.pattern, h, a, b), settings)
             else {
                 continue;
@@ -278,8 +319,8 @@ fn continuous(
                 found.push(r);
             }
         }
-        found.sort_by(|p, q| p.eta.total_cmp(&q.eta));
-        sets.push((found, sw.events));
+        ridge::sort_states(&mut found);
+        sets.push((found, events));
     }
     let (fine, events) = sets.pop().expect("two discretisations");
     let (coarse, _) = sets.pop().expect("two discretisations");
@@ -302,9 +343,14 @@ fn continuous(
         events,
         no_mechanism: Vec::new(),
         method: format!(
-            "refined {}/{}",
+            "refined {}/{}{}",
             settings.sweep_pieces,
-            2 * settings.sweep_pieces
+            2 * settings.sweep_pieces,
+            match walked {
+                2 => " (ridge)",
+                1 => " (ridge and sweep)",
+                _ => "",
+            }
         ),
     })
 }

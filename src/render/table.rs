@@ -280,9 +280,14 @@ fn limit_states(survey: &Survey) -> String {
     let count = usize::from(states.mechanism_at_eta_s) + states.above.len();
     let _ = writeln!(
         s,
-        "limit states with eta in [eta_s, 2) ({}, {} events{}):",
+        "limit states with eta in [eta_s, 2) ({}, {} {}{}):",
         states.method,
         states.events,
+        if states.method.contains("ridge") {
+            "ridge points"
+        } else {
+            "events"
+        },
         if states.attained {
             ""
         } else {

@@ -693,8 +693,18 @@ fn infimum_sweep_starts_inside_the_box() {
 /// needs no search (associative) and answers.
 #[test]
 fn search_budget_is_said_not_hidden() {
+    // the ridge walk (centreline weight) is O(n) per piece and has no budget: 1000
+    // voussoirs are searched completely
     let (v, code) =
         crate::cli::json_of(&["solve", "--alpha", "0", "--blocks", "1000", "--mu", "0.5"]);
+    assert_eq!(code, 0);
+    assert_eq!(v["search"]["complete"], true);
+    assert_eq!(v["search"]["method"], "ridge");
+    assert_eq!(v["unique"], true);
+    // the true centroid needs the sweep, which has one
+    let (v, code) = crate::cli::json_of(&[
+        "solve", "--alpha", "0", "--blocks", "1000", "--mu", "0.5", "--weight", "centroid",
+    ]);
     assert_eq!(code, 0);
     assert_eq!(v["status"], "ok");
     assert!(v["eta"].as_f64().unwrap() > 0.1);

@@ -21,5 +21,6 @@ mod model;
 mod modes;
 mod plots;
 mod readme;
+mod ridge;
 mod reference;
 mod search_reference;

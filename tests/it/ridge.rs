@@ -1,0 +1,166 @@
+//! The ridge walk over the friction polygon (the default limit-state search of a discrete
+//! arch with the centreline weight at finite μ) against the sweep of P(η) (the reference
+//! method, `LimitStateSearch::Sweep`), on seeded random arches: the same limit states
+//! (η, reactions, active pattern, collapse mode), in the same order, on every arch. The
+//! brute force of `search_reference` checks both against the formulas on smaller samples.
+
+use crate::search_reference::{least_friction, random_joints, Rng};
+use arch_enum::limit_states::{search, LimitStates};
+use arch_enum::settings::LimitStateSearch;
+use arch_enum::{Arch, Settings, WeightModel};
+use std::f64::consts::PI;
+
+fn sweep_settings() -> Settings {
+    Settings {
+        limit_state_search: LimitStateSearch::Sweep,
+        ..Settings::default()
+    }
+}
+
+/// The two answers agree state by state; `Err` describes the first difference.
+fn same_answer(ridge: &LimitStates, sweep: &LimitStates) -> Result<(), String> {
+    if ridge.mechanism_at_eta_s != sweep.mechanism_at_eta_s || ridge.eta_s != sweep.eta_s {
+        return Err(format!(
+            "eta_s {} / {}, mechanism at eta_s {} / {}",
+            ridge.eta_s, sweep.eta_s, ridge.mechanism_at_eta_s, sweep.mechanism_at_eta_s
+        ));
+    }
+    let list = |s: &LimitStates| {
+        s.above
+            .iter()
+            .map(|a| format!("{:.15} {:?} {:?}", a.eta, a.x, a.pattern))
+            .collect::<Vec<_>>()
+    };
+    if ridge.above.len() != sweep.above.len() {
+        return Err(format!(
+            "ridge {:#?}\nsweep {:#?}",
+            list(ridge),
+            list(sweep)
+        ));
+    }
+    for (p, q) in ridge.above.iter().zip(&sweep.above) {
+        let scale = 1.0 + q.x.iter().map(|v| v.abs()).sum::<f64>();
+        let same = (p.eta - q.eta).abs() <= 1e-10 * q.eta
+            && (0..3).all(|k| (p.x[k] - q.x[k]).abs() <= 1e-8 * scale)
+            && p.mode == q.mode
+            && p.pattern.len() == q.pattern.len()
+            && p.pattern
+                .iter()
+                .zip(&q.pattern)
+                .all(|(a, b)| a.kind == b.kind && (a.beta - b.beta).abs() <= 1e-12);
+        if !same {
+            return Err(format!(
+                "ridge {:#?}\nsweep {:#?}",
+                list(ridge),
+                list(sweep)
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// 1 500 random discrete arches: arch-like and arbitrary springings, 2–12 voussoirs of
+/// random sizes, μ from just above μ_ms to 4 μ_ms. Every answer agrees, the ridge decides
+/// most of them itself (not by falling back to the sweep), and limit states above η_s are
+/// met on many (the comparison is not vacuous).
+#[test]
+fn ridge_and_sweep_agree_on_random_discrete_arches() {
+    let mut rng = Rng(0x5eed_0f_41d6e);
+    let (mut compared, mut by_ridge, mut above, mut both_failed) = (0, 0, 0, 0);
+    let mut differ: Vec<String> = Vec::new();
+    for case in 0..1500 {
+        let wild = case % 4 == 3;
+        let (br, bl) = if wild {
+            let br = -1.2 + 2.6 * rng.next();
+            (br, br + 0.4 + 3.3 * rng.next())
+        } else {
+            (-0.6 + 1.2 * rng.next(), PI - 0.6 + 1.2 * rng.next())
+        };
+        let blocks = 2 + (rng.next() * 11.0) as usize;
+        let joints = random_joints(&mut rng, br, bl, blocks);
+        let ms = least_friction(br, bl, &joints);
+        let mu = ms * (1.0 + 1e-3 + 3.0 * rng.next().powi(2));
+        if !mu.is_finite() {
+            continue;
+        }
+        let arch = Arch::new(br, bl, WeightModel::Centreline)
+            .unwrap()
+            .with_joints(&joints)
+            .unwrap();
+        let ridge = search(&arch, mu, &Settings::default()).unwrap();
+        let sweep = search(&arch, mu, &sweep_settings()).unwrap();
+        let text = format!("case {case}: beta_r = {br:?}, beta_l = {bl:?}, joints = {joints:?}, mu = {mu:?}");
+        match (ridge, sweep) {
+            (Ok(r), Ok(s)) => {
+                compared += 1;
+                by_ridge += usize::from(r.method == "ridge");
+                above += usize::from(!s.above.is_empty());
+                if let Err(e) = same_answer(&r, &s) {
+                    differ.push(format!("{text}\n{e}"));
+                }
+            }
+            (Err(_), Err(_)) => both_failed += 1,
+            (r, s) => differ.push(format!(
+                "{text}\nridge {:?}\nsweep {:?}",
+                r.map(|r| r.method),
+                s.map(|s| s.method)
+            )),
+        }
+    }
+    println!(
+        "{compared} compared ({by_ridge} by the ridge itself, {above} with limit states above eta_s), {both_failed} undecided by both, {} differ",
+        differ.len()
+    );
+    assert!(differ.is_empty(), "{}", differ.join("\n\n"));
+    assert!(compared >= 1200, "only {compared} arches compared");
+    assert!(by_ridge * 10 >= compared * 9, "the ridge decided only {by_ridge} of {compared}");
+    assert!(above >= 60, "only {above} arches with limit states above eta_s");
+}
+
+/// Symmetric arches of equal voussoirs (mirror images share η: the order of states with
+/// equal η is by pattern in both methods), and the equal-piece discretisations a
+/// continuous arch is searched on (48 and 96 pieces).
+#[test]
+fn ridge_and_sweep_agree_on_symmetric_and_fine_arches() {
+    let mut rng = Rng(99);
+    let mut compared = 0;
+    for case in 0..120 {
+        let alpha = -0.8 + 1.9 * rng.next();
+        let blocks = match case % 10 {
+            8 => 48,
+            9 => 96,
+            _ => 3 + (rng.next() * 14.0) as usize,
+        };
+        let (br, bl) = (-alpha, PI + alpha);
+        let joints: Vec<f64> = (0..=blocks)
+            .map(|i| {
+                if i == blocks {
+                    bl
+                } else {
+                    br + (bl - br) * i as f64 / blocks as f64
+                }
+            })
+            .collect();
+        let ms = least_friction(br, bl, &joints);
+        let mu = ms * (1.0 + 1e-3 + 2.0 * rng.next());
+        let arch = Arch::new(br, bl, WeightModel::Centreline)
+            .unwrap()
+            .with_joints(&joints)
+            .unwrap();
+        let ridge = search(&arch, mu, &Settings::default()).unwrap();
+        let sweep = search(&arch, mu, &sweep_settings()).unwrap();
+        if let (Ok(r), Ok(s)) = (&ridge, &sweep) {
+            compared += 1;
+            if let Err(e) = same_answer(r, s) {
+                panic!("case {case}: alpha = {alpha:?}, {blocks} voussoirs, mu = {mu:?}\n{e}");
+            }
+        } else {
+            assert_eq!(
+                ridge.is_ok(),
+                sweep.is_ok(),
+                "case {case}: alpha = {alpha:?}, {blocks} voussoirs, mu = {mu:?}"
+            );
+        }
+    }
+    assert!(compared >= 100, "only {compared} compared");
+}
