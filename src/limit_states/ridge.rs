@@ -171,6 +171,9 @@ pub fn search(arch: &Arch, mu: f64, eta_lo: f64, settings: &Settings) -> Result<
     let cands = candidates(&js, mu, eta_lo)?;
     let mut states: Vec<SweptState> = Vec::new();
     for c in &cands {
+        if !may_carry_mechanism(&js, mu, c, settings) {
+            continue;
+        }
         if let Some(s) = check(arch, mu, c, settings)? {
             let dup = states.iter().any(|p| {
                 (p.eta - s.eta).abs() <= 1e-9 * s.eta
@@ -412,6 +415,17 @@ fn walk_edge(
             let q2 = g[1] * d[3] - g[3] * d[1];
             let q1 = g[0] * d[3] + g[1] * d[2] - g[2] * d[1] - g[3] * d[0];
             let q0 = g[0] * d[2] - g[2] * d[0];
+            // no sign change on (lo, hi] and no extremum of the other sign inside: no root
+            // there (most rows, most pieces; a row that vanishes identically goes on)
+            let (lo, hi) = (t + eps, next.map_or(t1, |n| n.0.min(t1)) + eps);
+            let f = |x: f64| (q2 * x + q1) * x + q0;
+            let (flo, fhi) = (f(lo), f(hi));
+            if flo * fhi > 0.0 {
+                let v = -0.5 * q1 / q2;
+                if !(v > lo && v < hi) || f(v) * flo > 0.0 {
+                    continue;
+                }
+            }
             let mag = g.iter().chain(&d).fold(0.0f64, |m, v| m.max(v.abs()));
             let small = 1e-13 * mag * mag;
             if q2.abs() <= small && q1.abs() <= small {
@@ -423,7 +437,8 @@ fn walk_edge(
                 }
                 continue;
             }
-            for tr in quadratic_roots(q2, q1, q0, small) {
+            let (nr, roots) = quadratic_roots(q2, q1, q0, small);
+            for &tr in &roots[..nr] {
                 if tr > t + eps && tr <= t1 + eps && q(tr) > 0.0 && next.is_none_or(|n| tr < n.0)
                 {
                     next = Some((tr, r));
@@ -440,7 +455,8 @@ fn walk_edge(
         let k1 = f1 - f0 - k2;
         let small = 1e-14 * (f0.abs() + f1.abs() + f2.abs());
         if k2.abs() > small || k1.abs() > small {
-            for eta in quadratic_roots(k2, k1, f0, small) {
+            let (nr, roots) = quadratic_roots(k2, k1, f0, small);
+            for &eta in &roots[..nr] {
                 let den = d[1] + eta * d[3];
                 if den == 0.0 {
                     continue;
@@ -547,21 +563,79 @@ fn det3(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> f64 {
 }
 
 /// Real roots of q2 t² + q1 t + q0 (a linear equation when |q2| ≤ small; the caller has
-/// excluded q2 = q1 = 0).
-fn quadratic_roots(q2: f64, q1: f64, q0: f64, small: f64) -> Vec<f64> {
+/// excluded q2 = q1 = 0): up to two, the count first.
+fn quadratic_roots(q2: f64, q1: f64, q0: f64, small: f64) -> (usize, [f64; 2]) {
     if q2.abs() <= small {
-        return vec![-q0 / q1];
+        return (1, [-q0 / q1, 0.0]);
     }
     let disc = q1 * q1 - 4.0 * q2 * q0;
     if disc < -1e-12 * q1 * q1 {
-        return Vec::new();
+        return (0, [0.0; 2]);
     }
     let sq = disc.max(0.0).sqrt();
     let qq = -0.5 * (q1 + q1.signum() * sq);
     if qq == 0.0 {
-        return vec![0.0];
+        return (1, [0.0; 2]);
     }
-    vec![qq / q2, q0 / qq]
+    (2, [qq / q2, q0 / qq])
+}
+
+/// A pre-filter on the joints' rows (no trigonometry): `false` only where the answer of
+/// [`check`] is sure to be "no limit state" — the candidate is clearly not admissible
+/// (some φ above 100 `adm_tol` times its magnitude), or every contact is clearly active or
+/// clearly not (|φ| below `adm_tol`, or φ below −100 `adm_tol`, in units of its magnitude),
+/// exactly four are active, one sliding sense per joint, and the cofactors of their columns
+/// have mixed signs. Everything in between is left to `check`.
+fn may_carry_mechanism(js: &[JointRows], mu: f64, c: &Candidate, settings: &Settings) -> bool {
+    let p = [c.x[0], c.x[1]];
+    let tol = settings.adm_tol;
+    let mut active: [(usize, ContactKind); 4] = [(0, ContactKind::HingeExtrados); 4];
+    let mut count = 0;
+    for (j, jr) in js.iter().enumerate() {
+        let (n, t, m) = (ev(&jr.n, p), ev(&jr.t, p), ev(&jr.m, p) + c.x[2]);
+        for (kind, phi) in [
+            (ContactKind::HingeExtrados, m - 0.5 * c.eta * n),
+            (ContactKind::HingeIntrados, -m - 0.5 * c.eta * n),
+            (ContactKind::SlidePlus, t - mu * n),
+            (ContactKind::SlideMinus, -t - mu * n),
+        ] {
+            let mag = crate::statics::magnitude(kind, c.eta, mu, &c.x, settings.magnitude_floor);
+            let r = phi / mag;
+            if r > 100.0 * tol {
+                return false;
+            }
+            if r < -100.0 * tol {
+                continue;
+            }
+            if r.abs() > tol || count == 4 {
+                return true; // near the tolerance, or more than four active: let `check` decide
+            }
+            active[count] = (j, kind);
+            count += 1;
+        }
+    }
+    if count != 4 {
+        return true;
+    }
+    let slides = |k: ContactKind| matches!(k, ContactKind::SlidePlus | ContactKind::SlideMinus);
+    for a in 0..4 {
+        for b in a + 1..4 {
+            if active[a].0 == active[b].0 && slides(active[a].1) && slides(active[b].1) {
+                return true; // both senses at one joint
+            }
+        }
+    }
+    let cols: [[f64; 3]; 4] =
+        std::array::from_fn(|k| column(active[k].1, js[active[k].0].beta, c.eta));
+    let lam = [
+        det3(cols[1], cols[2], cols[3]),
+        -det3(cols[0], cols[2], cols[3]),
+        det3(cols[0], cols[1], cols[3]),
+        -det3(cols[0], cols[1], cols[2]),
+    ];
+    let big = lam.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let one_sign = lam.iter().all(|&v| v > 0.0) || lam.iter().all(|&v| v < 0.0);
+    one_sign || lam.iter().any(|v| v.abs() <= 1e-6 * big)
 }
 
 /// A candidate checked like a point of the sweep: admissible at every joint, and a
