@@ -132,22 +132,32 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Strin
         && settings.limit_state_search == LimitStateSearch::Ridge
         && matches!(arch.weight(), crate::arch::WeightModel::Centreline);
     if !matches!(arch.layout(), JointLayout::Discrete(_)) {
-        return continuous(arch, mu, eta_s, attained, mechanism_at_eta_s, ridge, settings);
+        return continuous(
+            arch,
+            mu,
+            eta_s,
+            attained,
+            mechanism_at_eta_s,
+            ridge,
+            settings,
+        );
     }
     let lo = eta_s * (1.0 + settings.root_slack);
     let mut walk_failure = None;
     if ridge {
         match ridge::search(arch, mu, lo, settings) {
             Err(e) => walk_failure = Some(e),
-            Ok(r) => return Ok(LimitStates {
-                eta_s,
-                attained,
-                mechanism_at_eta_s,
-                above: r.states,
-                events: r.candidates,
-                no_mechanism: Vec::new(),
-                method: "ridge".into(),
-            }),
+            Ok(r) => {
+                return Ok(LimitStates {
+                    eta_s,
+                    attained,
+                    mechanism_at_eta_s,
+                    above: r.states,
+                    events: r.candidates,
+                    no_mechanism: Vec::new(),
+                    method: "ridge".into(),
+                })
+            }
         }
     }
     let sw = sweep::sweep(arch, mu, eta_s, x_s, settings);

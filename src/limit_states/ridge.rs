@@ -144,7 +144,9 @@ struct Candidate {
 /// sweeps).
 pub fn search(arch: &Arch, mu: f64, eta_lo: f64, settings: &Settings) -> Result<Ridge, String> {
     if !applies(arch, mu) {
-        return Err("the ridge search needs a discrete arch, the centreline weight and finite mu".into());
+        return Err(
+            "the ridge search needs a discrete arch, the centreline weight and finite mu".into(),
+        );
     }
     let JointLayout::Discrete(joints) = arch.layout() else {
         unreachable!("checked by applies")
@@ -202,7 +204,12 @@ pub(crate) fn sort_states(states: &mut [SweptState]) {
             end += 1;
         }
         states[k..end].sort_by(|p, q| {
-            let key = |s: &SweptState| s.pattern.iter().map(|c| (c.beta, c.kind)).collect::<Vec<_>>();
+            let key = |s: &SweptState| {
+                s.pattern
+                    .iter()
+                    .map(|c| (c.beta, c.kind))
+                    .collect::<Vec<_>>()
+            };
             key(p)
                 .partial_cmp(&key(q))
                 .unwrap_or(std::cmp::Ordering::Equal)
@@ -215,7 +222,10 @@ pub(crate) fn sort_states(states: &mut [SweptState]) {
 fn candidates(js: &[JointRows], mu: f64, eta_lo: f64) -> Result<Vec<Candidate>, String> {
     let mut lines: Vec<Line> = Vec::with_capacity(2 * js.len() + 4);
     for (j, jr) in js.iter().enumerate() {
-        for (sg, kind) in [(1.0, ContactKind::SlidePlus), (-1.0, ContactKind::SlideMinus)] {
+        for (sg, kind) in [
+            (1.0, ContactKind::SlidePlus),
+            (-1.0, ContactKind::SlideMinus),
+        ] {
             lines.push(Line {
                 a: [sg * jr.t[0] - mu * jr.n[0], sg * jr.t[1] - mu * jr.n[1]],
                 b: sg * jr.t[2] - mu * jr.n[2],
@@ -439,8 +449,7 @@ fn walk_edge(
             }
             let (nr, roots) = quadratic_roots(q2, q1, q0, small);
             for &tr in &roots[..nr] {
-                if tr > t + eps && tr <= t1 + eps && q(tr) > 0.0 && next.is_none_or(|n| tr < n.0)
-                {
+                if tr > t + eps && tr <= t1 + eps && q(tr) > 0.0 && next.is_none_or(|n| tr < n.0) {
                     next = Some((tr, r));
                 }
             }

@@ -21,6 +21,6 @@ mod model;
 mod modes;
 mod plots;
 mod readme;
-mod ridge;
 mod reference;
+mod ridge;
 mod search_reference;

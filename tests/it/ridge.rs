@@ -65,7 +65,7 @@ fn same_answer(ridge: &LimitStates, sweep: &LimitStates) -> Result<(), String> {
 /// met on many (the comparison is not vacuous).
 #[test]
 fn ridge_and_sweep_agree_on_random_discrete_arches() {
-    let mut rng = Rng(0x5eed_0f_41d6e);
+    let mut rng = Rng(0x05ee_d0f4_1d6e);
     let (mut compared, mut by_ridge, mut above, mut both_failed) = (0, 0, 0, 0);
     let mut differ: Vec<String> = Vec::new();
     for case in 0..1500 {
@@ -89,7 +89,9 @@ fn ridge_and_sweep_agree_on_random_discrete_arches() {
             .unwrap();
         let ridge = search(&arch, mu, &Settings::default()).unwrap();
         let sweep = search(&arch, mu, &sweep_settings()).unwrap();
-        let text = format!("case {case}: beta_r = {br:?}, beta_l = {bl:?}, joints = {joints:?}, mu = {mu:?}");
+        let text = format!(
+            "case {case}: beta_r = {br:?}, beta_l = {bl:?}, joints = {joints:?}, mu = {mu:?}"
+        );
         match (ridge, sweep) {
             (Ok(r), Ok(s)) => {
                 compared += 1;
@@ -113,8 +115,14 @@ fn ridge_and_sweep_agree_on_random_discrete_arches() {
     );
     assert!(differ.is_empty(), "{}", differ.join("\n\n"));
     assert!(compared >= 1200, "only {compared} arches compared");
-    assert!(by_ridge * 10 >= compared * 9, "the ridge decided only {by_ridge} of {compared}");
-    assert!(above >= 60, "only {above} arches with limit states above eta_s");
+    assert!(
+        by_ridge * 10 >= compared * 9,
+        "the ridge decided only {by_ridge} of {compared}"
+    );
+    assert!(
+        above >= 60,
+        "only {above} arches with limit states above eta_s"
+    );
 }
 
 /// Symmetric arches of equal voussoirs (mirror images share η: the order of states with
