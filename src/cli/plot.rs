@@ -176,8 +176,6 @@ pub(crate) enum Figure {
 }
 
 pub(crate) fn run(figure: Figure, settings: &Settings, io: &mut Io) -> Exit {
-    use crate::figures;
-    use crate::render::{plot_arch, plot_curve, plot_ecc, plot_map};
     let (name, output) = match &figure {
         Figure::Curve { output, .. } => ("curve", output),
         Figure::Arch { output, .. } => ("arch", output),
@@ -190,113 +188,9 @@ pub(crate) fn run(figure: Figure, settings: &Settings, io: &mut Io) -> Exit {
         Ok((p, f)) => (p, f, output.width),
         Err(e) => return io.bad_input(&e),
     };
-    let bar = super::progress::Progress::new("map");
-    let progress = |done: usize, total: usize| bar.update(done, total);
-    let drawn: Result<Result<String, String>, figures::NoFigure> = match figure {
-        Figure::Curve {
-            alpha,
-            weight,
-            log_eta,
-            ..
-        } => {
-            let arches: Result<Vec<Arch>, InputError> = alpha
-                .iter()
-                .map(|&a| Arch::symmetric(a, weight.into()))
-                .collect();
-            match arches {
-                Ok(a) => figures::curves(&a, settings).map(|d| plot_curve::svg(&d, log_eta)),
-                Err(e) => return io.bad_input(&e),
-            }
-        }
-        Figure::Arch {
-            state: st,
-            limit_states,
-            ..
-        } => match plot_inputs(&st) {
-            Ok(a) if limit_states => {
-                figures::limit_scenes(&a, st.mu, settings).map(|s| plot_arch::svg_panels(&s))
-            }
-            Ok(a) => figures::scene(&a, st.mu, st.eta, settings).map(|s| plot_arch::svg(&s)),
-            Err(e) => return io.bad_input(&e),
-        },
-        Figure::Load {
-            arch,
-            eta,
-            mu,
-            live,
-            ..
-        } => match arch.build().and_then(|a| {
-            check_eta(eta)?;
-            check_mu(mu)?;
-            let load = live.build(&a)?;
-            Ok((a, load))
-        }) {
-            Ok((a, load)) => figures::load_scenes(&a, eta, mu, &load, settings)
-                .map(|s| plot_arch::svg_panels(&s)),
-            Err(e) => return io.bad_input(&e),
-        },
-        Figure::LoadCurve { curve, .. } if curve.json => {
-            return io.bad_input(&InputError::Inconsistent {
-                arg: "--json",
-                reason: "plot load-curve draws a figure; `arch-enum load-curve --json` prints the numbers".into(),
-            })
-        }
-        Figure::LoadCurve { curve, .. } => match curve.trace(settings) {
-            Ok((title, traced)) => Ok(crate::render::plot_load_curve::svg(&title, &traced)),
-            Err(e) => return io.bad_input(&e),
-        },
-        Figure::Eccentricity { state: st, .. } => match plot_inputs(&st) {
-            Ok(a) => figures::scene(&a, st.mu, st.eta, settings).map(|s| plot_ecc::svg(&s)),
-            Err(e) => return io.bad_input(&e),
-        },
-        Figure::Map {
-            arch,
-            n_eta,
-            n_mu,
-            log_eta,
-            threads,
-            ..
-        } => {
-            for (name, n) in [("--n-eta", n_eta), ("--n-mu", n_mu)] {
-                if !(4..=400).contains(&n) {
-                    let e = InputError::OutOfRange {
-                        arg: name,
-                        value: n.to_string(),
-                        range: "whole numbers 4 to 400".into(),
-                    };
-                    return io.bad_input(&e);
-                }
-            }
-            let threads = match threads {
-                None => figures::margin_map::available_threads(),
-                Some(t) if (1..=1024).contains(&t) => t,
-                Some(t) => {
-                    let e = InputError::OutOfRange {
-                        arg: "--threads",
-                        value: t.to_string(),
-                        range: "whole numbers 1 to 1024".into(),
-                    };
-                    return io.bad_input(&e);
-                }
-            };
-            let grid = figures::MapGrid {
-                n_eta,
-                n_mu,
-                log_eta,
-            };
-            match arch.build() {
-                Ok(a) => figures::map(&a, grid, threads, settings, &progress)
-                    .map(|m| plot_map::svg(&m, log_eta)),
-                Err(e) => return io.bad_input(&e),
-            }
-        }
-    };
-    let svg = match drawn {
-        Ok(Ok(s)) => s,
-        Ok(Err(reason)) | Err(figures::NoFigure(reason)) => {
-            io.err(&format!("no figure: {reason}\n"));
-            return Exit::NoAnswer;
-        }
+    let svg = match draw(figure, settings, io) {
+        Ok(s) => s,
+        Err(exit) => return exit,
     };
     let bytes = match format {
         Format::Svg => svg.into_bytes(),
@@ -317,6 +211,121 @@ pub(crate) fn run(figure: Figure, settings: &Settings, io: &mut Io) -> Exit {
     }
     io.out(&format!("wrote {}\n", path.display()));
     Exit::Answered
+}
+
+/// The figure as an SVG document; bad input and "no figure" are reported on `io` and
+/// come back as the command's exit.
+pub(crate) fn draw(figure: Figure, settings: &Settings, io: &mut Io) -> Result<String, Exit> {
+    use crate::figures;
+    use crate::render::{plot_arch, plot_curve, plot_ecc, plot_map};
+    let bar = super::progress::Progress::new("map");
+    let progress = |done: usize, total: usize| bar.update(done, total);
+    let drawn: Result<Result<String, String>, figures::NoFigure> = match figure {
+        Figure::Curve {
+            alpha,
+            weight,
+            log_eta,
+            ..
+        } => {
+            let arches: Result<Vec<Arch>, InputError> = alpha
+                .iter()
+                .map(|&a| Arch::symmetric(a, weight.into()))
+                .collect();
+            match arches {
+                Ok(a) => figures::curves(&a, settings).map(|d| plot_curve::svg(&d, log_eta)),
+                Err(e) => return Err(io.bad_input(&e)),
+            }
+        }
+        Figure::Arch {
+            state: st,
+            limit_states,
+            ..
+        } => match plot_inputs(&st) {
+            Ok(a) if limit_states => {
+                figures::limit_scenes(&a, st.mu, settings).map(|s| plot_arch::svg_panels(&s))
+            }
+            Ok(a) => figures::scene(&a, st.mu, st.eta, settings).map(|s| plot_arch::svg(&s)),
+            Err(e) => return Err(io.bad_input(&e)),
+        },
+        Figure::Load {
+            arch,
+            eta,
+            mu,
+            live,
+            ..
+        } => match arch.build().and_then(|a| {
+            check_eta(eta)?;
+            check_mu(mu)?;
+            let load = live.build(&a)?;
+            Ok((a, load))
+        }) {
+            Ok((a, load)) => figures::load_scenes(&a, eta, mu, &load, settings)
+                .map(|s| plot_arch::svg_panels(&s)),
+            Err(e) => return Err(io.bad_input(&e)),
+        },
+        Figure::LoadCurve { curve, .. } if curve.json => {
+            return Err(io.bad_input(&InputError::Inconsistent {
+                arg: "--json",
+                reason: "plot load-curve draws a figure; `arch-enum load-curve --json` prints the numbers".into(),
+            }))
+        }
+        Figure::LoadCurve { curve, .. } => match curve.trace(settings) {
+            Ok((title, traced)) => Ok(crate::render::plot_load_curve::svg(&title, &traced)),
+            Err(e) => return Err(io.bad_input(&e)),
+        },
+        Figure::Eccentricity { state: st, .. } => match plot_inputs(&st) {
+            Ok(a) => figures::scene(&a, st.mu, st.eta, settings).map(|s| plot_ecc::svg(&s)),
+            Err(e) => return Err(io.bad_input(&e)),
+        },
+        Figure::Map {
+            arch,
+            n_eta,
+            n_mu,
+            log_eta,
+            threads,
+            ..
+        } => {
+            for (name, n) in [("--n-eta", n_eta), ("--n-mu", n_mu)] {
+                if !(4..=400).contains(&n) {
+                    let e = InputError::OutOfRange {
+                        arg: name,
+                        value: n.to_string(),
+                        range: "whole numbers 4 to 400".into(),
+                    };
+                    return Err(io.bad_input(&e));
+                }
+            }
+            let threads = match threads {
+                None => figures::margin_map::available_threads(),
+                Some(t) if (1..=1024).contains(&t) => t,
+                Some(t) => {
+                    let e = InputError::OutOfRange {
+                        arg: "--threads",
+                        value: t.to_string(),
+                        range: "whole numbers 1 to 1024".into(),
+                    };
+                    return Err(io.bad_input(&e));
+                }
+            };
+            let grid = figures::MapGrid {
+                n_eta,
+                n_mu,
+                log_eta,
+            };
+            match arch.build() {
+                Ok(a) => figures::map(&a, grid, threads, settings, &progress)
+                    .map(|m| plot_map::svg(&m, log_eta)),
+                Err(e) => return Err(io.bad_input(&e)),
+            }
+        }
+    };
+    match drawn {
+        Ok(Ok(s)) => Ok(s),
+        Ok(Err(reason)) | Err(figures::NoFigure(reason)) => {
+            io.err(&format!("no figure: {reason}\n"));
+            Err(Exit::NoAnswer)
+        }
+    }
 }
 
 fn plot_inputs(st: &StateArgs) -> Result<Arch, InputError> {
