@@ -14,6 +14,7 @@ pub(crate) mod load;
 mod modes;
 mod plot;
 mod progress;
+pub mod serve;
 mod solve;
 
 use crate::arch::InputError;
@@ -148,6 +149,11 @@ enum Command {
         after_help = "Example:\n  arch-enum curve --alpha 0 --points 10\n  arch-enum curve --alpha 1 --mu-min 1 --mu-max 100 --json"
     )]
     Curve(curve::CurveArgs),
+    /// The explorer: a local web page (sliders, the eta-mu diagram, the arch at its limit state) and a JSON API giving the same documents as --json, on 127.0.0.1.
+    #[command(
+        after_help = "Example:\n  arch-enum serve --open\n  arch-enum serve --port 0   (any free port; the URL is the first line printed)\n  curl 'http://127.0.0.1:8765/api/solve?alpha=0&mu=0.35'"
+    )]
+    Serve(serve::ServeArgs),
 }
 
 /// Where a command writes: results to `out`, diagnostics to `err`; `json` when standard
@@ -234,7 +240,7 @@ where
         Command::Assess(a) => a.json,
         Command::Load(a) => a.json,
         Command::LoadCurve(a) => a.json,
-        Command::Plot { .. } => false,
+        Command::Plot { .. } | Command::Serve(_) => false,
     };
     let mut io = Io { out, err, json };
     let exit = match cli.command {
@@ -247,6 +253,7 @@ where
         Command::Assess(a) => assess::run(a, &settings, &mut io),
         Command::Load(a) => load::run(a, &settings, &mut io),
         Command::LoadCurve(a) => load::run_curve(a, &settings, &mut io),
+        Command::Serve(a) => serve::run(a, &mut io),
     };
     exit.code()
 }

@@ -3,11 +3,20 @@
 //! Nothing is printed for work that finishes within the first second.
 
 use std::io::{IsTerminal, Write};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 /// Quiet period before the first report.
 const QUIET: Duration = Duration::from_secs(1);
+
+/// Set by `serve`: no progress is printed (the server answers many requests).
+static QUIET_ALL: AtomicBool = AtomicBool::new(false);
+
+/// Silences every progress reporter of this process from now on.
+pub(crate) fn quiet() {
+    QUIET_ALL.store(true, Ordering::Relaxed);
+}
 
 /// A progress reporter, safe to call from several threads.
 pub(crate) struct Progress {
@@ -31,7 +40,7 @@ impl Progress {
 
     /// Reports that `done` of `total` units are finished.
     pub(crate) fn update(&self, done: usize, total: usize) {
-        if self.start.elapsed() < QUIET && done < total {
+        if QUIET_ALL.load(Ordering::Relaxed) || (self.start.elapsed() < QUIET && done < total) {
             return;
         }
         let mut st = self.state.lock().unwrap_or_else(|e| e.into_inner());
