@@ -24,3 +24,4 @@ mod readme;
 mod reference;
 mod ridge;
 mod search_reference;
+mod serve;
