@@ -270,6 +270,7 @@ function branchMode(modes, mu) {
 function drawDiagram() {
   const box = $("diagram");
   box.innerHTML = "";
+  $("legend").innerHTML = "";
   const W = 640, H = 380, L = 58, R = 16, T = 14, B = 44;
   const svg = el("svg", { viewBox: `0 0 ${W} ${H}`, class: "diagram" }, box);
   const { modes, curve, solve, assess } = state;
@@ -284,8 +285,15 @@ function drawDiagram() {
     el("text", { x: W / 2, y: H / 2, "text-anchor": "middle", class: "muted" }, svg, "no limit state in this range of μ");
     return;
   }
-  const muLo = Math.min(MU_LO, pts[0].mu / 1.3);
-  const muHi = Math.max(MU_HI, pts[pts.length - 1].mu);
+  // mu range: from below mu_ms to a few times the last corner, and the current mu
+  const muNow = $("mu-inf").checked ? Infinity : Number($("mu").value);
+  const knots = [pts[0].mu, ...modes.corners.map((c) => c.mu)];
+  let muLo = pts[0].mu / 1.6;
+  let muHi = Math.max(6 * Math.max(...knots), 12 * muLo);
+  if (Number.isFinite(muNow) && muNow > 0) {
+    muLo = Math.max(MU_LO / 1.2, Math.min(muLo, muNow / 1.25));
+    muHi = Math.min(MU_HI * 1.2, Math.max(muHi, muNow * 1.25));
+  }
   let etaMax = Math.max(...pts.map((p) => p.eta));
   if (assess && Number(assess.eta) > 0) etaMax = Math.max(etaMax, Number(assess.eta));
   etaMax = Math.min(2, etaMax * 1.25 || 1);
@@ -296,25 +304,30 @@ function drawDiagram() {
   // regions: collapse / no equilibrium below the curve, standing above it
   const top = y(etaMax), bottom = y(0), left = x(muLo), right = x(muHi);
   const line = pts.map((p) => `${x(p.mu).toFixed(2)},${y(p.eta).toFixed(2)}`);
-  const first = pts[0];
-  el("rect", { x: left, y: top, width: right - left, height: bottom - top, class: "collapse" }, svg);
+  const first = pts[0], last = pts[pts.length - 1];
+  const clip = el("clipPath", { id: "plot-area" }, el("defs", {}, svg));
+  el("rect", { x: left, y: top, width: right - left, height: bottom - top }, clip);
+  const plot = el("g", { "clip-path": "url(#plot-area)" }, svg);
+  el("rect", { x: left, y: top, width: right - left, height: bottom - top, class: "collapse" }, plot);
   el("polygon", {
-    points: [`${x(first.mu)},${top}`, ...line, `${right},${y(pts[pts.length - 1].eta)}`, `${right},${top}`].join(" "),
+    points: [`${x(first.mu)},${top}`, ...line, `${Math.max(x(last.mu), right)},${y(last.eta)}`, `${Math.max(x(last.mu), right)},${top}`].join(" "),
     class: "safe",
-  }, svg);
+  }, plot);
   el("text", { x: right - 8, y: top + 18, "text-anchor": "end", class: "region" }, svg, "stands (η > η*)");
   el("text", { x: right - 8, y: bottom - 8, "text-anchor": "end", class: "region" }, svg, "collapses (η < η*)");
   if (modes.mu_ms) {
-    el("text", { x: x(modes.mu_ms) - 6, y: top + 18, "text-anchor": "end", class: "region" }, svg, "no equilibrium (μ < μ_ms)");
+    const xm = (left + x(modes.mu_ms)) / 2 + 4, ym = (top + bottom) / 2;
+    el("text", { x: xm, y: ym, "text-anchor": "middle", transform: `rotate(-90 ${xm} ${ym})`, class: "region" }, svg, "no equilibrium (μ < μ_ms)");
   }
 
   // axes
+  const mantissas = Math.log10(muHi / muLo) < 1.2 ? [1, 1.5, 2, 3, 4, 5, 6, 8] : [1, 2, 5];
   for (let d = -3; d <= 3; d++) {
-    for (const m of [1, 2, 5]) {
+    for (const m of mantissas) {
       const mu = m * Math.pow(10, d);
       if (mu < muLo || mu > muHi) continue;
       el("line", { x1: x(mu), x2: x(mu), y1: top, y2: bottom, class: m === 1 ? "grid major" : "grid" }, svg);
-      el("text", { x: x(mu), y: bottom + 16, "text-anchor": "middle", class: "tick" }, svg, String(mu));
+      el("text", { x: x(mu), y: bottom + 16, "text-anchor": "middle", class: "tick" }, svg, String(Number(mu.toPrecision(3))));
     }
   }
   const step = etaMax > 1 ? 0.2 : etaMax > 0.4 ? 0.1 : etaMax > 0.2 ? 0.05 : 0.02;
@@ -331,13 +344,13 @@ function drawDiagram() {
     const a = pts[i], b = pts[i + 1];
     const mid = Math.sqrt(a.mu * b.mu);
     const mode = branchMode(modes, mid) || b.mode || a.mode;
-    el("line", { x1: x(a.mu), y1: y(a.eta), x2: x(b.mu), y2: y(b.eta), stroke: modeColour(mode), class: "curve" }, svg);
+    el("line", { x1: x(a.mu), y1: y(a.eta), x2: x(b.mu), y2: y(b.eta), stroke: modeColour(mode), class: "curve" }, plot);
   }
   // vertical branches (purely sliding at mu_ms) up to the top
   for (const b of modes.branches) {
     if (b.mu_max !== null && b.mu_min === b.mu_max) {
       const e1 = b.eta_max === null ? etaMax : Math.min(b.eta_max, etaMax);
-      el("line", { x1: x(b.mu_min), y1: y(b.eta_min), x2: x(b.mu_min), y2: y(e1), stroke: modeColour(b.mode), class: "curve" }, svg);
+      el("line", { x1: x(b.mu_min), y1: y(b.eta_min), x2: x(b.mu_min), y2: y(e1), stroke: modeColour(b.mode), class: "curve" }, plot);
     }
   }
   for (const c of modes.corners) {
@@ -345,7 +358,6 @@ function drawDiagram() {
     el("title", {}, dot, `corner μ = ${fmt(c.mu)}, η = ${fmt(c.eta)} (${c.between.join(" / ")})`);
   }
   // the current state
-  const muNow = $("mu-inf").checked ? Infinity : Number($("mu").value);
   const xNow = Number.isFinite(muNow) ? x(Math.min(Math.max(muNow, muLo), muHi)) : right;
   el("line", { x1: xNow, x2: xNow, y1: top, y2: bottom, class: "now" }, svg);
   if (!Number.isFinite(muNow)) el("text", { x: right - 4, y: bottom - 24, "text-anchor": "end", class: "tick" }, svg, "μ = ∞ →");
@@ -367,7 +379,6 @@ function drawDiagram() {
 
   // legend: the modes on this curve
   const legend = $("legend");
-  legend.innerHTML = "";
   const seen = new Set(modes.branches.map((b) => b.mode));
   for (const m of seen) {
     const item = document.createElement("span");
