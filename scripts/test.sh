@@ -5,7 +5,7 @@
 # pytest). Snapshots are never written here: a missing or changed snapshot fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
+bash scripts/setup.sh --browser
 INSTA_UPDATE=no cargo test --release
 node --test tests/browser/
 bash scripts/test_python.sh
