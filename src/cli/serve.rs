@@ -73,57 +73,18 @@ pub struct Limit {
 /// - `modes` is not monotone in N: at N = 100, 0.3–1.5 s over α ∈ {0, ±0.5, 1, −1.2};
 ///   at N = 150 up to 3.9 s, at N = 200 up to 8.4 s. The continuous arch: 0.1–1.9 s.
 /// - `curve` at N = 2000, 50 points: 0.36 s (about 7 ms a point).
+#[rustfmt::skip]
 pub const LIMITS: &[Limit] = &[
-    Limit {
-        endpoint: "solve",
-        param: "blocks",
-        max: 100_000,
-    },
-    Limit {
-        endpoint: "assess",
-        param: "blocks",
-        max: 100_000,
-    },
-    Limit {
-        endpoint: "certify",
-        param: "blocks",
-        max: 100_000,
-    },
-    Limit {
-        endpoint: "plot/arch",
-        param: "blocks",
-        max: 100_000,
-    },
-    Limit {
-        endpoint: "plot/eccentricity",
-        param: "blocks",
-        max: 100_000,
-    },
-    Limit {
-        endpoint: "load",
-        param: "blocks",
-        max: 5_000,
-    },
-    Limit {
-        endpoint: "plot/load",
-        param: "blocks",
-        max: 5_000,
-    },
-    Limit {
-        endpoint: "modes",
-        param: "blocks",
-        max: 100,
-    },
-    Limit {
-        endpoint: "curve",
-        param: "blocks",
-        max: 2_000,
-    },
-    Limit {
-        endpoint: "curve",
-        param: "points",
-        max: 100,
-    },
+    Limit { endpoint: "solve", param: "blocks", max: 100_000 },
+    Limit { endpoint: "assess", param: "blocks", max: 100_000 },
+    Limit { endpoint: "certify", param: "blocks", max: 100_000 },
+    Limit { endpoint: "plot/arch", param: "blocks", max: 100_000 },
+    Limit { endpoint: "plot/eccentricity", param: "blocks", max: 100_000 },
+    Limit { endpoint: "load", param: "blocks", max: 5_000 },
+    Limit { endpoint: "plot/load", param: "blocks", max: 5_000 },
+    Limit { endpoint: "modes", param: "blocks", max: 100 },
+    Limit { endpoint: "curve", param: "blocks", max: 2_000 },
+    Limit { endpoint: "curve", param: "points", max: 100 },
 ];
 
 /// One HTTP answer.

@@ -592,16 +592,20 @@ fn fuzzed_queries_never_crash_the_server() {
         target.push('?');
         for i in 0..rng.next() % 7 {
             if i > 0 {
-                target.push(if rng.next() % 20 == 0 { ';' } else { '&' });
+                target.push(if rng.next().is_multiple_of(20) {
+                    ';'
+                } else {
+                    '&'
+                });
             }
             target.push_str(rng.pick(&keys));
-            if rng.next() % 8 != 0 {
+            if !rng.next().is_multiple_of(8) {
                 target.push('=');
                 target.push_str(rng.pick(&values));
             }
         }
         // mostly arches that are fast to answer: a shape and a small N with a valid mu
-        if rng.next() % 3 == 0 {
+        if rng.next().is_multiple_of(3) {
             target.push_str("&alpha=0.3&blocks=6&mu=0.8");
         }
         let r = server
