@@ -51,6 +51,15 @@ const COMMANDS: &[(&str, &[&str])] = &[
 /// The figures the API draws (`plot <figure>`), as SVG.
 const FIGURES: &[&str] = &["arch", "load", "eccentricity"];
 
+/// The parameters that name a live load.
+const LOAD_KEYS: &[&str] = &[
+    "horizontal",
+    "horizontal-left",
+    "point-load",
+    "point-load-deg",
+    "point-load-joint",
+];
+
 /// Parameters no endpoint takes: `json` is implied, the rest pick files and formats.
 const NEVER: &[&str] = &["json", "help", "version", "out", "png", "width"];
 
@@ -69,7 +78,8 @@ pub struct Limit {
 /// - `solve` at N = 100000: 0.3–0.65 s (α = 0 and −1.2, μ from μ_ms to ∞); `assess` at
 ///   N = 100000: 1.1 s; `certify` and the `arch`/`eccentricity` figures solve once.
 /// - `load` at N = 5000 (horizontal acceleration, α = 0, η = 0.3, μ = 0.8): 1.0 s
-///   (N = 10000: 3.9 s).
+///   (N = 10000: 3.9 s); `plot load` 1.4 s; `certify` with that load ("certify/load")
+///   1.5 s (N = 10000: 4.7 s).
 /// - `modes` is not monotone in N: at N = 100, 0.3–1.5 s over α ∈ {0, ±0.5, 1, −1.2};
 ///   at N = 150 up to 3.9 s, at N = 200 up to 8.4 s. The continuous arch: 0.1–1.9 s.
 /// - `curve` at N = 2000, 50 points: 0.36 s (about 7 ms a point).
@@ -81,6 +91,7 @@ pub const LIMITS: &[Limit] = &[
     Limit { endpoint: "plot/arch", param: "blocks", max: 100_000 },
     Limit { endpoint: "plot/eccentricity", param: "blocks", max: 100_000 },
     Limit { endpoint: "load", param: "blocks", max: 5_000 },
+    Limit { endpoint: "certify/load", param: "blocks", max: 5_000 },
     Limit { endpoint: "plot/load", param: "blocks", max: 5_000 },
     Limit { endpoint: "modes", param: "blocks", max: 100 },
     Limit { endpoint: "curve", param: "blocks", max: 2_000 },
@@ -257,6 +268,14 @@ fn arguments(path: &[&str], refused: &[&str], params: &[Param]) -> Result<Vec<Os
             (!refused).then(|| (long.to_string(), a.get_action().takes_values()))
         })
         .collect();
+    // certify with a live load costs what load does
+    let loaded = params
+        .iter()
+        .any(|p| LOAD_KEYS.contains(&p.key.replace('_', "-").as_str()));
+    let limited = match endpoint.as_str() {
+        "certify" if loaded => "certify/load".to_string(),
+        _ => endpoint.clone(),
+    };
     let mut args: Vec<OsString> = vec!["arch-enum".into()];
     args.extend(path.iter().map(OsString::from));
     for p in params {
@@ -285,7 +304,7 @@ fn arguments(path: &[&str], refused: &[&str], params: &[Param]) -> Result<Vec<Os
                 ))
             }
         }
-        check_limit(&endpoint, &key, p.value.as_deref())?;
+        check_limit(&limited, &key, p.value.as_deref())?;
     }
     Ok(args)
 }
@@ -302,20 +321,24 @@ fn check_limit(endpoint: &str, key: &str, value: Option<&str>) -> Result<(), Str
         },
         _ => return Ok(()),
     };
+    let shown = match endpoint {
+        "certify/load" => "/api/certify with a live load".to_string(),
+        e => format!("/api/{e}"),
+    };
     match LIMITS
         .iter()
         .find(|l| l.endpoint == endpoint && l.param == param)
     {
         Some(l) if count > l.max => Err(if key == "joints" {
             format!(
-                "--joints gives {} joints; /api/{endpoint} serves at most {} (N <= {} voussoirs, to answer within about 2 s; the command line has no such limit)",
+                "--joints gives {} joints; {shown} serves at most {} (N <= {} voussoirs, to answer within about 2 s; the command line has no such limit)",
                 count + 1,
                 l.max + 1,
                 l.max
             )
         } else {
             format!(
-                "invalid value for --{key}: {count} (valid range for /api/{endpoint}: 1 to {}, to answer within about 2 s; the command line has no such limit)",
+                "invalid value for --{key}: {count} (valid range for {shown}: 1 to {}, to answer within about 2 s; the command line has no such limit)",
                 l.max
             )
         }),
