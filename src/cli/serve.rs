@@ -75,14 +75,17 @@ pub struct Limit {
 
 /// The limits that keep one request within about 2 s. Measured (release build, 2 cores,
 /// wall time of the CLI call):
-/// - `solve` at N = 100000: 0.3–0.65 s (α = 0 and −1.2, μ from μ_ms to ∞); `assess` at
-///   N = 100000: 1.1 s; `certify` and the `arch`/`eccentricity` figures solve once.
-/// - `load` at N = 5000 (horizontal acceleration, α = 0, η = 0.3, μ = 0.8): 1.0 s
+/// - `solve` at N = 100000: 0.4–0.9 s (α = 0 and −1.2, μ from μ_ms to ∞, both weights);
+///   `assess` 0.9–1.3 s; `certify` 0.7–0.8 s; the `arch`/`eccentricity` figures 0.5–1.0 s.
+/// - `load` at N = 5000 (horizontal acceleration, α = 0, η = 0.3, μ = 0.8): 1.0–1.4 s
 ///   (N = 10000: 3.9 s); `plot load` 1.4 s; `certify` with that load ("certify/load")
 ///   1.5 s (N = 10000: 4.7 s).
-/// - `modes` is not monotone in N: at N = 100, 0.3–1.5 s over α ∈ {0, ±0.5, 1, −1.2};
-///   at N = 150 up to 3.9 s, at N = 200 up to 8.4 s. The continuous arch: 0.1–1.9 s.
-/// - `curve` at N = 2000, 50 points: 0.36 s (about 7 ms a point).
+/// - `modes` (centreline weight) at N = 200: 0.4–1.1 s over α ∈ {0, ±0.5, 1, −1.2}
+///   (N = 400: up to 3.6 s; N = 1000: up to 16 s); the continuous arch 0.05–0.08 s.
+///   With the centroid weight ("modes/centroid") the limit states above η_s are swept
+///   (no ridge walk): N = 70: 0.7–1.3 s (N = 100: up to 3.0 s, N = 200: up to 18.5 s);
+///   the continuous arch 0.2–3.0 s (no N to limit).
+/// - `curve` at N = 2000, 100 points: 0.8 s (centroid weight: 1.0 s).
 #[rustfmt::skip]
 pub const LIMITS: &[Limit] = &[
     Limit { endpoint: "solve", param: "blocks", max: 100_000 },
@@ -93,7 +96,8 @@ pub const LIMITS: &[Limit] = &[
     Limit { endpoint: "load", param: "blocks", max: 5_000 },
     Limit { endpoint: "certify/load", param: "blocks", max: 5_000 },
     Limit { endpoint: "plot/load", param: "blocks", max: 5_000 },
-    Limit { endpoint: "modes", param: "blocks", max: 100 },
+    Limit { endpoint: "modes", param: "blocks", max: 200 },
+    Limit { endpoint: "modes/centroid", param: "blocks", max: 70 },
     Limit { endpoint: "curve", param: "blocks", max: 2_000 },
     Limit { endpoint: "curve", param: "points", max: 100 },
 ];
@@ -268,12 +272,16 @@ fn arguments(path: &[&str], refused: &[&str], params: &[Param]) -> Result<Vec<Os
             (!refused).then(|| (long.to_string(), a.get_action().takes_values()))
         })
         .collect();
-    // certify with a live load costs what load does
+    // certify with a live load costs what load does; modes with the centroid weight more
     let loaded = params
         .iter()
         .any(|p| LOAD_KEYS.contains(&p.key.replace('_', "-").as_str()));
+    let centroid = params
+        .iter()
+        .any(|p| p.key == "weight" && p.value.as_deref() == Some("centroid"));
     let limited = match endpoint.as_str() {
         "certify" if loaded => "certify/load".to_string(),
+        "modes" if centroid => "modes/centroid".to_string(),
         _ => endpoint.clone(),
     };
     let mut args: Vec<OsString> = vec!["arch-enum".into()];
@@ -323,6 +331,7 @@ fn check_limit(endpoint: &str, key: &str, value: Option<&str>) -> Result<(), Str
     };
     let shown = match endpoint {
         "certify/load" => "/api/certify with a live load".to_string(),
+        "modes/centroid" => "/api/modes with --weight centroid".to_string(),
         e => format!("/api/{e}"),
     };
     match LIMITS

@@ -409,15 +409,20 @@ fn malformed_requests_are_refused_with_the_argument_named() {
         "/api/load?alpha=0&eta=0.3&mu=1&horizontal&blocks=5001",
         "--blocks",
     );
-    refused(&server, "/api/modes?alpha=0&blocks=101", "--blocks");
+    refused(&server, "/api/modes?alpha=0&blocks=201", "--blocks");
+    refused(
+        &server,
+        "/api/modes?alpha=0&blocks=71&weight=centroid",
+        "/api/modes with --weight centroid: 1 to 70",
+    );
     refused(
         &server,
         "/api/certify?alpha=0&blocks=5001&eta=0.3&mu=0.8&horizontal",
         "/api/certify with a live load: 1 to 5000",
     );
     refused(&server, "/api/curve?alpha=0&points=101", "--points");
-    let joints: Vec<String> = (1..=150)
-        .map(|k| format!("{:.4}", k as f64 * 0.02))
+    let joints: Vec<String> = (1..=250)
+        .map(|k| format!("{:.4}", k as f64 * 0.012))
         .collect();
     refused(
         &server,
