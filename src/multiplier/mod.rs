@@ -11,6 +11,7 @@
 
 pub mod continuum;
 pub mod curve;
+mod face;
 
 pub use curve::{sample, trace, CurveSample, LoadCurve};
 
@@ -18,13 +19,13 @@ use crate::arch::{check_eta, Arch, InputError, JointLayout};
 use crate::collapse_mode::{classify, CollapseMode};
 use crate::contact::Contact;
 use crate::kinematics::{column, power};
-use crate::limit_states::sweep::{sweep_load, CheckedPoint};
+use crate::limit_states::sweep::{sweep_load_with_top, CheckedPoint};
 use crate::load::{rows, LiveLoad, LoadRow, Side};
 use crate::lp::{self, LpOutcome};
 use crate::mechanism::{self, Mechanism};
 use crate::settings::Settings;
 use crate::state::State;
-use crate::statics::{magnitude, Reactions};
+use crate::statics::Reactions;
 
 /// The admissible multipliers λ ≥ 0 at (η, μ).
 #[derive(Debug, Clone, PartialEq)]
@@ -239,33 +240,45 @@ pub fn survey(
             })
         })
     };
-    // an LP failure at the static maximum is no decision, never "no mechanism"
-    let at_static = match max.map(|m| limit_state_at(arch, eta, mu, load, m, settings)) {
-        Some(Err(e)) => return Ok(Err(e)),
-        Some(Ok(s)) => s,
+    let top = max.map_or(UNBOUNDED_SEARCH_TOP, |m| m.0);
+    let (sw, at_top) = sweep_load_with_top(arch, eta, mu, load, min, top, settings);
+    // the states at λ_static: the optimal face whole, from the sweep's points at the top
+    // (at μ = ∞ the sweep is run for them alone); the LP's state where the sweep gave none
+    let at_static = match max {
         None => None,
+        Some((lambda_lp, x_lp)) => {
+            let points = if at_top.is_empty() { vec![x_lp] } else { at_top };
+            let mut f = face::face(&all_rows, eta, mu, lambda_lp, &points, settings);
+            if f.vertices.is_empty() {
+                f = face::face(&all_rows, eta, mu, lambda_lp, &[x_lp], settings);
+            }
+            // an LP failure at the static maximum is no decision, never "no mechanism"
+            match face::decide(arch, eta, mu, load, &all_rows, &f, settings) {
+                Ok(a) => Some(a),
+                Err(e) => return Ok(Err(e)),
+            }
+        }
     };
+    let max = at_static.as_ref().map(|a| a.state);
     if mu.is_infinite() {
         // associative (hinges only): the static maximum is the only limit state, and
         // none exists where λ is unbounded (see `continuous_survey`)
-        return Ok(Ok(match max {
-            None => LoadOutcome::NoCollapse {
-                lambda_min: min,
-                events: 0,
-            },
-            Some(m) => LoadOutcome::Limits(LoadSurvey {
+        return Ok(Ok(match (max, at_static) {
+            (Some(m), Some(a)) => LoadOutcome::Limits(LoadSurvey {
                 lambda_min: min,
                 lambda_static: Some(m),
-                mechanism_at_static: at_static.is_some(),
-                limit_states: at_static.into_iter().collect(),
+                mechanism_at_static: !a.limit_states.is_empty(),
+                limit_states: a.limit_states,
                 events: 0,
                 method: "associative",
                 no_mechanism: Vec::new(),
             }),
+            _ => LoadOutcome::NoCollapse {
+                lambda_min: min,
+                events: 0,
+            },
         }));
     }
-    let top = max.map_or(UNBOUNDED_SEARCH_TOP, |m| m.0);
-    let sw = sweep_load(arch, eta, mu, load, min, top, settings);
     if let Some(f) = sw.failure {
         return Ok(Err(match max {
             Some(m) => format!("{f} (lambda_static = {}, exact)", m.0),
@@ -291,7 +304,14 @@ pub fn survey(
             continuum_to: None,
         })
         .collect();
-    let mechanism_at_static = at_static.is_some();
+    let mut no_mechanism = sw.no_mechanism;
+    let (mechanism_at_static, at_static) = match at_static {
+        Some(a) => {
+            no_mechanism.extend(a.without);
+            (!a.limit_states.is_empty(), a.limit_states)
+        }
+        None => (false, Vec::new()),
+    };
     limit_states.extend(at_static);
     limit_states.retain(|s| !in_continuum(&s.pattern, &s.sides));
     limit_states.extend(continua);
@@ -309,35 +329,8 @@ pub fn survey(
         limit_states,
         events: sw.events,
         method: "sweep",
-        no_mechanism: sw.no_mechanism,
+        no_mechanism,
     })))
-}
-
-/// The limit state at the static maximum, if its active contacts carry a mechanism with
-/// positive live power.
-fn limit_state_at(
-    arch: &Arch,
-    eta: f64,
-    mu: f64,
-    load: &LiveLoad,
-    (lambda, x): (f64, Reactions),
-    settings: &Settings,
-) -> Result<Option<LoadLimitState>, String> {
-    let JointLayout::Discrete(joints) = arch.layout() else {
-        return Ok(None);
-    };
-    let pattern: Vec<continuum::LoadedContact> = rows(arch, joints, eta, mu, load)
-        .iter()
-        .filter(|r| {
-            let size = magnitude(r.contact.kind, eta, mu, &x, settings.magnitude_floor);
-            r.at(&x, lambda).abs() <= settings.event_tol * size
-        })
-        .map(|r| continuum::LoadedContact {
-            contact: r.contact,
-            side: r.side,
-        })
-        .collect();
-    limit_state_on(arch, eta, mu, load, (lambda, x), &pattern, settings)
 }
 
 /// Continua of limit states. Two active contacts whose compatibility columns cancel — the
