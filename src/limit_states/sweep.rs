@@ -919,14 +919,15 @@ fn run(sw: Sweeper) -> Sweep {
 }
 
 /// [`run`], and, for a load sweep, the points of P(top) it reached (see
-/// [`sweep_load_with_top`]): every event within `settings.same_root` (relative) of the top
+/// [`sweep_load_with_top`]): every event within `settings.same_root` × (1 + top) of the top
 /// — neither counted nor checked there, the caller decides at the top — and every vertex
 /// alive at the end, evaluated at the top. Empty for the thickness sweep.
 fn run_to_top(mut sw: Sweeper) -> (Sweep, Vec<Reactions>) {
     let mut events = 0;
     let mut at_top = Vec::new();
     let top_band = match sw.param {
-        Param::Multiplier { .. } => sw.top * (1.0 - sw.settings.same_root),
+        // the resolution of the sweep's roots (see `death`): relative, and absolute near 0
+        Param::Multiplier { .. } => sw.top - sw.settings.same_root * (1.0 + sw.top.abs()),
         Param::Thickness => f64::INFINITY,
     };
     loop {
@@ -1024,8 +1025,8 @@ pub fn sweep_load(
 }
 
 /// [`sweep_load`], and the points of P(λ_static) the sweep reached: every vertex alive at
-/// the top, evaluated there, and every event within `settings.same_root` (relative) of the
-/// top, which the sweep neither counts nor checks (the caller decides at λ_static). As λ
+/// the top, evaluated there, and every event within `settings.same_root` × (1 + λ_static)
+/// of the top (the resolution of its roots), which the sweep neither counts nor checks (the caller decides at λ_static). As λ
 /// rises to λ_static the vertices of P(λ) run into the vertices of the optimal face
 /// P(λ_static), so these points are those vertices (each possibly several times, and
 /// points on the box included), whichever state the LP returned there. Empty after a

@@ -565,6 +565,12 @@ fn continuous_finite_friction(
         let h = (b - a) / pieces as f64;
         let mut found: Vec<LoadLimitState> = Vec::new();
         for st in &states {
+            // a face of states at the discretisation's own static maximum (a continuum at
+            // one λ): its states lie at or above the continuous arch's λ_static, which is
+            // decided on the continuum itself below
+            if st.continuum_to.is_some_and(|to| to <= st.lambda) {
+                continue;
+            }
             if st.continuum_to.is_some() {
                 return Err(format!(
                     "the {pieces}-piece discretisation has a continuum of limit states from lambda = {} (the loaded point sliding along its section): not carried over to the continuous arch yet",
