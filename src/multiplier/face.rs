@@ -55,7 +55,14 @@ pub(super) struct AtStatic {
 
 /// The rows active at (x, λ): |φ| within `event_tol` of the row's magnitude (the sweep's
 /// and the survey's test).
-fn active(rows: &[LoadRow], eta: f64, mu: f64, x: &Reactions, lambda: f64, s: &Settings) -> Vec<usize> {
+fn active(
+    rows: &[LoadRow],
+    eta: f64,
+    mu: f64,
+    x: &Reactions,
+    lambda: f64,
+    s: &Settings,
+) -> Vec<usize> {
     (0..rows.len())
         .filter(|&i| {
             let r = &rows[i];
@@ -106,6 +113,79 @@ fn solve(
     Some([z[0], z[1], z[2], lambda.unwrap_or_else(|| z[3])])
 }
 
+/// At most this many vertices of F are visited by [`walk`] (a safety net).
+const MAX_FACE_VERTICES: usize = 256;
+
+/// The vertices of P(λ) = F at λ = `lambda`, by a walk on its vertex graph from `start` (a
+/// vertex, the LP's state): at each vertex, every direction along two of its active rows'
+/// planes that keeps every active row ≤ 0 (within `event_tol` of its gradient) is an
+/// edge of F, followed to the first other row (a ratio test); an edge that meets none is a
+/// ray (F unbounded: its vertices are still returned). F may be lower-dimensional (rows
+/// that are equalities on it are active at every vertex, and the test keeps the walk
+/// inside them), which the sweep's full-dimensional walk does not allow.
+pub(super) fn walk(
+    rows: &[LoadRow],
+    eta: f64,
+    mu: f64,
+    lambda: f64,
+    start: Reactions,
+    settings: &Settings,
+) -> Vec<Reactions> {
+    let g: Vec<[f64; 3]> = rows.iter().map(|r| [r.a[0], r.a[1], r.a[2]]).collect();
+    let dot = |a: &[f64; 3], b: &[f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    let norm = |a: &[f64; 3]| dot(a, a).sqrt();
+    let mut seen: Vec<Vec<usize>> = Vec::new();
+    let mut out = Vec::new();
+    let mut queue = vec![start];
+    while let Some(x) = queue.pop() {
+        let act = active(rows, eta, mu, &x, lambda, settings);
+        if seen.contains(&act) || seen.len() >= MAX_FACE_VERTICES {
+            continue;
+        }
+        seen.push(act.clone());
+        out.push(x);
+        for (ip, &p) in act.iter().enumerate() {
+            for &q in &act[ip + 1..] {
+                let (a, b) = (g[p], g[q]);
+                let d0 = [
+                    a[1] * b[2] - a[2] * b[1],
+                    a[2] * b[0] - a[0] * b[2],
+                    a[0] * b[1] - a[1] * b[0],
+                ];
+                let dn = norm(&d0);
+                if dn <= settings.rank_tol * norm(&a) * norm(&b) {
+                    continue; // parallel planes (twins, or one joint's two slides)
+                }
+                for sign in [1.0, -1.0] {
+                    let d = d0.map(|v| sign * v / dn);
+                    // inside every active row, and leaving at least one
+                    let rate = |i: usize| dot(&g[i], &d);
+                    let tol = |i: usize| settings.event_tol * norm(&g[i]);
+                    if act.iter().any(|&i| rate(i) > tol(i))
+                        || act.iter().all(|&i| rate(i) >= -tol(i))
+                    {
+                        continue;
+                    }
+                    let mut step: Option<f64> = None;
+                    for i in (0..rows.len()).filter(|i| !act.contains(i)) {
+                        if rate(i) <= tol(i) {
+                            continue;
+                        }
+                        let t = (-rows[i].at(&x, lambda)).max(0.0) / rate(i);
+                        if step.is_none_or(|s| t < s) {
+                            step = Some(t);
+                        }
+                    }
+                    if let Some(t) = step {
+                        queue.push([0, 1, 2].map(|k| x[k] + t * d[k]));
+                    }
+                }
+            }
+        }
+    }
+    out
+}
+
 /// The vertices of F from `points` (the sweep's points at the top, or the LP's state):
 /// those inside the box and admissible at `lambda_lp`, one per active set, recomputed on
 /// their active rows, in the canonical order. λ_static is recomputed at the first; where a
@@ -121,7 +201,9 @@ pub(super) fn face(
 ) -> Face {
     let mut vertices: Vec<(Reactions, Vec<usize>)> = Vec::new();
     for x in points {
-        if x.iter().any(|v| !v.is_finite() || v.abs() >= BOX * (1.0 - 1e-9)) {
+        if x.iter()
+            .any(|v| !v.is_finite() || v.abs() >= BOX * (1.0 - 1e-9))
+        {
             continue;
         }
         let inside = rows.iter().all(|r| {
@@ -246,9 +328,15 @@ pub(super) fn decide(
 
 /// A vertex without a mechanism, as the sweep records one: its contacts by increasing
 /// (β, side, kind).
-fn checked_point(rows: &[LoadRow], lambda: f64, (x, act): &(Reactions, Vec<usize>)) -> CheckedPoint {
-    let mut pattern: Vec<(Contact, Side)> =
-        act.iter().map(|&r| (rows[r].contact, rows[r].side)).collect();
+fn checked_point(
+    rows: &[LoadRow],
+    lambda: f64,
+    (x, act): &(Reactions, Vec<usize>),
+) -> CheckedPoint {
+    let mut pattern: Vec<(Contact, Side)> = act
+        .iter()
+        .map(|&r| (rows[r].contact, rows[r].side))
+        .collect();
     pattern.sort_by(|a, b| {
         a.0.beta
             .total_cmp(&b.0.beta)

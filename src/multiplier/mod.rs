@@ -247,7 +247,8 @@ pub fn survey(
     let at_static = match max {
         None => None,
         Some((lambda_lp, x_lp)) => {
-            let points = if at_top.is_empty() { vec![x_lp] } else { at_top };
+            let mut points = face::walk(&all_rows, eta, mu, lambda_lp, x_lp, settings);
+            points.extend(at_top);
             let mut f = face::face(&all_rows, eta, mu, lambda_lp, &points, settings);
             if f.vertices.is_empty() {
                 f = face::face(&all_rows, eta, mu, lambda_lp, &[x_lp], settings);
