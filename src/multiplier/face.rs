@@ -101,13 +101,13 @@ fn solve(
     }
     let svd = m.clone().svd(true, true);
     let (smax, smin) = (svd.singular_values.max(), svd.singular_values.min());
-    if !(smin > settings.rank_tol * smax) {
+    if smin.is_nan() || smin <= settings.rank_tol * smax {
         return None;
     }
     let z = svd.solve(&b, 0.0).ok()?;
     let scale = 1.0 + z.iter().map(|v| v.abs()).sum::<f64>();
     let residual = (&m * &z - &b).amax();
-    if !(residual <= settings.same_root * scale) {
+    if residual.is_nan() || residual > settings.same_root * scale {
         return None;
     }
     Some([z[0], z[1], z[2], lambda.unwrap_or_else(|| z[3])])
@@ -234,8 +234,8 @@ pub(super) fn face(
 }
 
 /// Decides F: every maximal face of F whose active set carries a mechanism with positive
-/// live power (see the module's notes), and the vertices that carry none. `fallback` is the
-/// LP's state, used when `face` has no vertex (no sweep point inside the box).
+/// live power (see the module's notes), and the vertices that carry none. No vertex (none
+/// inside the box) is no decision.
 pub(super) fn decide(
     arch: &Arch,
     eta: f64,

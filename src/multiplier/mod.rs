@@ -141,10 +141,13 @@ pub struct LoadSurvey {
     /// The largest admissible multiplier and a state there; `None` when admissible states
     /// exist at every λ ≥ λ_min (the search then runs up to [`UNBOUNDED_SEARCH_TOP`]).
     pub lambda_static: Option<(f64, Reactions)>,
-    /// Whether the state at λ_static carries a mechanism with positive live power.
+    /// Whether some state at λ_static carries a mechanism with positive live power (the
+    /// whole optimal face is decided, in the private module `multiplier::face`).
     pub mechanism_at_static: bool,
-    /// Every limit state, ascending in λ (the one at λ_static included when it exists); a
-    /// continuum of limit states appears once, by its least state.
+    /// Every limit state, ascending in λ (those at λ_static included when they exist); a
+    /// continuum of limit states appears once, by its least state; a face of limit states
+    /// at λ_static (all at one λ) once, by the centroid of its vertices with the contacts
+    /// active on the whole face, `continuum_to` = λ_static.
     pub limit_states: Vec<LoadLimitState>,
     /// Events of the sweep.
     pub events: usize,
