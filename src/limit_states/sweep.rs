@@ -914,8 +914,22 @@ fn too_many(joints: usize, settings: &Settings) -> Option<String> {
 }
 
 /// The event loop: from the vertices alive at the start to the top.
-fn run(mut sw: Sweeper) -> Sweep {
+fn run(sw: Sweeper) -> Sweep {
+    run_to_top(sw).0
+}
+
+/// [`run`], and, for a load sweep, the points of P(top) it reached (see
+/// [`sweep_load_with_top`]): every event within `settings.same_root` × (1 + top) of the top
+/// — neither counted nor checked there, the caller decides at the top — and every vertex
+/// alive at the end, evaluated at the top. Empty for the thickness sweep.
+fn run_to_top(mut sw: Sweeper) -> (Sweep, Vec<Reactions>) {
     let mut events = 0;
+    let mut at_top = Vec::new();
+    let top_band = match sw.param {
+        // the resolution of the sweep's roots (see `death`): relative, and absolute near 0
+        Param::Multiplier { .. } => sw.top - sw.settings.same_root * (1.0 + sw.top.abs()),
+        Param::Thickness => f64::INFINITY,
+    };
     loop {
         let next = sw
             .alive
@@ -926,14 +940,18 @@ fn run(mut sw: Sweeper) -> Sweep {
         let Some((i, (eta_e, killer))) = next else {
             break;
         };
-        events += 1;
+        let at_the_top = eta_e >= top_band;
+        if !at_the_top {
+            events += 1;
+        }
         if events > MAX_EVENTS {
-            return Sweep {
+            let sweep = Sweep {
                 states: sw.states,
                 events,
                 no_mechanism: sw.no_mechanism,
                 failure: Some(format!("more than {MAX_EVENTS} events")),
             };
+            return (sweep, at_top);
         }
         let x_e = sw.alive[i].0.at(eta_e);
 
@@ -944,7 +962,11 @@ fn run(mut sw: Sweeper) -> Sweep {
             }
         }
         act.sort_unstable();
-        sw.check(x_e, eta_e, &act);
+        if at_the_top {
+            at_top.push(x_e);
+        } else {
+            sw.check(x_e, eta_e, &act);
+        }
         // the vertices through the event point end here
         let tol = sw.tol(&x_e);
         sw.alive.swap_remove(i);
@@ -958,6 +980,9 @@ fn run(mut sw: Sweeper) -> Sweep {
             sw.push(v, eta_e);
         }
     }
+    if top_band.is_finite() {
+        at_top.extend(sw.alive.iter().map(|(v, _)| v.at(sw.top)));
+    }
     sw.states.sort_by(|a, b| a.eta.total_cmp(&b.eta));
     sw.states.dedup_by(|a, b| {
         (a.eta - b.eta).abs() <= 1e-12 * (1.0 + b.eta)
@@ -967,12 +992,13 @@ fn run(mut sw: Sweeper) -> Sweep {
                 .zip(&b.pattern)
                 .all(|(p, q)| p.kind == q.kind && p.beta == q.beta)
     });
-    Sweep {
+    let sweep = Sweep {
         states: sw.states,
         events,
         no_mechanism: sw.no_mechanism,
         failure: sw.lp_failure,
-    }
+    };
+    (sweep, at_top)
 }
 
 /// Follows P(λ) = {x : φ_i(x, λ) ≤ 0} of a discrete arch under a live load at fixed η,
@@ -991,15 +1017,38 @@ pub fn sweep_load(
     eta: f64,
     mu: f64,
     load: &LiveLoad,
-    (lambda_min, x_min): (f64, Reactions),
+    min: (f64, Reactions),
     lambda_static: f64,
     settings: &Settings,
 ) -> Sweep {
-    let failure = |f: String| Sweep {
-        states: vec![],
-        events: 0,
-        no_mechanism: vec![],
-        failure: Some(f),
+    sweep_load_with_top(arch, eta, mu, load, min, lambda_static, settings).0
+}
+
+/// [`sweep_load`], and the points of P(λ_static) the sweep reached: every vertex alive at
+/// the top, evaluated there, and every event within `settings.same_root` × (1 + λ_static)
+/// of the top (the resolution of its roots), which the sweep neither counts nor checks (the caller decides at λ_static). As λ
+/// rises to λ_static the vertices of P(λ) run into the vertices of the optimal face
+/// P(λ_static), so these points are those vertices (each possibly several times, and
+/// points on the box included), whichever state the LP returned there. Empty after a
+/// failure before the event loop.
+#[allow(clippy::too_many_arguments)]
+pub fn sweep_load_with_top(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    load: &LiveLoad,
+    (lambda_min, x_min): (f64, Reactions),
+    lambda_static: f64,
+    settings: &Settings,
+) -> (Sweep, Vec<Reactions>) {
+    let failure = |f: String| {
+        let sweep = Sweep {
+            states: vec![],
+            events: 0,
+            no_mechanism: vec![],
+            failure: Some(f),
+        };
+        (sweep, Vec::new())
     };
     let JointLayout::Discrete(joints) = arch.layout() else {
         return failure("the sweep needs the joints of a discrete arch".into());
@@ -1057,5 +1106,5 @@ pub fn sweep_load(
             "no vertex of the admissible set found at lambda = {lambda_min}"
         ));
     }
-    run(sw)
+    run_to_top(sw)
 }

@@ -11,6 +11,7 @@
 
 pub mod continuum;
 pub mod curve;
+mod face;
 
 pub use curve::{sample, trace, CurveSample, LoadCurve};
 
@@ -18,13 +19,13 @@ use crate::arch::{check_eta, Arch, InputError, JointLayout};
 use crate::collapse_mode::{classify, CollapseMode};
 use crate::contact::Contact;
 use crate::kinematics::{column, power};
-use crate::limit_states::sweep::{sweep_load, CheckedPoint};
+use crate::limit_states::sweep::{sweep_load_with_top, CheckedPoint};
 use crate::load::{rows, LiveLoad, LoadRow, Side};
 use crate::lp::{self, LpOutcome};
 use crate::mechanism::{self, Mechanism};
 use crate::settings::Settings;
 use crate::state::State;
-use crate::statics::{magnitude, Reactions};
+use crate::statics::Reactions;
 
 /// The admissible multipliers λ ≥ 0 at (η, μ).
 #[derive(Debug, Clone, PartialEq)]
@@ -140,10 +141,13 @@ pub struct LoadSurvey {
     /// The largest admissible multiplier and a state there; `None` when admissible states
     /// exist at every λ ≥ λ_min (the search then runs up to [`UNBOUNDED_SEARCH_TOP`]).
     pub lambda_static: Option<(f64, Reactions)>,
-    /// Whether the state at λ_static carries a mechanism with positive live power.
+    /// Whether some state at λ_static carries a mechanism with positive live power (the
+    /// whole optimal face is decided, in the private module `multiplier::face`).
     pub mechanism_at_static: bool,
-    /// Every limit state, ascending in λ (the one at λ_static included when it exists); a
-    /// continuum of limit states appears once, by its least state.
+    /// Every limit state, ascending in λ (those at λ_static included when they exist); a
+    /// continuum of limit states appears once, by its least state; a face of limit states
+    /// at λ_static (all at one λ) once, by the centroid of its vertices with the contacts
+    /// active on the whole face, `continuum_to` = λ_static.
     pub limit_states: Vec<LoadLimitState>,
     /// Events of the sweep.
     pub events: usize,
@@ -239,33 +243,46 @@ pub fn survey(
             })
         })
     };
-    // an LP failure at the static maximum is no decision, never "no mechanism"
-    let at_static = match max.map(|m| limit_state_at(arch, eta, mu, load, m, settings)) {
-        Some(Err(e)) => return Ok(Err(e)),
-        Some(Ok(s)) => s,
+    let top = max.map_or(UNBOUNDED_SEARCH_TOP, |m| m.0);
+    let (sw, at_top) = sweep_load_with_top(arch, eta, mu, load, min, top, settings);
+    // the states at λ_static: the optimal face whole, from the sweep's points at the top
+    // (at μ = ∞ the sweep is run for them alone); the LP's state where the sweep gave none
+    let at_static = match max {
         None => None,
+        Some((lambda_lp, x_lp)) => {
+            let mut points = face::walk(&all_rows, eta, mu, lambda_lp, x_lp, settings);
+            points.extend(at_top);
+            let mut f = face::face(&all_rows, eta, mu, lambda_lp, &points, settings);
+            if f.vertices.is_empty() {
+                f = face::face(&all_rows, eta, mu, lambda_lp, &[x_lp], settings);
+            }
+            // an LP failure at the static maximum is no decision, never "no mechanism"
+            match face::decide(arch, eta, mu, load, &all_rows, &f, settings) {
+                Ok(a) => Some(a),
+                Err(e) => return Ok(Err(e)),
+            }
+        }
     };
+    let max = at_static.as_ref().map(|a| a.state);
     if mu.is_infinite() {
         // associative (hinges only): the static maximum is the only limit state, and
         // none exists where λ is unbounded (see `continuous_survey`)
-        return Ok(Ok(match max {
-            None => LoadOutcome::NoCollapse {
-                lambda_min: min,
-                events: 0,
-            },
-            Some(m) => LoadOutcome::Limits(LoadSurvey {
+        return Ok(Ok(match (max, at_static) {
+            (Some(m), Some(a)) => LoadOutcome::Limits(LoadSurvey {
                 lambda_min: min,
                 lambda_static: Some(m),
-                mechanism_at_static: at_static.is_some(),
-                limit_states: at_static.into_iter().collect(),
+                mechanism_at_static: !a.limit_states.is_empty(),
+                limit_states: a.limit_states,
                 events: 0,
                 method: "associative",
                 no_mechanism: Vec::new(),
             }),
+            _ => LoadOutcome::NoCollapse {
+                lambda_min: min,
+                events: 0,
+            },
         }));
     }
-    let top = max.map_or(UNBOUNDED_SEARCH_TOP, |m| m.0);
-    let sw = sweep_load(arch, eta, mu, load, min, top, settings);
     if let Some(f) = sw.failure {
         return Ok(Err(match max {
             Some(m) => format!("{f} (lambda_static = {}, exact)", m.0),
@@ -291,7 +308,14 @@ pub fn survey(
             continuum_to: None,
         })
         .collect();
-    let mechanism_at_static = at_static.is_some();
+    let mut no_mechanism = sw.no_mechanism;
+    let (mechanism_at_static, at_static) = match at_static {
+        Some(a) => {
+            no_mechanism.extend(a.without);
+            (!a.limit_states.is_empty(), a.limit_states)
+        }
+        None => (false, Vec::new()),
+    };
     limit_states.extend(at_static);
     limit_states.retain(|s| !in_continuum(&s.pattern, &s.sides));
     limit_states.extend(continua);
@@ -309,35 +333,8 @@ pub fn survey(
         limit_states,
         events: sw.events,
         method: "sweep",
-        no_mechanism: sw.no_mechanism,
+        no_mechanism,
     })))
-}
-
-/// The limit state at the static maximum, if its active contacts carry a mechanism with
-/// positive live power.
-fn limit_state_at(
-    arch: &Arch,
-    eta: f64,
-    mu: f64,
-    load: &LiveLoad,
-    (lambda, x): (f64, Reactions),
-    settings: &Settings,
-) -> Result<Option<LoadLimitState>, String> {
-    let JointLayout::Discrete(joints) = arch.layout() else {
-        return Ok(None);
-    };
-    let pattern: Vec<continuum::LoadedContact> = rows(arch, joints, eta, mu, load)
-        .iter()
-        .filter(|r| {
-            let size = magnitude(r.contact.kind, eta, mu, &x, settings.magnitude_floor);
-            r.at(&x, lambda).abs() <= settings.event_tol * size
-        })
-        .map(|r| continuum::LoadedContact {
-            contact: r.contact,
-            side: r.side,
-        })
-        .collect();
-    limit_state_on(arch, eta, mu, load, (lambda, x), &pattern, settings)
 }
 
 /// Continua of limit states. Two active contacts whose compatibility columns cancel — the
@@ -572,6 +569,12 @@ fn continuous_finite_friction(
         let h = (b - a) / pieces as f64;
         let mut found: Vec<LoadLimitState> = Vec::new();
         for st in &states {
+            // a face of states at the discretisation's own static maximum (a continuum at
+            // one λ): its states lie at or above the continuous arch's λ_static, which is
+            // decided on the continuum itself below
+            if st.continuum_to.is_some_and(|to| to <= st.lambda) {
+                continue;
+            }
             if st.continuum_to.is_some() {
                 return Err(format!(
                     "the {pieces}-piece discretisation has a continuum of limit states from lambda = {} (the loaded point sliding along its section): not carried over to the continuous arch yet",

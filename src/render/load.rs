@@ -393,10 +393,14 @@ pub fn table(q: &LoadQuestion, outcome: &Result<LoadOutcome, String>) -> String 
                     sig(l.lambda, 12),
                     l.mode.name(),
                     pattern_text(&q.load, l),
-                    l.continuum_to.map_or(String::new(), |to| format!(
-                        "  (least of a continuum of limit states up to lambda = {})",
-                        sig(to, 12)
-                    ))
+                    l.continuum_to.map_or(String::new(), |to| if to > l.lambda {
+                        format!(
+                            "  (least of a continuum of limit states up to lambda = {})",
+                            sig(to, 12)
+                        )
+                    } else {
+                        "  (a continuum of limit states at this lambda: every state of a face of the admissible set)".to_string()
+                    })
                 );
             }
             let _ = writeln!(

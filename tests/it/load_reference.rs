@@ -717,3 +717,168 @@ fn load_curve_corners_match_the_brute_force() {
     );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+
+/// The vertices of the optimal face {x : admissible at λ_static} by the reference's own
+/// rows and LPs (HiGHS): λ held within 1e-12 (relative) of `lambda`, each of ±h, ±v, ±w
+/// optimised; each vertex as its active contacts (within 1e-9), distinct.
+fn face_vertices(case: &Case, lambda: f64) -> Vec<Vec<(usize, ContactKind)>> {
+    let rows: Vec<([f64; 4], f64)> = case.contacts.iter().map(|&c| case.row(c)).collect();
+    let mut out: Vec<Vec<(usize, ContactKind)>> = Vec::new();
+    for k in 0..3 {
+        for sign in [1.0, -1.0] {
+            let mut vars = ProblemVariables::new();
+            let z: Vec<_> = (0..4).map(|_| vars.add(variable())).collect();
+            let mut p = vars
+                .minimise(sign * z[k])
+                .using(highs)
+                .set_option("output_flag", false)
+                .set_option("primal_feasibility_tolerance", 1e-10);
+            p = p.with((1.0 * z[3]).geq(lambda - 1e-12 * (1.0 + lambda)));
+            for (a, c) in &rows {
+                let mut e = Expression::from(0.0);
+                for q in 0..4 {
+                    e += a[q] * z[q];
+                }
+                p = p.with(e.leq(-c));
+            }
+            let Ok(sol) = p.solve() else { continue };
+            let x = [0, 1, 2, 3].map(|q| sol.value(z[q]));
+            let scale = 1.0 + x.iter().map(|v| v.abs()).sum::<f64>();
+            let active: Vec<(usize, ContactKind)> = (0..rows.len())
+                .filter(|&i| {
+                    let (a, c) = rows[i];
+                    (a[0] * x[0] + a[1] * x[1] + a[2] * x[2] + a[3] * x[3] + c).abs()
+                        <= 1e-9 * scale
+                })
+                .map(|i| case.contacts[i])
+                .collect();
+            if !out.contains(&active) {
+                out.push(active);
+            }
+        }
+    }
+    out
+}
+
+/// The state at λ_static does not depend on which optimal vertex the LP returns (a
+/// degenerate maximum: the optimal face an edge, e.g. λ_static set by sliding rows, which
+/// do not involve w, with w free between two hinge rows). The reference finds the face's
+/// vertices itself and decides: where the contacts active on the whole face carry a
+/// mechanism with positive live power, the survey must report exactly those contacts at
+/// λ_static (a continuum of states when the face is not a point), not the contacts of one
+/// vertex; a mechanism at λ_static must exist iff one exists at some vertex. The README's
+/// six-voussoir arch (its face an edge in w) and random small arches.
+#[test]
+fn the_state_at_lambda_static_is_the_faces() {
+    let settings = Settings::default();
+    let readme = (
+        vec![0.2442, 0.8409, 1.2686, 2.0653, 2.3805, 2.7970, 3.1489],
+        WeightModel::Centreline,
+        1.0246,
+        0.6364,
+        LiveLoad::Horizontal {
+            towards_right: false,
+        },
+    );
+    let mut rng = Rng(0xface_0000_0000_0003);
+    let mut cases = vec![readme];
+    for _ in 0..30 {
+        let r = random_loaded(&mut rng);
+        cases.push((r.joints, r.weight, r.mu, r.eta, r.load));
+    }
+    let (mut edges, mut failures) = (0, Vec::new());
+    for (n, (joints, weight, mu, eta, load)) in cases.into_iter().enumerate() {
+        let arch = Arch::new(joints[0], *joints.last().unwrap(), weight)
+            .unwrap()
+            .with_joints(&joints)
+            .unwrap();
+        let Ok(LoadOutcome::Limits(sv)) = survey(&arch, eta, mu, &load, &settings).unwrap() else {
+            continue;
+        };
+        let Some((lambda_s, _)) = sv.lambda_static else {
+            continue;
+        };
+        let case = Case::new(&joints, weight == WeightModel::Centroid, eta, mu, load);
+        let vertices = face_vertices(&case, lambda_s);
+        if vertices.len() > 1 {
+            edges += 1;
+        }
+        let common: Vec<(usize, ContactKind)> = vertices
+            .first()
+            .map(|v| {
+                v.iter()
+                    .copied()
+                    .filter(|c| vertices.iter().all(|w| w.contains(c)))
+                    .collect()
+            })
+            .unwrap_or_default();
+        let at_static: Vec<_> = sv
+            .limit_states
+            .iter()
+            .filter(|s| s.lambda >= lambda_s * (1.0 - 1e-9))
+            .collect();
+        let any = vertices
+            .iter()
+            .any(|v| case.mechanism(v, lambda_s).is_some());
+        if any != sv.mechanism_at_static {
+            failures.push(format!(
+                "case {n}: mechanism_at_static {} but the face's vertices say {any}",
+                sv.mechanism_at_static
+            ));
+        }
+        // a continuum of limit states in λ that reaches λ_static (two contacts whose
+        // columns cancel) holds the states there that have both its contacts active
+        let in_lambda_continuum = sv.limit_states.iter().any(|s| {
+            s.lambda < lambda_s * (1.0 - 1e-9)
+                && s.continuum_to
+                    .is_some_and(|to| to >= lambda_s * (1.0 - 1e-9))
+        });
+        if mu.is_finite() && !in_lambda_continuum && case.mechanism(&common, lambda_s).is_some() {
+            // the crate's pattern as the reference's (section, kind)
+            let section = |c: &arch_enum::Contact, side: arch_enum::load::Side| {
+                case.sections
+                    .iter()
+                    .position(|s| {
+                        s.beta == c.beta
+                            && s.loaded_side
+                                == (side == arch_enum::load::Side::After && load.splits(s.beta))
+                    })
+                    .map(|s| (s, c.kind))
+            };
+            let ok = at_static.len() == 1 && {
+                let s = at_static[0];
+                let mut ours: Vec<_> = s
+                    .pattern
+                    .iter()
+                    .zip(&s.sides)
+                    .filter_map(|(c, side)| section(c, *side))
+                    .collect();
+                let mut theirs = common.clone();
+                ours.sort_by_key(|p| (p.0, p.1 as usize));
+                theirs.sort_by_key(|p| (p.0, p.1 as usize));
+                // the extrados hinge at a split joint is one plane on both sides: the
+                // reference lists it once per side as well
+                ours == theirs && (vertices.len() == 1) == s.continuum_to.is_none()
+            };
+            if !ok {
+                failures.push(format!(
+                    "case {n}: the face ({} vertices) has the contacts {common:?} in common, carrying a mechanism; the survey reports {:?}",
+                    vertices.len(),
+                    at_static
+                        .iter()
+                        .map(|s| (s.lambda, s.pattern.iter().map(|c| (c.beta, c.kind)).collect::<Vec<_>>(), s.continuum_to))
+                        .collect::<Vec<_>>()
+                ));
+            }
+        }
+    }
+    println!(
+        "{edges} optimal faces with more than one vertex; {} disagreements",
+        failures.len()
+    );
+    assert!(
+        edges >= 1,
+        "no degenerate maximum met: the test checks nothing"
+    );
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
