@@ -142,7 +142,9 @@ pub struct ExactCorner {
     pub lambda: f64,
     /// Reactions.
     pub x: Reactions,
-    /// The five contacts active there (with the side of a loaded section).
+    /// The five contacts active there (with the side of a loaded section), or the four
+    /// sliding ones of two faces of states along w at λ_static (w is then the middle of
+    /// the face at the corner).
     pub pattern: Vec<(Contact, Side)>,
     /// λ is continuous across the corner: each side's least limit state is on these five
     /// contacts, or its λ is the corner's to `SAME_LAMBDA` (else a limit state appears or
@@ -416,8 +418,20 @@ fn exact_corner(
     let ends = [&states.first()?.3, &states.last()?.3];
     let all: Vec<&Vec<(Contact, Side)>> = states.iter().map(|s| &s.3).collect();
     let candidates = [distinct(&[&start.3])?, distinct(&ends)?, distinct(&all)?];
-    let union = candidates.into_iter().find(|u| u.len() == 5)?;
-    let on_union = |p: &Vec<(Contact, Side)>| distinct(&[&union, p]).is_some_and(|u| u.len() == 5);
+    // four sliding rows (w enters none of them): the least states are faces of states along
+    // w at λ_static, and the corner is where the two faces' rows meet, four equations in
+    // (h, v, λ, μ); w is held at the start's (inside the face) and then centred in the band
+    // the other rows leave it
+    let w_free = |u: &[(Contact, Side)]| {
+        u.iter()
+            .all(|(c, side)| row_in(&at_start, c, *side).is_some_and(|r| r.a[2] == 0.0))
+    };
+    let union = candidates
+        .into_iter()
+        .find(|u| u.len() == 5 || (u.len() == 4 && w_free(u)))?;
+    let size = union.len();
+    let on_union = |p: &Vec<(Contact, Side)>| distinct(&[&union, p]).is_some_and(|u| u.len() == size);
+    let w0 = start.2[2];
     let continuous_at = |s: &(f64, f64, Reactions, Pattern), lambda: f64| {
         on_union(&s.3) || (s.1 - lambda).abs() <= SAME_LAMBDA * (1.0 + lambda.abs())
     };
@@ -437,6 +451,10 @@ fn exact_corner(
             }
             // affine in μ: the derivative is the difference of the rows at μ + 1 and μ
             jac[(i, 4)] = (0..4).map(|k| (r1.a[k] - r.a[k]) * v[k]).sum::<f64>() + (r1.c - r.c);
+        }
+        if size == 4 {
+            f[4] = z[2] - w0;
+            jac[(4, 2)] = 1.0;
         }
         Some((f, jac))
     };
@@ -460,13 +478,29 @@ fn exact_corner(
     // again from the root rounded to 9 digits: the start's last bits (LP noise) do not
     // reach the answer, which is then the same run to run
     let z = newton(z.map(|v| format!("{v:.8e}").parse().unwrap_or(v)))?;
-    let (mu, lambda, x) = (z[4], z[3], [z[0], z[1], z[2]]);
+    let (mu, lambda, mut x) = (z[4], z[3], [z[0], z[1], z[2]]);
     let widen = CLUSTER_REL * mu_hi;
     if mu < mu_lo - widen || mu > mu_hi + widen {
         return None;
     }
+    let at_mu = rows(arch, joints, eta, mu, load);
+    if size == 4 {
+        // w in the middle of the band the rows that contain it leave
+        let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+        for r in at_mu.iter().filter(|r| r.a[2] != 0.0) {
+            let bound = -(r.a[0] * x[0] + r.a[1] * x[1] + r.a[3] * lambda + r.c) / r.a[2];
+            if r.a[2] > 0.0 {
+                hi = hi.min(bound);
+            } else {
+                lo = lo.max(bound);
+            }
+        }
+        if lo.is_finite() && hi.is_finite() && lo <= hi {
+            x[2] = 0.5 * (lo + hi);
+        }
+    }
     // admissible at every joint (to the survey's event tolerance)
-    let admissible = rows(arch, joints, eta, mu, load).iter().all(|r| {
+    let admissible = at_mu.iter().all(|r| {
         let size =
             magnitude(r.contact.kind, eta, mu, &x, settings.magnitude_floor) * (1.0 + lambda.abs());
         r.at(&x, lambda) <= settings.event_tol * size

@@ -637,7 +637,7 @@ pub fn curve_table(q: &LoadQuestion, curve: &LoadCurve) -> String {
     } else {
         let _ = writeln!(
             s,
-            "corners             where the least limit state changes (exact: five contacts active at one state, Newton in h, v, w, lambda, mu; else the bisection's neighbouring floats in mu):"
+            "corners             where the least limit state changes (exact: five contacts active at one state, or four sliding ones where the least states are faces along w, Newton in h, v, w, lambda, mu; else the bisection's neighbouring floats in mu):"
         );
     }
     for c in &curve.corners {
