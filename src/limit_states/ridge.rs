@@ -636,6 +636,22 @@ fn may_carry_mechanism(js: &[JointRows], mu: f64, c: &Candidate, settings: &Sett
     }
     let cols: [[f64; 3]; 4] =
         std::array::from_fn(|k| column(active[k].1, js[active[k].0].beta, c.eta));
+    null_vector_signs(&cols, 1e-6) != NullSigns::Mixed
+}
+
+/// The signs of the null vector of four compatibility columns (3 × 4), its cofactors.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum NullSigns {
+    /// Every cofactor strictly of one sign: the rates of a mechanism.
+    OneSign,
+    /// Cofactors of both signs, none near zero: no mechanism on these four.
+    Mixed,
+    /// A cofactor within `zero_rel` of the largest: the null space may be larger (an LP
+    /// decides).
+    NearZero,
+}
+
+fn null_vector_signs(cols: &[[f64; 3]; 4], zero_rel: f64) -> NullSigns {
     let lam = [
         det3(cols[1], cols[2], cols[3]),
         -det3(cols[0], cols[2], cols[3]),
@@ -643,8 +659,13 @@ fn may_carry_mechanism(js: &[JointRows], mu: f64, c: &Candidate, settings: &Sett
         -det3(cols[0], cols[1], cols[2]),
     ];
     let big = lam.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    let one_sign = lam.iter().all(|&v| v > 0.0) || lam.iter().all(|&v| v < 0.0);
-    one_sign || lam.iter().any(|v| v.abs() <= 1e-6 * big)
+    if lam.iter().any(|v| v.abs() <= zero_rel * big) {
+        NullSigns::NearZero
+    } else if lam.iter().all(|&v| v > 0.0) || lam.iter().all(|&v| v < 0.0) {
+        NullSigns::OneSign
+    } else {
+        NullSigns::Mixed
+    }
 }
 
 /// A candidate checked like a point of the sweep: admissible at every joint, and a
@@ -676,16 +697,8 @@ fn check(
             })
     });
     if a.len() == 4 && !two_senses {
-        let cols: Vec<[f64; 3]> = a.iter().map(|p| column(p.kind, p.beta, c.eta)).collect();
-        let lam = [
-            det3(cols[1], cols[2], cols[3]),
-            -det3(cols[0], cols[2], cols[3]),
-            det3(cols[0], cols[1], cols[3]),
-            -det3(cols[0], cols[1], cols[2]),
-        ];
-        let big = lam.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-        let one_sign = lam.iter().all(|&v| v > 0.0) || lam.iter().all(|&v| v < 0.0);
-        if lam.iter().all(|v| v.abs() > 1e-9 * big) && !one_sign {
+        let cols: [[f64; 3]; 4] = std::array::from_fn(|k| column(a[k].kind, a[k].beta, c.eta));
+        if null_vector_signs(&cols, 1e-9) == NullSigns::Mixed {
             return Ok(None);
         }
     }

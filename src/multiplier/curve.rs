@@ -430,7 +430,8 @@ fn exact_corner(
         .into_iter()
         .find(|u| u.len() == 5 || (u.len() == 4 && w_free(u)))?;
     let size = union.len();
-    let on_union = |p: &Vec<(Contact, Side)>| distinct(&[&union, p]).is_some_and(|u| u.len() == size);
+    let on_union =
+        |p: &Vec<(Contact, Side)>| distinct(&[&union, p]).is_some_and(|u| u.len() == size);
     let w0 = start.2[2];
     let continuous_at = |s: &(f64, f64, Reactions, Pattern), lambda: f64| {
         on_union(&s.3) || (s.1 - lambda).abs() <= SAME_LAMBDA * (1.0 + lambda.abs())

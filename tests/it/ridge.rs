@@ -10,6 +10,13 @@ use arch_enum::settings::LimitStateSearch;
 use arch_enum::{Arch, Settings, WeightModel};
 use std::f64::consts::PI;
 
+fn discrete(br: f64, bl: f64, joints: &[f64]) -> Arch {
+    Arch::new(br, bl, WeightModel::Centreline)
+        .unwrap()
+        .with_joints(joints)
+        .unwrap()
+}
+
 fn sweep_settings() -> Settings {
     Settings {
         limit_state_search: LimitStateSearch::Sweep,
@@ -83,10 +90,7 @@ fn ridge_and_sweep_agree_on_random_discrete_arches() {
         if !mu.is_finite() {
             continue;
         }
-        let arch = Arch::new(br, bl, WeightModel::Centreline)
-            .unwrap()
-            .with_joints(&joints)
-            .unwrap();
+        let arch = discrete(br, bl, &joints);
         let ridge = search(&arch, mu, &Settings::default()).unwrap();
         let sweep = search(&arch, mu, &sweep_settings()).unwrap();
         let text = format!(
@@ -151,10 +155,7 @@ fn ridge_and_sweep_agree_on_symmetric_and_fine_arches() {
             .collect();
         let ms = least_friction(br, bl, &joints);
         let mu = ms * (1.0 + 1e-3 + 2.0 * rng.next());
-        let arch = Arch::new(br, bl, WeightModel::Centreline)
-            .unwrap()
-            .with_joints(&joints)
-            .unwrap();
+        let arch = discrete(br, bl, &joints);
         let ridge = search(&arch, mu, &Settings::default()).unwrap();
         let sweep = search(&arch, mu, &sweep_settings()).unwrap();
         if let (Ok(r), Ok(s)) = (&ridge, &sweep) {
