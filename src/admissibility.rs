@@ -6,11 +6,11 @@
 //! working set. Infeasibility on a subset of joints proves infeasibility for the arch.
 
 use crate::arch::{Arch, JointLayout, Radians};
-use crate::contact::ContactKind;
+use crate::contact::{ContactKind, Peak};
 use crate::lp::{self, LpOutcome};
 use crate::settings::Settings;
 use crate::state::State;
-use crate::statics::{actions, Reactions};
+use crate::statics::{actions, activation_of, forces_with, Reactions};
 
 /// The result of the margin problem at one (η, μ).
 #[derive(Debug, Clone)]
@@ -87,6 +87,21 @@ pub fn grad_norm(arch: &Arch, eta: f64, mu: f64, mode: ContactKind, beta: Radian
         .grad_norm()
 }
 
+/// [`grad_norm`] at a peak of a scan, from its cached (sin β, cos β) when it has them (the
+/// same bits).
+pub fn peak_grad_norm(arch: &Arch, eta: f64, mu: f64, p: &Peak) -> f64 {
+    match p.sin_cos {
+        Some(sc) => activation_of(
+            p.contact.kind,
+            &forces_with(arch, eta, p.contact.beta, sc),
+            eta,
+            mu,
+        )
+        .grad_norm(),
+        None => grad_norm(arch, eta, mu, p.contact.kind, p.contact.beta),
+    }
+}
+
 /// How far constraint generation goes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Goal {
@@ -129,7 +144,7 @@ pub fn max_margin(
         let mut added = false;
         let mut worst: Vec<(f64, Radians)> = Vec::new();
         for p in peaks.iter().filter(|p| modes.contains(&p.contact.kind)) {
-            let slack = -p.value / grad_norm(arch, eta, mu, p.contact.kind, p.contact.beta);
+            let slack = -p.value / peak_grad_norm(arch, eta, mu, p);
             margin = margin.min(slack);
             if slack < s - tol {
                 worst.push((slack, p.contact.beta));

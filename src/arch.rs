@@ -100,6 +100,9 @@ pub struct Arch {
     weight: WeightModel,
     /// (sin β_R, cos β_R), computed once: every internal action needs them.
     right_trig: (f64, f64),
+    /// (sin β_j, cos β_j) of each joint of a discrete arch (empty for a continuous one),
+    /// computed once: every scan over the joints needs them.
+    joint_trig: Vec<(f64, f64)>,
 }
 
 /// Formats a number for messages: plain for ordinary magnitudes, scientific otherwise.
@@ -158,6 +161,7 @@ impl Arch {
             layout: JointLayout::Continuous,
             weight,
             right_trig: beta_right.sin_cos(),
+            joint_trig: Vec::new(),
         })
     }
 
@@ -185,7 +189,7 @@ impl Arch {
             });
         }
         let (a, b) = (self.beta_right, self.beta_left);
-        let joints = (0..=blocks)
+        let joints: Vec<Radians> = (0..=blocks)
             .map(|i| {
                 if i == blocks {
                     b
@@ -195,6 +199,7 @@ impl Arch {
             })
             .collect();
         Ok(Arch {
+            joint_trig: trig_of(&joints),
             layout: JointLayout::Discrete(joints),
             ..self
         })
@@ -229,6 +234,7 @@ impl Arch {
             joints.push(b);
         }
         Ok(Arch {
+            joint_trig: trig_of(&joints),
             layout: JointLayout::Discrete(joints),
             ..self
         })
@@ -245,6 +251,12 @@ impl Arch {
                 .unwrap_or(beta),
             JointLayout::Continuous => beta,
         }
+    }
+    /// (sin β_j, cos β_j) of the joints of a discrete arch, in the order of its joints
+    /// (empty for a continuous arch), computed once with the arch.
+    #[inline]
+    pub fn joint_sin_cos(&self) -> &[(f64, f64)] {
+        &self.joint_trig
     }
     /// (sin β_R, cos β_R) of the right springing, computed once with the arch.
     #[inline]
@@ -294,14 +306,23 @@ impl Arch {
             }
         };
         let beta_right = PI - self.beta_left;
+        let joint_trig = match &layout {
+            JointLayout::Continuous => Vec::new(),
+            JointLayout::Discrete(j) => trig_of(j),
+        };
         Arch {
             beta_right,
             beta_left: PI - self.beta_right,
             layout,
             weight: self.weight,
             right_trig: beta_right.sin_cos(),
+            joint_trig,
         }
     }
+}
+
+fn trig_of(joints: &[Radians]) -> Vec<(f64, f64)> {
+    joints.iter().map(|b| b.sin_cos()).collect()
 }
 
 /// Springings (and joints) mirror each other when β_R + β_L = π to within this, relative

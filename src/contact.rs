@@ -48,6 +48,9 @@ pub struct Peak {
     pub contact: Contact,
     /// φ at that contact (≤ 0 when admissible).
     pub value: f64,
+    /// (sin β, cos β) when the scan had them cached (the joints of a discrete arch), so
+    /// that what follows needs no trigonometry.
+    pub sin_cos: Option<(f64, f64)>,
 }
 
 /// The four activation functions of a joint (formulation §3), each ≤ 0 when admissible.

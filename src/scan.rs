@@ -12,7 +12,7 @@ use crate::contact::ContactKind;
 use crate::contact::{Contact, Location, Peak};
 use crate::settings::Settings;
 use crate::state::State;
-use crate::statics::actions;
+use crate::statics::{actions, activation_of, forces_with};
 
 impl State<'_> {
     /// φ of `mode` and its first two β-derivatives at `beta`.
@@ -55,10 +55,13 @@ impl State<'_> {
     fn discrete_peaks(&self, joints: &[Radians], all: bool) -> Vec<Peak> {
         let modes = ContactKind::active_at(self.mu);
         let mut values = vec![[0.0; 4]; joints.len()];
+        let trig = self.arch.joint_sin_cos();
+        let cached = trig.len() == joints.len();
         for (j, &beta) in joints.iter().enumerate() {
-            let a = actions(self.arch, self.eta, beta);
+            let sc = if cached { trig[j] } else { beta.sin_cos() };
+            let f = forces_with(self.arch, self.eta, beta, sc);
             for (k, &mode) in modes.iter().enumerate() {
-                values[j][k] = a.activation(mode, 0, self.eta, self.mu).at(&self.x);
+                values[j][k] = activation_of(mode, &f, self.eta, self.mu).at(&self.x);
             }
         }
         let mut out = Vec::new();
@@ -76,6 +79,7 @@ impl State<'_> {
                             free: false,
                         },
                         value: v,
+                        sin_cos: cached.then(|| trig[j]),
                     });
                 }
             }
@@ -144,6 +148,7 @@ pub fn peaks_over(
                     free,
                 },
                 value,
+                sin_cos: None,
             })
         };
         if vals(0)[1] <= 0.0 {

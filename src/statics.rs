@@ -69,6 +69,41 @@ pub struct Actions {
     pub dm_deta: [f64; 3],
 }
 
+/// N, T, M alone (no β-derivatives) at angle `beta` with (sin β, cos β) given: what a scan
+/// of the joints needs, the same arithmetic as [`actions_with`]'s (which calls it).
+#[inline]
+pub fn forces_with(arch: &Arch, eta: f64, beta: Radians, (s, c): (f64, f64)) -> [Affine; 3] {
+    let (sr, cr) = arch.right_sin_cos();
+    let d = beta - arch.beta_right();
+    let rho = arch.weight().rho(eta);
+    [
+        Affine {
+            g: [s, c, 0.0],
+            c: -d * c,
+        },
+        Affine {
+            g: [c, -s, 0.0],
+            c: d * s,
+        },
+        Affine {
+            g: [-(s - sr), cr - c, 1.0],
+            c: d * c - rho * (s - sr),
+        },
+    ]
+}
+
+/// The activation function of `mode` from N, T, M (any one β-derivative order) as an
+/// affine function of x at thickness `eta` and friction `mu`.
+#[inline]
+pub fn activation_of(mode: ContactKind, [n, t, m]: &[Affine; 3], eta: f64, mu: f64) -> Affine {
+    match mode {
+        ContactKind::HingeExtrados => Affine::combine(1.0, m, -0.5 * eta, n),
+        ContactKind::HingeIntrados => Affine::combine(-1.0, m, -0.5 * eta, n),
+        ContactKind::SlidePlus => Affine::combine(1.0, t, -mu, n),
+        ContactKind::SlideMinus => Affine::combine(-1.0, t, -mu, n),
+    }
+}
+
 /// Internal actions at angle `beta` of `arch` at thickness `eta` (formulation §3):
 ///
 /// N = h sin β + v cos β − (β − β_R) cos β,
@@ -77,25 +112,17 @@ pub struct Actions {
 ///
 /// with ρ = 1 (centreline weight) or 1 + η²/12 (true centroid).
 pub fn actions(arch: &Arch, eta: f64, beta: Radians) -> Actions {
-    let br = arch.beta_right();
-    let (s, c) = beta.sin_cos();
-    let (sr, cr) = arch.right_sin_cos();
-    let d = beta - br;
+    actions_with(arch, eta, beta, beta.sin_cos())
+}
+
+/// [`actions`] with (sin β, cos β) given (a discrete arch's cached
+/// [`Arch::joint_sin_cos`]): the same arithmetic, the same bits.
+#[inline]
+pub fn actions_with(arch: &Arch, eta: f64, beta: Radians, (s, c): (f64, f64)) -> Actions {
+    let sr = arch.right_sin_cos().0;
     let rho = arch.weight().rho(eta);
     let drho = arch.weight().drho_deta(eta);
-
-    let n0 = Affine {
-        g: [s, c, 0.0],
-        c: -d * c,
-    };
-    let t0 = Affine {
-        g: [c, -s, 0.0],
-        c: d * s,
-    };
-    let m0 = Affine {
-        g: [-(s - sr), cr - c, 1.0],
-        c: d * c - rho * (s - sr),
-    };
+    let [n0, t0, m0] = forces_with(arch, eta, beta, (s, c));
     // dN = T − cos β, dT = −N + sin β, dM = −T + (1 − ρ) cos β
     let n1 = Affine {
         g: t0.g,
@@ -135,13 +162,12 @@ impl Actions {
     /// affine function of x at thickness `eta` and friction `mu`.
     #[inline]
     pub fn activation(&self, mode: ContactKind, order: usize, eta: f64, mu: f64) -> Affine {
-        let (n, t, m) = (&self.n[order], &self.t[order], &self.m[order]);
-        match mode {
-            ContactKind::HingeExtrados => Affine::combine(1.0, m, -0.5 * eta, n),
-            ContactKind::HingeIntrados => Affine::combine(-1.0, m, -0.5 * eta, n),
-            ContactKind::SlidePlus => Affine::combine(1.0, t, -mu, n),
-            ContactKind::SlideMinus => Affine::combine(-1.0, t, -mu, n),
-        }
+        activation_of(
+            mode,
+            &[self.n[order], self.t[order], self.m[order]],
+            eta,
+            mu,
+        )
     }
 
     /// ∂/∂η of the activation function of `mode` (β-derivative `order`) at x.

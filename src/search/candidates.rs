@@ -1,7 +1,7 @@
 //! Candidate active contacts: the local maxima of φ at a state whose normalised slack is
 //! within `candidate_rel` of the LP margin (formulation §5, pattern enumeration).
 
-use crate::admissibility::grad_norm;
+use crate::admissibility::peak_grad_norm;
 use crate::contact::{Contact, ContactKind, Peak};
 use crate::settings::Settings;
 use crate::state::State;
@@ -24,12 +24,7 @@ pub fn candidates_at(
         .near_active(settings, f64::NEG_INFINITY)
         .into_iter()
         .filter(|p| modes.contains(&p.contact.kind))
-        .map(|p| {
-            (
-                -p.value / grad_norm(arch, eta, mu, p.contact.kind, p.contact.beta),
-                p,
-            )
-        })
+        .map(|p| (-p.value / peak_grad_norm(arch, eta, mu, &p), p))
         .filter(|(slack, _)| *slack <= limit)
         .collect();
     peaks.sort_by(|a, b| a.0.total_cmp(&b.0));
