@@ -224,6 +224,9 @@ impl State<'_> {
         let mag = |m: ContactKind| {
             crate::statics::magnitude(m, self.eta, self.mu, &self.x, settings.magnitude_floor)
         };
+        if let JointLayout::Discrete(joints) = self.arch.layout() {
+            return self.discrete_verdict(joints, modes, &mag, settings);
+        }
         let peaks: Vec<Peak> = self
             .peaks(settings)
             .into_iter()
@@ -238,6 +241,44 @@ impl State<'_> {
             .filter(|p| p.value >= -10.0 * settings.adm_tol * mag(p.contact.kind))
             .map(|p| p.contact)
             .collect();
+        active.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.kind.cmp(&b.kind)));
+        Verdict { worst, active }
+    }
+
+    /// [`Self::verdict`] of a discrete arch in one pass over its joints (the same values,
+    /// the same verdict), without listing every contact first.
+    fn discrete_verdict(
+        &self,
+        joints: &[Radians],
+        modes: &[ContactKind],
+        mag: &dyn Fn(ContactKind) -> f64,
+        settings: &Settings,
+    ) -> Verdict {
+        let kinds: Vec<(ContactKind, f64)> = ContactKind::active_at(self.mu)
+            .iter()
+            .filter(|k| modes.contains(k))
+            .map(|&k| (k, mag(k)))
+            .collect();
+        let trig = self.arch.joint_sin_cos();
+        let cached = trig.len() == joints.len();
+        let mut worst = f64::NEG_INFINITY;
+        let mut active = Vec::new();
+        for (j, &beta) in joints.iter().enumerate() {
+            let sc = if cached { trig[j] } else { beta.sin_cos() };
+            let f = forces_with(self.arch, self.eta, beta, sc);
+            for &(kind, m) in &kinds {
+                let value = activation_of(kind, &f, self.eta, self.mu).at(&self.x);
+                worst = worst.max(value / m);
+                if value >= -10.0 * settings.adm_tol * m {
+                    active.push(Contact {
+                        beta,
+                        kind,
+                        at: self.location(beta),
+                        free: false,
+                    });
+                }
+            }
+        }
         active.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.kind.cmp(&b.kind)));
         Verdict { worst, active }
     }
