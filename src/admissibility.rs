@@ -102,6 +102,53 @@ pub fn peak_grad_norm(arch: &Arch, eta: f64, mu: f64, p: &Peak) -> f64 {
     }
 }
 
+/// The least normalised slack −φ/‖∇φ‖ over every contact of `modes` at every joint of a
+/// discrete arch at x, and the (at most) four smallest below `below`, ascending (ties in
+/// the order kind by kind, then joint by joint): one pass, no list of every contact.
+fn discrete_slacks(
+    arch: &Arch,
+    joints: &[Radians],
+    eta: f64,
+    mu: f64,
+    modes: &[ContactKind],
+    x: &Reactions,
+    below: f64,
+) -> (f64, Vec<(f64, Radians)>) {
+    let kinds: Vec<(usize, ContactKind)> = ContactKind::active_at(mu)
+        .iter()
+        .enumerate()
+        .filter(|(_, k)| modes.contains(k))
+        .map(|(i, &k)| (i, k))
+        .collect();
+    let trig = arch.joint_sin_cos();
+    let cached = trig.len() == joints.len();
+    let n = joints.len();
+    let mut margin = f64::INFINITY;
+    // (slack, order in the kind-major listing, β), the four smallest so far, ascending
+    let mut worst: Vec<(f64, usize, Radians)> = Vec::with_capacity(5);
+    for (j, &beta) in joints.iter().enumerate() {
+        let sc = if cached { trig[j] } else { beta.sin_cos() };
+        let f = forces_with(arch, eta, beta, sc);
+        for &(k, kind) in &kinds {
+            let a = activation_of(kind, &f, eta, mu);
+            let slack = -a.at(x) / a.grad_norm();
+            margin = margin.min(slack);
+            if slack < below {
+                let key = (slack, k * n + j);
+                let at = worst
+                    .iter()
+                    .position(|w| key.0.total_cmp(&w.0).then(key.1.cmp(&w.1)).is_lt())
+                    .unwrap_or(worst.len());
+                if at < 4 {
+                    worst.insert(at, (slack, k * n + j, beta));
+                    worst.truncate(4);
+                }
+            }
+        }
+    }
+    (margin, worst.into_iter().map(|w| (w.0, w.2)).collect())
+}
+
 /// How far constraint generation goes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Goal {
@@ -137,22 +184,30 @@ pub fn max_margin(
             })
             .collect();
         let (x, s) = lp::max_margin(&rows, cap, settings)?;
-        let state = State { arch, eta, mu, x };
-        let peaks = state.peaks(settings);
         let tol = settings.sep_tol * crate::statics::reaction_scale(&x);
-        let mut margin = f64::INFINITY;
-        let mut added = false;
-        let mut worst: Vec<(f64, Radians)> = Vec::new();
-        for p in peaks.iter().filter(|p| modes.contains(&p.contact.kind)) {
-            let slack = -p.value / peak_grad_norm(arch, eta, mu, p);
-            margin = margin.min(slack);
-            if slack < s - tol {
-                worst.push((slack, p.contact.beta));
+        let (margin, worst) = match arch.layout() {
+            JointLayout::Discrete(joints) => {
+                discrete_slacks(arch, joints, eta, mu, modes, &x, s - tol)
             }
-        }
+            JointLayout::Continuous => {
+                let peaks = State { arch, eta, mu, x }.peaks(settings);
+                let mut margin = f64::INFINITY;
+                let mut worst: Vec<(f64, Radians)> = Vec::new();
+                for p in peaks.iter().filter(|p| modes.contains(&p.contact.kind)) {
+                    let slack = -p.value / peak_grad_norm(arch, eta, mu, p);
+                    margin = margin.min(slack);
+                    if slack < s - tol {
+                        worst.push((slack, p.contact.beta));
+                    }
+                }
+                worst.sort_by(|a, b| a.0.total_cmp(&b.0));
+                worst.truncate(4);
+                (margin, worst)
+            }
+        };
+        let mut added = false;
         let decided = goal == Goal::Decide && (s < 0.0 || margin >= 0.0);
-        worst.sort_by(|a, b| a.0.total_cmp(&b.0));
-        for &(_, beta) in worst.iter().take(4) {
+        for &(_, beta) in &worst {
             added |= ws.add(beta, settings.working_set_gap);
         }
         if decided || !added || rounds >= settings.max_rounds {
