@@ -269,18 +269,9 @@ fn continuous(
     let mut walked = 0;
     for pieces in [settings.sweep_pieces, 2 * settings.sweep_pieces] {
         let (a, b) = (arch.beta_right(), arch.beta_left());
-        let joints: Vec<f64> = (0..=pieces)
-            .map(|i| {
-                if i == pieces {
-                    b
-                } else {
-                    a + (b - a) * i as f64 / pieces as f64
-                }
-            })
-            .collect();
         let discrete = arch
             .clone()
-            .with_joints(&joints)
+            .with_blocks(pieces)
             .map_err(|e| e.to_string())?;
         // the ridge of the discretisation, from η = 0: every point it gives is checked, and
         // the list is complete wherever P(η) of the continuum (hence of the discretisation,
