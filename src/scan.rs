@@ -225,7 +225,12 @@ impl State<'_> {
             crate::statics::magnitude(m, self.eta, self.mu, &self.x, settings.magnitude_floor)
         };
         if let JointLayout::Discrete(joints) = self.arch.layout() {
-            return self.discrete_verdict(joints, modes, &mag, settings);
+            return self
+                .discrete_verdict(joints, modes, &mag, settings, f64::INFINITY)
+                .unwrap_or_else(|worst| Verdict {
+                    worst,
+                    active: Vec::new(),
+                });
         }
         let peaks: Vec<Peak> = self
             .peaks(settings)
@@ -245,15 +250,39 @@ impl State<'_> {
         Verdict { worst, active }
     }
 
+    /// [`Self::verdict`] when the state is admissible: `Err(r)` as soon as some contact has
+    /// φ / magnitude = r above `adm_tol` (on a discrete arch the first one met, without
+    /// scanning the rest; on a continuous arch the worst).
+    pub fn admissible_verdict(
+        &self,
+        modes: &[ContactKind],
+        settings: &Settings,
+    ) -> Result<Verdict, f64> {
+        if let JointLayout::Discrete(joints) = self.arch.layout() {
+            let mag = |m: ContactKind| {
+                crate::statics::magnitude(m, self.eta, self.mu, &self.x, settings.magnitude_floor)
+            };
+            return self.discrete_verdict(joints, modes, &mag, settings, settings.adm_tol);
+        }
+        let v = self.verdict(modes, settings);
+        if v.worst > settings.adm_tol {
+            Err(v.worst)
+        } else {
+            Ok(v)
+        }
+    }
+
     /// [`Self::verdict`] of a discrete arch in one pass over its joints (the same values,
-    /// the same verdict), without listing every contact first.
+    /// the same verdict), without listing every contact first; `Err(r)` at the first
+    /// contact whose φ / magnitude = r exceeds `stop_above`.
     fn discrete_verdict(
         &self,
         joints: &[Radians],
         modes: &[ContactKind],
         mag: &dyn Fn(ContactKind) -> f64,
         settings: &Settings,
-    ) -> Verdict {
+        stop_above: f64,
+    ) -> Result<Verdict, f64> {
         let kinds: Vec<(ContactKind, f64)> = ContactKind::active_at(self.mu)
             .iter()
             .filter(|k| modes.contains(k))
@@ -268,6 +297,9 @@ impl State<'_> {
             let f = forces_with(self.arch, self.eta, beta, sc);
             for &(kind, m) in &kinds {
                 let value = activation_of(kind, &f, self.eta, self.mu).at(&self.x);
+                if value / m > stop_above {
+                    return Err(value / m);
+                }
                 worst = worst.max(value / m);
                 if value >= -10.0 * settings.adm_tol * m {
                     active.push(Contact {
@@ -280,6 +312,6 @@ impl State<'_> {
             }
         }
         active.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.kind.cmp(&b.kind)));
-        Verdict { worst, active }
+        Ok(Verdict { worst, active })
     }
 }

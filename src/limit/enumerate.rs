@@ -134,15 +134,19 @@ fn verify_group(
             mu,
             x: r.x,
         };
-        let verdict = st.verdict(ContactKind::active_at(mu), settings);
+        let verdict = match st.admissible_verdict(ContactKind::active_at(mu), settings) {
+            Ok(v) => v,
+            Err(phi) => {
+                push(
+                    log,
+                    format!(
+                        "rejected: not admissible over the arch (phi = {phi:.2e} of its magnitude at a contact)"
+                    ),
+                );
+                continue;
+            }
+        };
         let worst = verdict.worst;
-        if worst > settings.adm_tol {
-            push(
-                log,
-                format!("rejected: not admissible over the arch (max phi = {worst:.2e})"),
-            );
-            continue;
-        }
         if out.least_static.as_ref().is_none_or(|l| r.eta < l.eta) {
             out.least_static = Some(r.clone());
         }
