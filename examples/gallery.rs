@@ -6,7 +6,8 @@
 //! cargo run --release --example gallery -- docs/gallery
 //! ```
 
-use arch_enum::figures::{self, margin_map::available_threads, MapGrid};
+use arch_enum::figures::{self, MapGrid};
+use arch_enum::limit_curve::available_threads;
 use arch_enum::limit_curve::trace;
 use arch_enum::render::{plot::svg_to_png, plot_arch, plot_curve, plot_ecc, plot_map};
 use arch_enum::{Arch, CollapseMode, Settings, WeightModel};

@@ -12,8 +12,7 @@ use arch_enum::arch::{check_eta, check_mu, fmt_value, InputError, JointLayout};
 use arch_enum::certificate::{certify as certify_eta, verify as verify_cert, Certificate};
 use arch_enum::figures::{self, ArchScene};
 use arch_enum::friction::least_friction;
-use arch_enum::limit::solve as solve_eta;
-use arch_enum::limit_curve::{trace, CurvePoint};
+use arch_enum::limit_curve::{available_threads, sample, trace};
 use arch_enum::limit_states::survey;
 use arch_enum::load::LiveLoad;
 use arch_enum::multiplier::{check_load, survey as load_survey};
@@ -25,8 +24,6 @@ use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use serde_json::Value;
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Mutex;
 
 /// The arch as Python describes it: (alpha, beta_right, beta_left, blocks, joints, weight).
 type ArchIn = (
@@ -254,12 +251,12 @@ fn curve<'py>(
             ))
         }
         Some(n) => n,
-        None => figures::margin_map::available_threads(),
+        None => available_threads(),
     };
     let d = py
         .detach(|| {
             let settings = Settings::default();
-            let points = solve_all(&arch, &mus, threads, &settings)?;
+            let points = sample(&arch, &mus, &settings, threads, &|_, _| {})?;
             let mu_ms = least_friction(&arch, &settings).ok().flatten();
             Ok::<_, InputError>(
                 serde_json::to_value(json::curve(&arch, mu_ms, &points)).expect("serialisable"),
@@ -267,39 +264,6 @@ fn curve<'py>(
         })
         .map_err(value_error)?;
     to_py(py, &d)
-}
-
-/// η*(μ) at every μ of `mus`, in order, on `threads` scoped threads taking one μ at a time.
-fn solve_all(
-    arch: &Arch,
-    mus: &[f64],
-    threads: usize,
-    settings: &Settings,
-) -> Result<Vec<CurvePoint>, InputError> {
-    let next = AtomicUsize::new(0);
-    let slots: Vec<Mutex<Option<Result<CurvePoint, InputError>>>> =
-        mus.iter().map(|_| Mutex::new(None)).collect();
-    std::thread::scope(|scope| {
-        for _ in 0..threads.clamp(1, mus.len().max(1)) {
-            scope.spawn(|| loop {
-                let i = next.fetch_add(1, Ordering::Relaxed);
-                let Some(&mu) = mus.get(i) else { break };
-                let point = solve_eta(arch, mu, settings).map(|s| CurvePoint {
-                    mu,
-                    outcome: s.outcome,
-                });
-                *slots[i].lock().unwrap_or_else(|e| e.into_inner()) = Some(point);
-            });
-        }
-    });
-    slots
-        .into_iter()
-        .map(|s| {
-            s.into_inner()
-                .unwrap_or_else(|e| e.into_inner())
-                .expect("every mu solved")
-        })
-        .collect()
 }
 
 /// `modes --json`: the whole η–μ limit curve.

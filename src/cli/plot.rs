@@ -296,7 +296,7 @@ pub(crate) fn draw(figure: Figure, settings: &Settings, io: &mut Io) -> Result<S
                 }
             }
             let threads = match threads {
-                None => figures::margin_map::available_threads(),
+                None => crate::limit_curve::available_threads(),
                 Some(t) if (1..=1024).contains(&t) => t,
                 Some(t) => {
                     let e = InputError::OutOfRange {

@@ -58,8 +58,3 @@ pub fn margin_map(
         .map(|r| r.into_inner().unwrap_or_else(|e| e.into_inner()))
         .collect()
 }
-
-/// The number of threads the machine offers (at least 1): the default for [`margin_map`].
-pub fn available_threads() -> usize {
-    std::thread::available_parallelism().map_or(1, |n| n.get())
-}

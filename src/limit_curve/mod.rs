@@ -30,7 +30,7 @@ mod sample;
 mod tracer;
 mod transition;
 
-pub use sample::{mu_grid, sample, CurvePoint};
+pub use sample::{available_threads, mu_grid, sample, CurvePoint};
 use tracer::{Sample, Tracer};
 
 /// A branch of the limit curve: an interval of μ with one active pattern.

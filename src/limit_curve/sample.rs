@@ -3,6 +3,8 @@
 use crate::arch::{Arch, InputError};
 use crate::limit::{solve, Outcome};
 use crate::settings::Settings;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
 
 /// One sample of the limit curve.
 #[derive(Debug, Clone)]
@@ -52,19 +54,47 @@ pub fn mu_grid(mu_min: f64, mu_max: f64, points: usize) -> Result<Vec<f64>, Inpu
         .collect())
 }
 
-/// Solves η*(μ) at every μ of `mus`; `progress(done, total)` is called after each.
+/// Solves η*(μ) at every μ of `mus` on `threads` threads (each solve is independent and
+/// deterministic, so the answer does not depend on the count; 0 is taken as 1);
+/// `progress(done, total)` is called after each, from whichever thread finished it. A bad μ
+/// is reported as the first one in `mus` order.
 pub fn sample(
     arch: &Arch,
     mus: &[f64],
     settings: &Settings,
-    progress: &dyn Fn(usize, usize),
+    threads: usize,
+    progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<Vec<CurvePoint>, InputError> {
-    mus.iter()
-        .enumerate()
-        .map(|(i, &mu)| {
-            let outcome = solve(arch, mu, settings)?.outcome;
-            progress(i + 1, mus.len());
-            Ok(CurvePoint { mu, outcome })
+    let next = AtomicUsize::new(0);
+    let done = AtomicUsize::new(0);
+    let slots: Vec<Mutex<Option<Result<CurvePoint, InputError>>>> =
+        mus.iter().map(|_| Mutex::new(None)).collect();
+    std::thread::scope(|scope| {
+        for _ in 0..threads.clamp(1, mus.len().max(1)) {
+            scope.spawn(|| loop {
+                let i = next.fetch_add(1, Ordering::Relaxed);
+                let Some(&mu) = mus.get(i) else { break };
+                let point = solve(arch, mu, settings).map(|s| CurvePoint {
+                    mu,
+                    outcome: s.outcome,
+                });
+                *slots[i].lock().unwrap_or_else(|e| e.into_inner()) = Some(point);
+                progress(done.fetch_add(1, Ordering::Relaxed) + 1, mus.len());
+            });
+        }
+    });
+    slots
+        .into_iter()
+        .map(|s| {
+            s.into_inner()
+                .unwrap_or_else(|e| e.into_inner())
+                .expect("every mu solved")
         })
         .collect()
+}
+
+/// The number of threads the machine offers (at least 1): the default thread count of the
+/// commands that sample independent points.
+pub fn available_threads() -> usize {
+    std::thread::available_parallelism().map_or(1, |n| n.get())
 }

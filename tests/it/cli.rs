@@ -298,3 +298,35 @@ fn readme_commands_match_ci() {
         ".ci/run does not run `{test_cmd}`"
     );
 }
+
+/// `curve --threads`: the samples are independent, so any thread count gives the same
+/// document, byte for byte; 0 threads is bad input naming the argument.
+#[test]
+fn curve_threads_do_not_change_the_answer() {
+    let run = |threads: &str| {
+        arch_enum()
+            .args([
+                "curve",
+                "--alpha",
+                "0.3",
+                "--mu-min",
+                "0.3",
+                "--mu-max",
+                "3",
+                "--points",
+                "40",
+                "--json",
+                "--threads",
+                threads,
+            ])
+            .output()
+            .unwrap()
+    };
+    let (one, two, three) = (run("1"), run("2"), run("3"));
+    assert_eq!(one.status.code(), Some(0));
+    assert_eq!(one.stdout, two.stdout);
+    assert_eq!(one.stdout, three.stdout);
+    let zero = run("0");
+    assert_eq!(zero.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&zero.stdout).contains("--threads"));
+}
