@@ -16,6 +16,13 @@ fi
 # With --browser (scripts/test.sh): the explorer's browser test (tests/browser), Debian's
 # chromium driven by playwright-core from npm (`npm ci` from the committed lock file).
 if [ "${1:-}" = "--browser" ]; then
+  if ! command -v npm >/dev/null 2>&1; then
+    echo "setup: installing nodejs and npm" >&2
+    SUDO=""
+    [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+    $SUDO apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq nodejs npm >/dev/null
+  fi
   if [ ! -x /usr/bin/chromium ]; then
     echo "setup: installing chromium" >&2
     SUDO=""

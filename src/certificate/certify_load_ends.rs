@@ -6,9 +6,8 @@ use super::certify::{find_farkas, Row};
 use super::certify_load::{at_lambda, carries, cert_joints, reduced, Loaded};
 use super::format::*;
 use super::verify::verify;
-use crate::admissibility::{max_margin, Goal, WorkingSet};
 use crate::arch::{Arch, JointLayout};
-use crate::contact::ContactKind;
+use crate::assess::safest_state;
 use crate::load::{rows, LiveLoad};
 use crate::lp;
 use crate::settings::Settings;
@@ -32,19 +31,9 @@ pub(super) fn unbounded(
     };
     // a state strictly inside the admissible set at the start of the ray
     let start = if lambda_min == 0.0 {
-        let mut ws = WorkingSet::initial(arch);
-        max_margin(
-            arch,
-            eta,
-            mu,
-            ContactKind::active_at(mu),
-            &mut ws,
-            Goal::Optimise,
-            settings,
-        )
-        .ok()
-        .filter(|m| m.margin > 0.0)
-        .map(|m| (0.0, m.x))
+        safest_state(arch, eta, mu, settings)
+            .filter(|m| m.margin > 0.0)
+            .map(|m| (0.0, m.x))
     } else if let JointLayout::Discrete(joints) = arch.layout() {
         let lambda = 2.0 * lambda_min;
         let r: Vec<Affine> = rows(arch, joints, eta, mu, load)

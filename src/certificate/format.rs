@@ -26,6 +26,18 @@ pub enum Claim {
     UnboundedMultiplier,
 }
 
+impl Claim {
+    /// The claim's name in the certificate and in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            Claim::LeastThickness => "least_thickness",
+            Claim::NoEquilibrium => "no_equilibrium",
+            Claim::LargestMultiplier => "largest_multiplier",
+            Claim::UnboundedMultiplier => "unbounded_multiplier",
+        }
+    }
+}
+
 /// The arch of a certificate.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct ArchSpec {

@@ -228,6 +228,24 @@ mod tests {
     use crate::load::{LiveLoad, Side as SolverSide};
     use crate::{Arch, WeightModel};
 
+    /// The verifier's live load of `spec` = (kind, towards, β) at thickness `eta`.
+    fn live_of(
+        model: &super::super::verify_statics::Model,
+        eta: f64,
+        spec: (LoadKind, Option<Towards>, Option<f64>),
+    ) -> Live {
+        Live::of(
+            &LoadSpec {
+                eta,
+                kind: spec.0,
+                towards: spec.1,
+                beta: spec.2,
+            },
+            model,
+        )
+        .unwrap()
+    }
+
     #[test]
     fn live_actions_and_their_derivatives_match_the_solver() {
         for weight in [WeightModel::Centreline, WeightModel::Centroid] {
@@ -252,16 +270,7 @@ mod tests {
                     LiveLoad::Point { beta: 1.2 },
                 ),
             ] {
-                let live = Live::of(
-                    &LoadSpec {
-                        eta,
-                        kind: spec.0,
-                        towards: spec.1,
-                        beta: spec.2,
-                    },
-                    &model,
-                )
-                .unwrap();
+                let live = live_of(&model, eta, spec);
                 // 41 angles and the point load's own (both sides there)
                 let angles = (0..=40).map(|i| -0.4 + 3.7 * i as f64 / 40.0).chain([1.2]);
                 for beta in angles {
@@ -341,16 +350,7 @@ mod tests {
                     LiveLoad::Point { beta: bp },
                 ),
             ] {
-                let live = Live::of(
-                    &LoadSpec {
-                        eta,
-                        kind: spec.0,
-                        towards: spec.1,
-                        beta: spec.2,
-                    },
-                    &model,
-                )
-                .unwrap();
+                let live = live_of(&model, eta, spec);
                 let got = live.power(&model, &kept, &columns);
                 let want = load.power(&arch, eta, &pairs);
                 for (g, w) in got.iter().zip(&want) {

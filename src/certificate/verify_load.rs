@@ -28,7 +28,7 @@ pub(super) fn verify_load(cert: &Certificate, model: &Model) -> Result<Report, R
     let Some(spec) = &cert.load else {
         return reject(format!(
             "a {} claim needs a load section",
-            claim_name(cert.claim)
+            cert.claim.name()
         ));
     };
     if matches!(cert.claim, Claim::LeastThickness) {
@@ -150,15 +150,6 @@ pub(super) fn verify_load(cert: &Certificate, model: &Model) -> Result<Report, R
         load: Some(live.text()),
         lambda_bracket,
     })
-}
-
-fn claim_name(c: Claim) -> &'static str {
-    match c {
-        Claim::LeastThickness => "least_thickness",
-        Claim::NoEquilibrium => "no_equilibrium",
-        Claim::LargestMultiplier => "largest_multiplier",
-        Claim::UnboundedMultiplier => "unbounded_multiplier",
-    }
 }
 
 fn everywhere(model: &Model, live: &Live) -> &'static str {

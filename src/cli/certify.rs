@@ -48,16 +48,6 @@ pub(crate) struct VerifyArgs {
     pub(crate) json: bool,
 }
 
-/// The claim in words.
-fn claim_name(c: Claim) -> &'static str {
-    match c {
-        Claim::LeastThickness => "least_thickness",
-        Claim::NoEquilibrium => "no_equilibrium",
-        Claim::LargestMultiplier => "largest_multiplier",
-        Claim::UnboundedMultiplier => "unbounded_multiplier",
-    }
-}
-
 /// "inf" for `None`, else the number.
 fn mu_text(mu: Option<f64>) -> String {
     mu.map_or("inf".into(), |m| m.to_string())
@@ -310,7 +300,7 @@ pub(crate) fn run_verify(a: VerifyArgs, io: &mut Io) -> Exit {
             )),
             Err(Rejection(reason)) => io.out(&format!(
                 "certificate REJECTED ({} claim at mu = {}): {reason}\nnothing is proved\n",
-                claim_name(cert.claim),
+                cert.claim.name(),
                 mu_text(cert.mu)
             )),
         }

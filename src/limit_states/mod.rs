@@ -123,14 +123,17 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Strin
     }
     // P(η) with an interior point just above η_s: at μ = ∞ no limit state lies above
     // (`hinges_only`), at finite μ every one lies on the ridge over ∂Q (`ridge`)
-    let interior = interior_above(arch, mu, eta_s, settings);
+    // (the margin LP only where its answer is used: μ = ∞, or a search the ridge may do)
+    let ridge_may_apply = mu.is_finite()
+        && settings.limit_state_search == LimitStateSearch::Ridge
+        && matches!(arch.weight(), crate::arch::WeightModel::Centreline);
+    let interior =
+        (mu.is_infinite() || ridge_may_apply) && interior_above(arch, mu, eta_s, settings);
     if interior && mu.is_infinite() {
         return Ok(hinges_only(arch, eta_s, &x_s, mechanism_at_eta_s, settings));
     }
     let attained = bounded(arch, &x_s, settings);
-    let ridge = interior
-        && settings.limit_state_search == LimitStateSearch::Ridge
-        && matches!(arch.weight(), crate::arch::WeightModel::Centreline);
+    let ridge = interior && ridge_may_apply;
     if !matches!(arch.layout(), JointLayout::Discrete(_)) {
         return continuous(
             arch,
@@ -268,7 +271,6 @@ fn continuous(
     let mut sets: Vec<(Vec<SweptState>, usize)> = Vec::new();
     let mut walked = 0;
     for pieces in [settings.sweep_pieces, 2 * settings.sweep_pieces] {
-        let (a, b) = (arch.beta_right(), arch.beta_left());
         let discrete = arch
             .clone()
             .with_blocks(pieces)
@@ -307,11 +309,10 @@ fn continuous(
                 (sw.states, sw.events)
             }
         };
-        let h = (b - a) / pieces as f64;
+        let h = arch.span() / pieces as f64;
         let mut found: Vec<SweptState> = Vec::new();
         for s in &states {
-            let Some(r) = refine(arch, mu, s.eta, s.x, &merge(&s.pattern, h, a, b), settings)
-            else {
+            let Some(r) = refine(arch, mu, s.eta, s.x, &merge(&s.pattern, h), settings) else {
                 continue;
             };
             if r.eta > eta_s * (1.0 + settings.root_slack)
@@ -369,7 +370,7 @@ fn same_state(p: &SweptState, q: &SweptState) -> bool {
 
 /// A discrete pattern carried over to the continuum: contacts of one kind at adjacent
 /// joints (spacing `h`) become one contact; interior ones have a free angle (tangency).
-fn merge(pattern: &[Contact], h: f64, a: f64, b: f64) -> Vec<Contact> {
+fn merge(pattern: &[Contact], h: f64) -> Vec<Contact> {
     let mut by_kind: Vec<Contact> = pattern.to_vec();
     by_kind.sort_by(|p, q| p.kind.cmp(&q.kind).then(p.beta.total_cmp(&q.beta)));
     let mut out: Vec<Contact> = Vec::new();
@@ -397,7 +398,6 @@ fn merge(pattern: &[Contact], h: f64, a: f64, b: f64) -> Vec<Contact> {
         group.push(c);
     }
     flush(&mut group, &mut out);
-    let _ = (a, b);
     out.sort_by(|p, q| p.beta.total_cmp(&q.beta).then(p.kind.cmp(&q.kind)));
     out
 }

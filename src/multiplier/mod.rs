@@ -244,14 +244,19 @@ pub fn survey(
         })
     };
     let top = max.map_or(UNBOUNDED_SEARCH_TOP, |m| m.0);
-    let (sw, at_top) = sweep_load_with_top(arch, eta, mu, load, min, top, settings);
-    // the states at λ_static: the optimal face whole, from the sweep's points at the top
-    // (at μ = ∞ the sweep is run for them alone); the LP's state where the sweep gave none
+    // the sweep below λ_static (at μ = ∞ there is nothing below it to search: associative)
+    let swept = mu
+        .is_finite()
+        .then(|| sweep_load_with_top(arch, eta, mu, load, min, top, settings));
+    // the states at λ_static: the optimal face whole, by a walk on its vertices from the
+    // LP's, with the sweep's points at the top; the LP's state where neither gave one
     let at_static = match max {
         None => None,
         Some((lambda_lp, x_lp)) => {
             let mut points = face::walk(&all_rows, eta, mu, lambda_lp, x_lp, settings);
-            points.extend(at_top);
+            if let Some((_, at_top)) = &swept {
+                points.extend(at_top.iter().copied());
+            }
             let mut f = face::face(&all_rows, eta, mu, lambda_lp, &points, settings);
             if f.vertices.is_empty() {
                 f = face::face(&all_rows, eta, mu, lambda_lp, &[x_lp], settings);
@@ -283,6 +288,7 @@ pub fn survey(
             },
         }));
     }
+    let (sw, _) = swept.expect("swept at finite mu");
     if let Some(f) = sw.failure {
         return Ok(Err(match max {
             Some(m) => format!("{f} (lambda_static = {}, exact)", m.0),
