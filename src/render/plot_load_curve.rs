@@ -166,7 +166,7 @@ pub fn svg(title: &str, curve: &LoadCurve) -> Result<String, String> {
                 if !labelled {
                     labelled = true;
                     drawn
-                        .label("exact corner (five contacts active)")
+                        .label("exact corner (five contacts, or four sliding, active)")
                         .legend(|(x, y)| Cross::new((x + 10, y), 6, BLACK.stroke_width(2)));
                 }
             }
