@@ -5,7 +5,7 @@
 
 use crate::search_reference::Rng;
 use arch_enum::certificate::{
-    certify_load, verify, Certificate, Claim, LoadSearchMethod, Report, Side, Transfer,
+    certify_load, verify, CertJoint, Certificate, Claim, LoadSearchMethod, Report, Side, Transfer,
 };
 use arch_enum::load::LiveLoad;
 use arch_enum::multiplier::{survey, LoadOutcome};
@@ -365,6 +365,18 @@ fn with_bracket(c: &Certificate, lo: f64, hi: f64) -> Certificate {
     t
 }
 
+/// The joints of the Farkas certificate at λ_hi (a `largest_multiplier` certificate).
+fn farkas_joints(c: &mut Certificate) -> &mut Vec<CertJoint> {
+    &mut c
+        .multiplier
+        .as_mut()
+        .unwrap()
+        .infeasible
+        .as_mut()
+        .unwrap()
+        .joints
+}
+
 #[test]
 fn tampering_with_the_bracket_and_the_farkas_vectors_is_caught() {
     let (arch, eta, mu, load) = unsymmetric();
@@ -392,14 +404,7 @@ fn tampering_with_the_bracket_and_the_farkas_vectors_is_caught() {
     assert!(rejected(&t, "gap").contains("stated gap"));
     // a multiplier of the Farkas certificate at λ_hi perturbed
     let mut t = good.clone();
-    let joints = &mut t
-        .multiplier
-        .as_mut()
-        .unwrap()
-        .infeasible
-        .as_mut()
-        .unwrap()
-        .joints;
+    let joints = farkas_joints(&mut t);
     let k = (0..joints.len())
         .max_by(|&a, &b| joints[a].y.total_cmp(&joints[b].y))
         .unwrap();
@@ -407,14 +412,7 @@ fn tampering_with_the_bracket_and_the_farkas_vectors_is_caught() {
     assert!(rejected(&t, "y").contains("does not match the recomputed"));
     // a joint of it moved to another joint of the arch
     let mut t = good.clone();
-    let j = &mut t
-        .multiplier
-        .as_mut()
-        .unwrap()
-        .infeasible
-        .as_mut()
-        .unwrap()
-        .joints[0];
+    let j = &mut farkas_joints(&mut t)[0];
     j.beta = if j.beta == 0.8409 { 1.2686 } else { 0.8409 };
     rejected(&t, "moved joint");
     // a Farkas vector of the kinematic LP zeroed (then c_j·y + z + u P_j + v q_j = z > 0),
