@@ -5,12 +5,12 @@
 //! ([`crate::scan`]) and their joints added, until the continuum agrees with the
 //! working set. Infeasibility on a subset of joints proves infeasibility for the arch.
 
-use crate::arch::{Arch, JointLayout, Radians};
+use crate::arch::{grid_angle, Arch, JointLayout, Radians};
 use crate::contact::{ContactKind, Peak};
 use crate::lp::{self, LpOutcome};
 use crate::settings::Settings;
 use crate::state::State;
-use crate::statics::{actions, activation_of, forces_with, Reactions};
+use crate::statics::{actions, actions_with, activation_of, forces_with, Reactions};
 
 /// The result of the margin problem at one (η, μ).
 #[derive(Debug, Clone)]
@@ -30,26 +30,22 @@ pub struct Margin {
 /// equal pieces (constraint generation adds the rest).
 const INITIAL_PIECES: usize = 8;
 
-/// A growing set of joint angles whose activation functions enter the LP.
+/// A growing set of joint angles whose activation functions enter the LP, each with its
+/// (sin β, cos β) computed once.
 #[derive(Debug, Clone)]
 pub struct WorkingSet {
     joints: Vec<Radians>,
+    trig: Vec<(f64, f64)>,
 }
 
 impl WorkingSet {
     /// The springings and a few spread joints of the arch.
     pub fn initial(arch: &Arch) -> WorkingSet {
-        let joints = match arch.layout() {
+        let joints: Vec<Radians> = match arch.layout() {
             JointLayout::Continuous => {
                 let (a, b) = (arch.beta_right(), arch.beta_left());
                 (0..=INITIAL_PIECES)
-                    .map(|i| {
-                        if i == INITIAL_PIECES {
-                            b
-                        } else {
-                            a + (b - a) * i as f64 / INITIAL_PIECES as f64
-                        }
-                    })
+                    .map(|i| grid_angle(a, b, INITIAL_PIECES + 1, i))
                     .collect()
             }
             JointLayout::Discrete(j) => {
@@ -61,7 +57,8 @@ impl WorkingSet {
                 v
             }
         };
-        WorkingSet { joints }
+        let trig = joints.iter().map(|b| b.sin_cos()).collect();
+        WorkingSet { joints, trig }
     }
 
     /// Adds `beta` unless a joint within `tol` is already present; true when added.
@@ -70,6 +67,7 @@ impl WorkingSet {
             false
         } else {
             self.joints.push(beta);
+            self.trig.push(beta.sin_cos());
             true
         }
     }
@@ -77,6 +75,11 @@ impl WorkingSet {
     /// The joints.
     pub fn joints(&self) -> &[Radians] {
         &self.joints
+    }
+
+    /// The joints with their (sin β, cos β).
+    fn with_trig(&self) -> impl Iterator<Item = (Radians, (f64, f64))> + '_ {
+        self.joints.iter().copied().zip(self.trig.iter().copied())
     }
 }
 
@@ -176,10 +179,9 @@ pub fn max_margin(
     loop {
         rounds += 1;
         let rows: Vec<_> = ws
-            .joints()
-            .iter()
-            .flat_map(|&beta| {
-                let a = actions(arch, eta, beta);
+            .with_trig()
+            .flat_map(|(beta, sc)| {
+                let a = actions_with(arch, eta, beta, sc);
                 modes.iter().map(move |&m| a.activation(m, 0, eta, mu))
             })
             .collect();

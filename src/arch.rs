@@ -103,6 +103,32 @@ pub struct Arch {
     /// (sin β_j, cos β_j) of each joint of a discrete arch (empty for a continuous one),
     /// computed once: every scan over the joints needs them.
     joint_trig: Vec<(f64, f64)>,
+    /// (sin β, cos β) on a continuous arch's scan grid, computed at the first scan.
+    scan_trig: ScanTrig,
+}
+
+/// (sin β, cos β) at the angles of the scan grid of a continuous arch ([`crate::scan`]:
+/// `n` equally spaced angles from β_R to β_L), for the one `n` first asked for: filled once,
+/// shared by every scan of the arch (the same bits as computing them again). A cache, not
+/// part of the arch's identity: two arches are equal whatever their caches hold.
+#[derive(Debug, Clone, Default)]
+struct ScanTrig(std::sync::OnceLock<(usize, Vec<(f64, f64)>)>);
+
+impl PartialEq for ScanTrig {
+    fn eq(&self, _: &ScanTrig) -> bool {
+        true
+    }
+}
+
+/// The `i`-th of `n` equally spaced angles from `a` to `b` (the last one `b` itself): the
+/// one grid every scan of a smooth piece lays out.
+#[inline]
+pub fn grid_angle(a: Radians, b: Radians, n: usize, i: usize) -> Radians {
+    if i + 1 == n {
+        b
+    } else {
+        a + (b - a) * i as f64 / (n - 1) as f64
+    }
 }
 
 /// Formats a number for messages: plain for ordinary magnitudes, scientific otherwise.
@@ -162,6 +188,7 @@ impl Arch {
             weight,
             right_trig: beta_right.sin_cos(),
             joint_trig: Vec::new(),
+            scan_trig: ScanTrig::default(),
         })
     }
 
@@ -190,13 +217,7 @@ impl Arch {
         }
         let (a, b) = (self.beta_right, self.beta_left);
         let joints: Vec<Radians> = (0..=blocks)
-            .map(|i| {
-                if i == blocks {
-                    b
-                } else {
-                    a + (b - a) * i as f64 / blocks as f64
-                }
-            })
+            .map(|i| grid_angle(a, b, blocks + 1, i))
             .collect();
         Ok(Arch {
             joint_trig: trig_of(&joints),
@@ -258,6 +279,28 @@ impl Arch {
     pub fn joint_sin_cos(&self) -> &[(f64, f64)] {
         &self.joint_trig
     }
+    /// (sin β, cos β) at `beta` when it is an angle of the `n`-point scan grid from β_R to
+    /// β_L ([`grid_angle`]), from the arch's cache (filled at the first call, for the first
+    /// `n` asked for); `None` for any other angle or `n`.
+    #[inline]
+    pub fn scan_sin_cos(&self, n: usize, beta: Radians) -> Option<(f64, f64)> {
+        let (a, b) = (self.beta_right, self.beta_left);
+        let (m, trig) = self.scan_trig.0.get_or_init(|| {
+            (
+                n,
+                (0..n).map(|i| grid_angle(a, b, n, i).sin_cos()).collect(),
+            )
+        });
+        if *m != n {
+            return None;
+        }
+        let t = (beta - a) / (b - a) * (n - 1) as f64;
+        if !(t >= 0.0 && t <= (n - 1) as f64) {
+            return None;
+        }
+        let i = t.round() as usize;
+        (grid_angle(a, b, n, i) == beta).then(|| trig[i])
+    }
     /// (sin β_R, cos β_R) of the right springing, computed once with the arch.
     #[inline]
     pub fn right_sin_cos(&self) -> (f64, f64) {
@@ -317,6 +360,7 @@ impl Arch {
             weight: self.weight,
             right_trig: beta_right.sin_cos(),
             joint_trig,
+            scan_trig: ScanTrig::default(),
         }
     }
 }

@@ -423,9 +423,11 @@ fn newton(
             }
         }
         let rhs = DVector::from_iterator(n_eq, f.iter().map(|v| -v));
-        let svd = jac.svd(true, true);
-        let smax = svd.singular_values.max();
-        let Ok(step) = svd.solve(&rhs, smax * settings.svd_cutoff) else {
+        let Some(step) = lu_step(&jac, &rhs).or_else(|| {
+            let svd = jac.svd(true, true);
+            let smax = svd.singular_values.max();
+            svd.solve(&rhs, smax * settings.svd_cutoff).ok()
+        }) else {
             return Err(NewtonFailure::NoConvergence(fnorm));
         };
         // Damped update: the first step length that reduces the residual.
@@ -462,6 +464,28 @@ fn newton(
     } else {
         Err(NewtonFailure::NoConvergence(fnorm))
     }
+}
+
+/// Below this ratio of the least to the largest pivot of a square Jacobian's LU
+/// factorisation (full pivoting, columns equilibrated) the step is taken from the SVD
+/// instead: well short of singular, so that the fast path only solves well-conditioned
+/// systems, to the same step as the SVD up to rounding.
+const LU_PIVOT_RATIO: f64 = 1e-8;
+
+/// The Newton step of a square, well-conditioned system by LU with full pivoting; `None`
+/// when the system is not square or its pivots fall below [`LU_PIVOT_RATIO`] (the
+/// SVD's minimum-norm step then decides).
+fn lu_step(jac: &DMatrix<f64>, rhs: &DVector<f64>) -> Option<DVector<f64>> {
+    if !jac.is_square() || jac.nrows() == 0 {
+        return None;
+    }
+    let lu = jac.clone().full_piv_lu();
+    let pivots = lu.u().diagonal().map(f64::abs);
+    let (lo, hi) = (pivots.min(), pivots.max());
+    if !(hi > 0.0 && lo >= LU_PIVOT_RATIO * hi) {
+        return None;
+    }
+    lu.solve(rhs)
 }
 
 /// `v` rounded to `digits` significant decimal digits.

@@ -7,12 +7,12 @@
 //! are maxima when φ decreases into the arch. For a discrete arch the listed joints
 //! are evaluated directly.
 
-use crate::arch::{JointLayout, Radians};
+use crate::arch::{grid_angle, JointLayout, Radians};
 use crate::contact::ContactKind;
 use crate::contact::{Contact, Location, Peak};
 use crate::settings::Settings;
 use crate::state::State;
-use crate::statics::{actions, activation_of, forces_with};
+use crate::statics::{actions, actions_with, activation_of, forces_with};
 
 impl State<'_> {
     /// φ of `mode` and its first two β-derivatives at `beta`.
@@ -96,7 +96,10 @@ impl State<'_> {
             modes,
             settings.scan_points,
             &|beta, orders| {
-                let act = actions(self.arch, self.eta, beta);
+                let act = match self.arch.scan_sin_cos(settings.scan_points.max(3), beta) {
+                    Some(sc) => actions_with(self.arch, self.eta, beta, sc),
+                    None => actions(self.arch, self.eta, beta),
+                };
                 let mut out = [[0.0; 3]; 4];
                 for (k, &mode) in modes.iter().enumerate() {
                     for (d, slot) in out[k].iter_mut().enumerate().take(orders) {
@@ -125,15 +128,7 @@ pub fn peaks_over(
     phi: &dyn Fn(Radians, usize) -> [[f64; 3]; 4],
 ) -> Vec<Peak> {
     let n = n.max(3);
-    let grid: Vec<Radians> = (0..n)
-        .map(|i| {
-            if i + 1 == n {
-                b
-            } else {
-                a + (b - a) * i as f64 / (n - 1) as f64
-            }
-        })
-        .collect();
+    let grid: Vec<Radians> = (0..n).map(|i| grid_angle(a, b, n, i)).collect();
     // values and slopes on the grid (second derivatives only where Newton needs them)
     let all: Vec<[[f64; 3]; 4]> = grid.iter().map(|&beta| phi(beta, 2)).collect();
     let mut out = Vec::new();

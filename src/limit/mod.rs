@@ -23,7 +23,7 @@ use crate::admissibility::{Margin, WorkingSet};
 use crate::arch::{check_mu, Arch, InputError, JointLayout};
 use crate::contact::ContactKind;
 use crate::lp::{self, LpOutcome};
-use crate::search::{bracket_root, candidates_at, margin_at};
+use crate::search::{bracket_near, bracket_root, candidates_at, margin_at, RootGuess};
 use crate::settings::Settings;
 use crate::state::State;
 use crate::statics::{actions, reaction_scale, Affine, Reactions};
@@ -35,13 +35,26 @@ use recession::{margin, threshold};
 /// no sliding). Bad input is an `Err`; what the solver found (a limit state, no
 /// equilibrium, or an unresolved bracket) is inside the `Solution`.
 pub fn solve(arch: &Arch, mu: f64, settings: &Settings) -> Result<Solution, InputError> {
+    solve_near(arch, mu, None, settings)
+}
+
+/// [`solve`] with the bracket of η_s started from a guess (a neighbouring solution, as
+/// along a limit curve): the same algorithm and answer, with fewer margin LPs when the
+/// guess is good. A guess that brackets nothing within a few widenings costs those LPs and
+/// the bracket starts from the whole range, as without one.
+pub fn solve_near(
+    arch: &Arch,
+    mu: f64,
+    guess: Option<RootGuess>,
+    settings: &Settings,
+) -> Result<Solution, InputError> {
     let mu = check_mu(mu)?;
     settings.validate()?;
     let mut candidates = Vec::new();
     let outcome = exact_infimum(
         arch,
         mu,
-        solve_inner(arch, mu, settings, &mut candidates),
+        solve_inner(arch, mu, settings, &mut candidates, guess),
         settings,
     );
     Ok(Solution {
@@ -208,7 +221,32 @@ pub(crate) fn vanishing_thickness_state(
     }
 }
 
-fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidate>) -> Outcome {
+/// The continuum margin at η decided by the LP, or, where the LP back end fails near an
+/// infimum, a far admissible state along a weightless direction ([`far_state`]).
+fn margin_or_far(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    modes: &[ContactKind],
+    ws: &mut WorkingSet,
+    settings: &Settings,
+) -> Result<(f64, Margin), String> {
+    match margin_at(arch, eta, mu, modes, ws, settings) {
+        Ok(m) => Ok((m.margin, m)),
+        // near an infimum the best states are huge and the LP back end can fail
+        Err(e) => far_state(arch, eta, mu, settings)
+            .map(|m| (m.margin, m))
+            .ok_or(e),
+    }
+}
+
+fn solve_inner(
+    arch: &Arch,
+    mu: f64,
+    settings: &Settings,
+    log: &mut Vec<Candidate>,
+    guess: Option<RootGuess>,
+) -> Outcome {
     let modes = ContactKind::active_at(mu);
     let mut ws = WorkingSet::initial(arch);
     let eta_max = crate::arch::ETA_TOP;
@@ -221,41 +259,50 @@ fn solve_inner(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidat
             format!("the static margin LP could not be solved {at} (LP back end: {e}); no decision at this mu"),
         )
     };
-    let top = match margin_at(arch, eta_max, mu, modes, &mut ws, settings) {
-        Ok(m) => m,
-        Err(e) => return lp_failed("at the thickness limit", e),
-    };
-    if top.margin < 0.0 {
-        return no_equilibrium(arch, mu, settings);
-    }
-    let bottom = match margin_at(arch, 0.0, mu, modes, &mut ws, settings) {
-        Ok(m) => m,
-        Err(e) => return lp_failed("at vanishing thickness", e),
-    };
-    if bottom.margin >= -settings.adm_tol * reaction_scale(&bottom.x) {
-        match vanishing_thickness_state(arch, mu, settings) {
-            Ok(Some(_)) => {
-                return Outcome::NoCollapse {
-                    reason: NO_COLLAPSE.into(),
+    // A bracket found from the guess has a negative margin at a positive η and an
+    // admissible state below the thickness limit: neither "no collapse" nor "no
+    // equilibrium". Without a guess (or when it brackets nothing) the whole range.
+    let near = guess.and_then(|g| {
+        bracket_near(g, eta_max, |eta| {
+            margin_or_far(arch, eta, mu, modes, &mut ws, settings)
+        })
+        .ok()
+        .flatten()
+    });
+    let start = match near {
+        Some(ends) => ends,
+        None => {
+            let top = match margin_at(arch, eta_max, mu, modes, &mut ws, settings) {
+                Ok(m) => m,
+                Err(e) => return lp_failed("at the thickness limit", e),
+            };
+            if top.margin < 0.0 {
+                return no_equilibrium(arch, mu, settings);
+            }
+            let bottom = match margin_at(arch, 0.0, mu, modes, &mut ws, settings) {
+                Ok(m) => m,
+                Err(e) => return lp_failed("at vanishing thickness", e),
+            };
+            if bottom.margin >= -settings.adm_tol * reaction_scale(&bottom.x) {
+                match vanishing_thickness_state(arch, mu, settings) {
+                    Ok(Some(_)) => {
+                        return Outcome::NoCollapse {
+                            reason: NO_COLLAPSE.into(),
+                        }
+                    }
+                    Ok(None) => {}
+                    Err(e) => return lp_failed("at vanishing thickness", e),
                 }
             }
-            Ok(None) => {}
-            Err(e) => return lp_failed("at vanishing thickness", e),
+            (
+                (0.0, bottom.margin.min(-f64::MIN_POSITIVE)),
+                (eta_max, top.margin, top),
+            )
         }
-    }
-    let bracket = bracket_root(
-        (0.0, bottom.margin.min(-f64::MIN_POSITIVE)),
-        (eta_max, top.margin, top),
-        settings.bracket_rel,
-        200,
-        |eta| match margin_at(arch, eta, mu, modes, &mut ws, settings) {
-            Ok(m) => Ok((m.margin, m)),
-            // near an infimum the best states are huge and the LP back end can fail
-            Err(e) => far_state(arch, eta, mu, settings)
-                .map(|m| (m.margin, m))
-                .ok_or(e),
-        },
-    );
+    };
+    let bracket = bracket_root(start.0, start.1, settings.bracket_rel, 200, |eta| {
+        margin_or_far(arch, eta, mu, modes, &mut ws, settings)
+    });
     let (lo, hi) = match bracket {
         Ok(b) => b,
         Err(e) => return lp_failed("while bracketing eta_s", e),

@@ -30,6 +30,7 @@ mod sample;
 mod tracer;
 mod transition;
 
+use crate::search::RootGuess;
 pub use sample::{available_threads, mu_grid, sample, CurvePoint};
 use tracer::{Sample, Tracer};
 
@@ -246,7 +247,7 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
     let mut samples: Vec<Sample> = Vec::new();
     for i in (0..n).rev() {
         let mu = mu_lo * (mu_hi / mu_lo).powf(i as f64 / (n - 1) as f64);
-        if let Some(s) = tr.sample(mu) {
+        if let Some(s) = tr.sample_near(mu, next_guess(&samples, inf.as_ref())) {
             samples.push(s);
         }
     }
@@ -349,7 +350,13 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
         // two changes between neighbouring samples: solve once inside the branch
         let rep = match members.get(members.len() / 2) {
             Some(r) => Some(r.clone()),
-            None if upper.0.is_finite() => tr.sample((upper.0 * c.mu).sqrt()),
+            None if upper.0.is_finite() => tr.sample_near(
+                (upper.0 * c.mu).sqrt(),
+                Some(RootGuess {
+                    eta: 0.5 * (upper.1 + c.eta),
+                    rel: ((upper.1 - c.eta).abs() / (0.5 * (upper.1 + c.eta))).max(1e-6),
+                }),
+            ),
             None => None,
         };
         if let Some(rep) = rep {
@@ -479,4 +486,29 @@ fn limit_branches<'a>(
     done.extend(open.into_iter().map(|o| o.1));
     done.sort_by(|a, b| b.branch.mu_max.total_cmp(&a.branch.mu_max));
     (done, incomplete)
+}
+
+/// Where η_s is expected at the next (smaller) μ of the coarse sampling: the last sample's
+/// η extrapolated linearly from the two before it, within the last step's change (at least
+/// 10⁻³ of η); from the sample at μ = ∞ (equal to it above the friction a pattern needs)
+/// for the first.
+fn next_guess(samples: &[Sample], inf: Option<&Sample>) -> Option<RootGuess> {
+    match samples {
+        [.., p, q] => {
+            let step = q.eta - p.eta;
+            let eta = q.eta + step;
+            Some(RootGuess {
+                eta,
+                rel: (2.0 * step.abs() / eta).max(1e-3),
+            })
+        }
+        [q] => Some(RootGuess {
+            eta: q.eta,
+            rel: 1e-2,
+        }),
+        [] => inf.map(|s| RootGuess {
+            eta: s.eta,
+            rel: 1e-3,
+        }),
+    }
 }

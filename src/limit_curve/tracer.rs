@@ -10,8 +10,9 @@ use crate::arch::Arch;
 use crate::collapse_mode::{classify, CollapseMode};
 use crate::contact::ContactKind;
 use crate::contact::{Contact, Location};
-use crate::limit::{solve, Outcome};
+use crate::limit::{solve_near, Outcome};
 use crate::refine::{solve_system, Unknowns};
+use crate::search::RootGuess;
 use crate::settings::Settings;
 use crate::state::State;
 use crate::statics::Reactions;
@@ -60,9 +61,9 @@ pub(super) struct Tracer<'a> {
 
 impl Tracer<'_> {
     /// The boundary at μ, without recording anything.
-    fn boundary(&mut self, mu: f64) -> Result<Sample, Box<Outcome>> {
+    fn boundary(&mut self, mu: f64, guess: Option<RootGuess>) -> Result<Sample, Box<Outcome>> {
         self.solves += 1;
-        let solution = match solve(self.arch, mu, self.settings) {
+        let solution = match solve_near(self.arch, mu, guess, self.settings) {
             Ok(s) => s,
             Err(e) => {
                 return Err(Box::new(Outcome::Unresolved {
@@ -159,7 +160,12 @@ impl Tracer<'_> {
 
     /// The boundary at μ; what is not a boundary point is recorded by kind.
     pub(super) fn sample(&mut self, mu: f64) -> Option<Sample> {
-        match self.boundary(mu).map_err(|e| *e) {
+        self.sample_near(mu, None)
+    }
+
+    /// [`Tracer::sample`] with η_s expected near `guess` (the bracket starts there).
+    pub(super) fn sample_near(&mut self, mu: f64, guess: Option<RootGuess>) -> Option<Sample> {
+        match self.boundary(mu, guess).map_err(|e| *e) {
             Ok(s) => Some(s),
             Err(Outcome::NoCollapse { .. }) => {
                 self.no_collapse.push(mu);
@@ -185,9 +191,9 @@ impl Tracer<'_> {
         )
     }
 
-    /// η_s at μ, or NaN.
-    fn eta_s(&mut self, mu: f64) -> f64 {
-        self.boundary(mu).map_or(f64::NAN, |s| s.eta)
+    /// η_s at μ (expected near `guess`), or NaN.
+    fn eta_s(&mut self, mu: f64, guess: RootGuess) -> f64 {
+        self.boundary(mu, Some(guess)).map_or(f64::NAN, |s| s.eta)
     }
 
     /// The one-sided slope dη_s/dμ at (μ, η) on the side `side` (+1: larger μ, −1:
@@ -196,9 +202,15 @@ impl Tracer<'_> {
     /// (2η₁ − η₂, also second order). NaN when either solve fails.
     pub(super) fn slope(&mut self, mu: f64, eta: f64, side: f64) -> (f64, f64) {
         let d = self.settings.slope_step;
-        let (e1, e2) = (
-            self.eta_s(mu * (1.0 + side * d)),
-            self.eta_s(mu * (1.0 + 2.0 * side * d)),
+        // η_s moves by about (μ/η dη/dμ) · δ: guesses within 4δ, widened if steeper
+        let rel = 4.0 * d;
+        let e1 = self.eta_s(mu * (1.0 + side * d), RootGuess { eta, rel });
+        let e2 = self.eta_s(
+            mu * (1.0 + 2.0 * side * d),
+            RootGuess {
+                eta: if e1.is_finite() { 2.0 * e1 - eta } else { eta },
+                rel,
+            },
         );
         (
             (4.0 * (e1 - eta) - (e2 - eta)) / (2.0 * side * d * mu),
@@ -487,7 +499,7 @@ impl Tracer<'_> {
                 break;
             }
             let m = 0.5 * (lo + hi);
-            match self.boundary(m) {
+            match self.boundary(m, None) {
                 Ok(s) => {
                     hi = m;
                     pattern = s.pattern;
@@ -516,15 +528,19 @@ impl Tracer<'_> {
         // the boundary beside the change (10⁻³ of μ away: nearer, a contact joining with a
         // zero multiplier is within the activity tolerance): other changes before a sample?
         let step = 1e3 * self.settings.slope_step;
+        let beside = RootGuess {
+            eta: c.eta,
+            rel: 4.0 * step,
+        };
         if c.mu < a.mu * (1.0 - 2.0 * step) {
-            if let Some(m) = self.sample(c.mu * (1.0 + step)) {
+            if let Some(m) = self.sample_near(c.mu * (1.0 + step), Some(beside)) {
                 if m.sig != a.sig {
                     out.extend(self.locate(a, &m, depth - 1));
                 }
             }
         }
         if c.mu > b.mu * (1.0 + 2.0 * step) {
-            if let Some(m) = self.sample(c.mu * (1.0 - step)) {
+            if let Some(m) = self.sample_near(c.mu * (1.0 - step), Some(beside)) {
                 if m.sig != b.sig {
                     out.extend(self.locate(&m, b, depth - 1));
                 }
@@ -558,7 +574,7 @@ impl Tracer<'_> {
         if depth == 0 || a.mu / b.mu < 1.0 + self.settings.same_root {
             return vec![self.bracketed(a, b, between)];
         }
-        let Some(m) = self.sample(mid_mu) else {
+        let Some(m) = self.sample_near(mid_mu, Some(between_samples(a, b))) else {
             return vec![self.bracketed(a, b, between)];
         };
         if m.sig == a.sig {
@@ -594,5 +610,15 @@ impl Tracer<'_> {
             exact: false,
             residual: f64::NAN,
         }
+    }
+}
+
+/// Where η_s is expected between two samples of the boundary: their mean, within their
+/// difference (at least 10⁻⁶ of it).
+pub(super) fn between_samples(a: &Sample, b: &Sample) -> RootGuess {
+    let eta = 0.5 * (a.eta + b.eta);
+    RootGuess {
+        eta,
+        rel: ((a.eta - b.eta).abs() / eta).max(1e-6),
     }
 }

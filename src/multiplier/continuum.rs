@@ -14,7 +14,7 @@
 //! the tangency angles — whose root is verified by a scan (every φ ≤ `adm_tol` × its
 //! magnitude): exact to rounding.
 
-use crate::arch::{Arch, Radians};
+use crate::arch::{grid_angle, Arch, Radians};
 use crate::contact::{Contact, ContactKind, Location, Peak};
 use crate::load::{live_activation, LiveLoad, Side};
 use crate::lp::{self, LpOutcome};
@@ -101,15 +101,7 @@ impl<'a> Loaded<'a> {
             .into_iter()
             .map(|((a, _), (b, _), side)| {
                 // the grid of `peaks_over`, angle for angle
-                let betas: Vec<Radians> = (0..n)
-                    .map(|i| {
-                        if i + 1 == n {
-                            b
-                        } else {
-                            a + (b - a) * i as f64 / (n - 1) as f64
-                        }
-                    })
-                    .collect();
+                let betas: Vec<Radians> = (0..n).map(|i| grid_angle(a, b, n, i)).collect();
                 let rows = betas
                     .iter()
                     .map(|&beta| {

@@ -87,3 +87,65 @@ pub fn bracket_root<T: Clone>(
     }
     Ok((lo, hi))
 }
+
+/// Where the root of an increasing f is expected: near `eta`, within about `rel` of it
+/// (relative). Only a starting point: the bracket found from it is decided by f itself.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RootGuess {
+    /// The expected root.
+    pub eta: f64,
+    /// Its expected relative distance from the true root (> 0).
+    pub rel: f64,
+}
+
+/// How many times the step of [`bracket_near`] is widened on a side before it gives up.
+const GUESS_WIDENINGS: usize = 3;
+
+/// A bracket of the root of an increasing f found from a guess: f at g(1 + r) and
+/// g(1 − r), the step widened eightfold on a side whose end does not straddle the root
+/// (each evaluation still narrows the bracket, since f is increasing), at most
+/// [`GUESS_WIDENINGS`] times, within (0, `top`]. `Ok(None)` when no bracket was found so
+/// (the caller brackets from its own ends); an evaluation's error is returned as is.
+pub fn bracket_near<T: Clone>(
+    guess: RootGuess,
+    top: f64,
+    mut eval: impl FnMut(f64) -> Result<(f64, T), String>,
+) -> Result<Option<Bracket<T>>, String> {
+    let g = guess.eta;
+    if !(g > 0.0 && g < top && guess.rel > 0.0 && guess.rel.is_finite()) {
+        return Ok(None);
+    }
+    let mut lo: Option<(f64, f64)> = None;
+    let mut hi: Option<(f64, f64, T)> = None;
+    let mut r = guess.rel;
+    // the upper end first: its state is the one the caller keeps
+    for _ in 0..=GUESS_WIDENINGS {
+        let t = (g * (1.0 + r)).min(top);
+        let (f, payload) = eval(t)?;
+        if f >= 0.0 {
+            hi = Some((t, f, payload));
+            break;
+        }
+        lo = Some((t, f));
+        if t >= top {
+            return Ok(None);
+        }
+        r *= 8.0;
+    }
+    let Some(hi) = hi else { return Ok(None) };
+    if lo.is_none() {
+        let mut r = guess.rel;
+        let mut hi = hi;
+        for _ in 0..=GUESS_WIDENINGS {
+            let t = g * (1.0 - r.min(0.5));
+            let (f, payload) = eval(t)?;
+            if f < 0.0 {
+                return Ok(Some(((t, f), hi)));
+            }
+            hi = (t, f, payload);
+            r *= 8.0;
+        }
+        return Ok(None);
+    }
+    Ok(lo.map(|lo| (lo, hi)))
+}

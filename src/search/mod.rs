@@ -5,5 +5,5 @@
 pub mod bracket;
 pub mod candidates;
 
-pub use bracket::{bracket_root, margin_at};
+pub use bracket::{bracket_near, bracket_root, margin_at, RootGuess};
 pub use candidates::candidates_at;
