@@ -25,3 +25,4 @@ mod reference;
 mod ridge;
 mod search_reference;
 mod serve;
+mod warm_start;
