@@ -1,6 +1,7 @@
 //! The speed table of issue 12, measured in one run: median library time of the default
 //! paths (`solve` = the exact η* plus the complete limit-state search, as `arch-enum solve`
-//! runs it; `modes` = the traced limit curve, as `arch-enum modes` runs it), and the CPU time
+//! runs it; `modes` = the traced limit curve, as `arch-enum modes` runs it: on every core
+//! the machine offers, with `--json` a key `threads` says how many), and the CPU time
 //! of a one-shot `arch-enum solve` process beside a hello-world process.
 //!
 //! Run: `cargo run --release --example perf_table [-- --json] [--reps N]`. The process rows
@@ -9,8 +10,9 @@
 //! those two keys are null. Wall times on a shared machine are noisy: compare ratios taken
 //! in one run.
 
-use arch_enum::limit_curve::trace;
+use arch_enum::limit_curve::trace_parallel;
 use arch_enum::limit_states::survey;
+use arch_enum::threads;
 use arch_enum::{Arch, Settings, WeightModel};
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -75,7 +77,9 @@ fn main() {
     let solve_us = |arch: &Arch, mu: f64| {
         1e6 * median(|| drop(survey(arch, mu, &s).expect("valid input")), reps)
     };
-    let modes_ms = |arch: &Arch| 1e3 * median(|| drop(trace(arch, &s)), reps.min(5));
+    let cores = threads::available();
+    let modes_ms =
+        |arch: &Arch| 1e3 * median(|| drop(trace_parallel(arch, &s, cores)), reps.min(5));
     let b20 = Arch::symmetric(0.0, WeightModel::Centroid)
         .and_then(|a| a.with_blocks(20))
         .expect("arch");
@@ -106,6 +110,7 @@ fn main() {
             let (_, hello) = binaries();
             process_cpu_ms(&hello, &[], 50)
         }),
+        ("threads", Some(cores as f64)),
     ];
     if json {
         let doc: serde_json::Map<String, serde_json::Value> = rows

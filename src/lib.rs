@@ -69,6 +69,7 @@ pub mod search;
 pub mod settings;
 pub mod state;
 pub mod statics;
+pub mod threads;
 
 pub use arch::{Arch, InputError, JointLayout, Radians, WeightModel};
 pub use collapse_mode::CollapseMode;

@@ -1,10 +1,11 @@
 //! `arch-enum curve`: η*(μ) sampled over a range of friction coefficients.
 
 use super::arch_args::ArchArgs;
+use super::threads_arg::ThreadsArg;
 use super::{to_json, Exit, Io};
 use crate::arch::{fmt_value, InputError};
 use crate::friction::least_friction;
-use crate::limit_curve::{available_threads, mu_grid, sample};
+use crate::limit_curve::{mu_grid, sample};
 use crate::render::{json, table};
 use crate::settings::Settings;
 use clap::Args;
@@ -22,10 +23,8 @@ pub(crate) struct CurveArgs {
     /// Number of samples (1 to 100000).
     #[arg(long, default_value_t = 20, allow_hyphen_values = true)]
     points: usize,
-    /// Threads solving the samples (1 or more; default: every core). The answer does not
-    /// depend on it.
-    #[arg(long, allow_hyphen_values = true)]
-    threads: Option<usize>,
+    #[command(flatten)]
+    threads: ThreadsArg,
     /// Print one JSON document instead of tables.
     #[arg(long)]
     pub(crate) json: bool,
@@ -56,16 +55,9 @@ pub(crate) fn run(a: CurveArgs, settings: &Settings, io: &mut Io) -> Exit {
         Ok(g) => g,
         Err(e) => return io.bad_input(&e),
     };
-    let threads = match a.threads {
-        Some(0) => {
-            return io.bad_input(&InputError::OutOfRange {
-                arg: "--threads",
-                value: "0".into(),
-                range: "whole numbers 1 or more".into(),
-            })
-        }
-        Some(n) => n,
-        None => available_threads(),
+    let threads = match a.threads.count() {
+        Ok(t) => t,
+        Err(e) => return io.bad_input(&e),
     };
     let bar = super::progress::Progress::new("curve");
     let pts = match sample(&arch, &grid, settings, threads, &|done, total| {

@@ -16,6 +16,7 @@ mod plot;
 mod progress;
 pub mod serve;
 mod solve;
+mod threads_arg;
 
 use crate::arch::InputError;
 use crate::limit::Outcome;

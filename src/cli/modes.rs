@@ -1,8 +1,9 @@
 //! `arch-enum modes`: the whole η–μ limit curve, branches and exact corners.
 
 use super::arch_args::ArchArgs;
+use super::threads_arg::ThreadsArg;
 use super::{to_json, Exit, Io};
-use crate::limit_curve::{trace, CurveStatus};
+use crate::limit_curve::{trace_parallel, CurveStatus};
 use crate::render::{json, table};
 use crate::settings::Settings;
 use clap::Args;
@@ -11,6 +12,8 @@ use clap::Args;
 pub(crate) struct ModesArgs {
     #[command(flatten)]
     arch: ArchArgs,
+    #[command(flatten)]
+    threads: ThreadsArg,
     /// Print one JSON document instead of tables.
     #[arg(long)]
     pub(crate) json: bool,
@@ -21,7 +24,11 @@ pub(crate) fn run(a: ModesArgs, settings: &Settings, io: &mut Io) -> Exit {
         Ok(a) => a,
         Err(e) => return io.bad_input(&e),
     };
-    let curve = trace(&arch, settings);
+    let threads = match a.threads.count() {
+        Ok(t) => t,
+        Err(e) => return io.bad_input(&e),
+    };
+    let curve = trace_parallel(&arch, settings, threads);
     if a.json {
         io.out(&to_json(&json::modes(&arch, &curve)));
     } else {

@@ -2,6 +2,7 @@
 //! eccentricities, a margin map), as SVG or PNG.
 
 use super::arch_args::{ArchArgs, WeightArg};
+use super::threads_arg::ThreadsArg;
 use super::{Exit, Io};
 use crate::arch::{check_eta, check_mu, Arch, InputError};
 use crate::settings::Settings;
@@ -167,9 +168,8 @@ pub(crate) enum Figure {
         /// Log-scale eta axis, cells spaced geometrically (for shallow arches).
         #[arg(long)]
         log_eta: bool,
-        /// Worker threads (1 to 1024; default: every core the machine offers).
-        #[arg(long)]
-        threads: Option<usize>,
+        #[command(flatten)]
+        threads: ThreadsArg,
         #[command(flatten)]
         output: Output,
     },
@@ -295,17 +295,9 @@ pub(crate) fn draw(figure: Figure, settings: &Settings, io: &mut Io) -> Result<S
                     return Err(io.bad_input(&e));
                 }
             }
-            let threads = match threads {
-                None => crate::limit_curve::available_threads(),
-                Some(t) if (1..=1024).contains(&t) => t,
-                Some(t) => {
-                    let e = InputError::OutOfRange {
-                        arg: "--threads",
-                        value: t.to_string(),
-                        range: "whole numbers 1 to 1024".into(),
-                    };
-                    return Err(io.bad_input(&e));
-                }
+            let threads = match threads.count() {
+                Ok(t) => t,
+                Err(e) => return Err(io.bad_input(&e)),
             };
             let grid = figures::MapGrid {
                 n_eta,

@@ -10,7 +10,6 @@ use crate::arch::Arch;
 use crate::contact::ContactKind;
 use crate::settings::Settings;
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Mutex;
 
 /// The margin at every (η, μ) of the grid, `result[i][j]` at (`etas[i]`, `mus[j]`); NaN
 /// where the LP failed. `progress(done, total)` is called after each cell.
@@ -25,36 +24,23 @@ pub fn margin_map(
     let total = etas.len() * mus.len();
     let done = AtomicUsize::new(0);
     // rows are handed out one at a time, so a slow row does not hold up a whole chunk
-    let next = AtomicUsize::new(0);
-    let rows: Vec<Mutex<Vec<f64>>> = etas.iter().map(|_| Mutex::new(Vec::new())).collect();
-    std::thread::scope(|scope| {
-        for _ in 0..threads.clamp(1, etas.len().max(1)) {
-            scope.spawn(|| loop {
-                let i = next.fetch_add(1, Ordering::Relaxed);
-                let Some(&eta) = etas.get(i) else { break };
-                let mut ws = WorkingSet::initial(arch);
-                let row: Vec<f64> = mus
-                    .iter()
-                    .map(|&mu| {
-                        let v = max_margin(
-                            arch,
-                            eta,
-                            mu,
-                            ContactKind::active_at(mu),
-                            &mut ws,
-                            Goal::Optimise,
-                            settings,
-                        )
-                        .map_or(f64::NAN, |m| m.margin / arch.span());
-                        progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
-                        v
-                    })
-                    .collect();
-                *rows[i].lock().unwrap_or_else(|e| e.into_inner()) = row;
-            });
-        }
-    });
-    rows.into_iter()
-        .map(|r| r.into_inner().unwrap_or_else(|e| e.into_inner()))
-        .collect()
+    crate::threads::map(etas, threads, |_, &eta| {
+        let mut ws = WorkingSet::initial(arch);
+        mus.iter()
+            .map(|&mu| {
+                let v = max_margin(
+                    arch,
+                    eta,
+                    mu,
+                    ContactKind::active_at(mu),
+                    &mut ws,
+                    Goal::Optimise,
+                    settings,
+                )
+                .map_or(f64::NAN, |m| m.margin / arch.span());
+                progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+                v
+            })
+            .collect()
+    })
 }

@@ -21,7 +21,7 @@ use crate::collapse_mode::CollapseMode;
 use crate::contact::Contact;
 use crate::friction::{friction_limit, FrictionLimit};
 use crate::limit::{solve, Outcome};
-use crate::limit_states::search_after;
+use crate::limit_states::{search_after, LimitStates};
 use crate::settings::Settings;
 use crate::statics::{internal_forces, Reactions};
 
@@ -187,16 +187,21 @@ fn friction_needed(arch: &Arch, eta: f64, x: &Reactions, samples: usize, detach_
         .fold(0.0, f64::max)
 }
 
-/// Traces the limit curve of `arch`.
+/// Traces the limit curve of `arch` on one thread.
 pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
-    let mut tr = Tracer {
-        arch,
-        settings,
-        solves: 0,
-        unresolved: Vec::new(),
-        no_collapse: Vec::new(),
-        no_equilibrium: Vec::new(),
-    };
+    trace_parallel(arch, settings, 1)
+}
+
+/// Consecutive coarse samples solved in sequence, each bracketing η_s from its
+/// neighbours' (a group is what one thread takes; fixed, so that the work, and with it the
+/// answer, does not depend on the thread count).
+const SAMPLE_GROUP: usize = 8;
+
+/// [`trace`] with its independent parts on `threads` threads (0 is taken as 1): the groups
+/// of coarse samples, the location of each pattern change between them, and the
+/// limit-state search at each sample. The curve is the same for every thread count.
+pub fn trace_parallel(arch: &Arch, settings: &Settings, threads: usize) -> LimitCurve {
+    let mut tr = Tracer::new(arch, settings);
     let fl: Option<FrictionLimit> = friction_limit(arch, settings).ok().flatten();
     let Some(fl) = fl else {
         return LimitCurve {
@@ -244,12 +249,27 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
         OVERTURNING_SPAN * mu_lo.max(MU_FLOOR)
     };
     let n = settings.curve_samples.max(2);
-    let mut samples: Vec<Sample> = Vec::new();
-    for i in (0..n).rev() {
-        let mu = mu_lo * (mu_hi / mu_lo).powf(i as f64 / (n - 1) as f64);
-        if let Some(s) = tr.sample_near(mu, next_guess(&samples, inf.as_ref())) {
-            samples.push(s);
+    let mus: Vec<f64> = (0..n)
+        .rev()
+        .map(|i| mu_lo * (mu_hi / mu_lo).powf(i as f64 / (n - 1) as f64))
+        .collect();
+    let groups: Vec<&[f64]> = mus.chunks(SAMPLE_GROUP).collect();
+    let solved = crate::threads::map(&groups, threads, |g, group| {
+        let mut t = Tracer::new(arch, settings);
+        let mut got: Vec<Sample> = Vec::new();
+        for &mu in *group {
+            // the first group starts from μ = ∞, the others from the whole range
+            let guess = next_guess(&got, inf.as_ref().filter(|_| g == 0));
+            if let Some(s) = t.sample_near(mu, guess) {
+                got.push(s);
+            }
         }
+        (got, t)
+    });
+    let mut samples: Vec<Sample> = Vec::new();
+    for (got, t) in solved {
+        samples.extend(got);
+        tr.absorb(t);
     }
     let mut changes = Vec::new();
     // the top: a finite pattern different from the infinite-friction one is asymptotic
@@ -270,11 +290,18 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
             });
         }
     }
-    for w in 0..samples.len().saturating_sub(1) {
-        let (a, b) = (samples[w].clone(), samples[w + 1].clone());
-        if a.sig != b.sig {
-            changes.extend(tr.locate(&a, &b, 24));
-        }
+    let pairs: Vec<(&Sample, &Sample)> = samples
+        .windows(2)
+        .map(|w| (&w[0], &w[1]))
+        .filter(|(a, b)| a.sig != b.sig)
+        .collect();
+    let located = crate::threads::map(&pairs, threads, |_, (a, b)| {
+        let mut t = Tracer::new(arch, settings);
+        (t.locate(a, b, 24), t)
+    });
+    for (found, t) in located {
+        changes.extend(found);
+        tr.absorb(t);
     }
     // Where the lowest branch ends: at the corner with the vertical purely-sliding branch
     // (slope −∞ on its left), or — when samples above μ_ms have no equilibrium at any
@@ -391,7 +418,12 @@ pub fn trace(arch: &Arch, settings: &Settings) -> LimitCurve {
         });
     }
     let searched = samples.len() + usize::from(inf.is_some());
-    let (limit_branches, incomplete) = limit_branches(&tr, inf.iter().chain(&samples), settings);
+    let searched_samples: Vec<&Sample> = inf.iter().chain(&samples).collect();
+    let searches = crate::threads::map(&searched_samples, threads, |_, s| {
+        search_after(&s.solution, settings)
+    });
+    let (limit_branches, incomplete) =
+        limit_branches(&tr, searched_samples.into_iter().zip(searches));
     let mut unresolved = tr.unresolved.clone();
     unresolved.extend(incomplete);
     let (corners, transitions) = changes.into_iter().partition(|c| c.kink);
@@ -426,14 +458,13 @@ pub struct LimitBranch {
 /// whose search could not be completed (μ and why: listed as unresolved).
 fn limit_branches<'a>(
     tr: &Tracer,
-    samples: impl Iterator<Item = &'a Sample>,
-    settings: &Settings,
+    samples: impl Iterator<Item = (&'a Sample, Result<LimitStates, String>)>,
 ) -> (Vec<LimitBranch>, Vec<(f64, String)>) {
     let mut open: Vec<(tracer::Signature, LimitBranch, bool)> = Vec::new();
     let mut done: Vec<LimitBranch> = Vec::new();
     let mut incomplete = Vec::new();
-    for s in samples {
-        let above = match search_after(&s.solution, settings) {
+    for (s, search) in samples {
+        let above = match search {
             Ok(ls) => ls.above,
             Err(e) => {
                 incomplete.push((

@@ -4,7 +4,6 @@ use crate::arch::{Arch, InputError};
 use crate::limit::{solve, Outcome};
 use crate::settings::Settings;
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Mutex;
 
 /// One sample of the limit curve.
 #[derive(Debug, Clone)]
@@ -65,36 +64,21 @@ pub fn sample(
     threads: usize,
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<Vec<CurvePoint>, InputError> {
-    let next = AtomicUsize::new(0);
     let done = AtomicUsize::new(0);
-    let slots: Vec<Mutex<Option<Result<CurvePoint, InputError>>>> =
-        mus.iter().map(|_| Mutex::new(None)).collect();
-    std::thread::scope(|scope| {
-        for _ in 0..threads.clamp(1, mus.len().max(1)) {
-            scope.spawn(|| loop {
-                let i = next.fetch_add(1, Ordering::Relaxed);
-                let Some(&mu) = mus.get(i) else { break };
-                let point = solve(arch, mu, settings).map(|s| CurvePoint {
-                    mu,
-                    outcome: s.outcome,
-                });
-                *slots[i].lock().unwrap_or_else(|e| e.into_inner()) = Some(point);
-                progress(done.fetch_add(1, Ordering::Relaxed) + 1, mus.len());
-            });
-        }
-    });
-    slots
-        .into_iter()
-        .map(|s| {
-            s.into_inner()
-                .unwrap_or_else(|e| e.into_inner())
-                .expect("every mu solved")
-        })
-        .collect()
+    crate::threads::map(mus, threads, |_, &mu| {
+        let point = solve(arch, mu, settings).map(|s| CurvePoint {
+            mu,
+            outcome: s.outcome,
+        });
+        progress(done.fetch_add(1, Ordering::Relaxed) + 1, mus.len());
+        point
+    })
+    .into_iter()
+    .collect()
 }
 
 /// The number of threads the machine offers (at least 1): the default thread count of the
 /// commands that sample independent points.
 pub fn available_threads() -> usize {
-    std::thread::available_parallelism().map_or(1, |n| n.get())
+    crate::threads::available()
 }

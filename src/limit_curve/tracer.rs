@@ -59,7 +59,27 @@ pub(super) struct Tracer<'a> {
     pub(super) no_equilibrium: Vec<f64>,
 }
 
-impl Tracer<'_> {
+impl<'a> Tracer<'a> {
+    /// A tracer that has solved nothing yet.
+    pub(super) fn new(arch: &'a Arch, settings: &'a Settings) -> Tracer<'a> {
+        Tracer {
+            arch,
+            settings,
+            solves: 0,
+            unresolved: Vec::new(),
+            no_collapse: Vec::new(),
+            no_equilibrium: Vec::new(),
+        }
+    }
+
+    /// Takes over what another tracer (of the same arch, run on another thread) counted and
+    /// recorded, after what this one recorded.
+    pub(super) fn absorb(&mut self, other: Tracer) {
+        self.solves += other.solves;
+        self.unresolved.extend(other.unresolved);
+        self.no_collapse.extend(other.no_collapse);
+        self.no_equilibrium.extend(other.no_equilibrium);
+    }
     /// The boundary at μ, without recording anything.
     fn boundary(&mut self, mu: f64, guess: Option<RootGuess>) -> Result<Sample, Box<Outcome>> {
         self.solves += 1;

@@ -330,3 +330,37 @@ fn curve_threads_do_not_change_the_answer() {
     assert_eq!(zero.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&zero.stdout).contains("--threads"));
 }
+
+#[test]
+fn modes_threads_do_not_change_the_answer() {
+    // continuous and discrete, symmetric and not, with corners located on several threads
+    for arch in [
+        &["--alpha", "0"][..],
+        &["--alpha", "1.0"],
+        &["--beta-right", "-0.2", "--beta-left", "3.0"],
+        &["--alpha", "0", "--blocks", "20"],
+    ] {
+        let run = |threads: &str| {
+            arch_enum()
+                .arg("modes")
+                .args(arch)
+                .args(["--json", "--threads", threads])
+                .output()
+                .unwrap()
+        };
+        let (one, two, three) = (run("1"), run("2"), run("3"));
+        assert_eq!(one.status.code(), Some(0), "{arch:?}");
+        assert_eq!(one.stdout, two.stdout, "{arch:?}");
+        assert_eq!(one.stdout, three.stdout, "{arch:?}");
+    }
+    let out = arch_enum()
+        .args(["modes", "--alpha", "0", "--threads", "1025"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let text = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        text.contains("--threads") && text.contains("1 to 1024"),
+        "{text}"
+    );
+}

@@ -33,7 +33,9 @@ fn random_arch(rng: &mut Rng, k: usize) -> Arch {
     let arch = Arch::new(br, bl, weight).expect("arch");
     match k % 4 {
         0 | 1 => arch,
-        2 => arch.with_blocks(3 + (rng.next() * 30.0) as usize).expect("blocks"),
+        2 => arch
+            .with_blocks(3 + (rng.next() * 30.0) as usize)
+            .expect("blocks"),
         _ => {
             let blocks = 2 + (rng.next() * 12.0) as usize;
             let j = random_joints(rng, br, bl, blocks);
