@@ -12,7 +12,7 @@ use arch_enum::arch::{check_eta, check_mu, fmt_value, InputError, JointLayout};
 use arch_enum::certificate::{certify as certify_eta, verify as verify_cert, Certificate};
 use arch_enum::figures::{self, ArchScene};
 use arch_enum::friction::least_friction;
-use arch_enum::limit_curve::{available_threads, sample, trace};
+use arch_enum::limit_curve::{available_threads, sample, trace_parallel};
 use arch_enum::limit_states::survey;
 use arch_enum::load::LiveLoad;
 use arch_enum::multiplier::{check_load, survey as load_survey};
@@ -266,12 +266,12 @@ fn curve<'py>(
     to_py(py, &d)
 }
 
-/// `modes --json`: the whole η–μ limit curve.
+/// `modes --json`: the whole η–μ limit curve (on every core, as the command line).
 #[pyfunction]
 fn modes<'py>(py: Python<'py>, spec: ArchIn) -> PyResult<Bound<'py, PyAny>> {
     let arch = build_arch(&spec)?;
     let d = py.detach(|| {
-        let c = trace(&arch, &Settings::default());
+        let c = trace_parallel(&arch, &Settings::default(), available_threads());
         serde_json::to_value(json::modes(&arch, &c)).expect("serialisable")
     });
     to_py(py, &d)
