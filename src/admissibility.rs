@@ -105,6 +105,10 @@ pub fn peak_grad_norm(arch: &Arch, eta: f64, mu: f64, p: &Peak) -> f64 {
     }
 }
 
+/// Above √3 with room for the rounding of a norm: ‖g‖ as [`crate::statics::Affine::grad_norm`]
+/// computes it is below this times max |gᵢ|.
+const SQRT3_ABOVE: f64 = 1.7321;
+
 /// The least normalised slack −φ/‖∇φ‖ over every contact of `modes` at every joint of a
 /// discrete arch at x, and the (at most) four smallest below `below`, ascending (ties in
 /// the order kind by kind, then joint by joint): one pass, no list of every contact.
@@ -134,7 +138,23 @@ fn discrete_slacks(
         let f = forces_with(arch, eta, beta, sc);
         for &(k, kind) in &kinds {
             let a = activation_of(kind, &f, eta, mu);
-            let slack = -a.at(x) / a.grad_norm();
+            let phi = a.at(x);
+            // a contact that can change neither the least slack nor the four smallest is
+            // skipped before its norm: ‖∇φ‖ ≤ √3 max|∂φ/∂xᵢ| (with room for rounding)
+            // bounds its slack from below
+            let keep = if worst.len() == 4 {
+                worst[3].0.min(below)
+            } else {
+                below
+            };
+            let floor = margin.max(keep);
+            if phi < 0.0 && floor.is_finite() {
+                let m = a.g[0].abs().max(a.g[1].abs()).max(a.g[2].abs());
+                if -phi > floor.max(0.0) * m * SQRT3_ABOVE {
+                    continue;
+                }
+            }
+            let slack = -phi / a.grad_norm();
             margin = margin.min(slack);
             if slack < below {
                 let key = (slack, k * n + j);

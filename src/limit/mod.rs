@@ -35,7 +35,34 @@ use recession::{margin, threshold};
 /// no sliding). Bad input is an `Err`; what the solver found (a limit state, no
 /// equilibrium, or an unresolved bracket) is inside the `Solution`.
 pub fn solve(arch: &Arch, mu: f64, settings: &Settings) -> Result<Solution, InputError> {
-    solve_near(arch, mu, None, settings)
+    solve_near(arch, mu, continuum_guess(arch, mu, settings), settings)
+}
+
+/// From this many joints on, a discrete arch brackets η_s from the η_s of the continuous
+/// arch between its springings: each margin LP of the discrete arch costs a pass over
+/// every joint, and the continuous one costs about as much as a few hundred joints.
+const GUESS_FROM_CONTINUUM_JOINTS: usize = 1000;
+
+/// Where η_s of a discrete arch with many joints is expected: at the continuous arch's
+/// (fine joints change η_s by about the square of their spacing), within 10⁻³. `None` for
+/// fewer joints, or when the continuous arch has no least thickness.
+fn continuum_guess(arch: &Arch, mu: f64, settings: &Settings) -> Option<RootGuess> {
+    let JointLayout::Discrete(joints) = arch.layout() else {
+        return None;
+    };
+    if joints.len() < GUESS_FROM_CONTINUUM_JOINTS {
+        return None;
+    }
+    let continuum = Arch::new(arch.beta_right(), arch.beta_left(), arch.weight()).ok()?;
+    let eta = match solve_near(&continuum, mu, None, settings).ok()?.outcome {
+        Outcome::Limit(ls) => ls.eta_static,
+        Outcome::Unresolved {
+            least_static: Some((eta, _)),
+            ..
+        } => eta,
+        _ => return None,
+    };
+    Some(RootGuess { eta, rel: 1e-3 })
 }
 
 /// [`solve`] with the bracket of η_s started from a guess (a neighbouring solution, as

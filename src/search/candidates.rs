@@ -21,13 +21,14 @@ pub fn candidates_at(
         m + settings.candidate_rel * reaction_scale(x)
     });
     let mut peaks: Vec<(f64, Peak)> = state
-        .near_active(settings, f64::NEG_INFINITY)
+        .peaks(settings)
         .into_iter()
         .filter(|p| modes.contains(&p.contact.kind))
         .map(|p| (-p.value / peak_grad_norm(arch, eta, mu, &p), p))
         .filter(|(slack, _)| *slack <= limit)
         .collect();
-    peaks.sort_by(|a, b| a.0.total_cmp(&b.0));
+    // by slack, equal slacks by decreasing φ, then in the scan's order
+    peaks.sort_by(|a, b| a.0.total_cmp(&b.0).then(b.1.value.total_cmp(&a.1.value)));
     peaks.truncate(settings.max_candidates);
     peaks.into_iter().map(|(_, p)| p.contact).collect()
 }
