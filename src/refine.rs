@@ -472,10 +472,14 @@ fn newton(
 /// systems, to the same step as the SVD up to rounding.
 const LU_PIVOT_RATIO: f64 = 1e-8;
 
-/// The Newton step of a square, well-conditioned system by LU with full pivoting; `None`
-/// when the system is not square or its pivots fall below [`LU_PIVOT_RATIO`] (the
-/// SVD's minimum-norm step then decides).
+/// The Newton step of a square, well-conditioned system by LU with full pivoting (of an
+/// over-determined one by [`qr_step`]); `None` when the system has fewer equations than
+/// unknowns or its pivots fall below [`LU_PIVOT_RATIO`] (the SVD's minimum-norm step then
+/// decides).
 fn lu_step(jac: &DMatrix<f64>, rhs: &DVector<f64>) -> Option<DVector<f64>> {
+    if jac.nrows() > jac.ncols() && jac.ncols() > 0 {
+        return qr_step(jac, rhs);
+    }
     if !jac.is_square() || jac.nrows() == 0 {
         return None;
     }
@@ -486,6 +490,21 @@ fn lu_step(jac: &DMatrix<f64>, rhs: &DVector<f64>) -> Option<DVector<f64>> {
         return None;
     }
     lu.solve(rhs)
+}
+
+/// The least-squares (Gauss–Newton) step of an over-determined system of full column rank
+/// by Householder QR; `None` when a diagonal entry of R falls below [`LU_PIVOT_RATIO`] of
+/// the largest (the SVD then decides).
+fn qr_step(jac: &DMatrix<f64>, rhs: &DVector<f64>) -> Option<DVector<f64>> {
+    let qr = jac.clone().qr();
+    let r = qr.r();
+    let diag = r.diagonal().map(f64::abs);
+    let (lo, hi) = (diag.min(), diag.max());
+    if !(hi > 0.0 && lo >= LU_PIVOT_RATIO * hi) {
+        return None;
+    }
+    let qtb = qr.q().transpose() * rhs;
+    r.solve_upper_triangular(&qtb)
 }
 
 /// `v` rounded to `digits` significant decimal digits.
