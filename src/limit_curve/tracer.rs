@@ -211,9 +211,17 @@ impl<'a> Tracer<'a> {
         )
     }
 
-    /// η_s at μ (expected near `guess`), or NaN.
+    /// η_s at μ (expected near `guess`), or NaN: the boundary's η without its pattern.
     fn eta_s(&mut self, mu: f64, guess: RootGuess) -> f64 {
-        self.boundary(mu, Some(guess)).map_or(f64::NAN, |s| s.eta)
+        self.solves += 1;
+        match solve_near(self.arch, mu, Some(guess), self.settings).map(|s| s.outcome) {
+            Ok(Outcome::Limit(ls)) => ls.eta_static,
+            Ok(Outcome::Unresolved {
+                least_static: Some((eta, _)),
+                ..
+            }) => eta,
+            _ => f64::NAN,
+        }
     }
 
     /// The one-sided slope dη_s/dμ at (μ, η) on the side `side` (+1: larger μ, −1:
