@@ -267,6 +267,71 @@ fn margin_or_far(
     }
 }
 
+/// The bracket of η_s is first narrowed to this (relative), where the least state's
+/// pattern is usually the LP's: η_s predicted by Newton on it is then tested directly
+/// ([`predicted`]).
+const PREDICT_REL: f64 = 1e-2;
+
+/// The prediction is tested this fraction of `bracket_rel` (relative) on either side: a
+/// bracket 10 times narrower than the bisection's, still wide enough for the LP to decide
+/// the margin's sign on ordinary arches (the margin changes by about η N/2 per unit of
+/// relative η).
+const PREDICT_STEP: f64 = 0.05;
+
+/// A narrowed bracket of η_s from a prediction: the candidates at the upper end of a coarse
+/// bracket enumerated (as the solve does at the end) give the least admissible refined
+/// state, η_p; the margin at η_p (1 ∓ [`PREDICT_STEP`] `bracket_rel`) then brackets η_s
+/// to a tenth of `bracket_rel` when the prediction is right. Each margin evaluated narrows the bracket
+/// whatever its sign (the margin is increasing in η), so a wrong prediction costs two LPs
+/// and the bracketing goes on from there.
+fn predicted(
+    arch: &Arch,
+    mu: f64,
+    modes: &[ContactKind],
+    (mut lo, mut hi): ((f64, f64), (f64, f64, Margin)),
+    eval: &mut impl FnMut(f64) -> Result<(f64, Margin), String>,
+    settings: &Settings,
+) -> Result<((f64, f64), (f64, f64, Margin)), String> {
+    let top = State {
+        arch,
+        eta: hi.0,
+        mu,
+        x: hi.2.x,
+    };
+    let cand = candidates_at(&top, Some(hi.2.margin.max(0.0)), modes, settings);
+    let sizes: Vec<usize> = (2..=5).collect();
+    let stop_at = hi.0 * (1.0 + settings.root_slack);
+    let mut scratch = Vec::new();
+    let found = enumerate(
+        arch,
+        mu,
+        &cand,
+        &sizes,
+        hi.2.x,
+        hi.0,
+        (lo.0, hi.0),
+        stop_at,
+        settings,
+        &mut scratch,
+    );
+    let Some(eta_p) = found.least_static.map(|r| r.eta) else {
+        return Ok((lo, hi));
+    };
+    let k = PREDICT_STEP * settings.bracket_rel;
+    for t in [eta_p * (1.0 + k), eta_p * (1.0 - k)] {
+        if !(t > lo.0 && t < hi.0) {
+            continue;
+        }
+        let (f, m) = eval(t)?;
+        if f >= 0.0 {
+            hi = (t, f, m);
+        } else {
+            lo = (t, f);
+        }
+    }
+    Ok((lo, hi))
+}
+
 fn solve_inner(
     arch: &Arch,
     mu: f64,
@@ -296,6 +361,7 @@ fn solve_inner(
         .ok()
         .flatten()
     });
+    let from_whole_range = near.is_none();
     let start = match near {
         Some(ends) => ends,
         None => {
@@ -327,9 +393,15 @@ fn solve_inner(
             )
         }
     };
-    let bracket = bracket_root(start.0, start.1, settings.bracket_rel, 200, |eta| {
-        margin_or_far(arch, eta, mu, modes, &mut ws, settings)
-    });
+    let mut eval = |eta: f64| margin_or_far(arch, eta, mu, modes, &mut ws, settings);
+    let bracket = if from_whole_range && PREDICT_REL > settings.bracket_rel {
+        bracket_root(start.0, start.1, PREDICT_REL, 200, &mut eval).and_then(|(lo, hi)| {
+            let ends = predicted(arch, mu, modes, (lo, hi), &mut eval, settings)?;
+            bracket_root(ends.0, ends.1, settings.bracket_rel, 200, &mut eval)
+        })
+    } else {
+        bracket_root(start.0, start.1, settings.bracket_rel, 200, &mut eval)
+    };
     let (lo, hi) = match bracket {
         Ok(b) => b,
         Err(e) => return lp_failed("while bracketing eta_s", e),
