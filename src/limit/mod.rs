@@ -23,7 +23,7 @@ use crate::admissibility::{Margin, WorkingSet};
 use crate::arch::{check_mu, Arch, InputError, JointLayout};
 use crate::contact::ContactKind;
 use crate::lp::{self, LpOutcome};
-use crate::search::{bracket_near, bracket_root, candidates_at, margin_at, RootGuess};
+use crate::search::{bracket_near, bracket_root, candidates_at, margin_at, Bracket, RootGuess};
 use crate::settings::Settings;
 use crate::state::State;
 use crate::statics::{actions, reaction_scale, Affine, Reactions};
@@ -288,10 +288,10 @@ fn predicted(
     arch: &Arch,
     mu: f64,
     modes: &[ContactKind],
-    (mut lo, mut hi): ((f64, f64), (f64, f64, Margin)),
+    (mut lo, mut hi): Bracket<Margin>,
     eval: &mut impl FnMut(f64) -> Result<(f64, Margin), String>,
     settings: &Settings,
-) -> Result<((f64, f64), (f64, f64, Margin)), String> {
+) -> Result<Bracket<Margin>, String> {
     let top = State {
         arch,
         eta: hi.0,

@@ -29,7 +29,7 @@ pub fn margin_at(
 const SECANT_GUARD: f64 = 1e-3;
 
 /// The ends of a bracket: (η, f) below the root, (η, f, payload) at or above it.
-type Bracket<T> = ((f64, f64), (f64, f64, T));
+pub type Bracket<T> = ((f64, f64), (f64, f64, T));
 
 /// Root of an increasing function f on [lo, hi] with f(lo) < 0 ≤ f(hi): Illinois
 /// regula falsi with geometric bisection as a safeguard. `eval` returns f and the

@@ -5,5 +5,5 @@
 pub mod bracket;
 pub mod candidates;
 
-pub use bracket::{bracket_near, bracket_root, margin_at, RootGuess};
+pub use bracket::{bracket_near, bracket_root, margin_at, Bracket, RootGuess};
 pub use candidates::candidates_at;
