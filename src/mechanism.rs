@@ -107,7 +107,8 @@ fn find_one_sense(
     let n = cs.len();
     let cols: Vec<[f64; 3]> = cs.iter().map(|c| column(c.kind, c.beta, eta)).collect();
     let p = power(arch, eta, &cs);
-    let first = match lp::kinematic(&cols, &p, &vec![0.0; n], settings) {
+    let lp = lp::Kinematic::new(&cols, &p, settings);
+    let first = match lp.solve(&vec![0.0; n]) {
         Ok(l) => l,
         Err(LpOutcome::Infeasible) => return Ok(None),
         Err(e) => return Err(e),
@@ -119,7 +120,7 @@ fn find_one_sense(
         }
         let mut obj = vec![0.0; n];
         obj[i] = 1.0;
-        let l = lp::kinematic(&cols, &p, &obj, settings)?;
+        let l = lp.solve(&obj)?;
         if l[i] > settings.rate_tol {
             rays.push(l);
         }

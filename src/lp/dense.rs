@@ -192,32 +192,50 @@ fn dual_simplex(
 /// The kinematic LP of [`super::highs::kinematic`] (maximise `objective · λ` subject to
 /// Σ λ_j c_j = 0, `power · λ ≥ 0`, Σ λ = 1, λ ≥ 0) for small patterns, by enumerating the
 /// basic solutions of its five equality rows (power with a slack). Returns `None` when
-/// the enumeration does not apply (more than 12 rates, or rank-deficient rows: the
-/// caller then uses HiGHS); `Some(Err(Infeasible))` when no rates exist.
+/// the enumeration does not apply ([`kinematic_applies`]: the caller then uses HiGHS);
+/// `Some(Err(Infeasible))` when no rates exist.
 pub fn kinematic(
     columns: &[[f64; 3]],
     power: &[f64],
     objective: &[f64],
     tol: f64,
 ) -> Option<Result<Vec<f64>, LpOutcome>> {
-    use itertools::Itertools;
-    use nalgebra::{DMatrix, Matrix5, Vector5};
+    kinematic_applies(columns, power).then(|| kinematic_on_bases(columns, power, objective, tol))
+}
+
+/// The equality rows of the kinematic LP with the power slack: λ_j → (c_j, p_j, 1), the
+/// slack → (0, 0, 0, −1, 0).
+fn kinematic_column(columns: &[[f64; 3]], power: &[f64], j: usize) -> [f64; 5] {
+    if j < columns.len() {
+        [columns[j][0], columns[j][1], columns[j][2], power[j], 1.0]
+    } else {
+        [0.0, 0.0, 0.0, -1.0, 0.0]
+    }
+}
+
+/// Whether [`kinematic`] enumerates bases for these rates: 1 to 12 of them, and equality
+/// rows of full rank (independent of the objective: decided once for several solves).
+pub fn kinematic_applies(columns: &[[f64; 3]], power: &[f64]) -> bool {
+    use nalgebra::DMatrix;
     let n = columns.len();
     if n == 0 || n > 12 {
-        return None;
+        return false;
     }
-    // columns of the equality system: λ_j → (c_j, p_j, 1); slack t → (0, 0, 0, −1, 0)
-    let col = |j: usize| -> [f64; 5] {
-        if j < n {
-            [columns[j][0], columns[j][1], columns[j][2], power[j], 1.0]
-        } else {
-            [0.0, 0.0, 0.0, -1.0, 0.0]
-        }
-    };
-    let full = DMatrix::from_fn(5, n + 1, |r, c| col(c)[r]);
-    if full.rank(1e2 * BASIS_TOL) < 5 {
-        return None;
-    }
+    let full = DMatrix::from_fn(5, n + 1, |r, c| kinematic_column(columns, power, c)[r]);
+    full.rank(1e2 * BASIS_TOL) >= 5
+}
+
+/// [`kinematic`] where [`kinematic_applies`] holds.
+pub fn kinematic_on_bases(
+    columns: &[[f64; 3]],
+    power: &[f64],
+    objective: &[f64],
+    tol: f64,
+) -> Result<Vec<f64>, LpOutcome> {
+    use itertools::Itertools;
+    use nalgebra::{Matrix5, Vector5};
+    let n = columns.len();
+    let col = |j: usize| kinematic_column(columns, power, j);
     let rhs = Vector5::new(0.0, 0.0, 0.0, 0.0, 1.0);
     let mut best: Option<(f64, Vec<f64>)> = None;
     for basis in (0..=n).combinations(5) {
@@ -241,7 +259,7 @@ pub fn kinematic(
             best = Some((value, lambda));
         }
     }
-    Some(best.map(|b| b.1).ok_or(LpOutcome::Infeasible))
+    best.map(|b| b.1).ok_or(LpOutcome::Infeasible)
 }
 
 /// Rows 0..[`MULTIPLIER_ROWS`] of the dense multiplier LP are its own: λ ≥ 0, the box

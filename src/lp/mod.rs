@@ -50,12 +50,39 @@ pub fn kinematic(
     objective: &[f64],
     settings: &Settings,
 ) -> Result<Vec<f64>, LpOutcome> {
-    if settings.lp_backend == LpBackend::Dense {
-        if let Some(r) = dense::kinematic(columns, power, objective, settings.rate_tol) {
-            return r;
+    Kinematic::new(columns, power, settings).solve(objective)
+}
+
+/// The kinematic LP of one pattern ([`kinematic`]) for several objectives: which back end
+/// solves it (the dense enumeration applies or not) is decided once.
+pub struct Kinematic<'a> {
+    columns: &'a [[f64; 3]],
+    power: &'a [f64],
+    settings: &'a Settings,
+    dense: bool,
+}
+
+impl<'a> Kinematic<'a> {
+    /// The LP of these compatibility columns and powers.
+    pub fn new(columns: &'a [[f64; 3]], power: &'a [f64], settings: &'a Settings) -> Self {
+        Kinematic {
+            columns,
+            power,
+            settings,
+            dense: settings.lp_backend == LpBackend::Dense
+                && dense::kinematic_applies(columns, power),
         }
     }
-    highs::kinematic(columns, power, objective, settings.lp_tol)
+
+    /// Maximises `objective · λ` (see [`kinematic`]).
+    pub fn solve(&self, objective: &[f64]) -> Result<Vec<f64>, LpOutcome> {
+        let (c, p, s) = (self.columns, self.power, self.settings);
+        if self.dense {
+            dense::kinematic_on_bases(c, p, objective, s.rate_tol)
+        } else {
+            highs::kinematic(c, p, objective, s.lp_tol)
+        }
+    }
 }
 
 /// The Farkas alternative of [`kinematic`] (used by certificates; HiGHS always): the
