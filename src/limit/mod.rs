@@ -267,10 +267,11 @@ fn margin_or_far(
     }
 }
 
-/// The bracket of η_s is first narrowed to this (relative), where the least state's
-/// pattern is usually the LP's: η_s predicted by Newton on it is then tested directly
-/// ([`predicted`]).
-const PREDICT_REL: f64 = 1e-2;
+/// The bracket of η_s from the whole range is narrowed to each of these widths (relative)
+/// in turn, and η_s predicted there from the LP's state ([`predicted`]): at 10 % the least
+/// state's pattern is often the LP's already; a wrong first prediction gets a second
+/// chance at 10⁻³ before the bisection goes on to `bracket_rel`.
+const PREDICT_AT: [f64; 2] = [1e-1, 1e-3];
 
 /// The prediction is tested this fraction of `bracket_rel` (relative) on either side: a
 /// bracket 10 times narrower than the bisection's, still wide enough for the LP to decide
@@ -394,14 +395,20 @@ fn solve_inner(
         }
     };
     let mut eval = |eta: f64| margin_or_far(arch, eta, mu, modes, &mut ws, settings);
-    let bracket = if from_whole_range && PREDICT_REL > settings.bracket_rel {
-        bracket_root(start.0, start.1, PREDICT_REL, 200, &mut eval).and_then(|(lo, hi)| {
-            let ends = predicted(arch, mu, modes, (lo, hi), &mut eval, settings)?;
-            bracket_root(ends.0, ends.1, settings.bracket_rel, 200, &mut eval)
-        })
-    } else {
-        bracket_root(start.0, start.1, settings.bracket_rel, 200, &mut eval)
-    };
+    let mut bracket = Ok(start);
+    if from_whole_range {
+        for level in PREDICT_AT.into_iter().filter(|&l| l > settings.bracket_rel) {
+            bracket = bracket.and_then(|(lo, hi)| {
+                if hi.0 - lo.0 <= settings.bracket_rel * hi.0 {
+                    return Ok((lo, hi)); // an earlier prediction closed it
+                }
+                let (lo, hi) = bracket_root(lo, hi, level, 200, &mut eval)?;
+                predicted(arch, mu, modes, (lo, hi), &mut eval, settings)
+            });
+        }
+    }
+    let bracket = bracket
+        .and_then(|(lo, hi)| bracket_root(lo, hi, settings.bracket_rel, 200, &mut eval));
     let (lo, hi) = match bracket {
         Ok(b) => b,
         Err(e) => return lp_failed("while bracketing eta_s", e),
