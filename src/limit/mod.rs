@@ -29,7 +29,7 @@ use crate::state::State;
 use crate::statics::{actions, reaction_scale, Affine, Reactions};
 use diagnosis::{no_equilibrium, unresolved};
 use enumerate::enumerate;
-use recession::{margin, threshold};
+use recession::{continuum_threshold, margin, threshold};
 
 /// Solves for the least thickness η*(μ) of `arch` at friction `mu` (`f64::INFINITY`:
 /// no sliding). Bad input is an `Err`; what the solver found (a limit state, no
@@ -92,23 +92,27 @@ pub fn solve_near(
     })
 }
 
-/// A discrete arch whose least admissible state is unbounded (its reactions beyond
+/// An arch whose least admissible state is unbounded (its reactions beyond
 /// `settings.unbounded_reactions`): η_s is then an infimum, the least η with a weightless
 /// admissible direction ([`recession`]), and the Newton state found
 /// near it only approximates that η (its equations hold relative to reactions of 1e9 or
-/// more). η_s becomes the exact root of the direction's three contacts when it verifies
-/// within 1e-6 (relative) of the approximation; anything found at η_s itself moves with it
+/// more). η_s becomes the exact root of the direction's three contacts (a discrete arch:
+/// a cubic; a continuous one: Newton on the weightless system, free contacts tangent) when
+/// it verifies within 1e-6 (relative) of the approximation; anything found at η_s itself moves with it
 /// (no finite state carries it: the search reports no limit state there).
 fn exact_infimum(arch: &Arch, mu: f64, outcome: Outcome, settings: &Settings) -> Outcome {
-    let exact = |eta: f64| {
+    let exact = |eta: f64, x: &Reactions| {
         let hi = (eta * (1.0 + 1e-6)).min(crate::arch::ETA_TOP);
-        threshold(arch, mu, eta * (1.0 - 1e-6), hi, settings)
-            .filter(|r| r.exact)
+        let r = match arch.layout() {
+            JointLayout::Discrete(_) => threshold(arch, mu, eta * (1.0 - 1e-6), hi, settings),
+            JointLayout::Continuous => continuum_threshold(arch, mu, eta, x, settings),
+        };
+        r.filter(|r| r.exact && r.eta >= eta * (1.0 - 1e-6) && r.eta <= hi)
             .map(|r| r.eta)
     };
     match outcome {
         Outcome::Limit(mut ls) if !bounded(arch, &ls.x_static, settings) => {
-            if let Some(eta) = exact(ls.eta_static) {
+            if let Some(eta) = exact(ls.eta_static, &ls.x_static) {
                 if ls.eta <= ls.eta_static * (1.0 + settings.root_slack) {
                     ls.eta = eta;
                 }
@@ -122,7 +126,7 @@ fn exact_infimum(arch: &Arch, mu: f64, outcome: Outcome, settings: &Settings) ->
             reason,
             least_static: Some((eta, x)),
         } if !bounded(arch, &x, settings) => {
-            let eta = exact(eta).unwrap_or(eta);
+            let eta = exact(eta, &x).unwrap_or(eta);
             Outcome::Unresolved {
                 eta_lo: eta_lo.min(eta),
                 eta_hi,
@@ -407,8 +411,8 @@ fn solve_inner(
             });
         }
     }
-    let bracket = bracket
-        .and_then(|(lo, hi)| bracket_root(lo, hi, settings.bracket_rel, 200, &mut eval));
+    let bracket =
+        bracket.and_then(|(lo, hi)| bracket_root(lo, hi, settings.bracket_rel, 200, &mut eval));
     let (lo, hi) = match bracket {
         Ok(b) => b,
         Err(e) => return lp_failed("while bracketing eta_s", e),

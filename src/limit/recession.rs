@@ -1,4 +1,5 @@
-//! Weightless admissible directions of a discrete arch: where η_s is an infimum.
+//! Weightless admissible directions: where η_s is an infimum (a discrete arch:
+//! [`threshold`]; a continuous one: [`continuum_threshold`]).
 //!
 //! The admissible set P(η) = {x : g_i(η)·x + c_i(η) ≤ 0} of a discrete arch is unbounded
 //! exactly when its recession cone {d : g_i(η)·d ≤ 0 for every contact i} holds a d ≠ 0:
@@ -14,7 +15,9 @@
 //! common null direction, a root of det[g_a(η) g_b(η) g_c(η)] — a cubic, the gradients
 //! being affine in η (formulation §3). [`threshold`] brackets η_rec by the sign of the
 //! cone's margin (a small LP with |d_k| ≤ 1) and then finds that cubic's root in the
-//! bracket.
+//! bracket. On a continuous arch the weightless line of thrust is straight, and η_rec is
+//! where it touches the extrados or intrados at three contacts, an interior one tangent:
+//! Newton on that system from the unbounded Newton state's direction.
 
 use crate::arch::{Arch, JointLayout};
 use crate::contact::ContactKind;
@@ -260,4 +263,203 @@ fn verify(
             dot(&gi, &dir) <= 1e-10 * norm(&gi) * norm(&dir)
         })
         .then_some(dir)
+}
+
+/// The gradient row of `kind`'s activation function at (η, β): its β-derivatives of order
+/// 0, 1, 2 and, for each, its η-derivative (−∇N/2 for hinges, 0 for sliding). The weight
+/// enters only the constant terms, so these are the weightless rows of either weight model.
+fn weightless_rows(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    kind: ContactKind,
+    beta: f64,
+) -> [([f64; 3], [f64; 3]); 3] {
+    let a = actions(arch, eta, beta);
+    [0, 1, 2].map(|order| {
+        let g = a.activation(kind, order, eta, mu).g;
+        let d_eta = if kind.is_hinge() {
+            a.n[order].g.map(|v| -0.5 * v)
+        } else {
+            [0.0; 3]
+        };
+        (g, d_eta)
+    })
+}
+
+/// The local maxima over a continuous arch of every weightless activation function
+/// g(η, β)·d, with their normalised values g·d / (|g| |d|).
+fn weightless_peaks(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    d: &Reactions,
+    settings: &Settings,
+) -> Vec<(f64, crate::contact::Contact)> {
+    use crate::contact::Location;
+    let modes = ContactKind::active_at(mu);
+    let phi = |beta: f64, orders: usize| {
+        let mut out = [[0.0; 3]; 4];
+        for (k, &kind) in modes.iter().enumerate() {
+            let rows = weightless_rows(arch, eta, mu, kind, beta);
+            for (o, slot) in out[k].iter_mut().enumerate().take(orders) {
+                *slot = dot(&rows[o].0, d);
+            }
+        }
+        out
+    };
+    crate::scan::peaks_over(
+        (arch.beta_right(), Location::Springing),
+        (arch.beta_left(), Location::Springing),
+        modes,
+        settings.scan_points,
+        &phi,
+    )
+    .into_iter()
+    .map(|p| {
+        let g = weightless_rows(arch, eta, mu, p.contact.kind, p.contact.beta)[0].0;
+        (
+            p.value / (norm(&g) * norm(d)).max(f64::MIN_POSITIVE),
+            p.contact,
+        )
+    })
+    .collect()
+}
+
+/// Newton on the weightless system of three contacts of a continuous arch: g_i·d = 0 at
+/// each, g_i'·d = 0 (tangency) at each free one, and d·d₀ = 1; unknowns d, η and the free
+/// angles. `None` when it does not converge.
+fn weightless_newton(
+    arch: &Arch,
+    mu: f64,
+    contacts: &[crate::contact::Contact],
+    eta0: f64,
+    d0: &Reactions,
+) -> Option<(f64, Reactions)> {
+    use nalgebra::{DMatrix, DVector};
+    let free: Vec<usize> = (0..contacts.len()).filter(|&i| contacts[i].free).collect();
+    let n = 4 + free.len();
+    if contacts.len() + free.len() + 1 != n {
+        return None;
+    }
+    let mut z: Vec<f64> = vec![d0[0], d0[1], d0[2], eta0];
+    z.extend(free.iter().map(|&i| contacts[i].beta));
+    let dref = *d0;
+    let eval = |z: &[f64]| -> (Vec<f64>, DMatrix<f64>) {
+        let d = [z[0], z[1], z[2]];
+        let eta = z[3];
+        let mut f = Vec::with_capacity(n);
+        let mut jac = DMatrix::<f64>::zeros(n, n);
+        let mut row = 0;
+        let mut fr = 0;
+        for c in contacts {
+            let beta = if c.free { z[4 + fr] } else { c.beta };
+            let rows = weightless_rows(arch, eta, mu, c.kind, beta);
+            let orders: &[usize] = if c.free { &[0, 1] } else { &[0] };
+            for &o in orders {
+                f.push(dot(&rows[o].0, &d));
+                for k in 0..3 {
+                    jac[(row, k)] = rows[o].0[k];
+                }
+                jac[(row, 3)] = dot(&rows[o].1, &d);
+                if c.free {
+                    jac[(row, 4 + fr)] = dot(&rows[o + 1].0, &d);
+                }
+                row += 1;
+            }
+            if c.free {
+                fr += 1;
+            }
+        }
+        f.push(dot(&d, &dref) - 1.0);
+        for k in 0..3 {
+            jac[(row, k)] = dref[k];
+        }
+        (f, jac)
+    };
+    let size = |f: &[f64]| f.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let (mut f, mut jac) = eval(&z);
+    for _ in 0..60 {
+        let step = jac
+            .clone()
+            .lu()
+            .solve(&DVector::from_iterator(n, f.iter().map(|v| -v)))?;
+        let zn: Vec<f64> = z.iter().zip(step.iter()).map(|(a, b)| a + b).collect();
+        let (fnew, jnew) = eval(&zn);
+        let moved = step
+            .iter()
+            .zip(&zn)
+            .all(|(s, v)| s.abs() <= 4.0 * f64::EPSILON * (1.0 + v.abs()));
+        let decreased = size(&fnew) < size(&f);
+        if !decreased && !moved {
+            break;
+        }
+        z = zn;
+        f = fnew;
+        jac = jnew;
+        if moved {
+            break;
+        }
+    }
+    let eta = z[3];
+    (size(&f) <= 1e-13 && eta > 0.0 && eta.is_finite())
+        .then(|| ([z[0], z[1], z[2]], eta))
+        .map(|(d, e)| (e, d))
+}
+
+/// η_rec of a continuous arch near `eta0`, where its least states grow without bound along
+/// the direction of `x0`: the weightless activation functions at the direction's tightest
+/// local maxima (at most six), every three of them refined exactly by Newton (a straight
+/// line of thrust touching the intrados or extrados at those points, a free one tangent),
+/// and the least η whose direction every joint admits (each local maximum of g·d at most
+/// 1e-10 |g| |d|, by the continuum scan of the weightless functions). `None` when no
+/// triple verifies.
+pub fn continuum_threshold(
+    arch: &Arch,
+    mu: f64,
+    eta0: f64,
+    x0: &Reactions,
+    settings: &Settings,
+) -> Option<Recession> {
+    if !matches!(arch.layout(), JointLayout::Continuous) {
+        return None;
+    }
+    let scale = x0.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+    if !(scale > 0.0 && scale.is_finite()) {
+        return None;
+    }
+    let d0 = x0.map(|v| v / scale);
+    let mut tight: Vec<(f64, crate::contact::Contact)> =
+        weightless_peaks(arch, eta0, mu, &d0, settings)
+            .into_iter()
+            .filter(|(v, _)| *v >= -1e-6)
+            .collect();
+    tight.sort_by(|a, b| b.0.total_cmp(&a.0));
+    tight.truncate(6);
+    let mut best: Option<Recession> = None;
+    for a in 0..tight.len() {
+        for b in a + 1..tight.len() {
+            for c in b + 1..tight.len() {
+                let contacts = [tight[a].1, tight[b].1, tight[c].1];
+                let Some((eta, d)) = weightless_newton(arch, mu, &contacts, eta0, &d0) else {
+                    continue;
+                };
+                if best.is_some_and(|r| r.eta <= eta) {
+                    continue;
+                }
+                let admits = weightless_peaks(arch, eta, mu, &d, settings)
+                    .iter()
+                    .all(|(v, _)| *v <= 1e-10);
+                if admits {
+                    let s = d.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+                    best = Some(Recession {
+                        eta,
+                        d: d.map(|v| v / s),
+                        exact: true,
+                    });
+                }
+            }
+        }
+    }
+    best
 }

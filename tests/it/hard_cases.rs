@@ -198,3 +198,47 @@ fn nearly_the_largest_opening() {
     assert!(ls.eta > 1.9 && ls.eta < 2.0, "{}", ls.eta);
     assert_eq!(ls.mode, CollapseMode::Overturning);
 }
+
+/// A continuous arch whose least states grow without bound: a weightless straight line of
+/// thrust fits it, so η_s is an infimum, and Newton near it only approximates that η (its
+/// equations hold relative to reactions of 1e6 and more: the 11th digit moved with the
+/// LP's starting state). The line that needs the least thickness is the chord through the
+/// extrados at both springings, tangent to the intrados at mid-span (the annular sector is
+/// symmetric about its bisector): η = 2(1 − c)/(1 + c), c = cos(span/2), with friction
+/// enough for the chord's inclination to the joints (μ ≥ tan(span/2)). Independent of the
+/// solver's recession code; on random openings and orientations, at μ = ∞ and finite μ.
+#[test]
+fn continuous_infimum_is_the_chord_thickness() {
+    let mut rng = crate::search_reference::Rng(0x1f1_0b0d);
+    let mut infima = 0;
+    for _ in 0..60 {
+        let span = 1.3 + 0.9 * rng.next();
+        let br = -1.4 + (1.4 + 1.2 - span) * rng.next();
+        let arch = Arch::new(br, br + span, WeightModel::Centreline).unwrap();
+        let half = 0.5 * span;
+        let mu = if rng.next() < 0.5 {
+            f64::INFINITY
+        } else {
+            half.tan() * (1.01 + 2.0 * rng.next())
+        };
+        let Outcome::Limit(ls) = outcome(&arch, mu) else {
+            continue;
+        };
+        let unbounded = ls.x_static.iter().any(|v| v.abs() > 1e6 * (1.0 + span));
+        if !unbounded {
+            continue;
+        }
+        infima += 1;
+        let c = half.cos();
+        let chord = 2.0 * (1.0 - c) / (1.0 + c);
+        assert!(
+            (ls.eta_static - chord).abs() <= 1e-13 * chord,
+            "span {span}, beta_R {br}, mu {mu}: eta_s = {} against the chord's {chord}",
+            ls.eta_static
+        );
+    }
+    assert!(
+        infima >= 10,
+        "only {infima} of the random arches had an infimum"
+    );
+}
