@@ -5,6 +5,7 @@
 //! Forces are divided by γ t d r and moments by γ t d r²; N is positive in compression.
 
 use crate::arch::{Arch, Radians};
+use crate::contact::Contact;
 use crate::contact::ContactKind;
 
 /// The redundant reactions x = (h, v, w) at the right springing.
@@ -205,4 +206,36 @@ pub fn magnitude(mode: ContactKind, eta: f64, mu: f64, x: &Reactions, floor: f64
     let base = 1.0 + x.iter().map(|v| v.abs()).sum::<f64>();
     let factor = if mode.is_hinge() { eta } else { mu.min(1.0) };
     base * factor.max(floor)
+}
+
+/// The relative rounding error to expect in η refined on the hinge contacts of `contacts` at
+/// the state (η, x), in double precision: at a hinge η is where M = ±ηN/2, and M is a sum of
+/// terms much larger than ηN/2 on a shallow segment (sin β − sin β_R of two sines near 1,
+/// times h), so their rounding fixes η only to about u Σ|terms of M| / (η N / 2) (u the unit
+/// roundoff). The largest over the hinges; 0 when no hinge carries compression. A
+/// first-order bound of the evaluation's error, not of Newton's: tables print η to the
+/// digits it leaves.
+pub fn eta_rounding(arch: &Arch, eta: f64, x: &Reactions, contacts: &[Contact]) -> f64 {
+    let u = 0.5 * f64::EPSILON;
+    let (sr, cr) = arch.right_sin_cos();
+    let rho = arch.weight().rho(eta);
+    let [h, v, w] = x.map(f64::abs);
+    contacts
+        .iter()
+        .filter(|c| c.kind.is_hinge())
+        .map(|c| {
+            let (s, co) = c.beta.sin_cos();
+            let d = (c.beta - arch.beta_right()).abs();
+            let n = x[0] * s + x[1] * co - (c.beta - arch.beta_right()) * co;
+            let terms_m =
+                (h + rho) * (s.abs() + sr.abs()) + v * (co.abs() + cr.abs()) + w + d * co.abs();
+            let terms_n = h * s.abs() + v * co.abs() + d * co.abs();
+            let err = u * (terms_m + 0.5 * eta * terms_n);
+            if n > 0.0 && eta > 0.0 {
+                err / (0.5 * n * eta)
+            } else {
+                0.0
+            }
+        })
+        .fold(0.0, f64::max)
 }

@@ -171,6 +171,7 @@ fn verify_group(
                     settings.same_joint,
                 );
                 out.limit = Some(LimitState {
+                    eta_rounding: crate::statics::eta_rounding(arch, r.eta, &r.x, &pattern),
                     mu,
                     eta: r.eta,
                     eta_static: r.eta,

@@ -497,6 +497,12 @@ fn solve_inner(
         Some(mut ls) if ls.eta >= st.eta * (1.0 - settings.same_root) => {
             ls.eta_static = st.eta;
             ls.x_static = st.x;
+            ls.eta_rounding = ls.eta_rounding.max(crate::statics::eta_rounding(
+                arch,
+                st.eta,
+                &st.x,
+                &st.contacts,
+            ));
             Outcome::Limit(ls)
         }
         _ => Outcome::Unresolved {

@@ -32,6 +32,10 @@ pub struct LimitState {
     pub newton_residual: f64,
     /// Greatest φ over the whole arch relative to its magnitude (≤ `adm_tol`).
     pub max_phi: f64,
+    /// The relative rounding error to expect in `eta` and `eta_static` from evaluating the
+    /// hinge conditions in double precision ([`crate::statics::eta_rounding`]): about
+    /// 1e-15 on ordinary arches, 1e-6 on a segment of 2° (η ~ 2e-9).
+    pub eta_rounding: f64,
     /// The bracket [η_lo, η_hi] found before refinement: at η_hi a state was verified
     /// admissible over the whole arch; η_lo was judged infeasible by the LP (to
     /// HiGHS's tolerance, so for very shallow arches η* may lie slightly below it).

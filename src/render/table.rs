@@ -24,6 +24,17 @@ pub fn sig(v: f64, digits: usize) -> String {
     }
 }
 
+/// The significant digits of η that its rounding leaves ([`LimitState::eta_rounding`]): at
+/// most 12, at least 3.
+fn eta_digits(ls: &LimitState) -> usize {
+    let r = ls.eta_rounding;
+    if r > 0.0 && r.is_finite() {
+        ((-r.log10()).floor() as i64).clamp(3, 12) as usize
+    } else {
+        12
+    }
+}
+
 /// Formats μ (∞ for infinite friction).
 pub fn fmt_mu(mu: f64) -> String {
     if mu.is_infinite() {
@@ -128,8 +139,16 @@ pub fn solve(survey: &Survey, explain: bool) -> String {
             let _ = writeln!(
                 s,
                 "least thickness     eta_s = t/r = {}",
-                sig(ls.eta_static, 12)
+                sig(ls.eta_static, eta_digits(ls))
             );
+            if eta_digits(ls) < 12 {
+                let _ = writeln!(
+                    s,
+                    "note                eta to {} significant digits: the terms of M cancel to eta N/2 at\n                    this opening, and their double-precision rounding moves eta by ~{:.0e} (relative)",
+                    eta_digits(ls),
+                    ls.eta_rounding
+                );
+            }
             if states.as_ref().is_ok_and(|st| !st.attained) {
                 let _ = writeln!(
                     s,
@@ -298,7 +317,7 @@ fn limit_states(survey: &Survey) -> String {
         let _ = writeln!(
             s,
             "  eta = {}  {}  (at eta_s)",
-            sig(ls.eta, 12),
+            sig(ls.eta, eta_digits(ls)),
             ls.mode.name()
         );
     }
@@ -676,7 +695,7 @@ pub fn assess(arch: &Arch, a: &crate::assess::Assessment, dims: Option<Dimension
             let _ = writeln!(
                 s,
                 "least thickness     eta*(mu) = {}  ({})",
-                sig(ls.eta, 12),
+                sig(ls.eta, eta_digits(ls)),
                 ls.mode.name()
             );
         }

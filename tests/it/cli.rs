@@ -364,3 +364,46 @@ fn modes_threads_do_not_change_the_answer() {
         "{text}"
     );
 }
+
+/// η printed by `solve` is right to its last printed digit where the hinge conditions
+/// lose digits to cancellation: the printed value against η of the same five-hinge
+/// pattern solved in 60-digit arithmetic (mpmath findroot on M = ±ηN/2 at the springing,
+/// the crown and a tangent intrados hinge, v = span/2 by symmetry), and the digits
+/// printed no more than the rounding leaves.
+#[test]
+fn printed_eta_digits_are_right_on_shallow_segments() {
+    // (alpha in degrees, eta from 60-digit arithmetic, digits printed at most)
+    for (alpha_deg, reference, at_most) in [
+        ("-89", 1.933_103_042_088_463e-9_f64, 7),
+        ("-68.75493541569878", 3.885_614_604_439_682e-4, 12),
+    ] {
+        let out = arch_enum()
+            .args(["solve", "--alpha-deg", alpha_deg, "--mu", "inf"])
+            .output()
+            .unwrap();
+        let text = String::from_utf8_lossy(&out.stdout);
+        let printed = text
+            .lines()
+            .find_map(|l| l.strip_prefix("least thickness     eta_s = t/r = "))
+            .unwrap_or_else(|| panic!("{text}"))
+            .trim();
+        let mantissa = printed.split('e').next().unwrap();
+        let digits = mantissa.chars().filter(|c| c.is_ascii_digit()).count()
+            - mantissa
+                .chars()
+                .take_while(|&c| c == '0' || c == '.')
+                .filter(|c| c.is_ascii_digit())
+                .count();
+        let value: f64 = printed.parse().unwrap();
+        // half a unit in the last printed digit
+        let ulp = 10f64.powi(reference.abs().log10().floor() as i32 - digits as i32 + 1);
+        assert!(
+            (value - reference).abs() <= 0.5 * ulp * (1.0 + 1e-9),
+            "alpha {alpha_deg}: printed {printed} ({digits} digits), reference {reference:e}"
+        );
+        assert!(
+            digits <= at_most,
+            "alpha {alpha_deg}: {digits} digits printed: {printed}"
+        );
+    }
+}
