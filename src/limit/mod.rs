@@ -304,7 +304,7 @@ fn predicted(
         x: hi.2.x,
     };
     let cand = candidates_at(&top, Some(hi.2.margin.max(0.0)), modes, settings);
-    let sizes: Vec<usize> = (2..=5).collect();
+    let sizes: Vec<usize> = Vec::new(); // the whole candidate set only: one Newton solve
     let stop_at = hi.0 * (1.0 + settings.root_slack);
     let mut scratch = Vec::new();
     let found = enumerate(
