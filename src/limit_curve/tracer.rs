@@ -151,13 +151,17 @@ impl<'a> Tracer<'a> {
             let n = 400;
             let d1 = |beta: f64| st.phi(c.kind, beta)[1];
             let grid: Vec<f64> = (0..=n).map(|i| a + (b - a) * i as f64 / n as f64).collect();
-            for w in grid.windows(2) {
+            let slopes: Vec<f64> = grid.iter().map(|&beta| d1(beta)).collect();
+            for (w, s) in grid.windows(2).zip(slopes.windows(2)) {
                 let (mut l, mut r) = (w[0], w[1]);
-                if !(d1(l) > 0.0 && d1(r) <= 0.0) {
+                if !(s[0] > 0.0 && s[1] <= 0.0) {
                     continue;
                 }
                 for _ in 0..60 {
                     let m = 0.5 * (l + r);
+                    if m <= l || m >= r {
+                        break; // adjacent floats: further halvings change nothing
+                    }
                     if d1(m) > 0.0 {
                         l = m;
                     } else {
