@@ -127,8 +127,7 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Strin
     let ridge_may_apply = mu.is_finite()
         && settings.limit_state_search == LimitStateSearch::Ridge
         && matches!(arch.weight(), crate::arch::WeightModel::Centreline);
-    let interior =
-        (mu.is_infinite() || ridge_may_apply) && interior_above(arch, mu, eta_s, settings);
+    let interior = (mu.is_infinite() || ridge_may_apply) && interior_above(sol, eta_s, settings);
     if interior && mu.is_infinite() {
         return Ok(hinges_only(arch, eta_s, &x_s, mechanism_at_eta_s, settings));
     }
@@ -217,10 +216,18 @@ fn from_vanishing_thickness(
 
 /// Whether P(η) has an interior point at η_s(1 + `root_slack`), the resolution at which η_s
 /// itself is decided: a positive continuum margin of the margin LP (verified by the scan at
-/// its state). P(η) grows with η, so it then has one at every larger η.
-fn interior_above(arch: &Arch, mu: f64, eta_s: f64, settings: &Settings) -> bool {
+/// its state). P(η) grows with η, so it then has one at every larger η. The LP's working
+/// set starts with the joints of the solution's limit state (where the least states are
+/// tight), so that it needs few rounds of constraint generation.
+fn interior_above(sol: &Solution, eta_s: f64, settings: &Settings) -> bool {
+    let (arch, mu) = (&sol.arch, sol.mu);
     let eta1 = eta_s * (1.0 + settings.root_slack);
     let mut ws = WorkingSet::initial(arch);
+    if let Outcome::Limit(ls) = &sol.outcome {
+        for c in &ls.pattern {
+            ws.add(c.beta, settings.working_set_gap);
+        }
+    }
     margin_at(
         arch,
         eta1,
