@@ -298,7 +298,8 @@ impl Arch {
         if !(t >= 0.0 && t <= (n - 1) as f64) {
             return None;
         }
-        let i = t.round() as usize;
+        // the nearest index (t ≥ 0: truncation of t + ½; no call to round)
+        let i = ((t + 0.5) as usize).min(n - 1);
         (grid_angle(a, b, n, i) == beta).then(|| trig[i])
     }
     /// (sin β_R, cos β_R) of the right springing, computed once with the arch.

@@ -232,12 +232,19 @@ pub fn kinematic_on_bases(
     objective: &[f64],
     tol: f64,
 ) -> Result<Vec<f64>, LpOutcome> {
+    kinematic_best(&kinematic_vertices(columns, power, tol), objective)
+}
+
+/// Every basic feasible solution of the kinematic LP's equality rows (the rates λ, in the
+/// order the bases are enumerated): the vertices among which [`kinematic_best`] picks, the
+/// same for every objective.
+pub fn kinematic_vertices(columns: &[[f64; 3]], power: &[f64], tol: f64) -> Vec<Vec<f64>> {
     use itertools::Itertools;
     use nalgebra::{Matrix5, Vector5};
     let n = columns.len();
     let col = |j: usize| kinematic_column(columns, power, j);
     let rhs = Vector5::new(0.0, 0.0, 0.0, 0.0, 1.0);
-    let mut best: Option<(f64, Vec<f64>)> = None;
+    let mut out = Vec::new();
     for basis in (0..=n).combinations(5) {
         let m = Matrix5::from_fn(|r, c| col(basis[c])[r]);
         let lu = m.lu();
@@ -254,12 +261,22 @@ pub fn kinematic_on_bases(
                 lambda[j] = x[k].max(0.0);
             }
         }
+        out.push(lambda);
+    }
+    out
+}
+
+/// The vertex of [`kinematic_vertices`] that maximises `objective · λ` (the first of
+/// equal ones, to `IMPROVE_TOL`); `Infeasible` when there is none.
+pub fn kinematic_best(vertices: &[Vec<f64>], objective: &[f64]) -> Result<Vec<f64>, LpOutcome> {
+    let mut best: Option<(f64, &Vec<f64>)> = None;
+    for lambda in vertices {
         let value: f64 = lambda.iter().zip(objective).map(|(l, o)| l * o).sum();
         if best.as_ref().is_none_or(|b| value > b.0 + IMPROVE_TOL) {
             best = Some((value, lambda));
         }
     }
-    best.map(|b| b.1).ok_or(LpOutcome::Infeasible)
+    best.map(|b| b.1.clone()).ok_or(LpOutcome::Infeasible)
 }
 
 /// Rows 0..[`MULTIPLIER_ROWS`] of the dense multiplier LP are its own: λ ≥ 0, the box

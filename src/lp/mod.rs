@@ -54,33 +54,34 @@ pub fn kinematic(
 }
 
 /// The kinematic LP of one pattern ([`kinematic`]) for several objectives: which back end
-/// solves it (the dense enumeration applies or not) is decided once.
+/// solves it is decided once, and the dense path's vertices (the basic feasible solutions,
+/// independent of the objective) are enumerated once.
 pub struct Kinematic<'a> {
     columns: &'a [[f64; 3]],
     power: &'a [f64],
     settings: &'a Settings,
-    dense: bool,
+    /// The dense path's vertices; `None`: HiGHS solves it.
+    vertices: Option<Vec<Vec<f64>>>,
 }
 
 impl<'a> Kinematic<'a> {
     /// The LP of these compatibility columns and powers.
     pub fn new(columns: &'a [[f64; 3]], power: &'a [f64], settings: &'a Settings) -> Self {
+        let dense =
+            settings.lp_backend == LpBackend::Dense && dense::kinematic_applies(columns, power);
         Kinematic {
             columns,
             power,
             settings,
-            dense: settings.lp_backend == LpBackend::Dense
-                && dense::kinematic_applies(columns, power),
+            vertices: dense.then(|| dense::kinematic_vertices(columns, power, settings.rate_tol)),
         }
     }
 
     /// Maximises `objective · λ` (see [`kinematic`]).
     pub fn solve(&self, objective: &[f64]) -> Result<Vec<f64>, LpOutcome> {
-        let (c, p, s) = (self.columns, self.power, self.settings);
-        if self.dense {
-            dense::kinematic_on_bases(c, p, objective, s.rate_tol)
-        } else {
-            highs::kinematic(c, p, objective, s.lp_tol)
+        match &self.vertices {
+            Some(v) => dense::kinematic_best(v, objective),
+            None => highs::kinematic(self.columns, self.power, objective, self.settings.lp_tol),
         }
     }
 }
