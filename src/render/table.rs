@@ -388,7 +388,7 @@ pub fn curve(arch: &Arch, mu_ms: Option<f64>, points: &[CurvePoint]) -> String {
                     "{:>16}  {:>10.5}  {:>16}  {:<28} {}",
                     fmt_mu(p.mu),
                     phi,
-                    sig(ls.eta, 12),
+                    sig(ls.eta, eta_digits(ls)),
                     ls.mode.name(),
                     joints.join(" ")
                 );

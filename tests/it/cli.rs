@@ -406,4 +406,34 @@ fn printed_eta_digits_are_right_on_shallow_segments() {
             "alpha {alpha_deg}: {digits} digits printed: {printed}"
         );
     }
+    // the curve table prints each sample's eta the same way
+    let out = arch_enum()
+        .args([
+            "curve",
+            "--alpha-deg",
+            "-89",
+            "--mu-min",
+            "1",
+            "--mu-max",
+            "2",
+            "--points",
+            "2",
+        ])
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    let etas: Vec<&str> = text
+        .lines()
+        .filter(|l| l.contains("purely_rotational"))
+        .filter_map(|l| l.split_whitespace().nth(2))
+        .collect();
+    assert_eq!(etas.len(), 2, "{text}");
+    for e in etas {
+        let v: f64 = e.parse().unwrap();
+        assert!(e.len() <= "1.933103e-9".len(), "curve prints {e}");
+        assert!(
+            (v - 1.933_103_042_088_463e-9).abs() <= 0.5e-14,
+            "curve prints {e}"
+        );
+    }
 }
