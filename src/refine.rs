@@ -423,7 +423,7 @@ fn newton(
             }
         }
         let rhs = DVector::from_iterator(n_eq, f.iter().map(|v| -v));
-        let Some(step) = lu_step(&jac, &rhs).or_else(|| {
+        let Some(step) = fast_step(&jac, &rhs).or_else(|| {
             let svd = jac.svd(true, true);
             let smax = svd.singular_values.max();
             svd.solve(&rhs, smax * settings.svd_cutoff).ok()
@@ -476,7 +476,7 @@ const LU_PIVOT_RATIO: f64 = 1e-8;
 /// over-determined one by [`qr_step`]); `None` when the system has fewer equations than
 /// unknowns or its pivots fall below [`LU_PIVOT_RATIO`] (the SVD's minimum-norm step then
 /// decides).
-fn lu_step(jac: &DMatrix<f64>, rhs: &DVector<f64>) -> Option<DVector<f64>> {
+fn fast_step(jac: &DMatrix<f64>, rhs: &DVector<f64>) -> Option<DVector<f64>> {
     if jac.nrows() > jac.ncols() && jac.ncols() > 0 {
         return qr_step(jac, rhs);
     }

@@ -226,7 +226,7 @@ pub fn eta_rounding(arch: &Arch, eta: f64, x: &Reactions, contacts: &[Contact]) 
         .map(|c| {
             let (s, co) = c.beta.sin_cos();
             let d = (c.beta - arch.beta_right()).abs();
-            let n = x[0] * s + x[1] * co - (c.beta - arch.beta_right()) * co;
+            let (n, _, _) = internal_forces(arch, eta, x, c.beta);
             let terms_m =
                 (h + rho) * (s.abs() + sr.abs()) + v * (co.abs() + cr.abs()) + w + d * co.abs();
             let terms_n = h * s.abs() + v * co.abs() + d * co.abs();

@@ -23,6 +23,7 @@ use crate::admissibility::{Margin, WorkingSet};
 use crate::arch::{check_mu, Arch, InputError, JointLayout};
 use crate::contact::ContactKind;
 use crate::lp::{self, LpOutcome};
+use crate::refine::solve_pattern;
 use crate::search::{bracket_near, bracket_root, candidates_at, margin_at, Bracket, RootGuess};
 use crate::settings::Settings;
 use crate::state::State;
@@ -289,9 +290,9 @@ const PREDICT_AT: [f64; 2] = [1e-1, 1e-3];
 /// relative η).
 const PREDICT_STEP: f64 = 0.05;
 
-/// A narrowed bracket of η_s from a prediction: the candidates at the upper end of a coarse
-/// bracket enumerated (as the solve does at the end) give the least admissible refined
-/// state, η_p; the margin at η_p (1 ∓ [`PREDICT_STEP`] `bracket_rel`) then brackets η_s
+/// A narrowed bracket of η_s from a prediction: Newton on the candidates at the upper end of
+/// a coarse bracket (the whole set, as the solve's enumeration starts) gives an admissible
+/// refined state, η_p; the margin at η_p (1 ∓ [`PREDICT_STEP`] `bracket_rel`) then brackets η_s
 /// to a tenth of `bracket_rel` when the prediction is right. Each margin evaluated narrows the bracket
 /// whatever its sign (the margin is increasing in η), so a wrong prediction costs two LPs
 /// and the bracketing goes on from there.
@@ -310,24 +311,21 @@ fn predicted(
         x: hi.2.x,
     };
     let cand = candidates_at(&top, Some(hi.2.margin.max(0.0)), modes, settings);
-    let sizes: Vec<usize> = Vec::new(); // the whole candidate set only: one Newton solve
-    let stop_at = hi.0 * (1.0 + settings.root_slack);
-    let mut scratch = Vec::new();
-    let found = enumerate(
-        arch,
-        mu,
-        &cand,
-        &sizes,
-        hi.2.x,
-        hi.0,
-        (lo.0, hi.0),
-        stop_at,
-        settings,
-        &mut scratch,
-    );
-    let Some(eta_p) = found.least_static.map(|r| r.eta) else {
+    // Newton on the whole candidate set, and its state admissible over the arch (the least
+    // admissible state the enumeration's first group would give; no mechanism needed here)
+    let Ok(r) = solve_pattern(&top, &cand, settings) else {
         return Ok((lo, hi));
     };
+    let refined = State {
+        arch,
+        eta: r.eta,
+        mu,
+        x: r.x,
+    };
+    if refined.admissible_verdict(modes, settings).is_err() {
+        return Ok((lo, hi));
+    }
+    let eta_p = r.eta;
     let k = PREDICT_STEP * settings.bracket_rel;
     for t in [eta_p * (1.0 + k), eta_p * (1.0 - k)] {
         if !(t > lo.0 && t < hi.0) {

@@ -402,9 +402,7 @@ fn weightless_newton(
         }
     }
     let eta = z[3];
-    (size(&f) <= 1e-13 && eta > 0.0 && eta.is_finite())
-        .then(|| ([z[0], z[1], z[2]], eta))
-        .map(|(d, e)| (e, d))
+    (size(&f) <= 1e-13 && eta > 0.0 && eta.is_finite()).then_some((eta, [z[0], z[1], z[2]]))
 }
 
 /// η_rec of a continuous arch near `eta0`, where its least states grow without bound along

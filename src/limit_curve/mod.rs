@@ -31,7 +31,8 @@ mod tracer;
 mod transition;
 
 use crate::search::RootGuess;
-pub use sample::{available_threads, mu_grid, sample, CurvePoint};
+pub use crate::threads::available as available_threads;
+pub use sample::{mu_grid, sample, CurvePoint};
 use tracer::{Sample, Tracer};
 
 /// A branch of the limit curve: an interval of μ with one active pattern.

@@ -76,9 +76,3 @@ pub fn sample(
     .into_iter()
     .collect()
 }
-
-/// The number of threads the machine offers (at least 1): the default thread count of the
-/// commands that sample independent points.
-pub fn available_threads() -> usize {
-    crate::threads::available()
-}

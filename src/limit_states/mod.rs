@@ -18,7 +18,6 @@ pub mod sweep;
 
 use crate::admissibility::WorkingSet;
 use crate::arch::{Arch, InputError, JointLayout};
-use crate::collapse_mode::classify;
 use crate::contact::{Contact, ContactKind, Location};
 use crate::limit::{bounded, solve, Outcome, Solution};
 use crate::mechanism;
@@ -435,18 +434,11 @@ fn refine(
         return None;
     }
     let mech = mechanism::find(&st, &v.active, settings).ok()??;
-    let mode = classify(
-        &v.active,
-        0.5 * (arch.beta_right() + arch.beta_left()),
-        settings.same_joint,
-    );
-    Some(SweptState {
-        eta: r.eta,
-        x: r.x,
-        sides: vec![crate::load::Side::After; v.active.len()],
-        pattern: v.active,
-        mode,
-        mechanism: mech,
-        live_power: 0.0,
-    })
+    Some(SweptState::unloaded(
+        arch,
+        (r.eta, r.x),
+        v.active,
+        mech,
+        settings,
+    ))
 }

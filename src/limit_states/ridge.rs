@@ -22,10 +22,8 @@
 //! reach the end of its edge, a kinematic LP the back end does not decide.
 
 use crate::arch::{Arch, JointLayout, WeightModel, ETA_TOP};
-use crate::collapse_mode::classify;
-use crate::contact::{Contact, ContactKind};
+use crate::contact::ContactKind;
 use crate::kinematics::column;
-use crate::load::Side;
 use crate::mechanism;
 use crate::settings::Settings;
 use crate::state::State;
@@ -708,22 +706,5 @@ fn check(
             c.eta
         )
     })?;
-    let Some(mech) = mech else {
-        return Ok(None);
-    };
-    let pattern: Vec<Contact> = v.active;
-    let mode = classify(
-        &pattern,
-        0.5 * (arch.beta_right() + arch.beta_left()),
-        settings.same_joint,
-    );
-    Ok(Some(SweptState {
-        eta: c.eta,
-        x: c.x,
-        sides: vec![Side::After; pattern.len()],
-        pattern,
-        mode,
-        mechanism: mech,
-        live_power: 0.0,
-    }))
+    Ok(mech.map(|m| SweptState::unloaded(arch, (c.eta, c.x), v.active, m, settings)))
 }

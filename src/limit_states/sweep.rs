@@ -242,6 +242,33 @@ pub struct SweptState {
     pub live_power: f64,
 }
 
+impl SweptState {
+    /// A limit state of the thickness problem (no live load) at the state (`arch`, η, x):
+    /// its active contacts, the mode they are named, and a mechanism on them.
+    pub(crate) fn unloaded(
+        arch: &Arch,
+        (eta, x): (f64, Reactions),
+        pattern: Vec<Contact>,
+        mechanism: Mechanism,
+        settings: &Settings,
+    ) -> SweptState {
+        let mode = classify(
+            &pattern,
+            0.5 * (arch.beta_right() + arch.beta_left()),
+            settings.same_joint,
+        );
+        SweptState {
+            eta,
+            x,
+            sides: vec![Side::After; pattern.len()],
+            pattern,
+            mode,
+            mechanism,
+            live_power: 0.0,
+        }
+    }
+}
+
 /// What the sweep's parameter t is.
 #[derive(Debug, Clone, Copy)]
 enum Param<'a> {

@@ -191,18 +191,9 @@ fn dual_simplex(
 
 /// The kinematic LP of [`super::highs::kinematic`] (maximise `objective · λ` subject to
 /// Σ λ_j c_j = 0, `power · λ ≥ 0`, Σ λ = 1, λ ≥ 0) for small patterns, by enumerating the
-/// basic solutions of its five equality rows (power with a slack). Returns `None` when
-/// the enumeration does not apply ([`kinematic_applies`]: the caller then uses HiGHS);
-/// `Some(Err(Infeasible))` when no rates exist.
-pub fn kinematic(
-    columns: &[[f64; 3]],
-    power: &[f64],
-    objective: &[f64],
-    tol: f64,
-) -> Option<Result<Vec<f64>, LpOutcome>> {
-    kinematic_applies(columns, power).then(|| kinematic_on_bases(columns, power, objective, tol))
-}
-
+/// basic solutions of its five equality rows (power with a slack): where
+/// [`kinematic_applies`], [`kinematic_vertices`] once per pattern, then [`kinematic_best`]
+/// for each objective (`Infeasible` when there is no vertex). Elsewhere HiGHS solves it.
 /// The equality rows of the kinematic LP with the power slack: λ_j → (c_j, p_j, 1), the
 /// slack → (0, 0, 0, −1, 0).
 fn kinematic_column(columns: &[[f64; 3]], power: &[f64], j: usize) -> [f64; 5] {
@@ -213,7 +204,7 @@ fn kinematic_column(columns: &[[f64; 3]], power: &[f64], j: usize) -> [f64; 5] {
     }
 }
 
-/// Whether [`kinematic`] enumerates bases for these rates: 1 to 12 of them, and equality
+/// Whether the enumeration of bases applies to these rates: 1 to 12 of them, and equality
 /// rows of full rank (independent of the objective: decided once for several solves).
 pub fn kinematic_applies(columns: &[[f64; 3]], power: &[f64]) -> bool {
     use nalgebra::DMatrix;
@@ -223,16 +214,6 @@ pub fn kinematic_applies(columns: &[[f64; 3]], power: &[f64]) -> bool {
     }
     let full = DMatrix::from_fn(5, n + 1, |r, c| kinematic_column(columns, power, c)[r]);
     full.rank(1e2 * BASIS_TOL) >= 5
-}
-
-/// [`kinematic`] where [`kinematic_applies`] holds.
-pub fn kinematic_on_bases(
-    columns: &[[f64; 3]],
-    power: &[f64],
-    objective: &[f64],
-    tol: f64,
-) -> Result<Vec<f64>, LpOutcome> {
-    kinematic_best(&kinematic_vertices(columns, power, tol), objective)
 }
 
 /// Every basic feasible solution of the kinematic LP's equality rows (the rates λ, in the

@@ -1,0 +1,43 @@
+//! A loop of one library call, for profilers: `perf record` shares and callgrind
+//! instruction counts (stable where wall times on a shared machine are not). The speed
+//! notes compare builds by `(I(2n) − I(n)) / n`, the instructions of one call without
+//! start-up:
+//!
+//! `valgrind --tool=callgrind --callgrind-out-file=/dev/null target/release/examples/profile_loop solve 0 0.35 20`
+//! (and again with 40), then the difference of the two "Collected" counts over 20.
+//!
+//! Usage: `profile_loop solve|modes ALPHA MU N [BLOCKS]`: N times `survey` (solve with the
+//! limit-state search) at friction MU (`inf` allowed), or `trace` (modes, one thread), of
+//! the symmetric arch of opening ALPHA (radians, centreline weight), continuous or of
+//! BLOCKS equal voussoirs. Prints the mean time per call on standard error.
+
+use arch_enum::limit_curve::trace;
+use arch_enum::limit_states::survey;
+use arch_enum::{Arch, Settings, WeightModel};
+
+fn main() {
+    let a: Vec<String> = std::env::args().collect();
+    let usage = "usage: profile_loop solve|modes ALPHA MU N [BLOCKS]";
+    let arg = |i: usize| a.get(i).expect(usage).as_str();
+    let what = arg(1);
+    let alpha: f64 = arg(2).parse().expect(usage);
+    let mu: f64 = arg(3).parse().expect(usage);
+    let n: u32 = arg(4).parse().expect(usage);
+    let blocks: usize = a.get(5).map_or(0, |b| b.parse().expect(usage));
+    let s = Settings::default();
+    let arch = Arch::symmetric(alpha, WeightModel::Centreline).expect("an opening");
+    let arch = if blocks > 0 {
+        arch.with_blocks(blocks).expect("a voussoir count")
+    } else {
+        arch
+    };
+    let t = std::time::Instant::now();
+    for _ in 0..n {
+        match what {
+            "solve" => drop(survey(&arch, mu, &s).expect("valid input")),
+            "modes" => drop(trace(&arch, &s)),
+            _ => panic!("{usage}"),
+        }
+    }
+    eprintln!("{:?} per call", t.elapsed() / n.max(1));
+}
