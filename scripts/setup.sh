@@ -3,6 +3,12 @@
 # `highs` feature) is compiled from source and needs cmake, and highs-sys runs bindgen,
 # which needs libclang.
 set -euo pipefail
+# A Rust toolchain is the one thing this script cannot install (no downloads but the package
+# registries): say so plainly instead of failing deep in a build.
+if ! command -v cargo >/dev/null 2>&1; then
+  echo "setup: no Rust toolchain: install Rust >= $(sed -n 's/^rust-version = "\(.*\)"/\1/p' "$(dirname "$0")/../Cargo.toml") (cargo, with the rustfmt and clippy components)" >&2
+  exit 1
+fi
 need=()
 command -v cmake >/dev/null 2>&1 || need+=(cmake)
 dpkg -s libclang-dev >/dev/null 2>&1 || need+=(libclang-dev)

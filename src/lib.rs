@@ -43,6 +43,7 @@
 //! assert!((ls.eta - 0.1074).abs() < 1e-4);
 //! ```
 #![deny(missing_docs)]
+#![forbid(unsafe_code)]
 
 pub mod admissibility;
 pub mod arch;

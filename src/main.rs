@@ -1,5 +1,7 @@
 //! The `arch-enum` binary: a thin shell over [`arch_enum::cli::run`].
 
+#![forbid(unsafe_code)]
+
 fn main() {
     let code = arch_enum::cli::run(
         std::env::args_os(),

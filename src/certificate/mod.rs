@@ -3,7 +3,7 @@
 //! solver).
 //!
 //! # Format (version 1)
-//! A JSON object (the serde types of [`format`] are the schema; `null` stands for +∞
+//! A JSON object (the serde types of [`format`](mod@format) are the schema; `null` stands for +∞
 //! where noted). Closed sets are enums and anything else is rejected **when read**, with
 //! an error naming the field, the unknown value and the expected ones:
 //! `kind` ∈ {`hinge_extrados`, `hinge_intrados`, `slide_plus`, `slide_minus`},

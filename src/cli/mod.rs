@@ -2,7 +2,7 @@
 //! and the single place where what happened becomes an exit code ([`Exit::code`]):
 //! 0 answered, 1 the question has no answer for these inputs, 2 bad input.
 //!
-//! One file per command, holding its arguments and its run function; [`arch_args`] holds
+//! One file per command, holding its arguments and its run function; `arch_args` holds
 //! the description of the arch that every command shares.
 
 mod arch_args;

@@ -106,7 +106,7 @@ fn cone_margin(
 /// η_rec in [lo, hi]: the least η with a weightless admissible direction, when the cone
 /// has no interior at `lo` and has one at `hi` (`None` otherwise, or for a continuous
 /// arch). Bisection on the sign of [`margin`] to 1e-13 (relative), then the exact root of
-/// det[g_a g_b g_c](η) for the contacts tight at the bracket's direction, verified.
+/// det\[g_a g_b g_c\](η) for the contacts tight at the bracket's direction, verified.
 pub fn threshold(arch: &Arch, mu: f64, lo: f64, hi: f64, settings: &Settings) -> Option<Recession> {
     let grads = gradients(arch, mu)?;
     let positive = |eta: f64| cone_margin(&grads, eta, settings).map(|(s, d)| (s > MARGIN_TOL, d));

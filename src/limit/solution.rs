@@ -89,7 +89,7 @@ pub struct Candidate {
     pub verdict: String,
 }
 
-/// The answer of [`solve`]: the outcome and the enumeration log.
+/// The answer of [`solve`](crate::limit::solve): the outcome and the enumeration log.
 #[derive(Debug, Clone)]
 pub struct Solution {
     /// The arch solved.

@@ -104,7 +104,7 @@ const GUESS_WIDENINGS: usize = 3;
 /// A bracket of the root of an increasing f found from a guess: f at g(1 + r) and
 /// g(1 − r), the step widened eightfold on a side whose end does not straddle the root
 /// (each evaluation still narrows the bracket, since f is increasing), at most
-/// [`GUESS_WIDENINGS`] times, within (0, `top`]. `Ok(None)` when no bracket was found so
+/// `GUESS_WIDENINGS` times, within (0, `top`]. `Ok(None)` when no bracket was found so
 /// (the caller brackets from its own ends); an evaluation's error is returned as is.
 pub fn bracket_near<T: Clone>(
     guess: RootGuess,
