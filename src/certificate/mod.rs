@@ -51,7 +51,7 @@
 //! The [`Report`] names the arch, μ and the bracket. With a `search` section the least
 //! thickness is η_s (the bracket is around the least admissible state, which need not
 //! carry a mechanism) and [`verify()`] also re-checks the limit-state list
-//! (`verify_search.rs`): it *proves* that each state listed without a mechanism has none
+//! (`verify/search.rs`): it *proves* that each state listed without a mechanism has none
 //! (Farkas alternative of the kinematic LP, interval arithmetic) and, at μ = ∞, that the
 //! safe state lies strictly inside P(η_hi) (so no limit state lies above); it *checks* the
 //! listed limit states and active sets in floating point, and does not re-prove the
@@ -78,21 +78,20 @@
 //! g, the gap is widened tenfold (up to 1e-4) and the best certificate is returned;
 //! [`Certificate::delivers_gap`] says whether the request was met (the command line then
 //! reports `gap_not_reached` and exits 1).
+//!
+//! # Layout
+//! [`format`](mod@format) and [`interval`] are the vocabulary. [`verify`](mod@verify)
+//! imports only them (and the vocabulary of arch, contacts and load that the format
+//! re-exports), never the
+//! solver; [`certify`](mod@certify) imports the solver and the verifier. In each folder
+//! `mod.rs` is the dispatcher and every file imports only files below it, never one that
+//! imports it (`tests/it/layering.rs`).
 
 pub mod certify;
-pub mod certify_load;
-mod certify_load_ends;
-mod certify_load_search;
 pub mod format;
 pub mod interval;
-mod live;
 pub mod verify;
-mod verify_load;
-mod verify_load_search;
-mod verify_search;
-mod verify_statics;
 
-pub use certify::certify;
-pub use certify_load::certify_load;
+pub use certify::{certify, certify_load};
 pub use format::*;
 pub use verify::{verify, Rejection, Report};

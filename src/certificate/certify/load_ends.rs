@@ -1,13 +1,15 @@
-//! The two ends of the load question for a certificate (see [`mod@super::certify_load`]): no
+//! The two ends of the load question for a certificate (see [`certify_load()`](super::certify_load)): no
 //! admissible multiplier at all (`no_equilibrium`, a Farkas certificate in (h, v, w, λ)),
 //! or no largest one (`unbounded_multiplier`, a state and a transfer or recession direction).
 
-use super::certify::{find_farkas, Row};
-use super::certify_load::{at_lambda, carries, cert_joints, reduced, Loaded};
-use super::format::*;
-use super::verify::verify;
+use super::loaded::{at_lambda, carries, cert_joints, Loaded};
+use super::sides::{find_farkas, reduced, Row};
 use crate::arch::{Arch, JointLayout};
 use crate::assess::safest_state;
+use crate::certificate::format::{
+    Certificate, LoadFarkas, LoadState, MultiplierSides, NotCertified, Transfer,
+};
+use crate::certificate::verify::verify;
 use crate::load::{rows, LiveLoad};
 use crate::lp;
 use crate::settings::Settings;

@@ -20,12 +20,16 @@
 //! Not re-proved: that the sweep met every event, that two discretisations agreed
 //! (`refined`), and λ_min.
 
-use super::format::{ContactKind, LoadLimitStateCert, LoadSearchEvidence, LoadSearchMethod, Side};
-use super::interval::Interval as I;
-use super::live::Live;
-use super::verify::{check_pattern, reject, Rejection, LIMIT_STATE_TOL};
-use super::verify_search::{column, no_mechanism, sections, side_text, weight_work, StateAt};
-use super::verify_statics::{kinds, phi, Model};
+use super::joints::check_pattern;
+use super::limit_state::LIMIT_STATE_TOL;
+use super::live::{sections, side_text, Live};
+use super::mechanism::{column, no_mechanism, weight_work, StateAt};
+use super::report::{reject, Rejection};
+use super::statics::{kinds, phi, Model};
+use crate::certificate::format::{
+    ContactKind, LoadLimitStateCert, LoadSearchEvidence, LoadSearchMethod, Side,
+};
+use crate::certificate::interval::Interval as I;
 
 /// Samples per piece of a continuous arch for the floating-point admissibility check of a
 /// listed limit state.

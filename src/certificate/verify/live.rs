@@ -16,10 +16,10 @@
 //! point dN_L = sin β, d²N_L = cos β, dT_L = cos β, d²T_L = −sin β, dM_L = −sin β,
 //! d²M_L = −cos β.
 
-use super::format::{ContactKind, LoadKind, LoadSpec, Side, Towards};
-use super::interval::Interval as I;
-use super::verify::{reject, Rejection};
-use super::verify_statics::{Model, Ntm};
+use super::report::{reject, Rejection};
+use super::statics::{Model, Ntm};
+use crate::certificate::format::{ContactKind, LoadKind, LoadSpec, Side, Towards};
+use crate::certificate::interval::Interval as I;
 
 /// The live load of a certificate with its thickness.
 #[derive(Debug, Clone, Copy)]
@@ -215,25 +215,49 @@ impl Live {
     }
 }
 
+/// The sections at a joint: two (`before`, `after`) at the point load's angle, else one.
+pub(super) fn sections(beta: f64, split: Option<f64>) -> Vec<Option<Side>> {
+    if split == Some(beta) {
+        vec![Some(Side::Before), Some(Side::After)]
+    } else {
+        vec![None]
+    }
+}
+
+/// " (before)" / " (after)" / "".
+pub(super) fn side_text(side: Option<Side>) -> &'static str {
+    match side {
+        Some(Side::Before) => " (before the loaded point)",
+        Some(Side::After) => " (after the loaded point)",
+        None => "",
+    }
+}
+
 #[cfg(test)]
 mod tests {
     //! The verifier's live actions against the solver's (`crate::load`, whose β-derivatives
     //! are checked against differences in `tests/it/loads.rs`): two implementations of the
     //! spec, every order, both loads, both weight models, both sides.
-    use super::super::certify::empty;
-    use super::super::format::{Claim, LoadKind, LoadSpec, Side, Towards};
-    use super::super::interval::Interval as I;
-    use super::super::verify::model_of;
+    use super::super::mechanism::column;
+    use super::super::statics::Model;
     use super::Live;
+    use crate::certificate::format::{LoadKind, LoadSpec, Side, Towards};
+    use crate::certificate::interval::Interval as I;
     use crate::load::{LiveLoad, Side as SolverSide};
     use crate::{Arch, WeightModel};
 
+    /// The verifier's model of the continuous `arch`.
+    fn model_of(arch: &Arch) -> Model {
+        Model {
+            beta_r: arch.beta_right(),
+            beta_l: arch.beta_left(),
+            centroid: arch.weight() == WeightModel::Centroid,
+            joints: None,
+        }
+    }
+
     /// The verifier's live load of `spec` = (kind, towards, β) at thickness `eta`.
-    fn live_of(
-        model: &super::super::verify_statics::Model,
-        eta: f64,
-        spec: (LoadKind, Option<Towards>, Option<f64>),
-    ) -> Live {
+    fn live_of(model: &Model, eta: f64, spec: (LoadKind, Option<Towards>, Option<f64>)) -> Live {
         Live::of(
             &LoadSpec {
                 eta,
@@ -250,7 +274,7 @@ mod tests {
     fn live_actions_and_their_derivatives_match_the_solver() {
         for weight in [WeightModel::Centreline, WeightModel::Centroid] {
             let arch = Arch::new(-0.4, 3.3, weight).unwrap();
-            let model = model_of(&empty(&arch, 0.7, Claim::LargestMultiplier)).unwrap();
+            let model = model_of(&arch);
             let eta = 0.37;
             for (spec, load) in [
                 (
@@ -303,11 +327,10 @@ mod tests {
 
     #[test]
     fn live_power_matches_the_solver() {
-        use super::super::verify_search::column;
         use crate::contact::{Contact, ContactKind, Location};
         for weight in [WeightModel::Centreline, WeightModel::Centroid] {
             let arch = Arch::new(-0.3, 3.4, weight).unwrap();
-            let model = model_of(&empty(&arch, 0.7, Claim::LargestMultiplier)).unwrap();
+            let model = model_of(&arch);
             let eta = 0.42;
             let bp = 1.1;
             // contacts at four joints, two sides at the loaded one

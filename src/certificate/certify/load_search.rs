@@ -1,11 +1,14 @@
-//! The `load_search` section of a load certificate (see [`mod@super::certify_load`]): the
+//! The `load_search` section of a load certificate (see [`certify_load()`](super::certify_load)): the
 //! survey's limit states with their mechanisms, and the Farkas alternative of the kinematic
 //! LP with the live power for every state listed without a mechanism.
 
-use super::certify::farkas_cover;
-use super::certify_load::{joint, sorted, Loaded};
-use super::format::*;
+use super::kinematic::farkas_cover;
+use super::loaded::{joint, sorted, Loaded};
 use crate::arch::{Arch, JointLayout};
+use crate::certificate::format::{
+    ContinuumEnd, KinematicFarkas, LoadLimitStateCert, LoadNoMechanism, LoadSearchEvidence,
+    LoadSearchMethod, NotCertified, Side,
+};
 use crate::contact::{Contact, ContactKind};
 use crate::kinematics::{column, power};
 use crate::limit_states::sweep::{sweep_load, CheckedPoint};

@@ -1,0 +1,188 @@
+//! Building certificates: for η*(μ) around the exact limit state ([`certify()`], see the
+//! module documentation of [`crate::certificate`]), and for the largest multiplier of a live
+//! load around the solver's answer to the load question ([`certify_load()`],
+//! [`crate::multiplier::survey`]); every certificate is verified before it is returned.
+//!
+//! * `largest_multiplier`: the static maximum (x_s, λ_s) moved into the admissible set at
+//!   λ_lo = λ_s (1 − g/2) by a small LP on its active contacts (rows scaled by
+//!   1/(λ_s − λ_lo)), and a Farkas certificate at λ_hi = λ_s (1 + g/2) from 4-subsets of
+//!   the active contacts (interior tangencies of a continuous arch also as chords β ± δ),
+//!   chosen by their float cofactors and proved by the verifier; the gap is widened
+//!   tenfold (up to 1e-4) when a side cannot be proved.
+//! * `unbounded_multiplier`: a state admissible at λ_min (the unloaded arch's safest
+//!   state when λ_min = 0) and the transfer of the point load to a springing that keeps it
+//!   admissible as λ grows; where neither transfer is proved, no certificate.
+//! * `no_equilibrium`: the multiplier λ* that maximises the x-margin of the rows (a
+//!   concave function of λ: doubling, then golden section), and 5-subsets of the rows
+//!   nearest to binding there (and −λ ≤ 0), as for the other Farkas certificates.
+//! * the limit states: the survey's list with its mechanisms, the state at λ_static
+//!   without a mechanism and every point the sweep checked without one, each with the
+//!   Farkas alternative of the kinematic LP with the live power. Where the survey leaves
+//!   the limit states undecided, the certificate covers the static range alone (no
+//!   `load_search`).
+//!
+//! This file holds the two entry points; each file below it imports only files further
+//! down: [`thickness`] (with [`search`]) and the load files [`load_bracket`], [`load_ends`],
+//! [`load_search`] build on the toolboxes [`loaded`], [`sides`], [`kinematic`] and
+//! [`blank`], and on the verifier.
+
+mod blank;
+mod kinematic;
+mod load_bracket;
+mod load_ends;
+mod load_search;
+mod loaded;
+mod search;
+mod sides;
+mod thickness;
+
+use blank::empty;
+use load_bracket::{bracket, static_state};
+use load_ends::{no_equilibrium, unbounded};
+use load_search::{evidence, unbounded_evidence};
+use loaded::load_spec;
+use thickness::{certify_limit, certify_no_equilibrium};
+
+use crate::arch::{Arch, JointLayout};
+use crate::certificate::format::{Certificate, Claim, NotCertified};
+use crate::limit::Outcome;
+use crate::limit_states::survey;
+use crate::load::LiveLoad;
+use crate::multiplier::{self, static_range, LoadOutcome, StaticRange};
+use crate::settings::{LimitStateSearch, Settings};
+
+/// Builds a certificate for `arch` at friction `mu` with requested relative gap `gap`
+/// (e.g. 1e-12). The certificate is verified before it is returned. When the requested
+/// gap cannot be proved the gap is widened tenfold (up to 1e-4) and the best certificate
+/// found is returned: check [`Certificate::delivers_gap`] to know whether the request
+/// was met.
+pub fn certify(
+    arch: &Arch,
+    mu: f64,
+    gap: f64,
+    settings: &Settings,
+) -> Result<Certificate, NotCertified> {
+    // a discrete arch's certificate carries the sweep's checked points as evidence (the
+    // ridge walk has no evidence format yet): its search is the sweep
+    let settings = &match arch.layout() {
+        JointLayout::Discrete(_) => Settings {
+            limit_state_search: LimitStateSearch::Sweep,
+            ..settings.clone()
+        },
+        JointLayout::Continuous => settings.clone(),
+    };
+    let survey = survey(arch, mu, settings).map_err(|e| NotCertified(e.to_string()))?;
+    match survey.solution.outcome.clone() {
+        Outcome::Limit(ls) => certify_limit(arch, mu, &survey, &ls, gap, settings),
+        Outcome::NoEquilibrium { mu_ms: Some(m), .. } if mu < m => {
+            certify_no_equilibrium(arch, mu, settings)
+        }
+        Outcome::NoEquilibrium { reason, .. }
+        | Outcome::Unresolved { reason, .. }
+        | Outcome::NoCollapse { reason } => Err(NotCertified(reason)),
+    }
+}
+
+/// Builds a certificate for the live `load` on `arch` at thickness `eta` and friction
+/// `mu` with requested relative gap `gap` of the multiplier bracket (e.g. 1e-12): the
+/// largest admissible multiplier (two-sided), its unboundedness, or no equilibrium at any
+/// λ ≥ 0, with the evidence of the limit states where the search is complete. Verified
+/// before it is returned; [`Certificate::delivers_gap`] says whether the gap was met.
+pub fn certify_load(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    load: &LiveLoad,
+    gap: f64,
+    settings: &Settings,
+) -> Result<Certificate, NotCertified> {
+    let base = |claim: Claim| {
+        let mut c = empty(arch, mu, claim);
+        c.load = Some(load_spec(eta, load));
+        c
+    };
+    let outcome = match multiplier::survey(arch, eta, mu, load, settings)
+        .map_err(|e| NotCertified(e.to_string()))?
+    {
+        Ok(o) => o,
+        // the limit states undecided: the static range alone, without their evidence
+        Err(reason) => {
+            let range = static_range(arch, eta, mu, load, settings)
+                .map_err(|e| NotCertified(e.to_string()))?
+                .map_err(|e| NotCertified(format!("the load question is not decided: {e}")))?;
+            return match range {
+                StaticRange::NoEquilibrium => {
+                    no_equilibrium(arch, eta, mu, load, base(Claim::NoEquilibrium), settings)
+                }
+                StaticRange::Interval { min, max: None } => unbounded(
+                    arch,
+                    eta,
+                    mu,
+                    load,
+                    min,
+                    base(Claim::UnboundedMultiplier),
+                    settings,
+                ),
+                StaticRange::Interval { max: Some(top), .. } => {
+                    let (lambda_s, x_s, pattern) =
+                        static_state(arch, eta, mu, load, top, settings)?;
+                    bracket(
+                        arch,
+                        eta,
+                        mu,
+                        load,
+                        (lambda_s, x_s, &pattern),
+                        base(Claim::LargestMultiplier),
+                        gap,
+                        settings,
+                    )
+                }
+            }
+            .map_err(|e| {
+                NotCertified(format!(
+                    "{} (the limit states are not decided: {reason})",
+                    e.0
+                ))
+            });
+        }
+    };
+    match outcome {
+        LoadOutcome::NoEquilibrium => {
+            no_equilibrium(arch, eta, mu, load, base(Claim::NoEquilibrium), settings)
+        }
+        LoadOutcome::NoCollapse { lambda_min, .. } => {
+            let mut cert = base(Claim::UnboundedMultiplier);
+            cert.load_search = unbounded_evidence(arch, eta, mu, load, lambda_min, settings);
+            unbounded(arch, eta, mu, load, lambda_min, cert, settings)
+        }
+        LoadOutcome::Limits(sv) => match sv.lambda_static {
+            Some(top) => {
+                let (lambda_s, x_s, pattern) = static_state(arch, eta, mu, load, top, settings)?;
+                let mut cert = base(Claim::LargestMultiplier);
+                cert.load_search = Some(evidence(
+                    arch,
+                    eta,
+                    load,
+                    &sv,
+                    Some((lambda_s, x_s, &pattern)),
+                    settings,
+                )?);
+                bracket(
+                    arch,
+                    eta,
+                    mu,
+                    load,
+                    (lambda_s, x_s, &pattern),
+                    cert,
+                    gap,
+                    settings,
+                )
+            }
+            None => {
+                let mut cert = base(Claim::UnboundedMultiplier);
+                cert.load_search = Some(evidence(arch, eta, load, &sv, None, settings)?);
+                unbounded(arch, eta, mu, load, sv.lambda_min, cert, settings)
+            }
+        },
+    }
+}

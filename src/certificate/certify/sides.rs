@@ -1,0 +1,128 @@
+//! The two sides of a bracket, found in floating point and then proved by the verifier: a
+//! state moved strictly inside the admissible set (a margin LP), and a Farkas combination of
+//! d + 1 rows chosen by its float cofactors.
+
+use crate::lp;
+use crate::settings::Settings;
+use crate::statics::{Affine, Reactions};
+use itertools::Itertools;
+
+/// An affine function of d unknowns (d = 2, 3 or 4): `g · u + c`.
+#[derive(Debug, Clone)]
+pub(super) struct Row {
+    /// Gradient (the first d components are used).
+    pub(super) g: Vec<f64>,
+    /// Constant term.
+    pub(super) c: f64,
+}
+
+impl From<Affine> for Row {
+    fn from(a: Affine) -> Row {
+        Row {
+            g: a.g.to_vec(),
+            c: a.c,
+        }
+    }
+}
+
+/// Float cofactor multipliers of d + 1 affine functions (gradients in the first d
+/// components), normalised to sum 1 when they share a sign, with the Farkas constant.
+fn farkas_float(rows: &[Row], d: usize) -> Option<(Vec<f64>, f64)> {
+    let y: Vec<f64> = (0..=d)
+        .map(|i| {
+            let cols: Vec<usize> = (0..=d).filter(|&k| k != i).collect();
+            let sign = if i % 2 == 0 { 1.0 } else { -1.0 };
+            let g = |k: usize, r: usize| rows[cols[k]].g[r];
+            sign * match d {
+                4 => nalgebra::Matrix4::from_fn(|r, k| g(k, r)).determinant(),
+                3 => nalgebra::Matrix3::from_fn(|r, k| g(k, r)).determinant(),
+                _ => nalgebra::Matrix2::from_fn(|r, k| g(k, r)).determinant(),
+            }
+        })
+        .collect();
+    let total: f64 = y.iter().sum();
+    if total == 0.0 || !y.iter().all(|v| v * total > 0.0) {
+        return None;
+    }
+    let y: Vec<f64> = y.iter().map(|v| v / total).collect();
+    let c: f64 = y.iter().zip(rows).map(|(a, r)| a * r.c).sum();
+    (c > 0.0).then_some((y, c))
+}
+
+/// Searches `pool` (labels and their rows) for a (d+1)-subset with a valid float Farkas
+/// combination, best margin first, and returns the first (labels with their multipliers)
+/// that `check` accepts (the verifier proves).
+pub(super) fn find_farkas<T: Clone>(
+    pool: &[(T, Row)],
+    d: usize,
+    check: impl Fn(&[(T, f64)]) -> bool,
+) -> Option<Vec<(T, f64)>> {
+    let mut found: Vec<(f64, Vec<usize>, Vec<f64>)> = Vec::new();
+    for sub in (0..pool.len()).combinations(d + 1) {
+        let rows: Vec<Row> = sub.iter().map(|&i| pool[i].1.clone()).collect();
+        if let Some((y, c)) = farkas_float(&rows, d) {
+            let norm: f64 = y
+                .iter()
+                .zip(&rows)
+                .map(|(a, r)| a * r.c.abs())
+                .sum::<f64>()
+                .max(f64::MIN_POSITIVE);
+            found.push((c / norm, sub, y));
+        }
+    }
+    found.sort_by(|a, b| b.0.total_cmp(&a.0));
+    found.into_iter().take(12).find_map(|(_, sub, y)| {
+        let labelled: Vec<(T, f64)> = sub
+            .iter()
+            .zip(&y)
+            .map(|(&i, &y)| (pool[i].0.clone(), y))
+            .collect();
+        check(&labelled).then_some(labelled)
+    })
+}
+
+/// The rows of `pool` that `keep` accepts, with the coordinates `drop` left out: they do
+/// not enter those rows (w in the sliding rows: T and N do not involve it; λ in the rows of
+/// sections that do not carry the point load, or, through x − λ d, in all that do), so a
+/// Farkas certificate among them is that much lower in dimension.
+pub(super) fn reduced<T: Clone>(
+    pool: &[(T, Row)],
+    keep: impl Fn(&T) -> bool,
+    drop: &[usize],
+) -> Vec<(T, Row)> {
+    pool.iter()
+        .filter(|(l, _)| keep(l))
+        .map(|(l, r)| {
+            let g =
+                r.g.iter()
+                    .enumerate()
+                    .filter(|(k, _)| !drop.contains(k))
+                    .map(|(_, v)| *v)
+                    .collect();
+            (l.clone(), Row { g, c: r.c })
+        })
+        .collect()
+}
+
+/// A state near `x_s` strictly inside the `rows` (affine in x, at the target parameter):
+/// the margin LP in the displacement δ with every row's value at x_s scaled by `k`
+/// (1 over the parameter step, so that the LP works with O(1) numbers).
+pub(super) fn move_inside(
+    rows: &[Affine],
+    x_s: Reactions,
+    k: f64,
+    settings: &Settings,
+) -> Option<Reactions> {
+    let rows: Vec<Affine> = rows
+        .iter()
+        .map(|a| Affine {
+            g: a.g,
+            c: k * a.at(&x_s),
+        })
+        .collect();
+    let (d, s) = lp::max_margin(&rows, 1.0, settings).ok()?;
+    if s.is_nan() || s <= 0.0 {
+        return None;
+    }
+    Some([x_s[0] + d[0] / k, x_s[1] + d[1] / k, x_s[2] + d[2] / k])
+}

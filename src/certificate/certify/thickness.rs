@@ -1,0 +1,196 @@
+//! A thickness certificate: the bracket around η_s built from the exact limit state (see the
+//! module documentation of [`crate::certificate`]), or, below μ_ms, a friction-only Farkas
+//! certificate that no thickness stands.
+
+use super::blank::empty;
+use super::search::{evidence, limit_state_cert};
+use super::sides::{find_farkas, move_inside, Row};
+use crate::arch::{Arch, JointLayout};
+use crate::certificate::format::{CertJoint, Certificate, Claim, Farkas, NotCertified, SafeSide};
+use crate::certificate::verify::{prove_safe_only, verify};
+use crate::contact::{Contact, ContactKind};
+use crate::friction::friction_limit;
+use crate::limit::LimitState;
+use crate::limit_states::Survey;
+use crate::settings::Settings;
+use crate::state::State;
+use crate::statics::{actions, Affine, Reactions};
+
+fn joints_of(contacts: &[Contact], y: &[f64]) -> Vec<CertJoint> {
+    contacts
+        .iter()
+        .zip(y)
+        .map(|(c, &y)| CertJoint {
+            beta: c.beta,
+            kind: c.kind,
+            side: None,
+            y,
+        })
+        .collect()
+}
+
+/// The thickness problem's Farkas search over contacts at (η, μ).
+fn find_contact_farkas(
+    arch: &Arch,
+    pool: &[Contact],
+    eta: f64,
+    mu: f64,
+    d: usize,
+    check: impl Fn(&Farkas) -> bool,
+) -> Option<Farkas> {
+    let rows: Vec<(Contact, Row)> = pool
+        .iter()
+        .map(|c| {
+            let row = actions(arch, eta, c.beta).activation(c.kind, 0, eta, mu);
+            (*c, Row::from(row))
+        })
+        .collect();
+    let make = |labelled: &[(Contact, f64)]| {
+        let (contacts, y): (Vec<Contact>, Vec<f64>) = labelled.iter().copied().unzip();
+        Farkas {
+            eta: (d == 3).then_some(eta),
+            joints: joints_of(&contacts, &y),
+        }
+    };
+    find_farkas(&rows, d, |l| check(&make(l))).map(|l| make(&l))
+}
+
+pub(super) fn certify_no_equilibrium(
+    arch: &Arch,
+    mu: f64,
+    settings: &Settings,
+) -> Result<Certificate, NotCertified> {
+    let fl = friction_limit(arch, settings)
+        .map_err(NotCertified)?
+        .ok_or_else(|| NotCertified("no finite friction admits equilibrium".into()))?;
+    let mut cert = empty(arch, mu, Claim::NoEquilibrium);
+    let f = find_contact_farkas(arch, &fl.pattern, 1.0, mu, 2, |f| {
+        let mut c = cert.clone();
+        c.collapse = Some(f.clone());
+        verify(&c).is_ok()
+    })
+    .ok_or_else(|| {
+        NotCertified(format!(
+            "no provable Farkas certificate for mu = {mu} below mu_ms = {}",
+            fl.mu
+        ))
+    })?;
+    cert.collapse = Some(f);
+    Ok(cert)
+}
+
+pub(super) fn certify_limit(
+    arch: &Arch,
+    mu: f64,
+    survey: &Survey,
+    ls: &LimitState,
+    gap: f64,
+    settings: &Settings,
+) -> Result<Certificate, NotCertified> {
+    let mut cert = empty(arch, mu, Claim::LeastThickness);
+    // the bracket is around η_s, the least admissible state, which need not carry a
+    // mechanism (non-associative gap): its pattern is its active set
+    let (eta_s, x_s) = (ls.eta_static, ls.x_static);
+    let gap_case = ls.eta != ls.eta_static;
+    let pattern_s: Vec<Contact> = if gap_case {
+        State {
+            arch,
+            eta: eta_s,
+            mu,
+            x: x_s,
+        }
+        .verdict(ContactKind::active_at(mu), settings)
+        .active
+    } else {
+        ls.pattern.clone()
+    };
+    // the limit state: the one at η_s, else the least above it (only when the search is
+    // complete: otherwise the widened state is not known to be the least)
+    cert.limit_state = match (&survey.states, gap_case) {
+        (_, false) => Some(limit_state_cert(ls.eta, ls.x, &ls.mechanism)),
+        (Ok(found), true) => found
+            .above
+            .first()
+            .map(|s| limit_state_cert(s.eta, s.x, &s.mechanism)),
+        (Err(_), true) => None,
+    };
+    if let (Ok(found), Some(unique)) = (&survey.states, survey.unique()) {
+        cert.search = Some(evidence(
+            arch,
+            found,
+            (eta_s, x_s, &pattern_s),
+            unique,
+            settings,
+        ));
+    }
+    // the Farkas pool: active contacts, interior tangencies also as chords β ± δ
+    let mut pool: Vec<Contact> = pattern_s.clone();
+    if matches!(arch.layout(), JointLayout::Continuous) {
+        for c in &pattern_s {
+            if c.free {
+                for delta in [1e-2, 1e-3, 1e-4] {
+                    for b in [c.beta - delta, c.beta + delta] {
+                        if b > arch.beta_right() && b < arch.beta_left() {
+                            pool.push(Contact { beta: b, ..*c });
+                        }
+                    }
+                }
+            }
+        }
+    }
+    let mut g = gap.max(1e-15);
+    while g <= 1e-4 {
+        let eta_hi = eta_s * (1.0 + 0.5 * g);
+        let mut eta_lo = eta_s * (1.0 - 0.5 * g);
+        // the gap as computed in floating point must not exceed g (rounding of the two
+        // ends could otherwise push it over by a few ulps)
+        while (eta_hi - eta_lo) / eta_hi > g {
+            eta_lo = eta_lo.next_up();
+        }
+        if let Some(x) = safe_state(arch, mu, (eta_s, x_s, &pattern_s), eta_hi, settings) {
+            let mut c = cert.clone();
+            c.safe = Some(SafeSide { eta: eta_hi, x });
+            let safe_ok = {
+                let mut probe = c.clone();
+                probe.claim = Claim::LeastThickness;
+                // check the safe side alone with a trivially failing lower side removed
+                prove_safe_only(&probe).is_ok()
+            };
+            if safe_ok {
+                let found = find_contact_farkas(arch, &pool, eta_lo, mu, 3, |f| {
+                    let mut full = c.clone();
+                    full.collapse = Some(f.clone());
+                    full.gap = Some(eta_hi - eta_lo);
+                    full.gap_relative = Some((eta_hi - eta_lo) / eta_hi);
+                    verify(&full).is_ok()
+                });
+                if let Some(f) = found {
+                    c.collapse = Some(f);
+                    c.gap = Some(eta_hi - eta_lo);
+                    c.gap_relative = Some((eta_hi - eta_lo) / eta_hi);
+                    return Ok(c);
+                }
+            }
+        }
+        g *= 10.0;
+    }
+    Err(NotCertified(format!(
+        "no certificate could be proved at a relative gap up to 1e-4 (eta_s = {eta_s})"
+    )))
+}
+
+/// The limit state moved into the interior of the admissible set at η_hi: a small LP in
+/// the displacement δ on the active contacts, rows scaled by 1/(η_hi − η*).
+fn safe_state(
+    arch: &Arch,
+    mu: f64,
+    (eta_s, x_s, pattern): (f64, Reactions, &[Contact]),
+    eta_hi: f64,
+    settings: &Settings,
+) -> Option<Reactions> {
+    let rows: Vec<Affine> = pattern
+        .iter()
+        .map(|c| actions(arch, eta_hi, c.beta).activation(c.kind, 0, eta_hi, mu))
+        .collect();
+    move_inside(&rows, x_s, 1.0 / (eta_hi - eta_s), settings)
+}

@@ -1,0 +1,95 @@
+//! The certificate as read, checked before anything is proved: every number finite, and
+//! the arch well formed (it becomes the [`Model`] of the proofs).
+
+use super::report::{reject, Rejection};
+use super::statics::Model;
+use crate::certificate::format::{Certificate, WeightModel};
+use std::f64::consts::PI;
+
+/// Every number of the certificate must be finite (JSON cannot carry NaN or ∞, but a
+/// certificate built in memory can).
+pub(super) fn check_finite(cert: &Certificate) -> Result<(), Rejection> {
+    let mut nums: Vec<(&str, f64)> = vec![
+        ("arch.beta_right", cert.arch.beta_right),
+        ("arch.beta_left", cert.arch.beta_left),
+    ];
+    if let Some(js) = &cert.arch.joint_angles {
+        nums.extend(js.iter().map(|&b| ("arch.joint_angles", b)));
+    }
+    if let Some(mu) = cert.mu {
+        nums.push(("mu", mu));
+    }
+    if let Some(s) = &cert.safe {
+        nums.push(("safe.eta", s.eta));
+        nums.extend(s.x.iter().map(|&v| ("safe.x", v)));
+    }
+    if let Some(f) = &cert.collapse {
+        if let Some(e) = f.eta {
+            nums.push(("collapse.eta", e));
+        }
+        for j in &f.joints {
+            nums.extend([("collapse.joints.beta", j.beta), ("collapse.joints.y", j.y)]);
+        }
+    }
+    if let Some(ls) = &cert.limit_state {
+        nums.push(("limit_state.eta", ls.eta));
+        nums.extend(ls.x.iter().map(|&v| ("limit_state.x", v)));
+        nums.extend(
+            ls.pattern
+                .iter()
+                .map(|j| ("limit_state.pattern.beta", j.beta)),
+        );
+        nums.extend(ls.rates.iter().map(|&v| ("limit_state.rates", v)));
+        nums.push((
+            "limit_state.complementarity_residual",
+            ls.complementarity_residual,
+        ));
+    }
+    if let Some(g) = cert.gap {
+        nums.push(("gap", g));
+    }
+    if let Some(g) = cert.gap_relative {
+        nums.push(("gap_relative", g));
+    }
+    match nums.iter().find(|(_, v)| !v.is_finite()) {
+        Some((field, v)) => reject(format!("{field}: {v} is not a finite number")),
+        None => Ok(()),
+    }
+}
+
+/// The arch of the certificate, checked: springings in order, the joints of a discrete
+/// arch strictly increasing from β_R to β_L.
+pub(super) fn model_of(cert: &Certificate) -> Result<Model, Rejection> {
+    let a = &cert.arch;
+    if !(a.beta_right < a.beta_left && a.beta_left - a.beta_right <= 2.0 * PI) {
+        return reject(format!(
+            "arch: need beta_right < beta_left <= beta_right + 2 pi, found beta_right = {}, beta_left = {}",
+            a.beta_right, a.beta_left
+        ));
+    }
+    if let Some(js) = &a.joint_angles {
+        if js.len() < 2 {
+            return reject(
+                "arch: joint_angles of a discrete arch need at least the two springings",
+            );
+        }
+        if js.first() != Some(&a.beta_right) || js.last() != Some(&a.beta_left) {
+            return reject("arch: joint_angles must start at beta_right and end at beta_left (the springings are joints)");
+        }
+        if let Some(w) = js
+            .windows(2)
+            .find(|w| w[0].is_nan() || w[1].is_nan() || w[1] <= w[0])
+        {
+            return reject(format!(
+                "arch: joint_angles must be strictly increasing, found {} then {}",
+                w[0], w[1]
+            ));
+        }
+    }
+    Ok(Model {
+        beta_r: a.beta_right,
+        beta_l: a.beta_left,
+        centroid: a.weight == WeightModel::Centroid,
+        joints: a.joint_angles.clone(),
+    })
+}

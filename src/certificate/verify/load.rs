@@ -1,0 +1,175 @@
+//! Re-checking a load certificate (issue 11): the claims about the largest admissible
+//! multiplier λ_static of a live load at fixed (η, μ), with the live actions of
+//! [`super::live`] (docs/loads.md, written out again) and the same interval arithmetic
+//! as the thickness certificates.
+//!
+//! * `largest_multiplier`: the state (x_lo, λ_lo) is *proved* admissible — at every joint
+//!   of a discrete arch, or over the whole continuum by Taylor enclosures, on both sides of
+//!   a loaded section — and the Farkas certificate at λ_hi is *proved* (four contacts, the
+//!   signed cofactors of their x-gradients; the live terms enter the constants). The
+//!   admissible (x, λ) form a convex set: a state at some λ ≥ λ_hi would put one at λ_hi on
+//!   the segment from (x_lo, λ_lo). So λ_lo ≤ λ_static < λ_hi.
+//! * `unbounded_multiplier`: (x_0, λ_0) is *proved* admissible and the stated transfer is
+//!   *proved* to keep it admissible as λ grows: along (x_0 + t d, λ_0 + t) every activation
+//!   function is φ(x_0, λ_0) + t ψ, with ψ ≤ 0 proved at every section (ψ = 0 identically
+//!   where the transfer cancels the load, by an identity of the statics).
+//! * `no_equilibrium` under a load: five rows in (h, v, w, λ) (with, possibly, −λ ≤ 0),
+//!   the cofactors of their 4-gradients: no state at any λ ≥ 0.
+
+use super::live::Live;
+use super::load_admissible::{check_state, everywhere, prove_state};
+use super::load_farkas::{prove_farkas_any, prove_farkas_at};
+use super::load_search::verify_load_search;
+use super::load_unbounded::{prove_recession, prove_transfer};
+use super::report::{reject, Rejection, Report};
+use super::statics::Model;
+use crate::certificate::format::{Certificate, Claim};
+
+/// Verifies a certificate with a `load` section (`cert.load` must be present).
+pub(super) fn verify_load(cert: &Certificate, model: &Model) -> Result<Report, Rejection> {
+    let Some(spec) = &cert.load else {
+        return reject(format!(
+            "a {} claim needs a load section",
+            cert.claim.name()
+        ));
+    };
+    if matches!(cert.claim, Claim::LeastThickness) {
+        return reject("a least_thickness claim carries no load section");
+    }
+    if cert.safe.is_some()
+        || cert.collapse.is_some()
+        || cert.limit_state.is_some()
+        || cert.search.is_some()
+    {
+        return reject("a load certificate carries none of the thickness sections (safe, collapse, limit_state, search)");
+    }
+    let live = Live::of(spec, model)?;
+    let Some(sides) = &cert.multiplier else {
+        return reject("a load certificate needs a multiplier section");
+    };
+    let mu = cert.mu;
+    let mut checks = Vec::new();
+    let lambda_bracket = match cert.claim {
+        Claim::LargestMultiplier => {
+            let (Some(adm), Some(inf), None, None) = (
+                &sides.admissible,
+                &sides.infeasible,
+                sides.transfer,
+                &sides.recession,
+            ) else {
+                return reject("largest_multiplier: needs multiplier.admissible and multiplier.infeasible (and no transfer or recession)");
+            };
+            let Some(lambda_hi) = inf.lambda else {
+                return reject(
+                    "largest_multiplier: multiplier.infeasible.lambda (lambda_hi) is missing",
+                );
+            };
+            check_state(adm, "multiplier.admissible")?;
+            if !(lambda_hi.is_finite() && adm.lambda <= lambda_hi) {
+                return reject(format!(
+                    "need 0 <= lambda_lo <= lambda_hi, found lambda_lo = {}, lambda_hi = {lambda_hi}",
+                    adm.lambda
+                ));
+            }
+            let pieces = prove_state(model, &live, adm, mu, "admissible side")?;
+            checks.push(format!(
+                "proved (interval arithmetic): the state x = [{}, {}, {}] is admissible at lambda_lo = {} {} ({pieces} enclosures)",
+                adm.x[0], adm.x[1], adm.x[2], adm.lambda, everywhere(model, &live)
+            ));
+            let margin = prove_farkas_at(model, &live, inf, lambda_hi, mu)?;
+            checks.push(format!(
+                "proved (interval arithmetic): no state is admissible at lambda_hi = {lambda_hi} (Farkas on {} joints{}, margin {margin:.3e}); the admissible (x, lambda) are convex, so none at any lambda >= lambda_hi",
+                inf.joints.len(),
+                if inf.joints.len() == 3 { ", sliding rows in (h, v): w does not enter them" } else { "" }
+            ));
+            check_gap(cert, adm.lambda, lambda_hi)?;
+            Some((adm.lambda, Some(lambda_hi)))
+        }
+        Claim::UnboundedMultiplier => {
+            let (Some(adm), None) = (&sides.admissible, &sides.infeasible) else {
+                return reject("unbounded_multiplier: needs multiplier.admissible and a transfer or a recession direction (and no infeasible side)");
+            };
+            check_state(adm, "multiplier.admissible")?;
+            if cert.gap.is_some() || cert.gap_relative.is_some() {
+                return reject("unbounded_multiplier: a gap is stated, but there is no bracket");
+            }
+            let pieces = prove_state(model, &live, adm, mu, "admissible side")?;
+            checks.push(format!(
+                "proved (interval arithmetic): the state x = [{}, {}, {}] is admissible at lambda = {} {} ({pieces} enclosures)",
+                adm.x[0], adm.x[1], adm.x[2], adm.lambda, everywhere(model, &live)
+            ));
+            checks.push(match (sides.transfer, &sides.recession) {
+                (Some(transfer), None) => prove_transfer(model, &live, transfer, mu)?,
+                (None, Some(d)) => prove_recession(model, &live, d, mu)?,
+                _ => return reject("unbounded_multiplier: needs exactly one of multiplier.transfer and multiplier.recession"),
+            });
+            Some((adm.lambda, None))
+        }
+        Claim::NoEquilibrium => {
+            let (None, Some(inf), None, None) = (
+                &sides.admissible,
+                &sides.infeasible,
+                sides.transfer,
+                &sides.recession,
+            ) else {
+                return reject("no_equilibrium under a load: needs multiplier.infeasible only");
+            };
+            if inf.lambda.is_some() {
+                return reject("no_equilibrium under a load: multiplier.infeasible.lambda must be null (the certificate covers every lambda >= 0)");
+            }
+            if cert.gap.is_some() || cert.gap_relative.is_some() {
+                return reject("no_equilibrium: a gap is stated, but there is no bracket");
+            }
+            let margin = prove_farkas_any(model, &live, inf, mu)?;
+            checks.push(format!(
+                "proved (interval arithmetic): no state (h, v, w, lambda) with lambda >= 0 is admissible (Farkas on {} joints{}, margin {margin:.3e})",
+                inf.joints.len(),
+                if inf.lambda_row.is_some() { " and the row -lambda <= 0" } else { "" }
+            ));
+            None
+        }
+        Claim::LeastThickness => unreachable!("checked above"),
+    };
+    let limit_states = match &cert.load_search {
+        Some(search) => {
+            let Some((lo, hi)) = lambda_bracket else {
+                return reject("load_search: the limit states need a multiplier claim with an admissible state");
+            };
+            let (lines, verdict) = verify_load_search(model, &live, mu, search, lo, hi)?;
+            checks.extend(lines);
+            Some(verdict)
+        }
+        None => None,
+    };
+    Ok(Report {
+        claim: cert.claim,
+        mu,
+        bracket: None,
+        arch: cert.arch.clone(),
+        checks,
+        limit_states,
+        load: Some(live.text()),
+        lambda_bracket,
+    })
+}
+
+/// The stated gaps must be λ_hi − λ_lo and (λ_hi − λ_lo)/λ_hi.
+fn check_gap(cert: &Certificate, lo: f64, hi: f64) -> Result<(), Rejection> {
+    let gap = hi - lo;
+    if let Some(g) = cert.gap {
+        if !g.is_finite() || (g - gap).abs() > 1e-15 * hi.abs() + 1e-300 {
+            return reject(format!(
+                "stated gap {g} differs from lambda_hi - lambda_lo = {gap}"
+            ));
+        }
+    }
+    if let Some(g) = cert.gap_relative {
+        let r = gap / hi;
+        if !g.is_finite() || (g - r).abs() > 1e-15 + 1e-9 * r.abs() {
+            return reject(format!(
+                "stated gap_relative {g} differs from (lambda_hi - lambda_lo)/lambda_hi = {r}"
+            ));
+        }
+    }
+    Ok(())
+}

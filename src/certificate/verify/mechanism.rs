@@ -1,0 +1,260 @@
+//! A state listed without a mechanism, re-checked (thickness and load certificates alike):
+//! its pattern is its whole active set (floating point), and the Farkas alternatives of the
+//! kinematic LP, proved in interval arithmetic, cover every choice of one sliding sense per
+//! section.
+
+use super::joints::check_pattern;
+use super::limit_state::LIMIT_STATE_TOL;
+use super::live::{sections, side_text, Live};
+use super::report::{reject, Rejection};
+use super::statics::{kinds, phi, Model, Ntm};
+use crate::certificate::format::{ContactKind, KinematicFarkas, PatternJoint, Side};
+use crate::certificate::interval::Interval as I;
+
+/// A contact not listed in a state's pattern must lie at least this far below zero,
+/// relative to (1 + ‖x‖₁), for the pattern to count as the state's whole active set.
+pub const INACTIVE_REL: f64 = 1e-12;
+
+/// A state of either problem, for the checks of a listed state: reactions x at thickness
+/// η and, under a live load, its multiplier λ.
+#[derive(Clone, Copy)]
+pub(super) struct StateAt<'a> {
+    /// Reactions.
+    pub(super) x: [f64; 3],
+    /// Thickness.
+    pub(super) eta: f64,
+    /// The live load and λ (load certificates).
+    pub(super) load: Option<(&'a Live, f64)>,
+}
+
+impl StateAt<'_> {
+    /// N, T, M (with β-derivatives) at the joint β on `side`: the dead actions of x,
+    /// plus λ times the live ones where the section carries the load.
+    pub(super) fn ntm(&self, model: &Model, beta: f64, side: Option<Side>) -> Ntm {
+        let b = I::point(beta);
+        let dead = model.ntm(b, self.x, self.eta);
+        match self.load {
+            Some((live, lambda)) => match live.ntm(model, b, live.carries(beta, side)) {
+                Some(l) => dead.plus(lambda, &l),
+                None => dead,
+            },
+            None => dead,
+        }
+    }
+
+    /// The point load's angle (two sections there).
+    fn split(&self) -> Option<f64> {
+        self.load.and_then(|(live, _)| live.split())
+    }
+}
+
+/// Checks a state listed without mechanism (its `pattern` and `farkas` at `state`);
+/// `Ok(true)` when the Farkas certificates prove it for every one-sense choice,
+/// `Ok(false)` when they do not cover them all, `Err` when something stated is false.
+pub(super) fn no_mechanism(
+    model: &Model,
+    mu: Option<f64>,
+    state: StateAt,
+    pattern: &[PatternJoint],
+    farkas: &[KinematicFarkas],
+    whose: &str,
+) -> Result<bool, Rejection> {
+    if !(state.eta.is_finite()
+        && state.eta > 0.0
+        && state.eta < 2.0
+        && state.x.iter().all(|v| v.is_finite()))
+    {
+        return reject(format!("{whose}: eta must lie in (0, 2) and x be finite"));
+    }
+    if let Some((_, lambda)) = state.load {
+        if !(lambda.is_finite() && lambda >= 0.0) {
+            return reject(format!(
+                "{whose}: lambda = {lambda} must be finite and >= 0"
+            ));
+        }
+    }
+    if pattern.len() > 64 {
+        return reject(format!("{whose}: more than 64 contacts"));
+    }
+    let keyed: Vec<(f64, ContactKind, Option<Side>)> =
+        pattern.iter().map(|j| (j.beta, j.kind, j.side)).collect();
+    // the pattern: valid joints, active (floating point), and the whole active set
+    check_pattern(model, pattern, mu, state.split(), whose)?;
+    let scale = 1.0 + state.x.iter().map(|v| v.abs()).sum::<f64>();
+    for &(b, k, side) in &keyed {
+        let v = phi(k, 0, &state.ntm(model, b, side), state.eta, mu).mid();
+        if v.is_nan() || v.abs() > LIMIT_STATE_TOL * scale {
+            return reject(format!(
+                "{whose}: {} at beta = {b} is not active (phi = {v:e})",
+                k.name()
+            ));
+        }
+    }
+    if let Some(joints) = &model.joints {
+        for &b in joints {
+            for side in sections(b, state.split()) {
+                let a = state.ntm(model, b, side);
+                for &k in kinds(mu) {
+                    if keyed.contains(&(b, k, side)) {
+                        continue;
+                    }
+                    let v = phi(k, 0, &a, state.eta, mu).mid();
+                    if v.is_nan() || v > -INACTIVE_REL * scale {
+                        return reject(format!(
+                            "{whose}: {} at beta = {b}{} is active or violated (phi = {v:e}) but not in the pattern",
+                            k.name(),
+                            side_text(side)
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    // every one-sense choice must be covered by a proved Farkas certificate (a section
+    // slides one way only)
+    let both: Vec<(usize, usize)> = (0..keyed.len())
+        .filter(|&i| keyed[i].1 == ContactKind::SlidePlus)
+        .filter_map(|i| {
+            (0..keyed.len())
+                .find(|&k| {
+                    keyed[k].1 == ContactKind::SlideMinus
+                        && keyed[k].0 == keyed[i].0
+                        && keyed[k].2 == keyed[i].2
+                })
+                .map(|k| (i, k))
+        })
+        .collect();
+    if both.len() > 8 {
+        return Ok(false);
+    }
+    let mut proved: Vec<&KinematicFarkas> = Vec::new();
+    for (i, f) in farkas.iter().enumerate() {
+        if f.drop.iter().any(|&d| d >= keyed.len()) {
+            return reject(format!(
+                "{whose}: farkas {i} drops a contact that is not in the pattern"
+            ));
+        }
+        if state.load.is_none() && f.v != 0.0 {
+            return reject(format!(
+                "{whose}: farkas {i} has a live-power multiplier v, but there is no live load"
+            ));
+        }
+        if prove_farkas(model, state, &keyed, f) {
+            proved.push(f);
+        } else {
+            return reject(format!(
+                "{whose}: farkas {i} does not prove that the kinematic LP is infeasible"
+            ));
+        }
+    }
+    let covered = (0..1usize << both.len()).all(|choice| {
+        let dropped: Vec<usize> = both
+            .iter()
+            .enumerate()
+            .map(|(b, &(pl, mi))| if choice >> b & 1 == 0 { mi } else { pl })
+            .collect();
+        proved
+            .iter()
+            .any(|f| f.drop.iter().all(|d| dropped.contains(d)))
+    });
+    Ok(covered)
+}
+
+/// The compatibility column of a contact at η (formulation §4), in intervals.
+pub(super) fn column(kind: ContactKind, beta: f64, eta: f64) -> [I; 3] {
+    let b = I::point(beta);
+    let (s, c) = (b.sin(), b.cos());
+    let half = I::point(0.5) * I::point(eta);
+    let (re, ri) = (I::point(1.0) + half, I::point(1.0) - half);
+    let (one, zero) = (I::point(1.0), I::point(0.0));
+    match kind {
+        ContactKind::HingeExtrados => [-(re * s), re * c, -one],
+        ContactKind::HingeIntrados => [ri * s, -(ri * c), one],
+        ContactKind::SlidePlus => [c, s, zero],
+        ContactKind::SlideMinus => [-c, -s, zero],
+    }
+}
+
+/// `c_j · y + z + u p_j` proved ≤ 0 in intervals for every kept contact, with z > 0
+/// and u ≥ 0. The external power p_j of a contact: minus the work of the weight of the
+/// blocks beyond it (between consecutive distinct kept joints) in its unit motion,
+/// p_j = −Σ_m [W_m c_j,y + ρ (sin β_{m+1} − sin β_m) c_j,ψ], W_m = β_{m+1} − β_m.
+/// Under a live load at λ the power is the total one, P_j = p_j + λ q_j, and the live
+/// power q_j ([`Live::power`]) enters again with its own multiplier v ≥ 0:
+/// `c_j · y + z + u P_j + v q_j ≤ 0`.
+pub(super) fn prove_farkas(
+    model: &Model,
+    state: StateAt,
+    pattern: &[(f64, ContactKind, Option<Side>)],
+    f: &KinematicFarkas,
+) -> bool {
+    if !(f.z > 0.0
+        && f.u >= 0.0
+        && f.v >= 0.0
+        && f.z.is_finite()
+        && f.u.is_finite()
+        && f.v.is_finite())
+        || f.y.iter().any(|v| !v.is_finite())
+    {
+        return false;
+    }
+    let kept: Vec<(f64, ContactKind, Option<Side>)> = (0..pattern.len())
+        .filter(|i| !f.drop.contains(i))
+        .map(|i| pattern[i])
+        .collect();
+    let columns: Vec<[I; 3]> = kept
+        .iter()
+        .map(|&(beta, kind, _)| column(kind, beta, state.eta))
+        .collect();
+    let work = weight_work(model, state.eta, &kept, &columns);
+    let live: Option<(Vec<I>, I)> = state.load.map(|(l, lambda)| {
+        (
+            l.power(model, &kept, &columns),
+            I::point(f.u) * I::point(lambda) + I::point(f.v),
+        )
+    });
+    let y = f.y.map(I::point);
+    (0..kept.len()).all(|i| {
+        let col = &columns[i];
+        let mut value =
+            col[0] * y[0] + col[1] * y[1] + col[2] * y[2] + I::point(f.z) - I::point(f.u) * work[i];
+        if let Some((q, k)) = &live {
+            value = value + *k * q[i];
+        }
+        value.hi <= 0.0
+    })
+}
+
+/// The work of the weight in the unit motion of each contact of `kept` (with its
+/// compatibility `columns`): Σ over the blocks after it (between consecutive distinct
+/// kept angles) of W_m c_y + ρ (sin β_{m+1} − sin β_m) c_ψ, W_m = β_{m+1} − β_m; the
+/// external power of the weight is its negative, p_j.
+pub(super) fn weight_work(
+    model: &Model,
+    eta: f64,
+    kept: &[(f64, ContactKind, Option<Side>)],
+    columns: &[[I; 3]],
+) -> Vec<I> {
+    let mut angles: Vec<f64> = kept.iter().map(|&(b, _, _)| b).collect();
+    angles.sort_by(f64::total_cmp);
+    angles.dedup();
+    let rho = model.rho(eta);
+    let blocks: Vec<(f64, I, I)> = angles
+        .windows(2)
+        .map(|w| {
+            let (a, b) = (I::point(w[0]), I::point(w[1]));
+            (w[0], b - a, rho * (b.sin() - a.sin()))
+        })
+        .collect();
+    kept.iter()
+        .zip(columns)
+        .map(|(&(beta, _, _), col)| {
+            blocks
+                .iter()
+                .filter(|(start, _, _)| *start >= beta)
+                .fold(I::point(0.0), |acc, &(_, w, wgx)| {
+                    acc + w * col[1] + wgx * col[2]
+                })
+        })
+        .collect()
+}
