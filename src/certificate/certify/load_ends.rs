@@ -135,9 +135,27 @@ pub(super) fn no_equilibrium(
             .collect();
         lp::max_margin(&r, 1.0, settings).ok()
     };
-    // s(λ) = max_x min_i (−φ_i / ‖∇ₓφ_i‖) is concave in λ: bracket its maximum by
-    // doubling, then golden section
-    let s = |l: f64| margin(l).map_or(f64::NEG_INFINITY, |m| m.1);
+    let lambda = best_multiplier(|l: f64| margin(l).map_or(f64::NEG_INFINITY, |m| m.1));
+    let Some((x, best)) = margin(lambda) else {
+        return Err(NotCertified("the margin LP failed".into()));
+    };
+    if best >= 0.0 {
+        return Err(NotCertified(format!(
+            "no Farkas certificate: the rows used here admit a state at lambda = {lambda} (a continuous arch sampled at 721 angles, or the LP's tolerance)"
+        )));
+    }
+    let pool = nearest_rows(arch, &all, lambda, x, best);
+    farkas_among(load, &pool, &cert).ok_or_else(|| {
+        NotCertified(format!(
+            "no provable Farkas certificate of no equilibrium at eta = {eta} (best margin {best:e} at lambda = {lambda})"
+        ))
+    })
+}
+
+/// The multiplier λ* ≥ 0 that maximises the x-margin of the rows,
+/// s(λ) = max_x min_i (−φ_i / ‖∇ₓφ_i‖): s is concave in λ, so its maximum is bracketed by
+/// doubling, then found by golden section.
+fn best_multiplier(s: impl Fn(f64) -> f64) -> f64 {
     let (mut a, mut b) = (0.0, 1.0);
     let mut prev = s(0.0);
     while b < 1e8 {
@@ -160,19 +178,22 @@ pub(super) fn no_equilibrium(
             hi = m2;
         }
     }
-    let lambda = if s(0.0) >= s(0.5 * (lo + hi)) {
+    if s(0.0) >= s(0.5 * (lo + hi)) {
         0.0
     } else {
         0.5 * (lo + hi)
-    };
-    let Some((x, best)) = margin(lambda) else {
-        return Err(NotCertified("the margin LP failed".into()));
-    };
-    if best >= 0.0 {
-        return Err(NotCertified(format!(
-            "no Farkas certificate: the rows used here admit a state at lambda = {lambda} (a continuous arch sampled at 721 angles, or the LP's tolerance)"
-        )));
     }
+}
+
+/// The Farkas pool at λ* (where the best state `x` has margin `best` < 0): the rows of `all`
+/// nearest to binding there, and the row −λ ≤ 0 (label `None`).
+fn nearest_rows(
+    arch: &Arch,
+    all: &[(Loaded, [f64; 4], f64)],
+    lambda: f64,
+    x: Reactions,
+    best: f64,
+) -> Vec<(Option<Loaded>, Row)> {
     // the rows nearest to binding there
     let mut near: Vec<(f64, usize)> = all
         .iter()
@@ -218,6 +239,16 @@ pub(super) fn no_equilibrium(
             c: 0.0,
         },
     ));
+    pool
+}
+
+/// The certificate of no equilibrium from a proved Farkas combination among the `pool`'s
+/// rows in (h, v, w, λ), or among fewer of their coordinates.
+fn farkas_among(
+    load: &LiveLoad,
+    pool: &[(Option<Loaded>, Row)],
+    cert: &Certificate,
+) -> Option<Certificate> {
     let with = |labelled: &[(Option<Loaded>, f64)]| {
         let mut c = cert.clone();
         let joints: Vec<(Loaded, f64)> = labelled
@@ -244,20 +275,15 @@ pub(super) fn no_equilibrium(
     let point = matches!(load, LiveLoad::Point { .. });
     let loaded = |l: &Option<Loaded>| point && l.is_some_and(|l| carries(load, l));
     let tries = [
-        (pool.clone(), 4),
-        (reduced(&pool, slides, &[2]), 3),
-        (reduced(&pool, unloaded, &[3]), 3),
-        (reduced(&pool, |l| slides(l) && unloaded(l), &[2, 3]), 2),
-        (reduced(&pool, loaded, &[3]), 3),
-        (reduced(&pool, |l| slides(l) && loaded(l), &[2, 3]), 2),
+        (pool.to_vec(), 4),
+        (reduced(pool, slides, &[2]), 3),
+        (reduced(pool, unloaded, &[3]), 3),
+        (reduced(pool, |l| slides(l) && unloaded(l), &[2, 3]), 2),
+        (reduced(pool, loaded, &[3]), 3),
+        (reduced(pool, |l| slides(l) && loaded(l), &[2, 3]), 2),
     ];
     tries
         .iter()
         .find_map(|(p, d)| find_farkas(p, *d, |l| verify(&with(l)).is_ok()))
         .map(|l| with(&l))
-        .ok_or_else(|| {
-            NotCertified(format!(
-                "no provable Farkas certificate of no equilibrium at eta = {eta} (best margin {best:e} at lambda = {lambda})"
-            ))
-        })
 }

@@ -23,7 +23,7 @@ use super::load_search::verify_load_search;
 use super::load_unbounded::{prove_recession, prove_transfer};
 use super::report::{reject, Rejection, Report};
 use super::statics::Model;
-use crate::certificate::format::{Certificate, Claim};
+use crate::certificate::format::{Certificate, Claim, MultiplierSides};
 
 /// Verifies a certificate with a `load` section (`cert.load` must be present).
 pub(super) fn verify_load(cert: &Certificate, model: &Model) -> Result<Report, Rejection> {
@@ -51,81 +51,17 @@ pub(super) fn verify_load(cert: &Certificate, model: &Model) -> Result<Report, R
     let mut checks = Vec::new();
     let lambda_bracket = match cert.claim {
         Claim::LargestMultiplier => {
-            let (Some(adm), Some(inf), None, None) = (
-                &sides.admissible,
-                &sides.infeasible,
-                sides.transfer,
-                &sides.recession,
-            ) else {
-                return reject("largest_multiplier: needs multiplier.admissible and multiplier.infeasible (and no transfer or recession)");
-            };
-            let Some(lambda_hi) = inf.lambda else {
-                return reject(
-                    "largest_multiplier: multiplier.infeasible.lambda (lambda_hi) is missing",
-                );
-            };
-            check_state(adm, "multiplier.admissible")?;
-            if !(lambda_hi.is_finite() && adm.lambda <= lambda_hi) {
-                return reject(format!(
-                    "need 0 <= lambda_lo <= lambda_hi, found lambda_lo = {}, lambda_hi = {lambda_hi}",
-                    adm.lambda
-                ));
-            }
-            let pieces = prove_state(model, &live, adm, mu, "admissible side")?;
-            checks.push(format!(
-                "proved (interval arithmetic): the state x = [{}, {}, {}] is admissible at lambda_lo = {} {} ({pieces} enclosures)",
-                adm.x[0], adm.x[1], adm.x[2], adm.lambda, everywhere(model, &live)
-            ));
-            let margin = prove_farkas_at(model, &live, inf, lambda_hi, mu)?;
-            checks.push(format!(
-                "proved (interval arithmetic): no state is admissible at lambda_hi = {lambda_hi} (Farkas on {} joints{}, margin {margin:.3e}); the admissible (x, lambda) are convex, so none at any lambda >= lambda_hi",
-                inf.joints.len(),
-                if inf.joints.len() == 3 { ", sliding rows in (h, v): w does not enter them" } else { "" }
-            ));
-            check_gap(cert, adm.lambda, lambda_hi)?;
-            Some((adm.lambda, Some(lambda_hi)))
+            Some(largest_multiplier(cert, model, &live, sides, &mut checks)?)
         }
-        Claim::UnboundedMultiplier => {
-            let (Some(adm), None) = (&sides.admissible, &sides.infeasible) else {
-                return reject("unbounded_multiplier: needs multiplier.admissible and a transfer or a recession direction (and no infeasible side)");
-            };
-            check_state(adm, "multiplier.admissible")?;
-            if cert.gap.is_some() || cert.gap_relative.is_some() {
-                return reject("unbounded_multiplier: a gap is stated, but there is no bracket");
-            }
-            let pieces = prove_state(model, &live, adm, mu, "admissible side")?;
-            checks.push(format!(
-                "proved (interval arithmetic): the state x = [{}, {}, {}] is admissible at lambda = {} {} ({pieces} enclosures)",
-                adm.x[0], adm.x[1], adm.x[2], adm.lambda, everywhere(model, &live)
-            ));
-            checks.push(match (sides.transfer, &sides.recession) {
-                (Some(transfer), None) => prove_transfer(model, &live, transfer, mu)?,
-                (None, Some(d)) => prove_recession(model, &live, d, mu)?,
-                _ => return reject("unbounded_multiplier: needs exactly one of multiplier.transfer and multiplier.recession"),
-            });
-            Some((adm.lambda, None))
-        }
+        Claim::UnboundedMultiplier => Some(unbounded_multiplier(
+            cert,
+            model,
+            &live,
+            sides,
+            &mut checks,
+        )?),
         Claim::NoEquilibrium => {
-            let (None, Some(inf), None, None) = (
-                &sides.admissible,
-                &sides.infeasible,
-                sides.transfer,
-                &sides.recession,
-            ) else {
-                return reject("no_equilibrium under a load: needs multiplier.infeasible only");
-            };
-            if inf.lambda.is_some() {
-                return reject("no_equilibrium under a load: multiplier.infeasible.lambda must be null (the certificate covers every lambda >= 0)");
-            }
-            if cert.gap.is_some() || cert.gap_relative.is_some() {
-                return reject("no_equilibrium: a gap is stated, but there is no bracket");
-            }
-            let margin = prove_farkas_any(model, &live, inf, mu)?;
-            checks.push(format!(
-                "proved (interval arithmetic): no state (h, v, w, lambda) with lambda >= 0 is admissible (Farkas on {} joints{}, margin {margin:.3e})",
-                inf.joints.len(),
-                if inf.lambda_row.is_some() { " and the row -lambda <= 0" } else { "" }
-            ));
+            no_equilibrium(cert, model, &live, sides, &mut checks)?;
             None
         }
         Claim::LeastThickness => unreachable!("checked above"),
@@ -151,6 +87,112 @@ pub(super) fn verify_load(cert: &Certificate, model: &Model) -> Result<Report, R
         load: Some(live.text()),
         lambda_bracket,
     })
+}
+
+/// `largest_multiplier`: the state at λ_lo proved admissible and the Farkas certificate
+/// at λ_hi proved; pushes the report's lines and returns (λ_lo, λ_hi).
+fn largest_multiplier(
+    cert: &Certificate,
+    model: &Model,
+    live: &Live,
+    sides: &MultiplierSides,
+    checks: &mut Vec<String>,
+) -> Result<(f64, Option<f64>), Rejection> {
+    let mu = cert.mu;
+    let (Some(adm), Some(inf), None, None) = (
+        &sides.admissible,
+        &sides.infeasible,
+        sides.transfer,
+        &sides.recession,
+    ) else {
+        return reject("largest_multiplier: needs multiplier.admissible and multiplier.infeasible (and no transfer or recession)");
+    };
+    let Some(lambda_hi) = inf.lambda else {
+        return reject("largest_multiplier: multiplier.infeasible.lambda (lambda_hi) is missing");
+    };
+    check_state(adm, "multiplier.admissible")?;
+    if !(lambda_hi.is_finite() && adm.lambda <= lambda_hi) {
+        return reject(format!(
+            "need 0 <= lambda_lo <= lambda_hi, found lambda_lo = {}, lambda_hi = {lambda_hi}",
+            adm.lambda
+        ));
+    }
+    let pieces = prove_state(model, live, adm, mu, "admissible side")?;
+    checks.push(format!(
+        "proved (interval arithmetic): the state x = [{}, {}, {}] is admissible at lambda_lo = {} {} ({pieces} enclosures)",
+        adm.x[0], adm.x[1], adm.x[2], adm.lambda, everywhere(model, live)
+    ));
+    let margin = prove_farkas_at(model, live, inf, lambda_hi, mu)?;
+    checks.push(format!(
+        "proved (interval arithmetic): no state is admissible at lambda_hi = {lambda_hi} (Farkas on {} joints{}, margin {margin:.3e}); the admissible (x, lambda) are convex, so none at any lambda >= lambda_hi",
+        inf.joints.len(),
+        if inf.joints.len() == 3 { ", sliding rows in (h, v): w does not enter them" } else { "" }
+    ));
+    check_gap(cert, adm.lambda, lambda_hi)?;
+    Ok((adm.lambda, Some(lambda_hi)))
+}
+
+/// `unbounded_multiplier`: the state proved admissible and the transfer or the recession
+/// direction proved to keep it so; pushes the report's lines and returns (λ, `None`).
+fn unbounded_multiplier(
+    cert: &Certificate,
+    model: &Model,
+    live: &Live,
+    sides: &MultiplierSides,
+    checks: &mut Vec<String>,
+) -> Result<(f64, Option<f64>), Rejection> {
+    let mu = cert.mu;
+    let (Some(adm), None) = (&sides.admissible, &sides.infeasible) else {
+        return reject("unbounded_multiplier: needs multiplier.admissible and a transfer or a recession direction (and no infeasible side)");
+    };
+    check_state(adm, "multiplier.admissible")?;
+    if cert.gap.is_some() || cert.gap_relative.is_some() {
+        return reject("unbounded_multiplier: a gap is stated, but there is no bracket");
+    }
+    let pieces = prove_state(model, live, adm, mu, "admissible side")?;
+    checks.push(format!(
+        "proved (interval arithmetic): the state x = [{}, {}, {}] is admissible at lambda = {} {} ({pieces} enclosures)",
+        adm.x[0], adm.x[1], adm.x[2], adm.lambda, everywhere(model, live)
+    ));
+    checks.push(match (sides.transfer, &sides.recession) {
+        (Some(transfer), None) => prove_transfer(model, live, transfer, mu)?,
+        (None, Some(d)) => prove_recession(model, live, d, mu)?,
+        _ => return reject("unbounded_multiplier: needs exactly one of multiplier.transfer and multiplier.recession"),
+    });
+    Ok((adm.lambda, None))
+}
+
+/// `no_equilibrium` under a load: the Farkas certificate over every λ ≥ 0 proved; pushes
+/// the report's line.
+fn no_equilibrium(
+    cert: &Certificate,
+    model: &Model,
+    live: &Live,
+    sides: &MultiplierSides,
+    checks: &mut Vec<String>,
+) -> Result<(), Rejection> {
+    let mu = cert.mu;
+    let (None, Some(inf), None, None) = (
+        &sides.admissible,
+        &sides.infeasible,
+        sides.transfer,
+        &sides.recession,
+    ) else {
+        return reject("no_equilibrium under a load: needs multiplier.infeasible only");
+    };
+    if inf.lambda.is_some() {
+        return reject("no_equilibrium under a load: multiplier.infeasible.lambda must be null (the certificate covers every lambda >= 0)");
+    }
+    if cert.gap.is_some() || cert.gap_relative.is_some() {
+        return reject("no_equilibrium: a gap is stated, but there is no bracket");
+    }
+    let margin = prove_farkas_any(model, live, inf, mu)?;
+    checks.push(format!(
+        "proved (interval arithmetic): no state (h, v, w, lambda) with lambda >= 0 is admissible (Farkas on {} joints{}, margin {margin:.3e})",
+        inf.joints.len(),
+        if inf.lambda_row.is_some() { " and the row -lambda <= 0" } else { "" }
+    ));
+    Ok(())
 }
 
 /// The stated gaps must be λ_hi − λ_lo and (λ_hi − λ_lo)/λ_hi.

@@ -46,6 +46,23 @@ pub(super) fn verify_load_search(
     hi: Option<f64>,
 ) -> Result<(Vec<String>, String), Rejection> {
     let mut checks = Vec::new();
+    let unique = check_listing(search, lo)?;
+    limit_states(model, live, mu, search, hi, &mut checks)?;
+    check_mechanism_at_static(search, lo, hi)?;
+    static_state(model, live, mu, search, (lo, hi), &mut checks)?;
+    method_evidence(model, live, mu, search, (lo, hi), &mut checks)?;
+    if search.lambda_min > 0.0 {
+        checks.push(format!(
+            "not proved: lambda_min = {} (below it the arch does not stand; the state there is an unloading limit, never a collapse)",
+            search.lambda_min
+        ));
+    }
+    Ok((checks, verdict(search, unique)))
+}
+
+/// The listing agrees with itself: `unique` (returned) with the limit states listed, the
+/// collapse multiplier with the least of them, λ_min in [0, λ_lo].
+fn check_listing(search: &LoadSearchEvidence, lo: f64) -> Result<bool, Rejection> {
     let states = &search.limit_states;
     let unique = states.len() == 1
         && states[0]
@@ -77,7 +94,20 @@ pub(super) fn verify_load_search(
             search.lambda_min
         ));
     }
-    // the listed limit states
+    Ok(unique)
+}
+
+/// The listed limit states, each checked in floating point (ascending, below λ_hi,
+/// admissible, with a mechanism); pushes the report's lines.
+fn limit_states(
+    model: &Model,
+    live: &Live,
+    mu: Option<f64>,
+    search: &LoadSearchEvidence,
+    hi: Option<f64>,
+    checks: &mut Vec<String>,
+) -> Result<(), Rejection> {
+    let states = &search.limit_states;
     let mut last = f64::NEG_INFINITY;
     for (i, ls) in states.iter().enumerate() {
         let whose = format!("load_search: limit state {i}");
@@ -107,7 +137,16 @@ pub(super) fn verify_load_search(
             c.lambda
         ));
     }
-    // the state at λ_static
+    Ok(())
+}
+
+/// `mechanism_at_static` agrees with the limit states listed in [λ_lo, λ_hi].
+fn check_mechanism_at_static(
+    search: &LoadSearchEvidence,
+    lo: f64,
+    hi: Option<f64>,
+) -> Result<(), Rejection> {
+    let states = &search.limit_states;
     // a state at λ_static: an isolated one in the bracket, or a continuum reaching it
     let isolated_at_static = states
         .iter()
@@ -134,11 +173,28 @@ pub(super) fn verify_load_search(
         }
         _ => {}
     }
-    let state_at = |lambda: f64, x: [f64; 3]| StateAt {
+    Ok(())
+}
+
+/// The state at λ under the live load, at the load's thickness.
+fn state_at(live: &Live, lambda: f64, x: [f64; 3]) -> StateAt<'_> {
+    StateAt {
         x,
         eta: live.eta,
         load: Some((live, lambda)),
-    };
+    }
+}
+
+/// The state at λ_static listed without a mechanism, proved to carry none; pushes the
+/// report's line.
+fn static_state(
+    model: &Model,
+    live: &Live,
+    mu: Option<f64>,
+    search: &LoadSearchEvidence,
+    (lo, hi): (f64, Option<f64>),
+    checks: &mut Vec<String>,
+) -> Result<(), Rejection> {
     match (&search.static_state, hi) {
         (Some(_), _) if search.mechanism_at_static => {
             return reject("load_search: a static_state without mechanism is listed, but mechanism_at_static is true")
@@ -156,7 +212,7 @@ pub(super) fn verify_load_search(
             let proved = no_mechanism(
                 model,
                 mu,
-                state_at(p.lambda, p.x),
+                state_at(live, p.lambda, p.x),
                 &p.pattern,
                 &p.farkas,
                 "load_search: static_state",
@@ -181,7 +237,20 @@ pub(super) fn verify_load_search(
         ),
         _ => {}
     }
-    // the method's own evidence
+    Ok(())
+}
+
+/// The method's own evidence: the sweep's points without a mechanism, virtual work at
+/// μ = ∞, or the refinement (not re-checked); pushes the report's lines.
+fn method_evidence(
+    model: &Model,
+    live: &Live,
+    mu: Option<f64>,
+    search: &LoadSearchEvidence,
+    (lo, hi): (f64, Option<f64>),
+    checks: &mut Vec<String>,
+) -> Result<(), Rejection> {
+    let states = &search.limit_states;
     match search.method {
         LoadSearchMethod::Sweep => {
             if model.joints.is_none() {
@@ -204,7 +273,7 @@ pub(super) fn verify_load_search(
                 if no_mechanism(
                     model,
                     mu,
-                    state_at(p.lambda, p.x),
+                    state_at(live, p.lambda, p.x),
                     &p.pattern,
                     &p.farkas,
                     &format!("load_search: no_mechanism {i}"),
@@ -255,12 +324,12 @@ pub(super) fn verify_load_search(
             checks.push("not re-checked: that the refined limit states of two discretisations agreed (method refined); the listed states are checked above".into());
         }
     }
-    if search.lambda_min > 0.0 {
-        checks.push(format!(
-            "not proved: lambda_min = {} (below it the arch does not stand; the state there is an unloading limit, never a collapse)",
-            search.lambda_min
-        ));
-    }
+    Ok(())
+}
+
+/// The one-line verdict on the limit states listed.
+fn verdict(search: &LoadSearchEvidence, unique: bool) -> String {
+    let states = &search.limit_states;
     let verdict = match (states.len(), unique) {
         (0, _) => "no limit state: the load never drives a mechanism".to_string(),
         (1, true) => format!(
@@ -282,17 +351,14 @@ pub(super) fn verify_load_search(
             }
         ),
     };
-    Ok((
-        checks,
-        format!(
-            "the search ({}) lists {verdict}",
-            match search.method {
-                LoadSearchMethod::Sweep => "sweep",
-                LoadSearchMethod::Associative => "associative",
-                LoadSearchMethod::Refined => "refined",
-            }
-        ),
-    ))
+    format!(
+        "the search ({}) lists {verdict}",
+        match search.method {
+            LoadSearchMethod::Sweep => "sweep",
+            LoadSearchMethod::Associative => "associative",
+            LoadSearchMethod::Refined => "refined",
+        }
+    )
 }
 
 /// The floating-point consistency checks of a listed limit state under the load.
@@ -328,13 +394,23 @@ fn check_limit_state(
     if (ls.rates.iter().sum::<f64>() - 1.0).abs() > tol {
         return reject(format!("{whose}: rates do not sum to 1"));
     }
-    let state = StateAt {
-        x: ls.x,
-        eta: live.eta,
-        load: Some((live, ls.lambda)),
-    };
+    let state = state_at(live, ls.lambda, ls.x);
+    check_active(model, live, mu, ls, state, whose)?;
+    check_admissible(model, live, mu, ls, state, whose)?;
+    check_mechanism(model, live, ls, whose)
+}
+
+/// The pattern is active at the state; one sliding sense per section.
+fn check_active(
+    model: &Model,
+    live: &Live,
+    mu: Option<f64>,
+    ls: &LoadLimitStateCert,
+    state: StateAt,
+    whose: &str,
+) -> Result<(), Rejection> {
+    let tol = LIMIT_STATE_TOL;
     let scale = 1.0 + ls.x.iter().map(|v| v.abs()).sum::<f64>();
-    // the pattern is active; one sliding sense per section
     for (i, j) in ls.pattern.iter().enumerate() {
         let v = phi(j.kind, 0, &state.ntm(model, j.beta, j.side), live.eta, mu).mid();
         if v.is_nan() || v.abs() > tol * scale {
@@ -361,7 +437,21 @@ fn check_limit_state(
             ));
         }
     }
-    // admissible at every joint, or at samples of each piece of a continuous arch
+    Ok(())
+}
+
+/// The state admissible at every joint, or at [`SAMPLES`] angles of each piece of a
+/// continuous arch (both sides of a loaded section).
+fn check_admissible(
+    model: &Model,
+    live: &Live,
+    mu: Option<f64>,
+    ls: &LoadLimitStateCert,
+    state: StateAt,
+    whose: &str,
+) -> Result<(), Rejection> {
+    let tol = LIMIT_STATE_TOL;
+    let scale = 1.0 + ls.x.iter().map(|v| v.abs()).sum::<f64>();
     let angles: Vec<(f64, Option<Side>)> = match &model.joints {
         Some(js) => js
             .iter()
@@ -401,7 +491,17 @@ fn check_limit_state(
             }
         }
     }
-    // B λ̇ = 0, total power ≥ 0, live power > 0 (and as stated)
+    Ok(())
+}
+
+/// The mechanism of the rates: B λ̇ = 0, total power ≥ 0, live power > 0 (and as stated).
+fn check_mechanism(
+    model: &Model,
+    live: &Live,
+    ls: &LoadLimitStateCert,
+    whose: &str,
+) -> Result<(), Rejection> {
+    let tol = LIMIT_STATE_TOL;
     let kept: Vec<(f64, ContactKind, Option<Side>)> = ls
         .pattern
         .iter()

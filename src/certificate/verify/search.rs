@@ -42,8 +42,17 @@ pub(super) fn verify_search(
     eta_lo: f64,
     safe: &SafeSide,
 ) -> Result<(Vec<String>, String), Rejection> {
-    let mu = cert.mu;
     let mut checks = Vec::new();
+    let count = check_listing(cert, search)?;
+    least_state(model, cert.mu, search, eta_lo, safe, &mut checks)?;
+    limit_states_above(model, cert.mu, search, eta_lo, safe, &mut checks)?;
+    method_evidence(model, cert.mu, search, safe, &mut checks)?;
+    Ok((checks, verdict(search, count)))
+}
+
+/// The listing agrees with itself and with the certificate: `unique` with the number of
+/// limit states listed (returned), the certificate's limit state the least one.
+fn check_listing(cert: &Certificate, search: &SearchEvidence) -> Result<usize, Rejection> {
     let count = usize::from(search.mechanism_at_eta) + search.limit_states_above.len();
     if search.unique != (count == 1) {
         return reject(format!(
@@ -69,7 +78,19 @@ pub(super) fn verify_search(
     if search.mechanism_at_eta && cert.limit_state.is_none() {
         return reject("search: mechanism_at_eta is true but no limit_state is given");
     }
-    // the least admissible state without a mechanism
+    Ok(count)
+}
+
+/// The least admissible state without a mechanism, proved to carry none (or said not to
+/// be attained); pushes the report's line.
+fn least_state(
+    model: &Model,
+    mu: Option<f64>,
+    search: &SearchEvidence,
+    eta_lo: f64,
+    safe: &SafeSide,
+    checks: &mut Vec<String>,
+) -> Result<(), Rejection> {
     if let Some(ls) = &search.least_state {
         if search.mechanism_at_eta {
             return reject(
@@ -99,7 +120,19 @@ pub(super) fn verify_search(
     } else if !search.mechanism_at_eta {
         checks.push("no least admissible state is listed: eta_s is not attained by a bounded state (an infimum), so no limit state exists there".into());
     }
-    // limit states above η_s
+    Ok(())
+}
+
+/// The limit states listed above η_s, each checked in floating point (ascending, finite,
+/// admissible, with a mechanism); pushes the report's line.
+fn limit_states_above(
+    model: &Model,
+    mu: Option<f64>,
+    search: &SearchEvidence,
+    eta_lo: f64,
+    safe: &SafeSide,
+    checks: &mut Vec<String>,
+) -> Result<(), Rejection> {
     let mut last = safe.eta;
     for (i, ls) in search.limit_states_above.iter().enumerate() {
         let whose = format!("search: limit state above eta_s {i}");
@@ -127,7 +160,18 @@ pub(super) fn verify_search(
                 .join(", ")
         ));
     }
-    // the method's own evidence
+    Ok(())
+}
+
+/// The method's own evidence: the sweep's points without a mechanism, the safe state
+/// strictly inside at μ = ∞, or the refinement (not re-checked); pushes the report's lines.
+fn method_evidence(
+    model: &Model,
+    mu: Option<f64>,
+    search: &SearchEvidence,
+    safe: &SafeSide,
+    checks: &mut Vec<String>,
+) -> Result<(), Rejection> {
     match search.method {
         SearchMethod::Sweep => {
             if model.joints.is_none() {
@@ -173,6 +217,11 @@ pub(super) fn verify_search(
             checks.push("not re-checked: that the refined limit states of two discretisations agreed (method refined); the listed states are checked above".into());
         }
     }
+    Ok(())
+}
+
+/// The one-line verdict on the `count` limit states listed.
+fn verdict(search: &SearchEvidence, count: usize) -> String {
     let verdict = match (count, search.mechanism_at_eta) {
         (0, _) => {
             "no limit state with eta in [eta_s, 2): the arch is safe from eta_s on".to_string()
@@ -182,13 +231,10 @@ pub(super) fn verify_search(
             .to_string(),
         (n, _) => format!("{n} limit states with eta in [eta_s, 2) (not unique)"),
     };
-    Ok((
-        checks,
-        format!(
-            "the search ({}) lists {verdict}",
-            method_name(search.method)
-        ),
-    ))
+    format!(
+        "the search ({}) lists {verdict}",
+        method_name(search.method)
+    )
 }
 
 /// [`no_mechanism`] for a state of the thickness problem.
