@@ -1,6 +1,7 @@
-//! The two ends of the load question for a certificate (see [`certify_load()`](super::certify_load)): no
-//! admissible multiplier at all (`no_equilibrium`, a Farkas certificate in (h, v, w, λ)),
-//! or no largest one (`unbounded_multiplier`, a state and a transfer or recession direction).
+//! The two ends of the load question for a certificate (see
+//! [`certify_load()`](super::certify_load)): no admissible multiplier at all
+//! (`no_equilibrium`, a Farkas certificate in (h, v, w, λ)), or no largest one
+//! (`unbounded_multiplier`, a state and a transfer or recession direction).
 
 use super::loaded::{at_lambda, carries, cert_joints, Loaded};
 use super::sides::{find_farkas, reduced, Row};

@@ -1,6 +1,7 @@
-//! The `load_search` section of a load certificate (see [`certify_load()`](super::certify_load)): the
-//! survey's limit states with their mechanisms, and the Farkas alternative of the kinematic
-//! LP with the live power for every state listed without a mechanism.
+//! The `load_search` section of a load certificate (see
+//! [`certify_load()`](super::certify_load)): the survey's limit states with their
+//! mechanisms, and the Farkas alternative of the kinematic LP with the live power for every
+//! state listed without a mechanism.
 
 use super::kinematic::farkas_cover;
 use super::loaded::{joint, sorted, Loaded};

@@ -22,9 +22,9 @@
 //!   `load_search`).
 //!
 //! This file holds the two entry points; each file below it imports only files further
-//! down: [`thickness`] (with [`search`]) and the load files [`load_bracket`], [`load_ends`],
-//! [`load_search`] build on the toolboxes [`loaded`], [`sides`], [`kinematic`] and
-//! [`blank`], and on the verifier.
+//! down: `thickness.rs` (with `search.rs`) and the load files `load_bracket.rs`,
+//! `load_ends.rs`, `load_search.rs` build on the toolboxes `loaded.rs`, `sides.rs`,
+//! `kinematic.rs` and `blank.rs`, and on the verifier.
 
 mod blank;
 mod kinematic;

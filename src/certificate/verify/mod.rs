@@ -16,10 +16,10 @@
 //!   (B λ = 0, λ ≥ 0, Σ λ = 1, L_e ≥ 0, complementarity) — evidence, not proof.
 //!
 //! This file is the dispatcher [`verify()`]; each file below it imports only files further
-//! down, and none imports the solver: the vocabulary ([`report`], [`statics`], [`live`]),
-//! the proofs and checks ([`enclosure`], [`farkas`], [`joints`], [`limit_state`],
-//! [`mechanism`], [`input`]), and the claims ([`thickness`] with [`search`]; [`load`] with
-//! [`load_admissible`], [`load_farkas`], [`load_unbounded`], [`load_search`]).
+//! down, and none imports the solver: the vocabulary (`report.rs`, `statics.rs`, `live.rs`),
+//! the proofs and checks (`enclosure.rs`, `farkas.rs`, `joints.rs`, `limit_state.rs`,
+//! `mechanism.rs`, `input.rs`), and the claims (`thickness.rs` with `search.rs`; `load.rs`
+//! with `load_admissible.rs`, `load_farkas.rs`, `load_unbounded.rs`, `load_search.rs`).
 
 mod enclosure;
 mod farkas;

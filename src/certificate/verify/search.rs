@@ -7,7 +7,8 @@
 //!   u ≥ 0, so no rates λ ≥ 0, Σ λ = 1, B λ = 0, L_e = p · λ ≥ 0 exist — for every choice
 //!   of one sliding sense at a joint where both are listed. That the listed contacts are
 //!   the state's whole active set is *checked* in floating point (for a discrete arch,
-//!   every other contact at every joint at least [`INACTIVE_REL`] below zero).
+//!   every other contact at every joint at least
+//!   [`INACTIVE_REL`](super::mechanism::INACTIVE_REL) below zero).
 //! * **Limit states above η_s**: admissibility at the joints (floating point) and the
 //!   consistency of the mechanism, as for the certificate's limit state.
 //! * **μ = ∞** (`hinges_only`): the safe state is *proved* to lie strictly inside P(η_hi)
