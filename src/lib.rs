@@ -53,6 +53,7 @@ pub mod certificate;
 pub mod cli;
 pub mod collapse_mode;
 pub mod contact;
+pub mod family;
 pub mod figures;
 pub mod friction;
 pub mod kinematics;

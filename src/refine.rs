@@ -1,55 +1,80 @@
 //! Exact refinement of a pattern (formulation §5): Newton on the pattern's system
 //!
-//!   φ_i(β_i; x, η) = 0            for every contact i,
-//!   dφ_i/dβ(β_i; x, η) = 0        for every free (interior, continuous) contact,
+//!   φ_i(β_i; x, t, μ) = 0          for every contact i,
+//!   dφ_i/dβ(β_i; x, t, μ) = 0      for every free (interior, continuous) contact,
 //!
-//! in the unknowns z = (h, v, w, η, free β_i), with the exact derivatives of
-//! [`crate::statics`].
+//! in the unknowns z = (h, v, w, the unknown parameters, free β_i), with the exact
+//! derivatives of the rows of a problem [`Family`] (the thickness family: t = η; a load:
+//! t = λ). This is the one Newton of the crate: every family calls it.
 //!
-//! With four or more contacts this fixes the state (a vertex; an over-determined but
-//! consistent system, as symmetry gives, is solved by Gauss–Newton, which keeps
-//! quadratic convergence at a zero residual). With fewer, the continuum's curvature
-//! matters: the least η sits where the envelope of the active tangencies is
-//! stationary, and the system is completed by the optimality (KKT) conditions of
-//! min η subject to φ_i ≤ 0 with multipliers y_i:
+//! With as many contacts as unknowns (less the free angles) this fixes the state (a
+//! vertex; an over-determined but consistent system, as symmetry gives, is solved by
+//! Gauss–Newton, which keeps quadratic convergence at a zero residual). With fewer, the
+//! continuum's curvature matters: the optimum sits where the envelope of the active
+//! tangencies is stationary, and the system is completed by the optimality (KKT)
+//! conditions of min t (or max t) subject to φ_i ≤ 0 with multipliers y_i:
 //!
-//!   Σ y_i ∇ₓφ_i = 0,   1 + Σ y_i ∂φ_i/∂η = 0,
+//!   Σ y_i ∇ₓφ_i = 0,   Σ y_i ∂φ_i/∂t = ∓1,
 //!
 //! which are square again (unknowns y_i added). Linear steps use an SVD with column
 //! equilibration (minimum-norm steps where the Jacobian is rank-deficient).
 
 use crate::arch::Arch;
 use crate::contact::Contact;
+use crate::family::{Family, Param, Rows, Tagged, Thickness};
 use crate::settings::Settings;
 use crate::state::State;
-use crate::statics::{actions, Reactions};
+use crate::statics::Reactions;
 use nalgebra::{DMatrix, DVector};
 
-/// Which parameters are unknowns of a system, and what its KKT completion minimises.
+/// Which parameters are unknowns of a system.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Unknowns {
-    /// The thickness problem at fixed μ: unknown η; KKT minimises η.
-    Eta,
-    /// The friction-only problem (sliding contacts only): unknown μ; KKT minimises μ.
+    /// The family's parameter t at fixed μ (η of the thickness problem, λ of a load).
+    T,
+    /// The friction-only problem (sliding contacts only): unknown μ; its rows do not
+    /// contain w, so three contacts fix it.
     Mu,
-    /// A corner: both η and μ unknown (no KKT completion; the union of two
-    /// patterns determines the state).
-    EtaMu,
+    /// A corner: both t and μ unknown (no KKT completion; the union of two patterns
+    /// determines the state).
+    TMu,
+}
+
+/// What the KKT completion of an under-determined system optimises: its one unknown
+/// parameter, least or largest.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Objective {
+    /// The least value (η_s, μ_ms, λ_min).
+    Least,
+    /// The largest value (λ_static).
+    Largest,
+}
+
+impl Objective {
+    /// Σ y_i ∂φ_i/∂p = `sign` at the optimum.
+    fn sign(self) -> f64 {
+        match self {
+            Objective::Least => -1.0,
+            Objective::Largest => 1.0,
+        }
+    }
 }
 
 /// A converged solution of a pattern's system.
 #[derive(Debug, Clone)]
-pub struct Refined {
+pub struct Refined<T = ()> {
     /// Reactions x.
     pub x: Reactions,
-    /// Thickness ratio η.
-    pub eta: f64,
+    /// The family's parameter t (η for the thickness family).
+    pub t: f64,
     /// Friction coefficient μ.
     pub mu: f64,
     /// The contacts with their refined angles.
     pub contacts: Vec<Contact>,
+    /// The contacts' row tags (as given).
+    pub tags: Vec<T>,
     /// KKT multipliers of the contacts when the optimality conditions were used
-    /// (fewer than four contacts), else empty.
+    /// (fewer contacts than unknowns), else empty.
     pub multipliers: Vec<f64>,
     /// Final residual ‖F‖∞, scaled by 1 + ‖x‖₁.
     pub residual: f64,
@@ -62,103 +87,78 @@ pub struct Refined {
 pub enum NewtonFailure {
     /// The pattern is empty.
     Empty,
-    /// The iterate left the domain (η ∉ (0, 2), μ ≤ 0 or a joint outside the arch).
+    /// The iterate left the domain (t or μ outside the family's domain, or a joint outside
+    /// the arch).
     LeftDomain,
     /// No convergence within the iteration limit (residual reached).
     NoConvergence(f64),
-    /// Converged, but a KKT multiplier is negative: not a least thickness.
+    /// Converged, but a KKT multiplier is negative: not the optimum.
     NegativeMultiplier,
 }
 
-/// The unknowns, flattened: x (3), the parameters (η and/or μ), free β (k), then
+/// A starting point: reactions, the family's parameter and the friction (the values of
+/// the unknown parameters are where Newton starts, those of the others stay fixed).
+#[derive(Debug, Clone, Copy)]
+pub struct Start {
+    /// Reactions x.
+    pub x: Reactions,
+    /// The family's parameter t.
+    pub t: f64,
+    /// The friction coefficient μ.
+    pub mu: f64,
+}
+
+/// The unknowns, flattened: x (3), the parameters (t and/or μ), free β (k), then
 /// y (m) in KKT form.
-struct System<'a> {
-    arch: &'a Arch,
-    eta: f64,
+struct System<'a, F: Family> {
+    family: &'a F,
+    t: f64,
     mu: f64,
     unknowns: Unknowns,
+    objective: Objective,
     contacts: Vec<Contact>,
+    tags: Vec<F::Tag>,
     free: Vec<usize>,
     kkt: bool,
 }
 
-/// Partial derivatives of one activation function (β-derivative `order`) with
-/// respect to the parameter p ∈ {η, μ}: the value ∂φ/∂p, its x-gradient and ∂²φ/∂p².
-fn d_param(
-    arch: &Arch,
-    a: &crate::statics::Actions,
-    c: &Contact,
-    order: usize,
-    x: &Reactions,
-    eta: f64,
-    p_is_eta: bool,
-) -> (f64, [f64; 3], f64) {
-    use crate::contact::ContactKind::*;
-    if p_is_eta {
-        if !c.kind.is_hinge() {
-            return (0.0, [0.0; 3], 0.0);
-        }
-        let d2 = -arch.weight().d2rho_deta2(eta) * {
-            let (s, sr) = (c.beta.sin(), arch.beta_right().sin());
-            match order {
-                0 => s - sr,
-                1 => c.beta.cos(),
-                _ => -s,
-            }
-        };
-        let sign = if c.kind == HingeExtrados { 1.0 } else { -1.0 };
-        (
-            a.activation_d_eta(c.kind, order, x),
-            a.n[order].g.map(|v| -0.5 * v),
-            sign * d2,
-        )
-    } else {
-        if c.kind.is_hinge() {
-            return (0.0, [0.0; 3], 0.0);
-        }
-        (
-            a.activation_d_mu(c.kind, order, x),
-            a.n[order].g.map(|v| -v),
-            0.0,
-        )
-    }
-}
-
-impl<'a> System<'a> {
-    /// The system of `contacts` with the given unknowns; `eta` and `mu` are the values of
+impl<'a, F: Family> System<'a, F> {
+    /// The system of `pattern` with the given unknowns; `t` and `mu` are the values of
     /// the parameters that are not unknowns (and the starting values of those that are).
     fn new(
-        arch: &'a Arch,
-        contacts: &[Contact],
-        eta: f64,
-        mu: f64,
+        family: &'a F,
+        pattern: &[Tagged<F::Tag>],
+        (t, mu): (f64, f64),
         unknowns: Unknowns,
-    ) -> System<'a> {
+        objective: Objective,
+    ) -> System<'a, F> {
+        let contacts: Vec<Contact> = pattern.iter().map(|p| p.0).collect();
         let free: Vec<usize> = (0..contacts.len()).filter(|&i| contacts[i].free).collect();
-        let n_params = if unknowns == Unknowns::EtaMu { 2 } else { 1 };
-        // The friction-only problem has 3 effective unknowns (w does not enter T or N).
         let needed = match unknowns {
             Unknowns::Mu => 3,
-            _ => 3 + n_params,
+            Unknowns::T => 4,
+            Unknowns::TMu => 5,
         };
-        let kkt = unknowns != Unknowns::EtaMu && contacts.len() < needed;
+        let kkt = unknowns != Unknowns::TMu && contacts.len() < needed;
         System {
-            arch,
-            eta,
+            family,
+            t,
             mu,
             unknowns,
-            contacts: contacts.to_vec(),
+            objective,
+            contacts,
+            tags: pattern.iter().map(|p| p.1).collect(),
             free,
             kkt,
         }
     }
 
-    fn params(&self) -> &'static [bool] {
-        // true = η, false = μ, in the order of the unknown vector
+    /// The unknown parameters, in the order of the unknown vector.
+    fn params(&self) -> &'static [Param] {
         match self.unknowns {
-            Unknowns::Eta => &[true],
-            Unknowns::Mu => &[false],
-            Unknowns::EtaMu => &[true, false],
+            Unknowns::T => &[Param::T],
+            Unknowns::Mu => &[Param::Mu],
+            Unknowns::TMu => &[Param::T, Param::Mu],
         }
     }
 
@@ -175,19 +175,18 @@ impl<'a> System<'a> {
     }
 
     fn unpack(&self, z: &[f64]) -> (Reactions, f64, f64, Vec<Contact>) {
-        let (mut eta, mut mu) = (self.eta, self.mu);
-        for (k, &is_eta) in self.params().iter().enumerate() {
-            if is_eta {
-                eta = z[3 + k];
-            } else {
-                mu = z[3 + k];
+        let (mut t, mut mu) = (self.t, self.mu);
+        for (k, &p) in self.params().iter().enumerate() {
+            match p {
+                Param::T => t = z[3 + k],
+                Param::Mu => mu = z[3 + k],
             }
         }
         let mut cs = self.contacts.clone();
         for (j, &i) in self.free.iter().enumerate() {
             cs[i].beta = z[self.col_beta() + j];
         }
-        ([z[0], z[1], z[2]], eta, mu, cs)
+        ([z[0], z[1], z[2]], t, mu, cs)
     }
 
     fn multipliers<'z>(&self, z: &'z [f64]) -> &'z [f64] {
@@ -195,12 +194,11 @@ impl<'a> System<'a> {
     }
 
     fn inside(&self, z: &[f64]) -> bool {
-        let (lo, hi) = (self.arch.beta_right(), self.arch.beta_left());
-        let (_, eta, mu, _) = self.unpack(z);
+        let arch = self.family.arch();
+        let (lo, hi) = (arch.beta_right(), arch.beta_left());
+        let (_, t, mu, _) = self.unpack(z);
         let cb = self.col_beta();
-        eta > 0.0
-            && eta < 2.0
-            && mu > 0.0
+        self.family.inside(t, mu)
             && z[cb..cb + self.free.len()]
                 .iter()
                 .all(|&b| b > lo && b < hi)
@@ -208,7 +206,7 @@ impl<'a> System<'a> {
 
     /// Residual F(z) and, when `jac` is given, its Jacobian.
     fn eval(&self, z: &[f64], mut jac: Option<&mut DMatrix<f64>>) -> Vec<f64> {
-        let (x, eta, mu, cs) = self.unpack(z);
+        let (x, t, mu, cs) = self.unpack(z);
         let y = if self.kkt {
             self.multipliers(z)
         } else {
@@ -219,24 +217,24 @@ impl<'a> System<'a> {
         let (ds, dn) = (cs.len() + self.free.len(), cs.len() + self.free.len() + 3);
         let mut f = Vec::with_capacity(self.n_equations());
         let mut stat = [0.0; 3];
-        let mut norm_eq = 1.0;
+        let mut norm_eq = -self.objective.sign();
         let mut col_beta = self.col_beta();
         for (i, c) in cs.iter().enumerate() {
-            let a = actions(self.arch, eta, c.beta);
-            let f0 = a.activation(c.kind, 0, eta, mu);
-            let f1 = a.activation(c.kind, 1, eta, mu);
+            let local = self.family.local(c.kind, c.beta, self.tags[i], t, mu);
+            let f0 = local.phi(0);
+            let f1 = local.phi(1);
             let row = f.len();
             f.push(f0.at(&x));
             if c.free {
                 f.push(f1.at(&x));
             }
             // the KKT objective is the first (only) parameter
-            let objective = d_param(self.arch, &a, c, 0, &x, eta, params[0]);
+            let objective = local.d_param(0, &x, params[0]);
             if self.kkt {
                 for (st, g) in stat.iter_mut().zip(f0.g) {
                     *st += y[i] * g;
                 }
-                norm_eq += y[i] * objective.0;
+                norm_eq += y[i] * objective.value;
             }
             let Some(j) = jac.as_deref_mut() else {
                 if c.free {
@@ -247,14 +245,14 @@ impl<'a> System<'a> {
             for k in 0..3 {
                 j[(row, k)] = f0.g[k];
             }
-            for (k, &is_eta) in params.iter().enumerate() {
-                j[(row, 3 + k)] = d_param(self.arch, &a, c, 0, &x, eta, is_eta).0;
+            for (k, &p) in params.iter().enumerate() {
+                j[(row, 3 + k)] = local.d_param(0, &x, p).value;
                 if c.free {
-                    j[(row + 1, 3 + k)] = d_param(self.arch, &a, c, 1, &x, eta, is_eta).0;
+                    j[(row + 1, 3 + k)] = local.d_param(1, &x, p).value;
                 }
             }
             if c.free {
-                let f2 = a.activation(c.kind, 2, eta, mu);
+                let f2 = local.phi(2);
                 j[(row, col_beta)] = f1.at(&x);
                 for k in 0..3 {
                     j[(row + 1, k)] = f1.g[k];
@@ -262,22 +260,21 @@ impl<'a> System<'a> {
                 j[(row + 1, col_beta)] = f2.at(&x);
             }
             if self.kkt {
-                let (dp0, dp_grad, dpp) = objective;
                 for k in 0..3 {
                     // stationarity rows Σ y ∇ₓφ = 0
-                    j[(ds + k, 3)] += y[i] * dp_grad[k];
+                    j[(ds + k, 3)] += y[i] * objective.grad[k];
                     j[(ds + k, col_y + i)] = f0.g[k];
                     if c.free {
                         j[(ds + k, col_beta)] += y[i] * f1.g[k];
                     }
-                    // normalisation row 1 + Σ y ∂φ/∂p = 0, ∂/∂x
-                    j[(dn, k)] += y[i] * dp_grad[k];
+                    // normalisation row Σ y ∂φ/∂p ± 1 = 0, ∂/∂x
+                    j[(dn, k)] += y[i] * objective.grad[k];
                 }
-                j[(dn, 3)] += y[i] * dpp;
+                j[(dn, 3)] += y[i] * objective.second;
                 if c.free {
-                    j[(dn, col_beta)] += y[i] * d_param(self.arch, &a, c, 1, &x, eta, params[0]).0;
+                    j[(dn, col_beta)] += y[i] * local.d_param(1, &x, params[0]).value;
                 }
-                j[(dn, col_y + i)] = dp0;
+                j[(dn, col_y + i)] = objective.value;
             }
             if c.free {
                 col_beta += 1;
@@ -291,11 +288,11 @@ impl<'a> System<'a> {
     }
 }
 
-/// The residual F(z) and the analytic Jacobian ∂F/∂z (row-major) of the system that
-/// [`solve_system`] solves for `contacts` with the given `unknowns`, at the point
+/// The residual F(z) and the analytic Jacobian ∂F/∂z (row-major) of the thickness system
+/// that [`solve_system`] solves for `contacts` with the given `unknowns`, at the point
 /// z = (h, v, w, the unknown parameters (η before μ), the free β_i in contact order,
 /// then one KKT multiplier y_i per contact when the system is KKT-completed, i.e. when
-/// `unknowns` is not [`Unknowns::EtaMu`] and there are fewer than 4 contacts (3 for
+/// `unknowns` is not [`Unknowns::TMu`] and there are fewer than 4 contacts (3 for
 /// [`Unknowns::Mu`])). `eta` and `mu` give the parameters that are not unknowns.
 /// Returns `None` when `z` does not have that length. Exposed so that tests can compare
 /// the Jacobian with finite differences of the residual; Newton uses the same code.
@@ -307,7 +304,9 @@ pub fn residual_and_jacobian(
     unknowns: Unknowns,
     z: &[f64],
 ) -> Option<(Vec<f64>, Vec<Vec<f64>>)> {
-    let sys = System::new(arch, contacts, eta, mu, unknowns);
+    let family = Thickness { arch };
+    let pattern: Vec<Tagged<()>> = contacts.iter().map(|&c| (c, ())).collect();
+    let sys = System::new(&family, &pattern, (eta, mu), unknowns, Objective::Least);
     if contacts.is_empty() || z.len() != sys.n_unknowns() {
         return None;
     }
@@ -327,40 +326,74 @@ fn inf_norm(f: &[f64]) -> f64 {
     f.iter().fold(0.0f64, |m, v| m.max(v.abs()))
 }
 
-/// Solves the system of `contacts` at the friction of `start` (the thickness problem,
-/// unknown η) from the starting point `start`.
+/// Solves the thickness system of `contacts` at the friction of `start` (unknown η, the
+/// least) from the starting point `start`.
 pub fn solve_pattern(
     start: &State,
     contacts: &[Contact],
     settings: &Settings,
 ) -> Result<Refined, NewtonFailure> {
-    solve_system(start, contacts, Unknowns::Eta, settings)
+    solve_system(start, contacts, Unknowns::T, settings)
 }
 
-/// Solves the system of `contacts` with the given parameters unknown, from the
-/// starting point `start` (its η and μ are the starting values of the unknown ones and the
-/// fixed values of the others). With fewer contacts than unknowns (a single unknown
-/// parameter and fewer than four contacts), the KKT conditions of minimising that
-/// parameter complete the system.
+/// Solves the thickness system of `contacts` with the given parameters unknown (t = η),
+/// from the starting point `start` (its η and μ are the starting values of the unknown
+/// ones and the fixed values of the others). With fewer contacts than unknowns (a single
+/// unknown parameter and fewer than four contacts, three for μ), the KKT conditions of
+/// minimising that parameter complete the system.
 pub fn solve_system(
     start: &State,
     contacts: &[Contact],
     unknowns: Unknowns,
     settings: &Settings,
 ) -> Result<Refined, NewtonFailure> {
-    let (arch, x0, eta0, mu0) = (start.arch, start.x, start.eta, start.mu);
-    if contacts.is_empty() {
+    let family = Thickness { arch: start.arch };
+    let pattern: Vec<Tagged<()>> = contacts.iter().map(|&c| (c, ())).collect();
+    let from = Start {
+        x: start.x,
+        t: start.eta,
+        mu: start.mu,
+    };
+    solve(
+        &family,
+        &pattern,
+        from,
+        unknowns,
+        Objective::Least,
+        settings,
+    )
+}
+
+/// Solves the system of `pattern` in `family` with the given parameters unknown, from
+/// `start`; an under-determined system with one unknown parameter is completed by the KKT
+/// conditions of `objective`. The one Newton of the crate.
+pub fn solve<F: Family>(
+    family: &F,
+    pattern: &[Tagged<F::Tag>],
+    start: Start,
+    unknowns: Unknowns,
+    objective: Objective,
+    settings: &Settings,
+) -> Result<Refined<F::Tag>, NewtonFailure> {
+    if pattern.is_empty() {
         return Err(NewtonFailure::Empty);
     }
-    let sys = System::new(arch, contacts, eta0, mu0, unknowns);
+    let sys = System::new(family, pattern, (start.t, start.mu), unknowns, objective);
     let kkt = sys.kkt;
-    let mut z: Vec<f64> = x0.to_vec();
-    for &is_eta in sys.params() {
-        z.push(if is_eta { eta0 } else { mu0 });
+    let mut z: Vec<f64> = start.x.to_vec();
+    for &p in sys.params() {
+        z.push(match p {
+            Param::T => start.t,
+            Param::Mu => start.mu,
+        });
     }
-    z.extend(sys.free.iter().map(|&i| contacts[i].beta));
+    z.extend(sys.free.iter().map(|&i| sys.contacts[i].beta));
     if kkt {
-        z.extend(initial_multipliers(&sys, &x0, settings.multiplier_cutoff));
+        z.extend(initial_multipliers(
+            &sys,
+            &start.x,
+            settings.multiplier_cutoff,
+        ));
     }
     let (z, fnorm, iterations) = newton(&sys, z, settings)?;
     // Restart once from the solution rounded to 9 significant digits: the LP's
@@ -371,7 +404,7 @@ pub fn solve_system(
         Ok((zs, fs, is)) => (zs, fs, iterations + is),
         Err(_) => (z, fnorm, iterations),
     };
-    let (x, eta, mu, cs) = sys.unpack(&z);
+    let (x, t, mu, contacts) = sys.unpack(&z);
     let multipliers = if kkt {
         sys.multipliers(&z).to_vec()
     } else {
@@ -382,19 +415,19 @@ pub fn solve_system(
     }
     Ok(Refined {
         x,
-        eta,
+        t,
         mu,
-        contacts: cs,
+        contacts,
+        tags: sys.tags,
         multipliers,
         residual: fnorm,
         iterations,
     })
 }
-
 /// Damped Gauss–Newton from `z0`; returns the solution, its scaled residual and the
 /// iterations used.
-fn newton(
-    sys: &System,
+fn newton<F: Family>(
+    sys: &System<F>,
     z0: Vec<f64>,
     settings: &Settings,
 ) -> Result<(Vec<f64>, f64, usize), NewtonFailure> {
@@ -517,20 +550,20 @@ fn round_sig(v: f64, digits: i32) -> f64 {
     (v * p).round() / p
 }
 
-/// Least-squares multipliers of [∇ₓφ_i; ∂φ_i/∂p] y = [0; −1] at the starting point.
-fn initial_multipliers(sys: &System, x: &Reactions, cutoff: f64) -> Vec<f64> {
+/// Least-squares multipliers of [∇ₓφ_i; ∂φ_i/∂p] y = [0; ±1] at the starting point.
+fn initial_multipliers<F: Family>(sys: &System<F>, x: &Reactions, cutoff: f64) -> Vec<f64> {
     let m = sys.contacts.len();
-    let is_eta = sys.params()[0];
+    let p = sys.params()[0];
     let a = DMatrix::from_fn(4, m, |r, i| {
         let c = &sys.contacts[i];
-        let act = actions(sys.arch, sys.eta, c.beta);
+        let local = sys.family.local(c.kind, c.beta, sys.tags[i], sys.t, sys.mu);
         if r < 3 {
-            act.activation(c.kind, 0, sys.eta, sys.mu).g[r]
+            local.phi(0).g[r]
         } else {
-            d_param(sys.arch, &act, c, 0, x, sys.eta, is_eta).0
+            local.d_param(0, x, p).value
         }
     });
-    let b = DVector::from_vec(vec![0.0, 0.0, 0.0, -1.0]);
+    let b = DVector::from_vec(vec![0.0, 0.0, 0.0, sys.objective.sign()]);
     let svd = a.svd(true, true);
     let tol = svd.singular_values.max() * cutoff;
     svd.solve(&b, tol)

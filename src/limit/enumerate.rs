@@ -110,18 +110,18 @@ fn verify_group(
             }),
         }
     }
-    refined.sort_by(|a, b| a.1.eta.total_cmp(&b.1.eta));
+    refined.sort_by(|a, b| a.1.t.total_cmp(&b.1.t));
     let mut last_eta = f64::NAN;
     for (s, r) in refined {
         let push = |log: &mut Vec<Candidate>, verdict: String| {
             log.push(Candidate {
                 contacts: s.clone(),
-                eta: Some(r.eta),
+                eta: Some(r.t),
                 tried: true,
                 verdict,
             })
         };
-        if out.limit.as_ref().is_some_and(|l| l.eta <= r.eta) {
+        if out.limit.as_ref().is_some_and(|l| l.eta <= r.t) {
             push(
                 log,
                 "not needed: a limit state of lower or equal eta was verified".into(),
@@ -130,7 +130,7 @@ fn verify_group(
         }
         let st = State {
             arch,
-            eta: r.eta,
+            eta: r.t,
             mu,
             x: r.x,
         };
@@ -147,14 +147,14 @@ fn verify_group(
             }
         };
         let worst = verdict.worst;
-        if out.least_static.as_ref().is_none_or(|l| r.eta < l.eta) {
+        if out.least_static.as_ref().is_none_or(|l| r.t < l.t) {
             out.least_static = Some(r.clone());
         }
-        if r.eta == last_eta {
+        if r.t == last_eta {
             push(log, "same state as a pattern already checked".into());
             continue;
         }
-        last_eta = r.eta;
+        last_eta = r.t;
         let pattern = verdict.active;
         match mechanism::find(&st, &pattern, settings) {
             Ok(Some(mech)) => {
@@ -171,10 +171,10 @@ fn verify_group(
                     settings.same_joint,
                 );
                 out.limit = Some(LimitState {
-                    eta_rounding: crate::statics::eta_rounding(arch, r.eta, &r.x, &pattern),
+                    eta_rounding: crate::statics::eta_rounding(arch, r.t, &r.x, &pattern),
                     mu,
-                    eta: r.eta,
-                    eta_static: r.eta,
+                    eta: r.t,
+                    eta_static: r.t,
                     x_static: r.x,
                     x: r.x,
                     pattern,

@@ -318,14 +318,14 @@ fn predicted(
     };
     let refined = State {
         arch,
-        eta: r.eta,
+        eta: r.t,
         mu,
         x: r.x,
     };
     if refined.admissible_verdict(modes, settings).is_err() {
         return Ok((lo, hi));
     }
-    let eta_p = r.eta;
+    let eta_p = r.t;
     let k = PREDICT_STEP * settings.bracket_rel;
     for t in [eta_p * (1.0 + k), eta_p * (1.0 - k)] {
         if !(t > lo.0 && t < hi.0) {
@@ -458,7 +458,7 @@ fn solve_inner(
         if !first
             .least_static
             .as_ref()
-            .is_some_and(|st| st.eta <= top_slack)
+            .is_some_and(|st| st.t <= top_slack)
         {
             return unresolved(
                 eta_lo,
@@ -480,7 +480,7 @@ fn solve_inner(
     // determined patterns (four or five contacts).
     let least = State {
         arch,
-        eta: st.eta,
+        eta: st.t,
         mu,
         x: st.x,
     };
@@ -491,32 +491,32 @@ fn solve_inner(
         &pool,
         &[4, 5],
         st.x,
-        st.eta,
+        st.t,
         (eta_lo, eta_hi),
         0.0,
         settings,
         log,
     );
     match second.limit {
-        Some(mut ls) if ls.eta >= st.eta * (1.0 - settings.same_root) => {
-            ls.eta_static = st.eta;
+        Some(mut ls) if ls.eta >= st.t * (1.0 - settings.same_root) => {
+            ls.eta_static = st.t;
             ls.x_static = st.x;
             ls.eta_rounding = ls.eta_rounding.max(crate::statics::eta_rounding(
                 arch,
-                st.eta,
+                st.t,
                 &st.x,
                 &st.contacts,
             ));
             Outcome::Limit(ls)
         }
         _ => Outcome::Unresolved {
-            eta_lo: st.eta,
+            eta_lo: st.t,
             eta_hi: f64::INFINITY,
             reason: format!(
                 "the least admissible state (eta = {}) has no non-associative mechanism, and no enumerated pattern gave a limit state above it",
-                st.eta
+                st.t
             ),
-            least_static: Some((st.eta, st.x)),
+            least_static: Some((st.t, st.x)),
         },
     }
 }

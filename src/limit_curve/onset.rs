@@ -40,8 +40,8 @@ fn follow(
         mu,
         x: from.0,
     };
-    let r = solve_system(&start, pattern, Unknowns::Eta, settings).ok()?;
-    Some((r.x, r.eta, r.contacts))
+    let r = solve_system(&start, pattern, Unknowns::T, settings).ok()?;
+    Some((r.x, r.t, r.contacts))
 }
 
 /// The relative value of `c`'s activation function at its peak near `c.beta` (its

@@ -357,14 +357,14 @@ impl<'a> Tracer<'a> {
             mu: start.2,
             x: start.0,
         };
-        let r = solve_system(&from, &union, Unknowns::EtaMu, self.settings).ok()?;
+        let r = solve_system(&from, &union, Unknowns::TMu, self.settings).ok()?;
         // the union must determine the point: a rank-deficient Jacobian (e.g. a mirror
         // pair of contacts on a symmetric arch duplicating rows) leaves a curve of
         // solutions along one branch, and Newton stops anywhere on it
         if !self.determined(&r.contacts, &r) {
             return None;
         }
-        let active = kinds(&self.active(r.mu, r.eta, r.x));
+        let active = kinds(&self.active(r.mu, r.t, r.x));
         let count = |s: &[(ContactKind, Location)], k: &(ContactKind, Location)| {
             s.iter().filter(|c| *c == k).count()
         };
@@ -376,7 +376,7 @@ impl<'a> Tracer<'a> {
             return None;
         }
         self.accept(
-            (r.mu, r.eta, r.x),
+            (r.mu, r.t, r.x),
             &r.contacts,
             range,
             between,
@@ -418,16 +418,11 @@ impl<'a> Tracer<'a> {
     /// column equilibration).
     fn determined(&self, contacts: &[Contact], r: &crate::refine::Refined) -> bool {
         let mut z: Vec<f64> = r.x.to_vec();
-        z.extend([r.eta, r.mu]);
+        z.extend([r.t, r.mu]);
         z.extend(contacts.iter().filter(|c| c.free).map(|c| c.beta));
-        let Some((_, rows)) = crate::refine::residual_and_jacobian(
-            self.arch,
-            contacts,
-            r.eta,
-            r.mu,
-            Unknowns::EtaMu,
-            &z,
-        ) else {
+        let Some((_, rows)) =
+            crate::refine::residual_and_jacobian(self.arch, contacts, r.t, r.mu, Unknowns::TMu, &z)
+        else {
             return false;
         };
         let mut m = nalgebra::DMatrix::from_fn(rows.len(), z.len(), |i, j| rows[i][j]);
@@ -504,17 +499,10 @@ impl<'a> Tracer<'a> {
             mu: mu_ms,
             x: low.x,
         };
-        let r = solve_system(&start, &low.pattern, Unknowns::Eta, self.settings).ok()?;
-        let joints = self.active(mu_ms, r.eta, r.x);
+        let r = solve_system(&start, &low.pattern, Unknowns::T, self.settings).ok()?;
+        let joints = self.active(mu_ms, r.t, r.x);
         let range = (mu_ms * (1.0 - self.settings.root_slack), low.mu);
-        self.accept(
-            (mu_ms, r.eta, r.x),
-            &joints,
-            range,
-            between,
-            r.residual,
-            true,
-        )
+        self.accept((mu_ms, r.t, r.x), &joints, range, between, r.residual, true)
     }
 
     /// The thickness limit bracketed by bisection in μ between `ne` (no equilibrium) and

@@ -98,7 +98,7 @@ pub(super) fn locate(
         Extra::Coincide { a, b } => beta_of(z, a) - beta_of(z, b),
     };
     let eval = |z: &[f64]| -> Option<(Vec<f64>, Vec<Vec<f64>>)> {
-        let (mut f, mut j) = residual_and_jacobian(arch, pattern, z[3], z[4], Unknowns::EtaMu, z)?;
+        let (mut f, mut j) = residual_and_jacobian(arch, pattern, z[3], z[4], Unknowns::TMu, z)?;
         f.push(extra_row(z));
         let row = (0..z.len())
             .map(|k| {

@@ -422,10 +422,10 @@ fn refine(
         return None;
     }
     let start = State { arch, eta, mu, x };
-    let r = solve_system(&start, pattern, Unknowns::Eta, settings).ok()?;
+    let r = solve_system(&start, pattern, Unknowns::T, settings).ok()?;
     let st = State {
         arch,
-        eta: r.eta,
+        eta: r.t,
         mu,
         x: r.x,
     };
@@ -436,7 +436,7 @@ fn refine(
     let mech = mechanism::find(&st, &v.active, settings).ok()??;
     Some(SweptState::unloaded(
         arch,
-        (r.eta, r.x),
+        (r.t, r.x),
         v.active,
         mech,
         settings,

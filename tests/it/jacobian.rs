@@ -46,12 +46,12 @@ fn check(
     ys: &[f64],
 ) -> Result<(), TestCaseError> {
     let n = contacts.len();
-    let kkt = unknowns != Unknowns::EtaMu && n < if unknowns == Unknowns::Mu { 3 } else { 4 };
+    let kkt = unknowns != Unknowns::TMu && n < if unknowns == Unknowns::Mu { 3 } else { 4 };
     let mut z = x.to_vec();
     match unknowns {
-        Unknowns::Eta => z.push(eta),
+        Unknowns::T => z.push(eta),
         Unknowns::Mu => z.push(mu),
-        Unknowns::EtaMu => z.extend([eta, mu]),
+        Unknowns::TMu => z.extend([eta, mu]),
     }
     z.extend(contacts.iter().filter(|c| c.free).map(|c| c.beta));
     if kkt {
@@ -113,12 +113,12 @@ proptest! {
     ) {
         let weight = if centroid { WeightModel::Centroid } else { WeightModel::Centreline };
         let arch = Arch::new(beta_r, std::f64::consts::PI + beta_l_off, weight).unwrap();
-        let unknowns = [Unknowns::Eta, Unknowns::Mu, Unknowns::EtaMu][which];
+        let unknowns = [Unknowns::T, Unknowns::Mu, Unknowns::TMu][which];
         // plain and KKT sizes for each kind of unknowns
         let n = match unknowns {
-            Unknowns::Eta => n.min(5),
+            Unknowns::T => n.min(5),
             Unknowns::Mu => n.min(4),
-            Unknowns::EtaMu => n.max(5),
+            Unknowns::TMu => n.max(5),
         };
         let contacts: Vec<Contact> = specs[..n]
             .iter()

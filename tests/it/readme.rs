@@ -1,19 +1,63 @@
-//! README.md stays true: every ```console transcript (`$ arch-enum ...` and its output) is
-//! run and its standard output compared line by line (trailing blanks ignored; a line
-//! `...` stands for any number of lines); every `arch-enum ...` line of a ```sh block must
-//! run with exit 0; every row of the corners table is recomputed.
+//! README.md and the pages under docs/ stay true. In each of them:
+//! * every ```console transcript (`$ arch-enum ...` and its output) is run and its standard
+//!   output compared line by line (trailing blanks ignored; a line `...` stands for any
+//!   number of lines, so a short transcript may leave out what a page elsewhere shows);
+//! * every `arch-enum ...` line of a ```sh block must run with exit 0;
+//! * every row of the corners table (on whichever page holds it) is recomputed;
+//! * every relative link points to an existing file, and an anchor to a heading of it.
 //!
-//! `README_UPDATE=1 cargo test --release readme` rewrites the transcripts from the binary's
-//! output (then read the diff before committing); CI never sets it.
+//! So that a transcript dropped when text moves between pages is noticed, the pages together
+//! must hold at least `CONSOLE_TRANSCRIPTS` distinct console transcripts (never fewer than
+//! README.md held before its long sections moved to docs/), and README.md at least one.
+//!
+//! `README_UPDATE=1 cargo test --release readme` rewrites, on every page, the transcripts that
+//! no longer match with the binary's whole output (a transcript that matches, `...` lines
+//! included, is left as it is); then read the diff before committing. CI never sets it.
 
 use arch_enum::limit_curve::trace;
 use arch_enum::render::table::corner_rows;
 use arch_enum::{Arch, Settings, WeightModel};
 use assert_cmd::Command;
+use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
-fn readme_path() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")
+/// `grep -c '^```console' README.md` before the long sections moved to docs/.
+const README_CONSOLE_BEFORE_MOVE: usize = 14;
+
+/// Distinct console transcripts (by their commands) of README.md and docs/ together: the 14
+/// of the old README, now in docs/, and README's short `curve` example. Raise it when a page
+/// gains one, so that a transcript dropped later is noticed.
+const CONSOLE_TRANSCRIPTS: usize = 15;
+const _: () = assert!(CONSOLE_TRANSCRIPTS >= README_CONSOLE_BEFORE_MOVE);
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// README.md first, then every `.md` file under docs/ (sub-folders included), sorted.
+fn pages() -> Vec<PathBuf> {
+    fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
+        let mut entries: Vec<PathBuf> = std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .collect();
+        entries.sort();
+        for p in entries {
+            if p.is_dir() {
+                walk(&p, out);
+            } else if p.extension().is_some_and(|e| e == "md") {
+                out.push(p);
+            }
+        }
+    }
+    let mut out = vec![root().join("README.md")];
+    walk(&root().join("docs"), &mut out);
+    out
+}
+
+/// The page's path relative to the repository, for messages.
+fn name(page: &Path) -> String {
+    page.strip_prefix(root()).unwrap().display().to_string()
 }
 
 /// A fresh empty folder for the files a block writes.
@@ -49,20 +93,22 @@ fn matches(expected: &[&str], actual: &[&str]) -> bool {
     }
 }
 
-#[test]
-fn console_transcripts_are_true() {
-    let text = std::fs::read_to_string(readme_path()).unwrap();
-    let update = std::env::var("README_UPDATE").is_ok_and(|v| v == "1");
+/// One page's console blocks: each block's commands (joined, as its key), and the failures.
+/// With `update`, a transcript that does not match is replaced by the binary's output and
+/// the page is written back if anything changed.
+fn console_blocks(page: &Path, update: bool) -> (Vec<String>, Vec<String>) {
+    let text = std::fs::read_to_string(page).unwrap();
     let mut out: Vec<String> = Vec::new();
     let mut failures = Vec::new();
+    let mut blocks = Vec::new();
     let mut lines = text.lines().peekable();
-    let mut transcripts = 0;
     while let Some(line) = lines.next() {
         out.push(line.to_string());
         if line.trim() != "```console" {
             continue;
         }
-        let dir = scratch(&format!("console{transcripts}"));
+        let dir = scratch(&format!("console{}", blocks.len()));
+        let mut commands = Vec::new();
         while let Some(&l) = lines.peek() {
             if l.trim() == "```" {
                 break;
@@ -70,9 +116,13 @@ fn console_transcripts_are_true() {
             lines.next();
             out.push(l.to_string());
             let Some(cmd) = l.strip_prefix("$ ") else {
-                failures.push(format!("a console block line outside a command: {l}"));
+                failures.push(format!(
+                    "{}: a console block line outside a command: {l}",
+                    name(page)
+                ));
                 continue;
             };
+            commands.push(cmd.to_string());
             let mut expected = Vec::new();
             while let Some(&e) = lines.peek() {
                 if e.starts_with("$ ") || e.trim() == "```" {
@@ -83,48 +133,78 @@ fn console_transcripts_are_true() {
             }
             let (stdout, _) = run(cmd, &dir);
             let actual: Vec<&str> = stdout.lines().collect();
-            transcripts += 1;
-            if update {
+            if matches(&expected, &actual) {
+                out.extend(expected.iter().map(|e| e.to_string()));
+            } else if update {
                 out.extend(actual.iter().map(|a| a.trim_end().to_string()));
             } else {
                 out.extend(expected.iter().map(|e| e.to_string()));
-                if !matches(&expected, &actual) {
-                    failures.push(format!(
-                        "$ {cmd}\n--- README says:\n{}\n--- the binary prints:\n{}",
-                        expected.join("\n"),
-                        stdout
-                    ));
-                }
+                failures.push(format!(
+                    "{}: $ {cmd}\n--- the page says:\n{}\n--- the binary prints:\n{}",
+                    name(page),
+                    expected.join("\n"),
+                    stdout
+                ));
             }
         }
+        blocks.push(commands.join("\n"));
         let _ = std::fs::remove_dir_all(&dir);
     }
     if update {
         let mut new = out.join("\n");
         new.push('\n');
-        std::fs::write(readme_path(), new).unwrap();
+        if new != text {
+            std::fs::write(page, new).unwrap();
+        }
     }
-    assert!(transcripts >= 8, "only {transcripts} transcripts found");
+    (blocks, failures)
+}
+
+#[test]
+fn console_transcripts_are_true() {
+    let update = std::env::var("README_UPDATE").is_ok_and(|v| v == "1");
+    let mut failures = Vec::new();
+    let mut all = 0;
+    let mut distinct = BTreeSet::new();
+    let mut in_readme = 0;
+    for page in pages() {
+        let (blocks, f) = console_blocks(&page, update);
+        if page.ends_with("README.md") && page.parent() == Some(root().as_path()) {
+            in_readme = blocks.len();
+        }
+        all += blocks.len();
+        distinct.extend(blocks);
+        failures.extend(f);
+    }
+    assert!(in_readme >= 1, "README.md has no console transcript");
+    assert!(
+        distinct.len() >= CONSOLE_TRANSCRIPTS,
+        "README.md and docs/ hold {} distinct console transcripts ({all} in all), fewer than \
+         {CONSOLE_TRANSCRIPTS}: was one dropped on a move?",
+        distinct.len()
+    );
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));
 }
 
 #[test]
 fn sh_commands_run() {
-    let text = std::fs::read_to_string(readme_path()).unwrap();
     let dir = scratch("sh");
-    let mut inside = false;
     let mut ran = 0;
-    for line in text.lines() {
-        match line.trim() {
-            "```sh" => inside = true,
-            "```" => inside = false,
-            l if inside && l.starts_with("arch-enum ") => {
-                let cmd = l.split('#').next().unwrap().trim();
-                let (_, code) = run(cmd, &dir);
-                assert_eq!(code, 0, "README command failed: {cmd}");
-                ran += 1;
+    for page in pages() {
+        let text = std::fs::read_to_string(&page).unwrap();
+        let mut inside = false;
+        for line in text.lines() {
+            match line.trim() {
+                "```sh" => inside = true,
+                "```" => inside = false,
+                l if inside && l.starts_with("arch-enum ") => {
+                    let cmd = l.split('#').next().unwrap().trim();
+                    let (_, code) = run(cmd, &dir);
+                    assert_eq!(code, 0, "{}: command failed: {cmd}", name(&page));
+                    ran += 1;
+                }
+                _ => {}
             }
-            _ => {}
         }
     }
     let _ = std::fs::remove_dir_all(&dir);
@@ -133,7 +213,21 @@ fn sh_commands_run() {
 
 #[test]
 fn corners_table_is_recomputed() {
-    let text = std::fs::read_to_string(readme_path()).unwrap();
+    let texts: Vec<(PathBuf, String)> = pages()
+        .into_iter()
+        .map(|p| {
+            let t = std::fs::read_to_string(&p).unwrap();
+            (p, t)
+        })
+        .filter(|(_, t)| t.lines().any(|l| l.starts_with("| α_s |")))
+        .collect();
+    assert_eq!(
+        texts.len(),
+        1,
+        "the corners table should be on exactly one page: {:?}",
+        texts.iter().map(|(p, _)| name(p)).collect::<Vec<_>>()
+    );
+    let text = &texts[0].1;
     let rows: Vec<&str> = text
         .lines()
         .skip_while(|l| !l.starts_with("| α_s |"))
@@ -160,4 +254,87 @@ fn corners_table_is_recomputed() {
         computed.extend(corner_rows(&arch, &trace(&arch, &Settings::default())));
     }
     assert_eq!(rows, computed);
+}
+
+/// GitHub's anchor of a heading: lower case, letters, digits, `-` and `_` kept, spaces to `-`,
+/// everything else (backticks, `\*`, punctuation) dropped.
+fn anchor(heading: &str) -> String {
+    heading
+        .trim()
+        .to_lowercase()
+        .chars()
+        .filter_map(|c| match c {
+            ' ' => Some('-'),
+            c if c.is_alphanumeric() || c == '-' || c == '_' => Some(c),
+            _ => None,
+        })
+        .collect()
+}
+
+/// The anchors of a page's headings (outside code blocks).
+fn anchors(text: &str) -> BTreeSet<String> {
+    let mut fenced = false;
+    let mut out = BTreeSet::new();
+    for line in text.lines() {
+        if line.starts_with("```") {
+            fenced = !fenced;
+        } else if !fenced && line.starts_with('#') {
+            out.insert(anchor(line.trim_start_matches('#')));
+        }
+    }
+    out
+}
+
+#[test]
+fn links_point_to_files_and_headings() {
+    let mut broken = Vec::new();
+    let mut checked = 0;
+    for page in pages() {
+        let text = std::fs::read_to_string(&page).unwrap();
+        let mut fenced = false;
+        for line in text.lines() {
+            if line.starts_with("```") {
+                fenced = !fenced;
+                continue;
+            }
+            if fenced {
+                continue;
+            }
+            for piece in line.split("](").skip(1) {
+                let Some(target) = piece.split(')').next() else {
+                    continue;
+                };
+                if target.contains("://") || target.starts_with("mailto:") {
+                    continue;
+                }
+                // mathematics such as det[g_a g_b](η) is not a link: a link names a file
+                // (with a dot or a slash) or a heading (#)
+                if target.contains(char::is_whitespace) || !target.contains(['.', '/', '#']) {
+                    continue;
+                }
+                checked += 1;
+                let (file, hash) = match target.split_once('#') {
+                    Some((f, h)) => (f, Some(h)),
+                    None => (target, None),
+                };
+                let path = if file.is_empty() {
+                    page.clone()
+                } else {
+                    page.parent().unwrap().join(file)
+                };
+                if !path.exists() {
+                    broken.push(format!("{}: {target} (no such file)", name(&page)));
+                    continue;
+                }
+                if let Some(h) = hash {
+                    let t = std::fs::read_to_string(&path).unwrap();
+                    if !anchors(&t).contains(h) {
+                        broken.push(format!("{}: {target} (no such heading)", name(&page)));
+                    }
+                }
+            }
+        }
+    }
+    assert!(checked >= 20, "only {checked} links found");
+    assert!(broken.is_empty(), "{}", broken.join("\n"));
 }

@@ -1,0 +1,101 @@
+//! The thickness family: the self-weight of the arch at thickness t = η (formulation §3).
+
+use super::{Family, Param, ParamDerivative, Rows};
+use crate::arch::{Arch, Radians};
+use crate::contact::ContactKind;
+use crate::statics::{actions, Actions, Affine, Reactions};
+
+/// The arch under its self-weight; the parameter is the thickness ratio η.
+#[derive(Debug, Clone, Copy)]
+pub struct Thickness<'a> {
+    /// The arch.
+    pub arch: &'a Arch,
+}
+
+/// The rows of one contact of the thickness family at (η, μ).
+#[derive(Debug, Clone)]
+pub struct ThicknessRows<'a> {
+    arch: &'a Arch,
+    actions: Actions,
+    kind: ContactKind,
+    beta: Radians,
+    eta: f64,
+    mu: f64,
+}
+
+impl<'a> Family for Thickness<'a> {
+    type Tag = ();
+    type Local = ThicknessRows<'a>;
+
+    fn arch(&self) -> &Arch {
+        self.arch
+    }
+
+    fn local(
+        &self,
+        kind: ContactKind,
+        beta: Radians,
+        _: (),
+        eta: f64,
+        mu: f64,
+    ) -> ThicknessRows<'a> {
+        ThicknessRows {
+            arch: self.arch,
+            actions: actions(self.arch, eta, beta),
+            kind,
+            beta,
+            eta,
+            mu,
+        }
+    }
+
+    fn inside(&self, eta: f64, mu: f64) -> bool {
+        eta > 0.0 && eta < 2.0 && mu > 0.0
+    }
+}
+
+impl Rows for ThicknessRows<'_> {
+    fn phi(&self, order: usize) -> Affine {
+        self.actions.activation(self.kind, order, self.eta, self.mu)
+    }
+
+    /// η enters the hinge rows (M = ±ηN/2, and the weight through ρ(η)); μ the sliding rows
+    /// (T = ±μN).
+    fn d_param(&self, order: usize, x: &Reactions, p: Param) -> ParamDerivative {
+        let a = &self.actions;
+        match p {
+            Param::T => {
+                if !self.kind.is_hinge() {
+                    return ParamDerivative::ZERO;
+                }
+                let (s, sr) = (self.beta.sin(), self.arch.beta_right().sin());
+                let shape = match order {
+                    0 => s - sr,
+                    1 => self.beta.cos(),
+                    _ => -s,
+                };
+                let d2 = -self.arch.weight().d2rho_deta2(self.eta) * shape;
+                let sign = if self.kind == ContactKind::HingeExtrados {
+                    1.0
+                } else {
+                    -1.0
+                };
+                ParamDerivative {
+                    value: a.activation_d_eta(self.kind, order, x),
+                    grad: a.n[order].g.map(|v| -0.5 * v),
+                    second: sign * d2,
+                }
+            }
+            Param::Mu => {
+                if self.kind.is_hinge() {
+                    return ParamDerivative::ZERO;
+                }
+                ParamDerivative {
+                    value: a.activation_d_mu(self.kind, order, x),
+                    grad: a.n[order].g.map(|v| -v),
+                    second: 0.0,
+                }
+            }
+        }
+    }
+}
