@@ -19,7 +19,8 @@
 //! down, and none imports the solver: the vocabulary (`report.rs`, `statics.rs`, `live.rs`),
 //! the proofs and checks (`enclosure.rs`, `farkas.rs`, `joints.rs`, `limit_state.rs`,
 //! `mechanism.rs`, `input.rs`), and the claims (`thickness.rs` with `search.rs`; `load.rs`
-//! with `load_admissible.rs`, `load_farkas.rs`, `load_unbounded.rs`, `load_search.rs`).
+//! with `load_admissible.rs`, `load_farkas.rs`, `load_unbounded.rs`, `load_search.rs` with
+//! `load_limit_state.rs`).
 
 mod enclosure;
 mod farkas;
@@ -30,6 +31,7 @@ mod live;
 mod load;
 mod load_admissible;
 mod load_farkas;
+mod load_limit_state;
 mod load_search;
 mod load_unbounded;
 mod mechanism;
