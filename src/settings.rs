@@ -150,6 +150,32 @@ pub struct Settings {
     pub boundary_match: f64,
     /// How limit states above η_s are searched. Default `Ridge`.
     pub limit_state_search: LimitStateSearch,
+    /// Where the least admissible state is degenerate (P(η_s) not a point) or P has an
+    /// interior at the start, the limit-state sweep starts at η_s (1 + `sweep_walk_offset`)
+    /// (a load sweep: λ_min + `sweep_walk_offset` × min(λ_static − λ_min, 1 + λ_min)) from
+    /// every vertex there, found by a walk: limit states below that start are not searched.
+    /// Default 1e-6.
+    pub sweep_walk_offset: f64,
+    /// Two limit states found by different routes (the refined states of a continuous
+    /// arch's two discretisations; the ridge walk's candidates) are the same when their η
+    /// agree to this (relative) and their contacts or reactions to `same_state_angle` or
+    /// `same_state_x`. Default 1e-9.
+    pub same_state_eta: f64,
+    /// ... when their contacts have the same kinds at angles that agree to this (radians).
+    /// Default 1e-6.
+    pub same_state_angle: f64,
+    /// ... when their reactions agree to this times 1 + ‖x‖₁. Default 1e-7.
+    pub same_state_x: f64,
+    /// Where η_s is an infimum (the least admissible state unbounded), the exact root of
+    /// the weightless direction's contacts replaces the approximate η_s when it lies within
+    /// this (relative) of it. Default 1e-6.
+    pub infimum_rel: f64,
+    /// A weightless direction d is admitted by a contact when g·d ≤ `recession_tol` |g| |d|
+    /// ([`crate::limit::recession`]). Default 1e-10.
+    pub recession_tol: f64,
+    /// The contacts tight at a weightless direction, from which the exact η_rec is solved,
+    /// are those with g·d within `recession_candidate_rel` |g| |d| of zero. Default 1e-6.
+    pub recession_candidate_rel: f64,
 }
 
 impl Default for Settings {
@@ -192,6 +218,13 @@ impl Default for Settings {
             curve_samples: 16,
             lp_backend: LpBackend::Dense,
             limit_state_search: LimitStateSearch::Ridge,
+            sweep_walk_offset: 1e-6,
+            same_state_eta: 1e-9,
+            same_state_angle: 1e-6,
+            same_state_x: 1e-7,
+            infimum_rel: 1e-6,
+            recession_tol: 1e-10,
+            recession_candidate_rel: 1e-6,
         }
     }
 }
@@ -249,6 +282,16 @@ impl Settings {
             ("settings.slope_step", self.slope_step),
             ("settings.kink_slope_rel", self.kink_slope_rel),
             ("settings.boundary_match", self.boundary_match),
+            ("settings.sweep_walk_offset", self.sweep_walk_offset),
+            ("settings.same_state_eta", self.same_state_eta),
+            ("settings.same_state_angle", self.same_state_angle),
+            ("settings.same_state_x", self.same_state_x),
+            ("settings.infimum_rel", self.infimum_rel),
+            ("settings.recession_tol", self.recession_tol),
+            (
+                "settings.recession_candidate_rel",
+                self.recession_candidate_rel,
+            ),
         ] {
             unit(name, v)?;
         }
