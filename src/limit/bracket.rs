@@ -196,12 +196,12 @@ const PREDICT_AT: [f64; 2] = [1e-1, 1e-3];
 /// relative η).
 const PREDICT_STEP: f64 = 0.05;
 
-/// A narrowed bracket of η_s from a prediction: Newton on the candidates at the upper end of
-/// a coarse bracket (the whole set, as the solve's enumeration starts) gives an admissible
-/// refined state, η_p; the margin at η_p (1 ∓ [`PREDICT_STEP`] `bracket_rel`) then brackets η_s
-/// to a tenth of `bracket_rel` when the prediction is right. Each margin evaluated narrows the bracket
-/// whatever its sign (the margin is increasing in η), so a wrong prediction costs two LPs
-/// and the bracketing goes on from there.
+/// A narrowed bracket of η_s from a prediction: Newton on the candidates at the upper end
+/// of a coarse bracket (the whole set, as the solve's enumeration starts) gives an
+/// admissible refined state, η_p; the margin at η_p (1 ∓ [`PREDICT_STEP`] `bracket_rel`)
+/// then brackets η_s to a tenth of `bracket_rel` when the prediction is right. Each margin
+/// evaluated narrows the bracket whatever its sign (the margin is increasing in η), so a
+/// wrong prediction costs two LPs and the bracketing goes on from there.
 fn predicted(
     arch: &Arch,
     mu: f64,

@@ -118,12 +118,12 @@ pub fn solve_near(
 
 /// An arch whose least admissible state is unbounded (its reactions beyond
 /// `settings.unbounded_reactions`): η_s is then an infimum, the least η with a weightless
-/// admissible direction ([`recession`]), and the Newton state found
-/// near it only approximates that η (its equations hold relative to reactions of 1e9 or
-/// more). η_s becomes the exact root of the direction's three contacts (a discrete arch:
-/// a cubic; a continuous one: Newton on the weightless system, free contacts tangent) when
-/// it verifies within `settings.infimum_rel` of the approximation; anything found at η_s itself moves with it
-/// (no finite state carries it: the search reports no limit state there).
+/// admissible direction ([`recession`]), and the Newton state found near it only
+/// approximates that η (its equations hold relative to reactions of 1e9 or more). η_s
+/// becomes the exact root of the direction's three contacts (a discrete arch: a cubic; a
+/// continuous one: Newton on the weightless system, free contacts tangent) when it verifies
+/// within `settings.infimum_rel` of the approximation; anything found at η_s itself moves
+/// with it (no finite state carries it: the search reports no limit state there).
 fn exact_infimum(arch: &Arch, mu: f64, outcome: Outcome, settings: &Settings) -> Outcome {
     let exact = |eta: f64, x: &Reactions| {
         let hi = (eta * (1.0 + settings.infimum_rel)).min(crate::arch::ETA_TOP);

@@ -134,10 +134,11 @@ fn cone_margin(
     Some((s, d))
 }
 
-/// η_rec in [lo, hi]: the least η with a weightless admissible direction, when the cone
-/// has no interior at `lo` and has one at `hi` (`None` otherwise, or for a continuous
-/// arch). Bisection on the sign of [`margin`] to [`BISECTION_REL`], then the exact root of
-/// det\[g_a g_b g_c\](η) for the contacts tight at the bracket's direction, verified.
+/// η_rec in [lo, hi]: the least η with a weightless admissible direction, when the cone has
+/// no interior at `lo` and has one at `hi` (`None` otherwise, or for a continuous arch).
+/// Bisection on the sign of [`margin`] to a relative width of 1e-13 (`BISECTION_REL`), then
+/// the exact root of det\[g_a g_b g_c\](η) for the contacts tight at the bracket's
+/// direction, verified.
 pub fn threshold(arch: &Arch, mu: f64, lo: f64, hi: f64, settings: &Settings) -> Option<Recession> {
     let grads = gradients(arch, mu)?;
     let positive = |eta: f64| cone_margin(&grads, eta, settings).map(|(s, d)| (s > MARGIN_TOL, d));
@@ -441,11 +442,11 @@ fn weightless_newton(
 
 /// η_rec of a continuous arch near `eta0`, where its least states grow without bound along
 /// the direction of `x0`: the weightless activation functions at the direction's tightest
-/// local maxima (at most [`MAX_TIGHT_CONTINUOUS`]), every three of them refined exactly by Newton (a straight
-/// line of thrust touching the intrados or extrados at those points, a free one tangent),
-/// and the least η whose direction every joint admits (each local maximum of g·d at most
-/// `settings.recession_tol` |g| |d|, by the continuum scan of the weightless functions). `None` when no
-/// triple verifies.
+/// local maxima (at most six, `MAX_TIGHT_CONTINUOUS`), every three of them refined exactly
+/// by Newton (a straight line of thrust touching the intrados or extrados at those points,
+/// a free one tangent), and the least η whose direction every joint admits (each local
+/// maximum of g·d at most `settings.recession_tol` |g| |d|, by the continuum scan of the
+/// weightless functions). `None` when no triple verifies.
 pub fn continuum_threshold(
     arch: &Arch,
     mu: f64,

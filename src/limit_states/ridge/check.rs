@@ -25,10 +25,11 @@ const ZERO_COFACTOR: f64 = 1e-9;
 
 /// A pre-filter on the joints' rows (no trigonometry): `false` only where the answer of
 /// [`check`] is sure to be "no limit state" — the candidate is clearly not admissible
-/// (some φ above [`CLEAR_FACTOR`] `adm_tol` times its magnitude), or every contact is clearly active or
-/// clearly not (|φ| below `adm_tol`, or φ below −[`CLEAR_FACTOR`] `adm_tol`, in units of its magnitude),
-/// exactly four are active, one sliding sense per joint, and the cofactors of their columns
-/// have mixed signs. Everything in between is left to `check`.
+/// (some φ above [`CLEAR_FACTOR`] `adm_tol` times its magnitude), or every contact is
+/// clearly active or clearly not (|φ| below `adm_tol`, or φ below −[`CLEAR_FACTOR`]
+/// `adm_tol`, in units of its magnitude), exactly four are active, one sliding sense per
+/// joint, and the cofactors of their columns have mixed signs. Everything in between is
+/// left to `check`.
 pub(super) fn may_carry_mechanism(
     js: &[JointRows],
     mu: f64,

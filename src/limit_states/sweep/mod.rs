@@ -106,11 +106,11 @@ pub fn sweep_load(
 
 /// [`sweep_load`], and the points of P(λ_static) the sweep reached: every vertex alive at
 /// the top, evaluated there, and every event within `settings.same_root` × (1 + λ_static)
-/// of the top (the resolution of its roots), which the sweep neither counts nor checks (the caller decides at λ_static). As λ
-/// rises to λ_static the vertices of P(λ) run into the vertices of the optimal face
-/// P(λ_static), so these points are those vertices (each possibly several times, and
-/// points on the box included), whichever state the LP returned there. Empty after a
-/// failure before the event loop.
+/// of the top (the resolution of its roots), which the sweep neither counts nor checks (the
+/// caller decides at λ_static). As λ rises to λ_static the vertices of P(λ) run into the
+/// vertices of the optimal face P(λ_static), so these points are those vertices (each
+/// possibly several times, and points on the box included), whichever state the LP returned
+/// there. Empty after a failure before the event loop.
 #[allow(clippy::too_many_arguments)]
 pub fn sweep_load_with_top(
     arch: &Arch,

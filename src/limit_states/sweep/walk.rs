@@ -118,9 +118,6 @@ impl Sweeper<'_> {
         seen
     }
 
-    /// Whether P(η) meets the box, and its point of greatest margin there: the margin LP
-    /// over every plane (box sides included) in units of the box, x = BOX·u, so that the
-
     /// Starts from every vertex of P(t), found by a walk on its vertex graph from `centre`
     /// (a point inside P(t)).
     pub(super) fn start_by_walk(&mut self, t: f64, centre: Reactions) {
