@@ -289,13 +289,8 @@ impl<'a, F: Family> System<'a, F> {
 }
 
 /// The residual F(z) and the analytic Jacobian ∂F/∂z (row-major) of the thickness system
-/// that [`solve_system`] solves for `contacts` with the given `unknowns`, at the point
-/// z = (h, v, w, the unknown parameters (η before μ), the free β_i in contact order,
-/// then one KKT multiplier y_i per contact when the system is KKT-completed, i.e. when
-/// `unknowns` is not [`Unknowns::TMu`] and there are fewer than 4 contacts (3 for
-/// [`Unknowns::Mu`])). `eta` and `mu` give the parameters that are not unknowns.
-/// Returns `None` when `z` does not have that length. Exposed so that tests can compare
-/// the Jacobian with finite differences of the residual; Newton uses the same code.
+/// that [`solve_system`] solves for `contacts` with the given `unknowns` (see
+/// [`residual_and_jacobian_in`]); `eta` and `mu` give the parameters that are not unknowns.
 pub fn residual_and_jacobian(
     arch: &Arch,
     contacts: &[Contact],
@@ -304,10 +299,30 @@ pub fn residual_and_jacobian(
     unknowns: Unknowns,
     z: &[f64],
 ) -> Option<(Vec<f64>, Vec<Vec<f64>>)> {
-    let family = Thickness { arch };
     let pattern: Vec<Tagged<()>> = contacts.iter().map(|&c| (c, ())).collect();
-    let sys = System::new(&family, &pattern, (eta, mu), unknowns, Objective::Least);
-    if contacts.is_empty() || z.len() != sys.n_unknowns() {
+    let family = Thickness { arch };
+    residual_and_jacobian_in(&family, &pattern, (eta, mu), unknowns, Objective::Least, z)
+}
+
+/// The residual F(z) and the analytic Jacobian ∂F/∂z (row-major) of the system that
+/// [`solve`] solves for `pattern` of `family` with the given `unknowns`, at the point
+/// z = (h, v, w, the unknown parameters (t before μ), the free β_i in contact order,
+/// then one KKT multiplier y_i per contact when the system is KKT-completed for
+/// `objective`, i.e. when `unknowns` is not [`Unknowns::TMu`] and there are fewer than 4
+/// contacts (3 for [`Unknowns::Mu`])). `(t, mu)` give the parameters that are not
+/// unknowns. Returns `None` when `z` does not have that length. Exposed so that tests can
+/// compare every family's Jacobian with finite differences of the residual; Newton uses the
+/// same code.
+pub fn residual_and_jacobian_in<F: Family>(
+    family: &F,
+    pattern: &[Tagged<F::Tag>],
+    (t, mu): (f64, f64),
+    unknowns: Unknowns,
+    objective: Objective,
+    z: &[f64],
+) -> Option<(Vec<f64>, Vec<Vec<f64>>)> {
+    let sys = System::new(family, pattern, (t, mu), unknowns, objective);
+    if pattern.is_empty() || z.len() != sys.n_unknowns() {
         return None;
     }
     let mut jac = DMatrix::<f64>::zeros(sys.n_equations(), sys.n_unknowns());

@@ -377,41 +377,15 @@ fn same_state(p: &SweptState, q: &SweptState, settings: &Settings) -> bool {
             .all(|(a, b)| a.kind == b.kind && (a.beta - b.beta).abs() <= settings.same_state_angle)
 }
 
-/// Contacts of one kind closer than this many joint spacings are at adjacent joints of a
-/// discretisation: more than one spacing, to allow for rounding, and less than two, so
-/// that contacts with a joint between them stay separate.
-const ADJACENT_SPACINGS: f64 = 1.5;
-
-/// A discrete pattern carried over to the continuum: contacts of one kind at adjacent
-/// joints (spacing `h`) become one contact; interior ones have a free angle (tangency).
+/// A discrete pattern carried over to the continuum ([`crate::family::merge_adjacent`]; a
+/// springing stays where it is), by increasing β.
 fn merge(pattern: &[Contact], h: f64) -> Vec<Contact> {
-    let mut by_kind: Vec<Contact> = pattern.to_vec();
-    by_kind.sort_by(|p, q| p.kind.cmp(&q.kind).then(p.beta.total_cmp(&q.beta)));
-    let mut out: Vec<Contact> = Vec::new();
-    let mut group: Vec<Contact> = Vec::new();
-    let flush = |group: &mut Vec<Contact>, out: &mut Vec<Contact>| {
-        if group.is_empty() {
-            return;
-        }
-        let springing = group.iter().find(|c| c.at == Location::Springing).copied();
-        out.push(springing.unwrap_or(Contact {
-            beta: group.iter().map(|c| c.beta).sum::<f64>() / group.len() as f64,
-            kind: group[0].kind,
-            at: Location::Interior,
-            free: true,
-        }));
-        group.clear();
-    };
-    for c in by_kind {
-        let joins = group
-            .last()
-            .is_some_and(|l| l.kind == c.kind && (c.beta - l.beta).abs() <= ADJACENT_SPACINGS * h);
-        if !joins {
-            flush(&mut group, &mut out);
-        }
-        group.push(c);
-    }
-    flush(&mut group, &mut out);
+    let tagged: Vec<(Contact, ())> = pattern.iter().map(|&c| (c, ())).collect();
+    let mut out: Vec<Contact> =
+        crate::family::merge_adjacent(&tagged, h, |c| c.0.at == Location::Springing)
+            .into_iter()
+            .map(|c| c.0)
+            .collect();
     out.sort_by(|p, q| p.beta.total_cmp(&q.beta).then(p.kind.cmp(&q.kind)));
     out
 }

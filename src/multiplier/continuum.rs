@@ -16,14 +16,25 @@
 
 use crate::arch::{grid_angle, Arch, Radians};
 use crate::contact::{Contact, ContactKind, Location, Peak};
+use crate::family;
 use crate::load::{live_activation, LiveLoad, Side};
 use crate::lp::{self, LpOutcome};
+use crate::refine::{self, Objective, Refined, Start, Unknowns};
 use crate::scan::peaks_over;
 use crate::settings::Settings;
 use crate::statics::{actions, magnitude, Affine, Reactions};
 use nalgebra::{DMatrix, DVector};
 use std::cell::{Cell, OnceCell};
 
+/// Two rows that agree to this relative tolerance in every coefficient are one function
+/// (twins: the extrados hinge of both sides of a loaded section).
+const TWIN_REL: f64 = 1e-13;
+/// Newton's tolerance on the load's rows (scaled residual): they are affine in (x, λ), so
+/// Newton reaches the rounding level, and the least λ can be as small as 1e-10 (near μ_ms),
+/// where only a residual this small fixes its leading digits.
+const LOAD_NEWTON_TOL: f64 = 1e-15;
+/// A vertex's multiplier above −this is ≥ 0 (rounding).
+const MULTIPLIER_SLACK: f64 = 1e-9;
 /// Relative violation at which the exchange stops (Newton finishes the job).
 const EXCHANGE_TOL: f64 = 1e-9;
 /// At most this many exchange rounds.
@@ -426,7 +437,7 @@ fn newton_verified(
     settings: &Settings,
 ) -> Result<(f64, Reactions, Vec<LoadedContact>), String> {
     let verified = |(l, x): (f64, Reactions)| verify(p, &x, l, settings).map(|a| (l, x, a));
-    let first = match newton(p, x, lambda, pattern, goal) {
+    let first = match newton(p, x, lambda, pattern, goal, settings) {
         Ok(r) => match verified(r) {
             Ok(found) => return Ok(found),
             Err(_) => {
@@ -440,7 +451,7 @@ fn newton_verified(
             .filter(|&i| i != drop)
             .map(|i| pattern[i])
             .collect();
-        if let Ok(Ok(found)) = newton(p, x, lambda, &rest, goal).map(verified) {
+        if let Ok(Ok(found)) = newton(p, x, lambda, &rest, goal, settings).map(verified) {
             return Ok(found);
         }
     }
@@ -506,30 +517,82 @@ pub(crate) struct Goal {
     pub(crate) reach: f64,
 }
 
-/// Newton on the system of `pattern` (twins merged): φ = 0 at each contact, dφ/dβ = 0 at
-/// each free (tangency) contact; unknowns (h, v, w, λ) and the free angles. Where that is
-/// one or more equations short and an objective is given, the KKT conditions of the optimum
-/// complete it: Σ y_i ∇_z φ_i = ±e_λ with multipliers y_i ≥ 0 (unknowns), the tangencies
-/// being their β-stationarity. A root farther than `goal.reach` from the start, or with
-/// λ < 0 or a negative multiplier, is rejected; so is a square pattern's root (a vertex)
-/// whose multipliers, Σ y_i ∇_z φ_i = ±e_λ, are not all ≥ 0 when an objective is given:
-/// an admissible vertex that is not the optimum (a back end's inexact z can point at one).
+/// Newton on the system of `pattern` (twins merged) in the load family
+/// ([`crate::refine::solve`], unknown λ): φ = 0 at each contact, dφ/dβ = 0 at each free
+/// (tangency) contact. Where that is one or more equations short and an objective is given,
+/// the KKT conditions of the optimum complete it (Σ y_i ∇_z φ_i = ±e_λ, y_i ≥ 0). A pattern
+/// with more than four distinct rows is not a vertex (no square system); a root farther
+/// than `goal.reach` from the start, or with λ < 0, is rejected; so is a square pattern's
+/// root (a vertex) whose multipliers, Σ y_i ∇_z φ_i = ±e_λ, are not all ≥ 0 when an
+/// objective is given: an admissible vertex that is not the optimum (a back end's inexact
+/// z can point at one).
 fn newton(
     p: &Loaded,
     x: Reactions,
     lambda: f64,
     pattern: &[LoadedContact],
     goal: Goal,
+    settings: &Settings,
 ) -> Result<(f64, Reactions), String> {
-    // twins (one function for two contacts: the extrados hinge rows of both sides of the
-    // point load's section) are one equation
+    let pattern = distinct_rows(p, pattern);
+    let n = pattern.len();
+    let k = pattern.iter().filter(|c| c.contact.free).count();
+    if n > 4 {
+        return Err(format!(
+            "the pattern has {n} contacts ({k} tangencies): not a vertex, no square system to refine"
+        ));
+    }
+    let objective = match goal.maximise {
+        Some(true) => Objective::Largest,
+        Some(false) => Objective::Least,
+        None if n == 4 => Objective::Least,
+        None => {
+            return Err(format!(
+                "the pattern has {n} contacts ({k} tangencies): too few for a vertex"
+            ))
+        }
+    };
+    let family = family::Load {
+        arch: p.arch,
+        eta: p.eta,
+        load: p.load,
+    };
+    let tagged: Vec<(Contact, Side)> = pattern.iter().map(|c| (c.contact, c.side)).collect();
+    let start = Start {
+        x,
+        t: lambda,
+        mu: p.mu,
+    };
+    let tight = Settings {
+        newton_tol: LOAD_NEWTON_TOL,
+        ..settings.clone()
+    };
+    let r = refine::solve(&family, &tagged, start, Unknowns::T, objective, &tight)
+        .map_err(|e| format!("Newton on the active pattern failed: {e:?}"))?;
+    let scale0 = 1.0 + x.iter().map(|v| v.abs()).sum::<f64>() + lambda.abs();
+    let moved = (0..3).fold((r.t - lambda).abs(), |m, q| m.max((r.x[q] - x[q]).abs()));
+    if moved > goal.reach * scale0 || r.t < 0.0 {
+        return Err(format!(
+            "Newton left the start's neighbourhood (moved {moved:e}, lambda {})",
+            r.t
+        ));
+    }
+    if n == 4 && goal.maximise.is_some() && !vertex_is_optimal(p, &r, objective) {
+        return Err("a multiplier of the vertex is negative: not the optimum".into());
+    }
+    Ok((r.t, r.x))
+}
+
+/// The pattern with twins merged: one contact for one function (the extrados hinge rows of
+/// both sides of the point load's section are one, to rounding).
+fn distinct_rows(p: &Loaded, pattern: &[LoadedContact]) -> Vec<LoadedContact> {
     let twin = |p1: &LoadedContact, p2: &LoadedContact| {
         let (a1, c1) = p.row(p1.contact.kind, p1.contact.beta, p1.side, 0);
         let (a2, c2) = p.row(p2.contact.kind, p2.contact.beta, p2.side, 0);
         p1.contact.kind == p2.contact.kind
             && p1.contact.beta == p2.contact.beta
-            && (c1 - c2).abs() <= 1e-13 * (1.0 + c1.abs())
-            && (0..4).all(|k| (a1[k] - a2[k]).abs() <= 1e-13 * (1.0 + a1[k].abs()))
+            && (c1 - c2).abs() <= TWIN_REL * (1.0 + c1.abs())
+            && (0..4).all(|k| (a1[k] - a2[k]).abs() <= TWIN_REL * (1.0 + a1[k].abs()))
     };
     let mut unique: Vec<LoadedContact> = Vec::new();
     for c in pattern {
@@ -537,159 +600,25 @@ fn newton(
             unique.push(*c);
         }
     }
-    let pattern = unique;
-    let n = pattern.len();
-    let free: Vec<usize> = (0..n).filter(|&i| pattern[i].contact.free).collect();
-    let k = free.len();
-    let kkt = match (n + k).cmp(&(4 + k)) {
-        std::cmp::Ordering::Equal => None,
-        std::cmp::Ordering::Less => match goal.maximise {
-            Some(max) => Some(if max { 1.0 } else { -1.0 }),
-            None => {
-                return Err(format!(
-                    "the pattern has {n} contacts ({k} tangencies): too few for a vertex"
-                ))
-            }
-        },
-        std::cmp::Ordering::Greater => {
-            return Err(format!(
-                "the pattern has {n} contacts ({k} tangencies): not a vertex, no square system to refine"
-            ))
-        }
-    };
-    let unknowns = 4 + k + if kkt.is_some() { n } else { 0 };
-    let equations = n + k + if kkt.is_some() { 4 } else { 0 };
-    let beta_of = |u: &DVector<f64>, i: usize| {
-        free.iter()
-            .position(|&f| f == i)
-            .map_or(pattern[i].contact.beta, |s| u[4 + s])
-    };
-    let mut u = DVector::from_fn(unknowns, |i, _| match i {
-        0..=2 => x[i],
-        3 => lambda,
-        _ if i < 4 + k => pattern[free[i - 4]].contact.beta,
-        _ => 0.0,
+    unique
+}
+
+/// Whether the vertex `r` (four rows) is the optimum of `objective`: its multipliers,
+/// Σ y_i ∇_(x,λ) φ_i = ±e_λ, are all ≥ −`MULTIPLIER_SLACK`.
+fn vertex_is_optimal(p: &Loaded, r: &Refined<Side>, objective: Objective) -> bool {
+    let a = DMatrix::from_fn(4, r.contacts.len(), |row, c| {
+        p.row(r.contacts[c].kind, r.contacts[c].beta, r.tags[c], 0)
+            .0[row]
     });
-    if let Some(sign) = kkt {
-        // the multipliers of the start: least squares of Σ y_i a_i = ±e_λ
-        let a = DMatrix::from_fn(4, n, |r, c| {
-            p.row(
-                pattern[c].contact.kind,
-                pattern[c].contact.beta,
-                pattern[c].side,
-                0,
-            )
-            .0[r]
-        });
-        let e = DVector::from_fn(4, |r, _| if r == 3 { sign } else { 0.0 });
-        let y = a
-            .svd(true, true)
-            .solve(&e, 1e-12)
-            .map_err(|e| format!("no KKT multipliers at the start: {e}"))?;
-        for i in 0..n {
-            u[4 + k + i] = y[i];
-        }
-    }
-    let residual = |u: &DVector<f64>| -> (DVector<f64>, DMatrix<f64>) {
-        let z = [u[0], u[1], u[2], u[3]];
-        let mut r = DVector::zeros(equations);
-        let mut j = DMatrix::zeros(equations, unknowns);
-        let dot = |a: &[f64; 4], c: f64| a.iter().zip(&z).map(|(p, q)| p * q).sum::<f64>() + c;
-        let mut row = 0;
-        for (i, c) in pattern.iter().enumerate() {
-            let slot = free.iter().position(|&f| f == i);
-            let beta = beta_of(u, i);
-            let (a0, c0) = p.row(c.contact.kind, beta, c.side, 0);
-            let (a1, c1) = p.row(c.contact.kind, beta, c.side, 1);
-            r[row] = dot(&a0, c0);
-            for q in 0..4 {
-                j[(row, q)] = a0[q];
-            }
-            if let Some(s) = slot {
-                j[(row, 4 + s)] = dot(&a1, c1);
-                row += 1;
-                let (a2, c2) = p.row(c.contact.kind, beta, c.side, 2);
-                r[row] = dot(&a1, c1);
-                for q in 0..4 {
-                    j[(row, q)] = a1[q];
-                }
-                j[(row, 4 + s)] = dot(&a2, c2);
-            }
-            row += 1;
-        }
-        if let Some(sign) = kkt {
-            // Σ y_i a_i(β_i) − sign e_λ = 0
-            for q in 0..4 {
-                let mut sum = if q == 3 { -sign } else { 0.0 };
-                for (i, c) in pattern.iter().enumerate() {
-                    let beta = beta_of(u, i);
-                    let y = u[4 + k + i];
-                    let a0 = p.row(c.contact.kind, beta, c.side, 0).0;
-                    sum += y * a0[q];
-                    j[(row + q, 4 + k + i)] = a0[q];
-                    if let Some(s) = free.iter().position(|&f| f == i) {
-                        j[(row + q, 4 + s)] += y * p.row(c.contact.kind, beta, c.side, 1).0[q];
-                    }
-                }
-                r[row + q] = sum;
-            }
-        }
-        (r, j)
+    let sign = if objective == Objective::Largest {
+        1.0
+    } else {
+        -1.0
     };
-    let scale0 = 1.0 + x.iter().map(|v| v.abs()).sum::<f64>() + lambda.abs();
-    let mut converged = false;
-    for _ in 0..50 {
-        let (r, j) = residual(&u);
-        let scale = 1.0 + u.iter().take(4).map(|v| v.abs()).sum::<f64>();
-        if r.amax() <= 1e-15 * scale {
-            converged = true;
-            break;
-        }
-        let Some(step) = j.lu().solve(&(-r)) else {
-            break;
-        };
-        u += &step;
-        if step.iter().take(4 + k).fold(0.0f64, |m, v| m.max(v.abs())) <= 1e-16 * scale {
-            converged = true;
-            break;
-        }
-    }
-    let (r, _) = residual(&u);
-    let scale = 1.0 + u.iter().take(4).map(|v| v.abs()).sum::<f64>();
-    if !converged && r.amax() > 1e-13 * scale {
-        return Err(format!(
-            "Newton on the active pattern did not converge (residual {:e})",
-            r.amax()
-        ));
-    }
-    let moved = (0..4).fold(0.0f64, |m, q| {
-        m.max((u[q] - if q < 3 { x[q] } else { lambda }).abs())
-    });
-    if moved > goal.reach * scale0 || u[3] < 0.0 {
-        return Err(format!(
-            "Newton left the start's neighbourhood (moved {moved:e}, lambda {})",
-            u[3]
-        ));
-    }
-    if kkt.is_some() && (0..n).any(|i| u[4 + k + i] < -1e-9) {
-        return Err("a KKT multiplier of the pattern is negative: not the optimum".into());
-    }
-    if let (None, Some(max)) = (kkt, goal.maximise) {
-        // a vertex: its multipliers Σ y_i a_i = ±e_λ must be ≥ 0 for it to be the optimum
-        let a = DMatrix::from_fn(4, n, |r, c| {
-            p.row(pattern[c].contact.kind, beta_of(&u, c), pattern[c].side, 0)
-                .0[r]
-        });
-        let sign = if max { 1.0 } else { -1.0 };
-        let e = DVector::from_fn(4, |r, _| if r == 3 { sign } else { 0.0 });
-        if a.lu()
-            .solve(&e)
-            .is_some_and(|y| y.iter().any(|&v| v < -1e-9))
-        {
-            return Err("a multiplier of the vertex is negative: not the optimum".into());
-        }
-    }
-    Ok((u[3], [u[0], u[1], u[2]]))
+    let e = DVector::from_fn(4, |row, _| if row == 3 { sign } else { 0.0 });
+    !a.lu()
+        .solve(&e)
+        .is_some_and(|y| y.iter().any(|&v| v < -MULTIPLIER_SLACK))
 }
 
 /// A limit state of a discretisation carried over to the continuum: contacts of one kind
@@ -709,52 +638,15 @@ pub fn carry_over(
     settings: &Settings,
 ) -> Option<(f64, Reactions, Vec<LoadedContact>)> {
     let p = Loaded::new(arch, eta, mu, load);
-    let fixed = |c: &LoadedContact| {
-        c.contact.at == Location::Springing
-            || matches!(*load, LiveLoad::Point { beta } if beta == c.contact.beta)
+    let fixed = |c: &(Contact, Side)| {
+        c.0.at == Location::Springing
+            || matches!(*load, LiveLoad::Point { beta } if beta == c.0.beta)
     };
-    let mut sorted = pattern.to_vec();
-    sorted.sort_by(|a, b| {
-        (a.contact.kind, a.side == Side::After)
-            .cmp(&(b.contact.kind, b.side == Side::After))
-            .then(a.contact.beta.total_cmp(&b.contact.beta))
-    });
-    let mut merged: Vec<LoadedContact> = Vec::new();
-    let mut group: Vec<LoadedContact> = Vec::new();
-    let flush = |group: &mut Vec<LoadedContact>, out: &mut Vec<LoadedContact>| {
-        if group.is_empty() {
-            return;
-        }
-        out.push(
-            group
-                .iter()
-                .copied()
-                .find(|c| fixed(c))
-                .unwrap_or(LoadedContact {
-                    contact: Contact {
-                        beta: group.iter().map(|c| c.contact.beta).sum::<f64>()
-                            / group.len() as f64,
-                        kind: group[0].contact.kind,
-                        at: Location::Interior,
-                        free: true,
-                    },
-                    side: group[0].side,
-                }),
-        );
-        group.clear();
-    };
-    for c in sorted {
-        let joins = group.last().is_some_and(|l| {
-            l.contact.kind == c.contact.kind
-                && l.side == c.side
-                && (c.contact.beta - l.contact.beta).abs() <= 1.5 * h
-        });
-        if !joins {
-            flush(&mut group, &mut merged);
-        }
-        group.push(c);
-    }
-    flush(&mut group, &mut merged);
+    let tagged: Vec<(Contact, Side)> = pattern.iter().map(|c| (c.contact, c.side)).collect();
+    let merged: Vec<LoadedContact> = family::merge_adjacent(&tagged, h, fixed)
+        .into_iter()
+        .map(|(contact, side)| LoadedContact { contact, side })
+        .collect();
     let goal = Goal {
         maximise: None,
         reach: 0.1,

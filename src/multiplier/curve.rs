@@ -17,10 +17,11 @@
 use super::{survey, LoadOutcome};
 use crate::arch::{Arch, InputError, JointLayout};
 use crate::contact::{Contact, ContactKind, Location};
+use crate::family;
 use crate::load::{rows, LiveLoad, LoadRow, Side};
+use crate::refine::{self, Objective, Start, Unknowns};
 use crate::settings::Settings;
 use crate::statics::{magnitude, Reactions};
-use nalgebra::{Matrix5, Vector5};
 
 /// One sample of the λ–μ curve: μ and the answer there (`Err`: no decision, why).
 pub type CurveSample = (f64, Result<LoadOutcome, String>);
@@ -101,7 +102,7 @@ pub fn branch_key(
         .collect();
     let at_static = sv
         .lambda_static
-        .is_some_and(|(top, _)| least.lambda >= top - settings.root_slack * top.abs().max(1.0));
+        .is_some_and(|(top, _)| !super::below(least.lambda, top, settings));
     BranchKey::Collapse { pattern, at_static }
 }
 
@@ -432,54 +433,27 @@ fn exact_corner(
     let size = union.len();
     let on_union =
         |p: &Vec<(Contact, Side)>| distinct(&[&union, p]).is_some_and(|u| u.len() == size);
-    let w0 = start.2[2];
     let continuous_at = |s: &(f64, f64, Reactions, Pattern), lambda: f64| {
         on_union(&s.3) || (s.1 - lambda).abs() <= SAME_LAMBDA * (1.0 + lambda.abs())
     };
-    let eval = |z: &Vector5<f64>| -> Option<(Vector5<f64>, Matrix5<f64>)> {
-        let (at_mu, at_mu1) = (
-            rows(arch, joints, eta, z[4], load),
-            rows(arch, joints, eta, z[4] + 1.0, load),
-        );
-        let mut f = Vector5::zeros();
-        let mut jac = Matrix5::zeros();
-        for (i, &(c, side)) in union.iter().enumerate() {
-            let (r, r1) = (row_in(&at_mu, &c, side)?, row_in(&at_mu1, &c, side)?);
-            let v = [z[0], z[1], z[2], z[3]];
-            f[i] = (0..4).map(|k| r.a[k] * v[k]).sum::<f64>() + r.c;
-            for k in 0..4 {
-                jac[(i, k)] = r.a[k];
-            }
-            // affine in μ: the derivative is the difference of the rows at μ + 1 and μ
-            jac[(i, 4)] = (0..4).map(|k| (r1.a[k] - r.a[k]) * v[k]).sum::<f64>() + (r1.c - r.c);
-        }
-        if size == 4 {
-            f[4] = z[2] - w0;
-            jac[(4, 2)] = 1.0;
-        }
-        Some((f, jac))
+    // the one Newton in (h, v, w, λ, μ); with four sliding rows (no w in any) its
+    // minimum-norm steps leave w at the start's
+    let family = family::Load { arch, eta, load };
+    let from = Start {
+        x: start.2,
+        t: start.1,
+        mu: start.0,
     };
-    let newton = |mut z: Vector5<f64>| -> Option<Vector5<f64>> {
-        for _ in 0..40 {
-            let (f, jac) = eval(&z)?;
-            let step = jac.lu().solve(&f)?;
-            z -= step;
-            if !z.iter().all(|v| v.is_finite()) || z[4] <= 0.0 {
-                return None;
-            }
-            if step.norm() <= 1e-14 * (1.0 + z.norm()) {
-                return Some(z);
-            }
-        }
-        None
-    };
-    let z = newton(Vector5::new(
-        start.2[0], start.2[1], start.2[2], start.1, start.0,
-    ))?;
-    // again from the root rounded to 9 digits: the start's last bits (LP noise) do not
-    // reach the answer, which is then the same run to run
-    let z = newton(z.map(|v| format!("{v:.8e}").parse().unwrap_or(v)))?;
-    let (mu, lambda, mut x) = (z[4], z[3], [z[0], z[1], z[2]]);
+    let r = refine::solve(
+        &family,
+        &union,
+        from,
+        Unknowns::TMu,
+        Objective::Least,
+        settings,
+    )
+    .ok()?;
+    let (mu, lambda, mut x) = (r.mu, r.t, r.x);
     let widen = CLUSTER_REL * mu_hi;
     if mu < mu_lo - widen || mu > mu_hi + widen {
         return None;

@@ -608,7 +608,7 @@ fn continuous_finite_friction(
             ) else {
                 continue;
             };
-            if l >= lambda_s * (1.0 - settings.root_slack) || !above_min(l) {
+            if !below(l, lambda_s, settings) || !above_min(l) {
                 continue;
             }
             let Some(ls) = limit_state_on(arch, eta, mu, load, (l, x), &active, settings)? else {
@@ -652,6 +652,13 @@ fn continuous_finite_friction(
 }
 
 /// Two refined limit states are the same: equal λ (to 1e-9) and the same contacts.
+/// Whether λ lies below `top` by more than the resolution at which a multiplier is decided:
+/// `root_slack` relative, and absolute below 1 (the rows are of size 1 in x and λ, so a λ
+/// near zero is fixed to rounding in absolute terms, not relative ones).
+pub(crate) fn below(l: f64, top: f64, settings: &Settings) -> bool {
+    l < top - settings.root_slack * top.abs().max(1.0)
+}
+
 fn same_load_state(p: &LoadLimitState, q: &LoadLimitState) -> bool {
     (p.lambda - q.lambda).abs() <= 1e-9 * (1.0 + p.lambda.abs())
         && p.pattern.len() == q.pattern.len()

@@ -10,7 +10,7 @@ use crate::statics::{actions, Actions, Affine, Reactions};
 /// An arch at thickness `eta` carrying its self-weight and λ × `load`; the parameter is λ.
 /// A row is named by its contact and the side of the loaded section it belongs to.
 #[derive(Debug, Clone, Copy)]
-pub struct Loaded<'a> {
+pub struct Load<'a> {
     /// The arch.
     pub arch: &'a Arch,
     /// Its thickness ratio η.
@@ -21,7 +21,7 @@ pub struct Loaded<'a> {
 
 /// The rows of one contact of the load family at (λ, μ).
 #[derive(Debug, Clone)]
-pub struct LoadedRows {
+pub struct LoadRows {
     dead: Actions,
     live: [[f64; 3]; 3],
     kind: ContactKind,
@@ -30,9 +30,9 @@ pub struct LoadedRows {
     mu: f64,
 }
 
-impl<'a> Family for Loaded<'a> {
+impl<'a> Family for Load<'a> {
     type Tag = Side;
-    type Local = LoadedRows;
+    type Local = LoadRows;
 
     fn arch(&self) -> &Arch {
         self.arch
@@ -45,8 +45,8 @@ impl<'a> Family for Loaded<'a> {
         side: Side,
         lambda: f64,
         mu: f64,
-    ) -> LoadedRows {
-        LoadedRows {
+    ) -> LoadRows {
+        LoadRows {
             dead: actions(self.arch, self.eta, beta),
             live: self.load.actions_d(self.arch, self.eta, beta, side),
             kind,
@@ -62,7 +62,7 @@ impl<'a> Family for Loaded<'a> {
     }
 }
 
-impl LoadedRows {
+impl LoadRows {
     /// The live coefficient of λ in the row's β-derivative `order`.
     pub fn live(&self, order: usize) -> f64 {
         live_activation(self.kind, self.eta, self.mu, self.live[order])
@@ -75,7 +75,7 @@ impl LoadedRows {
     }
 }
 
-impl Rows for LoadedRows {
+impl Rows for LoadRows {
     fn phi(&self, order: usize) -> Affine {
         let dead = self.dead.activation(self.kind, order, self.eta, self.mu);
         Affine {
