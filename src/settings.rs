@@ -1,9 +1,19 @@
 //! Every tolerance and work limit of the solver, with documented defaults.
 //!
 //! Activation functions φ are measured in units of γ t d r² (moments) or γ t d r
-//! (forces); all tolerances below are relative to the problem's own magnitude
-//! `scale` = max(1, ‖x‖) · span, unless said otherwise, so that shallow arches
-//! with η* ~ 1e-3 are treated as carefully as deep ones.
+//! (forces), and the reactions x = (h, v, w) in units of γ t d r. Each field says what
+//! its tolerance is relative to; the scales used are
+//!
+//! * the size of a state, 1 + ‖x‖₁ ([`crate::statics::reaction_scale`]);
+//! * the natural magnitude of an activation function, that size times max(η,
+//!   `magnitude_floor`) for a hinge or max(min(μ, 1), `magnitude_floor`) for sliding
+//!   ([`crate::statics::magnitude`]), so that shallow arches with η* ~ 1e-3 are treated as
+//!   carefully as deep ones;
+//! * η, μ or λ itself for a relative tolerance on a root;
+//! * radians for angles.
+//!
+//! Each default is written in its field's documentation and in `Default`; a unit test
+//! checks that the two agree.
 
 use crate::arch::{fmt_value, InputError};
 
@@ -41,7 +51,7 @@ pub struct Settings {
     /// does not. Default 1e-3.
     pub magnitude_floor: f64,
     /// Constraint generation stops when the continuum violation exceeds the working
-    /// set's by at most `sep_tol` · scale. Default 1e-13.
+    /// set's by at most `sep_tol` × (1 + ‖x‖₁). Default 1e-13.
     pub sep_tol: f64,
     /// Number of equally spaced samples per activation function used to seed the
     /// 1-D maximisation over a continuous arch (each local maximum is then refined
@@ -50,13 +60,14 @@ pub struct Settings {
     /// Bracketing of η* stops when the bracket is narrower than `bracket_rel` · η.
     /// Default 1e-8.
     pub bracket_rel: f64,
-    /// A local maximum of φ is a candidate active contact when its slack is below
-    /// `candidate_rel` · scale at the upper end of the bracket. Default 1e-5.
+    /// A local maximum of φ is a candidate active contact when its normalised slack
+    /// (distance to the plane) is within `candidate_rel` × (1 + ‖x‖₁) of the LP margin at
+    /// the upper end of the bracket. Default 1e-5.
     pub candidate_rel: f64,
     /// At most this many candidate contacts enter the enumeration. Default 8.
     pub max_candidates: usize,
-    /// Newton on a pattern's square system stops when the scaled residual is below
-    /// `newton_tol`. Default 1e-14.
+    /// Newton on a pattern's square system stops when the residual ‖F‖∞ scaled by
+    /// 1 + ‖x‖₁ is below `newton_tol`. Default 1e-14.
     pub newton_tol: f64,
     /// Newton iteration limit. Default 40.
     pub newton_max_iter: usize,
@@ -93,8 +104,9 @@ pub struct Settings {
     /// bracket that carries a verified admissible state: the LP decides only to its
     /// tolerance. Farther out it is another root. Default 1e-9.
     pub root_slack: f64,
-    /// Two refined values of η or μ closer than this (relative) are the same root.
-    /// Default 1e-12.
+    /// Two refined values of η or μ closer than this (relative) are the same root; the
+    /// resolution of the limit-state sweep's roots in η or λ (relative to 1 + |t|), and of
+    /// the order of limit states (mirror images share η to this). Default 1e-12.
     pub same_root: f64,
     /// Within this relative distance above μ_ms the LP cannot decide admissibility and
     /// the solver says so instead of answering. Default 1e-6.
@@ -130,7 +142,9 @@ pub struct Settings {
     /// joints; beyond, the sweep's budget decides. Default 2048 (about 0.3 s).
     pub ridge_max_joints: usize,
     /// A contact is active at an event of the limit-state sweep when |φ| is below
-    /// `event_tol` × (1 + ‖x‖₁). Default 1e-9.
+    /// `event_tol` × its natural magnitude; a point of the sweep lies on a plane, or
+    /// inside it, to `event_tol` × (1 + ‖x‖₁), and two vertices meet at one point when
+    /// their coordinates agree to that or to `event_tol` × (1 + |x_k|). Default 1e-9.
     pub event_tol: f64,
     /// Joints added to the constraint-generation working set closer than this (radians)
     /// to one already there are not added again. Default 1e-10.
@@ -150,6 +164,35 @@ pub struct Settings {
     pub boundary_match: f64,
     /// How limit states above η_s are searched. Default `Ridge`.
     pub limit_state_search: LimitStateSearch,
+    /// Where the least admissible state is degenerate (P(η_s) not a point) or P has an
+    /// interior at the start, the limit-state sweep starts from every vertex of P at
+    /// η_s (1 + `sweep_walk_offset`) (a load sweep: at λ_min + `sweep_walk_offset` ×
+    /// min(λ_static − λ_min, 1 + λ_min)), found by a walk: limit states between the least
+    /// state and that start are not searched. Default 1e-6.
+    pub sweep_walk_offset: f64,
+    /// Two limit states found by different routes (the refined states of a continuous
+    /// arch's two discretisations, the candidates of the ridge walk) are the same only when
+    /// their η agree to this (relative). Default 1e-9.
+    pub same_state_eta: f64,
+    /// Two refined limit states of a continuous arch's two discretisations are the same
+    /// only when their contacts have the same kinds at angles that agree to this
+    /// (radians), and their η to `same_state_eta`. Default 1e-6.
+    pub same_state_angle: f64,
+    /// Two candidates of the ridge walk are the same limit state only when their
+    /// reactions agree to this × (1 + ‖x‖₁), and their η to `same_state_eta`.
+    /// Default 1e-7.
+    pub same_state_x: f64,
+    /// Where η_s is an infimum (the least admissible state unbounded), the exact least η of
+    /// a weightless admissible direction ([`crate::limit::recession`]) replaces the η_s
+    /// found when it lies within this (relative) of it. Default 1e-6.
+    pub infimum_rel: f64,
+    /// A contact admits a weightless direction d when g·d ≤ `recession_tol` |g| |d|
+    /// (g the gradient of its activation function). Default 1e-10.
+    pub recession_tol: f64,
+    /// The contacts from which the exact least η of a weightless direction d is solved are
+    /// those tight at d: g·d ≥ −`recession_candidate_rel` |g| |d| (|d|∞ for a discrete
+    /// arch). Default 1e-6.
+    pub recession_candidate_rel: f64,
 }
 
 impl Default for Settings {
@@ -192,6 +235,13 @@ impl Default for Settings {
             curve_samples: 16,
             lp_backend: LpBackend::Dense,
             limit_state_search: LimitStateSearch::Ridge,
+            sweep_walk_offset: 1e-6,
+            same_state_eta: 1e-9,
+            same_state_angle: 1e-6,
+            same_state_x: 1e-7,
+            infimum_rel: 1e-6,
+            recession_tol: 1e-10,
+            recession_candidate_rel: 1e-6,
         }
     }
 }
@@ -249,6 +299,16 @@ impl Settings {
             ("settings.slope_step", self.slope_step),
             ("settings.kink_slope_rel", self.kink_slope_rel),
             ("settings.boundary_match", self.boundary_match),
+            ("settings.sweep_walk_offset", self.sweep_walk_offset),
+            ("settings.same_state_eta", self.same_state_eta),
+            ("settings.same_state_angle", self.same_state_angle),
+            ("settings.same_state_x", self.same_state_x),
+            ("settings.infimum_rel", self.infimum_rel),
+            ("settings.recession_tol", self.recession_tol),
+            (
+                "settings.recession_candidate_rel",
+                self.recession_candidate_rel,
+            ),
         ] {
             unit(name, v)?;
         }
@@ -284,5 +344,96 @@ impl Settings {
             1_000_000,
         )?;
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    //! The defaults written in the fields' documentation are those of `Default`, and the
+    //! fields added for the limit-state search are validated by name.
+    use super::Settings;
+
+    /// Each field of `Settings` with the value after "Default " in its documentation.
+    fn documented_defaults() -> Vec<(String, String)> {
+        let text = include_str!("settings.rs");
+        let body = &text[text.find("pub struct Settings {").expect("the struct")..];
+        let body = &body[..body.find("\n}\n").expect("its end")];
+        let mut out = Vec::new();
+        let mut doc = String::new();
+        for line in body.lines().skip(1).map(str::trim) {
+            if let Some(d) = line.strip_prefix("///") {
+                doc.push_str(d);
+                doc.push(' ');
+            } else if let Some(field) = line.strip_prefix("pub ") {
+                let name = field.split(':').next().expect("a field").to_string();
+                let value = doc
+                    .split("Default ")
+                    .nth(1)
+                    .unwrap_or_else(|| panic!("settings.{name} documents no default"))
+                    .split_whitespace()
+                    .next()
+                    .expect("a value")
+                    .trim_end_matches('.')
+                    .trim_matches(|c| "[]`".contains(c))
+                    .rsplit("::")
+                    .next()
+                    .expect("a name")
+                    .to_string();
+                out.push((name, value));
+                doc.clear();
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn documented_defaults_are_the_defaults() {
+        let debug = format!("{:#?}", Settings::default());
+        let fields = documented_defaults();
+        assert_eq!(
+            fields.len(),
+            debug.lines().count() - 2,
+            "a field without a doc"
+        );
+        for (name, documented) in fields {
+            let actual = debug
+                .lines()
+                .find_map(|l| l.trim().strip_prefix(&format!("{name}: ")))
+                .unwrap_or_else(|| panic!("settings.{name} not in Debug"))
+                .trim_end_matches(',');
+            let same = match (documented.parse::<f64>(), actual.parse::<f64>()) {
+                (Ok(d), Ok(a)) => d == a,
+                _ => documented == actual,
+            };
+            assert!(
+                same,
+                "settings.{name}: documented default {documented}, Default gives {actual}"
+            );
+        }
+    }
+
+    #[test]
+    fn limit_state_settings_are_validated_by_name() {
+        let ok = Settings::default();
+        assert!(ok.validate().is_ok());
+        type Spoil = fn(&mut Settings);
+        let cases: [(&str, Spoil); 7] = [
+            ("sweep_walk_offset", |s| s.sweep_walk_offset = 0.0),
+            ("same_state_eta", |s| s.same_state_eta = 1.0),
+            ("same_state_angle", |s| s.same_state_angle = f64::NAN),
+            ("same_state_x", |s| s.same_state_x = -1e-7),
+            ("infimum_rel", |s| s.infimum_rel = 0.0),
+            ("recession_tol", |s| s.recession_tol = f64::INFINITY),
+            ("recession_candidate_rel", |s| {
+                s.recession_candidate_rel = 2.0
+            }),
+        ];
+        for (name, spoil) in cases {
+            let mut bad = ok.clone();
+            spoil(&mut bad);
+            let e = bad.validate().expect_err(name).to_string();
+            assert!(e.contains(&format!("settings.{name}")), "{e}");
+            assert!(e.contains("0 < value < 1"), "{e}");
+        }
     }
 }

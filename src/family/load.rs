@@ -1,7 +1,7 @@
 //! The load family: the self-weight at a fixed thickness η plus t = λ times a live load
 //! (shared spec `loads.md`). Every row is affine in (x, λ) and in μ.
 
-use super::{Family, Param, ParamDerivative, Rows};
+use super::traits::{Family, Param, ParamDerivative, Rows};
 use crate::arch::{Arch, Radians};
 use crate::contact::ContactKind;
 use crate::load::{live_activation, LiveLoad, Side};

@@ -1,6 +1,6 @@
 //! The thickness family: the self-weight of the arch at thickness t = η (formulation §3).
 
-use super::{Family, Param, ParamDerivative, Rows};
+use super::traits::{Family, Param, ParamDerivative, Rows};
 use crate::arch::{Arch, Radians};
 use crate::contact::ContactKind;
 use crate::statics::{actions, Actions, Affine, Reactions};

@@ -69,29 +69,17 @@ pub(crate) fn enumerate(
     out
 }
 
-/// Refines each pattern of `group`, then verifies them in increasing η, keeping the
-/// least verified limit state and the least admissible state in `out`.
-#[allow(clippy::too_many_arguments)]
-fn verify_group(
-    arch: &Arch,
-    mu: f64,
+/// Newton from `start` on each pattern of `group`: the refined ones in increasing η, the
+/// others logged with why Newton rejected them.
+fn refine_group(
+    start: &State,
     group: Vec<Vec<Contact>>,
-    x0: Reactions,
-    eta0: f64,
-    bracket: (f64, f64),
     settings: &Settings,
     log: &mut Vec<Candidate>,
-    out: &mut Enumeration,
-) {
+) -> Vec<(Vec<Contact>, Refined)> {
     let mut refined = Vec::new();
     for s in group {
-        let start = State {
-            arch,
-            eta: eta0,
-            mu,
-            x: x0,
-        };
-        match solve_pattern(&start, &s, settings) {
+        match solve_pattern(start, &s, settings) {
             Ok(r) => refined.push((s, r)),
             Err(f) => log.push(Candidate {
                 contacts: s,
@@ -111,6 +99,30 @@ fn verify_group(
         }
     }
     refined.sort_by(|a, b| a.1.t.total_cmp(&b.1.t));
+    refined
+}
+
+/// Refines each pattern of `group`, then verifies them in increasing η, keeping the
+/// least verified limit state and the least admissible state in `out`.
+#[allow(clippy::too_many_arguments)]
+fn verify_group(
+    arch: &Arch,
+    mu: f64,
+    group: Vec<Vec<Contact>>,
+    x0: Reactions,
+    eta0: f64,
+    bracket: (f64, f64),
+    settings: &Settings,
+    log: &mut Vec<Candidate>,
+    out: &mut Enumeration,
+) {
+    let start = State {
+        arch,
+        eta: eta0,
+        mu,
+        x: x0,
+    };
+    let refined = refine_group(&start, group, settings, log);
     let mut last_eta = f64::NAN;
     for (s, r) in refined {
         let push = |log: &mut Vec<Candidate>, verdict: String| {

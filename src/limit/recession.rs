@@ -26,7 +26,38 @@ use crate::settings::Settings;
 use crate::statics::{actions, Affine, Reactions};
 
 /// The cone's margin is positive beyond this (rows and directions of unit size).
-const MARGIN_TOL: f64 = 1e-12;
+pub(super) const MARGIN_TOL: f64 = 1e-12;
+
+/// η_rec is bisected on the sign of the cone's margin to this width (relative) ...
+const BISECTION_REL: f64 = 1e-13;
+
+/// ... in at most this many halvings.
+const BISECTION_MAX_STEPS: usize = 200;
+
+/// At most this many contacts tight at a discrete arch's direction (the tightest) enter
+/// the search for the three whose determinant vanishes at η_rec ...
+const MAX_TIGHT_DISCRETE: usize = 8;
+
+/// ... and at most this many local maxima of a continuous arch's weightless functions.
+const MAX_TIGHT_CONTINUOUS: usize = 6;
+
+/// The bracket of η_rec is cut into this many pieces, so that the cubic's roots there
+/// are separated.
+const DET_PIECES: usize = 64;
+
+/// The null direction of three gradients is the bracket's direction when the cosine of
+/// the angle between them is above this.
+const SAME_DIRECTION_COS: f64 = 0.5;
+
+/// Newton on the weightless system of a continuous arch takes at most this many steps ...
+const WEIGHTLESS_NEWTON_STEPS: usize = 60;
+
+/// ... stops when no unknown moves by more than this many machine epsilons (relative to
+/// 1 + its size) ...
+const WEIGHTLESS_STALL_ULPS: f64 = 4.0;
+
+/// ... and has converged when its largest residual is at most this (rows of unit size).
+const WEIGHTLESS_RESIDUAL: f64 = 1e-13;
 
 /// A weightless admissible direction at its least thickness.
 #[derive(Debug, Clone, Copy)]
@@ -103,10 +134,11 @@ fn cone_margin(
     Some((s, d))
 }
 
-/// η_rec in [lo, hi]: the least η with a weightless admissible direction, when the cone
-/// has no interior at `lo` and has one at `hi` (`None` otherwise, or for a continuous
-/// arch). Bisection on the sign of [`margin`] to 1e-13 (relative), then the exact root of
-/// det\[g_a g_b g_c\](η) for the contacts tight at the bracket's direction, verified.
+/// η_rec in [lo, hi]: the least η with a weightless admissible direction, when the cone has
+/// no interior at `lo` and has one at `hi` (`None` otherwise, or for a continuous arch).
+/// Bisection on the sign of [`margin`] to a relative width of 1e-13 (`BISECTION_REL`), then
+/// the exact root of det\[g_a g_b g_c\](η) for the contacts tight at the bracket's
+/// direction, verified.
 pub fn threshold(arch: &Arch, mu: f64, lo: f64, hi: f64, settings: &Settings) -> Option<Recession> {
     let grads = gradients(arch, mu)?;
     let positive = |eta: f64| cone_margin(&grads, eta, settings).map(|(s, d)| (s > MARGIN_TOL, d));
@@ -118,8 +150,8 @@ pub fn threshold(arch: &Arch, mu: f64, lo: f64, hi: f64, settings: &Settings) ->
     if !ok {
         return None;
     }
-    for _ in 0..200 {
-        if hi - lo <= 1e-13 * hi {
+    for _ in 0..BISECTION_MAX_STEPS {
+        if hi - lo <= BISECTION_REL * hi {
             break;
         }
         let m = 0.5 * (lo + hi);
@@ -141,10 +173,10 @@ pub fn threshold(arch: &Arch, mu: f64, lo: f64, hi: f64, settings: &Settings) ->
             let gi = at(g, hi);
             (-dot(&gi, &d) / norm(&gi).max(f64::MIN_POSITIVE), i)
         })
-        .filter(|(slack, _)| *slack <= 1e-6)
+        .filter(|(slack, _)| *slack <= settings.recession_candidate_rel)
         .collect();
     tight.sort_by(|a, b| a.0.total_cmp(&b.0));
-    tight.truncate(8);
+    tight.truncate(MAX_TIGHT_DISCRETE);
     let width = hi - lo;
     let mut best: Option<Recession> = None;
     for a in 0..tight.len() {
@@ -154,7 +186,7 @@ pub fn threshold(arch: &Arch, mu: f64, lo: f64, hi: f64, settings: &Settings) ->
                 // the bisection stops where the margin exceeds MARGIN_TOL, a little above
                 // η_rec: the root lies in [lo0, hi]
                 for eta in det_roots(&rows, lo0, hi + width) {
-                    if let Some(dir) = verify(&grads, &rows, eta, &d) {
+                    if let Some(dir) = verify(&grads, &rows, eta, &d, settings) {
                         if best.is_none_or(|r| eta < r.eta) {
                             best = Some(Recession {
                                 eta,
@@ -176,14 +208,15 @@ pub fn threshold(arch: &Arch, mu: f64, lo: f64, hi: f64, settings: &Settings) ->
 
 /// The sign changes of det[g_a(η) g_b(η) g_c(η)] (a cubic in η) on [lo, hi], each
 /// narrowed by bisection to adjacent floats: the interval is the bracket of η_rec
-/// (≤ 2e-6 relative), split into 64 pieces so that the cubic's roots there are separated.
+/// (≤ 2e-6 relative), split into [`DET_PIECES`] pieces so that the cubic's roots there are
+/// separated.
 fn det_roots(rows: &[&([f64; 3], [f64; 3]); 3], lo: f64, hi: f64) -> Vec<f64> {
     let det = |eta: f64| {
         let [a, b, c] = rows.map(|r| at(r, eta));
         a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
             + a[2] * (b[0] * c[1] - b[1] * c[0])
     };
-    let n = 64;
+    let n = DET_PIECES;
     let mut roots = Vec::new();
     let mut prev = (lo, det(lo));
     for i in 1..=n {
@@ -224,12 +257,13 @@ fn det_roots(rows: &[&([f64; 3], [f64; 3]); 3], lo: f64, hi: f64) -> Vec<f64> {
 }
 
 /// The common null direction of three gradients at η (the sign of `near`), if every
-/// contact admits it there (g_i·d ≤ 1e-10 |g_i| |d|).
+/// contact admits it there (g_i·d ≤ `settings.recession_tol` |g_i| |d|).
 fn verify(
     grads: &[([f64; 3], [f64; 3])],
     rows: &[&([f64; 3], [f64; 3]); 3],
     eta: f64,
     near: &Reactions,
+    settings: &Settings,
 ) -> Option<Reactions> {
     let g = rows.map(|r| at(r, eta));
     let cross = |a: &[f64; 3], b: &[f64; 3]| {
@@ -253,14 +287,14 @@ fn verify(
     }
     let sign = if dot(&dir, near) < 0.0 { -1.0 } else { 1.0 };
     dir = dir.map(|v| sign * v / n);
-    if dot(&dir, near) <= 0.5 * norm(near) * norm(&dir) {
+    if dot(&dir, near) <= SAME_DIRECTION_COS * norm(near) * norm(&dir) {
         return None; // not the bracket's direction
     }
     grads
         .iter()
         .all(|gr| {
             let gi = at(gr, eta);
-            dot(&gi, &dir) <= 1e-10 * norm(&gi) * norm(&dir)
+            dot(&gi, &dir) <= settings.recession_tol * norm(&gi) * norm(&dir)
         })
         .then_some(dir)
 }
@@ -379,7 +413,7 @@ fn weightless_newton(
     };
     let size = |f: &[f64]| f.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     let (mut f, mut jac) = eval(&z);
-    for _ in 0..60 {
+    for _ in 0..WEIGHTLESS_NEWTON_STEPS {
         let step = jac
             .clone()
             .lu()
@@ -389,7 +423,7 @@ fn weightless_newton(
         let moved = step
             .iter()
             .zip(&zn)
-            .all(|(s, v)| s.abs() <= 4.0 * f64::EPSILON * (1.0 + v.abs()));
+            .all(|(s, v)| s.abs() <= WEIGHTLESS_STALL_ULPS * f64::EPSILON * (1.0 + v.abs()));
         let decreased = size(&fnew) < size(&f);
         if !decreased && !moved {
             break;
@@ -402,16 +436,17 @@ fn weightless_newton(
         }
     }
     let eta = z[3];
-    (size(&f) <= 1e-13 && eta > 0.0 && eta.is_finite()).then_some((eta, [z[0], z[1], z[2]]))
+    (size(&f) <= WEIGHTLESS_RESIDUAL && eta > 0.0 && eta.is_finite())
+        .then_some((eta, [z[0], z[1], z[2]]))
 }
 
 /// η_rec of a continuous arch near `eta0`, where its least states grow without bound along
 /// the direction of `x0`: the weightless activation functions at the direction's tightest
-/// local maxima (at most six), every three of them refined exactly by Newton (a straight
-/// line of thrust touching the intrados or extrados at those points, a free one tangent),
-/// and the least η whose direction every joint admits (each local maximum of g·d at most
-/// 1e-10 |g| |d|, by the continuum scan of the weightless functions). `None` when no
-/// triple verifies.
+/// local maxima (at most six, `MAX_TIGHT_CONTINUOUS`), every three of them refined exactly
+/// by Newton (a straight line of thrust touching the intrados or extrados at those points,
+/// a free one tangent), and the least η whose direction every joint admits (each local
+/// maximum of g·d at most `settings.recession_tol` |g| |d|, by the continuum scan of the
+/// weightless functions). `None` when no triple verifies.
 pub fn continuum_threshold(
     arch: &Arch,
     mu: f64,
@@ -430,10 +465,10 @@ pub fn continuum_threshold(
     let mut tight: Vec<(f64, crate::contact::Contact)> =
         weightless_peaks(arch, eta0, mu, &d0, settings)
             .into_iter()
-            .filter(|(v, _)| *v >= -1e-6)
+            .filter(|(v, _)| *v >= -settings.recession_candidate_rel)
             .collect();
     tight.sort_by(|a, b| b.0.total_cmp(&a.0));
-    tight.truncate(6);
+    tight.truncate(MAX_TIGHT_CONTINUOUS);
     let mut best: Option<Recession> = None;
     for a in 0..tight.len() {
         for b in a + 1..tight.len() {
@@ -447,7 +482,7 @@ pub fn continuum_threshold(
                 }
                 let admits = weightless_peaks(arch, eta, mu, &d, settings)
                     .iter()
-                    .all(|(v, _)| *v <= 1e-10);
+                    .all(|(v, _)| *v <= settings.recession_tol);
                 if admits {
                     let s = d.iter().fold(0.0f64, |m, v| m.max(v.abs()));
                     best = Some(Recession {

@@ -205,19 +205,7 @@ pub fn trace_parallel(arch: &Arch, settings: &Settings, threads: usize) -> Limit
     let mut tr = Tracer::new(arch, settings);
     let fl: Option<FrictionLimit> = friction_limit(arch, settings).ok().flatten();
     let Some(fl) = fl else {
-        return LimitCurve {
-            mu_ms: None,
-            branches: vec![],
-            corners: vec![],
-            transitions: vec![],
-            limit_branches: vec![],
-            unresolved: tr.unresolved,
-            no_collapse: tr.no_collapse,
-            no_equilibrium: tr.no_equilibrium,
-            solves: 0,
-            samples: 0,
-            thickness_limit: None,
-        };
+        return without_branches(tr, None, 0);
     };
     let inf = tr.sample(f64::INFINITY);
     if inf.is_none() && tr.no_equilibrium.len() == 1 {
@@ -225,53 +213,12 @@ pub fn trace_parallel(arch: &Arch, settings: &Settings, threads: usize) -> Limit
         if let Ok(Outcome::NoEquilibrium { .. }) =
             solve(arch, f64::INFINITY, settings).map(|s| s.outcome)
         {
-            return LimitCurve {
-                mu_ms: Some(fl.mu),
-                branches: vec![],
-                corners: vec![],
-                transitions: vec![],
-                limit_branches: vec![],
-                unresolved: tr.unresolved,
-                no_collapse: tr.no_collapse,
-                no_equilibrium: tr.no_equilibrium,
-                solves: tr.solves + 1,
-                samples: 0,
-                thickness_limit: None,
-            };
+            let solves = tr.solves + 1;
+            return without_branches(tr, Some(fl.mu), solves);
         }
     }
-    let mu_lo = fl.mu * (1.0 + settings.curve_start_rel);
-    let mu_rm = inf.as_ref().map_or(f64::INFINITY, |s| {
-        friction_needed(arch, s.eta, &s.x, 2000, settings.detach_rel)
-    });
-    let mu_hi = if mu_rm.is_finite() {
-        (2.0 * mu_rm).max(1.5 * mu_lo)
-    } else {
-        OVERTURNING_SPAN * mu_lo.max(MU_FLOOR)
-    };
-    let n = settings.curve_samples.max(2);
-    let mus: Vec<f64> = (0..n)
-        .rev()
-        .map(|i| mu_lo * (mu_hi / mu_lo).powf(i as f64 / (n - 1) as f64))
-        .collect();
-    let groups: Vec<&[f64]> = mus.chunks(SAMPLE_GROUP).collect();
-    let solved = crate::threads::map(&groups, threads, |g, group| {
-        let mut t = Tracer::new(arch, settings);
-        let mut got: Vec<Sample> = Vec::new();
-        for &mu in *group {
-            // the first group starts from μ = ∞, the others from the whole range
-            let guess = next_guess(&got, inf.as_ref().filter(|_| g == 0));
-            if let Some(s) = t.sample_near(mu, guess) {
-                got.push(s);
-            }
-        }
-        (got, t)
-    });
-    let mut samples: Vec<Sample> = Vec::new();
-    for (got, t) in solved {
-        samples.extend(got);
-        tr.absorb(t);
-    }
+    let mus = sample_frictions(arch, &fl, inf.as_ref(), settings);
+    let samples = sample_groups(&mut tr, &mus, inf.as_ref(), threads);
     let mut changes = Vec::new();
     // the top: a finite pattern different from the infinite-friction one is asymptotic
     if let (Some(top), Some(inf)) = (samples.first(), inf.as_ref()) {
@@ -291,6 +238,119 @@ pub fn trace_parallel(arch: &Arch, settings: &Settings, threads: usize) -> Limit
             });
         }
     }
+    changes.extend(locate_changes(&mut tr, &samples, threads));
+    let (thickness_limit, lowest) = lowest_end(&mut tr, &fl, &samples);
+    changes.extend(lowest);
+    changes.sort_by(|a, b| b.mu.total_cmp(&a.mu));
+    let branches = branches_between(
+        &mut tr,
+        &fl,
+        &changes,
+        &samples,
+        inf.as_ref(),
+        &thickness_limit,
+    );
+    let searched = samples.len() + usize::from(inf.is_some());
+    let searched_samples: Vec<&Sample> = inf.iter().chain(&samples).collect();
+    let searches = crate::threads::map(&searched_samples, threads, |_, s| {
+        search_after(&s.solution, settings)
+    });
+    let (limit_branches, incomplete) =
+        limit_branches(&tr, searched_samples.into_iter().zip(searches));
+    let mut unresolved = tr.unresolved.clone();
+    unresolved.extend(incomplete);
+    let (corners, transitions) = changes.into_iter().partition(|c| c.kink);
+    LimitCurve {
+        mu_ms: Some(fl.mu),
+        branches,
+        corners,
+        transitions,
+        limit_branches,
+        unresolved,
+        no_collapse: tr.no_collapse,
+        no_equilibrium: tr.no_equilibrium,
+        solves: tr.solves,
+        samples: searched,
+        thickness_limit,
+    }
+}
+
+/// The curve of an arch without branches: no finite μ suffices (`mu_ms` `None`), or
+/// nothing stands at any μ.
+fn without_branches(tr: Tracer, mu_ms: Option<f64>, solves: usize) -> LimitCurve {
+    LimitCurve {
+        mu_ms,
+        branches: vec![],
+        corners: vec![],
+        transitions: vec![],
+        limit_branches: vec![],
+        unresolved: tr.unresolved,
+        no_collapse: tr.no_collapse,
+        no_equilibrium: tr.no_equilibrium,
+        solves,
+        samples: 0,
+        thickness_limit: None,
+    }
+}
+
+/// The sampled frictions, by decreasing μ: a geometric grid from just above μ_ms to twice
+/// μ_rm (the friction the infinite-friction state needs), or to [`OVERTURNING_SPAN`] times
+/// the lower end when that state overturns.
+fn sample_frictions(
+    arch: &Arch,
+    fl: &FrictionLimit,
+    inf: Option<&Sample>,
+    settings: &Settings,
+) -> Vec<f64> {
+    let mu_lo = fl.mu * (1.0 + settings.curve_start_rel);
+    let mu_rm = inf.map_or(f64::INFINITY, |s| {
+        friction_needed(arch, s.eta, &s.x, 2000, settings.detach_rel)
+    });
+    let mu_hi = if mu_rm.is_finite() {
+        (2.0 * mu_rm).max(1.5 * mu_lo)
+    } else {
+        OVERTURNING_SPAN * mu_lo.max(MU_FLOOR)
+    };
+    let n = settings.curve_samples.max(2);
+    (0..n)
+        .rev()
+        .map(|i| mu_lo * (mu_hi / mu_lo).powf(i as f64 / (n - 1) as f64))
+        .collect()
+}
+
+/// η_s at each of `mus`, in fixed groups of [`SAMPLE_GROUP`] on `threads` threads (each
+/// sample bracketed from its neighbour in the group; the first group starts from μ = ∞).
+fn sample_groups(
+    tr: &mut Tracer,
+    mus: &[f64],
+    inf: Option<&Sample>,
+    threads: usize,
+) -> Vec<Sample> {
+    let (arch, settings) = (tr.arch, tr.settings);
+    let groups: Vec<&[f64]> = mus.chunks(SAMPLE_GROUP).collect();
+    let solved = crate::threads::map(&groups, threads, |g, group| {
+        let mut t = Tracer::new(arch, settings);
+        let mut got: Vec<Sample> = Vec::new();
+        for &mu in *group {
+            // the first group starts from μ = ∞, the others from the whole range
+            let guess = next_guess(&got, inf.filter(|_| g == 0));
+            if let Some(s) = t.sample_near(mu, guess) {
+                got.push(s);
+            }
+        }
+        (got, t)
+    });
+    let mut samples: Vec<Sample> = Vec::new();
+    for (got, t) in solved {
+        samples.extend(got);
+        tr.absorb(t);
+    }
+    samples
+}
+
+/// Every pattern change between neighbouring samples, each located on its own thread.
+fn locate_changes(tr: &mut Tracer, samples: &[Sample], threads: usize) -> Vec<Corner> {
+    let (arch, settings) = (tr.arch, tr.settings);
     let pairs: Vec<(&Sample, &Sample)> = samples
         .windows(2)
         .map(|w| (&w[0], &w[1]))
@@ -300,74 +360,88 @@ pub fn trace_parallel(arch: &Arch, settings: &Settings, threads: usize) -> Limit
         let mut t = Tracer::new(arch, settings);
         (t.locate(a, b, 24), t)
     });
+    let mut changes = Vec::new();
     for (found, t) in located {
         changes.extend(found);
         tr.absorb(t);
     }
-    // Where the lowest branch ends: at the corner with the vertical purely-sliding branch
-    // (slope −∞ on its left), or — when samples above μ_ms have no equilibrium at any
-    // η < 2 (η_ms would be ≥ 2) — where η_s reaches the thickness limit.
-    let no_eq_above = samples.last().and_then(|low| {
-        tr.no_equilibrium
-            .iter()
-            .copied()
-            .filter(|&m| m > fl.mu && m < low.mu)
-            .reduce(f64::max)
-    });
-    let mut thickness_limit = None;
-    if let (Some(low), Some(ne)) = (samples.last(), no_eq_above) {
-        thickness_limit = Some(
-            match onset::reach_eta(
-                arch,
-                &low.pattern,
-                (low.x, low.eta, low.mu),
-                ne,
-                ETA_TOP,
-                settings,
-            ) {
-                Some(o) => ThicknessLimit {
-                    mu: o.mu,
-                    eta: o.eta,
-                    pattern: o.pattern,
-                    exact: true,
-                },
-                None => tr.thickness_limit_by_bisection(ne, low),
-            },
-        );
-    } else if let Some(low) = samples.last() {
-        let between = [tr.mode_of(&low.pattern), CollapseMode::PurelySliding];
-        let start = (low.x, low.eta, low.mu);
-        let range = (fl.mu * (1.0 - settings.root_slack), low.mu);
-        let c = tr
-            .union_newton(&low.pattern, &fl.pattern, start, range, between, true)
-            .or_else(|| tr.follow_to_mu_ms(low, fl.mu, between))
-            .map(|mut c| {
-                c.kink = true;
-                c
-            })
-            .unwrap_or_else(|| {
-                let slope = tr.slope(low.mu, low.eta, 1.0).0;
-                Corner {
-                    mu: fl.mu,
-                    eta: low.eta,
-                    x: low.x,
-                    kink: true,
-                    slope_left: f64::NEG_INFINITY,
-                    slope_right: slope,
-                    joints: fl.pattern.clone(),
-                    between,
-                    mode: CollapseMode::PurelySliding,
-                    exact: false,
-                    residual: f64::NAN,
-                }
-            });
-        changes.push(c);
-    }
-    changes.sort_by(|a, b| b.mu.total_cmp(&a.mu));
+    changes
+}
 
-    // branches between consecutive pattern changes (by decreasing μ)
+/// Where the lowest branch ends: at the corner with the vertical purely-sliding branch
+/// (slope −∞ on its left), or — when samples above μ_ms have no equilibrium at any
+/// η < 2 (η_ms would be ≥ 2) — where η_s reaches the thickness limit.
+fn lowest_end(
+    tr: &mut Tracer,
+    fl: &FrictionLimit,
+    samples: &[Sample],
+) -> (Option<ThicknessLimit>, Option<Corner>) {
+    let (arch, settings) = (tr.arch, tr.settings);
+    let Some(low) = samples.last() else {
+        return (None, None);
+    };
+    let no_eq_above = tr
+        .no_equilibrium
+        .iter()
+        .copied()
+        .filter(|&m| m > fl.mu && m < low.mu)
+        .reduce(f64::max);
+    if let Some(ne) = no_eq_above {
+        let start = (low.x, low.eta, low.mu);
+        let limit = match onset::reach_eta(arch, &low.pattern, start, ne, ETA_TOP, settings) {
+            Some(o) => ThicknessLimit {
+                mu: o.mu,
+                eta: o.eta,
+                pattern: o.pattern,
+                exact: true,
+            },
+            None => tr.thickness_limit_by_bisection(ne, low),
+        };
+        return (Some(limit), None);
+    }
+    let between = [tr.mode_of(&low.pattern), CollapseMode::PurelySliding];
+    let start = (low.x, low.eta, low.mu);
+    let range = (fl.mu * (1.0 - settings.root_slack), low.mu);
+    let c = tr
+        .union_newton(&low.pattern, &fl.pattern, start, range, between, true)
+        .or_else(|| tr.follow_to_mu_ms(low, fl.mu, between))
+        .map(|mut c| {
+            c.kink = true;
+            c
+        })
+        .unwrap_or_else(|| {
+            let slope = tr.slope(low.mu, low.eta, 1.0).0;
+            Corner {
+                mu: fl.mu,
+                eta: low.eta,
+                x: low.x,
+                kink: true,
+                slope_left: f64::NEG_INFINITY,
+                slope_right: slope,
+                joints: fl.pattern.clone(),
+                between,
+                mode: CollapseMode::PurelySliding,
+                exact: false,
+                residual: f64::NAN,
+            }
+        });
+    (None, Some(c))
+}
+
+/// The branches between consecutive pattern changes (`changes` by decreasing μ), each
+/// named from a sample inside it (solved once inside where two changes fall between
+/// neighbouring samples), then the lowest: to the thickness limit, or the vertical
+/// purely-sliding branch.
+fn branches_between(
+    tr: &mut Tracer,
+    fl: &FrictionLimit,
+    changes: &[Corner],
+    samples: &[Sample],
+    inf: Option<&Sample>,
+    thickness_limit: &Option<ThicknessLimit>,
+) -> Vec<Branch> {
     let mut branches = Vec::new();
-    let mut upper = (f64::INFINITY, inf.as_ref().map_or(f64::NAN, |s| s.eta));
+    let mut upper = (f64::INFINITY, inf.map_or(f64::NAN, |s| s.eta));
     let finite: Vec<&Corner> = changes.iter().filter(|c| c.mu.is_finite()).collect();
     for c in &finite {
         let members: Vec<Sample> = samples
@@ -399,7 +473,7 @@ pub fn trace_parallel(arch: &Arch, settings: &Settings, threads: usize) -> Limit
         }
         upper = (c.mu, c.eta);
     }
-    if let (Some(t), Some(low)) = (&thickness_limit, samples.last()) {
+    if let (Some(t), Some(low)) = (thickness_limit, samples.last()) {
         branches.push(Branch {
             mode: tr.mode_of(&low.pattern),
             mu_min: t.mu,
@@ -418,29 +492,7 @@ pub fn trace_parallel(arch: &Arch, settings: &Settings, threads: usize) -> Limit
             pattern: fl.pattern.clone(),
         });
     }
-    let searched = samples.len() + usize::from(inf.is_some());
-    let searched_samples: Vec<&Sample> = inf.iter().chain(&samples).collect();
-    let searches = crate::threads::map(&searched_samples, threads, |_, s| {
-        search_after(&s.solution, settings)
-    });
-    let (limit_branches, incomplete) =
-        limit_branches(&tr, searched_samples.into_iter().zip(searches));
-    let mut unresolved = tr.unresolved.clone();
-    unresolved.extend(incomplete);
-    let (corners, transitions) = changes.into_iter().partition(|c| c.kink);
-    LimitCurve {
-        mu_ms: Some(fl.mu),
-        branches,
-        corners,
-        transitions,
-        limit_branches,
-        unresolved,
-        no_collapse: tr.no_collapse,
-        no_equilibrium: tr.no_equilibrium,
-        solves: tr.solves,
-        samples: searched,
-        thickness_limit,
-    }
+    branches
 }
 
 /// A branch of limit states above the static boundary: consecutive samples (by

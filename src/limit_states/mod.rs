@@ -169,7 +169,7 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Strin
         });
     }
     let mut above: Vec<SweptState> = sw.states.into_iter().filter(|s| s.eta > lo).collect();
-    ridge::sort_states(&mut above);
+    ridge::sort_states(&mut above, settings);
     Ok(LimitStates {
         eta_s,
         attained,
@@ -201,7 +201,7 @@ fn from_vanishing_thickness(
         return Err(f);
     }
     let mut above: Vec<SweptState> = sw.states.into_iter().filter(|s| s.eta > 0.0).collect();
-    ridge::sort_states(&mut above);
+    ridge::sort_states(&mut above, settings);
     Ok(LimitStates {
         eta_s: 0.0,
         attained: bounded(arch, &x0, settings),
@@ -322,18 +322,20 @@ fn continuous(
                 continue;
             };
             if r.eta > eta_s * (1.0 + settings.root_slack)
-                && !found.iter().any(|f| same_state(f, &r))
+                && !found.iter().any(|f| same_state(f, &r, settings))
             {
                 found.push(r);
             }
         }
-        ridge::sort_states(&mut found);
+        ridge::sort_states(&mut found, settings);
         sets.push((found, events));
     }
     let (fine, events) = sets.pop().expect("two discretisations");
     let (coarse, _) = sets.pop().expect("two discretisations");
-    let same =
-        fine.len() == coarse.len() && fine.iter().all(|p| coarse.iter().any(|q| same_state(p, q)));
+    let same = fine.len() == coarse.len()
+        && fine
+            .iter()
+            .all(|p| coarse.iter().any(|q| same_state(p, q, settings)));
     if !same {
         return Err(format!(
             "the refined limit states of {} and {} pieces differ: {:?} vs {:?}",
@@ -363,15 +365,16 @@ fn continuous(
     })
 }
 
-/// Two refined limit states are the same: equal η (to 1e-9) and the same contacts (kinds,
-/// and angles to 1e-6). Mirror images share η but not contacts.
-fn same_state(p: &SweptState, q: &SweptState) -> bool {
-    (p.eta - q.eta).abs() <= 1e-9 * p.eta
+/// Two refined limit states are the same: equal η (to `settings.same_state_eta`,
+/// relative) and the same contacts (kinds, and angles to `settings.same_state_angle`).
+/// Mirror images share η but not contacts.
+fn same_state(p: &SweptState, q: &SweptState, settings: &Settings) -> bool {
+    (p.eta - q.eta).abs() <= settings.same_state_eta * p.eta
         && p.pattern.len() == q.pattern.len()
         && p.pattern
             .iter()
             .zip(&q.pattern)
-            .all(|(a, b)| a.kind == b.kind && (a.beta - b.beta).abs() <= 1e-6)
+            .all(|(a, b)| a.kind == b.kind && (a.beta - b.beta).abs() <= settings.same_state_angle)
 }
 
 /// A discrete pattern carried over to the continuum ([`crate::family::merge_adjacent`]; a

@@ -11,6 +11,20 @@
 /// degree 5, products in tests degree 7).
 pub const MAX_COEFFS: usize = 12;
 
+/// Trailing coefficients below this fraction of the largest are the rounding residue of
+/// cancelled terms: the root finder drops them (of the polynomial and of its derivative).
+const TRIM_REL: f64 = 1e-14;
+
+/// A value of a polynomial at most this times its size on the interval (largest
+/// coefficient × (1 + largest |end|)^degree) is zero: a root at that point.
+const NEAR_ZERO_REL: f64 = 1e-13;
+
+/// Roots closer than this (relative to 1 + |root|) are one root.
+const SAME_ROOT_REL: f64 = 1e-12;
+
+/// Bisection of a monotone piece stops at adjacent floats, or after this many halvings.
+const BISECTION_MAX_STEPS: usize = 200;
+
 /// Coefficients, lowest order first, in a fixed array (no allocation: the sweep builds
 /// millions of these).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -186,7 +200,7 @@ impl Poly {
     /// multiplicity (touching zero) are included. `None` when the polynomial vanishes
     /// identically (all coefficients below `zero_tol` × `scale`).
     pub fn roots_in(&self, lo: f64, hi: f64, zero_tol: f64, scale: f64) -> Option<Vec<f64>> {
-        let p = self.trimmed(1e-14);
+        let p = self.trimmed(TRIM_REL);
         if p.norm() <= zero_tol * scale {
             return None;
         }
@@ -205,10 +219,10 @@ fn real_roots(p: &Poly, lo: f64, hi: f64) -> Vec<f64> {
     }
     // critical points split [lo, hi] into monotone pieces
     let mut cuts = vec![lo];
-    cuts.extend(real_roots(&p.derivative().trimmed(1e-14), lo, hi));
+    cuts.extend(real_roots(&p.derivative().trimmed(TRIM_REL), lo, hi));
     cuts.push(hi);
     let scale = p.norm() * (1.0 + lo.abs().max(hi.abs())).powi(deg as i32);
-    let near_zero = |v: f64| v.abs() <= 1e-13 * scale;
+    let near_zero = |v: f64| v.abs() <= NEAR_ZERO_REL * scale;
     let mut roots: Vec<f64> = Vec::new();
     for w in cuts.windows(2) {
         let (a, b) = (w[0], w[1]);
@@ -224,13 +238,13 @@ fn real_roots(p: &Poly, lo: f64, hi: f64) -> Vec<f64> {
         }
     }
     roots.sort_by(f64::total_cmp);
-    roots.dedup_by(|a, b| (*a - *b).abs() <= 1e-12 * (1.0 + a.abs()));
+    roots.dedup_by(|a, b| (*a - *b).abs() <= SAME_ROOT_REL * (1.0 + a.abs()));
     roots
 }
 
 /// The root of a monotone piece with a sign change, to adjacent floats.
 fn bisect(p: &Poly, mut a: f64, mut b: f64, mut fa: f64) -> f64 {
-    for _ in 0..200 {
+    for _ in 0..BISECTION_MAX_STEPS {
         let m = 0.5 * (a + b);
         if m <= a || m >= b {
             break;

@@ -292,6 +292,10 @@ pub fn trace(
 /// (a limit state on a contact outside the five met there).
 const SAME_LAMBDA: f64 = 1e-6;
 
+/// Two rows that agree to this relative tolerance in every coefficient are one function
+/// (the extrados hinge rows on both sides of a loaded section differ in the last bits only).
+const TWIN_REL: f64 = 1e-13;
+
 /// Each corner's neighbourhood is probed this far away (relative in μ) for a short branch.
 const PROBE_REL: f64 = 1e-6;
 
@@ -403,7 +407,8 @@ fn exact_corner(
                 let r = row_in(&at_start, &c, side)?;
                 // one function to rounding (the extrados hinge rows on both sides of a
                 // loaded section differ in the last bits only)
-                let close = |p: f64, q: f64| (p - q).abs() <= 1e-13 * (1.0 + p.abs().max(q.abs()));
+                let close =
+                    |p: f64, q: f64| (p - q).abs() <= TWIN_REL * (1.0 + p.abs().max(q.abs()));
                 let same = union.iter().any(|&(d, t)| {
                     row_in(&at_start, &d, t)
                         .is_some_and(|q| (0..4).all(|k| close(q.a[k], r.a[k])) && close(q.c, r.c))
@@ -460,19 +465,7 @@ fn exact_corner(
     }
     let at_mu = rows(arch, joints, eta, mu, load);
     if size == 4 {
-        // w in the middle of the band the rows that contain it leave
-        let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
-        for r in at_mu.iter().filter(|r| r.a[2] != 0.0) {
-            let bound = -(r.a[0] * x[0] + r.a[1] * x[1] + r.a[3] * lambda + r.c) / r.a[2];
-            if r.a[2] > 0.0 {
-                hi = hi.min(bound);
-            } else {
-                lo = lo.max(bound);
-            }
-        }
-        if lo.is_finite() && hi.is_finite() && lo <= hi {
-            x[2] = 0.5 * (lo + hi);
-        }
+        centre_w(&at_mu, &mut x, lambda);
     }
     // admissible at every joint (to the survey's event tolerance)
     let admissible = at_mu.iter().all(|r| {
@@ -489,6 +482,23 @@ fn exact_corner(
         pattern: union,
         continuous,
     })
+}
+
+/// w in the middle of the band that the rows containing it leave at (x, λ), where the
+/// corner's rows (four sliding ones) do not fix it.
+fn centre_w(rows: &[LoadRow], x: &mut Reactions, lambda: f64) {
+    let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+    for r in rows.iter().filter(|r| r.a[2] != 0.0) {
+        let bound = -(r.a[0] * x[0] + r.a[1] * x[1] + r.a[3] * lambda + r.c) / r.a[2];
+        if r.a[2] > 0.0 {
+            hi = hi.min(bound);
+        } else {
+            lo = lo.max(bound);
+        }
+    }
+    if lo.is_finite() && hi.is_finite() && lo <= hi {
+        x[2] = 0.5 * (lo + hi);
+    }
 }
 
 /// Brackets every change of branch between `lo` and `hi` (on different branches).

@@ -250,19 +250,11 @@ pub fn survey(
         .then(|| sweep_load_with_top(arch, eta, mu, load, min, top, settings));
     // the states at λ_static: the optimal face whole, by a walk on its vertices from the
     // LP's, with the sweep's points at the top; the LP's state where neither gave one
+    let at_top = swept.as_ref().map_or(&[][..], |(_, at_top)| &at_top[..]);
     let at_static = match max {
         None => None,
-        Some((lambda_lp, x_lp)) => {
-            let mut points = face::walk(&all_rows, eta, mu, lambda_lp, x_lp, settings);
-            if let Some((_, at_top)) = &swept {
-                points.extend(at_top.iter().copied());
-            }
-            let mut f = face::face(&all_rows, eta, mu, lambda_lp, &points, settings);
-            if f.vertices.is_empty() {
-                f = face::face(&all_rows, eta, mu, lambda_lp, &[x_lp], settings);
-            }
-            // an LP failure at the static maximum is no decision, never "no mechanism"
-            match face::decide(arch, eta, mu, load, &all_rows, &f, settings) {
+        Some(lp) => {
+            match states_at_static(arch, (eta, mu), load, &all_rows, lp, at_top, settings) {
                 Ok(a) => Some(a),
                 Err(e) => return Ok(Err(e)),
             }
@@ -270,23 +262,7 @@ pub fn survey(
     };
     let max = at_static.as_ref().map(|a| a.state);
     if mu.is_infinite() {
-        // associative (hinges only): the static maximum is the only limit state, and
-        // none exists where λ is unbounded (see `continuous_survey`)
-        return Ok(Ok(match (max, at_static) {
-            (Some(m), Some(a)) => LoadOutcome::Limits(LoadSurvey {
-                lambda_min: min,
-                lambda_static: Some(m),
-                mechanism_at_static: !a.limit_states.is_empty(),
-                limit_states: a.limit_states,
-                events: 0,
-                method: "associative",
-                no_mechanism: Vec::new(),
-            }),
-            _ => LoadOutcome::NoCollapse {
-                lambda_min: min,
-                events: 0,
-            },
-        }));
+        return Ok(Ok(associative(min, max, at_static)));
     }
     let (sw, _) = swept.expect("swept at finite mu");
     if let Some(f) = sw.failure {
@@ -341,6 +317,52 @@ pub fn survey(
         method: "sweep",
         no_mechanism,
     })))
+}
+
+/// The states at λ_static of a discrete arch: the optimal face whole, by a walk on its
+/// vertices from the LP's state `lp`, with the sweep's points at the top (`at_top`); the
+/// LP's state where neither gave one. An LP failure there is no decision (`Err`), never
+/// "no mechanism".
+fn states_at_static(
+    arch: &Arch,
+    (eta, mu): (f64, f64),
+    load: &LiveLoad,
+    all_rows: &[LoadRow],
+    (lambda_lp, x_lp): (f64, Reactions),
+    at_top: &[Reactions],
+    settings: &Settings,
+) -> Result<face::AtStatic, String> {
+    let mut points = face::walk(all_rows, eta, mu, lambda_lp, x_lp, settings);
+    points.extend(at_top.iter().copied());
+    let mut f = face::face(all_rows, eta, mu, lambda_lp, &points, settings);
+    if f.vertices.is_empty() {
+        f = face::face(all_rows, eta, mu, lambda_lp, &[x_lp], settings);
+    }
+    face::decide(arch, eta, mu, load, all_rows, &f, settings)
+}
+
+/// The answer at μ = ∞, associative (hinges only): the static maximum is the only limit
+/// state, and none exists where λ is unbounded (see `continuous_survey`).
+fn associative(
+    min: (f64, Reactions),
+    max: Option<(f64, Reactions)>,
+    at_static: Option<face::AtStatic>,
+) -> LoadOutcome {
+    match (max, at_static) {
+        (Some(m), Some(a)) => LoadOutcome::Limits(LoadSurvey {
+            lambda_min: min,
+            lambda_static: Some(m),
+            mechanism_at_static: !a.limit_states.is_empty(),
+            limit_states: a.limit_states,
+            events: 0,
+            method: "associative",
+            no_mechanism: Vec::new(),
+        }),
+        _ => LoadOutcome::NoCollapse {
+            lambda_min: min,
+            events: 0,
+        },
+    }
 }
 
 /// Continua of limit states. Two active contacts whose compatibility columns cancel — the
@@ -535,90 +557,11 @@ fn continuous_finite_friction(
     let Some((lambda_s, x_s, pattern_s)) = max else {
         return Err("continuous arch at finite friction with lambda_static unbounded: the limit states are not searched on the continuum in that case yet".into());
     };
-    let (a, b) = (arch.beta_right(), arch.beta_left());
-    let above_min = |l: f64| min.0 == 0.0 || l > min.0 * (1.0 + settings.root_slack);
     let mut sets: Vec<Vec<LoadLimitState>> = Vec::new();
     let mut events = 0;
     for pieces in [settings.sweep_pieces, 2 * settings.sweep_pieces] {
-        let mut joints: Vec<f64> = (0..=pieces)
-            .map(|i| {
-                if i == pieces {
-                    b
-                } else {
-                    a + (b - a) * i as f64 / pieces as f64
-                }
-            })
-            .collect();
-        if let LiveLoad::Point { beta } = *load {
-            if !joints.contains(&beta) {
-                joints.push(beta);
-                joints.sort_by(f64::total_cmp);
-            }
-        }
-        let discrete = arch
-            .clone()
-            .with_joints(&joints)
-            .map_err(|e| e.to_string())?;
-        let states = match survey(&discrete, eta, mu, load, settings).map_err(|e| e.to_string())? {
-            Ok(LoadOutcome::Limits(sv)) => {
-                events = sv.events;
-                sv.limit_states
-            }
-            Ok(LoadOutcome::NoCollapse { .. }) => Vec::new(),
-            Ok(LoadOutcome::NoEquilibrium) => {
-                return Err(format!(
-                    "the {pieces}-piece discretisation has no admissible state"
-                ))
-            }
-            Err(e) => return Err(format!("{pieces} pieces: {e}")),
-        };
-        let h = (b - a) / pieces as f64;
-        let mut found: Vec<LoadLimitState> = Vec::new();
-        for st in &states {
-            // a face of states at the discretisation's own static maximum (a continuum at
-            // one λ): its states lie at or above the continuous arch's λ_static, which is
-            // decided on the continuum itself below
-            if st.continuum_to.is_some_and(|to| to <= st.lambda) {
-                continue;
-            }
-            if st.continuum_to.is_some() {
-                return Err(format!(
-                    "the {pieces}-piece discretisation has a continuum of limit states from lambda = {} (the loaded point sliding along its section): not carried over to the continuous arch yet",
-                    st.lambda
-                ));
-            }
-            let pattern: Vec<continuum::LoadedContact> = st
-                .pattern
-                .iter()
-                .zip(&st.sides)
-                .map(|(c, s)| continuum::LoadedContact {
-                    contact: *c,
-                    side: *s,
-                })
-                .collect();
-            let Some((l, x, active)) = continuum::carry_over(
-                arch,
-                eta,
-                mu,
-                load,
-                (st.lambda, st.x),
-                &pattern,
-                h,
-                settings,
-            ) else {
-                continue;
-            };
-            if !below(l, lambda_s, settings) || !above_min(l) {
-                continue;
-            }
-            let Some(ls) = limit_state_on(arch, eta, mu, load, (l, x), &active, settings)? else {
-                continue;
-            };
-            if !found.iter().any(|f| same_load_state(f, &ls)) {
-                found.push(ls);
-            }
-        }
-        found.sort_by(|p, q| p.lambda.total_cmp(&q.lambda));
+        let (found, n) = carried_states(arch, eta, mu, load, pieces, lambda_s, min, settings)?;
+        events = n.unwrap_or(events);
         sets.push(found);
     }
     let fine = sets.pop().expect("two discretisations");
@@ -652,6 +595,106 @@ fn continuous_finite_friction(
 }
 
 /// Two refined limit states are the same: equal λ (to 1e-9) and the same contacts.
+/// The limit states below λ_static of the `pieces`-piece discretisation of a continuous arch
+/// carried over to the continuum (adjacent contacts merged into tangencies, Newton with λ
+/// unknown, verified over the arch), with the events of its sweep (`None` where it found no
+/// limit state to sweep to).
+#[allow(clippy::too_many_arguments)]
+fn carried_states(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    load: &LiveLoad,
+    pieces: usize,
+    lambda_s: f64,
+    min: (f64, Reactions),
+    settings: &Settings,
+) -> Result<(Vec<LoadLimitState>, Option<usize>), String> {
+    let (a, b) = (arch.beta_right(), arch.beta_left());
+    let above_min = |l: f64| min.0 == 0.0 || l > min.0 * (1.0 + settings.root_slack);
+    let mut events = None;
+    let mut joints: Vec<f64> = (0..=pieces)
+        .map(|i| {
+            if i == pieces {
+                b
+            } else {
+                a + (b - a) * i as f64 / pieces as f64
+            }
+        })
+        .collect();
+    if let LiveLoad::Point { beta } = *load {
+        if !joints.contains(&beta) {
+            joints.push(beta);
+            joints.sort_by(f64::total_cmp);
+        }
+    }
+    let discrete = arch
+        .clone()
+        .with_joints(&joints)
+        .map_err(|e| e.to_string())?;
+    let states = match survey(&discrete, eta, mu, load, settings).map_err(|e| e.to_string())? {
+        Ok(LoadOutcome::Limits(sv)) => {
+            events = Some(sv.events);
+            sv.limit_states
+        }
+        Ok(LoadOutcome::NoCollapse { .. }) => Vec::new(),
+        Ok(LoadOutcome::NoEquilibrium) => {
+            return Err(format!(
+                "the {pieces}-piece discretisation has no admissible state"
+            ))
+        }
+        Err(e) => return Err(format!("{pieces} pieces: {e}")),
+    };
+    let h = (b - a) / pieces as f64;
+    let mut found: Vec<LoadLimitState> = Vec::new();
+    for st in &states {
+        // a face of states at the discretisation's own static maximum (a continuum at
+        // one λ): its states lie at or above the continuous arch's λ_static, which is
+        // decided on the continuum itself below
+        if st.continuum_to.is_some_and(|to| to <= st.lambda) {
+            continue;
+        }
+        if st.continuum_to.is_some() {
+            return Err(format!(
+                    "the {pieces}-piece discretisation has a continuum of limit states from lambda = {} (the loaded point sliding along its section): not carried over to the continuous arch yet",
+                    st.lambda
+                ));
+        }
+        let pattern: Vec<continuum::LoadedContact> = st
+            .pattern
+            .iter()
+            .zip(&st.sides)
+            .map(|(c, s)| continuum::LoadedContact {
+                contact: *c,
+                side: *s,
+            })
+            .collect();
+        let Some((l, x, active)) = continuum::carry_over(
+            arch,
+            eta,
+            mu,
+            load,
+            (st.lambda, st.x),
+            &pattern,
+            h,
+            settings,
+        ) else {
+            continue;
+        };
+        if !below(l, lambda_s, settings) || !above_min(l) {
+            continue;
+        }
+        let Some(ls) = limit_state_on(arch, eta, mu, load, (l, x), &active, settings)? else {
+            continue;
+        };
+        if !found.iter().any(|f| same_load_state(f, &ls)) {
+            found.push(ls);
+        }
+    }
+    found.sort_by(|p, q| p.lambda.total_cmp(&q.lambda));
+    Ok((found, events))
+}
+
 /// Whether λ lies below `top` by more than the resolution at which a multiplier is decided:
 /// `root_slack` relative, and absolute below 1 (the rows are of size 1 in x and λ, so a λ
 /// near zero is fixed to rounding in absolute terms, not relative ones).

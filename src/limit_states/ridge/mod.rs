@@ -1,0 +1,136 @@
+//! Limit states of a discrete arch above η_s, found on the ridge over the friction polygon
+//! (issue 12; the theorem, its proof and the cases are in
+//! `docs/design/limit-states-on-boundary.md`).
+//!
+//! For the centreline weight and finite μ, N_j and T_j are affine in (h, v) alone, so the
+//! sliding rows cut a fixed convex polygon Q of the (h, v) plane. Where P(η) has an interior
+//! point, every limit state has an active sliding row, so (h, v) ∈ ∂Q; its mechanism has as
+//! much extrados as intrados hinge rate (the third row of B), so an E row and an I row are
+//! active and η = g(h, v), the least η whose band of admissible w at (h, v) is not empty.
+//! The limit states are points of this ridge with four active rows (or three with
+//! dependent columns). The search walks the ridge along each edge of Q: the edge's ends
+//! (vertices of Q, case V), the apexes where both sliding lines of one joint meet (V2), the
+//! breakpoints where a third hinge row reaches w (E1, a quadratic per row) and the points of
+//! a piece where the sliding column and the piece's two hinge columns are dependent (E2, a
+//! quadratic in η). Every candidate is then checked like a state of the sweep: admissible
+//! over every joint (`State::verdict`) and a mechanism on its active contacts
+//! (`mechanism::find`).
+//!
+//! Every event is a closed form of degree ≤ 2. What the walk cannot decide it hands back
+//! as an `Err` (the caller then sweeps): three sliding lines through one vertex of Q,
+//! families of limit states (a quadratic that vanishes identically), a walk that does not
+//! reach the end of its edge, a kinematic LP the back end does not decide.
+//!
+//! The files, each using only those before it: `rows` (the joints' rows over (h, v) and
+//! the hinge rows along a line), `polygon` (Q), `walk` (the ridge over one edge of Q),
+//! `candidates` (every point to check), `check` (a candidate checked like a point of the
+//! sweep). This file is the driver.
+
+mod candidates;
+mod check;
+mod polygon;
+mod rows;
+mod walk;
+
+use crate::arch::{Arch, JointLayout, WeightModel};
+use crate::settings::Settings;
+use crate::statics::reaction_scale;
+use candidates::candidates;
+use check::{check, may_carry_mechanism};
+use rows::JointRows;
+
+use super::SweptState;
+
+/// The limit states the ridge search found, and how many candidate points it checked.
+#[derive(Debug, Clone)]
+pub struct Ridge {
+    /// Limit states with η > `eta_lo`, ascending in η.
+    pub states: Vec<SweptState>,
+    /// Candidate points of the ridge checked (vertices, apexes, breakpoints, dependent
+    /// columns) with η > `eta_lo`.
+    pub candidates: usize,
+}
+
+/// Whether the ridge search applies: a discrete arch with the centreline weight at finite μ
+/// (the true centroid puts η² into the hinge rows; μ = ∞ has no sliding rows, and
+/// `limit_states` answers it by the interior alone).
+pub fn applies(arch: &Arch, mu: f64) -> bool {
+    mu.is_finite()
+        && matches!(arch.layout(), JointLayout::Discrete(_))
+        && matches!(arch.weight(), WeightModel::Centreline)
+}
+
+/// Every limit state of a discrete arch (centreline weight, finite μ) with η in
+/// (`eta_lo`, 2) that lies on the ridge over ∂Q. The caller owns the claim that these are
+/// *all* limit states there: it holds wherever P(η) has an interior point (checked by the
+/// caller with one margin LP). `Err` says why the walk could not decide (the caller then
+/// sweeps).
+pub fn search(arch: &Arch, mu: f64, eta_lo: f64, settings: &Settings) -> Result<Ridge, String> {
+    if !applies(arch, mu) {
+        return Err(
+            "the ridge search needs a discrete arch, the centreline weight and finite mu".into(),
+        );
+    }
+    let JointLayout::Discrete(joints) = arch.layout() else {
+        unreachable!("checked by applies")
+    };
+    if joints.len() > settings.ridge_max_joints {
+        return Err(format!(
+            "the ridge walk over {} joints is beyond settings.ridge_max_joints = {}",
+            joints.len(),
+            settings.ridge_max_joints
+        ));
+    }
+    let js: Vec<JointRows> = joints.iter().map(|&b| JointRows::at(arch, b)).collect();
+    let cands = candidates(&js, mu, eta_lo)?;
+    let mut states: Vec<SweptState> = Vec::new();
+    for c in &cands {
+        if !may_carry_mechanism(&js, mu, c, settings) {
+            continue;
+        }
+        if let Some(s) = check(arch, mu, c, settings)? {
+            let dup = states.iter().any(|p| {
+                (p.eta - s.eta).abs() <= settings.same_state_eta * s.eta
+                    && (0..3).all(|k| {
+                        (p.x[k] - s.x[k]).abs() <= settings.same_state_x * reaction_scale(&s.x)
+                    })
+            });
+            if !dup {
+                states.push(s);
+            }
+        }
+    }
+    sort_states(&mut states, settings);
+    Ok(Ridge {
+        states,
+        candidates: cands.len(),
+    })
+}
+
+/// Ascending in η; states whose η agree to `settings.same_root` (relative: mirror images)
+/// by their patterns (angles, then kinds), so that the order does not depend on the order
+/// of the walk.
+pub(crate) fn sort_states(states: &mut [SweptState], settings: &Settings) {
+    states.sort_by(|p, q| p.eta.total_cmp(&q.eta));
+    let mut k = 0;
+    while k < states.len() {
+        let mut end = k + 1;
+        while end < states.len()
+            && states[end].eta - states[k].eta <= settings.same_root * states[k].eta
+        {
+            end += 1;
+        }
+        states[k..end].sort_by(|p, q| {
+            let key = |s: &SweptState| {
+                s.pattern
+                    .iter()
+                    .map(|c| (c.beta, c.kind))
+                    .collect::<Vec<_>>()
+            };
+            key(p)
+                .partial_cmp(&key(q))
+                .unwrap_or(std::cmp::Ordering::Equal)
+        });
+        k = end;
+    }
+}

@@ -1,0 +1,90 @@
+//! The sweep's state: the planes of P(t), the vertices alive with their deaths, what was
+//! found so far; and the one activity test every step uses.
+
+use super::found::{CheckedPoint, SweptState};
+use super::geometry::{Plane, Vertex, BOX};
+use crate::arch::Arch;
+use crate::load::LiveLoad;
+use crate::settings::Settings;
+use crate::statics::{magnitude, reaction_scale, Reactions};
+
+/// What the sweep's parameter t is.
+#[derive(Debug, Clone, Copy)]
+pub(super) enum Param<'a> {
+    /// t = η: the thickness problem (self-weight only).
+    Thickness,
+    /// t = λ: the multiplier of a live load at fixed η.
+    Multiplier { eta: f64, load: &'a LiveLoad },
+}
+
+pub(super) struct Sweeper<'a> {
+    pub(super) arch: &'a Arch,
+    pub(super) mu: f64,
+    pub(super) param: Param<'a>,
+    /// The end of the sweep: η's thickness limit, or λ_static.
+    pub(super) top: f64,
+    pub(super) planes: Vec<Plane>,
+    pub(super) settings: &'a Settings,
+    /// The vertices alive, each with its death (the parameter and the plane that crosses
+    /// it), `None` when it survives to the top.
+    pub(super) alive: Vec<(Vertex, Option<(f64, usize)>)>,
+    pub(super) states: Vec<SweptState>,
+    pub(super) no_mechanism: Vec<CheckedPoint>,
+    /// The first kinematic LP that the back end could not decide: the sweep then decides
+    /// nothing (an undecided point is neither a limit state nor "no mechanism").
+    pub(super) lp_failure: Option<String>,
+}
+
+impl<'a> Sweeper<'a> {
+    /// A sweep over `planes` up to `top`, with nothing alive or found yet.
+    pub(super) fn new(
+        arch: &'a Arch,
+        mu: f64,
+        param: Param<'a>,
+        top: f64,
+        planes: Vec<Plane>,
+        settings: &'a Settings,
+    ) -> Sweeper<'a> {
+        Sweeper {
+            arch,
+            mu,
+            param,
+            top,
+            planes,
+            settings,
+            alive: Vec::new(),
+            states: Vec::new(),
+            no_mechanism: Vec::new(),
+            lp_failure: None,
+        }
+    }
+}
+
+impl Sweeper<'_> {
+    /// `event_tol` in units of the state's size (1 + ‖x‖₁): a point lies on a plane, or
+    /// inside it, to this.
+    pub(super) fn tol(&self, x: &Reactions) -> f64 {
+        self.settings.event_tol * reaction_scale(x)
+    }
+
+    /// Planes active at (x, η): |φ| within `event_tol` of the plane's own magnitude
+    /// ([`magnitude`]: shallow arches have φ of order η).
+    pub(super) fn active(&self, x: &Reactions, eta: f64) -> Vec<usize> {
+        let thickness = match self.param {
+            Param::Thickness => eta,
+            Param::Multiplier { eta, .. } => eta,
+        };
+        (0..self.planes.len())
+            .filter(|&i| {
+                let p = &self.planes[i];
+                let size = match p.contact {
+                    Some(c) => {
+                        magnitude(c.kind, thickness, self.mu, x, self.settings.magnitude_floor)
+                    }
+                    None => BOX,
+                };
+                p.value(x, eta).abs() <= self.settings.event_tol * size
+            })
+            .collect()
+    }
+}
