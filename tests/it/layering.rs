@@ -411,8 +411,6 @@ const KNOWN_CIRCLES: &[(&str, &str, &str)] = &[
     ("cli", "plot.rs", "mod.rs"),           // TODO: circle to remove
     ("cli", "serve.rs", "mod.rs"),          // TODO: circle to remove
     ("cli", "solve.rs", "mod.rs"),          // TODO: circle to remove
-    ("family", "load.rs", "mod.rs"),        // TODO: circle to remove
-    ("family", "thickness.rs", "mod.rs"),   // TODO: circle to remove
     ("limit_curve", "tracer.rs", "mod.rs"), // TODO: circle to remove
     ("limit_states", "ridge.rs", "mod.rs"), // TODO: circle to remove
     ("lp", "dense.rs", "mod.rs"),           // TODO: circle to remove
