@@ -412,7 +412,7 @@ const KNOWN_CIRCLES: &[(&str, &str, &str)] = &[
     ("cli", "serve.rs", "mod.rs"),          // TODO: circle to remove
     ("cli", "solve.rs", "mod.rs"),          // TODO: circle to remove
     ("limit_curve", "tracer.rs", "mod.rs"), // TODO: circle to remove
-    ("limit_states", "ridge.rs", "mod.rs"), // TODO: circle to remove
+    ("limit_states", "ridge/", "mod.rs"),   // TODO: circle to remove
     ("lp", "dense.rs", "mod.rs"),           // TODO: circle to remove
     ("lp", "highs.rs", "mod.rs"),           // TODO: circle to remove
     ("multiplier", "curve.rs", "mod.rs"),   // TODO: circle to remove
