@@ -3,7 +3,7 @@
 use super::{mechanism_json, reactions, status, ArchJson, MechanismJson, Reactions, JSON_VERSION};
 use crate::contact::Contact;
 use crate::limit::{Candidate, LimitState, Outcome};
-use crate::limit_states::Survey;
+use crate::limit_states::{LimitStates, Survey};
 use serde::Serialize;
 
 #[derive(Debug, Serialize)]
@@ -130,7 +130,28 @@ pub fn solve(survey: &Survey, explain: bool) -> SolveJson {
         limit_states: None,
         search: None,
     };
-    match &sol.outcome {
+    with_outcome(&mut doc, &sol.outcome);
+    match &survey.states {
+        Ok(s) => with_limit_states(&mut doc, survey, s),
+        Err(reason) => {
+            doc.search = Some(SearchJson {
+                complete: false,
+                method: None,
+                events: None,
+                reason: Some(reason.clone()),
+            });
+            if let Outcome::Limit(_) = &sol.outcome {
+                doc.unique = Some(None);
+            }
+        }
+    }
+    doc
+}
+
+/// What the solver found at η_s: the limit state, or the message and the numbers that say
+/// why there is none.
+fn with_outcome(doc: &mut SolveJson, outcome: &Outcome) {
+    match outcome {
         Outcome::Limit(ls) => {
             let (p, r, m, c) = limit_parts(ls);
             doc.eta = Some(ls.eta);
@@ -158,70 +179,59 @@ pub fn solve(survey: &Survey, explain: bool) -> SolveJson {
             doc.message = Some(reason.clone());
         }
     }
-    match &survey.states {
-        Ok(s) => {
-            // η_s is known exactly and every limit state above it was searched: a decided
-            // answer even when the least state carries no mechanism. An arch that stands at
-            // every η > 0 keeps its status (there is no least thickness; η_s = 0 is an
-            // infimum) and its message, with the limit states above listed all the same.
-            if !matches!(sol.outcome, Outcome::NoCollapse { .. }) {
-                doc.status = "ok";
-                doc.message = None;
-            }
-            doc.eta_bracket = None;
-            doc.eta = Some(s.eta_s);
-            doc.attained = Some(s.attained);
-            doc.mechanism_at_eta = Some(s.mechanism_at_eta_s);
-            doc.unique = Some(survey.unique());
-            let mut all = Vec::new();
-            if let (true, Outcome::Limit(ls)) = (s.mechanism_at_eta_s, &sol.outcome) {
-                all.push(LimitStateJson {
-                    eta: ls.eta,
-                    mode: ls.mode.name(),
-                    pattern: ls.pattern.clone(),
-                    reactions: reactions(&ls.x),
-                    mechanism: mechanism_json(&ls.mechanism),
-                });
-            }
-            all.extend(s.above.iter().map(|a| LimitStateJson {
-                eta: a.eta,
-                mode: a.mode.name(),
-                pattern: a.pattern.clone(),
-                reactions: reactions(&a.x),
-                mechanism: mechanism_json(&a.mechanism),
-            }));
-            // the top-level mode, pattern, reactions and mechanism are the least limit
-            // state's (none when there is none)
-            if !s.mechanism_at_eta_s {
-                let least = s.above.first();
-                doc.mode = least.map(|a| a.mode.name());
-                doc.mode_standard = least.map(|a| a.mode.is_standard());
-                doc.pattern = least.map(|a| a.pattern.clone());
-                doc.reactions = least.map(|a| reactions(&a.x));
-                doc.mechanism = least.map(|a| mechanism_json(&a.mechanism));
-                doc.checks = None;
-            }
-            doc.limit_states = Some(all);
-            doc.search = Some(SearchJson {
-                complete: true,
-                method: Some(s.method.clone()),
-                events: Some(s.events),
-                reason: None,
-            });
-        }
-        Err(reason) => {
-            doc.search = Some(SearchJson {
-                complete: false,
-                method: None,
-                events: None,
-                reason: Some(reason.clone()),
-            });
-            if let Outcome::Limit(_) = &sol.outcome {
-                doc.unique = Some(None);
-            }
-        }
+}
+
+/// Every limit state with η in [η_s, 2), found by a completed search: the decided answer.
+fn with_limit_states(doc: &mut SolveJson, survey: &Survey, s: &LimitStates) {
+    let sol = &survey.solution;
+    // η_s is known exactly and every limit state above it was searched: a decided
+    // answer even when the least state carries no mechanism. An arch that stands at
+    // every η > 0 keeps its status (there is no least thickness; η_s = 0 is an
+    // infimum) and its message, with the limit states above listed all the same.
+    if !matches!(sol.outcome, Outcome::NoCollapse { .. }) {
+        doc.status = "ok";
+        doc.message = None;
     }
-    doc
+    doc.eta_bracket = None;
+    doc.eta = Some(s.eta_s);
+    doc.attained = Some(s.attained);
+    doc.mechanism_at_eta = Some(s.mechanism_at_eta_s);
+    doc.unique = Some(survey.unique());
+    let mut all = Vec::new();
+    if let (true, Outcome::Limit(ls)) = (s.mechanism_at_eta_s, &sol.outcome) {
+        all.push(LimitStateJson {
+            eta: ls.eta,
+            mode: ls.mode.name(),
+            pattern: ls.pattern.clone(),
+            reactions: reactions(&ls.x),
+            mechanism: mechanism_json(&ls.mechanism),
+        });
+    }
+    all.extend(s.above.iter().map(|a| LimitStateJson {
+        eta: a.eta,
+        mode: a.mode.name(),
+        pattern: a.pattern.clone(),
+        reactions: reactions(&a.x),
+        mechanism: mechanism_json(&a.mechanism),
+    }));
+    // the top-level mode, pattern, reactions and mechanism are the least limit
+    // state's (none when there is none)
+    if !s.mechanism_at_eta_s {
+        let least = s.above.first();
+        doc.mode = least.map(|a| a.mode.name());
+        doc.mode_standard = least.map(|a| a.mode.is_standard());
+        doc.pattern = least.map(|a| a.pattern.clone());
+        doc.reactions = least.map(|a| reactions(&a.x));
+        doc.mechanism = least.map(|a| mechanism_json(&a.mechanism));
+        doc.checks = None;
+    }
+    doc.limit_states = Some(all);
+    doc.search = Some(SearchJson {
+        complete: true,
+        method: Some(s.method.clone()),
+        events: Some(s.events),
+        reason: None,
+    });
 }
 
 fn candidates(c: &[Candidate]) -> Vec<CandidateJson> {

@@ -3,12 +3,12 @@
 
 use super::format::{describe_arch, eta_digits, fmt_mu, sig, Dimensions};
 use crate::arch::Arch;
+use crate::assess::{Assessment, LeastFriction};
 use crate::limit::Outcome;
 use std::fmt::Write;
 
 /// The human-readable answer of `assess`.
-pub fn assess(arch: &Arch, a: &crate::assess::Assessment, dims: Option<Dimensions>) -> String {
-    use crate::assess::LeastFriction;
+pub fn assess(arch: &Arch, a: &Assessment, dims: Option<Dimensions>) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "{}", describe_arch(arch));
     let _ = writeln!(
@@ -46,6 +46,15 @@ pub fn assess(arch: &Arch, a: &crate::assess::Assessment, dims: Option<Dimension
     if let Some(g) = a.geometric_factor {
         let _ = writeln!(s, "geometric factor    eta / eta* = {}", sig(g, 10));
     }
+    least_friction(&mut s, a);
+    if let Some(d) = dims {
+        in_units(&mut s, arch, a, d);
+    }
+    s
+}
+
+/// μ_min(η), the friction factor and the safest state.
+fn least_friction(s: &mut String, a: &Assessment) {
     match &a.least_friction {
         LeastFriction::Finite { mu, exact, .. } => {
             let _ = writeln!(
@@ -92,33 +101,34 @@ pub fn assess(arch: &Arch, a: &crate::assess::Assessment, dims: Option<Dimension
             sig(st.margin, 4)
         );
     }
-    if let Some(d) = dims {
-        // forces in units of γ t d r with γ = ρ g and t = η r
-        let force = d.density * d.g * a.eta * d.radius * d.depth * d.radius / 1000.0;
+}
+
+/// Lengths in metres and forces in kilonewtons.
+fn in_units(s: &mut String, arch: &Arch, a: &Assessment, d: Dimensions) {
+    // forces in units of γ t d r with γ = ρ g and t = η r
+    let force = d.density * d.g * a.eta * d.radius * d.depth * d.radius / 1000.0;
+    let _ = writeln!(
+        s,
+        "in units            r = {} m, t = {} m, d = {} m; weight of the arch {} kN",
+        sig(d.radius, 6),
+        sig(a.eta * d.radius, 6),
+        sig(d.depth, 6),
+        sig(force * arch.span(), 6)
+    );
+    if let Outcome::Limit(ls) = &a.limit {
         let _ = writeln!(
             s,
-            "in units            r = {} m, t = {} m, d = {} m; weight of the arch {} kN",
-            sig(d.radius, 6),
-            sig(a.eta * d.radius, 6),
-            sig(d.depth, 6),
-            sig(force * arch.span(), 6)
+            "                    least thickness t* = {} m",
+            sig(ls.eta * d.radius, 6)
         );
-        if let Outcome::Limit(ls) = &a.limit {
-            let _ = writeln!(
-                s,
-                "                    least thickness t* = {} m",
-                sig(ls.eta * d.radius, 6)
-            );
-        }
-        if let Some(st) = &a.safest {
-            let _ = writeln!(
-                s,
-                "                    safest state at the right springing: H = {} kN, V = {} kN, M = {} kN m",
-                sig(st.x[0] * force, 6),
-                sig(st.x[1] * force, 6),
-                sig(st.x[2] * force * d.radius, 6)
-            );
-        }
     }
-    s
+    if let Some(st) = &a.safest {
+        let _ = writeln!(
+            s,
+            "                    safest state at the right springing: H = {} kN, V = {} kN, M = {} kN m",
+            sig(st.x[0] * force, 6),
+            sig(st.x[1] * force, 6),
+            sig(st.x[2] * force * d.radius, 6)
+        );
+    }
 }

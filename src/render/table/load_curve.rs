@@ -33,7 +33,6 @@ fn least_text(load: &LiveLoad, o: &Result<LoadOutcome, String>) -> String {
 
 /// The human-readable λ–μ table.
 pub fn load_curve(q: &LoadQuestion, curve: &LoadCurve) -> String {
-    let samples = &curve.samples;
     let mut s = String::new();
     let _ = writeln!(s, "{}", describe_arch(q.arch));
     let _ = writeln!(s, "thickness           eta = t/r = {}", sig(q.eta, 12));
@@ -56,30 +55,43 @@ pub fn load_curve(q: &LoadQuestion, curve: &LoadCurve) -> String {
         "{:>16}  {:>16}  {:>16}  {:>11}  {:>6}  mode of the least limit state",
         "mu", "lambda_static", "lambda", "reduction", "states"
     );
-    for (mu, o) in samples {
-        let r = curve_row(*mu, o);
-        let num = |v: Option<f64>| v.map_or("-".to_string(), |v| sig(v, 12));
-        if r.status == "ok" {
-            let _ = writeln!(
-                s,
-                "{:>16}  {:>16}  {:>16}  {:>11}  {:>6}  {}",
-                fmt_mu(*mu),
-                num(r.lambda_static),
-                num(r.lambda),
-                r.reduction.map_or("-".to_string(), |v| sig(v, 4)),
-                r.limit_states,
-                r.mode.unwrap_or("-")
-            );
-        } else {
-            let _ = writeln!(
-                s,
-                "{:>16}  {}{}",
-                fmt_mu(*mu),
-                r.status,
-                r.message.map_or(String::new(), |m| format!(": {m}"))
-            );
-        }
+    for (mu, o) in &curve.samples {
+        sample_row(&mut s, *mu, o);
     }
+    corners(&mut s, q, curve);
+    s.lines().map(|l| l.trim_end().to_string() + "\n").collect()
+}
+
+/// One row of the table: λ_static, λ, the reduction, the number of limit states and the
+/// least one's mode, or the status.
+fn sample_row(s: &mut String, mu: f64, o: &Result<LoadOutcome, String>) {
+    let r = curve_row(mu, o);
+    let num = |v: Option<f64>| v.map_or("-".to_string(), |v| sig(v, 12));
+    if r.status == "ok" {
+        let _ = writeln!(
+            s,
+            "{:>16}  {:>16}  {:>16}  {:>11}  {:>6}  {}",
+            fmt_mu(mu),
+            num(r.lambda_static),
+            num(r.lambda),
+            r.reduction.map_or("-".to_string(), |v| sig(v, 4)),
+            r.limit_states,
+            r.mode.unwrap_or("-")
+        );
+    } else {
+        let _ = writeln!(
+            s,
+            "{:>16}  {}{}",
+            fmt_mu(mu),
+            r.status,
+            r.message.map_or(String::new(), |m| format!(": {m}"))
+        );
+    }
+}
+
+/// The corners: where each is (exact, or the bisection's bracket), how λ changes there,
+/// and the least limit state on either side.
+fn corners(s: &mut String, q: &LoadQuestion, curve: &LoadCurve) {
     if curve.corners.is_empty() {
         let _ = writeln!(s, "corners             none between the samples");
     } else {
@@ -120,5 +132,4 @@ pub fn load_curve(q: &LoadQuestion, curve: &LoadCurve) -> String {
         let _ = writeln!(s, "      below: {}", least_text(&q.load, &c.below.1));
         let _ = writeln!(s, "      above: {}", least_text(&q.load, &c.above.1));
     }
-    s.lines().map(|l| l.trim_end().to_string() + "\n").collect()
 }

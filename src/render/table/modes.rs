@@ -5,11 +5,11 @@ use super::format::{
     degrees, describe_arch, fmt_mu, fmt_opt_inf, right_half_angle, short, sig, LEGEND,
 };
 use crate::arch::Arch;
-use crate::limit_curve::CurveStatus;
+use crate::limit_curve::{CurveStatus, LimitCurve};
 use std::fmt::Write;
 
 /// The human-readable answer of `modes`: branches and corners, as in a paper.
-pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
+pub fn modes(arch: &Arch, curve: &LimitCurve) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "{}", describe_arch(arch));
     match curve.mu_ms {
@@ -26,14 +26,41 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
             return s;
         }
     }
+    if !traced(&mut s, curve) {
+        return s;
+    }
+    branches(&mut s, curve);
+    changes(
+        &mut s,
+        arch,
+        &curve.corners,
+        "corners (kinks of eta_s(mu)), by decreasing mu (beta_N: intrados hinge, beta_T: sliding joint, right half):",
+    );
+    if !curve.transitions.is_empty() {
+        changes(
+            &mut s,
+            arch,
+            &curve.transitions,
+            "smooth transitions (the pattern changes, eta_s(mu) has no kink), by decreasing mu:",
+        );
+    }
+    limit_branches(&mut s, curve);
+    for (mu, m) in &curve.unresolved {
+        let _ = writeln!(s, "  unresolved sample at mu = {mu}: {m}");
+    }
+    s.push_str(LEGEND);
+    s
+}
+
+/// Whether the curve was traced; if not, why there is no branch.
+fn traced(s: &mut String, curve: &LimitCurve) -> bool {
     match curve.status() {
-        CurveStatus::Traced => {}
+        CurveStatus::Traced => return true,
         CurveStatus::NoEquilibrium => {
             let _ = writeln!(
                 s,
                 "no branch: no thickness eta < 2 admits equilibrium at any friction (the opening is too large for the arch to stand)"
             );
-            return s;
         }
         CurveStatus::NoCollapse => {
             let _ = writeln!(
@@ -48,16 +75,19 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
                     fmt_mu(m)
                 );
             }
-            return s;
         }
         CurveStatus::Unresolved => {
             let _ = writeln!(s, "no branch could be traced:");
             for (mu, m) in &curve.unresolved {
                 let _ = writeln!(s, "  at mu = {}: {m}", fmt_mu(*mu));
             }
-            return s;
         }
     }
+    false
+}
+
+/// The branches of the static boundary, and where it reaches the thickness limit.
+fn branches(s: &mut String, curve: &LimitCurve) {
     let _ = writeln!(
         s,
         "\nbranches of the static boundary eta_s(mu), by decreasing mu:"
@@ -79,53 +109,38 @@ pub fn modes(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> String {
             if t.exact { "" } else { " (bracketed by bisection)" }
         );
     }
-    changes(
-        &mut s,
-        arch,
-        &curve.corners,
-        "corners (kinks of eta_s(mu)), by decreasing mu (beta_N: intrados hinge, beta_T: sliding joint, right half):",
-    );
-    if !curve.transitions.is_empty() {
-        changes(
-            &mut s,
-            arch,
-            &curve.transitions,
-            "smooth transitions (the pattern changes, eta_s(mu) has no kink), by decreasing mu:",
-        );
-    }
+}
+
+/// The limit states above the boundary, grouped into branches over the samples.
+fn limit_branches(s: &mut String, curve: &LimitCurve) {
     if curve.limit_branches.is_empty() {
         let _ = writeln!(
             s,
             "\nlimit states above the boundary: none at the {} sampled mu",
             curve.samples
         );
-    } else {
+        return;
+    }
+    let _ = writeln!(
+        s,
+        "\nlimit states above the boundary eta_s(mu) (non-associative non-uniqueness), by sample:"
+    );
+    let _ = writeln!(
+        s,
+        "  {:<30} {:>15} {:>15}   {:>15} {:>15}  samples  pattern (kind@beta deg)",
+        "mode", "mu from", "mu to", "eta from", "eta to"
+    );
+    for lb in &curve.limit_branches {
+        let b = &lb.branch;
+        let ends = [b.mu_max, b.mu_min, b.eta_min, b.eta_max];
         let _ = writeln!(
             s,
-            "\nlimit states above the boundary eta_s(mu) (non-associative non-uniqueness), by sample:"
+            "{}  {:>7}  {}",
+            branch_row(b.mode, ends),
+            lb.samples,
+            degrees(&b.pattern)
         );
-        let _ = writeln!(
-            s,
-            "  {:<30} {:>15} {:>15}   {:>15} {:>15}  samples  pattern (kind@beta deg)",
-            "mode", "mu from", "mu to", "eta from", "eta to"
-        );
-        for lb in &curve.limit_branches {
-            let b = &lb.branch;
-            let ends = [b.mu_max, b.mu_min, b.eta_min, b.eta_max];
-            let _ = writeln!(
-                s,
-                "{}  {:>7}  {}",
-                branch_row(b.mode, ends),
-                lb.samples,
-                degrees(&b.pattern)
-            );
-        }
     }
-    for (mu, m) in &curve.unresolved {
-        let _ = writeln!(s, "  unresolved sample at mu = {mu}: {m}");
-    }
-    s.push_str(LEGEND);
-    s
 }
 
 /// A branch's mode and its ends [μ from, μ to, η from, η to] as table columns.

@@ -3,7 +3,7 @@
 
 use super::format::{describe_arch, eta_digits, fmt_mu, pattern_table, short, sig};
 use crate::limit::{LimitState, Outcome, Solution};
-use crate::limit_states::Survey;
+use crate::limit_states::{LimitStates, Survey};
 use std::fmt::Write;
 
 /// The human-readable answer of `solve`: η_s, the limit state at η_s in detail when there
@@ -18,35 +18,19 @@ pub fn solve(survey: &Survey, explain: bool) -> String {
         fmt_mu(sol.mu),
         sol.mu.atan().to_degrees()
     );
+    least_thickness(&mut s, survey);
+    s.push_str(&limit_states(survey));
+    if explain {
+        patterns_tried(&mut s, sol);
+    }
+    s
+}
+
+/// η_s and the limit state there, or why there is none.
+fn least_thickness(s: &mut String, survey: &Survey) {
+    let sol = &survey.solution;
     match (&sol.outcome, &survey.states) {
-        (Outcome::Limit(ls), states) => {
-            let _ = writeln!(
-                s,
-                "least thickness     eta_s = t/r = {}",
-                sig(ls.eta_static, eta_digits(ls))
-            );
-            if eta_digits(ls) < 12 {
-                let _ = writeln!(
-                    s,
-                    "note                eta to {} significant digits: the terms of M cancel to eta N/2 at\n                    this opening, and their double-precision rounding moves eta by ~{:.0e} (relative)",
-                    eta_digits(ls),
-                    ls.eta_rounding
-                );
-            }
-            if states.as_ref().is_ok_and(|st| !st.attained) {
-                let _ = writeln!(
-                    s,
-                    "note                eta_s is an infimum, approached only as the reactions grow without\n                    bound (a weightless line of thrust fits the arch): no finite state there, so no\n                    limit state at eta_s"
-                );
-            } else if ls.eta_static < ls.eta {
-                let _ = writeln!(
-                    s,
-                    "note                the least admissible state carries no mechanism without dilatancy\n                    (non-associative gap): the least limit state found lies above it"
-                );
-            } else {
-                s.push_str(&limit_detail(sol, ls));
-            }
-        }
+        (Outcome::Limit(ls), states) => least_limit_state(s, sol, ls, states),
         (
             Outcome::Unresolved {
                 least_static: Some((eta, _)),
@@ -83,38 +67,74 @@ pub fn solve(survey: &Survey, explain: bool) -> String {
             );
         }
     }
-    s.push_str(&limit_states(survey));
-    if explain {
-        let tried: Vec<_> = sol.candidates.iter().filter(|c| c.tried).collect();
+}
+
+/// η_s found with a limit state: its digits, and the state in detail unless η_s is an
+/// infimum or the least admissible state carries no mechanism.
+fn least_limit_state(
+    s: &mut String,
+    sol: &Solution,
+    ls: &LimitState,
+    states: &Result<LimitStates, String>,
+) {
+    let _ = writeln!(
+        s,
+        "least thickness     eta_s = t/r = {}",
+        sig(ls.eta_static, eta_digits(ls))
+    );
+    if eta_digits(ls) < 12 {
         let _ = writeln!(
             s,
-            "\npatterns tried ({}), in the order verified; contacts by angle, kind@beta rad (deg):",
-            tried.len()
+            "note                eta to {} significant digits: the terms of M cancel to eta N/2 at\n                    this opening, and their double-precision rounding moves eta by ~{:.0e} (relative)",
+            eta_digits(ls),
+            ls.eta_rounding
         );
-        for c in tried {
-            let mut contacts = c.contacts.clone();
-            contacts.sort_by(|a, b| a.beta.total_cmp(&b.beta));
-            let joints: Vec<String> = contacts
-                .iter()
-                .map(|k| format!("{}@{:.6} ({:.3})", short(k), k.beta, k.beta.to_degrees()))
-                .collect();
-            let eta = c.eta.map_or("-".to_string(), |e| sig(e, 12));
-            let _ = writeln!(
-                s,
-                "  {}\n      eta = {eta}: {}",
-                joints.join(" "),
-                c.verdict
-            );
-        }
-        let skipped = sol.candidates.iter().filter(|c| !c.tried).count();
-        if skipped > 0 {
-            let _ = writeln!(
-                s,
-                "  ({skipped} smaller subsets not tried: a limit state at the static least thickness was verified first)"
-            );
-        }
     }
-    s
+    if states.as_ref().is_ok_and(|st| !st.attained) {
+        let _ = writeln!(
+            s,
+            "note                eta_s is an infimum, approached only as the reactions grow without\n                    bound (a weightless line of thrust fits the arch): no finite state there, so no\n                    limit state at eta_s"
+        );
+    } else if ls.eta_static < ls.eta {
+        let _ = writeln!(
+            s,
+            "note                the least admissible state carries no mechanism without dilatancy\n                    (non-associative gap): the least limit state found lies above it"
+        );
+    } else {
+        s.push_str(&limit_detail(sol, ls));
+    }
+}
+
+/// With `--explain`: every pattern tried, in the order verified, and its verdict.
+fn patterns_tried(s: &mut String, sol: &Solution) {
+    let tried: Vec<_> = sol.candidates.iter().filter(|c| c.tried).collect();
+    let _ = writeln!(
+        s,
+        "\npatterns tried ({}), in the order verified; contacts by angle, kind@beta rad (deg):",
+        tried.len()
+    );
+    for c in tried {
+        let mut contacts = c.contacts.clone();
+        contacts.sort_by(|a, b| a.beta.total_cmp(&b.beta));
+        let joints: Vec<String> = contacts
+            .iter()
+            .map(|k| format!("{}@{:.6} ({:.3})", short(k), k.beta, k.beta.to_degrees()))
+            .collect();
+        let eta = c.eta.map_or("-".to_string(), |e| sig(e, 12));
+        let _ = writeln!(
+            s,
+            "  {}\n      eta = {eta}: {}",
+            joints.join(" "),
+            c.verdict
+        );
+    }
+    let skipped = sol.candidates.iter().filter(|c| !c.tried).count();
+    if skipped > 0 {
+        let _ = writeln!(
+            s,
+            "  ({skipped} smaller subsets not tried: a limit state at the static least thickness was verified first)"
+        );
+    }
 }
 
 /// The limit state at η_s in detail: pattern, reactions, mechanism, checks.
