@@ -183,7 +183,7 @@ fn find_one_sense(
     }))
 }
 
-/// A collapse mechanism under a live load at multiplier λ (issue 11): non-negative rates
+/// A collapse mechanism under a live load at multiplier λ: non-negative rates
 /// on `contacts` (each with the side of the loaded section it belongs to) with B λ̇ = 0,
 /// Σ λ̇ = 1, total external power L_dead + λ L_live ≥ 0 and **positive live power**
 /// L_live > 0 (the load drives the mechanism; one with L_live ≤ 0 is no collapse under

@@ -9,7 +9,7 @@
 //! P(η) is not empty either: far enough along such a d every φ_i is negative, whatever
 //! the weight. So where P(η) is empty below the least η_rec with such a direction and
 //! holds no bounded state at η_rec itself, η_s = η_rec is an infimum approached only as the
-//! reactions grow without bound (issue 10): no limit state there.
+//! reactions grow without bound: no limit state there.
 //!
 //! At η_rec the cone is a single ray (generically): three contacts whose gradients have a
 //! common null direction, a root of det[g_a(η) g_b(η) g_c(η)] — a cubic, the gradients

@@ -184,7 +184,7 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Strin
 /// A discrete arch that stands at every η > 0 (η_s = 0: a state without tension is
 /// admissible at vanishing thickness, [`crate::limit::vanishing_thickness_state`]) can
 /// still have limit states above: four contacts meeting where P(η) changes, with a
-/// sliding mechanism (issue 10: two voussoirs, two hinges and two slides at η ≈ 1.54).
+/// sliding mechanism (e.g. two voussoirs, two hinges and two slides at η ≈ 1.54).
 /// The sweep starts at η = 0 from that state: P(0) is the set where M = 0 at every joint
 /// (the hinge planes E and I of a joint coincide there), and the vertices just above it
 /// come from the same first-order test as at any least state. No limit state is at η = 0

@@ -1,4 +1,4 @@
-//! The load-multiplier problem at fixed η and μ (issue 11): the range of multipliers
+//! The load-multiplier problem at fixed η and μ: the range of multipliers
 //! λ ≥ 0 of a [`LiveLoad`] at which a statically admissible state exists, and every limit
 //! state in it (a state whose active contacts carry a mechanism with positive live power).
 //!

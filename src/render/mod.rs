@@ -3,6 +3,7 @@
 
 pub mod compas;
 pub mod json;
+mod live_load;
 pub mod load;
 #[cfg(feature = "svg")]
 pub mod plot;

@@ -14,6 +14,7 @@ use crate::render::plot::{
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
+use std::ops::Range;
 
 /// Fill of the safe domain (one translucent layer per arch).
 pub const SAFE_TINT: RGBColor = RGBColor(0, 150, 60);
@@ -275,51 +276,8 @@ fn draw_labels(
     let mut placed: Vec<[i32; 4]> = Vec::new();
     for d in data {
         for &c in &d.corners {
-            let (x, y) = px(c);
             let text = format!("({}, {})", short_num(c.0), short_num(c.1));
-            let (w, h) = (text_width(&text, 12) + 4, 16);
-            // below-left first (a falling curve never passes there), then above-right,
-            // below-right, above-left, higher above-right: the first inside the plot and
-            // clear of other labels
-            let candidates = [
-                (x - 7 - w, y + 7, HPos::Right, VPos::Top),
-                (x + 7, y - 7 - h, HPos::Left, VPos::Bottom),
-                (x + 7, y + 7, HPos::Left, VPos::Top),
-                (x - 7 - w, y - 7 - h, HPos::Right, VPos::Bottom),
-                (x + 7, y - 9 - 2 * h, HPos::Left, VPos::Bottom),
-                (x + 7, y - 11 - 3 * h, HPos::Left, VPos::Bottom),
-            ];
-            let inside = |b: &[i32; 4]| {
-                b[0] >= xr.start && b[2] <= xr.end && b[1] >= yr.start && b[3] <= yr.end
-            };
-            let clear = |b: &[i32; 4]| {
-                placed
-                    .iter()
-                    .all(|p| b[2] <= p[0] || b[0] >= p[2] || b[3] <= p[1] || b[1] >= p[3])
-            };
-            let boxes: Vec<([i32; 4], HPos, VPos)> = candidates
-                .iter()
-                .map(|&(x0, y0, hp, vp)| ([x0, y0, x0 + w, y0 + h], hp, vp))
-                .collect();
-            let (b, hp, vp) = boxes
-                .iter()
-                .find(|c| inside(&c.0) && clear(&c.0))
-                .or_else(|| boxes.iter().find(|c| inside(&c.0)))
-                .unwrap_or(&boxes[0]);
-            let at = (
-                if matches!(hp, HPos::Right) {
-                    b[2] - 2
-                } else {
-                    b[0] + 2
-                },
-                if matches!(vp, VPos::Top) {
-                    b[1] + 1
-                } else {
-                    b[3] - 1
-                },
-            );
-            boxed_text(root, &text, at, 12, Pos::new(*hp, *vp), BLACK)?;
-            placed.push(*b);
+            corner_label(root, &text, px(c), (&xr, &yr), &mut placed)?;
         }
         if let Some(eta_inf) = d.asymptote {
             let (x, y) = px((f.mu.hi, eta_inf));
@@ -361,6 +319,59 @@ fn draw_labels(
         ))
         .map_err(err)?;
     }
+    Ok(())
+}
+
+/// A corner's label `text` near its pixel `(x, y)`: below-left first (a falling curve
+/// never passes there), then above-right, below-right, above-left, higher above-right —
+/// the first inside the plot `(xr, yr)` and clear of the boxes `placed` (to which its box
+/// is added).
+fn corner_label(
+    root: &DrawingArea<SVGBackend, Shift>,
+    text: &str,
+    (x, y): (i32, i32),
+    (xr, yr): (&Range<i32>, &Range<i32>),
+    placed: &mut Vec<[i32; 4]>,
+) -> Result<(), String> {
+    let (w, h) = (text_width(text, 12) + 4, 16);
+    let candidates = [
+        (x - 7 - w, y + 7, HPos::Right, VPos::Top),
+        (x + 7, y - 7 - h, HPos::Left, VPos::Bottom),
+        (x + 7, y + 7, HPos::Left, VPos::Top),
+        (x - 7 - w, y - 7 - h, HPos::Right, VPos::Bottom),
+        (x + 7, y - 9 - 2 * h, HPos::Left, VPos::Bottom),
+        (x + 7, y - 11 - 3 * h, HPos::Left, VPos::Bottom),
+    ];
+    let inside =
+        |b: &[i32; 4]| b[0] >= xr.start && b[2] <= xr.end && b[1] >= yr.start && b[3] <= yr.end;
+    let clear = |b: &[i32; 4]| {
+        placed
+            .iter()
+            .all(|p| b[2] <= p[0] || b[0] >= p[2] || b[3] <= p[1] || b[1] >= p[3])
+    };
+    let boxes: Vec<([i32; 4], HPos, VPos)> = candidates
+        .iter()
+        .map(|&(x0, y0, hp, vp)| ([x0, y0, x0 + w, y0 + h], hp, vp))
+        .collect();
+    let (b, hp, vp) = boxes
+        .iter()
+        .find(|c| inside(&c.0) && clear(&c.0))
+        .or_else(|| boxes.iter().find(|c| inside(&c.0)))
+        .unwrap_or(&boxes[0]);
+    let at = (
+        if matches!(hp, HPos::Right) {
+            b[2] - 2
+        } else {
+            b[0] + 2
+        },
+        if matches!(vp, VPos::Top) {
+            b[1] + 1
+        } else {
+            b[3] - 1
+        },
+    );
+    boxed_text(root, text, at, 12, Pos::new(*hp, *vp), BLACK)?;
+    placed.push(*b);
     Ok(())
 }
 

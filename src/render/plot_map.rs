@@ -3,7 +3,7 @@
 //! curve overlaid in black and a colour bar that gives the value of each band.
 
 use crate::figures::MapData;
-use crate::render::plot::{arch_label, Axis, FAMILY};
+use crate::render::plot::{arch_label, Axis, AxisCoord, FAMILY};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -57,6 +57,42 @@ fn err(e: impl std::fmt::Display) -> String {
     e.to_string()
 }
 
+type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<AxisCoord, AxisCoord>>;
+
+/// The axes of the map and the edges of its cells.
+struct Frame {
+    mu: Axis,
+    eta: Axis,
+    /// Cell edges in μ and in η.
+    mu_edges: Vec<f64>,
+    eta_edges: Vec<f64>,
+}
+
+impl Frame {
+    fn new(map: &MapData, log_eta: bool) -> Frame {
+        let (me, ee) = (edges(&map.mus, true), edges(&map.etas, map.log_eta));
+        Frame {
+            mu: Axis {
+                lo: me[0],
+                hi: me[me.len() - 1],
+                log: true,
+            },
+            eta: Axis {
+                lo: if log_eta { ee[0] } else { ee[0].max(0.0) },
+                hi: ee[ee.len() - 1],
+                log: log_eta,
+            },
+            mu_edges: me,
+            eta_edges: ee,
+        }
+    }
+
+    /// The chart coordinates of (μ, η), η clamped to the axis.
+    fn at(&self, mu: f64, eta: f64) -> (f64, f64) {
+        (self.mu.to(mu), self.eta.to(eta.max(self.eta.lo)))
+    }
+}
+
 /// Draws the map (`values[i][j]` at the cell centred on (`etas[i]`, `mus[j]`)); `log_eta`
 /// puts η on a log scale.
 pub fn svg(map: &MapData, log_eta: bool) -> Result<String, String> {
@@ -74,18 +110,7 @@ pub fn svg(map: &MapData, log_eta: bool) -> Result<String, String> {
     let vmax_neg = finite()
         .fold(0.0f64, |m, v| m.max(-v))
         .max(f64::MIN_POSITIVE);
-    let (me, ee) = (edges(&map.mus, true), edges(&map.etas, map.log_eta));
-    let mu_ax = Axis {
-        lo: me[0],
-        hi: me[me.len() - 1],
-        log: true,
-    };
-    let eta_ax = Axis {
-        lo: if log_eta { ee[0] } else { ee[0].max(0.0) },
-        hi: ee[ee.len() - 1],
-        log: log_eta,
-    };
-    let at = |mu: f64, eta: f64| (mu_ax.to(mu), eta_ax.to(eta.max(eta_ax.lo)));
+    let f = Frame::new(map, log_eta);
     let mut buf = String::new();
     {
         let root = SVGBackend::with_string(&mut buf, (W, H)).into_drawing_area();
@@ -102,22 +127,9 @@ pub fn svg(map: &MapData, log_eta: bool) -> Result<String, String> {
             .margin_right(RIGHT)
             .x_label_area_size(50)
             .y_label_area_size(70)
-            .build_cartesian_2d(mu_ax.range(), eta_ax.range())
+            .build_cartesian_2d(f.mu.range(), f.eta.range())
             .map_err(err)?;
-        for (i, row) in map.values.iter().enumerate() {
-            for (j, &v) in row.iter().enumerate() {
-                let (corners, color) = (
-                    [at(me[j], ee[i]), at(me[j + 1], ee[i + 1])],
-                    value_color(v, vmax_pos, vmax_neg),
-                );
-                // the outline in the same colour closes the anti-aliasing seams
-                ch.draw_series([
-                    Rectangle::new(corners, color.filled()),
-                    Rectangle::new(corners, color.stroke_width(1)),
-                ])
-                .map_err(err)?;
-            }
-        }
+        draw_cells(&mut ch, &f, map, vmax_pos, vmax_neg)?;
         ch.configure_mesh()
             .disable_mesh()
             .x_desc("friction coefficient μ   (labels: μ (φ))")
@@ -126,33 +138,13 @@ pub fn svg(map: &MapData, log_eta: bool) -> Result<String, String> {
             } else {
                 "thickness ratio η = t / r"
             })
-            .x_label_formatter(&|u| mu_ax.mu_label(*u))
-            .y_label_formatter(&|u| eta_ax.label(*u))
+            .x_label_formatter(&|u| f.mu.mu_label(*u))
+            .y_label_formatter(&|u| f.eta.label(*u))
             .label_style((FAMILY, 12))
             .axis_desc_style((FAMILY, 14))
             .draw()
             .map_err(err)?;
-        let d = &map.curve;
-        let mut pts: Vec<(f64, f64)> = d
-            .outline()
-            .into_iter()
-            .filter(|p| p.0 >= mu_ax.lo && p.0 <= mu_ax.hi)
-            .collect();
-        if let Some(&(_, eta_ms)) = pts.last() {
-            pts.push((d.mu_ms, eta_ms));
-            pts.push((d.mu_ms, eta_ax.hi));
-        }
-        ch.draw_series(std::iter::once(PathElement::new(
-            pts.into_iter().map(|p| at(p.0, p.1)).collect::<Vec<_>>(),
-            BLACK.stroke_width(3),
-        )))
-        .map_err(err)?
-        .label("exact limit curve η*(μ)")
-        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], BLACK.stroke_width(3)));
-        for &(mu, eta) in &d.corners {
-            ch.draw_series(std::iter::once(Circle::new(at(mu, eta), 5, BLACK.filled())))
-                .map_err(err)?;
-        }
+        draw_curve(&mut ch, &f, map)?;
         ch.configure_series_labels()
             .position(SeriesLabelPosition::LowerRight)
             .background_style(WHITE.mix(0.9))
@@ -165,6 +157,62 @@ pub fn svg(map: &MapData, log_eta: bool) -> Result<String, String> {
         root.present().map_err(err)?;
     }
     Ok(buf)
+}
+
+/// Every cell filled with the colour of its band.
+fn draw_cells(
+    ch: &mut Chart,
+    f: &Frame,
+    map: &MapData,
+    vmax_pos: f64,
+    vmax_neg: f64,
+) -> Result<(), String> {
+    let (me, ee) = (&f.mu_edges, &f.eta_edges);
+    for (i, row) in map.values.iter().enumerate() {
+        for (j, &v) in row.iter().enumerate() {
+            let (corners, color) = (
+                [f.at(me[j], ee[i]), f.at(me[j + 1], ee[i + 1])],
+                value_color(v, vmax_pos, vmax_neg),
+            );
+            // the outline in the same colour closes the anti-aliasing seams
+            ch.draw_series([
+                Rectangle::new(corners, color.filled()),
+                Rectangle::new(corners, color.stroke_width(1)),
+            ])
+            .map_err(err)?;
+        }
+    }
+    Ok(())
+}
+
+/// The exact limit curve over the map (with its vertical sliding branch) and its corners.
+fn draw_curve(ch: &mut Chart, f: &Frame, map: &MapData) -> Result<(), String> {
+    let d = &map.curve;
+    let mut pts: Vec<(f64, f64)> = d
+        .outline()
+        .into_iter()
+        .filter(|p| p.0 >= f.mu.lo && p.0 <= f.mu.hi)
+        .collect();
+    if let Some(&(_, eta_ms)) = pts.last() {
+        pts.push((d.mu_ms, eta_ms));
+        pts.push((d.mu_ms, f.eta.hi));
+    }
+    ch.draw_series(std::iter::once(PathElement::new(
+        pts.into_iter().map(|p| f.at(p.0, p.1)).collect::<Vec<_>>(),
+        BLACK.stroke_width(3),
+    )))
+    .map_err(err)?
+    .label("exact limit curve η*(μ)")
+    .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], BLACK.stroke_width(3)));
+    for &(mu, eta) in &d.corners {
+        ch.draw_series(std::iter::once(Circle::new(
+            f.at(mu, eta),
+            5,
+            BLACK.filled(),
+        )))
+        .map_err(err)?;
+    }
+    Ok(())
 }
 
 /// The colour bar: the safe bands (greens) above zero, the collapse bands (blues) below,

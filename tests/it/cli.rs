@@ -1,8 +1,12 @@
 //! The binary, driven as a user would: JSON contract, exit codes, error messages,
 //! and a digit-stable snapshot of `solve --json`.
 
+use arch_enum::contact::{Contact, Location};
+use arch_enum::kinematics::{column, power};
+use arch_enum::{Arch, WeightModel};
 use assert_cmd::Command;
-use serde_json::Value;
+use nalgebra::{DMatrix, DVector};
+use serde_json::{json, Value};
 
 fn arch_enum() -> Command {
     Command::cargo_bin("arch-enum").unwrap()
@@ -72,12 +76,133 @@ fn solve_json_contract() {
     for key in ["rates", "dof", "power"] {
         assert!(v["mechanism"].get(key).is_some());
     }
-    // snapshot, without the machine-dependent LP bracket
+    // snapshot, without the machine-dependent LP bracket, and with each mechanism's cone
+    // (unique) in place of its representative rates (one of many: the cone has 2 dof)
+    let mut v = v;
+    let arch = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();
+    // the top-level mechanism is the least limit state's
+    let eta = v["limit_states"][0]["eta"].as_f64().unwrap();
+    mechanism_cone(&mut v["mechanism"], &arch, eta);
+    for ls in v["limit_states"].as_array_mut().unwrap() {
+        let eta = ls["eta"].as_f64().unwrap();
+        mechanism_cone(&mut ls["mechanism"], &arch, eta);
+    }
+    assert_eq!(v["mechanism"]["cone"]["dimension"], 2);
     let mut snap = round(&v);
     snap["checks"] = Value::Null;
     insta::with_settings!({ snapshot_path => "../../snapshots", prepend_module_to_snapshot => false }, {
         insta::assert_json_snapshot!("solve_alpha0_mu0.35", snap);
     });
+}
+
+/// Replaces the representative of a `mechanism` document (at thickness `eta`) by its cone
+/// {λ ≥ 0 : B λ = 0} on the contacts: where the cone has more than one dimension every
+/// point of it is a valid mechanism, so the representative's rates, power and dissipation
+/// (linear in the rates) are one choice, not a result. The cone is unique: its dimension
+/// and its extreme rays, the rates of minimal support (the columns of B on the support
+/// dependent, their null vector of one sign), each with Σ λ = 1 and its power L_e, sorted.
+/// Before it is dropped, the representative is checked to lie in the relative interior of
+/// the cone (λ ≥ 0, Σ λ = 1, B λ = 0, the support of the cone), and the cone's dimension to
+/// be the document's `dof`.
+fn mechanism_cone(m: &mut Value, arch: &Arch, eta: f64) {
+    let listed = m["rates"].as_array().unwrap().clone();
+    let contacts: Vec<Contact> = listed
+        .iter()
+        .map(|r| Contact {
+            beta: r["beta"].as_f64().unwrap(),
+            kind: serde_json::from_value(r["kind"].clone()).unwrap(),
+            at: Location::Interior,
+            free: false,
+        })
+        .collect();
+    let rates: Vec<f64> = listed.iter().map(|r| r["rate"].as_f64().unwrap()).collect();
+    let n = contacts.len();
+    let b = DMatrix::from_fn(3, n, |i, j| {
+        column(contacts[j].kind, contacts[j].beta, eta)[i]
+    });
+    // circuits of B: at most 4 columns (rank ≤ 3)
+    let mut rays: Vec<Vec<f64>> = Vec::new();
+    for subset in 1usize..1 << n {
+        let s: Vec<usize> = (0..n).filter(|&j| subset >> j & 1 == 1).collect();
+        if s.len() > 4 {
+            continue;
+        }
+        let bs = b.select_columns(&s);
+        let eig = (bs.transpose() * &bs).symmetric_eigen();
+        // null directions: eigenvalues of BᵀB at the rounding of the largest
+        let top = eig.eigenvalues.amax();
+        let null: Vec<usize> = (0..s.len())
+            .filter(|&k| eig.eigenvalues[k].abs() <= 1e-12 * top)
+            .collect();
+        if null.len() != 1 {
+            continue;
+        }
+        let v = eig.eigenvectors.column(null[0]);
+        let sign = v.sum().signum();
+        if v.iter().any(|x| x * sign <= 1e-9) {
+            continue;
+        }
+        let mut ray = vec![0.0; n];
+        for (k, &j) in s.iter().enumerate() {
+            ray[j] = v[k] / v.sum();
+        }
+        rays.push(ray);
+    }
+    rays.sort_by(|x, y| {
+        x.iter()
+            .zip(y)
+            .map(|(a, b)| b.total_cmp(a))
+            .find(|o| o.is_ne())
+            .unwrap_or(std::cmp::Ordering::Equal)
+    });
+    let dimension = DMatrix::from_fn(n, rays.len(), |i, j| rays[j][i])
+        .singular_values()
+        .iter()
+        .filter(|&&sv| sv > 1e-9)
+        .count();
+    assert_eq!(
+        m["dof"].as_u64().unwrap() as usize,
+        dimension,
+        "dof and the cone"
+    );
+    // the representative: in the cone, with the cone's support
+    let residual = (&b * DVector::from_column_slice(&rates)).amax();
+    assert!(
+        rates.iter().all(|&r| r >= 0.0) && residual < 1e-12,
+        "the representative {rates:?} is not in the cone: |B lambda| = {residual:e}"
+    );
+    assert!((rates.iter().sum::<f64>() - 1.0).abs() < 1e-12, "{rates:?}");
+    for j in 0..n {
+        let in_support = rays.iter().any(|r| r[j] > 0.0);
+        assert_eq!(
+            rates[j] > 1e-12,
+            in_support,
+            "contact {j}: rate {}",
+            rates[j]
+        );
+    }
+    let p = power(arch, eta, &contacts);
+    let dot = |r: &[f64]| p.iter().zip(r).map(|(a, b)| a * b).sum::<f64>();
+    assert!((dot(&rates) - m["power"].as_f64().unwrap()).abs() < 1e-12);
+    let cone_rays: Vec<Value> = rays
+        .iter()
+        .map(|ray| {
+            let rates: Vec<Value> = listed
+                .iter()
+                .zip(ray)
+                .map(|(c, &rate)| json!({"beta": c["beta"], "kind": c["kind"], "rate": rate}))
+                .collect();
+            json!({"rates": rates, "power": dot(ray)})
+        })
+        .collect();
+    let o = m.as_object_mut().unwrap();
+    for key in ["rates", "power", "dissipation"] {
+        o.remove(key);
+    }
+    o.insert(
+        "cone".into(),
+        json!({"dimension": dimension, "extreme_rays": cone_rays}),
+    );
 }
 
 #[test]

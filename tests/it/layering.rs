@@ -122,8 +122,7 @@ fn render_calls_no_solver() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/render");
     let vocabulary = ["render", "arch", "contact", "collapse_mode"];
     let mut checked = 0;
-    for entry in std::fs::read_dir(&root).unwrap() {
-        let path = entry.unwrap().path();
+    for path in rs_files(&root) {
         let text = code_of(&std::fs::read_to_string(&path).unwrap());
         for (i, _) in text.match_indices("crate::") {
             let rest = &text[i + 7..];

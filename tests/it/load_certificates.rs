@@ -1,5 +1,5 @@
-//! Certificates of the load-multiplier problem (issue 11): `certify` then `verify` under
-//! a live load on the README's examples and on random small discrete arches; the gap;
+//! Certificates of the load-multiplier problem: `certify` then `verify` under
+//! a live load on the examples of docs/live-loads.md and on random small discrete arches; the gap;
 //! tampering (the bracket, a Farkas vector, the list of limit states, the load); bad
 //! input on the command line.
 
@@ -45,7 +45,7 @@ fn lambda_static(arch: &Arch, eta: f64, mu: f64, load: &LiveLoad) -> f64 {
     }
 }
 
-/// The README's Stockdale arch: 27 voussoirs, true-centroid weight, the point load at
+/// The Stockdale arch of docs/live-loads.md: 27 voussoirs, true-centroid weight, the point load at
 /// the 8th joint, μ = ∞.
 fn stockdale() -> (Arch, f64, f64, LiveLoad) {
     let arch = Arch::symmetric(0.0, WeightModel::Centroid)

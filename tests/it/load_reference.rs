@@ -766,8 +766,8 @@ fn face_vertices(case: &Case, lambda: f64) -> Vec<Vec<(usize, ContactKind)>> {
 /// vertices itself and decides: where the contacts active on the whole face carry a
 /// mechanism with positive live power, the survey must report exactly those contacts at
 /// λ_static (a continuum of states when the face is not a point), not the contacts of one
-/// vertex; a mechanism at λ_static must exist iff one exists at some vertex. The README's
-/// six-voussoir arch (its face an edge in w) and random small arches.
+/// vertex; a mechanism at λ_static must exist iff one exists at some vertex. The six-voussoir
+/// arch of docs/live-loads.md (its face an edge in w) and random small arches.
 #[test]
 fn the_state_at_lambda_static_is_the_faces() {
     let settings = Settings::default();

@@ -3,8 +3,11 @@
 //! of a mode transition shows up as a snapshot diff.
 
 use crate::cli::{json_of, round};
+use arch_enum::assess::safest_state;
 use arch_enum::limit_curve::{trace, LimitCurve};
-use arch_enum::{Arch, CollapseMode, ContactKind, Location, Settings, WeightModel};
+use arch_enum::{
+    solve, Arch, CollapseMode, ContactKind, LimitState, Location, Outcome, Settings, WeightModel,
+};
 use std::f64::consts::PI;
 
 fn curve(alpha: f64) -> LimitCurve {
@@ -12,6 +15,23 @@ fn curve(alpha: f64) -> LimitCurve {
         &Arch::symmetric(alpha, WeightModel::Centreline).unwrap(),
         &Settings::default(),
     )
+}
+
+/// The limit state at η*(μ) of the symmetric arch of opening `alpha`, solved on its own
+/// (not taken from the traced curve).
+fn limit_at(alpha: f64, mu: f64) -> LimitState {
+    let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
+    match solve(&arch, mu, &Settings::default()).unwrap().outcome {
+        Outcome::Limit(ls) => ls,
+        o => panic!("alpha = {alpha}, mu = {mu}: no limit state: {o:?}"),
+    }
+}
+
+/// Whether the symmetric arch of opening `alpha` has a statically admissible state at
+/// (η, μ): the LP of the safest state, not the solver of η*.
+fn stands(alpha: f64, eta: f64, mu: f64) -> bool {
+    let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
+    safest_state(&arch, eta, mu, &Settings::default()).is_some()
 }
 
 /// Asserts |value − printed| ≤ half a unit of the last of `digits` significant digits.
@@ -75,8 +95,42 @@ fn published_corners() {
                 CollapseMode::PurelySliding
             ]
         );
-        assert!(c.branches[0].mu_max.is_infinite());
-        assert_eq!(c.branches[2].mu_min, c.branches[2].mu_max);
+        // The rotational branch reaches infinite friction (its mu_max is ∞): above mu_rm
+        // η_s no longer depends on μ and the pattern stays rotational.
+        for mu in [1.5 * rm.mu, 1e3 * rm.mu] {
+            let ls = limit_at(alpha, mu);
+            assert_eq!(
+                ls.mode,
+                CollapseMode::PurelyRotational,
+                "alpha = {alpha}, mu = {mu}"
+            );
+            assert!(
+                (ls.eta - rm.eta).abs() <= 1e-12 * rm.eta,
+                "alpha = {alpha}: eta_s({mu}) = {} differs from eta_rm = {}",
+                ls.eta,
+                rm.eta
+            );
+        }
+        // The purely sliding branch is vertical at mu_ms (its mu_min equals its mu_max):
+        // just below mu_ms not even a thick arch stands; just above, η a little above η_ms
+        // stands and a little below does not.
+        let (below, above) = (ms.mu * (1.0 - 1e-6), ms.mu * (1.0 + 1e-6));
+        assert!(
+            !stands(alpha, 1.5, below),
+            "alpha = {alpha}: eta = 1.5 stands below mu_ms"
+        );
+        assert!(
+            stands(alpha, 1.5, above),
+            "alpha = {alpha}: eta = 1.5 falls above mu_ms"
+        );
+        assert!(
+            stands(alpha, ms.eta * (1.0 + 1e-3), above),
+            "alpha = {alpha}: 1.001 eta_ms falls just above mu_ms"
+        );
+        assert!(
+            !stands(alpha, ms.eta * (1.0 - 1e-3), above),
+            "alpha = {alpha}: 0.999 eta_ms stands just above mu_ms"
+        );
     }
 }
 
@@ -120,8 +174,22 @@ fn alpha_1_15_overturning_asymptote() {
     assert!(top.mu.is_infinite() && !top.kink);
     assert!(c.corners.iter().all(|k| k.mu.is_finite() && k.kink));
     assert_eq!(top.between[1], CollapseMode::Overturning);
-    assert!(c.branches[0].mu_max.is_infinite());
-    assert!((c.branches[0].eta_min - top.eta).abs() < 1e-15);
+    // The mixed branch reaches infinite friction (its mu_max is ∞) and approaches the
+    // overturning limit η(∞) from above: η_s(μ) − η(∞) is positive and falls at least ten
+    // times per decade of μ (it goes as 1/μ²: 8.3e-3, 8.3e-5, 8.3e-7), in the branch's
+    // mode (not the overturning one). Beyond μ = 10³ the gap nears the rounding of η.
+    let mut gap = f64::INFINITY;
+    for mu in [1e1, 1e2, 1e3] {
+        let ls = limit_at(1.15, mu);
+        let g = ls.eta - top.eta;
+        assert_eq!(ls.mode, c.branches[0].mode, "mu = {mu}");
+        assert!(
+            g > 0.0 && g < 0.1 * gap,
+            "mu = {mu}: eta_s - eta(inf) = {g:e} after {gap:e} at mu / 10"
+        );
+        gap = g;
+    }
+    assert!(gap < 1e-5 * top.eta, "eta_s(1e3) - eta(inf) = {gap:e}");
     let last = c.corners.last().unwrap();
     assert!(last.exact);
     assert_eq!(last.mode, CollapseMode::RotationalSlidingShoulders);

@@ -128,8 +128,107 @@ fn png_decodes_to_requested_size() {
     let pix = resvg::tiny_skia::Pixmap::decode_png(&png).unwrap();
     assert_eq!(pix.width(), 640);
     assert!(pix.height() > 100);
-    // the embedded font rendered text: not a blank image
-    assert!(pix.pixels().iter().any(|p| p.red() < 100));
+    // The embedded font rendered the text: against the same figure without its text
+    // elements, marks of glyph size appear, at least one for every two characters (the
+    // glyphs of a word may touch; 268 marks for 244 characters here).
+    let bare = svg_to_png(&without_text(&svg), 640).unwrap();
+    let bare = resvg::tiny_skia::Pixmap::decode_png(&bare).unwrap();
+    let chars = text_chars(&svg);
+    let marks = glyph_marks(&pix, &bare);
+    assert!(
+        chars > 100 && 2 * marks >= chars,
+        "{marks} glyph marks for {chars} characters"
+    );
+    // and the measure tells a missing font: rendered with no font, no mark
+    let tree = resvg::usvg::Tree::from_str(&svg, &resvg::usvg::Options::default()).unwrap();
+    let mut no_font = resvg::tiny_skia::Pixmap::new(pix.width(), pix.height()).unwrap();
+    no_font.fill(resvg::tiny_skia::Color::WHITE);
+    let scale = pix.width() as f32 / tree.size().width();
+    resvg::render(
+        &tree,
+        resvg::tiny_skia::Transform::from_scale(scale, scale),
+        &mut no_font.as_mut(),
+    );
+    assert_eq!(glyph_marks(&no_font, &bare), 0, "text drawn without a font");
+}
+
+/// `svg` without its text: every `<text …>…</text>` element removed.
+fn without_text(svg: &str) -> String {
+    let mut out = String::new();
+    let mut rest = svg;
+    while let Some(i) = rest.find("<text") {
+        out.push_str(&rest[..i]);
+        let end = rest[i..].find("</text>").expect("a closed text element") + "</text>".len();
+        rest = &rest[i + end..];
+    }
+    out.push_str(rest);
+    out
+}
+
+/// The characters (spaces excepted) of every text element of `svg`.
+fn text_chars(svg: &str) -> usize {
+    let doc = parse(svg);
+    doc.descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .map(|n| {
+            n.text()
+                .unwrap_or("")
+                .chars()
+                .filter(|c| !c.is_whitespace())
+                .count()
+        })
+        .sum()
+}
+
+/// The marks of glyph size drawn in `with` and not in `without` (the same picture without
+/// its text): connected pieces (8-neighbours) of pixels dark in `with` and light in
+/// `without`, of 2 to 400 pixels.
+fn glyph_marks(with: &resvg::tiny_skia::Pixmap, without: &resvg::tiny_skia::Pixmap) -> usize {
+    let (w, h) = (with.width() as usize, with.height() as usize);
+    let luma = |p: &resvg::tiny_skia::PremultipliedColorU8| {
+        (p.red() as u32 + p.green() as u32 + p.blue() as u32) / 3
+    };
+    let mut ink: Vec<bool> = with
+        .pixels()
+        .iter()
+        .zip(without.pixels())
+        .map(|(a, b)| luma(a) < 128 && luma(b) >= 128)
+        .collect();
+    let mut marks = 0;
+    for start in 0..w * h {
+        if !ink[start] {
+            continue;
+        }
+        ink[start] = false;
+        let (mut size, mut stack) = (0, vec![start]);
+        while let Some(i) = stack.pop() {
+            size += 1;
+            let (x, y) = ((i % w) as i64, (i / w) as i64);
+            for (dx, dy) in [
+                (-1, -1),
+                (0, -1),
+                (1, -1),
+                (-1, 0),
+                (1, 0),
+                (-1, 1),
+                (0, 1),
+                (1, 1),
+            ] {
+                let (nx, ny) = (x + dx, y + dy);
+                if nx >= 0 && ny >= 0 && (nx as usize) < w && (ny as usize) < h {
+                    let j = ny as usize * w + nx as usize;
+                    if ink[j] {
+                        ink[j] = false;
+                        stack.push(j);
+                    }
+                }
+            }
+        }
+        if (2..=400).contains(&size) {
+            marks += 1;
+        }
+    }
+    marks
 }
 
 #[test]

@@ -1,5 +1,5 @@
 //! Limit states of a discrete arch above η_s, found on the ridge over the friction polygon
-//! (issue 12; the theorem, its proof and the cases are in
+//! (the theorem, its proof and the cases are in
 //! `docs/design/limit-states-on-boundary.md`).
 //!
 //! For the centreline weight and finite μ, N_j and T_j are affine in (h, v) alone, so the

@@ -1,0 +1,95 @@
+//! The `assess --json` document (`null` stands for +∞ where noted).
+
+use super::{ArchJson, JSON_VERSION};
+use crate::arch::Arch;
+use crate::contact::Contact;
+use crate::limit::Outcome;
+use serde::Serialize;
+
+#[derive(Debug, Serialize)]
+struct SafestJson {
+    h: f64,
+    v: f64,
+    w: f64,
+    margin: f64,
+}
+
+/// The `assess --json` document (`null` stands for +∞ where noted).
+#[derive(Debug, Serialize)]
+pub struct AssessJson {
+    version: u32,
+    status: &'static str,
+    arch: ArchJson,
+    /// The thickness ratio assessed.
+    eta: f64,
+    /// η*(μ) (`null` when nothing stands at μ or η* is unresolved; 0 when every η stands).
+    eta_min: Option<f64>,
+    /// Whether the arch stands at (η, μ).
+    stands: bool,
+    /// η / η*(μ) (`null`: none, or infinite when every η stands).
+    geometric_factor: Option<f64>,
+    /// μ (`null` = ∞).
+    mu: Option<f64>,
+    /// μ_min(η), the least friction at which η stands (`null` when none does).
+    mu_min: Option<f64>,
+    /// Whether `mu_min` is exact (Newton on the active pattern, verified) or an LP bound.
+    mu_min_exact: Option<bool>,
+    /// The active pattern of the state at μ_min.
+    mu_min_pattern: Vec<Contact>,
+    /// μ / μ_min (`null` when μ_min does not exist or the factor is infinite).
+    friction_factor: Option<f64>,
+    /// The collapse mode of η*(μ).
+    mode: Option<&'static str>,
+    /// The admissible state of largest margin, when the arch stands.
+    safest_state: Option<SafestJson>,
+    /// Why η*(μ) is missing, when it is.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    message: Option<String>,
+}
+
+fn finite(v: f64) -> Option<f64> {
+    v.is_finite().then_some(v)
+}
+
+/// Builds the `assess --json` document.
+pub fn assess(arch: &Arch, a: &crate::assess::Assessment) -> AssessJson {
+    use crate::assess::LeastFriction;
+    let (mu_min, mu_min_exact, mu_min_pattern) = match &a.least_friction {
+        LeastFriction::Finite { mu, pattern, exact } => {
+            (finite(*mu), Some(*exact), pattern.clone())
+        }
+        LeastFriction::Never => (None, None, Vec::new()),
+    };
+    let (eta_min, message) = match &a.limit {
+        Outcome::Limit(ls) => (Some(ls.eta), None),
+        Outcome::NoCollapse { reason } => (Some(0.0), Some(reason.clone())),
+        Outcome::NoEquilibrium { reason, .. } | Outcome::Unresolved { reason, .. } => {
+            (None, Some(reason.clone()))
+        }
+    };
+    AssessJson {
+        version: JSON_VERSION,
+        status: match &a.limit {
+            Outcome::Unresolved { .. } => "unresolved",
+            _ => "ok",
+        },
+        arch: ArchJson::new(arch),
+        eta: a.eta,
+        eta_min,
+        stands: a.stands,
+        geometric_factor: a.geometric_factor.and_then(finite),
+        mu: finite(a.mu),
+        mu_min,
+        mu_min_exact,
+        mu_min_pattern,
+        friction_factor: a.friction_factor.and_then(finite),
+        mode: a.mode.map(|m| m.name()),
+        safest_state: a.safest.as_ref().map(|s| SafestJson {
+            h: s.x[0],
+            v: s.x[1],
+            w: s.x[2],
+            margin: s.margin,
+        }),
+        message,
+    }
+}

@@ -1,0 +1,67 @@
+//! The `curve --json` document.
+
+use super::{status, ArchJson, JSON_VERSION};
+use crate::arch::Arch;
+use crate::contact::Contact;
+use crate::limit::Outcome;
+use crate::limit_curve::CurvePoint;
+use serde::Serialize;
+
+#[derive(Debug, Serialize)]
+struct CurveRow {
+    mu: f64,
+    friction_angle_deg: f64,
+    status: &'static str,
+    eta: Option<f64>,
+    mode: Option<&'static str>,
+    pattern: Option<Vec<Contact>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    message: Option<String>,
+}
+
+/// The `curve --json` document.
+#[derive(Debug, Serialize)]
+pub struct CurveJson {
+    version: u32,
+    status: &'static str,
+    arch: ArchJson,
+    /// μ_ms, the least friction at which some thickness stands.
+    mu_ms: Option<f64>,
+    points: Vec<CurveRow>,
+}
+
+/// Builds the `curve --json` document. `mu_ms` is the least friction admitting
+/// equilibrium (`None` when no finite μ does).
+pub fn curve(arch: &Arch, mu_ms: Option<f64>, points: &[CurvePoint]) -> CurveJson {
+    CurveJson {
+        version: JSON_VERSION,
+        status: "ok",
+        arch: ArchJson::new(arch),
+        mu_ms,
+        points: points
+            .iter()
+            .map(|p| {
+                let (eta, mode, pattern, message) = match &p.outcome {
+                    Outcome::Limit(ls) => (
+                        Some(ls.eta),
+                        Some(ls.mode.name()),
+                        Some(ls.pattern.clone()),
+                        None,
+                    ),
+                    Outcome::NoEquilibrium { reason, .. }
+                    | Outcome::Unresolved { reason, .. }
+                    | Outcome::NoCollapse { reason } => (None, None, None, Some(reason.clone())),
+                };
+                CurveRow {
+                    mu: p.mu,
+                    friction_angle_deg: p.mu.atan().to_degrees(),
+                    status: status(&p.outcome),
+                    eta,
+                    mode,
+                    pattern,
+                    message,
+                }
+            })
+            .collect(),
+    }
+}

@@ -1,0 +1,204 @@
+//! The `load --json` document: the question, the admissible range of λ, every limit state
+//! with the side of the loaded section each contact is on.
+
+use super::{mechanism_json, reactions, ArchJson, MechanismJson, Reactions, JSON_VERSION};
+use crate::contact::Contact;
+use crate::load::LiveLoad;
+use crate::multiplier::{LoadLimitState, LoadOutcome};
+use crate::render::live_load::{at_joint, force_unit_kn, merged, LoadQuestion};
+use serde::Serialize;
+
+#[derive(Debug, Serialize)]
+pub(super) struct LoadJson {
+    kind: &'static str,
+    /// Angle of the loaded extrados point (radians); null for the horizontal load.
+    beta: Option<f64>,
+    /// Horizontal load: `right` (towards +x, the right springing) or `left`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    towards: Option<&'static str>,
+    /// Point load: whether it sits at a joint (both sides of its section are checked).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    at_joint: Option<bool>,
+}
+
+#[derive(Debug, Serialize)]
+pub(super) struct PatternContact {
+    #[serde(flatten)]
+    contact: Contact,
+    /// At the point load's joint: `before` or `after` the loaded section.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    side: Option<&'static str>,
+}
+
+#[derive(Debug, Serialize)]
+struct StateJson {
+    lambda: f64,
+    mode: &'static str,
+    pattern: Vec<PatternContact>,
+    reactions: Reactions,
+    mechanism: MechanismJson,
+    live_power: f64,
+    /// The largest λ of a continuum of limit states this one is the least of.
+    continuum_to: Option<f64>,
+}
+
+#[derive(Debug, Serialize)]
+struct UnitsJson {
+    /// γ t d r in kN (the unit of a point load, and of the horizontal force per unit λ).
+    force_unit_kn: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    lambda_kn: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    lambda_static_kn: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    acceleration_ms2: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    acceleration_static_ms2: Option<f64>,
+}
+
+/// The `load --json` document.
+#[derive(Debug, Serialize)]
+pub struct LoadDoc {
+    version: u32,
+    status: &'static str,
+    arch: ArchJson,
+    eta: f64,
+    mu: Option<f64>,
+    load: LoadJson,
+    lambda: Option<f64>,
+    lambda_static: Option<f64>,
+    lambda_min: Option<f64>,
+    unique: Option<bool>,
+    mechanism_at_static: Option<bool>,
+    reduction: Option<f64>,
+    limit_states: Vec<StateJson>,
+    search: Option<SearchJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    units: Option<UnitsJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    message: Option<String>,
+}
+
+#[derive(Debug, Serialize)]
+struct SearchJson {
+    method: &'static str,
+    events: usize,
+}
+
+pub(super) fn load_json(q: &LoadQuestion) -> LoadJson {
+    match q.load {
+        LiveLoad::Horizontal { towards_right } => LoadJson {
+            kind: "horizontal",
+            beta: None,
+            towards: Some(if towards_right { "right" } else { "left" }),
+            at_joint: None,
+        },
+        LiveLoad::Point { beta } => LoadJson {
+            kind: "point",
+            beta: Some(beta),
+            towards: None,
+            at_joint: Some(at_joint(q.arch, beta)),
+        },
+    }
+}
+
+/// The pattern of a limit state, each contact with the side of the loaded section it is on.
+pub(super) fn pattern_json(load: &LiveLoad, s: &LoadLimitState) -> Vec<PatternContact> {
+    merged(load, s.pattern.iter().zip(s.sides.iter().copied()))
+        .into_iter()
+        .map(|(contact, side)| PatternContact { contact, side })
+        .collect()
+}
+
+fn state_json(load: &LiveLoad, s: &LoadLimitState) -> StateJson {
+    StateJson {
+        lambda: s.lambda,
+        mode: s.mode.name(),
+        pattern: pattern_json(load, s),
+        reactions: reactions(&s.x),
+        mechanism: mechanism_json(&s.mechanism),
+        live_power: s.live_power,
+        continuum_to: s.continuum_to,
+    }
+}
+
+fn units(q: &LoadQuestion, lambda: Option<f64>, lambda_static: Option<f64>) -> Option<UnitsJson> {
+    let d = q.dims.as_ref()?;
+    let unit = force_unit_kn(q, d);
+    let point = matches!(q.load, LiveLoad::Point { .. });
+    Some(UnitsJson {
+        force_unit_kn: unit,
+        lambda_kn: lambda.filter(|_| point).map(|l| l * unit),
+        lambda_static_kn: lambda_static.filter(|_| point).map(|l| l * unit),
+        acceleration_ms2: lambda.filter(|_| !point).map(|l| l * d.g),
+        acceleration_static_ms2: lambda_static.filter(|_| !point).map(|l| l * d.g),
+    })
+}
+
+/// The `load --json` document; the `Err` of the outcome is the reason no decision was
+/// reached (status `unresolved`).
+pub fn load(q: &LoadQuestion, outcome: &Result<LoadOutcome, String>) -> LoadDoc {
+    let mut doc = LoadDoc {
+        version: JSON_VERSION,
+        status: "ok",
+        arch: ArchJson::new(q.arch),
+        eta: q.eta,
+        mu: q.mu.is_finite().then_some(q.mu),
+        load: load_json(q),
+        lambda: None,
+        lambda_static: None,
+        lambda_min: None,
+        unique: None,
+        mechanism_at_static: None,
+        reduction: None,
+        limit_states: Vec::new(),
+        search: None,
+        units: None,
+        message: None,
+    };
+    match outcome {
+        Err(reason) => {
+            doc.status = "unresolved";
+            doc.message = Some(reason.clone());
+        }
+        Ok(LoadOutcome::NoEquilibrium) => {
+            doc.status = "no_equilibrium";
+            doc.message = Some("no statically admissible state at any lambda >= 0".into());
+        }
+        Ok(LoadOutcome::NoCollapse { lambda_min, events }) => {
+            doc.status = "no_collapse";
+            doc.lambda_min = Some(lambda_min.0);
+            doc.search = Some(SearchJson {
+                method: "sweep",
+                events: *events,
+            });
+            doc.message = Some(format!(
+                "admissible states exist at every lambda >= {} and no limit state was found up to lambda = {:e}: the load does not break the arch",
+                lambda_min.0,
+                crate::multiplier::UNBOUNDED_SEARCH_TOP
+            ));
+        }
+        Ok(LoadOutcome::Limits(s)) => {
+            doc.lambda = s.lambda();
+            doc.lambda_static = s.lambda_static.map(|m| m.0);
+            doc.lambda_min = Some(s.lambda_min.0);
+            doc.unique = Some(s.unique());
+            doc.mechanism_at_static = Some(s.mechanism_at_static);
+            doc.reduction = s.reduction();
+            doc.limit_states = s
+                .limit_states
+                .iter()
+                .map(|l| state_json(&q.load, l))
+                .collect();
+            doc.search = Some(SearchJson {
+                method: s.method,
+                events: s.events,
+            });
+            doc.units = units(q, doc.lambda, doc.lambda_static);
+            if s.limit_states.is_empty() {
+                doc.message = Some("no limit state: the static maximum carries no mechanism with positive live power, and none lies below it".into());
+            }
+        }
+    }
+    doc
+}

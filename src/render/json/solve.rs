@@ -1,0 +1,246 @@
+//! The `solve --json` document.
+
+use super::{mechanism_json, reactions, status, ArchJson, MechanismJson, Reactions, JSON_VERSION};
+use crate::contact::Contact;
+use crate::limit::{Candidate, LimitState, Outcome};
+use crate::limit_states::{LimitStates, Survey};
+use serde::Serialize;
+
+#[derive(Debug, Serialize)]
+struct Checks {
+    eta_static: f64,
+    newton_residual: f64,
+    max_phi: f64,
+    eta_bracket: [f64; 2],
+}
+
+#[derive(Debug, Serialize)]
+struct CandidateJson {
+    pattern: Vec<Contact>,
+    tried: bool,
+    eta: Option<f64>,
+    verdict: String,
+}
+
+/// The `solve --json` document.
+#[derive(Debug, Serialize)]
+pub struct SolveJson {
+    version: u32,
+    status: &'static str,
+    arch: ArchJson,
+    mu: f64,
+    friction_angle_deg: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    eta: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    mode: Option<&'static str>,
+    /// false when the mode name is a descriptive one outside the contract's list
+    #[serde(skip_serializing_if = "Option::is_none")]
+    mode_standard: Option<bool>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pattern: Option<Vec<Contact>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    reactions: Option<Reactions>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    mechanism: Option<MechanismJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    checks: Option<Checks>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    mu_ms: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    eta_bracket: Option<[f64; 2]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    message: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    candidates: Option<Vec<CandidateJson>>,
+    /// Whether η_s is attained by a bounded state.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    attained: Option<bool>,
+    /// Whether the least admissible state carries a non-associative mechanism.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    mechanism_at_eta: Option<bool>,
+    /// Whether exactly one limit state has η in [η_s, 2) (`null`: search not completed).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    unique: Option<Option<bool>>,
+    /// Every limit state with η in [η_s, 2), ascending.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    limit_states: Option<Vec<LimitStateJson>>,
+    /// How the limit states were searched.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    search: Option<SearchJson>,
+}
+
+#[derive(Debug, Serialize)]
+struct LimitStateJson {
+    eta: f64,
+    mode: &'static str,
+    pattern: Vec<Contact>,
+    reactions: Reactions,
+    mechanism: MechanismJson,
+}
+
+#[derive(Debug, Serialize)]
+struct SearchJson {
+    complete: bool,
+    method: Option<String>,
+    events: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    reason: Option<String>,
+}
+
+fn limit_parts(ls: &LimitState) -> (Vec<Contact>, Reactions, MechanismJson, Checks) {
+    let m = &ls.mechanism;
+    (
+        ls.pattern.clone(),
+        reactions(&ls.x),
+        mechanism_json(m),
+        Checks {
+            eta_static: ls.eta_static,
+            newton_residual: ls.newton_residual,
+            max_phi: ls.max_phi,
+            eta_bracket: [ls.bracket.0, ls.bracket.1],
+        },
+    )
+}
+
+/// Builds the `solve --json` document from the solution and the search for every limit
+/// state; `explain` adds the enumeration log.
+pub fn solve(survey: &Survey, explain: bool) -> SolveJson {
+    let sol = &survey.solution;
+    let mut doc = SolveJson {
+        version: JSON_VERSION,
+        status: status(&sol.outcome),
+        arch: ArchJson::new(&sol.arch),
+        mu: sol.mu,
+        friction_angle_deg: sol.mu.atan().to_degrees(),
+        eta: None,
+        mode: None,
+        mode_standard: None,
+        pattern: None,
+        reactions: None,
+        mechanism: None,
+        checks: None,
+        mu_ms: None,
+        eta_bracket: None,
+        message: None,
+        candidates: explain.then(|| candidates(&sol.candidates)),
+        attained: None,
+        mechanism_at_eta: None,
+        unique: None,
+        limit_states: None,
+        search: None,
+    };
+    with_outcome(&mut doc, &sol.outcome);
+    match &survey.states {
+        Ok(s) => with_limit_states(&mut doc, survey, s),
+        Err(reason) => {
+            doc.search = Some(SearchJson {
+                complete: false,
+                method: None,
+                events: None,
+                reason: Some(reason.clone()),
+            });
+            if let Outcome::Limit(_) = &sol.outcome {
+                doc.unique = Some(None);
+            }
+        }
+    }
+    doc
+}
+
+/// What the solver found at η_s: the limit state, or the message and the numbers that say
+/// why there is none.
+fn with_outcome(doc: &mut SolveJson, outcome: &Outcome) {
+    match outcome {
+        Outcome::Limit(ls) => {
+            let (p, r, m, c) = limit_parts(ls);
+            doc.eta = Some(ls.eta);
+            doc.mode = Some(ls.mode.name());
+            doc.mode_standard = Some(ls.mode.is_standard());
+            doc.pattern = Some(p);
+            doc.reactions = Some(r);
+            doc.mechanism = Some(m);
+            doc.checks = Some(c);
+        }
+        Outcome::NoCollapse { reason } => {
+            doc.message = Some(reason.clone());
+        }
+        Outcome::NoEquilibrium { mu_ms, reason } => {
+            doc.mu_ms = *mu_ms;
+            doc.message = Some(reason.clone());
+        }
+        Outcome::Unresolved {
+            eta_lo,
+            eta_hi,
+            reason,
+            ..
+        } => {
+            doc.eta_bracket = Some([*eta_lo, *eta_hi]);
+            doc.message = Some(reason.clone());
+        }
+    }
+}
+
+/// Every limit state with η in [η_s, 2), found by a completed search: the decided answer.
+fn with_limit_states(doc: &mut SolveJson, survey: &Survey, s: &LimitStates) {
+    let sol = &survey.solution;
+    // η_s is known exactly and every limit state above it was searched: a decided
+    // answer even when the least state carries no mechanism. An arch that stands at
+    // every η > 0 keeps its status (there is no least thickness; η_s = 0 is an
+    // infimum) and its message, with the limit states above listed all the same.
+    if !matches!(sol.outcome, Outcome::NoCollapse { .. }) {
+        doc.status = "ok";
+        doc.message = None;
+    }
+    doc.eta_bracket = None;
+    doc.eta = Some(s.eta_s);
+    doc.attained = Some(s.attained);
+    doc.mechanism_at_eta = Some(s.mechanism_at_eta_s);
+    doc.unique = Some(survey.unique());
+    let mut all = Vec::new();
+    if let (true, Outcome::Limit(ls)) = (s.mechanism_at_eta_s, &sol.outcome) {
+        all.push(LimitStateJson {
+            eta: ls.eta,
+            mode: ls.mode.name(),
+            pattern: ls.pattern.clone(),
+            reactions: reactions(&ls.x),
+            mechanism: mechanism_json(&ls.mechanism),
+        });
+    }
+    all.extend(s.above.iter().map(|a| LimitStateJson {
+        eta: a.eta,
+        mode: a.mode.name(),
+        pattern: a.pattern.clone(),
+        reactions: reactions(&a.x),
+        mechanism: mechanism_json(&a.mechanism),
+    }));
+    // the top-level mode, pattern, reactions and mechanism are the least limit
+    // state's (none when there is none)
+    if !s.mechanism_at_eta_s {
+        let least = s.above.first();
+        doc.mode = least.map(|a| a.mode.name());
+        doc.mode_standard = least.map(|a| a.mode.is_standard());
+        doc.pattern = least.map(|a| a.pattern.clone());
+        doc.reactions = least.map(|a| reactions(&a.x));
+        doc.mechanism = least.map(|a| mechanism_json(&a.mechanism));
+        doc.checks = None;
+    }
+    doc.limit_states = Some(all);
+    doc.search = Some(SearchJson {
+        complete: true,
+        method: Some(s.method.clone()),
+        events: Some(s.events),
+        reason: None,
+    });
+}
+
+fn candidates(c: &[Candidate]) -> Vec<CandidateJson> {
+    c.iter()
+        .map(|c| CandidateJson {
+            pattern: c.contacts.clone(),
+            tried: c.tried,
+            eta: c.eta,
+            verdict: c.verdict.clone(),
+        })
+        .collect()
+}
