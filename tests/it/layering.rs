@@ -399,23 +399,35 @@ fn file_imports() -> BTreeMap<Vec<String>, BTreeSet<Vec<String>>> {
 
 /// Imports inside a folder that close a circle known before this check existed, each named
 /// by (folder, importing file, imported file): left out of the graph so that any new circle
-/// still fails. Each is a file importing its folder's `mod.rs`, which dispatches to it; the
-/// fix is to move what the file takes from `mod.rs` into a file below both.
+/// still fails. All but one are a file importing its folder's `mod.rs`, which dispatches to
+/// it (the fix: move what the file takes from `mod.rs` into a file below both); in
+/// `render/`, `live_load.rs` (shared by both forms of the load question) takes `Dimensions`
+/// from `table/`, whose load files import it.
 const KNOWN_CIRCLES: &[(&str, &str, &str)] = &[
-    ("cli", "assess.rs", "mod.rs"),         // TODO: circle to remove
-    ("cli", "certify.rs", "mod.rs"),        // TODO: circle to remove
-    ("cli", "curve.rs", "mod.rs"),          // TODO: circle to remove
-    ("cli", "load.rs", "mod.rs"),           // TODO: circle to remove
-    ("cli", "modes.rs", "mod.rs"),          // TODO: circle to remove
-    ("cli", "plot.rs", "mod.rs"),           // TODO: circle to remove
-    ("cli", "serve.rs", "mod.rs"),          // TODO: circle to remove
-    ("cli", "solve.rs", "mod.rs"),          // TODO: circle to remove
-    ("limit_curve", "tracer.rs", "mod.rs"), // TODO: circle to remove
-    ("limit_states", "ridge/", "mod.rs"),   // TODO: circle to remove
-    ("lp", "dense.rs", "mod.rs"),           // TODO: circle to remove
-    ("lp", "highs.rs", "mod.rs"),           // TODO: circle to remove
-    ("multiplier", "curve.rs", "mod.rs"),   // TODO: circle to remove
-    ("multiplier", "face.rs", "mod.rs"),    // TODO: circle to remove
+    ("cli", "assess.rs", "mod.rs"),             // TODO: circle to remove
+    ("cli", "certify.rs", "mod.rs"),            // TODO: circle to remove
+    ("cli", "curve.rs", "mod.rs"),              // TODO: circle to remove
+    ("cli", "load.rs", "mod.rs"),               // TODO: circle to remove
+    ("cli", "modes.rs", "mod.rs"),              // TODO: circle to remove
+    ("cli", "plot.rs", "mod.rs"),               // TODO: circle to remove
+    ("cli", "serve.rs", "mod.rs"),              // TODO: circle to remove
+    ("cli", "solve.rs", "mod.rs"),              // TODO: circle to remove
+    ("limit_curve", "tracer.rs", "mod.rs"),     // TODO: circle to remove
+    ("limit_states", "ridge/", "mod.rs"),       // TODO: circle to remove
+    ("lp", "dense.rs", "mod.rs"),               // TODO: circle to remove
+    ("lp", "highs.rs", "mod.rs"),               // TODO: circle to remove
+    ("multiplier", "curve.rs", "mod.rs"),       // TODO: circle to remove
+    ("multiplier", "face.rs", "mod.rs"),        // TODO: circle to remove
+    ("render", "live_load.rs", "table/"),       // TODO: circle to remove
+    ("render/json", "assess.rs", "mod.rs"),     // TODO: circle to remove
+    ("render/json", "curve.rs", "mod.rs"),      // TODO: circle to remove
+    ("render/json", "load.rs", "mod.rs"),       // TODO: circle to remove
+    ("render/json", "load_curve.rs", "mod.rs"), // TODO: circle to remove
+    ("render/json", "modes.rs", "mod.rs"),      // TODO: circle to remove
+    ("render/json", "solve.rs", "mod.rs"),      // TODO: circle to remove
+    ("render/plot_arch", "arch_panel.rs", "mod.rs"), // TODO: circle to remove
+    ("render/plot_arch", "caption.rs", "mod.rs"), // TODO: circle to remove
+    ("render/plot_arch", "mechanism_panel.rs", "mod.rs"), // TODO: circle to remove
 ];
 
 /// In every folder of `src/` below the root (the root's modules are checked above), the
