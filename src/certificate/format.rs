@@ -184,7 +184,7 @@ pub struct NoMechanism {
     pub farkas: Vec<KinematicFarkas>,
 }
 
-/// Evidence for the list of limit states with η in [η_s, 2) (issue 10).
+/// Evidence for the list of limit states with η in [η_s, 2).
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct SearchEvidence {
     /// `sweep`, `hinges_only` or `refined` (anything else is rejected when read).
@@ -412,7 +412,7 @@ pub struct LoadNoMechanism {
     pub farkas: Vec<KinematicFarkas>,
 }
 
-/// Evidence for the list of limit states under the load (issue 11).
+/// Evidence for the list of limit states under the load.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct LoadSearchEvidence {
     /// `sweep`, `associative` or `refined` (anything else is rejected when read).

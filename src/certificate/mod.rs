@@ -22,7 +22,7 @@
 //! | `gap`, `gap_relative` | η_hi − η_lo and (η_hi − η_lo)/η_hi |
 //! | `search` | optional (absent where the limit-state search was not completed): `{method, events, mechanism_at_eta, unique, least_state, limit_states_above, no_mechanism}`; `method` ∈ {`sweep`, `hinges_only`, `refined`}; `least_state` and each `no_mechanism` entry are `{eta, x, pattern, farkas: [{drop, y, z, u}]}` |
 //!
-//! **Load certificates** (issue 11; `claim` ∈ {`largest_multiplier`, `unbounded_multiplier`,
+//! **Load certificates** (`claim` ∈ {`largest_multiplier`, `unbounded_multiplier`,
 //! `no_equilibrium`} with a `load` section) carry none of `safe`, `collapse`, `limit_state`,
 //! `search`, and instead:
 //!

@@ -1,4 +1,4 @@
-//! Re-checking a load certificate (issue 11): the claims about the largest admissible
+//! Re-checking a load certificate: the claims about the largest admissible
 //! multiplier λ_static of a live load at fixed (η, μ), with the live actions of
 //! [`super::live`] (docs/loads.md, written out again) and the same interval arithmetic
 //! as the thickness certificates.

@@ -1,5 +1,5 @@
 //! Re-checking the evidence of the limit states under a live load (the `load_search`
-//! section of a load certificate, issue 11).
+//! section of a load certificate).
 //!
 //! * **No mechanism** at a listed state (the state at λ_static, or a point of the sweep):
 //!   *proved* in interval arithmetic by the Farkas alternative of the kinematic LP with the

@@ -1,5 +1,5 @@
 //! Re-checking the evidence of the limit-state search (the `search` section of a
-//! certificate, issue 10): which limit states exist with η in [η_s, 2).
+//! certificate): which limit states exist with η in [η_s, 2).
 //!
 //! * **No mechanism** at a listed state (the least admissible state, or a point of the
 //!   sweep): *proved* in interval arithmetic by the Farkas alternative of the kinematic LP
