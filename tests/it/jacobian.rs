@@ -1,4 +1,4 @@
-//! The Newton/KKT Jacobian of a pattern's system (`refine::residual_and_jacobian`)
+//! The Newton/KKT Jacobian of a pattern's system (`refine::residual_and_jacobian_in`)
 //! against central differences of its residual, on seeded random arches (both weight
 //! models, symmetric and not), patterns (hinges and sliding, springing and free interior
 //! joints) and points z, for every kind of unknowns: η (plain with 4–5 contacts,
@@ -11,9 +11,9 @@
 //! O(h²·|F'''|) ≈ 1e-9 and the rounding error O(ε |F| / h) ≈ 1e-10 here, so
 //! |J_fd − J| ≤ 1e-6 (1 + |J|) entry by entry; a wrong term is O(1) larger.
 
-use arch_enum::family::{self, Tagged};
+use arch_enum::family::{self, Family, Tagged};
 use arch_enum::load::{LiveLoad, Side};
-use arch_enum::refine::{residual_and_jacobian, residual_and_jacobian_in, Objective, Unknowns};
+use arch_enum::refine::{residual_and_jacobian_in, Objective, Unknowns};
 use arch_enum::{Arch, Contact, ContactKind, Location, WeightModel};
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
@@ -41,31 +41,36 @@ fn contact(arch: &Arch, k: usize, where_: usize, t: f64) -> Contact {
     }
 }
 
-fn check(
-    arch: &Arch,
-    contacts: &[Contact],
+/// The residual of `pattern` in `family` at (x, t, μ) (plus the free angles and, for a
+/// KKT-completed system, the multipliers `ys`) against central differences, entry by entry.
+#[allow(clippy::too_many_arguments)]
+fn check<F: Family>(
+    fam: &F,
+    pattern: &[Tagged<F::Tag>],
     unknowns: Unknowns,
+    objective: Objective,
     x: [f64; 3],
-    eta: f64,
+    t: f64,
     mu: f64,
     ys: &[f64],
 ) -> Result<(), TestCaseError> {
-    let n = contacts.len();
+    let n = pattern.len();
     let kkt = unknowns != Unknowns::TMu && n < if unknowns == Unknowns::Mu { 3 } else { 4 };
     let mut z = x.to_vec();
     match unknowns {
-        Unknowns::T => z.push(eta),
+        Unknowns::T => z.push(t),
         Unknowns::Mu => z.push(mu),
-        Unknowns::TMu => z.extend([eta, mu]),
+        Unknowns::TMu => z.extend([t, mu]),
     }
-    z.extend(contacts.iter().filter(|c| c.free).map(|c| c.beta));
+    z.extend(pattern.iter().filter(|c| c.0.free).map(|c| c.0.beta));
     if kkt {
         z.extend(&ys[..n]);
     }
-    let (f, jac) = residual_and_jacobian(arch, contacts, eta, mu, unknowns, &z)
-        .expect("z has the system's length");
-    prop_assert!(residual_and_jacobian(arch, contacts, eta, mu, unknowns, &z[1..]).is_none());
-    let expected_rows = n + contacts.iter().filter(|c| c.free).count() + if kkt { 4 } else { 0 };
+    let eval = |z: &[f64]| residual_and_jacobian_in(fam, pattern, (t, mu), unknowns, objective, z);
+    let (f, jac) = eval(&z).expect("z has the system's length");
+    prop_assert!(eval(&z[1..]).is_none());
+    let free = pattern.iter().filter(|c| c.0.free).count();
+    let expected_rows = n + free + if kkt { 4 } else { 0 };
     prop_assert_eq!(f.len(), expected_rows);
     prop_assert_eq!(jac.len(), expected_rows);
     for j in 0..z.len() {
@@ -73,19 +78,14 @@ fn check(
         let (mut zp, mut zm) = (z.clone(), z.clone());
         zp[j] += h;
         zm[j] -= h;
-        let fp = residual_and_jacobian(arch, contacts, eta, mu, unknowns, &zp)
-            .unwrap()
-            .0;
-        let fm = residual_and_jacobian(arch, contacts, eta, mu, unknowns, &zm)
-            .unwrap()
-            .0;
+        let (fp, fm) = (eval(&zp).unwrap().0, eval(&zm).unwrap().0);
         let step = zp[j] - zm[j];
         for r in 0..f.len() {
             let fd = (fp[r] - fm[r]) / step;
             let an = jac[r][j];
             prop_assert!(
                 (fd - an).abs() <= TOL * (1.0 + an.abs()),
-                "{unknowns:?} kkt {kkt}: d F[{r}] / d z[{j}] analytic {an:e}, central difference {fd:e}\ncontacts {contacts:?}\nz {z:?}"
+                "{unknowns:?} kkt {kkt}: d F[{r}] / d z[{j}] analytic {an:e}, central difference {fd:e}\npattern {pattern:?}\nz {z:?}"
             );
         }
     }
@@ -129,57 +129,10 @@ proptest! {
             .iter()
             .map(|&(k, w, t)| contact(&arch, k, w, t))
             .collect();
-        check(&arch, &contacts, unknowns, x, eta, mu, &ys)?;
+        let thickness = family::Thickness { arch: &arch };
+        let pattern: Vec<Tagged<()>> = contacts.iter().map(|&c| (c, ())).collect();
+        check(&thickness, &pattern, unknowns, Objective::Least, x, eta, mu, &ys)?;
     }
-}
-
-/// [`check`] for the load family: the residual of `pattern` at (x, λ, μ) against central
-/// differences.
-#[allow(clippy::too_many_arguments)]
-fn check_load(
-    fam: &family::Load,
-    pattern: &[Tagged<Side>],
-    unknowns: Unknowns,
-    x: [f64; 3],
-    lambda: f64,
-    mu: f64,
-    ys: &[f64],
-) -> Result<(), TestCaseError> {
-    let n = pattern.len();
-    let kkt = unknowns != Unknowns::TMu && n < if unknowns == Unknowns::Mu { 3 } else { 4 };
-    let mut z = x.to_vec();
-    match unknowns {
-        Unknowns::T => z.push(lambda),
-        Unknowns::Mu => z.push(mu),
-        Unknowns::TMu => z.extend([lambda, mu]),
-    }
-    z.extend(pattern.iter().filter(|c| c.0.free).map(|c| c.0.beta));
-    if kkt {
-        z.extend(&ys[..n]);
-    }
-    let eval = |z: &[f64]| {
-        residual_and_jacobian_in(fam, pattern, (lambda, mu), unknowns, Objective::Largest, z)
-    };
-    let (f, jac) = eval(&z).expect("z has the system's length");
-    let expected_rows = n + pattern.iter().filter(|c| c.0.free).count() + if kkt { 4 } else { 0 };
-    prop_assert_eq!(f.len(), expected_rows);
-    for j in 0..z.len() {
-        let h = 1e-5 * (1.0 + z[j].abs());
-        let (mut zp, mut zm) = (z.clone(), z.clone());
-        zp[j] += h;
-        zm[j] -= h;
-        let (fp, fm) = (eval(&zp).unwrap().0, eval(&zm).unwrap().0);
-        let step = zp[j] - zm[j];
-        for r in 0..f.len() {
-            let fd = (fp[r] - fm[r]) / step;
-            let an = jac[r][j];
-            prop_assert!(
-                (fd - an).abs() <= TOL * (1.0 + an.abs()),
-                "load {unknowns:?} kkt {kkt}: d F[{r}] / d z[{j}] analytic {an:e}, central difference {fd:e}\npattern {pattern:?}\nz {z:?}"
-            );
-        }
-    }
-    Ok(())
 }
 
 proptest! {
@@ -222,6 +175,6 @@ proptest! {
                 (contact(&arch, k, w, t), if after { Side::After } else { Side::Before })
             })
             .collect();
-        check_load(&fam, &pattern, unknowns, x, lambda, mu, &ys)?;
+        check(&fam, &pattern, unknowns, Objective::Largest, x, lambda, mu, &ys)?;
     }
 }
