@@ -23,6 +23,7 @@ use crate::search::{bracket_root, candidates_at, margin_at};
 use crate::settings::Settings;
 use crate::state::State;
 use crate::statics::Reactions;
+use crate::undecided::Undecided;
 use itertools::Itertools;
 
 /// The smallest friction at which the upward search for a standing state starts.
@@ -145,7 +146,7 @@ pub fn safest_state(arch: &Arch, eta: f64, mu: f64, settings: &Settings) -> Opti
 pub fn least_friction_for(arch: &Arch, eta: f64, settings: &Settings) -> LeastFriction {
     let kinds = &ContactKind::ALL;
     let mut ws = WorkingSet::initial(arch);
-    let mut f = |mu: f64| -> Result<(f64, Reactions), String> {
+    let mut f = |mu: f64| -> Result<(f64, Reactions), Undecided> {
         let m = margin_at(arch, eta, mu, kinds, &mut ws, settings)?;
         Ok((m.margin, m.x))
     };

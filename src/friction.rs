@@ -16,6 +16,7 @@ use crate::search::{bracket_root, candidates_at, margin_at};
 use crate::settings::Settings;
 use crate::state::State;
 use crate::statics::Reactions;
+use crate::undecided::Undecided;
 use itertools::Itertools;
 
 /// The friction-only search gives up above this μ (friction angle 90° − 1e-8 rad): an
@@ -40,9 +41,12 @@ pub struct FrictionLimit {
 }
 
 /// Solves the friction-only problem. `Ok(None)` when no finite μ suffices.
-pub fn friction_limit(arch: &Arch, settings: &Settings) -> Result<Option<FrictionLimit>, String> {
+pub fn friction_limit(
+    arch: &Arch,
+    settings: &Settings,
+) -> Result<Option<FrictionLimit>, Undecided> {
     let mut ws = WorkingSet::initial(arch);
-    let mut f = |mu: f64| -> Result<(f64, Reactions), String> {
+    let mut f = |mu: f64| -> Result<(f64, Reactions), Undecided> {
         let m = margin_at(arch, 1.0, mu, &SLIDES, &mut ws, settings)?;
         Ok((m.margin, m.x))
     };
@@ -116,6 +120,6 @@ pub fn friction_limit(arch: &Arch, settings: &Settings) -> Result<Option<Frictio
 }
 
 /// μ_ms alone (see [`friction_limit`]).
-pub fn least_friction(arch: &Arch, settings: &Settings) -> Result<Option<f64>, String> {
+pub fn least_friction(arch: &Arch, settings: &Settings) -> Result<Option<f64>, Undecided> {
     Ok(friction_limit(arch, settings)?.map(|f| f.mu))
 }

@@ -16,6 +16,7 @@ use crate::search::{bracket_near, bracket_root, candidates_at, margin_at, Bracke
 use crate::settings::Settings;
 use crate::state::State;
 use crate::statics::{actions, reaction_scale, Affine};
+use crate::undecided::Undecided;
 use std::ops::ControlFlow::{self, Break, Continue};
 
 /// Each narrowing of the bracket takes at most this many steps of regula falsi or
@@ -114,7 +115,7 @@ fn whole_range(
 
 /// An LP that fails (not infeasible: a numerical failure of the back end) leaves the
 /// question undecided; its text is kept only as the detail of that reason.
-fn lp_failed(at: &str, e: String) -> Outcome {
+fn lp_failed(at: &str, e: Undecided) -> Outcome {
     unresolved(
         0.0,
         2.0,
@@ -174,7 +175,7 @@ fn margin_or_far(
     modes: &[ContactKind],
     ws: &mut WorkingSet,
     settings: &Settings,
-) -> Result<(f64, Margin), String> {
+) -> Result<(f64, Margin), Undecided> {
     match margin_at(arch, eta, mu, modes, ws, settings) {
         Ok(m) => Ok((m.margin, m)),
         // near an infimum the best states are huge and the LP back end can fail
@@ -207,9 +208,9 @@ fn predicted(
     mu: f64,
     modes: &[ContactKind],
     (mut lo, mut hi): Bracket<Margin>,
-    eval: &mut impl FnMut(f64) -> Result<(f64, Margin), String>,
+    eval: &mut impl FnMut(f64) -> Result<(f64, Margin), Undecided>,
     settings: &Settings,
-) -> Result<Bracket<Margin>, String> {
+) -> Result<Bracket<Margin>, Undecided> {
     let top = State {
         arch,
         eta: hi.0,

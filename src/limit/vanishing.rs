@@ -8,6 +8,7 @@ use crate::lp::{self, LpOutcome};
 use crate::search::margin_at;
 use crate::settings::Settings;
 use crate::statics::{actions, reaction_scale, Affine, Reactions};
+use crate::undecided::Undecided;
 
 /// A continuous arch's state is checked for tension at this many equal steps of the arch
 /// (N ≥ 0 sampled: M ≡ 0 on an interval is impossible, so the samples never decide in
@@ -32,11 +33,11 @@ pub(crate) fn vanishing_thickness_state(
     arch: &Arch,
     mu: f64,
     settings: &Settings,
-) -> Result<Option<Reactions>, String> {
+) -> Result<Option<Reactions>, Undecided> {
     let modes = ContactKind::active_at(mu);
     let lp_err = |e: LpOutcome| match e {
-        LpOutcome::Infeasible => "margin LP infeasible".to_string(),
-        LpOutcome::Failed(m) => m,
+        LpOutcome::Infeasible => Undecided::Lp("margin LP infeasible".to_string()),
+        LpOutcome::Failed(m) => Undecided::Lp(m),
     };
     // distances to the planes (rows normalised to unit gradient), as the margin LP's own
     // decision at η = 0 (the hinge slabs |M| ≤ ηN/2 have no width there, so a relative

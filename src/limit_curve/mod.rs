@@ -24,6 +24,7 @@ use crate::limit::{solve, Outcome};
 use crate::limit_states::{search_after, LimitStates};
 use crate::settings::Settings;
 use crate::statics::{internal_forces, Reactions};
+use crate::undecided::Undecided;
 
 mod onset;
 mod sample;
@@ -511,7 +512,7 @@ pub struct LimitBranch {
 /// whose search could not be completed (μ and why: listed as unresolved).
 fn limit_branches<'a>(
     tr: &Tracer,
-    samples: impl Iterator<Item = (&'a Sample, Result<LimitStates, String>)>,
+    samples: impl Iterator<Item = (&'a Sample, Result<LimitStates, Undecided>)>,
 ) -> (Vec<LimitBranch>, Vec<(f64, String)>) {
     let mut open: Vec<(tracer::Signature, LimitBranch, bool)> = Vec::new();
     let mut done: Vec<LimitBranch> = Vec::new();

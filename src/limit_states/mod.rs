@@ -12,6 +12,7 @@
 //!   changes combinatorially, and the sweep visits every such event. A discrete arch that
 //!   stands at every η > 0 (`solve` says `NoCollapse`, η_s = 0) is swept from η = 0.
 
+pub(crate) mod discretised;
 pub mod poly;
 pub mod ridge;
 pub mod sweep;
@@ -26,6 +27,8 @@ use crate::search::margin_at;
 use crate::settings::{LimitStateSearch, Settings};
 use crate::state::State;
 use crate::statics::Reactions;
+use crate::undecided::Undecided;
+use discretised::{agreed, Carried, Compare};
 pub use sweep::{CheckedPoint, SweptState};
 
 /// Every limit state of a discrete arch at friction μ, above the least admissible state.
@@ -61,7 +64,7 @@ pub struct Survey {
     /// The solution of the thickness problem.
     pub solution: Solution,
     /// Every limit state above η_s, or why the search could not be completed.
-    pub states: Result<LimitStates, String>,
+    pub states: Result<LimitStates, Undecided>,
 }
 
 impl Survey {
@@ -87,17 +90,17 @@ pub fn search(
     arch: &Arch,
     mu: f64,
     settings: &Settings,
-) -> Result<Result<LimitStates, String>, InputError> {
+) -> Result<Result<LimitStates, Undecided>, InputError> {
     Ok(search_from(&solve(arch, mu, settings)?, settings))
 }
 
 /// [`search`] from a solution already computed (η_s and its least state): the inner
 /// `Err` says why the search could not be completed.
-pub fn search_after(sol: &Solution, settings: &Settings) -> Result<LimitStates, String> {
+pub fn search_after(sol: &Solution, settings: &Settings) -> Result<LimitStates, Undecided> {
     search_from(sol, settings)
 }
 
-fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, String> {
+fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Undecided> {
     let (arch, mu) = (&sol.arch, sol.mu);
     let (eta_s, x_s, mechanism_at_eta_s) = match &sol.outcome {
         Outcome::Limit(ls) => (ls.eta_static, ls.x_static, ls.eta == ls.eta_static),
@@ -108,17 +111,21 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Strin
         Outcome::NoCollapse { .. } if matches!(arch.layout(), JointLayout::Discrete(_)) => {
             return from_vanishing_thickness(arch, mu, settings);
         }
-        _ => return Err("no least admissible state to start from".into()),
+        _ => {
+            return Err(Undecided::Resolution(
+                "no least admissible state to start from".into(),
+            ))
+        }
     };
     // an infimum approached only with reactions growing without bound is not a state: no
     // limit state exists at η_s itself (its "mechanism" would balance no finite thrust;
     // the virtual-work identity fails there)
     let mechanism_at_eta_s = mechanism_at_eta_s && bounded(arch, &x_s, settings);
     if eta_s < settings.sweep_min_eta {
-        return Err(format!(
+        return Err(Undecided::Resolution(format!(
             "eta_s = {eta_s:e} is below {:e}, where the sweep's polynomial roots are not resolved",
             settings.sweep_min_eta
-        ));
+        )));
     }
     // P(η) with an interior point just above η_s: at μ = ∞ no limit state lies above
     // (`hinges_only`), at finite μ every one lies on the ridge over ∂Q (`ridge`)
@@ -164,7 +171,7 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Strin
     let sw = sweep::sweep(arch, mu, eta_s, x_s, settings);
     if let Some(f) = sw.failure {
         return Err(match walk_failure {
-            Some(w) => format!("{f}; {w}"),
+            Some(w) => f.map_text(|f| format!("{f}; {w}")),
             None => f,
         });
     }
@@ -193,9 +200,12 @@ fn from_vanishing_thickness(
     arch: &Arch,
     mu: f64,
     settings: &Settings,
-) -> Result<LimitStates, String> {
-    let x0 = crate::limit::vanishing_thickness_state(arch, mu, settings)?
-        .ok_or("no state without tension at vanishing thickness to start from")?;
+) -> Result<LimitStates, Undecided> {
+    let x0 = crate::limit::vanishing_thickness_state(arch, mu, settings)?.ok_or_else(|| {
+        Undecided::Resolution(
+            "no state without tension at vanishing thickness to start from".into(),
+        )
+    })?;
     let sw = sweep::sweep(arch, mu, 0.0, x0, settings);
     if let Some(f) = sw.failure {
         return Err(f);
@@ -273,14 +283,13 @@ fn continuous(
     mechanism_at_eta_s: bool,
     ridge: bool,
     settings: &Settings,
-) -> Result<LimitStates, String> {
-    let mut sets: Vec<(Vec<SweptState>, usize)> = Vec::new();
+) -> Result<LimitStates, Undecided> {
     let mut walked = 0;
-    for pieces in [settings.sweep_pieces, 2 * settings.sweep_pieces] {
+    let carry = |pieces: usize| -> Result<Carried<SweptState>, Undecided> {
         let discrete = arch
             .clone()
             .with_blocks(pieces)
-            .map_err(|e| e.to_string())?;
+            .map_err(|e| Undecided::Discretisation(e.to_string()))?;
         // the ridge of the discretisation, from η = 0: every point it gives is checked, and
         // the list is complete wherever P(η) of the continuum (hence of the discretisation,
         // which has fewer joints) has an interior point, i.e. above η_s(1 + root_slack)
@@ -292,65 +301,31 @@ fn continuous(
                 walked += 1;
                 (r.states, r.candidates)
             }
-            None => {
-                let start = match solve(&discrete, mu, settings)
-                    .map_err(|e| e.to_string())?
-                    .outcome
-                {
-                    Outcome::Limit(ls) => (ls.eta_static, ls.x_static),
-                    Outcome::Unresolved {
-                        least_static: Some(s),
-                        ..
-                    } => s,
-                    _ => {
-                        return Err(format!(
-                            "the {pieces}-piece discretisation has no least state"
-                        ))
-                    }
-                };
-                let sw = sweep::sweep(&discrete, mu, start.0, start.1, settings);
-                if let Some(f) = sw.failure {
-                    return Err(format!("{pieces} pieces: {f}"));
-                }
-                (sw.states, sw.events)
-            }
+            None => discrete_sweep(&discrete, mu, pieces, settings)?,
         };
         let h = arch.span() / pieces as f64;
-        let mut found: Vec<SweptState> = Vec::new();
-        for s in &states {
-            let Some(r) = refine(arch, mu, s.eta, s.x, &merge(&s.pattern, h), settings) else {
-                continue;
-            };
-            if r.eta > eta_s * (1.0 + settings.root_slack)
-                && !found.iter().any(|f| same_state(f, &r, settings))
-            {
-                found.push(r);
-            }
-        }
-        ridge::sort_states(&mut found, settings);
-        sets.push((found, events));
-    }
-    let (fine, events) = sets.pop().expect("two discretisations");
-    let (coarse, _) = sets.pop().expect("two discretisations");
-    let same = fine.len() == coarse.len()
-        && fine
+        let states = states
             .iter()
-            .all(|p| coarse.iter().any(|q| same_state(p, q, settings)));
-    if !same {
-        return Err(format!(
-            "the refined limit states of {} and {} pieces differ: {:?} vs {:?}",
-            settings.sweep_pieces,
-            2 * settings.sweep_pieces,
-            coarse.iter().map(|s| s.eta).collect::<Vec<_>>(),
-            fine.iter().map(|s| s.eta).collect::<Vec<_>>()
-        ));
-    }
+            .filter_map(|s| refine(arch, mu, s.eta, s.x, &merge(&s.pattern, h), settings))
+            .filter(|r| r.eta > eta_s * (1.0 + settings.root_slack))
+            .collect();
+        Ok(Carried {
+            states,
+            events: Some(events),
+        })
+    };
+    let cmp = Compare {
+        same: |p: &SweptState, q: &SweptState| same_state(p, q, settings),
+        sort: |l: &mut Vec<SweptState>| ridge::sort_states(l, settings),
+        t: |s: &SweptState| s.eta,
+    };
+    let (fine, events) = agreed(settings, carry, cmp)?;
     Ok(LimitStates {
         eta_s,
         attained,
         mechanism_at_eta_s,
         above: fine,
-        events,
+        events: events.unwrap_or(0),
         no_mechanism: Vec::new(),
         method: format!(
             "refined {}/{}{}",
@@ -365,16 +340,45 @@ fn continuous(
     })
 }
 
-/// Two refined limit states are the same: equal η (to `settings.same_state_eta`,
-/// relative) and the same contacts (kinds, and angles to `settings.same_state_angle`).
-/// Mirror images share η but not contacts.
+/// The sweep of a `pieces`-piece discretisation from its least admissible state: its
+/// limit states and events.
+fn discrete_sweep(
+    discrete: &Arch,
+    mu: f64,
+    pieces: usize,
+    settings: &Settings,
+) -> Result<(Vec<SweptState>, usize), Undecided> {
+    let start = match solve(discrete, mu, settings)
+        .map_err(|e| Undecided::Discretisation(e.to_string()))?
+        .outcome
+    {
+        Outcome::Limit(ls) => (ls.eta_static, ls.x_static),
+        Outcome::Unresolved {
+            least_static: Some(s),
+            ..
+        } => s,
+        _ => {
+            return Err(Undecided::Discretisation(format!(
+                "the {pieces}-piece discretisation has no least state"
+            )))
+        }
+    };
+    let sw = sweep::sweep(discrete, mu, start.0, start.1, settings);
+    match sw.failure {
+        Some(f) => Err(f.map_text(|f| format!("{pieces} pieces: {f}"))),
+        None => Ok((sw.states, sw.events)),
+    }
+}
+
+/// Two refined limit states are the same ([`discretised::same_state`], η to
+/// `settings.same_state_eta` relative).
 fn same_state(p: &SweptState, q: &SweptState, settings: &Settings) -> bool {
-    (p.eta - q.eta).abs() <= settings.same_state_eta * p.eta
-        && p.pattern.len() == q.pattern.len()
-        && p.pattern
-            .iter()
-            .zip(&q.pattern)
-            .all(|(a, b)| a.kind == b.kind && (a.beta - b.beta).abs() <= settings.same_state_angle)
+    discretised::same_state(
+        (p.eta, &p.pattern, &p.sides),
+        (q.eta, &q.pattern, &q.sides),
+        settings.same_state_eta * p.eta,
+        settings,
+    )
 }
 
 /// A discrete pattern carried over to the continuum ([`crate::family::merge_adjacent`]; a

@@ -16,13 +16,14 @@
 
 use crate::arch::{grid_angle, Arch, Radians};
 use crate::contact::{Contact, ContactKind, Location, Peak};
-use crate::family;
+use crate::family::{self, Tagged};
 use crate::load::{live_activation, LiveLoad, Side};
 use crate::lp::{self, LpOutcome};
 use crate::refine::{self, Objective, Refined, Start, Unknowns};
 use crate::scan::peaks_over;
 use crate::settings::Settings;
 use crate::statics::{actions, magnitude, Affine, Reactions};
+use crate::undecided::Undecided;
 use nalgebra::{DMatrix, DVector};
 use std::cell::{Cell, OnceCell};
 
@@ -42,16 +43,6 @@ const MAX_ROUNDS: usize = 200;
 /// The multiplier is capped here in the LP (a finite working set can leave it unbounded);
 /// an answer at the cap means unbounded.
 const LAMBDA_CAP: f64 = 1e9;
-
-/// A contact of the loaded continuum: an activation function at an angle, on a side of the
-/// loaded section.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LoadedContact {
-    /// The contact.
-    pub contact: Contact,
-    /// The side of the loaded section.
-    pub side: Side,
-}
 
 /// A smooth piece of the arch: its two ends (angle, location) and the side of the loaded
 /// section its sections are on.
@@ -272,9 +263,30 @@ impl<'a> Loaded<'a> {
     }
 }
 
+/// A multiplier λ, an admissible state there and its active contacts.
+pub type Extreme = (f64, Reactions, Vec<Tagged<Side>>);
+
+/// Why [`extreme`] has no multiplier to return.
+#[derive(Debug, Clone, PartialEq)]
+pub enum NoExtreme {
+    /// No state is admissible at any λ ≥ 0.
+    NoState,
+    /// No decision: an LP failed, the exchange did not converge, or Newton found no
+    /// admissible root.
+    Undecided(Undecided),
+}
+
+impl From<LpOutcome> for NoExtreme {
+    fn from(e: LpOutcome) -> NoExtreme {
+        match e {
+            LpOutcome::Infeasible => NoExtreme::NoState,
+            LpOutcome::Failed(t) => NoExtreme::Undecided(Undecided::Lp(t)),
+        }
+    }
+}
+
 /// The least (`maximise` false) or largest admissible λ ≥ 0 of a continuous arch, with the
-/// state there and its active pattern. `Ok(None)`: unbounded; `Err(Infeasible)`: no state
-/// at any λ ≥ 0; `Err(Failed)`: no decision (the text says why).
+/// state there and its active pattern. `Ok(None)`: unbounded.
 pub fn extreme(
     arch: &Arch,
     eta: f64,
@@ -282,7 +294,7 @@ pub fn extreme(
     load: &LiveLoad,
     maximise: bool,
     settings: &Settings,
-) -> Result<Option<(f64, Reactions, Vec<LoadedContact>)>, LpOutcome> {
+) -> Result<Option<Extreme>, NoExtreme> {
     let p = Loaded::new(arch, eta, mu, load);
     let (a, b) = (arch.beta_right(), arch.beta_left());
     let modes = ContactKind::active_at(mu);
@@ -361,20 +373,16 @@ pub fn extreme(
             return refine(&p, x, lambda, &peaks, maximise, settings).map(Some);
         }
     }
-    Err(LpOutcome::Failed(format!(
+    Err(NoExtreme::Undecided(Undecided::Budget(format!(
         "the exchange did not converge in {MAX_ROUNDS} rounds"
-    )))
+    ))))
 }
 
 /// An admissible state at λ = 0, if the most interior state of the working set `work`
 /// (the static margin LP at λ = 0, [`lp::max_margin`]) is admissible over the whole arch
 /// ([`verify`]): the state and its active contacts. `None` says nothing (the arch may
 /// still stand unloaded; the exchange decides).
-fn stands_unloaded(
-    p: &Loaded,
-    work: &[(Radians, Side)],
-    settings: &Settings,
-) -> Option<(f64, Reactions, Vec<LoadedContact>)> {
+fn stands_unloaded(p: &Loaded, work: &[(Radians, Side)], settings: &Settings) -> Option<Extreme> {
     let modes = ContactKind::active_at(p.mu);
     let rows: Vec<Affine> = work
         .iter()
@@ -400,7 +408,7 @@ fn refine(
     peaks: &[(Peak, Side)],
     maximise: bool,
     settings: &Settings,
-) -> Result<(f64, Reactions, Vec<LoadedContact>), LpOutcome> {
+) -> Result<Extreme, NoExtreme> {
     if !maximise && lambda == 0.0 {
         return Ok((
             0.0,
@@ -420,7 +428,7 @@ fn refine(
         },
         settings,
     )
-    .map_err(LpOutcome::Failed)
+    .map_err(NoExtreme::Undecided)
 }
 
 /// [`newton`] on `pattern`, verified over the arch; where the pattern has one equation too
@@ -432,22 +440,22 @@ fn newton_verified(
     p: &Loaded,
     x: Reactions,
     lambda: f64,
-    pattern: &[LoadedContact],
+    pattern: &[Tagged<Side>],
     goal: Goal,
     settings: &Settings,
-) -> Result<(f64, Reactions, Vec<LoadedContact>), String> {
+) -> Result<Extreme, Undecided> {
     let verified = |(l, x): (f64, Reactions)| verify(p, &x, l, settings).map(|a| (l, x, a));
     let first = match newton(p, x, lambda, pattern, goal, settings) {
         Ok(r) => match verified(r) {
             Ok(found) => return Ok(found),
-            Err(_) => {
-                "the root of the pattern's system is not admissible over the arch".to_string()
-            }
+            Err(_) => Undecided::Newton(
+                "the root of the pattern's system is not admissible over the arch".to_string(),
+            ),
         },
         Err(e) => e,
     };
     for drop in 0..pattern.len() {
-        let rest: Vec<LoadedContact> = (0..pattern.len())
+        let rest: Vec<Tagged<Side>> = (0..pattern.len())
             .filter(|&i| i != drop)
             .map(|i| pattern[i])
             .collect();
@@ -466,14 +474,11 @@ fn active(
     peaks: &[(Peak, Side)],
     slack: f64,
     settings: &Settings,
-) -> Vec<LoadedContact> {
+) -> Vec<Tagged<Side>> {
     peaks
         .iter()
         .filter(|(pk, _)| pk.value >= -slack * p.magnitude(pk.contact.kind, x, lambda, settings))
-        .map(|(pk, side)| LoadedContact {
-            contact: pk.contact,
-            side: *side,
-        })
+        .map(|(pk, side)| (pk.contact, *side))
         .collect()
 }
 
@@ -484,24 +489,23 @@ fn verify(
     x: &Reactions,
     lambda: f64,
     settings: &Settings,
-) -> Result<Vec<LoadedContact>, String> {
+) -> Result<Vec<Tagged<Side>>, Undecided> {
     let peaks = p.peaks(x, lambda, settings);
     let worst = peaks
         .iter()
         .map(|(pk, _)| pk.value / p.magnitude(pk.contact.kind, x, lambda, settings))
         .fold(f64::NEG_INFINITY, f64::max);
     if worst > settings.adm_tol {
-        return Err(format!(
+        return Err(Undecided::Newton(format!(
             "the refined state is not admissible over the arch (worst relative violation {worst:e})"
-        ));
+        )));
     }
     let mut pattern = active(p, x, lambda, &peaks, 10.0 * settings.adm_tol, settings);
     pattern.sort_by(|a, b| {
-        a.contact
-            .beta
-            .total_cmp(&b.contact.beta)
-            .then((a.side == Side::After).cmp(&(b.side == Side::After)))
-            .then(a.contact.kind.cmp(&b.contact.kind))
+        a.0.beta
+            .total_cmp(&b.0.beta)
+            .then((a.1 == Side::After).cmp(&(b.1 == Side::After)))
+            .then(a.0.kind.cmp(&b.0.kind))
     });
     Ok(pattern)
 }
@@ -530,26 +534,26 @@ fn newton(
     p: &Loaded,
     x: Reactions,
     lambda: f64,
-    pattern: &[LoadedContact],
+    pattern: &[Tagged<Side>],
     goal: Goal,
     settings: &Settings,
-) -> Result<(f64, Reactions), String> {
+) -> Result<(f64, Reactions), Undecided> {
     let pattern = distinct_rows(p, pattern);
     let n = pattern.len();
-    let k = pattern.iter().filter(|c| c.contact.free).count();
+    let k = pattern.iter().filter(|c| c.0.free).count();
     if n > 4 {
-        return Err(format!(
+        return Err(Undecided::Newton(format!(
             "the pattern has {n} contacts ({k} tangencies): not a vertex, no square system to refine"
-        ));
+        )));
     }
     let objective = match goal.maximise {
         Some(true) => Objective::Largest,
         Some(false) => Objective::Least,
         None if n == 4 => Objective::Least,
         None => {
-            return Err(format!(
+            return Err(Undecided::Newton(format!(
                 "the pattern has {n} contacts ({k} tangencies): too few for a vertex"
-            ))
+            )))
         }
     };
     let family = family::Load {
@@ -557,7 +561,6 @@ fn newton(
         eta: p.eta,
         load: p.load,
     };
-    let tagged: Vec<(Contact, Side)> = pattern.iter().map(|c| (c.contact, c.side)).collect();
     let start = Start {
         x,
         t: lambda,
@@ -567,34 +570,36 @@ fn newton(
         newton_tol: LOAD_NEWTON_TOL,
         ..settings.clone()
     };
-    let r = refine::solve(&family, &tagged, start, Unknowns::T, objective, &tight)
-        .map_err(|e| format!("Newton on the active pattern failed: {e:?}"))?;
+    let r = refine::solve(&family, &pattern, start, Unknowns::T, objective, &tight)
+        .map_err(|e| Undecided::Newton(format!("Newton on the active pattern failed: {e:?}")))?;
     let scale0 = 1.0 + x.iter().map(|v| v.abs()).sum::<f64>() + lambda.abs();
     let moved = (0..3).fold((r.t - lambda).abs(), |m, q| m.max((r.x[q] - x[q]).abs()));
     if moved > goal.reach * scale0 || r.t < 0.0 {
-        return Err(format!(
+        return Err(Undecided::Newton(format!(
             "Newton left the start's neighbourhood (moved {moved:e}, lambda {})",
             r.t
-        ));
+        )));
     }
     if n == 4 && goal.maximise.is_some() && !vertex_is_optimal(p, &r, objective) {
-        return Err("a multiplier of the vertex is negative: not the optimum".into());
+        return Err(Undecided::Newton(
+            "a multiplier of the vertex is negative: not the optimum".into(),
+        ));
     }
     Ok((r.t, r.x))
 }
 
 /// The pattern with twins merged: one contact for one function (the extrados hinge rows of
 /// both sides of the point load's section are one, to rounding).
-fn distinct_rows(p: &Loaded, pattern: &[LoadedContact]) -> Vec<LoadedContact> {
-    let twin = |p1: &LoadedContact, p2: &LoadedContact| {
-        let (a1, c1) = p.row(p1.contact.kind, p1.contact.beta, p1.side, 0);
-        let (a2, c2) = p.row(p2.contact.kind, p2.contact.beta, p2.side, 0);
-        p1.contact.kind == p2.contact.kind
-            && p1.contact.beta == p2.contact.beta
+fn distinct_rows(p: &Loaded, pattern: &[Tagged<Side>]) -> Vec<Tagged<Side>> {
+    let twin = |p1: &Tagged<Side>, p2: &Tagged<Side>| {
+        let (a1, c1) = p.row(p1.0.kind, p1.0.beta, p1.1, 0);
+        let (a2, c2) = p.row(p2.0.kind, p2.0.beta, p2.1, 0);
+        p1.0.kind == p2.0.kind
+            && p1.0.beta == p2.0.beta
             && (c1 - c2).abs() <= TWIN_REL * (1.0 + c1.abs())
             && (0..4).all(|k| (a1[k] - a2[k]).abs() <= TWIN_REL * (1.0 + a1[k].abs()))
     };
-    let mut unique: Vec<LoadedContact> = Vec::new();
+    let mut unique: Vec<Tagged<Side>> = Vec::new();
     for c in pattern {
         if !unique.iter().any(|u| twin(u, c)) {
             unique.push(*c);
@@ -633,19 +638,17 @@ pub fn carry_over(
     mu: f64,
     load: &LiveLoad,
     (lambda, x): (f64, Reactions),
-    pattern: &[LoadedContact],
+    pattern: &[Tagged<Side>],
     h: f64,
     settings: &Settings,
-) -> Option<(f64, Reactions, Vec<LoadedContact>)> {
+) -> Option<Extreme> {
     let p = Loaded::new(arch, eta, mu, load);
     let fixed = |c: &(Contact, Side)| {
         c.0.at == Location::Springing
             || matches!(*load, LiveLoad::Point { beta } if beta == c.0.beta)
     };
-    let tagged: Vec<(Contact, Side)> = pattern.iter().map(|c| (c.contact, c.side)).collect();
-    let merged: Vec<LoadedContact> = family::merge_adjacent(&tagged, h, fixed)
+    let merged: Vec<Tagged<Side>> = family::merge_adjacent(pattern, h, fixed)
         .into_iter()
-        .map(|(contact, side)| LoadedContact { contact, side })
         .collect();
     let goal = Goal {
         maximise: None,

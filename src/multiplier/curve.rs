@@ -22,9 +22,10 @@ use crate::load::{rows, LiveLoad, LoadRow, Side};
 use crate::refine::{self, Objective, Start, Unknowns};
 use crate::settings::Settings;
 use crate::statics::{magnitude, Reactions};
+use crate::undecided::Undecided;
 
 /// One sample of the λ–μ curve: μ and the answer there (`Err`: no decision, why).
-pub type CurveSample = (f64, Result<LoadOutcome, String>);
+pub type CurveSample = (f64, Result<LoadOutcome, Undecided>);
 
 /// The answer at each friction coefficient of `mus` (any order; μ = ∞ allowed): the λ–μ
 /// curve at fixed η, sampled. `progress(done, total)` is called after each sample.
@@ -74,7 +75,7 @@ pub enum BranchKey {
 pub fn branch_key(
     arch: &Arch,
     load: &LiveLoad,
-    answer: &Result<LoadOutcome, String>,
+    answer: &Result<LoadOutcome, Undecided>,
     settings: &Settings,
 ) -> BranchKey {
     let sv = match answer {
@@ -156,7 +157,7 @@ pub struct ExactCorner {
 impl Corner {
     /// The collapse multipliers on both sides, when both exist.
     pub fn lambdas(&self) -> (Option<f64>, Option<f64>) {
-        let l = |a: &Result<LoadOutcome, String>| match a {
+        let l = |a: &Result<LoadOutcome, Undecided>| match a {
             Ok(LoadOutcome::Limits(sv)) => sv.lambda(),
             _ => None,
         };
@@ -352,7 +353,7 @@ type Pattern = Vec<(Contact, Side)>;
 /// A least limit state: (λ, x, pattern).
 type LeastState = (f64, Reactions, Vec<(Contact, Side)>);
 
-fn least(answer: &Result<LoadOutcome, String>) -> Option<LeastState> {
+fn least(answer: &Result<LoadOutcome, Undecided>) -> Option<LeastState> {
     let Ok(LoadOutcome::Limits(sv)) = answer else {
         return None;
     };

@@ -24,13 +24,15 @@
 //!   order of [`crate::load::rows`] (joint by joint from the right springing). The first
 //!   is the state reported with λ_static.
 
-use super::{continuum::LoadedContact, limit_state_on, LoadLimitState};
+use super::{limit_state_on, LoadLimitState};
 use crate::arch::Arch;
 use crate::contact::Contact;
+use crate::family::Tagged;
 use crate::limit_states::sweep::{CheckedPoint, BOX};
 use crate::load::{LiveLoad, LoadRow, Side};
 use crate::settings::Settings;
 use crate::statics::{magnitude, Reactions};
+use crate::undecided::Undecided;
 use nalgebra::{DMatrix, DVector};
 
 /// The optimal face at λ_static: λ_static and the distinct vertices of F in the canonical
@@ -244,11 +246,13 @@ pub(super) fn decide(
     rows: &[LoadRow],
     face: &Face,
     settings: &Settings,
-) -> Result<AtStatic, String> {
+) -> Result<AtStatic, Undecided> {
     let lambda = face.lambda;
     let verts = &face.vertices;
     let Some(first) = verts.first() else {
-        return Err("no vertex of the admissible states at lambda_static".into());
+        return Err(Undecided::Resolution(
+            "no vertex of the admissible states at lambda_static".into(),
+        ));
     };
     // the faces spanned by the vertices: their active sets, closed under intersection
     let mut faces: Vec<Vec<usize>> = verts.iter().map(|v| v.1.clone()).collect();
@@ -266,12 +270,9 @@ pub(super) fn decide(
         }
         i += 1;
     }
-    let pattern_of = |act: &[usize]| -> Vec<LoadedContact> {
+    let pattern_of = |act: &[usize]| -> Vec<Tagged<Side>> {
         act.iter()
-            .map(|&r| LoadedContact {
-                contact: rows[r].contact,
-                side: rows[r].side,
-            })
+            .map(|&r| (rows[r].contact, rows[r].side))
             .collect()
     };
     let vertices_of = |act: &[usize]| -> Vec<usize> {

@@ -18,7 +18,9 @@ pub use curve::{sample, trace, CurveSample, LoadCurve};
 use crate::arch::{check_eta, Arch, InputError, JointLayout};
 use crate::collapse_mode::{classify, CollapseMode};
 use crate::contact::Contact;
+use crate::family::Tagged;
 use crate::kinematics::{column, power};
+use crate::limit_states::discretised::{self, agreed, Carried, Compare};
 use crate::limit_states::sweep::{sweep_load_with_top, CheckedPoint};
 use crate::load::{rows, LiveLoad, LoadRow, Side};
 use crate::lp::{self, LpOutcome};
@@ -26,6 +28,17 @@ use crate::mechanism::{self, Mechanism};
 use crate::settings::Settings;
 use crate::state::State;
 use crate::statics::Reactions;
+use crate::undecided::Undecided;
+use continuum::NoExtreme;
+
+/// The least multiplier of a continuous arch came out unbounded (the LP's cap on λ is only
+/// above).
+const UNBOUNDED_BELOW: &str = "the least multiplier came out unbounded";
+
+/// An LP the back end failed on: no decision.
+fn lp_failed(e: String) -> Undecided {
+    Undecided::Lp(format!("LP back end: {e}"))
+}
 
 /// The admissible multipliers λ ≥ 0 at (η, μ).
 #[derive(Debug, Clone, PartialEq)]
@@ -66,7 +79,7 @@ pub fn static_range(
     mu: f64,
     load: &LiveLoad,
     settings: &Settings,
-) -> Result<Result<StaticRange, String>, InputError> {
+) -> Result<Result<StaticRange, Undecided>, InputError> {
     check_eta(eta)?;
     crate::arch::check_mu(mu)?;
     check_load(arch, load)?;
@@ -74,14 +87,14 @@ pub fn static_range(
         let ext = |maximise| continuum::extreme(arch, eta, mu, load, maximise, settings);
         let min = match ext(false) {
             Ok(Some((l, x, _))) => (l, x),
-            Ok(None) => return Ok(Err("the least multiplier came out unbounded".into())),
-            Err(LpOutcome::Infeasible) => return Ok(Ok(StaticRange::NoEquilibrium)),
-            Err(LpOutcome::Failed(e)) => return Ok(Err(e)),
+            Ok(None) => return Ok(Err(Undecided::Lp(UNBOUNDED_BELOW.into()))),
+            Err(NoExtreme::NoState) => return Ok(Ok(StaticRange::NoEquilibrium)),
+            Err(NoExtreme::Undecided(e)) => return Ok(Err(e)),
         };
         let max = match ext(true) {
             Ok(m) => m.map(|(l, x, _)| (l, x)),
-            Err(LpOutcome::Infeasible) => return Ok(Ok(StaticRange::NoEquilibrium)),
-            Err(LpOutcome::Failed(e)) => return Ok(Err(e)),
+            Err(NoExtreme::NoState) => return Ok(Ok(StaticRange::NoEquilibrium)),
+            Err(NoExtreme::Undecided(e)) => return Ok(Err(e)),
         };
         return Ok(Ok(StaticRange::Interval { min, max }));
     };
@@ -92,14 +105,18 @@ pub fn static_range(
     let split = |z: [f64; 4]| (z[3], [z[0], z[1], z[2]]);
     let min = match lp::multiplier_extreme(&rows, &[], false, settings) {
         Ok(Some(z)) => split(z),
-        Ok(None) => return Ok(Err("the least multiplier came out unbounded below 0".into())),
+        Ok(None) => {
+            return Ok(Err(Undecided::Lp(
+                "the least multiplier came out unbounded below 0".into(),
+            )))
+        }
         Err(LpOutcome::Infeasible) => return Ok(Ok(StaticRange::NoEquilibrium)),
-        Err(LpOutcome::Failed(e)) => return Ok(Err(format!("LP back end: {e}"))),
+        Err(LpOutcome::Failed(e)) => return Ok(Err(lp_failed(e))),
     };
     let max = match lp::multiplier_extreme(&rows, &[], true, settings) {
         Ok(z) => z.filter(|z| !lp::on_box(z)).map(split),
         Err(LpOutcome::Infeasible) => return Ok(Ok(StaticRange::NoEquilibrium)),
-        Err(LpOutcome::Failed(e)) => return Ok(Err(format!("LP back end: {e}"))),
+        Err(LpOutcome::Failed(e)) => return Ok(Err(lp_failed(e))),
     };
     Ok(Ok(StaticRange::Interval { min, max }))
 }
@@ -208,7 +225,7 @@ pub fn survey(
     mu: f64,
     load: &LiveLoad,
     settings: &Settings,
-) -> Result<Result<LoadOutcome, String>, InputError> {
+) -> Result<Result<LoadOutcome, Undecided>, InputError> {
     if !matches!(arch.layout(), JointLayout::Discrete(_)) {
         // the exchange for each end once (static_range would run the largest twice)
         check_eta(eta)?;
@@ -267,7 +284,7 @@ pub fn survey(
     let (sw, _) = swept.expect("swept at finite mu");
     if let Some(f) = sw.failure {
         return Ok(Err(match max {
-            Some(m) => format!("{f} (lambda_static = {}, exact)", m.0),
+            Some(m) => f.map_text(|f| format!("{f} (lambda_static = {}, exact)", m.0)),
             None => f,
         }));
     }
@@ -331,7 +348,7 @@ fn states_at_static(
     (lambda_lp, x_lp): (f64, Reactions),
     at_top: &[Reactions],
     settings: &Settings,
-) -> Result<face::AtStatic, String> {
+) -> Result<face::AtStatic, Undecided> {
     let mut points = face::walk(all_rows, eta, mu, lambda_lp, x_lp, settings);
     points.extend(at_top.iter().copied());
     let mut f = face::face(all_rows, eta, mu, lambda_lp, &points, settings);
@@ -380,7 +397,7 @@ pub fn continua(
     load: &LiveLoad,
     rows: &[LoadRow],
     settings: &Settings,
-) -> Result<Vec<LoadLimitState>, String> {
+) -> Result<Vec<LoadLimitState>, Undecided> {
     let mut out = Vec::new();
     if !mu.is_finite() {
         return Ok(out); // hinge columns cancel only at η = 0
@@ -418,13 +435,13 @@ pub fn continua(
                 Ok(Some(z)) => z,
                 Ok(None) => continue,
                 Err(LpOutcome::Infeasible) => continue,
-                Err(LpOutcome::Failed(e)) => return Err(format!("LP back end: {e}")),
+                Err(LpOutcome::Failed(e)) => return Err(lp_failed(e)),
             };
             let to = match lp::multiplier_extreme(&with_power, &equal, true, settings) {
                 Ok(Some(z)) => z[3],
                 Ok(None) => f64::INFINITY,
                 Err(LpOutcome::Infeasible) => from[3],
-                Err(LpOutcome::Failed(e)) => return Err(format!("LP back end: {e}")),
+                Err(LpOutcome::Failed(e)) => return Err(lp_failed(e)),
             };
             let x = [from[0], from[1], from[2]];
             let st = State { arch, eta, mu, x };
@@ -465,17 +482,17 @@ fn continuous_survey(
     mu: f64,
     load: &LiveLoad,
     settings: &Settings,
-) -> Result<LoadOutcome, String> {
+) -> Result<LoadOutcome, Undecided> {
     let min = match continuum::extreme(arch, eta, mu, load, false, settings) {
         Ok(Some((l, x, _))) => (l, x),
-        Ok(None) => return Err("the least multiplier came out unbounded".into()),
-        Err(LpOutcome::Infeasible) => return Ok(LoadOutcome::NoEquilibrium),
-        Err(LpOutcome::Failed(e)) => return Err(e),
+        Ok(None) => return Err(Undecided::Lp(UNBOUNDED_BELOW.into())),
+        Err(NoExtreme::NoState) => return Ok(LoadOutcome::NoEquilibrium),
+        Err(NoExtreme::Undecided(e)) => return Err(e),
     };
     let max = match continuum::extreme(arch, eta, mu, load, true, settings) {
         Ok(m) => m,
-        Err(LpOutcome::Infeasible) => return Ok(LoadOutcome::NoEquilibrium),
-        Err(LpOutcome::Failed(e)) => return Err(e),
+        Err(NoExtreme::NoState) => return Ok(LoadOutcome::NoEquilibrium),
+        Err(NoExtreme::Undecided(e)) => return Err(e),
     };
     if mu.is_finite() {
         return continuous_finite_friction(arch, eta, mu, load, min, max, settings);
@@ -509,14 +526,13 @@ fn limit_state_on(
     mu: f64,
     load: &LiveLoad,
     (lambda, x): (f64, Reactions),
-    pattern: &[continuum::LoadedContact],
+    pairs: &[Tagged<Side>],
     settings: &Settings,
-) -> Result<Option<LoadLimitState>, String> {
-    let pairs: Vec<(Contact, Side)> = pattern.iter().map(|c| (c.contact, c.side)).collect();
+) -> Result<Option<LoadLimitState>, Undecided> {
     let st = State { arch, eta, mu, x };
-    let found = match mechanism::find_under_load(&st, lambda, load, &pairs, settings) {
+    let found = match mechanism::find_under_load(&st, lambda, load, pairs, settings) {
         Ok(m) => m,
-        Err(LpOutcome::Failed(e)) => return Err(format!("LP back end: {e}")),
+        Err(LpOutcome::Failed(e)) => return Err(lp_failed(e)),
         Err(LpOutcome::Infeasible) => None,
     };
     Ok(found.map(|(mechanism, live_power)| {
@@ -551,34 +567,19 @@ fn continuous_finite_friction(
     mu: f64,
     load: &LiveLoad,
     min: (f64, Reactions),
-    max: Option<(f64, Reactions, Vec<continuum::LoadedContact>)>,
+    max: Option<continuum::Extreme>,
     settings: &Settings,
-) -> Result<LoadOutcome, String> {
+) -> Result<LoadOutcome, Undecided> {
     let Some((lambda_s, x_s, pattern_s)) = max else {
-        return Err("continuous arch at finite friction with lambda_static unbounded: the limit states are not searched on the continuum in that case yet".into());
+        return Err(Undecided::NotCovered("continuous arch at finite friction with lambda_static unbounded: the limit states are not searched on the continuum in that case yet".into()));
     };
-    let mut sets: Vec<Vec<LoadLimitState>> = Vec::new();
-    let mut events = 0;
-    for pieces in [settings.sweep_pieces, 2 * settings.sweep_pieces] {
-        let (found, n) = carried_states(arch, eta, mu, load, pieces, lambda_s, min, settings)?;
-        events = n.unwrap_or(events);
-        sets.push(found);
-    }
-    let fine = sets.pop().expect("two discretisations");
-    let coarse = sets.pop().expect("two discretisations");
-    let same = fine.len() == coarse.len()
-        && fine
-            .iter()
-            .all(|p| coarse.iter().any(|q| same_load_state(p, q)));
-    if !same {
-        return Err(format!(
-            "the refined limit states of {} and {} pieces differ: {:?} vs {:?}",
-            settings.sweep_pieces,
-            2 * settings.sweep_pieces,
-            coarse.iter().map(|s| s.lambda).collect::<Vec<_>>(),
-            fine.iter().map(|s| s.lambda).collect::<Vec<_>>()
-        ));
-    }
+    let carry = |pieces| carried_states(arch, eta, mu, load, pieces, lambda_s, min, settings);
+    let cmp = Compare {
+        same: |p: &LoadLimitState, q: &LoadLimitState| same_load_state(p, q, settings),
+        sort: |l: &mut Vec<LoadLimitState>| l.sort_by(|p, q| p.lambda.total_cmp(&q.lambda)),
+        t: |s: &LoadLimitState| s.lambda,
+    };
+    let (fine, events) = agreed(settings, carry, cmp)?;
     let at_static = limit_state_on(arch, eta, mu, load, (lambda_s, x_s), &pattern_s, settings)?;
     let mechanism_at_static = at_static.is_some();
     let mut limit_states = fine;
@@ -588,13 +589,12 @@ fn continuous_finite_friction(
         lambda_static: Some((lambda_s, x_s)),
         mechanism_at_static,
         limit_states,
-        events,
+        events: events.unwrap_or(0),
         method: "refined",
         no_mechanism: Vec::new(),
     }))
 }
 
-/// Two refined limit states are the same: equal λ (to 1e-9) and the same contacts.
 /// The limit states below λ_static of the `pieces`-piece discretisation of a continuous arch
 /// carried over to the continuum (adjacent contacts merged into tangencies, Newton with λ
 /// unknown, verified over the arch), with the events of its sweep (`None` where it found no
@@ -609,7 +609,7 @@ fn carried_states(
     lambda_s: f64,
     min: (f64, Reactions),
     settings: &Settings,
-) -> Result<(Vec<LoadLimitState>, Option<usize>), String> {
+) -> Result<Carried<LoadLimitState>, Undecided> {
     let (a, b) = (arch.beta_right(), arch.beta_left());
     let above_min = |l: f64| min.0 == 0.0 || l > min.0 * (1.0 + settings.root_slack);
     let mut events = None;
@@ -631,19 +631,21 @@ fn carried_states(
     let discrete = arch
         .clone()
         .with_joints(&joints)
-        .map_err(|e| e.to_string())?;
-    let states = match survey(&discrete, eta, mu, load, settings).map_err(|e| e.to_string())? {
+        .map_err(|e| Undecided::Discretisation(e.to_string()))?;
+    let states = match survey(&discrete, eta, mu, load, settings)
+        .map_err(|e| Undecided::Discretisation(e.to_string()))?
+    {
         Ok(LoadOutcome::Limits(sv)) => {
             events = Some(sv.events);
             sv.limit_states
         }
         Ok(LoadOutcome::NoCollapse { .. }) => Vec::new(),
         Ok(LoadOutcome::NoEquilibrium) => {
-            return Err(format!(
+            return Err(Undecided::Discretisation(format!(
                 "the {pieces}-piece discretisation has no admissible state"
-            ))
+            )))
         }
-        Err(e) => return Err(format!("{pieces} pieces: {e}")),
+        Err(e) => return Err(e.map_text(|e| format!("{pieces} pieces: {e}"))),
     };
     let h = (b - a) / pieces as f64;
     let mut found: Vec<LoadLimitState> = Vec::new();
@@ -655,20 +657,12 @@ fn carried_states(
             continue;
         }
         if st.continuum_to.is_some() {
-            return Err(format!(
+            return Err(Undecided::NotCovered(format!(
                     "the {pieces}-piece discretisation has a continuum of limit states from lambda = {} (the loaded point sliding along its section): not carried over to the continuous arch yet",
                     st.lambda
-                ));
+                )));
         }
-        let pattern: Vec<continuum::LoadedContact> = st
-            .pattern
-            .iter()
-            .zip(&st.sides)
-            .map(|(c, s)| continuum::LoadedContact {
-                contact: *c,
-                side: *s,
-            })
-            .collect();
+        let pattern: Vec<Tagged<Side>> = st.pattern.iter().copied().zip(st.sides.clone()).collect();
         let Some((l, x, active)) = continuum::carry_over(
             arch,
             eta,
@@ -684,15 +678,20 @@ fn carried_states(
         if !below(l, lambda_s, settings) || !above_min(l) {
             continue;
         }
-        let Some(ls) = limit_state_on(arch, eta, mu, load, (l, x), &active, settings)? else {
-            continue;
-        };
-        if !found.iter().any(|f| same_load_state(f, &ls)) {
-            found.push(ls);
-        }
+        found.extend(limit_state_on(
+            arch,
+            eta,
+            mu,
+            load,
+            (l, x),
+            &active,
+            settings,
+        )?);
     }
-    found.sort_by(|p, q| p.lambda.total_cmp(&q.lambda));
-    Ok((found, events))
+    Ok(Carried {
+        states: found,
+        events,
+    })
 }
 
 /// Whether λ lies below `top` by more than the resolution at which a multiplier is decided:
@@ -702,12 +701,14 @@ pub(crate) fn below(l: f64, top: f64, settings: &Settings) -> bool {
     l < top - settings.root_slack * top.abs().max(1.0)
 }
 
-fn same_load_state(p: &LoadLimitState, q: &LoadLimitState) -> bool {
-    (p.lambda - q.lambda).abs() <= 1e-9 * (1.0 + p.lambda.abs())
-        && p.pattern.len() == q.pattern.len()
-        && p.pattern
-            .iter()
-            .zip(&q.pattern)
-            .zip(p.sides.iter().zip(&q.sides))
-            .all(|((a, b), (s, t))| a.kind == b.kind && (a.beta - b.beta).abs() <= 1e-6 && s == t)
+/// Two carried limit states are the same ([`discretised::same_state`], λ to
+/// `settings.same_state_eta` × (1 + |λ|): a multiplier near zero is fixed in absolute
+/// terms).
+fn same_load_state(p: &LoadLimitState, q: &LoadLimitState, settings: &Settings) -> bool {
+    discretised::same_state(
+        (p.lambda, &p.pattern, &p.sides),
+        (q.lambda, &q.pattern, &q.sides),
+        settings.same_state_eta * (1.0 + p.lambda.abs()),
+        settings,
+    )
 }

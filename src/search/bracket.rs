@@ -7,6 +7,7 @@ use crate::arch::Arch;
 use crate::contact::ContactKind;
 use crate::lp::LpOutcome;
 use crate::settings::Settings;
+use crate::undecided::Undecided;
 
 /// The continuum margin at (η, μ) restricted to `kinds`, decided (the LP stops once its
 /// sign is known); an LP failure becomes its message.
@@ -17,10 +18,10 @@ pub fn margin_at(
     kinds: &[ContactKind],
     ws: &mut WorkingSet,
     settings: &Settings,
-) -> Result<Margin, String> {
+) -> Result<Margin, Undecided> {
     max_margin(arch, eta, mu, kinds, ws, Goal::Decide, settings).map_err(|e| match e {
-        LpOutcome::Infeasible => "margin LP infeasible".to_string(),
-        LpOutcome::Failed(m) => m,
+        LpOutcome::Infeasible => Undecided::Lp("margin LP infeasible".to_string()),
+        LpOutcome::Failed(m) => Undecided::Lp(m),
     })
 }
 
@@ -34,13 +35,13 @@ pub type Bracket<T> = ((f64, f64), (f64, f64, T));
 /// Root of an increasing function f on [lo, hi] with f(lo) < 0 ≤ f(hi): Illinois
 /// regula falsi with geometric bisection as a safeguard. `eval` returns f and the
 /// payload kept for the upper end. Stops when hi − lo ≤ rel · hi.
-pub fn bracket_root<T: Clone>(
+pub fn bracket_root<T: Clone, E>(
     mut lo: (f64, f64),
     mut hi: (f64, f64, T),
     rel: f64,
     max_iter: usize,
-    mut eval: impl FnMut(f64) -> Result<(f64, T), String>,
-) -> Result<Bracket<T>, String> {
+    mut eval: impl FnMut(f64) -> Result<(f64, T), E>,
+) -> Result<Bracket<T>, E> {
     let mut side = 0i32;
     let (mut flo, mut fhi) = (lo.1, hi.1);
     let mut widths = [f64::INFINITY; 3];
@@ -106,11 +107,11 @@ const GUESS_WIDENINGS: usize = 3;
 /// (each evaluation still narrows the bracket, since f is increasing), at most
 /// `GUESS_WIDENINGS` times, within (0, `top`]. `Ok(None)` when no bracket was found so
 /// (the caller brackets from its own ends); an evaluation's error is returned as is.
-pub fn bracket_near<T: Clone>(
+pub fn bracket_near<T: Clone, E>(
     guess: RootGuess,
     top: f64,
-    mut eval: impl FnMut(f64) -> Result<(f64, T), String>,
-) -> Result<Option<Bracket<T>>, String> {
+    mut eval: impl FnMut(f64) -> Result<(f64, T), E>,
+) -> Result<Option<Bracket<T>>, E> {
     let g = guess.eta;
     if !(g > 0.0 && g < top && guess.rel > 0.0 && guess.rel.is_finite()) {
         return Ok(None);

@@ -11,7 +11,7 @@ use crate::certificate::format::{
 use crate::certificate::verify::{prove_admissible_side, verify};
 use crate::contact::Contact;
 use crate::load::{rows, LiveLoad};
-use crate::multiplier::continuum::{extreme, LoadedContact};
+use crate::multiplier::continuum::extreme;
 use crate::settings::Settings;
 use crate::statics::{magnitude, Affine, Reactions};
 
@@ -40,11 +40,7 @@ pub(super) fn static_state(
         }
         JointLayout::Continuous => match extreme(arch, eta, mu, load, true, settings) {
             Ok(Some((l, xs, pattern))) if (l - lambda).abs() <= 1e-12 * (1.0 + lambda) => {
-                let p = pattern
-                    .iter()
-                    .map(|c: &LoadedContact| (c.contact, c.side))
-                    .collect();
-                Ok((l, xs, sorted(p)))
+                Ok((l, xs, sorted(pattern)))
             }
             _ => Err(NotCertified(format!(
                 "the static maximum lambda_static = {lambda} could not be recomputed with its pattern"

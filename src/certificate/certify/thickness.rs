@@ -61,7 +61,7 @@ pub(super) fn certify_no_equilibrium(
     settings: &Settings,
 ) -> Result<Certificate, NotCertified> {
     let fl = friction_limit(arch, settings)
-        .map_err(NotCertified)?
+        .map_err(|e| NotCertified(e.to_string()))?
         .ok_or_else(|| NotCertified("no finite friction admits equilibrium".into()))?;
     let mut cert = empty(arch, mu, Claim::NoEquilibrium);
     let f = find_contact_farkas(arch, &fl.pattern, 1.0, mu, 2, |f| {

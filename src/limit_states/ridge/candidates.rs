@@ -7,6 +7,7 @@ use super::rows::{ev, hinge_rows, in_band, Candidate, JointRows, TOL};
 use super::walk::walk_edge;
 use crate::arch::ETA_TOP;
 use crate::kinematics::column;
+use crate::undecided::Undecided;
 
 /// An edge of Q shorter (ℓ₁) than this times 1 + the size of its start is not walked.
 const SHORT_EDGE_REL: f64 = 1e-12;
@@ -20,11 +21,17 @@ fn scale(p: [f64; 2]) -> f64 {
 }
 
 /// Every candidate on the ridge with η in (eta_lo, ETA_TOP).
-pub(super) fn candidates(js: &[JointRows], mu: f64, eta_lo: f64) -> Result<Vec<Candidate>, String> {
+pub(super) fn candidates(
+    js: &[JointRows],
+    mu: f64,
+    eta_lo: f64,
+) -> Result<Vec<Candidate>, Undecided> {
     let lines = lines(js, mu);
     let poly = q_polygon(&lines);
     if poly.len() < 3 {
-        return Err("the friction polygon Q has no interior".into());
+        return Err(Undecided::Resolution(
+            "the friction polygon Q has no interior".into(),
+        ));
     }
     no_third_line(&lines, &poly)?;
     let in_range = |eta: f64| eta > eta_lo && eta < ETA_TOP;
@@ -35,7 +42,7 @@ pub(super) fn candidates(js: &[JointRows], mu: f64, eta_lo: f64) -> Result<Vec<C
 
 /// G1: no third sliding line through a vertex of Q (a pure-sliding mechanism may then
 /// hold over an interval of η, and the pair of lines would not define the vertex).
-fn no_third_line(lines: &[Line], poly: &[QVertex]) -> Result<(), String> {
+fn no_third_line(lines: &[Line], poly: &[QVertex]) -> Result<(), Undecided> {
     for &(q, _) in poly {
         if on_box(q) {
             continue;
@@ -49,10 +56,10 @@ fn no_third_line(lines: &[Line], poly: &[QVertex]) -> Result<(), String> {
             })
             .count();
         if through > 2 {
-            return Err(format!(
+            return Err(Undecided::NotCovered(format!(
                 "{through} sliding lines meet at the vertex ({}, {}) of Q",
                 q[0], q[1]
-            ));
+            )));
         }
     }
     Ok(())
@@ -100,7 +107,7 @@ fn along_edges(
     poly: &[QVertex],
     in_range: &impl Fn(f64) -> bool,
     out: &mut Vec<Candidate>,
-) -> Result<(), String> {
+) -> Result<(), Undecided> {
     for k in 0..poly.len() {
         let (q0, ri) = poly[k];
         let q1 = poly[(k + 1) % poly.len()].0;

@@ -10,6 +10,7 @@ use crate::limit_states::SweptState;
 use crate::mechanism;
 use crate::settings::Settings;
 use crate::state::State;
+use crate::undecided::Undecided;
 
 /// The pre-filter calls a contact clearly violated when φ exceeds this many times
 /// `adm_tol` of its magnitude, and clearly inactive below −this many times.
@@ -118,7 +119,7 @@ pub(super) fn check(
     mu: f64,
     c: &Candidate,
     settings: &Settings,
-) -> Result<Option<SweptState>, String> {
+) -> Result<Option<SweptState>, Undecided> {
     let st = State {
         arch,
         eta: c.eta,
@@ -143,10 +144,10 @@ pub(super) fn check(
         }
     }
     let mech = mechanism::find(&st, a, settings).map_err(|e| {
-        format!(
+        Undecided::Lp(format!(
             "the kinematic LP at eta = {} was not decided by the LP back end: {e:?}",
             c.eta
-        )
+        ))
     })?;
     Ok(mech.map(|m| SweptState::unloaded(arch, (c.eta, c.x), v.active, m, settings)))
 }

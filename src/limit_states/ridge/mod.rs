@@ -35,6 +35,7 @@ mod walk;
 use crate::arch::{Arch, JointLayout, WeightModel};
 use crate::settings::Settings;
 use crate::statics::reaction_scale;
+use crate::undecided::Undecided;
 use candidates::candidates;
 use check::{check, may_carry_mechanism};
 use rows::JointRows;
@@ -65,21 +66,21 @@ pub fn applies(arch: &Arch, mu: f64) -> bool {
 /// *all* limit states there: it holds wherever P(η) has an interior point (checked by the
 /// caller with one margin LP). `Err` says why the walk could not decide (the caller then
 /// sweeps).
-pub fn search(arch: &Arch, mu: f64, eta_lo: f64, settings: &Settings) -> Result<Ridge, String> {
+pub fn search(arch: &Arch, mu: f64, eta_lo: f64, settings: &Settings) -> Result<Ridge, Undecided> {
     if !applies(arch, mu) {
-        return Err(
+        return Err(Undecided::NotCovered(
             "the ridge search needs a discrete arch, the centreline weight and finite mu".into(),
-        );
+        ));
     }
     let JointLayout::Discrete(joints) = arch.layout() else {
         unreachable!("checked by applies")
     };
     if joints.len() > settings.ridge_max_joints {
-        return Err(format!(
+        return Err(Undecided::Budget(format!(
             "the ridge walk over {} joints is beyond settings.ridge_max_joints = {}",
             joints.len(),
             settings.ridge_max_joints
-        ));
+        )));
     }
     let js: Vec<JointRows> = joints.iter().map(|&b| JointRows::at(arch, b)).collect();
     let cands = candidates(&js, mu, eta_lo)?;

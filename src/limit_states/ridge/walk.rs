@@ -5,6 +5,7 @@
 
 use super::rows::{det3, HingeRow, JointRows, TOL};
 use crate::kinematics::column;
+use crate::undecided::Undecided;
 
 /// The band of w is closed (empty or a point) where max l − min u is at most this times
 /// the size of the rows.
@@ -99,7 +100,7 @@ pub(super) fn walk_edge(
     (t0, t1): (f64, f64),
     cs: [f64; 3],
     js: &[JointRows],
-) -> Result<Vec<(f64, f64, f64)>, String> {
+) -> Result<Vec<(f64, f64, f64)>, Undecided> {
     let eta_of = |d: &[f64; 4], t: f64| -(d[0] + d[1] * t) / (d[2] + d[3] * t);
     let slope = |d: &[f64; 4], t: f64| {
         let q = d[2] + d[3] * t;
@@ -107,7 +108,9 @@ pub(super) fn walk_edge(
     };
     let mut out = Vec::new();
     let Some((mut e, mut i)) = ridge_pair(hr, t0) else {
-        return Err(format!("no ridge over the edge of Q at t = {t0}"));
+        return Err(Undecided::Resolution(format!(
+            "no ridge over the edge of Q at t = {t0}"
+        )));
     };
     let w_at = |e: usize, d: &[f64; 4], t: f64| hr[e].at(t, eta_of(d, t));
     let d = diff(hr, e, i);
@@ -140,10 +143,10 @@ pub(super) fn walk_edge(
             let small = ROW_ZERO_REL * mag * mag;
             if q2.abs() <= small && q1.abs() <= small {
                 if q0.abs() <= small {
-                    return Err(format!(
+                    return Err(Undecided::NotCovered(format!(
                         "a family of ridge points: the rows of joints {}, {} and {} meet along an edge of Q",
                         hr[e].j, hr[i].j, hr[r].j
-                    ));
+                    )));
                 }
                 continue;
             }
@@ -176,10 +179,10 @@ pub(super) fn walk_edge(
                 }
             }
         } else if f0.abs() <= small {
-            return Err(format!(
+            return Err(Undecided::NotCovered(format!(
                 "a family of ridge points: the sliding column and the hinges at joints {} and {} are dependent at every eta",
                 hr[e].j, hr[i].j
-            ));
+            )));
         }
         let Some((tn, r)) = next.filter(|n| n.0 < t1 - eps) else {
             out.push((t1, eta_of(&d, t1), w_at(e, &d, t1)));
@@ -197,7 +200,9 @@ pub(super) fn walk_edge(
         }
         t = tn;
     }
-    Err("the walk along an edge of Q did not reach its end".into())
+    Err(Undecided::Resolution(
+        "the walk along an edge of Q did not reach its end".into(),
+    ))
 }
 
 /// Real roots of q2 t² + q1 t + q0 (a linear equation when |q2| ≤ small; the caller has

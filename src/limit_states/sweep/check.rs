@@ -10,6 +10,7 @@ use crate::load::Side;
 use crate::mechanism;
 use crate::state::State;
 use crate::statics::Reactions;
+use crate::undecided::Undecided;
 
 impl Sweeper<'_> {
     /// Checks the contacts active at (x, t) for a mechanism; records a limit state.
@@ -40,9 +41,9 @@ impl Sweeper<'_> {
                 match mechanism::find(&st, &contacts, self.settings) {
                     Ok(m) => m.map(|m| (m, 0.0)),
                     Err(e) => {
-                        self.lp_failure.get_or_insert(format!(
+                        self.lp_failure.get_or_insert(Undecided::Lp(format!(
                             "the kinematic LP at eta = {t} was not decided by the LP back end: {e:?}"
-                        ));
+                        )));
                         return;
                     }
                 }
@@ -57,9 +58,9 @@ impl Sweeper<'_> {
                 match mechanism::find_under_load(&st, t, load, &pattern, self.settings) {
                     Ok(m) => m,
                     Err(e) => {
-                        self.lp_failure.get_or_insert(format!(
+                        self.lp_failure.get_or_insert(Undecided::Lp(format!(
                             "the kinematic LP at lambda = {t} was not decided by the LP back end: {e:?}"
-                        ));
+                        )));
                         return;
                     }
                 }

@@ -5,6 +5,7 @@
 use super::found::Sweep;
 use super::sweeper::{Param, Sweeper};
 use crate::statics::Reactions;
+use crate::undecided::Undecided;
 
 /// At most this many events are processed (a safety net; never reached in tests).
 const MAX_EVENTS: usize = 200_000;
@@ -36,7 +37,7 @@ pub(super) fn run_to_top(mut sw: Sweeper) -> (Sweep, Vec<Reactions>) {
                 states: sw.states,
                 events,
                 no_mechanism: sw.no_mechanism,
-                failure: Some(format!("more than {MAX_EVENTS} events")),
+                failure: Some(Undecided::Budget(format!("more than {MAX_EVENTS} events"))),
             };
             return (sweep, at_top);
         }

@@ -8,6 +8,7 @@ use crate::load::Side;
 use crate::mechanism::Mechanism;
 use crate::settings::Settings;
 use crate::statics::Reactions;
+use crate::undecided::Undecided;
 
 /// What the sweep found.
 #[derive(Debug, Clone)]
@@ -21,7 +22,7 @@ pub struct Sweep {
     /// the evidence behind "no limit state there" that a certificate can carry.
     pub no_mechanism: Vec<CheckedPoint>,
     /// Why the sweep could not finish, if it could not.
-    pub failure: Option<String>,
+    pub failure: Option<Undecided>,
 }
 
 impl Sweep {
@@ -36,7 +37,7 @@ impl Sweep {
     }
 
     /// A sweep that could not start, and why.
-    pub(super) fn failed(why: String) -> Sweep {
+    pub(super) fn failed(why: Undecided) -> Sweep {
         Sweep {
             failure: Some(why),
             ..Sweep::nothing()

@@ -46,6 +46,7 @@ use crate::arch::{Arch, JointLayout, ETA_TOP};
 use crate::load::LiveLoad;
 use crate::settings::Settings;
 use crate::statics::Reactions;
+use crate::undecided::Undecided;
 use events::{run, run_to_top};
 use geometry::{load_planes, planes};
 use sweeper::{Param, Sweeper};
@@ -55,7 +56,7 @@ use sweeper::{Param, Sweeper};
 /// joint angles of a discrete arch.
 pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settings) -> Sweep {
     let JointLayout::Discrete(joints) = arch.layout() else {
-        return Sweep::failed("the sweep needs the joints of a discrete arch".into());
+        return Sweep::failed(not_discrete());
     };
     if let Some(f) = too_many(joints.len(), settings) {
         return Sweep::failed(f);
@@ -69,15 +70,20 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
     }
 }
 
+/// The sweep follows the planes of the joints: a continuous arch has none.
+fn not_discrete() -> Undecided {
+    Undecided::NotCovered("the sweep needs the joints of a discrete arch".into())
+}
+
 /// Why the sweep is not run on `joints` joints, if it is not: its work grows faster than
 /// the square of the number of joints (every vertex born is tested against every plane),
 /// so beyond `settings.sweep_max_joints` it is not attempted.
-fn too_many(joints: usize, settings: &Settings) -> Option<String> {
+fn too_many(joints: usize, settings: &Settings) -> Option<Undecided> {
     (joints > settings.sweep_max_joints).then(|| {
-        format!(
+        Undecided::Budget(format!(
             "the complete search over {joints} joints is beyond this version's budget (settings.sweep_max_joints = {}): the limit states were not searched",
             settings.sweep_max_joints
-        )
+        ))
     })
 }
 
@@ -121,9 +127,9 @@ pub fn sweep_load_with_top(
     lambda_static: f64,
     settings: &Settings,
 ) -> (Sweep, Vec<Reactions>) {
-    let failure = |f: String| (Sweep::failed(f), Vec::new());
+    let failure = |f: Undecided| (Sweep::failed(f), Vec::new());
     let JointLayout::Discrete(joints) = arch.layout() else {
-        return failure("the sweep needs the joints of a discrete arch".into());
+        return failure(not_discrete());
     };
     if let Some(f) = too_many(joints.len(), settings) {
         return failure(f);

@@ -10,6 +10,7 @@ use crate::arch::ETA_TOP;
 use crate::contact::ContactKind;
 use crate::lp;
 use crate::statics::{Affine, Reactions};
+use crate::undecided::Undecided;
 
 /// The least η at which P(η) meets the box is bisected to this width (relative): the
 /// resolution of η.
@@ -19,7 +20,7 @@ impl Sweeper<'_> {
     /// Starts the thickness sweep from the least admissible state (η_s, x_s): every vertex
     /// of P(η) just above it. `Ok(false)`: no state inside the box below the thickness
     /// limit, so no limit state and nothing to sweep; `Err`: why the sweep cannot start.
-    pub(super) fn start_at_least(&mut self, eta_s: f64, x_s: Reactions) -> Result<bool, String> {
+    pub(super) fn start_at_least(&mut self, eta_s: f64, x_s: Reactions) -> Result<bool, Undecided> {
         let (arch, mu, settings) = (self.arch, self.mu, self.settings);
         // the start: the least admissible state, or, where that state is unbounded (η_s an
         // infimum, approached only as the reactions grow without bound), the least point of
@@ -71,10 +72,10 @@ impl Sweeper<'_> {
             self.start_by_walk(eta0, centre);
         }
         if self.alive.is_empty() {
-            return Err(format!(
+            return Err(Undecided::Resolution(format!(
                 "no vertex of the admissible set found just above eta_s = {eta_s} ({} contacts active there)",
                 act.len()
-            ));
+            )));
         }
         Ok(true)
     }
@@ -84,12 +85,12 @@ impl Sweeper<'_> {
     pub(super) fn start_at_least_load(
         &mut self,
         (lambda_min, x_min): (f64, Reactions),
-    ) -> Result<(), String> {
+    ) -> Result<(), Undecided> {
         let (settings, lambda_static) = (self.settings, self.top);
         if x_min.iter().any(|v| v.abs() >= BOX * (1.0 - BOX_EDGE_REL)) {
-            return Err(format!(
+            return Err(Undecided::Resolution(format!(
                 "the least admissible state at lambda = {lambda_min} lies outside the box |x| <= {BOX:e}"
-            ));
+            )));
         }
         // λ_min > 0: P(λ_min) is (generically) the point x_min, and the vertices just after
         // it come from the linearisation there; λ_min = 0: P(0) is the admissible set of the
@@ -122,9 +123,9 @@ impl Sweeper<'_> {
             self.start_by_walk(t0, centre);
         }
         if self.alive.is_empty() {
-            return Err(format!(
+            return Err(Undecided::Resolution(format!(
                 "no vertex of the admissible set found at lambda = {lambda_min}"
-            ));
+            )));
         }
         Ok(())
     }
@@ -150,8 +151,12 @@ impl Sweeper<'_> {
     /// [`Self::in_box`] to [`BOX_BISECTION_REL`]): the sweep's start when the least
     /// admissible state is unbounded. `Ok(None)` when P(η) misses the box up to the
     /// thickness limit.
-    fn least_in_box(&self, eta_lo: f64) -> Result<Option<(f64, Reactions)>, String> {
-        let failed = || format!("the margin LP inside the box failed above eta_s = {eta_lo}");
+    fn least_in_box(&self, eta_lo: f64) -> Result<Option<(f64, Reactions)>, Undecided> {
+        let failed = || {
+            Undecided::Lp(format!(
+                "the margin LP inside the box failed above eta_s = {eta_lo}"
+            ))
+        };
         let (ok, mut x) = self.in_box(ETA_TOP).ok_or_else(failed)?;
         if !ok {
             return Ok(None);

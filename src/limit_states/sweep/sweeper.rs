@@ -7,6 +7,7 @@ use crate::arch::Arch;
 use crate::load::LiveLoad;
 use crate::settings::Settings;
 use crate::statics::{magnitude, reaction_scale, Reactions};
+use crate::undecided::Undecided;
 
 /// What the sweep's parameter t is.
 #[derive(Debug, Clone, Copy)]
@@ -32,7 +33,7 @@ pub(super) struct Sweeper<'a> {
     pub(super) no_mechanism: Vec<CheckedPoint>,
     /// The first kinematic LP that the back end could not decide: the sweep then decides
     /// nothing (an undecided point is neither a limit state nor "no mechanism").
-    pub(super) lp_failure: Option<String>,
+    pub(super) lp_failure: Option<Undecided>,
 }
 
 impl<'a> Sweeper<'a> {

@@ -6,6 +6,7 @@ use crate::contact::Contact;
 use crate::load::LiveLoad;
 use crate::multiplier::{LoadLimitState, LoadOutcome};
 use crate::render::live_load::{at_joint, force_unit_kn, merged, LoadQuestion};
+use crate::undecided::Undecided;
 use serde::Serialize;
 
 #[derive(Debug, Serialize)]
@@ -137,7 +138,7 @@ fn units(q: &LoadQuestion, lambda: Option<f64>, lambda_static: Option<f64>) -> O
 
 /// The `load --json` document; the `Err` of the outcome is the reason no decision was
 /// reached (status `unresolved`).
-pub fn load(q: &LoadQuestion, outcome: &Result<LoadOutcome, String>) -> LoadDoc {
+pub fn load(q: &LoadQuestion, outcome: &Result<LoadOutcome, Undecided>) -> LoadDoc {
     let mut doc = LoadDoc {
         version: JSON_VERSION,
         status: "ok",
@@ -159,7 +160,7 @@ pub fn load(q: &LoadQuestion, outcome: &Result<LoadOutcome, String>) -> LoadDoc 
     match outcome {
         Err(reason) => {
             doc.status = "unresolved";
-            doc.message = Some(reason.clone());
+            doc.message = Some(reason.to_string());
         }
         Ok(LoadOutcome::NoEquilibrium) => {
             doc.status = "no_equilibrium";

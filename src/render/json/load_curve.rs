@@ -5,6 +5,7 @@ use super::{ArchJson, JSON_VERSION};
 use crate::load::LiveLoad;
 use crate::multiplier::{LoadCurve, LoadOutcome};
 use crate::render::live_load::{LoadQuestion, CONTINUOUS_TOL};
+use crate::undecided::Undecided;
 use serde::Serialize;
 
 /// One sample of the λ–μ curve at fixed η.
@@ -34,7 +35,7 @@ pub struct LoadCurveDoc {
     corners: Vec<CornerJson>,
 }
 
-pub(crate) fn curve_row(mu: f64, outcome: &Result<LoadOutcome, String>) -> LoadCurveRow {
+pub(crate) fn curve_row(mu: f64, outcome: &Result<LoadOutcome, Undecided>) -> LoadCurveRow {
     let mut row = LoadCurveRow {
         mu: mu.is_finite().then_some(mu),
         status: "ok",
@@ -49,7 +50,7 @@ pub(crate) fn curve_row(mu: f64, outcome: &Result<LoadOutcome, String>) -> LoadC
     match outcome {
         Err(e) => {
             row.status = "unresolved";
-            row.message = Some(e.clone());
+            row.message = Some(e.to_string());
         }
         Ok(LoadOutcome::NoEquilibrium) => row.status = "no_equilibrium",
         Ok(LoadOutcome::NoCollapse { .. }) => row.status = "no_collapse",
@@ -97,7 +98,7 @@ struct CornerJson {
     above: CornerSide,
 }
 
-fn corner_side(load: &LiveLoad, (mu, o): &(f64, Result<LoadOutcome, String>)) -> CornerSide {
+fn corner_side(load: &LiveLoad, (mu, o): &(f64, Result<LoadOutcome, Undecided>)) -> CornerSide {
     let pattern = match o {
         Ok(LoadOutcome::Limits(sv)) => sv
             .limit_states

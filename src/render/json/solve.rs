@@ -138,7 +138,7 @@ pub fn solve(survey: &Survey, explain: bool) -> SolveJson {
                 complete: false,
                 method: None,
                 events: None,
-                reason: Some(reason.clone()),
+                reason: Some(reason.to_string()),
             });
             if let Outcome::Limit(_) = &sol.outcome {
                 doc.unique = Some(None);

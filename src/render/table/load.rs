@@ -5,6 +5,7 @@ use super::format::{describe_arch, fmt_mu, short, sig};
 use crate::load::LiveLoad;
 use crate::multiplier::{LoadLimitState, LoadOutcome, LoadSurvey};
 use crate::render::live_load::{at_joint, force_unit_kn, merged, LoadQuestion};
+use crate::undecided::Undecided;
 use std::fmt::Write;
 
 /// A pattern as `kind@beta`, `<`/`>` marking the contacts before/after the loaded section.
@@ -24,7 +25,7 @@ pub(super) fn pattern_text(load: &LiveLoad, s: &LoadLimitState) -> String {
 }
 
 /// The human-readable answer of `load`.
-pub fn load(q: &LoadQuestion, outcome: &Result<LoadOutcome, String>) -> String {
+pub fn load(q: &LoadQuestion, outcome: &Result<LoadOutcome, Undecided>) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "{}", describe_arch(q.arch));
     let _ = writeln!(

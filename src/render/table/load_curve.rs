@@ -6,10 +6,11 @@ use crate::load::LiveLoad;
 use crate::multiplier::{LoadCurve, LoadOutcome};
 use crate::render::json::curve_row;
 use crate::render::live_load::{LoadQuestion, CONTINUOUS_TOL};
+use crate::undecided::Undecided;
 use std::fmt::Write;
 
 /// The least limit state of an answer in words: mode and pattern (or the status).
-fn least_text(load: &LiveLoad, o: &Result<LoadOutcome, String>) -> String {
+fn least_text(load: &LiveLoad, o: &Result<LoadOutcome, Undecided>) -> String {
     match o {
         Err(_) => "unresolved".into(),
         Ok(LoadOutcome::NoEquilibrium) => "no equilibrium".into(),
@@ -64,7 +65,7 @@ pub fn load_curve(q: &LoadQuestion, curve: &LoadCurve) -> String {
 
 /// One row of the table: λ_static, λ, the reduction, the number of limit states and the
 /// least one's mode, or the status.
-fn sample_row(s: &mut String, mu: f64, o: &Result<LoadOutcome, String>) {
+fn sample_row(s: &mut String, mu: f64, o: &Result<LoadOutcome, Undecided>) {
     let r = curve_row(mu, o);
     let num = |v: Option<f64>| v.map_or("-".to_string(), |v| sig(v, 12));
     if r.status == "ok" {

@@ -4,6 +4,7 @@
 use super::format::{describe_arch, eta_digits, fmt_mu, pattern_table, short, sig};
 use crate::limit::{LimitState, Outcome, Solution};
 use crate::limit_states::{LimitStates, Survey};
+use crate::undecided::Undecided;
 use std::fmt::Write;
 
 /// The human-readable answer of `solve`: η_s, the limit state at η_s in detail when there
@@ -75,7 +76,7 @@ fn least_limit_state(
     s: &mut String,
     sol: &Solution,
     ls: &LimitState,
-    states: &Result<LimitStates, String>,
+    states: &Result<LimitStates, Undecided>,
 ) {
     let _ = writeln!(
         s,
