@@ -28,6 +28,11 @@ pub enum Undecided {
 }
 
 impl Undecided {
+    /// An LP the back end failed on, with the back end's message.
+    pub fn back_end(message: impl fmt::Display) -> Undecided {
+        Undecided::Lp(format!("LP back end: {message}"))
+    }
+
     /// The text.
     pub fn text(&self) -> &str {
         match self {

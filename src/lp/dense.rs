@@ -10,7 +10,7 @@
 //! (rows that never bind in practice) gives a dual-feasible starting basis together
 //! with the cap. Dantzig pricing, Bland's rule after degenerate steps (no cycling).
 
-use super::LpOutcome;
+use super::outcome::LpOutcome;
 use crate::statics::{Affine, Reactions};
 use nalgebra::{Matrix4, Vector4};
 

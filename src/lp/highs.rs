@@ -12,7 +12,7 @@
 //! * the kinematic LP in the rates λ of a pattern: B λ = 0, L_e ≥ 0, Σ λ = 1, λ ≥ 0
 //!   (formulation §4–5).
 
-use super::LpOutcome;
+use super::outcome::LpOutcome;
 use crate::statics::{Affine, Reactions};
 use good_lp::{variable, Expression, ProblemVariables, Solution, SolverModel};
 

@@ -15,18 +15,12 @@
 
 pub mod dense;
 pub mod highs;
+mod outcome;
+
+pub use outcome::LpOutcome;
 
 use crate::settings::{LpBackend, Settings};
 use crate::statics::{Affine, Reactions};
-
-/// Why an LP returned no solution.
-#[derive(Debug, Clone, PartialEq)]
-pub enum LpOutcome {
-    /// The LP is infeasible (normal rejection path of the enumeration).
-    Infeasible,
-    /// The back end reported anything else (unbounded, numerical failure): the message.
-    Failed(String),
-}
 
 /// Maximises s subject to `row(x) + s·‖∇row‖ ≤ 0` for every row and `s ≤ cap`; returns the
 /// optimal x and s. The LP is always feasible (s may be very negative).

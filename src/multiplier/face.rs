@@ -24,7 +24,7 @@
 //!   order of [`crate::load::rows`] (joint by joint from the right springing). The first
 //!   is the state reported with λ_static.
 
-use super::{limit_state_on, LoadLimitState};
+use super::limit_state::{limit_state_on, LoadLimitState};
 use crate::arch::Arch;
 use crate::contact::Contact;
 use crate::family::Tagged;

@@ -12,11 +12,15 @@
 pub mod continuum;
 pub mod curve;
 mod face;
+mod limit_state;
+
+use limit_state::limit_state_on;
+pub use limit_state::LoadLimitState;
 
 pub use curve::{sample, trace, CurveSample, LoadCurve};
 
 use crate::arch::{check_eta, Arch, InputError, JointLayout};
-use crate::collapse_mode::{classify, CollapseMode};
+use crate::collapse_mode::classify;
 use crate::contact::Contact;
 use crate::family::Tagged;
 use crate::kinematics::{column, power};
@@ -24,7 +28,7 @@ use crate::limit_states::discretised::{self, agreed, Carried, Compare};
 use crate::limit_states::sweep::{sweep_load_with_top, CheckedPoint};
 use crate::load::{rows, LiveLoad, LoadRow, Side};
 use crate::lp::{self, LpOutcome};
-use crate::mechanism::{self, Mechanism};
+use crate::mechanism;
 use crate::settings::Settings;
 use crate::state::State;
 use crate::statics::Reactions;
@@ -34,11 +38,6 @@ use continuum::NoExtreme;
 /// The least multiplier of a continuous arch came out unbounded (the LP's cap on λ is only
 /// above).
 const UNBOUNDED_BELOW: &str = "the least multiplier came out unbounded";
-
-/// An LP the back end failed on: no decision.
-fn lp_failed(e: String) -> Undecided {
-    Undecided::Lp(format!("LP back end: {e}"))
-}
 
 /// The admissible multipliers λ ≥ 0 at (η, μ).
 #[derive(Debug, Clone, PartialEq)]
@@ -111,12 +110,12 @@ pub fn static_range(
             )))
         }
         Err(LpOutcome::Infeasible) => return Ok(Ok(StaticRange::NoEquilibrium)),
-        Err(LpOutcome::Failed(e)) => return Ok(Err(lp_failed(e))),
+        Err(LpOutcome::Failed(e)) => return Ok(Err(Undecided::back_end(e))),
     };
     let max = match lp::multiplier_extreme(&rows, &[], true, settings) {
         Ok(z) => z.filter(|z| !lp::on_box(z)).map(split),
         Err(LpOutcome::Infeasible) => return Ok(Ok(StaticRange::NoEquilibrium)),
-        Err(LpOutcome::Failed(e)) => return Ok(Err(lp_failed(e))),
+        Err(LpOutcome::Failed(e)) => return Ok(Err(Undecided::back_end(e))),
     };
     Ok(Ok(StaticRange::Interval { min, max }))
 }
@@ -125,30 +124,6 @@ pub fn static_range(
 /// this multiplier; states there have reactions far beyond the box of the sweep
 /// (|x_k| ≤ 1e7), which bounds every state it follows.
 pub const UNBOUNDED_SEARCH_TOP: f64 = 1e9;
-
-/// A limit state under the live load: an admissible state at multiplier λ whose active
-/// contacts carry a mechanism with positive live power.
-#[derive(Debug, Clone)]
-pub struct LoadLimitState {
-    /// The multiplier.
-    pub lambda: f64,
-    /// Reactions.
-    pub x: Reactions,
-    /// Every contact active there, by increasing β (at the point load's joint, the side
-    /// of the loaded section in `sides`).
-    pub pattern: Vec<Contact>,
-    /// The side of the loaded section of each contact (`After` away from the point load).
-    pub sides: Vec<Side>,
-    /// The collapse mode named from the pattern.
-    pub mode: CollapseMode,
-    /// A mechanism on them (its `power` is the total external power).
-    pub mechanism: Mechanism,
-    /// The live load's power in that mechanism (> 0).
-    pub live_power: f64,
-    /// `Some(λ_to)` when this state is the least of a continuum of limit states that
-    /// reaches up to λ_to (see [`continua`]); `None` for an isolated limit state.
-    pub continuum_to: Option<f64>,
-}
 
 /// Every limit state of a loaded discrete arch at (η, μ) with λ in [λ_min, λ_static].
 #[derive(Debug, Clone)]
@@ -435,13 +410,13 @@ pub fn continua(
                 Ok(Some(z)) => z,
                 Ok(None) => continue,
                 Err(LpOutcome::Infeasible) => continue,
-                Err(LpOutcome::Failed(e)) => return Err(lp_failed(e)),
+                Err(LpOutcome::Failed(e)) => return Err(Undecided::back_end(e)),
             };
             let to = match lp::multiplier_extreme(&with_power, &equal, true, settings) {
                 Ok(Some(z)) => z[3],
                 Ok(None) => f64::INFINITY,
                 Err(LpOutcome::Infeasible) => from[3],
-                Err(LpOutcome::Failed(e)) => return Err(lp_failed(e)),
+                Err(LpOutcome::Failed(e)) => return Err(Undecided::back_end(e)),
             };
             let x = [from[0], from[1], from[2]];
             let st = State { arch, eta, mu, x };
@@ -515,42 +490,6 @@ fn continuous_survey(
         events: 0,
         method: "associative",
         no_mechanism: Vec::new(),
-    }))
-}
-
-/// The limit state at (λ, x) on the active contacts `pattern`, if they carry a mechanism
-/// with positive live power.
-fn limit_state_on(
-    arch: &Arch,
-    eta: f64,
-    mu: f64,
-    load: &LiveLoad,
-    (lambda, x): (f64, Reactions),
-    pairs: &[Tagged<Side>],
-    settings: &Settings,
-) -> Result<Option<LoadLimitState>, Undecided> {
-    let st = State { arch, eta, mu, x };
-    let found = match mechanism::find_under_load(&st, lambda, load, pairs, settings) {
-        Ok(m) => m,
-        Err(LpOutcome::Failed(e)) => return Err(lp_failed(e)),
-        Err(LpOutcome::Infeasible) => None,
-    };
-    Ok(found.map(|(mechanism, live_power)| {
-        let contacts: Vec<Contact> = pairs.iter().map(|p| p.0).collect();
-        LoadLimitState {
-            lambda,
-            x,
-            mode: classify(
-                &contacts,
-                0.5 * (arch.beta_right() + arch.beta_left()),
-                settings.same_joint,
-            ),
-            sides: pairs.iter().map(|p| p.1).collect(),
-            pattern: contacts,
-            mechanism,
-            live_power,
-            continuum_to: None,
-        }
     }))
 }
 

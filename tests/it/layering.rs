@@ -413,11 +413,7 @@ const KNOWN_CIRCLES: &[(&str, &str, &str)] = &[
     ("cli", "serve.rs", "mod.rs"),              // TODO: circle to remove
     ("cli", "solve.rs", "mod.rs"),              // TODO: circle to remove
     ("limit_curve", "tracer.rs", "mod.rs"),     // TODO: circle to remove
-    ("limit_states", "ridge/", "mod.rs"),       // TODO: circle to remove
-    ("lp", "dense.rs", "mod.rs"),               // TODO: circle to remove
-    ("lp", "highs.rs", "mod.rs"),               // TODO: circle to remove
     ("multiplier", "curve.rs", "mod.rs"),       // TODO: circle to remove
-    ("multiplier", "face.rs", "mod.rs"),        // TODO: circle to remove
     ("render", "live_load.rs", "table/"),       // TODO: circle to remove
     ("render/json", "assess.rs", "mod.rs"),     // TODO: circle to remove
     ("render/json", "curve.rs", "mod.rs"),      // TODO: circle to remove

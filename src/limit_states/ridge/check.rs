@@ -6,7 +6,7 @@ use super::rows::{det3, ev, Candidate, JointRows};
 use crate::arch::Arch;
 use crate::contact::ContactKind;
 use crate::kinematics::column;
-use crate::limit_states::SweptState;
+use crate::limit_states::sweep::SweptState;
 use crate::mechanism;
 use crate::settings::Settings;
 use crate::state::State;

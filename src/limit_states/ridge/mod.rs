@@ -40,7 +40,7 @@ use candidates::candidates;
 use check::{check, may_carry_mechanism};
 use rows::JointRows;
 
-use super::SweptState;
+use super::sweep::SweptState;
 
 /// The limit states the ridge search found, and how many candidate points it checked.
 #[derive(Debug, Clone)]
