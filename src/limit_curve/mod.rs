@@ -25,15 +25,16 @@ use crate::limit_states::{search_after, LimitStates};
 use crate::settings::Settings;
 use crate::statics::{internal_forces, Reactions};
 
+mod boundary;
 mod onset;
 mod sample;
-mod tracer;
 mod transition;
 
 use crate::search::RootGuess;
 pub use crate::threads::available as available_threads;
+pub use boundary::{Corner, Shape, Side, ThicknessLimit};
+use boundary::{Sample, Tracer};
 pub use sample::{mu_grid, sample, CurvePoint};
-use tracer::{Sample, Tracer};
 
 /// A branch of the limit curve: an interval of μ with one active pattern.
 #[derive(Debug, Clone)]
@@ -50,37 +51,6 @@ pub struct Branch {
     pub eta_max: f64,
     /// A representative pattern (from the middle of the branch).
     pub pattern: Vec<Contact>,
-}
-
-/// A point of the static boundary η_s(μ) where the active pattern changes: a corner
-/// (`kink`: the one-sided slopes differ) or a smooth transition (they agree).
-#[derive(Debug, Clone)]
-pub struct Corner {
-    /// Friction coefficient (∞ for the asymptote of a branch).
-    pub mu: f64,
-    /// Thickness ratio.
-    pub eta: f64,
-    /// Reactions of the corner state.
-    pub x: Reactions,
-    /// Whether η_s(μ) has a kink here (the one-sided slopes differ by more than
-    /// `settings.kink_slope_rel` of their size).
-    pub kink: bool,
-    /// dη_s/dμ on the side of smaller μ (−∞ at the vertical purely-sliding branch; NaN
-    /// where not defined, at μ = ∞).
-    pub slope_left: f64,
-    /// dη_s/dμ on the side of larger μ (NaN at μ = ∞).
-    pub slope_right: f64,
-    /// Every active contact at the corner, by increasing β.
-    pub joints: Vec<Contact>,
-    /// The modes of the branches it joins: [higher μ, lower μ].
-    pub between: [CollapseMode; 2],
-    /// The mode named from the corner's own active pattern (e.g.
-    /// `rotational_sliding_shoulders` where a springing hinges and slides at once).
-    pub mode: CollapseMode,
-    /// True when located by Newton and verified; false when only bracketed in μ.
-    pub exact: bool,
-    /// Scaled Newton residual (0 for a corner at infinity).
-    pub residual: f64,
 }
 
 /// When the infinite-friction state overturns (no finite μ_rm), the curve is sampled up to
@@ -132,21 +102,6 @@ pub struct LimitCurve {
     /// purely-sliding corner within 0 < η < 2, and this μ is the least friction at which
     /// the arch stands.
     pub thickness_limit: Option<ThicknessLimit>,
-}
-
-/// The end of the static boundary at the thickness limit (see
-/// [`LimitCurve::thickness_limit`]).
-#[derive(Debug, Clone)]
-pub struct ThicknessLimit {
-    /// Friction coefficient where η_s reaches the limit.
-    pub mu: f64,
-    /// η there (`ETA_TOP`, just below 2).
-    pub eta: f64,
-    /// The lowest branch's pattern there.
-    pub pattern: Vec<Contact>,
-    /// True when located along the branch by root finding (to adjacent floats in μ);
-    /// false when bracketed by bisection on the solver's status.
-    pub exact: bool,
 }
 
 impl LimitCurve {
@@ -223,18 +178,20 @@ pub fn trace_parallel(arch: &Arch, settings: &Settings, threads: usize) -> Limit
     // the top: a finite pattern different from the infinite-friction one is asymptotic
     if let (Some(top), Some(inf)) = (samples.first(), inf.as_ref()) {
         if top.sig != inf.sig {
+            let side = |mode| Side {
+                mode,
+                slope: f64::NAN,
+            };
+            let mode = tr.mode_of(&inf.pattern);
             changes.push(Corner {
                 mu: f64::INFINITY,
-                eta: inf.eta,
+                t: inf.eta,
                 x: inf.x,
-                kink: false,
-                slope_left: f64::NAN,
-                slope_right: f64::NAN,
-                joints: inf.pattern.clone(),
-                between: [tr.mode_of(&top.pattern), tr.mode_of(&inf.pattern)],
-                mode: tr.mode_of(&inf.pattern),
+                pattern: inf.pattern.clone(),
                 exact: true,
                 residual: 0.0,
+                sides: [side(mode), side(tr.mode_of(&top.pattern))],
+                detail: Shape { kink: false, mode },
             });
         }
     }
@@ -259,7 +216,7 @@ pub fn trace_parallel(arch: &Arch, settings: &Settings, threads: usize) -> Limit
         limit_branches(&tr, searched_samples.into_iter().zip(searches));
     let mut unresolved = tr.unresolved.clone();
     unresolved.extend(incomplete);
-    let (corners, transitions) = changes.into_iter().partition(|c| c.kink);
+    let (corners, transitions) = changes.into_iter().partition(|c| c.detail.kink);
     LimitCurve {
         mu_ms: Some(fl.mu),
         branches,
@@ -406,23 +363,33 @@ fn lowest_end(
         .union_newton(&low.pattern, &fl.pattern, start, range, between, true)
         .or_else(|| tr.follow_to_mu_ms(low, fl.mu, between))
         .map(|mut c| {
-            c.kink = true;
+            c.detail.kink = true;
             c
         })
         .unwrap_or_else(|| {
             let slope = tr.slope(low.mu, low.eta, 1.0).0;
+            let sliding = CollapseMode::PurelySliding;
             Corner {
                 mu: fl.mu,
-                eta: low.eta,
+                t: low.eta,
                 x: low.x,
-                kink: true,
-                slope_left: f64::NEG_INFINITY,
-                slope_right: slope,
-                joints: fl.pattern.clone(),
-                between,
-                mode: CollapseMode::PurelySliding,
+                pattern: fl.pattern.clone(),
                 exact: false,
                 residual: f64::NAN,
+                sides: [
+                    Side {
+                        mode: sliding,
+                        slope: f64::NEG_INFINITY,
+                    },
+                    Side {
+                        mode: between[0],
+                        slope,
+                    },
+                ],
+                detail: Shape {
+                    kink: true,
+                    mode: sliding,
+                },
             }
         });
     (None, Some(c))
@@ -455,8 +422,8 @@ fn branches_between(
             None if upper.0.is_finite() => tr.sample_near(
                 (upper.0 * c.mu).sqrt(),
                 Some(RootGuess {
-                    eta: 0.5 * (upper.1 + c.eta),
-                    rel: ((upper.1 - c.eta).abs() / (0.5 * (upper.1 + c.eta))).max(1e-6),
+                    eta: 0.5 * (upper.1 + c.t),
+                    rel: ((upper.1 - c.t).abs() / (0.5 * (upper.1 + c.t))).max(1e-6),
                 }),
             ),
             None => None,
@@ -467,11 +434,11 @@ fn branches_between(
                 mu_min: c.mu,
                 mu_max: upper.0,
                 eta_min: upper.1,
-                eta_max: c.eta,
+                eta_max: c.t,
                 pattern: rep.pattern.clone(),
             });
         }
-        upper = (c.mu, c.eta);
+        upper = (c.mu, c.t);
     }
     if let (Some(t), Some(low)) = (thickness_limit, samples.last()) {
         branches.push(Branch {
@@ -487,7 +454,7 @@ fn branches_between(
             mode: CollapseMode::PurelySliding,
             mu_min: fl.mu,
             mu_max: fl.mu,
-            eta_min: last.eta,
+            eta_min: last.t,
             eta_max: f64::INFINITY,
             pattern: fl.pattern.clone(),
         });
@@ -513,7 +480,7 @@ fn limit_branches<'a>(
     tr: &Tracer,
     samples: impl Iterator<Item = (&'a Sample, Result<LimitStates, String>)>,
 ) -> (Vec<LimitBranch>, Vec<(f64, String)>) {
-    let mut open: Vec<(tracer::Signature, LimitBranch, bool)> = Vec::new();
+    let mut open: Vec<(boundary::Signature, LimitBranch, bool)> = Vec::new();
     let mut done: Vec<LimitBranch> = Vec::new();
     let mut incomplete = Vec::new();
     for (s, search) in samples {
@@ -531,7 +498,7 @@ fn limit_branches<'a>(
             o.2 = false;
         }
         for st in above {
-            let sig = tracer::signature(tr.arch, &st.pattern);
+            let sig = boundary::signature(tr.arch, &st.pattern);
             let mode = tr.mode_of(&st.pattern);
             match open
                 .iter_mut()
