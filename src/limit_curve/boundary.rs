@@ -53,9 +53,9 @@ impl Corner {
     }
 }
 
-/// The corner of a branch's pattern `between` = [higher μ, lower μ] modes, with the
-/// one-sided slopes `[lower, upper]`.
-fn corner(
+/// The change at `at` between the branches of modes `between` = [higher μ, lower μ], with
+/// the one-sided slopes `[lower, upper]`.
+pub(super) fn corner(
     at: Located,
     exact: bool,
     slopes: [f64; 2],
@@ -80,6 +80,19 @@ fn corner(
             },
         ],
         detail: shape,
+    }
+}
+
+impl Located {
+    /// The state of the boundary sample `s` (its η, reactions and pattern) placed at `mu`.
+    pub(super) fn at(mu: f64, s: &Sample, residual: f64) -> Located {
+        Located {
+            mu,
+            eta: s.eta,
+            x: s.x,
+            pattern: s.pattern.clone(),
+            residual,
+        }
     }
 }
 
@@ -262,12 +275,8 @@ impl<'a> Tracer<'a> {
         active
     }
 
-    /// The boundary at μ; what is not a boundary point is recorded by kind.
-    pub(super) fn sample(&mut self, mu: f64) -> Option<Sample> {
-        self.sample_near(mu, None)
-    }
-
-    /// [`Tracer::sample`] with η_s expected near `guess` (the bracket starts there).
+    /// The boundary at μ, η_s expected near `guess` (the bracket starts there); what is
+    /// not a boundary point is recorded by kind.
     pub(super) fn sample_near(&mut self, mu: f64, guess: Option<RootGuess>) -> Option<Sample> {
         match self.boundary(mu, guess).map_err(|e| *e) {
             Ok(s) => Some(s),
@@ -625,7 +634,7 @@ impl tracer::Problem for Tracer<'_> {
     }
 
     fn sample(&mut self, mu: f64, a: &Sample, b: &Sample) -> Result<Option<Sample>, Infallible> {
-        Ok(self.sample_near(mu, Some(between_samples(a, b))))
+        Ok(self.sample_near(mu, Some(between(a.eta, b.eta))))
     }
 
     fn exact(&mut self, a: &Sample, b: &Sample) -> Option<Corner> {
@@ -651,11 +660,8 @@ impl tracer::Problem for Tracer<'_> {
             self.slope(a.mu, a.eta, 1.0).0,
         );
         let at = Located {
-            mu: (a.mu * b.mu).sqrt(),
             eta: 0.5 * (a.eta + b.eta),
-            x: b.x,
-            pattern: b.pattern.clone(),
-            residual: f64::NAN,
+            ..Located::at((a.mu * b.mu).sqrt(), b, f64::NAN)
         };
         let shape = Shape {
             kink: self.is_kink(lower, upper, at.eta, at.mu),
@@ -701,12 +707,12 @@ impl tracer::Problem for Tracer<'_> {
     }
 }
 
-/// Where η_s is expected between two samples of the boundary: their mean, within their
-/// difference (at least 10⁻⁶ of it).
-pub(super) fn between_samples(a: &Sample, b: &Sample) -> RootGuess {
-    let eta = 0.5 * (a.eta + b.eta);
+/// Where η_s is expected between two points of the boundary at η `a` and `b`: their mean,
+/// within their difference (at least 10⁻⁶ of it).
+pub(super) fn between(a: f64, b: f64) -> RootGuess {
+    let eta = 0.5 * (a + b);
     RootGuess {
         eta,
-        rel: ((a.eta - b.eta).abs() / eta).max(1e-6),
+        rel: ((a - b).abs() / eta).max(1e-6),
     }
 }

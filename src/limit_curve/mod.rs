@@ -32,9 +32,10 @@ mod transition;
 
 use crate::search::RootGuess;
 pub use crate::threads::available as available_threads;
+use boundary::{corner, Sample, Tracer};
 pub use boundary::{Corner, Shape, Side, ThicknessLimit};
-use boundary::{Sample, Tracer};
 pub use sample::{mu_grid, sample, CurvePoint};
+use transition::Located;
 
 /// A branch of the limit curve: an interval of μ with one active pattern.
 #[derive(Debug, Clone)]
@@ -162,7 +163,7 @@ pub fn trace_parallel(arch: &Arch, settings: &Settings, threads: usize) -> Limit
     let Some(fl) = fl else {
         return without_branches(tr, None, 0);
     };
-    let inf = tr.sample(f64::INFINITY);
+    let inf = tr.sample_near(f64::INFINITY, None);
     if inf.is_none() && tr.no_equilibrium.len() == 1 {
         // Admissibility is monotone in μ: if nothing stands at μ = ∞, nothing stands.
         if let Ok(Outcome::NoEquilibrium { .. }) =
@@ -178,21 +179,11 @@ pub fn trace_parallel(arch: &Arch, settings: &Settings, threads: usize) -> Limit
     // the top: a finite pattern different from the infinite-friction one is asymptotic
     if let (Some(top), Some(inf)) = (samples.first(), inf.as_ref()) {
         if top.sig != inf.sig {
-            let side = |mode| Side {
-                mode,
-                slope: f64::NAN,
-            };
+            let at = Located::at(f64::INFINITY, inf, 0.0);
             let mode = tr.mode_of(&inf.pattern);
-            changes.push(Corner {
-                mu: f64::INFINITY,
-                t: inf.eta,
-                x: inf.x,
-                pattern: inf.pattern.clone(),
-                exact: true,
-                residual: 0.0,
-                sides: [side(mode), side(tr.mode_of(&top.pattern))],
-                detail: Shape { kink: false, mode },
-            });
+            let between = [tr.mode_of(&top.pattern), mode];
+            let shape = Shape { kink: false, mode };
+            changes.push(corner(at, true, [f64::NAN; 2], between, shape));
         }
     }
     changes.extend(locate_changes(&mut tr, &samples, threads));
@@ -367,30 +358,13 @@ fn lowest_end(
             c
         })
         .unwrap_or_else(|| {
-            let slope = tr.slope(low.mu, low.eta, 1.0).0;
-            let sliding = CollapseMode::PurelySliding;
-            Corner {
-                mu: fl.mu,
-                t: low.eta,
-                x: low.x,
+            let slopes = [f64::NEG_INFINITY, tr.slope(low.mu, low.eta, 1.0).0];
+            let at = Located {
                 pattern: fl.pattern.clone(),
-                exact: false,
-                residual: f64::NAN,
-                sides: [
-                    Side {
-                        mode: sliding,
-                        slope: f64::NEG_INFINITY,
-                    },
-                    Side {
-                        mode: between[0],
-                        slope,
-                    },
-                ],
-                detail: Shape {
-                    kink: true,
-                    mode: sliding,
-                },
-            }
+                ..Located::at(fl.mu, low, f64::NAN)
+            };
+            let mode = CollapseMode::PurelySliding;
+            corner(at, false, slopes, between, Shape { kink: true, mode })
         });
     (None, Some(c))
 }
@@ -421,10 +395,7 @@ fn branches_between(
             Some(r) => Some(r.clone()),
             None if upper.0.is_finite() => tr.sample_near(
                 (upper.0 * c.mu).sqrt(),
-                Some(RootGuess {
-                    eta: 0.5 * (upper.1 + c.t),
-                    rel: ((upper.1 - c.t).abs() / (0.5 * (upper.1 + c.t))).max(1e-6),
-                }),
+                Some(boundary::between(upper.1, c.t)),
             ),
             None => None,
         };

@@ -412,7 +412,6 @@ const KNOWN_CIRCLES: &[(&str, &str, &str)] = &[
     ("cli", "plot.rs", "mod.rs"),               // TODO: circle to remove
     ("cli", "serve.rs", "mod.rs"),              // TODO: circle to remove
     ("cli", "solve.rs", "mod.rs"),              // TODO: circle to remove
-    ("limit_curve", "tracer.rs", "mod.rs"),     // TODO: circle to remove
     ("limit_states", "ridge/", "mod.rs"),       // TODO: circle to remove
     ("lp", "dense.rs", "mod.rs"),               // TODO: circle to remove
     ("lp", "highs.rs", "mod.rs"),               // TODO: circle to remove
