@@ -72,6 +72,7 @@ pub mod settings;
 pub mod state;
 pub mod statics;
 pub mod threads;
+pub mod tracer;
 pub mod undecided;
 
 pub use arch::{Arch, InputError, JointLayout, Radians, WeightModel};

@@ -114,18 +114,18 @@ fn sample(
         .corners
         .iter()
         .filter(|c| c.mu.is_finite())
-        .map(|c| (c.mu, c.eta))
+        .map(|c| (c.mu, c.t))
         .collect();
     let asymptote = curve
         .transitions
         .iter()
         .find(|c| c.mu.is_infinite())
-        .map(|c| c.eta);
+        .map(|c| c.t);
     let transitions = curve
         .transitions
         .iter()
         .filter(|c| c.mu.is_finite())
-        .map(|c| (c.mu, c.eta))
+        .map(|c| (c.mu, c.t))
         .collect();
     // limit states above η_s: each limit branch searched again at up to five μ across
     // its sampled range (one where it was seen at one sample only)

@@ -26,15 +26,17 @@ use crate::settings::Settings;
 use crate::statics::{internal_forces, Reactions};
 use crate::undecided::Undecided;
 
+mod boundary;
 mod onset;
 mod sample;
-mod tracer;
 mod transition;
 
 use crate::search::RootGuess;
 pub use crate::threads::available as available_threads;
+use boundary::{corner, Sample, Tracer};
+pub use boundary::{Corner, Shape, Side, ThicknessLimit};
 pub use sample::{mu_grid, sample, CurvePoint};
-use tracer::{Sample, Tracer};
+use transition::Located;
 
 /// A branch of the limit curve: an interval of μ with one active pattern.
 #[derive(Debug, Clone)]
@@ -51,37 +53,6 @@ pub struct Branch {
     pub eta_max: f64,
     /// A representative pattern (from the middle of the branch).
     pub pattern: Vec<Contact>,
-}
-
-/// A point of the static boundary η_s(μ) where the active pattern changes: a corner
-/// (`kink`: the one-sided slopes differ) or a smooth transition (they agree).
-#[derive(Debug, Clone)]
-pub struct Corner {
-    /// Friction coefficient (∞ for the asymptote of a branch).
-    pub mu: f64,
-    /// Thickness ratio.
-    pub eta: f64,
-    /// Reactions of the corner state.
-    pub x: Reactions,
-    /// Whether η_s(μ) has a kink here (the one-sided slopes differ by more than
-    /// `settings.kink_slope_rel` of their size).
-    pub kink: bool,
-    /// dη_s/dμ on the side of smaller μ (−∞ at the vertical purely-sliding branch; NaN
-    /// where not defined, at μ = ∞).
-    pub slope_left: f64,
-    /// dη_s/dμ on the side of larger μ (NaN at μ = ∞).
-    pub slope_right: f64,
-    /// Every active contact at the corner, by increasing β.
-    pub joints: Vec<Contact>,
-    /// The modes of the branches it joins: [higher μ, lower μ].
-    pub between: [CollapseMode; 2],
-    /// The mode named from the corner's own active pattern (e.g.
-    /// `rotational_sliding_shoulders` where a springing hinges and slides at once).
-    pub mode: CollapseMode,
-    /// True when located by Newton and verified; false when only bracketed in μ.
-    pub exact: bool,
-    /// Scaled Newton residual (0 for a corner at infinity).
-    pub residual: f64,
 }
 
 /// When the infinite-friction state overturns (no finite μ_rm), the curve is sampled up to
@@ -133,21 +104,6 @@ pub struct LimitCurve {
     /// purely-sliding corner within 0 < η < 2, and this μ is the least friction at which
     /// the arch stands.
     pub thickness_limit: Option<ThicknessLimit>,
-}
-
-/// The end of the static boundary at the thickness limit (see
-/// [`LimitCurve::thickness_limit`]).
-#[derive(Debug, Clone)]
-pub struct ThicknessLimit {
-    /// Friction coefficient where η_s reaches the limit.
-    pub mu: f64,
-    /// η there (`ETA_TOP`, just below 2).
-    pub eta: f64,
-    /// The lowest branch's pattern there.
-    pub pattern: Vec<Contact>,
-    /// True when located along the branch by root finding (to adjacent floats in μ);
-    /// false when bracketed by bisection on the solver's status.
-    pub exact: bool,
 }
 
 impl LimitCurve {
@@ -208,7 +164,7 @@ pub fn trace_parallel(arch: &Arch, settings: &Settings, threads: usize) -> Limit
     let Some(fl) = fl else {
         return without_branches(tr, None, 0);
     };
-    let inf = tr.sample(f64::INFINITY);
+    let inf = tr.sample_near(f64::INFINITY, None);
     if inf.is_none() && tr.no_equilibrium.len() == 1 {
         // Admissibility is monotone in μ: if nothing stands at μ = ∞, nothing stands.
         if let Ok(Outcome::NoEquilibrium { .. }) =
@@ -224,19 +180,11 @@ pub fn trace_parallel(arch: &Arch, settings: &Settings, threads: usize) -> Limit
     // the top: a finite pattern different from the infinite-friction one is asymptotic
     if let (Some(top), Some(inf)) = (samples.first(), inf.as_ref()) {
         if top.sig != inf.sig {
-            changes.push(Corner {
-                mu: f64::INFINITY,
-                eta: inf.eta,
-                x: inf.x,
-                kink: false,
-                slope_left: f64::NAN,
-                slope_right: f64::NAN,
-                joints: inf.pattern.clone(),
-                between: [tr.mode_of(&top.pattern), tr.mode_of(&inf.pattern)],
-                mode: tr.mode_of(&inf.pattern),
-                exact: true,
-                residual: 0.0,
-            });
+            let at = Located::at(f64::INFINITY, inf, 0.0);
+            let mode = tr.mode_of(&inf.pattern);
+            let between = [tr.mode_of(&top.pattern), mode];
+            let shape = Shape { kink: false, mode };
+            changes.push(corner(at, true, [f64::NAN; 2], between, shape));
         }
     }
     changes.extend(locate_changes(&mut tr, &samples, threads));
@@ -260,7 +208,7 @@ pub fn trace_parallel(arch: &Arch, settings: &Settings, threads: usize) -> Limit
         limit_branches(&tr, searched_samples.into_iter().zip(searches));
     let mut unresolved = tr.unresolved.clone();
     unresolved.extend(incomplete);
-    let (corners, transitions) = changes.into_iter().partition(|c| c.kink);
+    let (corners, transitions) = changes.into_iter().partition(|c| c.detail.kink);
     LimitCurve {
         mu_ms: Some(fl.mu),
         branches,
@@ -407,24 +355,17 @@ fn lowest_end(
         .union_newton(&low.pattern, &fl.pattern, start, range, between, true)
         .or_else(|| tr.follow_to_mu_ms(low, fl.mu, between))
         .map(|mut c| {
-            c.kink = true;
+            c.detail.kink = true;
             c
         })
         .unwrap_or_else(|| {
-            let slope = tr.slope(low.mu, low.eta, 1.0).0;
-            Corner {
-                mu: fl.mu,
-                eta: low.eta,
-                x: low.x,
-                kink: true,
-                slope_left: f64::NEG_INFINITY,
-                slope_right: slope,
-                joints: fl.pattern.clone(),
-                between,
-                mode: CollapseMode::PurelySliding,
-                exact: false,
-                residual: f64::NAN,
-            }
+            let slopes = [f64::NEG_INFINITY, tr.slope(low.mu, low.eta, 1.0).0];
+            let at = Located {
+                pattern: fl.pattern.clone(),
+                ..Located::at(fl.mu, low, f64::NAN)
+            };
+            let mode = CollapseMode::PurelySliding;
+            corner(at, false, slopes, between, Shape { kink: true, mode })
         });
     (None, Some(c))
 }
@@ -455,10 +396,7 @@ fn branches_between(
             Some(r) => Some(r.clone()),
             None if upper.0.is_finite() => tr.sample_near(
                 (upper.0 * c.mu).sqrt(),
-                Some(RootGuess {
-                    eta: 0.5 * (upper.1 + c.eta),
-                    rel: ((upper.1 - c.eta).abs() / (0.5 * (upper.1 + c.eta))).max(1e-6),
-                }),
+                Some(boundary::between(upper.1, c.t)),
             ),
             None => None,
         };
@@ -468,11 +406,11 @@ fn branches_between(
                 mu_min: c.mu,
                 mu_max: upper.0,
                 eta_min: upper.1,
-                eta_max: c.eta,
+                eta_max: c.t,
                 pattern: rep.pattern.clone(),
             });
         }
-        upper = (c.mu, c.eta);
+        upper = (c.mu, c.t);
     }
     if let (Some(t), Some(low)) = (thickness_limit, samples.last()) {
         branches.push(Branch {
@@ -488,7 +426,7 @@ fn branches_between(
             mode: CollapseMode::PurelySliding,
             mu_min: fl.mu,
             mu_max: fl.mu,
-            eta_min: last.eta,
+            eta_min: last.t,
             eta_max: f64::INFINITY,
             pattern: fl.pattern.clone(),
         });
@@ -514,7 +452,7 @@ fn limit_branches<'a>(
     tr: &Tracer,
     samples: impl Iterator<Item = (&'a Sample, Result<LimitStates, Undecided>)>,
 ) -> (Vec<LimitBranch>, Vec<(f64, String)>) {
-    let mut open: Vec<(tracer::Signature, LimitBranch, bool)> = Vec::new();
+    let mut open: Vec<(boundary::Signature, LimitBranch, bool)> = Vec::new();
     let mut done: Vec<LimitBranch> = Vec::new();
     let mut incomplete = Vec::new();
     for (s, search) in samples {
@@ -532,7 +470,7 @@ fn limit_branches<'a>(
             o.2 = false;
         }
         for st in above {
-            let sig = tracer::signature(tr.arch, &st.pattern);
+            let sig = boundary::signature(tr.arch, &st.pattern);
             let mode = tr.mode_of(&st.pattern);
             match open
                 .iter_mut()

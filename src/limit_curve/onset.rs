@@ -8,22 +8,13 @@
 //! the union of two patterns this needs no square system (a three-contact KKT pattern
 //! plus one contact is not one), and it does not converge to a point of the other branch.
 
+use super::transition::Located;
 use crate::arch::Arch;
 use crate::contact::{Contact, ContactKind, Location};
 use crate::refine::{solve_system, Unknowns};
 use crate::settings::Settings;
 use crate::state::State;
 use crate::statics::{magnitude, Reactions};
-
-/// The state of a branch at one μ.
-#[derive(Debug, Clone)]
-pub(super) struct OnBranch {
-    pub(super) mu: f64,
-    pub(super) eta: f64,
-    pub(super) x: Reactions,
-    /// The branch's pattern with its angles at μ, plus the contact that became active.
-    pub(super) pattern: Vec<Contact>,
-}
 
 /// The branch of `pattern` (least state (x, η) at μ₀) followed to μ; `None` when Newton
 /// does not converge.
@@ -149,7 +140,7 @@ pub(super) fn locate(
     from: (Reactions, f64, f64),
     far_mu: f64,
     settings: &Settings,
-) -> Option<OnBranch> {
+) -> Option<Located> {
     let g = |x: Reactions, eta: f64, mu: f64| {
         peak_value(arch, joining, (x, eta, mu), settings).map(|p| p.0)
     };
@@ -166,11 +157,12 @@ pub(super) fn locate(
         ..contact
     });
     cs.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.kind.cmp(&b.kind)));
-    Some(OnBranch {
+    Some(Located {
         mu,
         eta,
         x,
         pattern: cs,
+        residual: 0.0,
     })
 }
 
@@ -184,7 +176,7 @@ pub(super) fn reach_eta(
     far_mu: f64,
     eta_top: f64,
     settings: &Settings,
-) -> Option<OnBranch> {
+) -> Option<Located> {
     // past the thickness limit, or no longer the boundary (another contact violated: the
     // Newton continuation of the pattern is then not the least state), counts as beyond
     let g = |x: Reactions, eta: f64, mu: f64| {
@@ -200,10 +192,11 @@ pub(super) fn reach_eta(
     if (eta - eta_top).abs() > settings.boundary_match * eta_top {
         return None; // the branch ended before the limit: another pattern change
     }
-    Some(OnBranch {
+    Some(Located {
         mu,
         eta,
         x,
         pattern: cs,
+        residual: 0.0,
     })
 }

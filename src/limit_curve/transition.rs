@@ -45,14 +45,16 @@ pub(super) enum Extra {
     },
 }
 
-/// A located smooth change: the state on the boundary where it happens.
+/// A located change (smooth, an onset, a corner): the state on the boundary where it
+/// happens.
 #[derive(Debug, Clone)]
 pub(super) struct Located {
     pub(super) mu: f64,
     pub(super) eta: f64,
     pub(super) x: Reactions,
-    /// The pattern with its refined angles.
+    /// The pattern with its refined angles (an onset's: plus the contact that joins).
     pub(super) pattern: Vec<Contact>,
+    /// Scaled Newton residual (0 for an onset, located by regula falsi).
     pub(super) residual: f64,
 }
 

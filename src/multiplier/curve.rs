@@ -1,6 +1,7 @@
 //! The λ–μ curve at fixed η: the answer of [`survey`] at sampled friction coefficients, and
 //! its **corners** — the friction coefficients where the collapse pattern changes — located
-//! by bisection on the answer itself down to adjacent floating-point numbers in μ.
+//! by bisection on the answer itself down to adjacent floating-point numbers in μ (the load
+//! problem's part of the [`crate::tracer`]).
 //!
 //! A *branch* is a range of μ on which the least limit state keeps its pattern (contacts,
 //! kinds, sides of a loaded section; the tangency angles of a continuous arch move with μ),
@@ -22,6 +23,7 @@ use crate::load::{rows, LiveLoad, LoadRow, Side};
 use crate::refine::{self, Objective, Start, Unknowns};
 use crate::settings::Settings;
 use crate::statics::{magnitude, Reactions};
+use crate::tracer::{self, Split};
 use crate::undecided::Undecided;
 
 /// One sample of the λ–μ curve: μ and the answer there (`Err`: no decision, why).
@@ -107,72 +109,65 @@ pub fn branch_key(
     BranchKey::Collapse { pattern, at_static }
 }
 
-/// A corner of the λ–μ curve: the branch changes between two friction coefficients.
-#[derive(Debug, Clone)]
-pub struct Corner {
-    /// The sample just below the corner (μ and the answer).
-    pub below: CurveSample,
-    /// The sample just above (μ and the answer; μ = ∞ when the last branch is the
-    /// associative one itself).
-    pub above: CurveSample,
+/// A corner of the λ–μ curve (`t` is λ): the branch changes between two friction
+/// coefficients. Its sides are the samples just below and just above (μ and the answer;
+/// μ = ∞ above when the last branch is the associative one itself). It is `exact` where the
+/// branches on both sides meet at one degenerate state: five activation functions vanish
+/// at one state (x, λ) at one friction coefficient μ (five equations in h, v, w, λ, μ),
+/// solved by Newton from the bisection's state and checked admissible at every joint (the
+/// survey's active-set tolerance makes such a meeting look like a narrow band of μ,
+/// relative width ~1e-8, where all five contacts appear active; this is its exact point).
+/// Its pattern is then the five contacts active there (with the side of a loaded section),
+/// or the four sliding ones of two faces of states along w at λ_static (w is then the
+/// middle of the face at the corner). Where the change is not such a meeting (or not on a
+/// discrete arch) the bracket is the answer: μ is its lower end, λ NaN, the pattern empty.
+pub type Corner = tracer::Corner<CurveSample, (Contact, Side), Bracket>;
+
+/// How a [`Corner`] of the λ–μ curve was bracketed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Bracket {
     /// Whether the bisection ended on neighbouring floats (false: it stopped at its
     /// evaluation budget).
     pub bracketed: bool,
-    /// The corner solved exactly, where the branches on both sides meet at one degenerate
-    /// state (see [`ExactCorner`]); `None` where the change is not such a meeting (or not on
-    /// a discrete arch): then the bracket is the answer.
-    pub exact: Option<ExactCorner>,
     /// How many changes of branch the bisection bracketed here: 1 for a simple corner;
     /// more for a cluster (changes within `CLUSTER_REL` of each other), which is one
-    /// exact corner seen through the survey's tolerance, or — without `exact` — a stretch
+    /// exact corner seen through the survey's tolerance, or — when not exact — a stretch
     /// where the answer flickers (near a singularity, e.g. λ growing without bound), whose
-    /// ends are `below` and `above`.
+    /// ends are the sides.
     pub changes: usize,
-}
-
-/// A corner at which the patterns on both sides are active at once: five activation
-/// functions vanish at one state (x, λ) at one friction coefficient μ (five equations in
-/// h, v, w, λ, μ), solved by Newton from the bisection's state and checked admissible at
-/// every joint. The survey's active-set tolerance makes such a meeting look like a narrow
-/// band of μ (relative width ~1e-8) where all five contacts appear active; this is its
-/// exact point.
-#[derive(Debug, Clone)]
-pub struct ExactCorner {
-    /// The friction coefficient.
-    pub mu: f64,
-    /// The multiplier.
-    pub lambda: f64,
-    /// Reactions.
-    pub x: Reactions,
-    /// The five contacts active there (with the side of a loaded section), or the four
-    /// sliding ones of two faces of states along w at λ_static (w is then the middle of
-    /// the face at the corner).
-    pub pattern: Vec<(Contact, Side)>,
-    /// λ is continuous across the corner: each side's least limit state is on these five
-    /// contacts, or its λ is the corner's to `SAME_LAMBDA` (else a limit state appears or
-    /// vanishes there and λ jumps).
+    /// At an exact corner, λ is continuous across it: each side's least limit state is on
+    /// its five contacts, or its λ is the corner's to `SAME_LAMBDA` (else a limit state
+    /// appears or vanishes there and λ jumps).
     pub continuous: bool,
 }
 
 impl Corner {
+    /// The sample just below the corner.
+    pub fn below(&self) -> &CurveSample {
+        &self.sides[0]
+    }
+    /// The sample just above the corner.
+    pub fn above(&self) -> &CurveSample {
+        &self.sides[1]
+    }
     /// The collapse multipliers on both sides, when both exist.
     pub fn lambdas(&self) -> (Option<f64>, Option<f64>) {
         let l = |a: &Result<LoadOutcome, Undecided>| match a {
             Ok(LoadOutcome::Limits(sv)) => sv.lambda(),
             _ => None,
         };
-        (l(&self.below.1), l(&self.above.1))
+        (l(&self.sides[0].1), l(&self.sides[1].1))
     }
     /// λ is continuous across the corner: at an exact corner, both sides' least limit
     /// states lie on its five contacts; else both sides have a collapse multiplier, equal to
     /// `tol` relative (the bracket is then two neighbouring floats), or to `SAME_LAMBDA` at
     /// least across a cluster.
     pub fn continuous(&self, tol: f64) -> bool {
-        if let Some(e) = &self.exact {
-            return e.continuous;
+        if self.exact {
+            return self.detail.continuous;
         }
         // a cluster spans the survey's tolerance band (~1e-8 in μ), across which λ moves
-        let tol = if self.changes > 1 {
+        let tol = if self.detail.changes > 1 {
             tol.max(SAME_LAMBDA)
         } else {
             tol
@@ -181,6 +176,24 @@ impl Corner {
             (Some(a), Some(b)) => (a - b).abs() <= tol * a.abs().max(b.abs()).max(1.0),
             _ => false,
         }
+    }
+}
+
+/// A change known only to lie between the samples `below` and `above`.
+fn bracket(below: CurveSample, above: CurveSample, bracketed: bool, changes: usize) -> Corner {
+    Corner {
+        mu: below.0,
+        t: f64::NAN,
+        x: [f64::NAN; 3],
+        pattern: Vec::new(),
+        exact: false,
+        residual: f64::NAN,
+        sides: [below, above],
+        detail: Bracket {
+            bracketed,
+            changes,
+            continuous: false,
+        },
     }
 }
 
@@ -200,6 +213,93 @@ const MAX_CORNERS: usize = 64;
 /// The search for the last corner below μ = ∞ stops at this friction coefficient.
 const LARGE_MU: f64 = 1e12;
 
+/// The load problem's part of the tracer: the answer of [`survey`] at one (η, load),
+/// keyed by [`branch_key`], bisected on the key to neighbouring floats within a budget of
+/// evaluations; the exact corner is solved afterwards, per cluster of changes.
+struct Bisection<'a> {
+    arch: &'a Arch,
+    eta: f64,
+    load: &'a LiveLoad,
+    settings: &'a Settings,
+    /// Survey evaluations left for the current bracket of two samples.
+    budget: usize,
+    /// Corners bracketed so far in the current list.
+    found: usize,
+}
+
+impl Bisection<'_> {
+    fn at(&self, mu: f64) -> Result<CurveSample, InputError> {
+        Ok((
+            mu,
+            survey(self.arch, self.eta, mu, self.load, self.settings)?,
+        ))
+    }
+
+    /// A finite μ on the associative branch of `inf` above `lo`: μ_lo × 10^k up to
+    /// `LARGE_MU`, else (`Err`) the last sample tried.
+    fn associative(
+        &self,
+        lo: &CurveSample,
+        inf: &CurveSample,
+    ) -> Result<Result<CurveSample, CurveSample>, InputError> {
+        use tracer::Problem;
+        let mut last = lo.clone();
+        while last.0 < LARGE_MU {
+            let s = self.at((last.0 * 10.0).min(LARGE_MU))?;
+            if self.key(&s) == self.key(inf) {
+                return Ok(Ok(s));
+            }
+            last = s;
+        }
+        Ok(Err(last))
+    }
+}
+
+impl tracer::Problem for Bisection<'_> {
+    type Sample = CurveSample;
+    type Key = BranchKey;
+    type Corner = Corner;
+    type Error = InputError;
+
+    fn key(&self, s: &CurveSample) -> BranchKey {
+        branch_key(self.arch, self.load, &s.1, self.settings)
+    }
+
+    /// The midpoint (geometric while the ends are more than a factor 2 apart), until the
+    /// ends are neighbouring floats, the budget is spent or `MAX_CORNERS` are found.
+    fn split(&mut self, lo: &CurveSample, hi: &CurveSample, _: usize) -> Split {
+        let mid = if hi.0 > 2.0 * lo.0 && lo.0 > 0.0 {
+            (lo.0 * hi.0).sqrt()
+        } else {
+            lo.0 + 0.5 * (hi.0 - lo.0)
+        };
+        let tight = mid <= lo.0 || mid >= hi.0;
+        if tight || self.budget == 0 || self.found >= MAX_CORNERS {
+            return Split::Stop { tight };
+        }
+        self.budget -= 1;
+        Split::At(mid)
+    }
+
+    fn sample(
+        &mut self,
+        mu: f64,
+        _: &CurveSample,
+        _: &CurveSample,
+    ) -> Result<Option<CurveSample>, InputError> {
+        self.at(mu).map(Some)
+    }
+
+    fn exact(&mut self, _: &CurveSample, _: &CurveSample) -> Option<Corner> {
+        None
+    }
+
+    fn bracketed(&mut self, lo: &CurveSample, hi: &CurveSample, tight: bool) -> Corner {
+        self.found += 1;
+        bracket(lo.clone(), hi.clone(), tight, 1)
+    }
+}
+
 /// The λ–μ curve: the samples at `mus` (sorted by increasing μ, μ = ∞ allowed) and every
 /// corner between two samples on different branches, bisected to neighbouring floats. When
 /// the last finite sample and μ = ∞ differ, the μ above which the answer is the associative
@@ -212,79 +312,67 @@ pub fn trace(
     settings: &Settings,
     progress: &dyn Fn(usize, usize),
 ) -> Result<LoadCurve, InputError> {
+    use tracer::Problem;
     let mut mus = mus.to_vec();
     mus.sort_by(f64::total_cmp);
     mus.dedup();
     let samples = sample(arch, eta, load, &mus, settings, progress)?;
-    let at = |mu: f64| -> Result<CurveSample, InputError> {
-        Ok((mu, survey(arch, eta, mu, load, settings)?))
+    let mut p = Bisection {
+        arch,
+        eta,
+        load,
+        settings,
+        budget: 0,
+        found: 0,
     };
-    let key = |s: &CurveSample| branch_key(arch, load, &s.1, settings);
     let mut corners = Vec::new();
     for w in samples.windows(2) {
         let (lo, hi) = (&w[0], &w[1]);
-        if key(lo) == key(hi) {
+        if p.key(lo) == p.key(hi) {
             continue;
         }
         let hi = if hi.0.is_finite() {
             hi.clone()
         } else {
-            // a finite μ on the associative branch: μ_last × 10^k
-            let mut found = None;
-            let mut last = lo.clone();
-            while last.0 < LARGE_MU {
-                let s = at((last.0 * 10.0).min(LARGE_MU))?;
-                if key(&s) == key(hi) {
-                    found = Some(s);
-                    break;
-                }
-                last = s;
-            }
-            match found {
-                Some(s) => s,
-                None => {
-                    corners.push(Corner {
-                        below: last,
-                        above: hi.clone(),
-                        bracketed: false,
-                        exact: None,
-                        changes: 1,
-                    });
+            match p.associative(lo, hi)? {
+                Ok(s) => s,
+                Err(last) => {
+                    corners.push(bracket(last, hi.clone(), false, 1));
                     continue;
                 }
             }
         };
-        let mut budget = MAX_EVALUATIONS;
-        let mut found = Vec::new();
-        bisect(lo.clone(), hi.clone(), &at, &key, &mut budget, &mut found)?;
+        (p.budget, p.found) = (MAX_EVALUATIONS, 0);
+        let mut found = tracer::locate(&mut p, lo, &hi, usize::MAX)?;
         // a short branch beside a corner (between the bisection's points) shows 1e-6 away:
         // bracket it too
+        p.found = 0;
         let mut extra = Vec::new();
         for c in &found {
             for (probe, side) in [
-                (c.below.0 * (1.0 - PROBE_REL), &c.below),
-                (c.above.0 * (1.0 + PROBE_REL), &c.above),
+                (c.below().0 * (1.0 - PROBE_REL), c.below()),
+                (c.above().0 * (1.0 + PROBE_REL), c.above()),
             ] {
                 if probe <= lo.0 || probe >= hi.0 {
                     continue;
                 }
-                let p = at(probe)?;
-                if key(&p) != key(side) {
+                let q = p.at(probe)?;
+                if p.key(&q) != p.key(side) {
                     let (a, b) = if probe < side.0 {
-                        (p, side.clone())
+                        (&q, side)
                     } else {
-                        (side.clone(), p)
+                        (side, &q)
                     };
-                    bisect(a, b, &at, &key, &mut budget, &mut extra)?;
+                    extra.extend(tracer::locate(&mut p, a, b, usize::MAX)?);
                 }
             }
         }
         found.extend(extra);
-        found.sort_by(|a, b| a.below.0.total_cmp(&b.below.0));
-        found.dedup_by(|a, b| a.below.0 == b.below.0 && a.above.0 == b.above.0);
-        corners.extend(clusters(arch, eta, load, found, settings));
+        found.sort_by(|a, b| a.below().0.total_cmp(&b.below().0));
+        found.dedup_by(|a, b| a.below().0 == b.below().0 && a.above().0 == b.above().0);
+        corners.extend(clusters(&p, found));
     }
-    corners.sort_by(|a, b| a.below.0.total_cmp(&b.below.0));
+    corners.sort_by(|a, b| a.below().0.total_cmp(&b.below().0));
     Ok(LoadCurve { samples, corners })
 }
 
@@ -306,37 +394,29 @@ const CLUSTER_REL: f64 = 1e-6;
 
 /// Groups the bisected changes of branch into corners: consecutive changes within
 /// `CLUSTER_REL` are one corner, solved exactly where their patterns meet at one degenerate
-/// state (see [`ExactCorner`]).
-fn clusters(
-    arch: &Arch,
-    eta: f64,
-    load: &LiveLoad,
-    found: Vec<Corner>,
-    settings: &Settings,
-) -> Vec<Corner> {
+/// state (see [`Corner`]).
+fn clusters(p: &Bisection, found: Vec<Corner>) -> Vec<Corner> {
     let mut out: Vec<Corner> = Vec::new();
     let mut group: Vec<Corner> = Vec::new();
     let flush = |group: &mut Vec<Corner>, out: &mut Vec<Corner>| {
-        if group.is_empty() {
+        let (Some(first), Some(last)) = (group.first(), group.last()) else {
             return;
-        }
-        let first = group.first().expect("non-empty");
-        let last = group.last().expect("non-empty");
-        let mut inner: Vec<&CurveSample> = vec![&first.below];
-        inner.extend(group.iter().map(|c| &c.above));
-        let exact = exact_corner(arch, eta, load, &inner, settings);
-        out.push(Corner {
-            below: first.below.clone(),
-            above: last.above.clone(),
-            bracketed: group.iter().all(|c| c.bracketed),
-            exact,
-            changes: group.len(),
-        });
+        };
+        let mut inner: Vec<&CurveSample> = vec![first.below()];
+        inner.extend(group.iter().map(|c| c.above()));
+        let bracketed = group.iter().all(|c| c.detail.bracketed);
+        let c = bracket(
+            first.below().clone(),
+            last.above().clone(),
+            bracketed,
+            group.len(),
+        );
+        out.push(exact_corner(p, &inner, &c).unwrap_or(c));
         group.clear();
     };
     for c in found {
         if let Some(prev) = group.last() {
-            if c.below.0 > prev.above.0 + CLUSTER_REL * prev.above.0.abs() {
+            if c.below().0 > prev.above().0 + CLUSTER_REL * prev.above().0.abs() {
                 flush(&mut group, &mut out);
             }
         }
@@ -346,7 +426,6 @@ fn clusters(
     out
 }
 
-/// The least limit state of an answer: (λ, x, pattern with sides).
 /// Contacts with the side of a loaded section.
 type Pattern = Vec<(Contact, Side)>;
 
@@ -369,17 +448,13 @@ fn least(answer: &Result<LoadOutcome, Undecided>) -> Option<LeastState> {
     ))
 }
 
-/// Newton on five activation functions in (h, v, w, λ, μ) — the union of the least limit
-/// states' patterns of `answers` (samples across one corner, by increasing μ) — from the
-/// state of the answer with the most contacts; kept when it converges inside the answers'
-/// μ-range (widened by `CLUSTER_REL`), to a state admissible at every joint.
-fn exact_corner(
-    arch: &Arch,
-    eta: f64,
-    load: &LiveLoad,
-    answers: &[&CurveSample],
-    settings: &Settings,
-) -> Option<ExactCorner> {
+/// The corner `bracket` made exact: Newton on five activation functions in (h, v, w, λ, μ)
+/// — the union of the least limit states' patterns of `answers` (samples across one corner,
+/// by increasing μ) — from the state of the answer with the most contacts; kept when it
+/// converges inside the answers' μ-range (widened by `CLUSTER_REL`), to a state admissible
+/// at every joint.
+fn exact_corner(p: &Bisection, answers: &[&CurveSample], bracket: &Corner) -> Option<Corner> {
+    let (arch, eta, load, settings) = (p.arch, p.eta, p.load, p.settings);
     let JointLayout::Discrete(joints) = arch.layout() else {
         return None;
     };
@@ -476,12 +551,18 @@ fn exact_corner(
     });
     let continuous =
         continuous_at(states.first()?, lambda) && continuous_at(states.last()?, lambda);
-    admissible.then_some(ExactCorner {
+    admissible.then(|| Corner {
         mu,
-        lambda,
+        t: lambda,
         x,
         pattern: union,
-        continuous,
+        exact: true,
+        residual: r.residual,
+        sides: bracket.sides.clone(),
+        detail: Bracket {
+            continuous,
+            ..bracket.detail
+        },
     })
 }
 
@@ -499,47 +580,5 @@ fn centre_w(rows: &[LoadRow], x: &mut Reactions, lambda: f64) {
     }
     if lo.is_finite() && hi.is_finite() && lo <= hi {
         x[2] = 0.5 * (lo + hi);
-    }
-}
-
-/// Brackets every change of branch between `lo` and `hi` (on different branches).
-fn bisect(
-    mut lo: CurveSample,
-    mut hi: CurveSample,
-    at: &dyn Fn(f64) -> Result<CurveSample, InputError>,
-    key: &dyn Fn(&CurveSample) -> BranchKey,
-    budget: &mut usize,
-    corners: &mut Vec<Corner>,
-) -> Result<(), InputError> {
-    let (k_lo, k_hi) = (key(&lo), key(&hi));
-    loop {
-        let mid = if hi.0 > 2.0 * lo.0 && lo.0 > 0.0 {
-            (lo.0 * hi.0).sqrt()
-        } else {
-            lo.0 + 0.5 * (hi.0 - lo.0)
-        };
-        let tight = mid <= lo.0 || mid >= hi.0;
-        if tight || *budget == 0 || corners.len() >= MAX_CORNERS {
-            corners.push(Corner {
-                below: lo,
-                above: hi,
-                bracketed: tight,
-                exact: None,
-                changes: 1,
-            });
-            return Ok(());
-        }
-        *budget -= 1;
-        let m = at(mid)?;
-        let k = key(&m);
-        if k == k_lo {
-            lo = m;
-        } else if k == k_hi {
-            hi = m;
-        } else {
-            // a third branch between: bracket both sides of it
-            bisect(lo, m.clone(), at, key, budget, corners)?;
-            return bisect(m, hi, at, key, budget, corners);
-        }
     }
 }

@@ -85,8 +85,8 @@ fn sequence(curve: &LoadCurve) -> Vec<(Sample, bool)> {
     let mut seq: Vec<(Sample, bool)> = curve.samples.iter().map(|s| (point(s), false)).collect();
     for c in &curve.corners {
         let jump = !c.continuous(CONTINUOUS_TOL);
-        seq.push((point(&c.below), jump));
-        seq.push((point(&c.above), false));
+        seq.push((point(c.below()), jump));
+        seq.push((point(c.above()), false));
     }
     seq.sort_by(|a, b| a.0 .0.total_cmp(&b.0 .0));
     seq
@@ -215,8 +215,8 @@ fn draw_lambda(chart: &mut Chart, mu_ax: &Axis, seq: &[(Sample, bool)]) -> Resul
 fn draw_corners(chart: &mut Chart, mu_ax: &Axis, curve: &LoadCurve) -> Result<(), String> {
     let mut labelled = false;
     for c in &curve.corners {
-        if let (Some(e), true) = (&c.exact, c.above.0.is_finite()) {
-            let (u, l) = (mu_ax.to(e.mu), e.lambda);
+        if c.exact && c.above().0.is_finite() {
+            let (u, l) = (mu_ax.to(c.mu), c.t);
             let drawn = chart
                 .draw_series(std::iter::once(Cross::new(
                     (u, l),
@@ -234,9 +234,9 @@ fn draw_corners(chart: &mut Chart, mu_ax: &Axis, curve: &LoadCurve) -> Result<()
         if let ((Some(a), Some(b)), false, true) = (
             c.lambdas(),
             c.continuous(CONTINUOUS_TOL),
-            c.above.0.is_finite(),
+            c.above().0.is_finite(),
         ) {
-            let u = mu_ax.to(c.exact.as_ref().map_or(c.below.0, |e| e.mu));
+            let u = mu_ax.to(c.mu);
             chart
                 .draw_series(DashedLineSeries::new(
                     vec![(u, a), (u, b)],

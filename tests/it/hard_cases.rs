@@ -163,12 +163,12 @@ fn within_1e_12_of_corners() {
                     Outcome::Limit(ls) => {
                         check_limit_state(&arch, &ls);
                         assert!(
-                            (ls.eta - c.eta).abs() <= 1e-9 * c.eta,
+                            (ls.eta - c.t).abs() <= 1e-9 * c.t,
                             "alpha {alpha} mu {mu}: {} vs corner {}",
                             ls.eta,
-                            c.eta
+                            c.t
                         );
-                        let allowed = [c.between[0], c.between[1], c.mode];
+                        let allowed = [c.between()[0], c.between()[1], c.detail.mode];
                         assert!(
                             allowed.contains(&ls.mode),
                             "alpha {alpha} mu {mu}: mode {:?} not in {allowed:?}",

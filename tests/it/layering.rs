@@ -412,7 +412,6 @@ const KNOWN_CIRCLES: &[(&str, &str, &str)] = &[
     ("cli", "plot.rs", "mod.rs"),               // TODO: circle to remove
     ("cli", "serve.rs", "mod.rs"),              // TODO: circle to remove
     ("cli", "solve.rs", "mod.rs"),              // TODO: circle to remove
-    ("limit_curve", "tracer.rs", "mod.rs"),     // TODO: circle to remove
     ("multiplier", "curve.rs", "mod.rs"),       // TODO: circle to remove
     ("render", "live_load.rs", "table/"),       // TODO: circle to remove
     ("render/json", "assess.rs", "mod.rs"),     // TODO: circle to remove

@@ -581,10 +581,9 @@ fn load_curve_corners_match_the_brute_force() {
             Ok(LoadOutcome::Limits(s)) => s.lambda(),
             _ => None,
         };
-        let at_of =
-            |c: &arch_enum::multiplier::curve::Corner| c.exact.as_ref().map_or(c.below.0, |e| e.mu);
+        let at_of = |c: &arch_enum::multiplier::curve::Corner| c.mu;
         for (ci, c) in curve.corners.iter().enumerate() {
-            if !c.above.0.is_finite() {
+            if !c.above().0.is_finite() {
                 continue;
             }
             // near-unbounded multipliers (reactions ~λ) are beyond the brute force's box
@@ -594,7 +593,7 @@ fn load_curve_corners_match_the_brute_force() {
                 }
                 _ => false,
             };
-            if big(&c.below.1) || big(&c.above.1) {
+            if big(&c.below().1) || big(&c.above().1) {
                 far += 1;
                 continue;
             }
@@ -617,7 +616,10 @@ fn load_curve_corners_match_the_brute_force() {
                 branch_key(&arch, &load, o, &settings)
             };
             let mut reference_sides = Vec::new();
-            for (mu, side) in [(c.below.0 - delta, &c.below), (c.above.0 + delta, &c.above)] {
+            for (mu, side) in [
+                (c.below().0 - delta, c.below()),
+                (c.above().0 + delta, c.above()),
+            ] {
                 let o = survey(&arch, eta, mu, &load, &settings).unwrap();
                 if o.is_err() || side.1.is_err() {
                     continue;
@@ -651,27 +653,31 @@ fn load_curve_corners_match_the_brute_force() {
                 if close != c.continuous(1e-9) {
                     failures.push(format!(
                         "case {case}: corner at mu {mu_c}: continuous {} (lambda {:?}, bracket {} .. {}, exact {}) but the brute force gives {a} and {b} either side",
-                        c.continuous(1e-9), c.lambdas(), c.below.0, c.above.0, c.exact.is_some()
+                        c.continuous(1e-9), c.lambdas(), c.below().0, c.above().0, c.exact
                     ));
                 }
             }
             if !c.continuous(1e-9) {
                 jumps += 1;
             }
-            match &c.exact {
+            match c.exact.then_some(c) {
                 None => {
                     bracketed += 1;
-                    if c.above.0 != c.below.0.next_up() && c.bracketed && c.changes == 1 {
+                    if c.above().0 != c.below().0.next_up()
+                        && c.detail.bracketed
+                        && c.detail.changes == 1
+                    {
                         failures.push(format!(
                             "case {case}: bracket [{}, {}] is not two neighbouring floats",
-                            c.below.0, c.above.0
+                            c.below().0,
+                            c.above().0
                         ));
                     }
                 }
                 Some(e) => {
                     exact += 1;
                     let reference = Case::new(&joints, false, eta, e.mu, load);
-                    let z = [e.x[0], e.x[1], e.x[2], e.lambda];
+                    let z = [e.x[0], e.x[1], e.x[2], e.t];
                     let scale = 1.0 + z.iter().map(|v| v.abs()).sum::<f64>();
                     let value = |(a, c): ([f64; 4], f64)| {
                         a[0] * z[0] + a[1] * z[1] + a[2] * z[2] + a[3] * z[3] + c

@@ -44,7 +44,7 @@ fn assert_digits(what: &str, value: f64, printed: f64, digits: i32) {
 }
 
 fn right_interior(c: &arch_enum::limit_curve::Corner, slide: bool) -> f64 {
-    c.joints
+    c.pattern
         .iter()
         .find(|j| {
             j.at == Location::Interior
@@ -52,7 +52,7 @@ fn right_interior(c: &arch_enum::limit_curve::Corner, slide: bool) -> f64 {
                 && j.kind.is_hinge() != slide
                 && (slide || j.kind == ContactKind::HingeIntrados)
         })
-        .unwrap_or_else(|| panic!("no joint in {:?}", c.joints))
+        .unwrap_or_else(|| panic!("no joint in {:?}", c.pattern))
         .beta
 }
 
@@ -79,11 +79,11 @@ fn published_corners() {
         let (rm, ms) = (&c.corners[0], &c.corners[1]);
         assert!(rm.exact && ms.exact);
         assert_digits("mu_rm", rm.mu, mu_rm, 8);
-        assert_digits("eta_rm", rm.eta, eta_rm, 8);
+        assert_digits("eta_rm", rm.t, eta_rm, 8);
         assert_digits("beta_N at mu_rm", right_interior(rm, false), bn_rm, 8);
         assert_digits("mu_ms", ms.mu, mu_ms, 8);
         assert_digits("mu_min", c.mu_ms.unwrap(), mu_ms, 8);
-        assert_digits("eta_ms", ms.eta, eta_ms, 8);
+        assert_digits("eta_ms", ms.t, eta_ms, 8);
         assert_digits("beta_N at mu_ms", right_interior(ms, false), bn_ms, 8);
         assert_digits("beta_T at mu_ms", right_interior(ms, true), bt_ms, 8);
         let modes: Vec<CollapseMode> = c.branches.iter().map(|b| b.mode).collect();
@@ -105,10 +105,10 @@ fn published_corners() {
                 "alpha = {alpha}, mu = {mu}"
             );
             assert!(
-                (ls.eta - rm.eta).abs() <= 1e-12 * rm.eta,
+                (ls.eta - rm.t).abs() <= 1e-12 * rm.t,
                 "alpha = {alpha}: eta_s({mu}) = {} differs from eta_rm = {}",
                 ls.eta,
-                rm.eta
+                rm.t
             );
         }
         // The purely sliding branch is vertical at mu_ms (its mu_min equals its mu_max):
@@ -124,11 +124,11 @@ fn published_corners() {
             "alpha = {alpha}: eta = 1.5 falls above mu_ms"
         );
         assert!(
-            stands(alpha, ms.eta * (1.0 + 1e-3), above),
+            stands(alpha, ms.t * (1.0 + 1e-3), above),
             "alpha = {alpha}: 1.001 eta_ms falls just above mu_ms"
         );
         assert!(
-            !stands(alpha, ms.eta * (1.0 - 1e-3), above),
+            !stands(alpha, ms.t * (1.0 - 1e-3), above),
             "alpha = {alpha}: 0.999 eta_ms stands just above mu_ms"
         );
     }
@@ -171,9 +171,9 @@ fn alpha_1_15_overturning_asymptote() {
         .all(|b| b.mode != CollapseMode::PurelyRotational));
     // the asymptote is not a kink: it is listed with the transitions
     let top = &c.transitions[0];
-    assert!(top.mu.is_infinite() && !top.kink);
-    assert!(c.corners.iter().all(|k| k.mu.is_finite() && k.kink));
-    assert_eq!(top.between[1], CollapseMode::Overturning);
+    assert!(top.mu.is_infinite() && !top.detail.kink);
+    assert!(c.corners.iter().all(|k| k.mu.is_finite() && k.detail.kink));
+    assert_eq!(top.between()[1], CollapseMode::Overturning);
     // The mixed branch reaches infinite friction (its mu_max is ∞) and approaches the
     // overturning limit η(∞) from above: η_s(μ) − η(∞) is positive and falls at least ten
     // times per decade of μ (it goes as 1/μ²: 8.3e-3, 8.3e-5, 8.3e-7), in the branch's
@@ -181,7 +181,7 @@ fn alpha_1_15_overturning_asymptote() {
     let mut gap = f64::INFINITY;
     for mu in [1e1, 1e2, 1e3] {
         let ls = limit_at(1.15, mu);
-        let g = ls.eta - top.eta;
+        let g = ls.eta - top.t;
         assert_eq!(ls.mode, c.branches[0].mode, "mu = {mu}");
         assert!(
             g > 0.0 && g < 0.1 * gap,
@@ -189,11 +189,11 @@ fn alpha_1_15_overturning_asymptote() {
         );
         gap = g;
     }
-    assert!(gap < 1e-5 * top.eta, "eta_s(1e3) - eta(inf) = {gap:e}");
+    assert!(gap < 1e-5 * top.t, "eta_s(1e3) - eta(inf) = {gap:e}");
     let last = c.corners.last().unwrap();
     assert!(last.exact);
-    assert_eq!(last.mode, CollapseMode::RotationalSlidingShoulders);
-    assert_eq!(last.between[1], CollapseMode::PurelySliding);
+    assert_eq!(last.detail.mode, CollapseMode::RotationalSlidingShoulders);
+    assert_eq!(last.between()[1], CollapseMode::PurelySliding);
 }
 
 fn snapshot(name: &str, args: &[&str]) {
@@ -285,9 +285,9 @@ fn corners_agree_with_independent_routes_to_12_digits() {
             rm.mu
         );
         assert!(
-            (rm.eta - inf.eta).abs() <= 1e-12 * inf.eta,
+            (rm.t - inf.eta).abs() <= 1e-12 * inf.eta,
             "alpha {alpha}: {} vs {}",
-            rm.eta,
+            rm.t,
             inf.eta
         );
         let f = arch_enum::friction_limit(&arch, &s).unwrap().unwrap();
@@ -357,26 +357,26 @@ fn alpha_1_05_smooth_transition_between_mixed_branches() {
     assert!(
         c.corners
             .iter()
-            .all(|k| !(mixed(k.between[0]) && mixed(k.between[1]))),
+            .all(|k| !(mixed(k.between()[0]) && mixed(k.between()[1]))),
         "{:?}",
         c.corners
     );
-    assert!(c.corners.iter().all(|k| k.kink));
+    assert!(c.corners.iter().all(|k| k.detail.kink));
     // two smooth changes: the intrados hinges crossing the sliding joints (μ ≈ 2.4013),
     // then merging at the crown
     assert_eq!(c.transitions.len(), 2, "{:?}", c.transitions);
-    assert!(c.transitions.iter().all(|t| t.exact && !t.kink));
+    assert!(c.transitions.iter().all(|t| t.exact && !t.detail.kink));
     let cross = &c.transitions[0];
     assert!(cross
-        .joints
+        .pattern
         .iter()
         .any(|i| i.kind == ContactKind::HingeIntrados
             && cross
-                .joints
+                .pattern
                 .iter()
                 .any(|s| s.kind == ContactKind::SlideMinus && (s.beta - i.beta).abs() < 1e-9)));
     let t = &c.transitions[1];
-    assert!((t.slope_left - t.slope_right).abs() < 1e-6 * t.slope_left.abs());
+    assert!((t.sides[0].slope - t.sides[1].slope).abs() < 1e-6 * t.sides[0].slope.abs());
     // independent route
     let (mut lo, mut hi) = (2.30, 2.40);
     assert!(crown_curvature(1.05, lo) < 0.0 && crown_curvature(1.05, hi) > 0.0);
@@ -396,10 +396,10 @@ fn alpha_1_05_smooth_transition_between_mixed_branches() {
         let up = arch_enum::limit::solve(&arch, k.mu * (1.0 + 1e-9), &Settings::default()).unwrap();
         if let arch_enum::limit::Outcome::Limit(ls) = up.outcome {
             assert!(
-                (ls.eta_static - k.eta).abs() < 1e-7 * k.eta,
+                (ls.eta_static - k.t).abs() < 1e-7 * k.t,
                 "{} vs {}",
                 ls.eta_static,
-                k.eta
+                k.t
             );
         }
     }
@@ -479,7 +479,7 @@ fn gap_at_a_sample_is_decided() {
     let c = trace(&arch, &Settings::default());
     assert!(c.unresolved.is_empty(), "{:?}", c.unresolved);
     assert!(c.corners.iter().chain(&c.transitions).all(|k| k.exact));
-    assert!(c.corners.iter().all(|k| k.kink));
+    assert!(c.corners.iter().all(|k| k.detail.kink));
 }
 
 /// An unsymmetric arch with true-centroid weight (from the random `modes` sweep) whose
@@ -525,7 +525,7 @@ fn boundary_reaching_the_thickness_limit() {
     // the first change (the horizontal branch meeting the sliding one) is exact and smooth
     let first = c.transitions.iter().find(|k| k.mu.is_finite()).unwrap();
     assert!(first.exact);
-    assert!((first.eta - c.branches[0].eta_min).abs() < 1e-12);
+    assert!((first.t - c.branches[0].eta_min).abs() < 1e-12);
 }
 
 /// An intrados hinge crossing a sliding joint (issue 10's "a hinge crossing a sliding
@@ -550,10 +550,10 @@ fn hinge_crossing_a_sliding_joint() {
         .iter()
         .find(|k| {
             let i = k
-                .joints
+                .pattern
                 .iter()
                 .find(|j| j.kind == ContactKind::HingeIntrados);
-            let sl = k.joints.iter().find(|j| j.kind == ContactKind::SlideMinus);
+            let sl = k.pattern.iter().find(|j| j.kind == ContactKind::SlideMinus);
             matches!((i, sl), (Some(i), Some(sl)) if (i.beta - sl.beta).abs() < 1e-9)
         })
         .expect("a transition where I and S- meet");
@@ -591,7 +591,7 @@ fn hinge_crossing_a_sliding_joint() {
     let (above, below) = (order(t.mu * (1.0 + 1e-4)), order(t.mu * (1.0 - 1e-4)));
     assert_ne!(above.1, below.1, "the order must reverse");
     let (eta, _) = order(t.mu);
-    assert!((eta - t.eta).abs() < 1e-10 * eta, "{eta} vs {}", t.eta);
+    assert!((eta - t.t).abs() < 1e-10 * eta, "{eta} vs {}", t.t);
 }
 
 /// Issue 10: for α ∈ [1.030, 1.076] the "corners" between the two mixed branches used to
@@ -615,7 +615,7 @@ fn mixed_branches_meet_smoothly_across_alpha() {
         }
         for k in &c.corners {
             assert!(
-                k.kink && !(mixed(k.between[0]) && mixed(k.between[1])),
+                k.detail.kink && !(mixed(k.between()[0]) && mixed(k.between()[1])),
                 "{alpha}: {k:?}"
             );
         }
@@ -660,14 +660,14 @@ fn discrete_hinge_moving_to_the_next_joint_is_a_corner() {
         .iter()
         .find(|k| {
             let has = |b: f64| {
-                k.joints
+                k.pattern
                     .iter()
                     .any(|j| j.kind == ContactKind::HingeIntrados && (j.beta - b).abs() < 1e-9)
             };
             has(j27) && has(j36)
         })
         .expect("the corner where the hinge moves from 36 to 27 degrees");
-    assert!(k.exact && k.kink, "{k:?}");
+    assert!(k.exact && k.detail.kink, "{k:?}");
     let hinge_at = |mu: f64| {
         let sol = arch_enum::limit::solve(&arch, mu, &s).unwrap();
         let arch_enum::limit::Outcome::Limit(ls) = sol.outcome else {
@@ -698,6 +698,6 @@ fn symmetric_openings_are_decided() {
         for k in c.corners.iter().chain(&c.transitions) {
             assert!(k.exact, "{alpha}: {k:?}");
         }
-        assert!(c.corners.iter().all(|k| k.kink), "{alpha}");
+        assert!(c.corners.iter().all(|k| k.detail.kink), "{alpha}");
     }
 }

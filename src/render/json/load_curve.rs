@@ -129,16 +129,16 @@ pub fn load_curve(q: &LoadQuestion, curve: &LoadCurve) -> LoadCurveDoc {
             .corners
             .iter()
             .map(|c| CornerJson {
-                mu: c.exact.as_ref().map(|e| e.mu),
-                lambda: c.exact.as_ref().map(|e| e.lambda),
-                exact: c.exact.is_some(),
-                mu_below: c.below.0,
-                mu_above: c.above.0.is_finite().then_some(c.above.0),
-                bracketed: c.bracketed,
-                changes: c.changes,
+                mu: c.exact.then_some(c.mu),
+                lambda: c.exact.then_some(c.t),
+                exact: c.exact,
+                mu_below: c.below().0,
+                mu_above: c.above().0.is_finite().then_some(c.above().0),
+                bracketed: c.detail.bracketed,
+                changes: c.detail.changes,
                 continuous: c.continuous(CONTINUOUS_TOL),
-                below: corner_side(&q.load, &c.below),
-                above: corner_side(&q.load, &c.above),
+                below: corner_side(&q.load, c.below()),
+                above: corner_side(&q.load, c.above()),
             })
             .collect(),
     }

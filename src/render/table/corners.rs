@@ -29,12 +29,12 @@ pub fn corner_rows(arch: &Arch, curve: &crate::limit_curve::LimitCurve) -> Vec<S
             };
             format!(
                 "| {alpha:.6} | {mu} | {phi} | {:.8} | {} | {} | {} / {}{} |",
-                c.eta,
-                f(right_half_angle(arch, &c.joints, |j| j.kind == ContactKind::HingeIntrados)),
-                f(right_half_angle(arch, &c.joints, |j| !j.kind.is_hinge())),
-                c.between[0].name(),
-                c.between[1].name(),
-                match (c.exact, c.kink) {
+                c.t,
+                f(right_half_angle(arch, &c.pattern, |j| j.kind == ContactKind::HingeIntrados)),
+                f(right_half_angle(arch, &c.pattern, |j| !j.kind.is_hinge())),
+                c.between()[0].name(),
+                c.between()[1].name(),
+                match (c.exact, c.detail.kink) {
                     (true, true) => "",
                     (true, false) if c.mu.is_infinite() => " (asymptote)",
                     (true, false) => " (smooth transition)",

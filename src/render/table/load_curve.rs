@@ -104,25 +104,26 @@ fn corners(s: &mut String, q: &LoadQuestion, curve: &LoadCurve) {
     for c in &curve.corners {
         let (below, above) = c.lambdas();
         let change = match (below, above) {
-            _ if c.exact.is_none() && c.changes > 1 => format!(
+            _ if !c.exact && c.detail.changes > 1 => format!(
                 "the answer changes {} times in this stretch (no single corner: near a singularity the survey's answer flickers)",
-                c.changes
+                c.detail.changes
             ),
             (Some(_), Some(_)) if c.continuous(CONTINUOUS_TOL) => "continuous".into(),
             (Some(a), Some(b)) => format!("lambda jumps {} -> {}", sig(a, 12), sig(b, 12)),
             _ => "a change of status".into(),
         };
-        let at = match &c.exact {
-            Some(e) => format!("mu = {}  lambda = {} (exact)", e.mu, sig(e.lambda, 15)),
-            None => format!(
+        let (below, above) = (c.below(), c.above());
+        let at = match c.exact {
+            true => format!("mu = {}  lambda = {} (exact)", c.mu, sig(c.t, 15)),
+            false => format!(
                 "mu in [{}, {}]{}",
-                c.below.0,
-                if c.above.0.is_finite() {
-                    c.above.0.to_string()
+                below.0,
+                if above.0.is_finite() {
+                    above.0.to_string()
                 } else {
                     "inf".into()
                 },
-                if c.bracketed || c.changes > 1 {
+                if c.detail.bracketed || c.detail.changes > 1 {
                     ""
                 } else {
                     " (not bisected to the end)"
@@ -130,7 +131,7 @@ fn corners(s: &mut String, q: &LoadQuestion, curve: &LoadCurve) {
             ),
         };
         let _ = writeln!(s, "  {at}  {change}");
-        let _ = writeln!(s, "      below: {}", least_text(&q.load, &c.below.1));
-        let _ = writeln!(s, "      above: {}", least_text(&q.load, &c.above.1));
+        let _ = writeln!(s, "      below: {}", least_text(&q.load, &below.1));
+        let _ = writeln!(s, "      above: {}", least_text(&q.load, &above.1));
     }
 }

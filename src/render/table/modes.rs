@@ -170,22 +170,22 @@ fn changes(s: &mut String, arch: &Arch, list: &[crate::limit_curve::Corner], tit
         "mu", "phi [deg]", "eta", "beta_N [rad]", "beta_T [rad]", "between"
     );
     for c in list {
-        let bn = right_half_angle(arch, &c.joints, |c| c.kind == ContactKind::HingeIntrados);
-        let bt = right_half_angle(arch, &c.joints, |c| !c.kind.is_hinge());
+        let bn = right_half_angle(arch, &c.pattern, |c| c.kind == ContactKind::HingeIntrados);
+        let bt = right_half_angle(arch, &c.pattern, |c| !c.kind.is_hinge());
         let f = |v: Option<f64>| v.map_or("-".to_string(), |b| format!("{b:.10}"));
         let _ = writeln!(
             s,
             "  {:>16} {:>11} {:>16} {:>14} {:>14}  {:<52} {}",
             fmt_opt_inf(c.mu, 12),
             fmt_opt_inf(c.mu.atan().to_degrees(), 6),
-            sig(c.eta, 12),
+            sig(c.t, 12),
             f(bn),
             f(bt),
-            format!("{} / {}", c.between[0].name(), c.between[1].name()),
+            format!("{} / {}", c.between()[0].name(), c.between()[1].name()),
             if c.exact { "yes" } else { "no (bracketed)" }
         );
         let joints: Vec<String> = c
-            .joints
+            .pattern
             .iter()
             .map(|j| {
                 format!(
@@ -206,9 +206,9 @@ fn changes(s: &mut String, arch: &Arch, list: &[crate::limit_curve::Corner], tit
             "",
             joints.join(" "),
             "",
-            c.mode.name(),
-            fmt_slope(c.slope_left),
-            fmt_slope(c.slope_right)
+            c.detail.mode.name(),
+            fmt_slope(c.sides[0].slope),
+            fmt_slope(c.sides[1].slope)
         );
     }
 }

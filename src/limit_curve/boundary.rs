@@ -1,10 +1,11 @@
-//! Sampling the static boundary η_s(μ) for the tracer and locating the pattern change
-//! between two samples whose patterns differ: a corner (Newton on the union of both
-//! patterns with μ unknown), a smooth change ([`super::transition`]), or, when neither
-//! converges, bisection in μ. Each located change is checked against the boundary itself
-//! (η equals η_s at its μ) and classified by the one-sided slopes of η_s(μ) there.
+//! Sampling the static boundary η_s(μ) and locating the pattern change between two samples
+//! whose patterns differ: the thickness problem's part of the [`crate::tracer`]. A change
+//! is located as a corner (Newton on the union of both patterns with μ unknown), a smooth
+//! change ([`super::transition`]) or an onset along a branch ([`super::onset`]); when none
+//! converges the tracer bisects in μ. Each located change is checked against the boundary
+//! itself (η equals η_s at its μ) and classified by the one-sided slopes of η_s(μ) there.
 
-use super::Corner;
+use super::transition::Located;
 use super::{onset, transition};
 use crate::arch::Arch;
 use crate::collapse_mode::{classify, CollapseMode};
@@ -16,7 +17,99 @@ use crate::search::RootGuess;
 use crate::settings::Settings;
 use crate::state::State;
 use crate::statics::Reactions;
+use crate::tracer::{self, Split};
 use std::cmp::Ordering;
+use std::convert::Infallible;
+
+/// A point of the static boundary η_s(μ) where the active pattern changes (`t` is η): a
+/// corner (`detail.kink`: the one-sided slopes differ) or a smooth transition (they agree).
+pub type Corner = tracer::Corner<Side, Contact, Shape>;
+
+/// The boundary on one side of a [`Corner`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Side {
+    /// The mode of the branch on this side.
+    pub mode: CollapseMode,
+    /// dη_s/dμ on this side (−∞ on the lower side at the vertical purely-sliding branch;
+    /// NaN where not defined, at μ = ∞).
+    pub slope: f64,
+}
+
+/// What a [`Corner`] of the static boundary is besides its place.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Shape {
+    /// Whether η_s(μ) has a kink here (the one-sided slopes differ by more than
+    /// `settings.kink_slope_rel` of their size).
+    pub kink: bool,
+    /// The mode named from the corner's own active pattern (e.g.
+    /// `rotational_sliding_shoulders` where a springing hinges and slides at once).
+    pub mode: CollapseMode,
+}
+
+impl Corner {
+    /// The modes of the branches it joins: [higher μ, lower μ].
+    pub fn between(&self) -> [CollapseMode; 2] {
+        [self.sides[1].mode, self.sides[0].mode]
+    }
+}
+
+/// The change at `at` between the branches of modes `between` = [higher μ, lower μ], with
+/// the one-sided slopes `[lower, upper]`.
+pub(super) fn corner(
+    at: Located,
+    exact: bool,
+    slopes: [f64; 2],
+    between: [CollapseMode; 2],
+    shape: Shape,
+) -> Corner {
+    Corner {
+        mu: at.mu,
+        t: at.eta,
+        x: at.x,
+        pattern: at.pattern,
+        exact,
+        residual: at.residual,
+        sides: [
+            Side {
+                mode: between[1],
+                slope: slopes[0],
+            },
+            Side {
+                mode: between[0],
+                slope: slopes[1],
+            },
+        ],
+        detail: shape,
+    }
+}
+
+impl Located {
+    /// The state of the boundary sample `s` (its η, reactions and pattern) placed at `mu`.
+    pub(super) fn at(mu: f64, s: &Sample, residual: f64) -> Located {
+        Located {
+            mu,
+            eta: s.eta,
+            x: s.x,
+            pattern: s.pattern.clone(),
+            residual,
+        }
+    }
+}
+
+/// The end of the static boundary at the thickness limit (see
+/// [`super::LimitCurve::thickness_limit`]).
+#[derive(Debug, Clone)]
+pub struct ThicknessLimit {
+    /// Friction coefficient where η_s reaches the limit.
+    pub mu: f64,
+    /// η there (`ETA_TOP`, just below 2).
+    pub eta: f64,
+    /// The lowest branch's pattern there.
+    pub pattern: Vec<Contact>,
+    /// True when located along the branch by root finding (to adjacent floats in μ);
+    /// false when bracketed by bisection on the solver's status.
+    pub exact: bool,
+}
 
 /// What identifies a pattern along the limit curve: each contact's kind and place, and,
 /// on a discrete arch, its joint (a hinge moving to another joint changes the pattern;
@@ -182,12 +275,8 @@ impl<'a> Tracer<'a> {
         active
     }
 
-    /// The boundary at μ; what is not a boundary point is recorded by kind.
-    pub(super) fn sample(&mut self, mu: f64) -> Option<Sample> {
-        self.sample_near(mu, None)
-    }
-
-    /// [`Tracer::sample`] with η_s expected near `guess` (the bracket starts there).
+    /// The boundary at μ, η_s expected near `guess` (the bracket starts there); what is
+    /// not a boundary point is recorded by kind.
     pub(super) fn sample_near(&mut self, mu: f64, guess: Option<RootGuess>) -> Option<Sample> {
         match self.boundary(mu, guess).map_err(|e| *e) {
             Ok(s) => Some(s),
@@ -265,16 +354,14 @@ impl<'a> Tracer<'a> {
     /// η equal (to `settings.boundary_match`) to η_s extrapolated to μ from each side
     /// (from the right only at μ_ms, `at_mu_ms`, where the left is the vertical branch);
     /// then classified by the slopes on both sides.
-    #[allow(clippy::too_many_arguments)]
     fn accept(
         &mut self,
-        (mu, eta, x): (f64, f64, Reactions),
-        pattern: &[Contact],
+        mut at: Located,
         range: (f64, f64),
         between: [CollapseMode; 2],
-        residual: f64,
         at_mu_ms: bool,
     ) -> Option<Corner> {
+        let (mu, eta) = (at.mu, at.eta);
         let tol = self.settings.root_slack;
         if !(mu >= range.0 * (1.0 - tol) && mu <= range.1 * (1.0 + tol)) {
             return None;
@@ -283,7 +370,7 @@ impl<'a> Tracer<'a> {
             arch: self.arch,
             eta,
             mu,
-            x,
+            x: at.x,
         };
         let verdict = st.verdict(ContactKind::active_at(mu), self.settings);
         if verdict.worst > self.settings.adm_tol {
@@ -304,22 +391,13 @@ impl<'a> Tracer<'a> {
         if off(from_right) || off(from_left) {
             return None;
         }
-        let mut joints = pattern.to_vec();
-        joints.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.kind.cmp(&b.kind)));
-        let mode = self.mode_of(&joints);
-        Some(Corner {
-            mu,
-            eta,
-            x,
+        at.pattern
+            .sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.kind.cmp(&b.kind)));
+        let shape = Shape {
             kink: self.is_kink(lower, upper, eta, mu),
-            slope_left: lower,
-            slope_right: upper,
-            joints,
-            between,
-            mode,
-            exact: true,
-            residual,
-        })
+            mode: self.mode_of(&at.pattern),
+        };
+        Some(corner(at, true, [lower, upper], between, shape))
     }
 
     /// Newton on the union of two patterns with η and μ unknown, from the state
@@ -375,14 +453,14 @@ impl<'a> Tracer<'a> {
         if !(covers(upper) && covers(lower)) {
             return None;
         }
-        self.accept(
-            (r.mu, r.t, r.x),
-            &r.contacts,
-            range,
-            between,
-            r.residual,
-            at_mu_ms,
-        )
+        let at = Located {
+            mu: r.mu,
+            eta: r.t,
+            x: r.x,
+            pattern: r.contacts,
+            residual: r.residual,
+        };
+        self.accept(at, range, between, at_mu_ms)
     }
 
     /// A smooth change between `a` and `b` ([`transition`]), tried from each side.
@@ -399,14 +477,7 @@ impl<'a> Tracer<'a> {
             ) else {
                 continue;
             };
-            if let Some(c) = self.accept(
-                (l.mu, l.eta, l.x),
-                &l.pattern,
-                range,
-                between,
-                l.residual,
-                false,
-            ) {
+            if let Some(c) = self.accept(l, range, between, false) {
                 return Some(c);
             }
         }
@@ -456,7 +527,7 @@ impl<'a> Tracer<'a> {
                 .collect()
         };
         for (from, to) in [(a, b), (b, a)] {
-            let mut found: Vec<onset::OnBranch> = new_in(&from.pattern, &to.pattern)
+            let mut found: Vec<Located> = new_in(&from.pattern, &to.pattern)
                 .iter()
                 .filter_map(|c| {
                     onset::locate(
@@ -472,9 +543,7 @@ impl<'a> Tracer<'a> {
             // the first onset met when leaving `from`
             found.sort_by(|p, q| (p.mu - from.mu).abs().total_cmp(&(q.mu - from.mu).abs()));
             if let Some(o) = found.into_iter().next() {
-                if let Some(c) =
-                    self.accept((o.mu, o.eta, o.x), &o.pattern, range, between, 0.0, false)
-                {
+                if let Some(c) = self.accept(o, range, between, false) {
                     return Some(c);
                 }
             }
@@ -500,18 +569,20 @@ impl<'a> Tracer<'a> {
             x: low.x,
         };
         let r = solve_system(&start, &low.pattern, Unknowns::T, self.settings).ok()?;
-        let joints = self.active(mu_ms, r.t, r.x);
+        let at = Located {
+            mu: mu_ms,
+            eta: r.t,
+            x: r.x,
+            pattern: self.active(mu_ms, r.t, r.x),
+            residual: r.residual,
+        };
         let range = (mu_ms * (1.0 - self.settings.root_slack), low.mu);
-        self.accept((mu_ms, r.t, r.x), &joints, range, between, r.residual, true)
+        self.accept(at, range, between, true)
     }
 
     /// The thickness limit bracketed by bisection in μ between `ne` (no equilibrium) and
     /// the sample `low` (a boundary point), when it cannot be reached along the branch.
-    pub(super) fn thickness_limit_by_bisection(
-        &mut self,
-        ne: f64,
-        low: &Sample,
-    ) -> super::ThicknessLimit {
+    pub(super) fn thickness_limit_by_bisection(&mut self, ne: f64, low: &Sample) -> ThicknessLimit {
         let (mut lo, mut hi) = (ne, low.mu);
         let mut pattern = low.pattern.clone();
         for _ in 0..60 {
@@ -527,7 +598,7 @@ impl<'a> Tracer<'a> {
                 Err(_) => lo = m,
             }
         }
-        super::ThicknessLimit {
+        ThicknessLimit {
             mu: hi,
             eta: crate::arch::ETA_TOP,
             pattern,
@@ -536,20 +607,86 @@ impl<'a> Tracer<'a> {
     }
 
     /// The pattern changes between samples `a` (higher μ) and `b` (lower μ) with
-    /// different patterns: the first located, then whatever lies between it and `b`.
+    /// different patterns ([`tracer::locate`]).
     pub(super) fn locate(&mut self, a: &Sample, b: &Sample, depth: usize) -> Vec<Corner> {
-        let mut out = self.locate_one(a, b, depth);
-        let Some(c) = out.last().cloned() else {
-            return out;
-        };
-        if !c.exact || depth == 0 {
-            return out;
+        tracer::locate(self, a, b, depth).unwrap_or_else(|e| match e {})
+    }
+}
+
+/// The thickness problem's part of the tracer: samples by decreasing μ (`a` the higher),
+/// keyed by their pattern's signature; a change located as a corner, a smooth change or an
+/// onset; the bracket halved geometrically for at most `depth` levels.
+impl tracer::Problem for Tracer<'_> {
+    type Sample = Sample;
+    type Key = Signature;
+    type Corner = Corner;
+    type Error = Infallible;
+
+    fn key(&self, s: &Sample) -> Signature {
+        s.sig.clone()
+    }
+
+    fn split(&mut self, a: &Sample, b: &Sample, depth: usize) -> Split {
+        if depth == 0 || a.mu / b.mu < 1.0 + self.settings.same_root {
+            return Split::Stop { tight: false };
         }
-        // the boundary beside the change (10⁻³ of μ away: nearer, a contact joining with a
-        // zero multiplier is within the activity tolerance): other changes before a sample?
+        Split::At((a.mu * b.mu).sqrt())
+    }
+
+    fn sample(&mut self, mu: f64, a: &Sample, b: &Sample) -> Result<Option<Sample>, Infallible> {
+        Ok(self.sample_near(mu, Some(between(a.eta, b.eta))))
+    }
+
+    fn exact(&mut self, a: &Sample, b: &Sample) -> Option<Corner> {
+        let between = [self.mode_of(&a.pattern), self.mode_of(&b.pattern)];
+        let range = (b.mu, a.mu);
+        for start in [b, a] {
+            let from = (start.x, start.eta, start.mu);
+            if let Some(c) = self.union_newton(&a.pattern, &b.pattern, from, range, between, false)
+            {
+                return Some(c);
+            }
+        }
+        self.smooth(a, b, between)
+            .or_else(|| self.onset(a, b, between))
+    }
+
+    /// A change known only to lie between samples `a` and `b` (`exact: false`); its
+    /// slopes are the boundary's on either side of the bracket.
+    fn bracketed(&mut self, a: &Sample, b: &Sample, _: bool) -> Corner {
+        let between = [self.mode_of(&a.pattern), self.mode_of(&b.pattern)];
+        let (lower, upper) = (
+            self.slope(b.mu, b.eta, -1.0).0,
+            self.slope(a.mu, a.eta, 1.0).0,
+        );
+        let at = Located {
+            eta: 0.5 * (a.eta + b.eta),
+            ..Located::at((a.mu * b.mu).sqrt(), b, f64::NAN)
+        };
+        let shape = Shape {
+            kink: self.is_kink(lower, upper, at.eta, at.mu),
+            mode: between[1],
+        };
+        corner(at, false, [lower, upper], between, shape)
+    }
+
+    /// After an exact change: the boundary beside it (10⁻³ of μ away: nearer, a contact
+    /// joining with a zero multiplier is within the activity tolerance), for other changes
+    /// before a sample.
+    fn beside(
+        &mut self,
+        a: &Sample,
+        b: &Sample,
+        found: &[Corner],
+        depth: usize,
+    ) -> Result<Vec<Corner>, Infallible> {
+        let mut out = Vec::new();
+        let Some(c) = found.last().filter(|c| c.exact && depth > 0) else {
+            return Ok(out);
+        };
         let step = 1e3 * self.settings.slope_step;
         let beside = RootGuess {
-            eta: c.eta,
+            eta: c.t,
             rel: 4.0 * step,
         };
         if c.mu < a.mu * (1.0 - 2.0 * step) {
@@ -566,79 +703,16 @@ impl<'a> Tracer<'a> {
                 }
             }
         }
-        out
-    }
-
-    fn locate_one(&mut self, a: &Sample, b: &Sample, depth: usize) -> Vec<Corner> {
-        let between = [self.mode_of(&a.pattern), self.mode_of(&b.pattern)];
-        let range = (b.mu, a.mu);
-        for start in [b, a] {
-            if let Some(c) = self.union_newton(
-                &a.pattern,
-                &b.pattern,
-                (start.x, start.eta, start.mu),
-                range,
-                between,
-                false,
-            ) {
-                return vec![c];
-            }
-        }
-        if let Some(c) = self.smooth(a, b, between) {
-            return vec![c];
-        }
-        if let Some(c) = self.onset(a, b, between) {
-            return vec![c];
-        }
-        let mid_mu = (a.mu * b.mu).sqrt();
-        if depth == 0 || a.mu / b.mu < 1.0 + self.settings.same_root {
-            return vec![self.bracketed(a, b, between)];
-        }
-        let Some(m) = self.sample_near(mid_mu, Some(between_samples(a, b))) else {
-            return vec![self.bracketed(a, b, between)];
-        };
-        if m.sig == a.sig {
-            self.locate(&m, b, depth - 1)
-        } else if m.sig == b.sig {
-            self.locate(a, &m, depth - 1)
-        } else {
-            let mut v = self.locate(a, &m, depth - 1);
-            v.extend(self.locate(&m, b, depth - 1));
-            v
-        }
-    }
-
-    /// A change known only to lie between samples `a` and `b` (`exact: false`); its
-    /// slopes are the boundary's on either side of the bracket.
-    fn bracketed(&mut self, a: &Sample, b: &Sample, between: [CollapseMode; 2]) -> Corner {
-        let (lower, upper) = (
-            self.slope(b.mu, b.eta, -1.0).0,
-            self.slope(a.mu, a.eta, 1.0).0,
-        );
-        let mu = (a.mu * b.mu).sqrt();
-        let eta = 0.5 * (a.eta + b.eta);
-        Corner {
-            mu,
-            eta,
-            x: b.x,
-            kink: self.is_kink(lower, upper, eta, mu),
-            slope_left: lower,
-            slope_right: upper,
-            joints: b.pattern.clone(),
-            between,
-            mode: between[1],
-            exact: false,
-            residual: f64::NAN,
-        }
+        Ok(out)
     }
 }
 
-/// Where η_s is expected between two samples of the boundary: their mean, within their
-/// difference (at least 10⁻⁶ of it).
-pub(super) fn between_samples(a: &Sample, b: &Sample) -> RootGuess {
-    let eta = 0.5 * (a.eta + b.eta);
+/// Where η_s is expected between two points of the boundary at η `a` and `b`: their mean,
+/// within their difference (at least 10⁻⁶ of it).
+pub(super) fn between(a: f64, b: f64) -> RootGuess {
+    let eta = 0.5 * (a + b);
     RootGuess {
         eta,
-        rel: ((a.eta - b.eta).abs() / eta).max(1e-6),
+        rel: ((a - b).abs() / eta).max(1e-6),
     }
 }
