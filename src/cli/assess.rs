@@ -3,7 +3,7 @@
 
 use super::arch_args::ArchArgs;
 use super::dimension_args::DimensionArgs;
-use super::{to_json, Exit, Io};
+use super::io::{to_json, Exit, Io};
 use crate::assess::assess;
 use crate::render::{json, table};
 use crate::settings::Settings;

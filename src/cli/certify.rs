@@ -2,8 +2,8 @@
 //! independent re-check.
 
 use super::arch_args::ArchArgs;
+use super::io::{to_json, Exit, Io};
 use super::load::LiveLoadArgs;
-use super::{to_json, Exit, Io};
 use crate::arch::{check_eta, check_mu, fmt_value, InputError};
 use crate::certificate::{
     certify, certify_load, verify, ArchSpec, Certificate, Claim, LoadSearchMethod, NotCertified,

@@ -1,8 +1,8 @@
 //! `arch-enum curve`: η*(μ) sampled over a range of friction coefficients.
 
 use super::arch_args::ArchArgs;
+use super::io::{to_json, Exit, Io};
 use super::threads_arg::ThreadsArg;
-use super::{to_json, Exit, Io};
 use crate::arch::{fmt_value, InputError};
 use crate::friction::least_friction;
 use crate::limit_curve::{mu_grid, sample};

@@ -4,7 +4,7 @@
 
 use super::arch_args::ArchArgs;
 use super::dimension_args::DimensionArgs;
-use super::{to_json, Exit, Io};
+use super::io::{to_json, Exit, Io};
 use crate::arch::{fmt_value, Arch, InputError, JointLayout};
 use crate::friction::least_friction;
 use crate::limit_curve::mu_grid;

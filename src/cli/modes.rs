@@ -1,8 +1,8 @@
 //! `arch-enum modes`: the whole η–μ limit curve, branches and exact corners.
 
 use super::arch_args::ArchArgs;
+use super::io::{to_json, Exit, Io};
 use super::threads_arg::ThreadsArg;
-use super::{to_json, Exit, Io};
 use crate::limit_curve::{trace_parallel, CurveStatus};
 use crate::render::{json, table};
 use crate::settings::Settings;

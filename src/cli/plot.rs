@@ -2,8 +2,8 @@
 //! eccentricities, a margin map), as SVG or PNG.
 
 use super::arch_args::{ArchArgs, WeightArg};
+use super::io::{Exit, Io};
 use super::threads_arg::ThreadsArg;
-use super::{Exit, Io};
 use crate::arch::{check_eta, check_mu, Arch, InputError};
 use crate::settings::Settings;
 use clap::{Args, Subcommand};

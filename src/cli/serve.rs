@@ -19,7 +19,9 @@
 //! Requests are answered by [`WORKERS`] threads taking turns on one listening socket; the
 //! server binds 127.0.0.1 only.
 
-use super::{to_json, Cli, Exit, Io};
+use super::app::{run_with, Cli, Command};
+use super::io::{to_json, Exit, Io};
+use super::serve_args::ServeArgs;
 use crate::render::json::ErrorJson;
 use clap::{CommandFactory, Parser};
 use std::ffi::OsString;
@@ -378,7 +380,7 @@ fn run_command(command: &str, params: &[Param]) -> Reply {
     };
     args.push("--json".into());
     let (mut out, mut err) = (Vec::new(), Vec::new());
-    let code = super::run(args, &mut out, &mut err);
+    let code = run_with(args, &mut out, &mut err, run);
     if code == Exit::BadInput.code() {
         if out.is_empty() {
             return Reply::error(400, message_of(&err));
@@ -404,7 +406,7 @@ fn run_figure(figure: &str, params: &[Param]) -> Reply {
     let (mut out, mut err) = (Vec::new(), Vec::new());
     let parsed = match Cli::try_parse_from(&args) {
         Ok(Cli {
-            command: super::Command::Plot { figure },
+            command: Command::Plot { figure },
         }) => figure,
         Ok(_) => return Reply::error(500, "internal error: not a figure".into()),
         Err(e) => return Reply::error(400, message_of(e.render().to_string().as_bytes())),
@@ -423,20 +425,6 @@ fn run_figure(figure: &str, params: &[Param]) -> Reply {
         Err(Exit::BadInput) => Reply::error(400, message_of(&err)),
         Err(_) => Reply::error(422, message_of(&err)),
     }
-}
-
-/// `arch-enum serve`.
-#[derive(clap::Args, Debug)]
-pub(crate) struct ServeArgs {
-    /// Port on 127.0.0.1 (0: any free port). The URL is printed on the first line.
-    #[arg(long, default_value_t = 8765)]
-    port: u16,
-    /// Open the page in the browser (xdg-open, when present).
-    #[arg(long)]
-    open: bool,
-    /// Log each request with its status and time on standard error.
-    #[arg(long)]
-    verbose: bool,
 }
 
 pub(crate) fn run(a: ServeArgs, io: &mut Io) -> Exit {

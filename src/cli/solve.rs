@@ -1,7 +1,7 @@
 //! `arch-enum solve`: the least thickness at one friction coefficient.
 
 use super::arch_args::ArchArgs;
-use super::{to_json, Exit, Io};
+use super::io::{to_json, Exit, Io};
 use crate::figures::survey_scene;
 use crate::limit::Outcome;
 use crate::limit_states::survey;

@@ -1,0 +1,164 @@
+//! The command line itself: every command and its `--help`, parsed by clap, and the one
+//! dispatch from a command to its run function.
+
+use super::io::{emit, to_json, Exit, Io};
+use super::serve_args::ServeArgs;
+use super::{assess, certify, curve, load, modes, plot, solve};
+use crate::render::json;
+use crate::settings::Settings;
+use clap::{Parser, Subcommand};
+use std::ffi::OsString;
+use std::io::Write;
+
+/// The collapse-mode names, defined (shown by `--help` of the commands that print them).
+macro_rules! mode_names {
+    () => {
+        "Collapse modes (named from the active pattern alone; E: hinge at the extrados, \
+I: hinge at the intrados, S+/S-: sliding along the radial joint, the part beyond it (larger beta) \
+moving outwards/inwards):
+  purely_rotational             hinges only (Couplet-Heyman)
+  overturning                   hinges only, with a detached joint (N = 0: E and I both active)
+  purely_sliding                sliding only (the vertical branch mu = mu_ms)
+  rotational_sliding_shoulders  a springing hinges and slides at once
+  mixed_sliding_rotational      hinges and sliding, a hinge nearer the crown (the middle of the arch) \
+than every sliding joint: rotation at the crown, sliding further out
+  mixed_rotational_sliding      hinges and sliding, every hinge farther from the crown than every \
+sliding joint: rotation at the shoulders, sliding near the crown
+  mixed_interleaved             hinges and sliding interleaved otherwise (a descriptive name outside \
+the contract's list)"
+    };
+}
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "arch-enum",
+    version,
+    about = "Exact limit analysis of circular masonry arches with limited friction",
+    long_about = "Exact limit analysis of circular masonry arches with limited friction.\n\n\
+Lengths are divided by the mean radius r (eta = t/r); angles are radians measured \
+counter-clockwise from the horizontal through the centre (a symmetric arch of opening \
+alpha has beta_R = -alpha, beta_L = pi + alpha).",
+    after_help = "Examples:\n  arch-enum solve --alpha 0 --mu inf          Couplet-Heyman semicircle\n  \
+arch-enum solve --alpha-deg 30 --mu 0.8 --json\n  \
+arch-enum solve --beta-right -0.2 --beta-left 3.0 --mu 0.5 --explain\n  \
+arch-enum curve --alpha 0 --mu-min 0.31 --mu-max 1 --points 12"
+)]
+pub(super) struct Cli {
+    #[command(subcommand)]
+    pub(super) command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+pub(super) enum Command {
+    /// The least thickness eta*(mu), the collapse mode, the active pattern, the reactions and a mechanism.
+    #[command(
+        after_help = "Example:\n  arch-enum solve --alpha 0 --mu 0.35\n  arch-enum solve --alpha 0.5 --blocks 12 --mu inf --json",
+        after_long_help = concat!("Example:\n  arch-enum solve --alpha 0 --mu 0.35\n  arch-enum solve --alpha 0.5 --blocks 12 --mu inf --json\n\n", mode_names!())
+    )]
+    Solve(solve::SolveArgs),
+    /// The whole eta-mu limit curve: branches with their collapse modes and exact corners.
+    #[command(
+        after_help = "Example:\n  arch-enum modes --alpha 1.0\n  arch-enum modes --alpha-deg 30 --json\n  arch-enum modes --alpha 0 --blocks 20",
+        after_long_help = concat!("Example:\n  arch-enum modes --alpha 1.0\n  arch-enum modes --alpha-deg 30 --json\n  arch-enum modes --alpha 0 --blocks 20\n\n", mode_names!())
+    )]
+    Modes(modes::ModesArgs),
+    /// A certificate for eta*(mu): an admissible state at eta_hi (upper bound), a Farkas certificate at eta_lo (lower bound), the limit state; with --eta and a live load, for lambda_static and the limit states under the load.
+    #[command(
+        after_help = "Example:\n  arch-enum certify --alpha 0 --mu 0.35 --out cert.json\n  arch-enum verify cert.json\n  arch-enum certify --alpha 0 --blocks 20 --eta 0.3 --mu 0.8 --horizontal --out load.json"
+    )]
+    Certify(certify::CertifyArgs),
+    /// Re-checks a certificate independently (no LP, no solver); exit 0 only if it holds.
+    Verify(certify::VerifyArgs),
+    /// Pictures: limit curves, the arch with its lines and mechanism, eccentricities, a margin map (SVG, or PNG with --png).
+    Plot {
+        #[command(subcommand)]
+        figure: plot::Figure,
+    },
+    /// A given thickness at a given friction: does it stand, and with what margins (geometric and friction factors of safety, the safest line of thrust).
+    #[command(
+        after_help = "Example:\n  arch-enum assess --alpha 0 --eta 0.2 --mu 0.35\n  arch-enum assess --alpha-deg 30 --eta 0.5 --mu 0.9 --radius 5 --depth 1 --density 2000"
+    )]
+    Assess(assess::AssessArgs),
+    /// The collapse multiplier of a live load (horizontal acceleration or a point load) at a given thickness and friction: the static maximum, every limit state below it (non-associative friction can lower the collapse load), unique or not.
+    #[command(
+        after_help = "Example:\n  arch-enum load --alpha 0 --blocks 27 --weight centroid --eta 0.153361 --mu inf --point-load-deg 53.3333333333\n  arch-enum load --alpha 0 --blocks 20 --eta 0.3 --mu 0.8 --horizontal --json"
+    )]
+    Load(load::LoadArgs),
+    /// The load multiplier against friction at a fixed thickness: lambda_static and the collapse multiplier lambda (the least limit state) sampled over mu, and at mu = inf.
+    #[command(
+        after_help = "Example:\n  arch-enum load-curve --alpha 0 --blocks 20 --eta 0.3 --horizontal\n  arch-enum load-curve --alpha 0 --eta 0.2 --point-load-deg 60 --mu-min 0.4 --mu-max 2 --json"
+    )]
+    LoadCurve(load::LoadCurveArgs),
+    /// eta*(mu) sampled at geometrically spaced mu, one row per mu, with the mode.
+    #[command(
+        after_help = "Example:\n  arch-enum curve --alpha 0 --points 10\n  arch-enum curve --alpha 1 --mu-min 1 --mu-max 100 --json"
+    )]
+    Curve(curve::CurveArgs),
+    /// The explorer: a local web page (sliders, the eta-mu diagram, the arch at its limit state) and a JSON API giving the same documents as --json, on 127.0.0.1.
+    #[command(
+        after_help = "Example:\n  arch-enum serve --open\n  arch-enum serve --port 0   (any free port; the URL is the first line printed)\n  curl 'http://127.0.0.1:8765/api/solve?alpha=0&mu=0.35'"
+    )]
+    Serve(ServeArgs),
+}
+
+/// How `serve` runs: the server's own entry point, passed in so that the server (which runs
+/// commands through [`run_with`]) and this dispatcher do not import each other.
+pub(super) type Serve = fn(ServeArgs, &mut Io) -> Exit;
+
+/// Runs the command line `args` (including the program name), writing results to
+/// `out` and diagnostics to `err`, `serve` running the explorer; returns the exit status.
+pub(super) fn run_with<I, T>(args: I, out: &mut dyn Write, err: &mut dyn Write, serve: Serve) -> i32
+where
+    I: IntoIterator<Item = T>,
+    T: Into<OsString> + Clone,
+{
+    let args: Vec<OsString> = args.into_iter().map(Into::into).collect();
+    let cli = match Cli::try_parse_from(&args) {
+        Ok(c) => c,
+        Err(e) => {
+            let text = e.render().to_string();
+            return if e.use_stderr() {
+                emit(err, &text);
+                if args.iter().any(|a| a == "--json") {
+                    // clap's first paragraph: "error: ..." and any indented continuation
+                    let message: Vec<&str> = text
+                        .lines()
+                        .take_while(|l| !l.trim().is_empty())
+                        .map(|l| l.trim().trim_start_matches("error: "))
+                        .collect();
+                    emit(out, &to_json(&json::ErrorJson::new(message.join(" "))));
+                }
+                Exit::BadInput.code()
+            } else {
+                emit(out, &text);
+                Exit::Answered.code()
+            };
+        }
+    };
+    let settings = Settings::default();
+    let json = match &cli.command {
+        Command::Solve(a) => a.json,
+        Command::Modes(a) => a.json,
+        Command::Certify(a) => a.json,
+        Command::Verify(a) => a.json,
+        Command::Curve(a) => a.json,
+        Command::Assess(a) => a.json,
+        Command::Load(a) => a.json,
+        Command::LoadCurve(a) => a.json,
+        Command::Plot { .. } | Command::Serve(_) => false,
+    };
+    let mut io = Io { out, err, json };
+    let exit = match cli.command {
+        Command::Solve(a) => solve::run(a, &settings, &mut io),
+        Command::Modes(a) => modes::run(a, &settings, &mut io),
+        Command::Certify(a) => certify::run_certify(a, &settings, &mut io),
+        Command::Verify(a) => certify::run_verify(a, &mut io),
+        Command::Plot { figure } => plot::run(figure, &settings, &mut io),
+        Command::Curve(a) => curve::run(a, &settings, &mut io),
+        Command::Assess(a) => assess::run(a, &settings, &mut io),
+        Command::Load(a) => load::run(a, &settings, &mut io),
+        Command::LoadCurve(a) => load::run_curve(a, &settings, &mut io),
+        Command::Serve(a) => serve(a, &mut io),
+    };
+    exit.code()
+}
