@@ -5,7 +5,7 @@
 use crate::arch::Arch;
 use crate::contact::Contact;
 use crate::load::{LiveLoad, Side};
-use crate::render::table::Dimensions;
+use crate::render::dimensions::Dimensions;
 
 /// The question asked: arch, η, μ and the load.
 pub struct LoadQuestion<'a> {

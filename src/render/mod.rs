@@ -2,6 +2,7 @@
 //! draw the data that [`crate::figures`] computed and call no solver.
 
 pub mod compas;
+pub mod dimensions;
 pub mod json;
 mod live_load;
 pub mod load;

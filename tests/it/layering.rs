@@ -404,17 +404,7 @@ fn file_imports() -> BTreeMap<Vec<String>, BTreeSet<Vec<String>>> {
 /// `render/`, `live_load.rs` (shared by both forms of the load question) takes `Dimensions`
 /// from `table/`, whose load files import it.
 const KNOWN_CIRCLES: &[(&str, &str, &str)] = &[
-    ("multiplier", "curve.rs", "mod.rs"),   // TODO: circle to remove
-    ("render", "live_load.rs", "table/"),   // TODO: circle to remove
-    ("render/json", "assess.rs", "mod.rs"), // TODO: circle to remove
-    ("render/json", "curve.rs", "mod.rs"),  // TODO: circle to remove
-    ("render/json", "load.rs", "mod.rs"),   // TODO: circle to remove
-    ("render/json", "load_curve.rs", "mod.rs"), // TODO: circle to remove
-    ("render/json", "modes.rs", "mod.rs"),  // TODO: circle to remove
-    ("render/json", "solve.rs", "mod.rs"),  // TODO: circle to remove
-    ("render/plot_arch", "arch_panel.rs", "mod.rs"), // TODO: circle to remove
-    ("render/plot_arch", "caption.rs", "mod.rs"), // TODO: circle to remove
-    ("render/plot_arch", "mechanism_panel.rs", "mod.rs"), // TODO: circle to remove
+    ("multiplier", "curve.rs", "mod.rs"), // TODO: circle to remove
 ];
 
 /// In every folder of `src/` below the root (the root's modules are checked above), the

@@ -1,6 +1,6 @@
 //! The `assess --json` document (`null` stands for +∞ where noted).
 
-use super::{ArchJson, JSON_VERSION};
+use super::common::{ArchJson, JSON_VERSION};
 use crate::arch::Arch;
 use crate::contact::Contact;
 use crate::limit::Outcome;

@@ -1,6 +1,6 @@
 //! The `curve --json` document.
 
-use super::{status, ArchJson, JSON_VERSION};
+use super::common::{status, ArchJson, JSON_VERSION};
 use crate::arch::Arch;
 use crate::contact::Contact;
 use crate::limit::Outcome;

@@ -1,7 +1,8 @@
 //! The `load --json` document: the question, the admissible range of λ, every limit state
 //! with the side of the loaded section each contact is on.
 
-use super::{mechanism_json, reactions, ArchJson, MechanismJson, Reactions, JSON_VERSION};
+use super::common::{ArchJson, JSON_VERSION};
+use super::state::{mechanism_json, reactions, MechanismJson, Reactions};
 use crate::contact::Contact;
 use crate::load::LiveLoad;
 use crate::multiplier::{LoadLimitState, LoadOutcome};

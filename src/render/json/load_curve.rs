@@ -1,7 +1,7 @@
 //! The `load-curve --json` document: the samples of the λ–μ curve and its corners.
 
+use super::common::{ArchJson, JSON_VERSION};
 use super::load::{load_json, pattern_json, LoadJson, PatternContact};
-use super::{ArchJson, JSON_VERSION};
 use crate::load::LiveLoad;
 use crate::multiplier::{LoadCurve, LoadOutcome};
 use crate::render::live_load::{LoadQuestion, CONTINUOUS_TOL};

@@ -1,6 +1,7 @@
 //! The `solve --json` document.
 
-use super::{mechanism_json, reactions, status, ArchJson, MechanismJson, Reactions, JSON_VERSION};
+use super::common::{status, ArchJson, JSON_VERSION};
+use super::state::{mechanism_json, reactions, MechanismJson, Reactions};
 use crate::contact::Contact;
 use crate::limit::{Candidate, LimitState, Outcome};
 use crate::limit_states::{LimitStates, Survey};

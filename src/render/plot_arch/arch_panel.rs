@@ -1,7 +1,9 @@
 //! The top panel of the arch figure: the arch to scale, its joints, the lines of thrust and
 //! friction, the active contacts and the live load.
 
-use super::{axes, closed, err, joints_visible, Chart, View, ARROW, MARGIN, X_LABELS, Y_LABELS};
+use super::canvas::{
+    axes, closed, err, joints_visible, Chart, View, ARROW, MARGIN, X_LABELS, Y_LABELS,
+};
 use crate::arch::JointLayout;
 use crate::contact::{Contact, ContactKind};
 use crate::figures::thrust_line::Eccentricity;

@@ -1,7 +1,7 @@
 //! The caption of the arch figure: arch, friction, thickness and state; the active joints;
 //! a key to the lines and the joint kinds.
 
-use super::{err, short, MIN_JOINT_PX};
+use super::canvas::{err, short, MIN_JOINT_PX};
 use crate::arch::JointLayout;
 use crate::figures::ArchScene;
 use crate::render::plot::{short_num, FAMILY};

@@ -1,7 +1,7 @@
 //! The bottom panel of the arch figure: the collapse mechanism as rigid blocks displaced by
 //! a stated multiple of their rates.
 
-use super::{axes, block_outline, closed, err, View, MARGIN, X_LABELS, Y_LABELS};
+use super::canvas::{axes, block_outline, closed, err, View, MARGIN, X_LABELS, Y_LABELS};
 use crate::figures::ArchScene;
 use crate::render::plot::{short_num, FAMILY};
 use plotters::coord::Shift;

@@ -5,6 +5,7 @@
 use crate::arch::{Arch, JointLayout};
 use crate::contact::Contact;
 use crate::limit::LimitState;
+pub use crate::render::dimensions::Dimensions;
 use std::fmt::Write;
 
 /// `v` with `digits` significant digits: fixed-point where that is readable
@@ -166,16 +167,3 @@ pub const LEGEND: &str =
     "\nE: hinge at the extrados, I: hinge at the intrados, S+/S-: sliding along \
 the (radial) joint, the part beyond it (larger beta) moving outwards/inwards, (s): at a springing; \
 angles from the horizontal through the centre.\n";
-
-/// Dimensions of a real arch, for printing results in metres and kilonewtons.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Dimensions {
-    /// Mean radius r (m).
-    pub radius: f64,
-    /// Depth d of the arch barrel, perpendicular to its plane (m).
-    pub depth: f64,
-    /// Density ρ (kg/m³).
-    pub density: f64,
-    /// Gravitational acceleration g (m/s²).
-    pub g: f64,
-}

@@ -1,0 +1,15 @@
+//! The physical dimensions of a real arch, which the text and JSON forms use to print
+//! results in metres and kilonewtons.
+
+/// Dimensions of a real arch, for printing results in metres and kilonewtons.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Dimensions {
+    /// Mean radius r (m).
+    pub radius: f64,
+    /// Depth d of the arch barrel, perpendicular to its plane (m).
+    pub depth: f64,
+    /// Density ρ (kg/m³).
+    pub density: f64,
+    /// Gravitational acceleration g (m/s²).
+    pub g: f64,
+}
