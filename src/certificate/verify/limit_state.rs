@@ -35,11 +35,7 @@ impl Listed<'_> {
     /// A limit state of the thickness problem.
     pub(super) fn thickness(ls: &LimitStateCert) -> Listed<'_> {
         Listed {
-            state: StateAt {
-                x: ls.x,
-                eta: ls.eta,
-                load: None,
-            },
+            state: StateAt::bare(ls.x, ls.eta),
             pattern: &ls.pattern,
             rates: &ls.rates,
             live_power: 0.0,

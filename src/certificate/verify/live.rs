@@ -228,6 +228,11 @@ pub(super) struct StateAt<'a> {
 }
 
 impl<'a> StateAt<'a> {
+    /// A state of the thickness problem: x at η, no load.
+    pub(super) fn bare(x: [f64; 3], eta: f64) -> StateAt<'a> {
+        StateAt { x, eta, load: None }
+    }
+
     /// The state (x, λ) under the live load, at the load's thickness.
     pub(super) fn loaded(live: &'a Live, lambda: f64, x: [f64; 3]) -> StateAt<'a> {
         StateAt {

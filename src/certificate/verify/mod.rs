@@ -49,7 +49,7 @@ use input::{check_finite, model_of};
 use live::{Live, StateAt};
 use load::{check_state, verify_load};
 use report::reject;
-use thickness::{safe_state, verify_thickness};
+use thickness::verify_thickness;
 
 /// Re-checks `cert`. Ok with what was proved and checked, or the first reason it fails.
 pub fn verify(cert: &Certificate) -> Result<Report, Rejection> {
@@ -89,7 +89,13 @@ pub fn prove_admissible_side(cert: &Certificate) -> Result<usize, Rejection> {
         let Some(safe) = &cert.safe else {
             return reject("no safe side");
         };
-        return prove_state(&model, safe_state(safe), cert.mu, false, "safe side");
+        return prove_state(
+            &model,
+            StateAt::bare(safe.x, safe.eta),
+            cert.mu,
+            false,
+            "safe side",
+        );
     };
     let Some(adm) = cert.multiplier.as_ref().and_then(|m| m.admissible.as_ref()) else {
         return reject("no admissible side");

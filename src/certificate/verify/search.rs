@@ -232,11 +232,7 @@ pub(super) fn verify_search(
         if !search.limit_states_above.is_empty() || !search.no_mechanism.is_empty() {
             return reject("search: method hinges_only lists nothing above eta_s");
         }
-        let state = StateAt {
-            x: safe.x,
-            eta: safe.eta,
-            load: None,
-        };
+        let state = StateAt::bare(safe.x, safe.eta);
         prove_state(model, state, mu, true, "safe side").map_err(|e| {
             Rejection(format!("search (hinges_only): the safe state is not proved strictly inside P(eta_hi): {}", e.0))
         })?;
@@ -263,11 +259,7 @@ pub(super) fn verify_search(
 
 /// A state of the thickness problem listed without a mechanism.
 fn point(p: &NoMechanism) -> Point<'_> {
-    let state = StateAt {
-        x: p.x,
-        eta: p.eta,
-        load: None,
-    };
+    let state = StateAt::bare(p.x, p.eta);
     (state, &p.pattern, &p.farkas)
 }
 
@@ -324,11 +316,7 @@ fn limit_states_above(
         }
         last = ls.eta;
         check_limit_state(model, mu, ls, eta_lo, 2.0)?;
-        let state = StateAt {
-            x: ls.x,
-            eta: ls.eta,
-            load: None,
-        };
+        let state = StateAt::bare(ls.x, ls.eta);
         check_admissible(model, mu, state, &whose)?;
     }
     Ok(())

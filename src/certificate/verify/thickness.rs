@@ -11,7 +11,7 @@ use super::live::StateAt;
 use super::report::{mu_text, reject, Rejection, Report};
 use super::search::verify_search;
 use super::statics::{Model, LIMIT_STATE_TOL};
-use crate::certificate::format::{Certificate, Claim, SafeSide};
+use crate::certificate::format::{Certificate, Claim};
 
 /// Re-checks a certificate of the thickness problem (`least_thickness` or
 /// `no_equilibrium`, no load section) on its checked arch `model`.
@@ -93,7 +93,13 @@ fn least_thickness(
     if let Some(ls) = &cert.limit_state {
         check_pattern(model, &ls.pattern, cert.mu, None, "limit state")?;
     }
-    let pieces = prove_state(model, safe_state(safe), cert.mu, false, "safe side")?;
+    let pieces = prove_state(
+        model,
+        StateAt::bare(safe.x, safe.eta),
+        cert.mu,
+        false,
+        "safe side",
+    )?;
     checks.push(format!(
         "proved (interval arithmetic): the state x = [{}, {}, {}] is admissible at eta_hi = {} over the whole arch ({pieces} enclosures)",
         safe.x[0], safe.x[1], safe.x[2], safe.eta
@@ -126,13 +132,4 @@ fn least_thickness(
         verdict = Some(v);
     }
     Ok(((eta_lo, safe.eta), verdict))
-}
-
-/// The safe state, at η_hi.
-pub(super) fn safe_state(safe: &SafeSide) -> StateAt<'static> {
-    StateAt {
-        x: safe.x,
-        eta: safe.eta,
-        load: None,
-    }
 }
