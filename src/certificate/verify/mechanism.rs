@@ -78,21 +78,9 @@ pub(super) fn no_mechanism(
     }
     // every one-sense choice must be covered by a proved Farkas certificate (a section
     // slides one way only)
-    let both: Vec<(usize, usize)> = (0..keyed.len())
-        .filter(|&i| keyed[i].1 == ContactKind::SlidePlus)
-        .filter_map(|i| {
-            (0..keyed.len())
-                .find(|&k| {
-                    keyed[k].1 == ContactKind::SlideMinus
-                        && keyed[k].0 == keyed[i].0
-                        && keyed[k].2 == keyed[i].2
-                })
-                .map(|k| (i, k))
-        })
-        .collect();
-    if both.len() > 8 {
+    let Some(choices) = one_sense_choices(&keyed) else {
         return Ok(false);
-    }
+    };
     let mut proved: Vec<&KinematicFarkas> = Vec::new();
     for (i, f) in farkas.iter().enumerate() {
         if f.drop.iter().any(|&d| d >= keyed.len()) {
@@ -113,17 +101,42 @@ pub(super) fn no_mechanism(
             ));
         }
     }
-    let covered = (0..1usize << both.len()).all(|choice| {
-        let dropped: Vec<usize> = both
-            .iter()
-            .enumerate()
-            .map(|(b, &(pl, mi))| if choice >> b & 1 == 0 { mi } else { pl })
-            .collect();
+    Ok(choices.iter().all(|dropped| {
         proved
             .iter()
             .any(|f| f.drop.iter().all(|d| dropped.contains(d)))
-    });
-    Ok(covered)
+    }))
+}
+
+/// The choices of one sliding sense per section of a pattern whose contacts have the keys
+/// (angle, kind, section), each as the indices of the contacts left out (one choice, none
+/// left out, where no section lists both senses); `None` beyond 8 such sections.
+pub(crate) fn one_sense_choices<S: PartialEq>(
+    keys: &[(f64, ContactKind, S)],
+) -> Option<Vec<Vec<usize>>> {
+    // sections with both senses: (index of S+, index of S−)
+    let both: Vec<(usize, usize)> = (0..keys.len())
+        .filter(|&i| keys[i].1 == ContactKind::SlidePlus)
+        .filter_map(|i| {
+            (0..keys.len())
+                .find(|&k| {
+                    keys[k].1 == ContactKind::SlideMinus
+                        && keys[k].0 == keys[i].0
+                        && keys[k].2 == keys[i].2
+                })
+                .map(|k| (i, k))
+        })
+        .collect();
+    if both.len() > 8 {
+        return None;
+    }
+    let choice = |c: usize| -> Vec<usize> {
+        both.iter()
+            .enumerate()
+            .map(|(b, &(p, m))| if c >> b & 1 == 0 { m } else { p })
+            .collect()
+    };
+    Some((0..1usize << both.len()).map(choice).collect())
 }
 
 /// The compatibility column of a contact at η (formulation §4), in intervals.

@@ -40,6 +40,7 @@ mod search;
 mod statics;
 mod thickness;
 
+pub(crate) use mechanism::one_sense_choices;
 pub use report::{Rejection, Report};
 pub use statics::LIMIT_STATE_TOL;
 
