@@ -3,13 +3,12 @@
 //! certificate at λ_hi.
 
 use super::loaded::{at_lambda, cert_joints, row_at, sorted, Loaded};
-use super::sides::{find_farkas, move_inside, reduced, Row};
+use super::sides::{chord_pool, find_farkas, move_inside, reduced, widening, Row};
 use crate::arch::{Arch, JointLayout};
 use crate::certificate::format::{
     Certificate, LoadFarkas, LoadState, MultiplierSides, NotCertified,
 };
 use crate::certificate::verify::{prove_admissible_side, verify};
-use crate::contact::Contact;
 use crate::load::{rows, LiveLoad};
 use crate::multiplier::continuum::extreme;
 use crate::settings::Settings;
@@ -67,86 +66,63 @@ pub(super) fn bracket(
         )));
     }
     let row = |l: Loaded| row_at(arch, eta, mu, load, l);
-    // the Farkas pool: active contacts, interior tangencies also as chords β ± δ
-    let mut pool: Vec<Loaded> = pattern.to_vec();
-    if matches!(arch.layout(), JointLayout::Continuous) {
-        for &(c, side) in pattern {
-            if c.free {
-                for delta in [1e-2, 1e-3, 1e-4] {
-                    for b in [c.beta - delta, c.beta + delta] {
-                        if b > arch.beta_right() && b < arch.beta_left() {
-                            pool.push((Contact { beta: b, ..c }, side));
-                        }
-                    }
-                }
-            }
-        }
-    }
+    let pool = chord_pool(arch, pattern);
     let probe = |c: &Certificate| {
         let mut p = c.clone();
         p.load_search = None;
         p
     };
-    let mut g = gap.max(1e-15);
-    while g <= 1e-4 {
-        let lambda_hi = lambda_s * (1.0 + 0.5 * g);
-        let mut lambda_lo = lambda_s * (1.0 - 0.5 * g);
-        while lambda_hi - lambda_lo > g * lambda_hi {
-            lambda_lo = lambda_lo.next_up();
-        }
+    let wide = |lo: f64, hi: f64, g: f64| hi - lo > g * hi;
+    let found = widening(lambda_s, gap, wide, |lambda_lo, lambda_hi| {
         let lo_rows: Vec<Affine> = pattern
             .iter()
             .map(|&l| at_lambda(row(l), lambda_lo))
             .collect();
-        let x_lo = move_inside(&lo_rows, x_s, 1.0 / (lambda_s - lambda_lo), settings);
-        if let Some(x) = x_lo {
-            let mut c = cert.clone();
-            c.multiplier = Some(MultiplierSides {
-                admissible: Some(LoadState {
-                    lambda: lambda_lo,
-                    x,
-                }),
-                infeasible: None,
-                transfer: None,
-                recession: None,
-            });
-            if prove_admissible_side(&c).is_ok() {
-                let hi_rows: Vec<(Loaded, Row)> = pool
-                    .iter()
-                    .map(|&l| (l, Row::from(at_lambda(row(l), lambda_hi))))
-                    .collect();
-                let with = |labelled: &[(Loaded, f64)]| {
-                    let mut full = c.clone();
-                    if let Some(m) = full.multiplier.as_mut() {
-                        m.infeasible = Some(LoadFarkas {
-                            lambda: Some(lambda_hi),
-                            joints: cert_joints(load, labelled),
-                            lambda_row: None,
-                        });
-                    }
-                    full.gap = Some(lambda_hi - lambda_lo);
-                    full.gap_relative = Some((lambda_hi - lambda_lo) / lambda_hi);
-                    full
-                };
-                // four rows in x, or three sliding rows in (h, v) (they do not involve w)
-                let sliding = reduced(&hi_rows, |l| !l.0.kind.is_hinge(), &[2]);
-                let found = find_farkas(&hi_rows, 3, |l| verify(&probe(&with(l))).is_ok())
-                    .or_else(|| find_farkas(&sliding, 2, |l| verify(&probe(&with(l))).is_ok()));
-                if let Some(l) = found {
-                    let full = with(&l);
-                    return match verify(&full) {
-                        Ok(_) => Ok(full),
-                        Err(e) => Err(NotCertified(format!(
-                            "the evidence of the limit states does not verify: {}",
-                            e.0
-                        ))),
-                    };
-                }
+        let x = move_inside(&lo_rows, x_s, 1.0 / (lambda_s - lambda_lo), settings)?;
+        let mut c = cert.clone();
+        c.multiplier = Some(MultiplierSides {
+            admissible: Some(LoadState {
+                lambda: lambda_lo,
+                x,
+            }),
+            infeasible: None,
+            transfer: None,
+            recession: None,
+        });
+        prove_admissible_side(&c).ok()?;
+        let hi_rows: Vec<(Loaded, Row)> = pool
+            .iter()
+            .map(|&l| (l, Row::from(at_lambda(row(l), lambda_hi))))
+            .collect();
+        let with = |labelled: &[(Loaded, f64)]| {
+            let mut full = c.clone();
+            if let Some(m) = full.multiplier.as_mut() {
+                m.infeasible = Some(LoadFarkas {
+                    lambda: Some(lambda_hi),
+                    joints: cert_joints(Some(load), labelled),
+                    lambda_row: None,
+                });
             }
-        }
-        g *= 10.0;
-    }
-    Err(NotCertified(format!(
-        "no certificate could be proved at a relative gap up to 1e-4 (lambda_static = {lambda_s})"
-    )))
+            full.gap = Some(lambda_hi - lambda_lo);
+            full.gap_relative = Some((lambda_hi - lambda_lo) / lambda_hi);
+            full
+        };
+        // four rows in x, or three sliding rows in (h, v) (they do not involve w)
+        let sliding = reduced(&hi_rows, |l| !l.0.kind.is_hinge(), &[2]);
+        let l = find_farkas(&hi_rows, 3, |l| verify(&probe(&with(l))).is_ok())
+            .or_else(|| find_farkas(&sliding, 2, |l| verify(&probe(&with(l))).is_ok()))?;
+        let full = with(&l);
+        Some(match verify(&full) {
+            Ok(_) => Ok(full),
+            Err(e) => Err(NotCertified(format!(
+                "the evidence of the limit states does not verify: {}",
+                e.0
+            ))),
+        })
+    });
+    found.unwrap_or_else(|| {
+        Err(NotCertified(format!(
+            "no certificate could be proved at a relative gap up to 1e-4 (lambda_static = {lambda_s})"
+        )))
+    })
 }

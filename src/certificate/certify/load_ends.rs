@@ -260,7 +260,7 @@ fn farkas_among(
             admissible: None,
             infeasible: Some(LoadFarkas {
                 lambda: None,
-                joints: cert_joints(load, &joints),
+                joints: cert_joints(Some(load), &joints),
                 lambda_row: labelled.iter().find(|(l, _)| l.is_none()).map(|p| p.1),
             }),
             transfer: None,

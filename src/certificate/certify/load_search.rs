@@ -3,18 +3,16 @@
 //! mechanisms, and the Farkas alternative of the kinematic LP with the live power for every
 //! state listed without a mechanism.
 
-use super::kinematic::farkas_cover;
+use super::kinematic::no_mechanism as unmoved;
 use super::loaded::{joint, sorted, Loaded};
 use crate::arch::{Arch, JointLayout};
 use crate::certificate::format::{
-    ContinuumEnd, KinematicFarkas, LoadLimitStateCert, LoadNoMechanism, LoadSearchEvidence,
-    LoadSearchMethod, NotCertified, Side,
+    ContinuumEnd, LoadLimitStateCert, LoadNoMechanism, LoadSearchEvidence, LoadSearchMethod,
+    NotCertified,
 };
 use crate::contact::{Contact, ContactKind};
-use crate::kinematics::{column, power};
 use crate::limit_states::sweep::{sweep_load, CheckedPoint};
 use crate::load::LiveLoad;
-use crate::lp;
 use crate::multiplier::{LoadLimitState, LoadSurvey, UNBOUNDED_SEARCH_TOP};
 use crate::settings::Settings;
 use crate::statics::Reactions;
@@ -152,7 +150,7 @@ fn limit_state_cert(
     Ok(LoadLimitStateCert {
         lambda: s.lambda,
         x: s.x,
-        pattern: pattern.iter().map(|&l| joint(load, l)).collect(),
+        pattern: pattern.iter().map(|&l| joint(Some(load), l)).collect(),
         rates,
         live_power: s.live_power,
         continuum: s.continuum_to.map(|to| ContinuumEnd {
@@ -189,10 +187,7 @@ fn rates_on(pattern: &[Loaded], kept: &[Contact], rates: &[f64]) -> Option<Vec<f
     (next == kept.len()).then_some(out)
 }
 
-/// A state without a mechanism with positive live power, with the Farkas alternative of
-/// the kinematic LP for every one-sense choice: max z with c_j·y + z + u P_j + v q_j ≤ 0
-/// (P total, q live power), tried with the power rows combined as a P + b q (u = a w,
-/// v = b w) for a few ratios; z is halved to leave the verifier room for rounding.
+/// A state without a mechanism with positive live power, with the proof.
 fn no_mechanism(
     arch: &Arch,
     eta: f64,
@@ -200,52 +195,11 @@ fn no_mechanism(
     (lambda, x, pattern): (f64, Reactions, Vec<Loaded>),
     settings: &Settings,
 ) -> LoadNoMechanism {
-    let keys: Vec<(f64, ContactKind, Side)> =
-        pattern.iter().map(|(c, s)| (c.beta, c.kind, *s)).collect();
-    let farkas = farkas_cover(&keys, |drop: Vec<usize>| {
-        let kept: Vec<Loaded> = (0..pattern.len())
-            .filter(|i| !drop.contains(i))
-            .map(|i| pattern[i])
-            .collect();
-        let plain: Vec<Contact> = kept.iter().map(|p| p.0).collect();
-        let cols: Vec<[f64; 3]> = plain.iter().map(|c| column(c.kind, c.beta, eta)).collect();
-        let dead = power(arch, eta, &plain);
-        let live = load.power(arch, eta, &kept);
-        let total: Vec<f64> = dead
-            .iter()
-            .zip(&live)
-            .map(|(d, l)| d + lambda * l)
-            .collect();
-        [
-            (1.0, 0.0),
-            (0.0, 1.0),
-            (1.0, 1.0),
-            (1.0, 0.1),
-            (0.1, 1.0),
-            (1.0, 0.01),
-            (0.01, 1.0),
-        ]
-        .iter()
-        .find_map(|&(a, b)| {
-            let p: Vec<f64> = total
-                .iter()
-                .zip(&live)
-                .map(|(t, l)| a * t + b * l)
-                .collect();
-            let (y, z, u) = lp::kinematic_farkas(&cols, &p, settings).ok()?;
-            (z > 0.0).then_some(KinematicFarkas {
-                drop: drop.clone(),
-                y,
-                z: 0.5 * z,
-                u: (a * u).max(0.0),
-                v: (b * u).max(0.0),
-            })
-        })
-    });
+    let (pattern, farkas) = unmoved(arch, eta, Some((load, lambda)), pattern, settings);
     LoadNoMechanism {
         lambda,
         x,
-        pattern: pattern.iter().map(|&l| joint(load, l)).collect(),
+        pattern,
         farkas,
     }
 }

@@ -1,5 +1,5 @@
-//! The contacts of the loaded problem and how a load certificate records them: the load,
-//! the side of a loaded section, the rows in (h, v, w, λ), the order of the lists.
+//! The contacts of either problem and how a certificate records them: the load, the side of
+//! a loaded section, the rows in (h, v, w, λ), the order of the lists.
 
 use crate::arch::Arch;
 use crate::certificate::format::{CertJoint, LoadKind, LoadSpec, PatternJoint, Side, Towards};
@@ -7,8 +7,8 @@ use crate::contact::Contact;
 use crate::load::{live_activation, LiveLoad};
 use crate::statics::{actions, Affine};
 
-/// A contact of the loaded problem: the activation function and the side of the loaded
-/// section it belongs to (`After` away from a point load).
+/// A contact of either problem: the activation function and the side of the loaded section
+/// it belongs to (`After` away from a point load, and in the thickness problem).
 pub(super) type Loaded = (Contact, Side);
 
 /// The load as the certificate records it.
@@ -33,9 +33,10 @@ pub(super) fn load_spec(eta: f64, load: &LiveLoad) -> LoadSpec {
     }
 }
 
-/// The side as the certificate records it: only at the point load's own angle.
-fn cert_side(load: &LiveLoad, beta: f64, side: Side) -> Option<Side> {
-    load.splits(beta).then_some(side)
+/// The side as the certificate records it: only at the point load's own angle (never
+/// without a load: `None` for the thickness problem).
+fn cert_side(load: Option<&LiveLoad>, beta: f64, side: Side) -> Option<Side> {
+    load.is_some_and(|l| l.splits(beta)).then_some(side)
 }
 
 /// The activation function of a loaded contact as a row in (h, v, w, λ): `(a, c)`.
@@ -70,7 +71,8 @@ pub(super) fn sorted(mut p: Vec<Loaded>) -> Vec<Loaded> {
     p
 }
 
-pub(super) fn joint(load: &LiveLoad, (c, side): Loaded) -> PatternJoint {
+/// A contact as a joint of a pattern (`load` `None` for the thickness problem).
+pub(super) fn joint(load: Option<&LiveLoad>, (c, side): Loaded) -> PatternJoint {
     PatternJoint {
         beta: c.beta,
         kind: c.kind,
@@ -88,7 +90,9 @@ pub(super) fn carries(load: &LiveLoad, (c, side): Loaded) -> bool {
     }
 }
 
-pub(super) fn cert_joints(load: &LiveLoad, labelled: &[(Loaded, f64)]) -> Vec<CertJoint> {
+/// The contacts of a Farkas certificate with their multipliers (`load` `None` for the
+/// thickness problem).
+pub(super) fn cert_joints(load: Option<&LiveLoad>, labelled: &[(Loaded, f64)]) -> Vec<CertJoint> {
     labelled
         .iter()
         .map(|&((c, side), y)| CertJoint {

@@ -2,15 +2,14 @@
 //! mechanisms, and the Farkas alternative of the kinematic LP for the least admissible state
 //! and every point the sweep checked without a mechanism.
 
-use super::kinematic::farkas_cover;
+use super::kinematic::no_mechanism as unmoved;
+use super::loaded::joint;
 use crate::arch::Arch;
 use crate::certificate::format::{
-    KinematicFarkas, LimitStateCert, NoMechanism, PatternJoint, SearchEvidence, SearchMethod,
+    LimitStateCert, NoMechanism, PatternJoint, SearchEvidence, SearchMethod, Side,
 };
-use crate::contact::{Contact, ContactKind};
-use crate::kinematics::{column, power};
+use crate::contact::Contact;
 use crate::limit_states::{LimitStates, SweptState};
-use crate::lp;
 use crate::mechanism::Mechanism;
 use crate::settings::Settings;
 use crate::statics::Reactions;
@@ -21,7 +20,7 @@ pub(super) fn limit_state_cert(eta: f64, x: Reactions, mechanism: &Mechanism) ->
         .contacts
         .iter()
         .zip(&mechanism.rates)
-        .map(|(c, &r)| (pattern_joint(c), r))
+        .map(|(c, &r)| (joint(None, (*c, Side::After)), r))
         .collect();
     joints.sort_by(|a, b| a.0.beta.total_cmp(&b.0.beta).then(a.0.kind.cmp(&b.0.kind)));
     LimitStateCert {
@@ -33,46 +32,7 @@ pub(super) fn limit_state_cert(eta: f64, x: Reactions, mechanism: &Mechanism) ->
     }
 }
 
-pub(super) fn pattern_joint(c: &Contact) -> PatternJoint {
-    PatternJoint {
-        beta: c.beta,
-        kind: c.kind,
-        at: c.at,
-        side: None,
-    }
-}
-
-/// Farkas certificates that the kinematic LP on `pattern` at η is infeasible for every
-/// one-sense choice (a joint where both sliding senses are active slides one way only):
-/// first for the whole pattern, else one per choice. z is halved so that every inequality
-/// holds with room for the verifier's rounding. Those that cannot be found are left out
-/// (the verifier then reports the state as not proved).
-fn kinematic_farkas(
-    arch: &Arch,
-    eta: f64,
-    pattern: &[Contact],
-    settings: &Settings,
-) -> Vec<KinematicFarkas> {
-    let keys: Vec<(f64, ContactKind, bool)> =
-        pattern.iter().map(|c| (c.beta, c.kind, false)).collect();
-    farkas_cover(&keys, |drop: Vec<usize>| {
-        let kept: Vec<Contact> = (0..pattern.len())
-            .filter(|i| !drop.contains(i))
-            .map(|i| pattern[i])
-            .collect();
-        let cols: Vec<[f64; 3]> = kept.iter().map(|c| column(c.kind, c.beta, eta)).collect();
-        let p = power(arch, eta, &kept);
-        let (y, z, u) = lp::kinematic_farkas(&cols, &p, settings).ok()?;
-        (z > 0.0).then_some(KinematicFarkas {
-            drop,
-            y,
-            z: 0.5 * z,
-            u: u.max(0.0),
-            v: 0.0,
-        })
-    })
-}
-
+/// A state without a mechanism of the thickness problem, with the proof.
 fn no_mechanism(
     arch: &Arch,
     eta: f64,
@@ -80,13 +40,13 @@ fn no_mechanism(
     pattern: &[Contact],
     settings: &Settings,
 ) -> NoMechanism {
-    let mut pattern = pattern.to_vec();
-    pattern.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.kind.cmp(&b.kind)));
+    let pattern = pattern.iter().map(|&c| (c, Side::After)).collect();
+    let (pattern, farkas) = unmoved(arch, eta, None, pattern, settings);
     NoMechanism {
         eta,
         x,
-        pattern: pattern.iter().map(pattern_joint).collect(),
-        farkas: kinematic_farkas(arch, eta, &pattern, settings),
+        pattern,
+        farkas,
     }
 }
 

@@ -2,10 +2,58 @@
 //! state moved strictly inside the admissible set (a margin LP), and a Farkas combination of
 //! d + 1 rows chosen by its float cofactors.
 
+use super::loaded::Loaded;
+use crate::arch::{Arch, JointLayout};
+use crate::contact::Contact;
 use crate::lp;
 use crate::settings::Settings;
 use crate::statics::{Affine, Reactions};
 use itertools::Itertools;
+
+/// Tries the brackets [lo, hi] around `s` at relative gaps g = `gap`, 10 `gap`, … up to
+/// 1e-4: hi = s (1 + g/2), lo = s (1 − g/2) raised by ulps while `wide(lo, hi, g)` (the gap
+/// as computed in floating point must not exceed g: rounding of the two ends could
+/// otherwise push it over by a few ulps); returns the first answer of `attempt(lo, hi)`.
+pub(super) fn widening<T>(
+    s: f64,
+    gap: f64,
+    wide: impl Fn(f64, f64, f64) -> bool,
+    mut attempt: impl FnMut(f64, f64) -> Option<T>,
+) -> Option<T> {
+    let mut g = gap.max(1e-15);
+    while g <= 1e-4 {
+        let hi = s * (1.0 + 0.5 * g);
+        let mut lo = s * (1.0 - 0.5 * g);
+        while wide(lo, hi, g) {
+            lo = lo.next_up();
+        }
+        if let Some(t) = attempt(lo, hi) {
+            return Some(t);
+        }
+        g *= 10.0;
+    }
+    None
+}
+
+/// The Farkas pool of a bracket: the active contacts, and on a continuous arch the interior
+/// tangencies also as chords β ± δ.
+pub(super) fn chord_pool(arch: &Arch, pattern: &[Loaded]) -> Vec<Loaded> {
+    let mut pool: Vec<Loaded> = pattern.to_vec();
+    if matches!(arch.layout(), JointLayout::Continuous) {
+        for &(c, side) in pattern {
+            if c.free {
+                for delta in [1e-2, 1e-3, 1e-4] {
+                    for b in [c.beta - delta, c.beta + delta] {
+                        if b > arch.beta_right() && b < arch.beta_left() {
+                            pool.push((Contact { beta: b, ..c }, side));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    pool
+}
 
 /// An affine function of d unknowns (d = 2, 3 or 4): `g · u + c`.
 #[derive(Debug, Clone)]

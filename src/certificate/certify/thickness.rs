@@ -3,11 +3,12 @@
 //! certificate that no thickness stands.
 
 use super::blank::empty;
+use super::loaded::{cert_joints, Loaded};
 use super::search::{evidence, limit_state_cert};
-use super::sides::{find_farkas, move_inside, Row};
-use crate::arch::{Arch, JointLayout};
-use crate::certificate::format::{CertJoint, Certificate, Claim, Farkas, NotCertified, SafeSide};
-use crate::certificate::verify::{prove_safe_only, verify};
+use super::sides::{chord_pool, find_farkas, move_inside, widening, Row};
+use crate::arch::Arch;
+use crate::certificate::format::{Certificate, Claim, Farkas, NotCertified, SafeSide, Side};
+use crate::certificate::verify::{prove_admissible_side, verify};
 use crate::contact::{Contact, ContactKind};
 use crate::friction::friction_limit;
 use crate::limit::LimitState;
@@ -16,41 +17,25 @@ use crate::settings::Settings;
 use crate::state::State;
 use crate::statics::{actions, Affine, Reactions};
 
-fn joints_of(contacts: &[Contact], y: &[f64]) -> Vec<CertJoint> {
-    contacts
-        .iter()
-        .zip(y)
-        .map(|(c, &y)| CertJoint {
-            beta: c.beta,
-            kind: c.kind,
-            side: None,
-            y,
-        })
-        .collect()
-}
-
 /// The thickness problem's Farkas search over contacts at (η, μ).
 fn find_contact_farkas(
     arch: &Arch,
-    pool: &[Contact],
+    pool: &[Loaded],
     eta: f64,
     mu: f64,
     d: usize,
     check: impl Fn(&Farkas) -> bool,
 ) -> Option<Farkas> {
-    let rows: Vec<(Contact, Row)> = pool
+    let rows: Vec<(Loaded, Row)> = pool
         .iter()
-        .map(|c| {
+        .map(|&(c, side)| {
             let row = actions(arch, eta, c.beta).activation(c.kind, 0, eta, mu);
-            (*c, Row::from(row))
+            ((c, side), Row::from(row))
         })
         .collect();
-    let make = |labelled: &[(Contact, f64)]| {
-        let (contacts, y): (Vec<Contact>, Vec<f64>) = labelled.iter().copied().unzip();
-        Farkas {
-            eta: (d == 3).then_some(eta),
-            joints: joints_of(&contacts, &y),
-        }
+    let make = |labelled: &[(Loaded, f64)]| Farkas {
+        eta: (d == 3).then_some(eta),
+        joints: cert_joints(None, labelled),
     };
     find_farkas(&rows, d, |l| check(&make(l))).map(|l| make(&l))
 }
@@ -64,7 +49,8 @@ pub(super) fn certify_no_equilibrium(
         .map_err(|e| NotCertified(e.to_string()))?
         .ok_or_else(|| NotCertified("no finite friction admits equilibrium".into()))?;
     let mut cert = empty(arch, mu, Claim::NoEquilibrium);
-    let f = find_contact_farkas(arch, &fl.pattern, 1.0, mu, 2, |f| {
+    let pool: Vec<Loaded> = fl.pattern.iter().map(|&c| (c, Side::After)).collect();
+    let f = find_contact_farkas(arch, &pool, 1.0, mu, 2, |f| {
         let mut c = cert.clone();
         c.collapse = Some(f.clone());
         verify(&c).is_ok()
@@ -123,60 +109,28 @@ pub(super) fn certify_limit(
             settings,
         ));
     }
-    // the Farkas pool: active contacts, interior tangencies also as chords β ± δ
-    let mut pool: Vec<Contact> = pattern_s.clone();
-    if matches!(arch.layout(), JointLayout::Continuous) {
-        for c in &pattern_s {
-            if c.free {
-                for delta in [1e-2, 1e-3, 1e-4] {
-                    for b in [c.beta - delta, c.beta + delta] {
-                        if b > arch.beta_right() && b < arch.beta_left() {
-                            pool.push(Contact { beta: b, ..*c });
-                        }
-                    }
-                }
-            }
-        }
-    }
-    let mut g = gap.max(1e-15);
-    while g <= 1e-4 {
-        let eta_hi = eta_s * (1.0 + 0.5 * g);
-        let mut eta_lo = eta_s * (1.0 - 0.5 * g);
-        // the gap as computed in floating point must not exceed g (rounding of the two
-        // ends could otherwise push it over by a few ulps)
-        while (eta_hi - eta_lo) / eta_hi > g {
-            eta_lo = eta_lo.next_up();
-        }
-        if let Some(x) = safe_state(arch, mu, (eta_s, x_s, &pattern_s), eta_hi, settings) {
-            let mut c = cert.clone();
-            c.safe = Some(SafeSide { eta: eta_hi, x });
-            let safe_ok = {
-                let mut probe = c.clone();
-                probe.claim = Claim::LeastThickness;
-                // check the safe side alone with a trivially failing lower side removed
-                prove_safe_only(&probe).is_ok()
-            };
-            if safe_ok {
-                let found = find_contact_farkas(arch, &pool, eta_lo, mu, 3, |f| {
-                    let mut full = c.clone();
-                    full.collapse = Some(f.clone());
-                    full.gap = Some(eta_hi - eta_lo);
-                    full.gap_relative = Some((eta_hi - eta_lo) / eta_hi);
-                    verify(&full).is_ok()
-                });
-                if let Some(f) = found {
-                    c.collapse = Some(f);
-                    c.gap = Some(eta_hi - eta_lo);
-                    c.gap_relative = Some((eta_hi - eta_lo) / eta_hi);
-                    return Ok(c);
-                }
-            }
-        }
-        g *= 10.0;
-    }
-    Err(NotCertified(format!(
-        "no certificate could be proved at a relative gap up to 1e-4 (eta_s = {eta_s})"
-    )))
+    let pattern: Vec<Loaded> = pattern_s.iter().map(|&c| (c, Side::After)).collect();
+    let pool = chord_pool(arch, &pattern);
+    let wide = |lo: f64, hi: f64, g: f64| (hi - lo) / hi > g;
+    widening(eta_s, gap, wide, |eta_lo, eta_hi| {
+        let x = safe_state(arch, mu, (eta_s, x_s, &pattern_s), eta_hi, settings)?;
+        let mut c = cert.clone();
+        c.safe = Some(SafeSide { eta: eta_hi, x });
+        prove_admissible_side(&c).ok()?;
+        c.gap = Some(eta_hi - eta_lo);
+        c.gap_relative = Some((eta_hi - eta_lo) / eta_hi);
+        c.collapse = Some(find_contact_farkas(arch, &pool, eta_lo, mu, 3, |f| {
+            let mut full = c.clone();
+            full.collapse = Some(f.clone());
+            verify(&full).is_ok()
+        })?);
+        Some(c)
+    })
+    .ok_or_else(|| {
+        NotCertified(format!(
+            "no certificate could be proved at a relative gap up to 1e-4 (eta_s = {eta_s})"
+        ))
+    })
 }
 
 /// The limit state moved into the interior of the admissible set at η_hi: a small LP in

@@ -1,7 +1,9 @@
-//! The proof that the activation functions are ≤ 0 (or < 0) over pieces of the arch:
+//! The proof that the activation functions are ≤ 0 (or < 0) over pieces of the arch, for a
+//! state of either problem (the dead actions, plus λ times the live ones under a load):
 //! second-order Taylor enclosures with adaptive splitting over a continuum of angles, or the
 //! values at the listed joints of a discrete arch, in interval arithmetic.
 
+use super::live::{Live, StateAt};
 use super::report::{reject, Rejection};
 use super::statics::{kinds, phi, Model, Ntm};
 use crate::certificate::format::ContactKind;
@@ -38,22 +40,62 @@ fn taylor_upper(
     (upper, f0.lo)
 }
 
-/// Proves φ ≤ 0 for every activation function over the arch at (η, x).
-/// With `strict`, proves φ < 0 instead (the state lies in the interior of P(η)).
-pub(super) fn prove_admissible(
+/// Proves φ ≤ 0 (φ < 0 with `strict`, the state in the interior of P) for every
+/// activation function at `state`: its dead actions plus λ times the live ones, over the
+/// whole arch (both sides of a loaded section). `what` starts the rejection messages.
+pub(super) fn prove_state(
     model: &Model,
-    x: [f64; 3],
-    eta: f64,
+    state: StateAt,
     mu: Option<f64>,
     strict: bool,
+    what: &str,
 ) -> Result<usize, Rejection> {
-    let eval = |b: I| model.ntm(b, x, eta);
-    let whole = Piece {
-        a: model.beta_r,
-        b: model.beta_l,
-        eval: &eval,
+    let (x, eta) = (state.x, state.eta);
+    let dead = move |b: I| model.ntm(b, x, eta);
+    prove_with_live(model, &dead, eta, state.load, mu, strict, what)
+}
+
+/// The actions over an interval of angles, boxed.
+type Eval<'a> = Box<dyn Fn(I) -> Ntm + 'a>;
+
+/// Proves φ ≤ 0 (φ < 0 with `strict`) on every piece of the arch at thickness `eta` for the
+/// actions `base(β)`, plus λ times the live ones of `load` where the piece's sections carry
+/// it: the whole arch as one piece without a load.
+pub(super) fn prove_with_live(
+    model: &Model,
+    base: &dyn Fn(I) -> Ntm,
+    eta: f64,
+    load: Option<(&Live, f64)>,
+    mu: Option<f64>,
+    strict: bool,
+    what: &str,
+) -> Result<usize, Rejection> {
+    let spec = match load {
+        Some((live, _)) => live.pieces(model),
+        None => vec![(model.beta_r, model.beta_l, false)],
     };
-    prove_pieces(model, &[whole], eta, mu, kinds(mu), strict, "safe side")
+    let evals: Vec<Eval> = spec
+        .iter()
+        .map(|&(_, _, carries)| -> Eval {
+            Box::new(move |b: I| {
+                let n = base(b);
+                match load.and_then(|(live, lambda)| Some((live.ntm(model, b, carries)?, lambda))) {
+                    Some((l, lambda)) => n.plus(lambda, &l),
+                    None => n,
+                }
+            })
+        })
+        .collect();
+    let pieces: Vec<Piece> = spec
+        .iter()
+        .zip(&evals)
+        .map(|(&(a, b, _), f)| Piece {
+            a,
+            b,
+            eval: f.as_ref(),
+        })
+        .collect();
+    prove_pieces(model, &pieces, eta, mu, kinds(mu), strict, what)
 }
 
 /// A smooth piece [a, b] of the arch and its actions over an interval of angles (the

@@ -1,5 +1,5 @@
-//! The certificate as read, checked before anything is proved: every number finite, and
-//! the arch well formed (it becomes the [`Model`] of the proofs).
+//! The certificate as read, checked before anything is proved: every number finite, the
+//! arch well formed (it becomes the [`Model`] of the proofs), the stated gaps.
 
 use super::report::{reject, Rejection};
 use super::statics::Model;
@@ -92,4 +92,31 @@ pub(super) fn model_of(cert: &Certificate) -> Result<Model, Rejection> {
         centroid: a.weight == WeightModel::Centroid,
         joints: a.joint_angles.clone(),
     })
+}
+
+/// The stated gaps must be hi − lo and (hi − lo)/hi of the bracket of the parameter
+/// `param` (`eta` or `lambda`), hi > 0.
+pub(super) fn check_gap(
+    cert: &Certificate,
+    lo: f64,
+    hi: f64,
+    param: &str,
+) -> Result<(), Rejection> {
+    let gap = hi - lo;
+    if let Some(g) = cert.gap {
+        if !g.is_finite() || (g - gap).abs() > 1e-15 * hi.abs() + 1e-300 {
+            return reject(format!(
+                "stated gap {g} differs from {param}_hi - {param}_lo = {gap}"
+            ));
+        }
+    }
+    if let Some(g) = cert.gap_relative {
+        let r = gap / hi;
+        if !g.is_finite() || (g - r).abs() > 1e-15 + 1e-9 * r.abs() {
+            return reject(format!(
+                "stated gap_relative {g} differs from ({param}_hi - {param}_lo)/{param}_hi = {r}"
+            ));
+        }
+    }
+    Ok(())
 }

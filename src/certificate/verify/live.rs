@@ -215,6 +215,75 @@ impl Live {
     }
 }
 
+/// A state of either problem, for the checks of a listed or proved state: reactions x at
+/// thickness η and, under a live load, its multiplier λ.
+#[derive(Clone, Copy)]
+pub(super) struct StateAt<'a> {
+    /// Reactions.
+    pub(super) x: [f64; 3],
+    /// Thickness.
+    pub(super) eta: f64,
+    /// The live load and λ (load certificates).
+    pub(super) load: Option<(&'a Live, f64)>,
+}
+
+impl<'a> StateAt<'a> {
+    /// A state of the thickness problem: x at η, no load.
+    pub(super) fn bare(x: [f64; 3], eta: f64) -> StateAt<'a> {
+        StateAt { x, eta, load: None }
+    }
+
+    /// The state (x, λ) under the live load, at the load's thickness.
+    pub(super) fn loaded(live: &'a Live, lambda: f64, x: [f64; 3]) -> StateAt<'a> {
+        StateAt {
+            x,
+            eta: live.eta,
+            load: Some((live, lambda)),
+        }
+    }
+
+    /// N, T, M (with β-derivatives) at the joint β on `side`: the dead actions of x,
+    /// plus λ times the live ones where the section carries the load.
+    pub(super) fn ntm(&self, model: &Model, beta: f64, side: Option<Side>) -> Ntm {
+        let b = I::point(beta);
+        let dead = model.ntm(b, self.x, self.eta);
+        match self.load {
+            Some((live, lambda)) => match live.ntm(model, b, live.carries(beta, side)) {
+                Some(l) => dead.plus(lambda, &l),
+                None => dead,
+            },
+            None => dead,
+        }
+    }
+
+    /// The live load, if any.
+    pub(super) fn live(&self) -> Option<&'a Live> {
+        self.load.map(|(live, _)| live)
+    }
+
+    /// The point load's angle (two sections there).
+    pub(super) fn split(&self) -> Option<f64> {
+        self.live().and_then(|live| live.split())
+    }
+
+    /// 1 + ‖x‖₁, the scale of the floating-point tolerances.
+    pub(super) fn scale(&self) -> f64 {
+        1.0 + self.x.iter().map(|v| v.abs()).sum::<f64>()
+    }
+}
+
+/// Where a proof over the arch holds, in words.
+pub(super) fn everywhere(model: &Model, live: &Live) -> &'static str {
+    match (&model.joints, live.split()) {
+        (Some(j), Some(bp)) if j.contains(&bp) => {
+            "at every joint (both sides of the loaded section)"
+        }
+        (Some(_), _) => "at every joint",
+        (None, Some(_)) => "over the whole arch (both sides of the loaded section)",
+        (None, None) => "over the whole arch",
+    }
+}
+
 /// The sections at a joint: two (`before`, `after`) at the point load's angle, else one.
 pub(super) fn sections(beta: f64, split: Option<f64>) -> Vec<Option<Side>> {
     if split == Some(beta) {

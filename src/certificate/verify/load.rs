@@ -16,14 +16,15 @@
 //! * `no_equilibrium` under a load: five rows in (h, v, w, λ) (with, possibly, −λ ≤ 0),
 //!   the cofactors of their 4-gradients: no state at any λ ≥ 0.
 
-use super::live::Live;
-use super::load_admissible::{check_state, everywhere, prove_state};
-use super::load_farkas::{prove_farkas_any, prove_farkas_at};
-use super::load_search::verify_load_search;
+use super::enclosure::prove_state;
+use super::farkas::prove_infeasible;
+use super::input::check_gap;
+use super::live::{everywhere, Live, StateAt};
 use super::load_unbounded::{prove_recession, prove_transfer};
 use super::report::{reject, Rejection, Report};
+use super::search::verify_load_search;
 use super::statics::Model;
-use crate::certificate::format::{Certificate, Claim, MultiplierSides};
+use crate::certificate::format::{Certificate, Claim, LoadState, MultiplierSides};
 
 /// Verifies a certificate with a `load` section (`cert.load` must be present).
 pub(super) fn verify_load(cert: &Certificate, model: &Model) -> Result<Report, Rejection> {
@@ -117,18 +118,19 @@ fn largest_multiplier(
             adm.lambda
         ));
     }
-    let pieces = prove_state(model, live, adm, mu, "admissible side")?;
+    let state = StateAt::loaded(live, adm.lambda, adm.x);
+    let pieces = prove_state(model, state, mu, false, "admissible side")?;
     checks.push(format!(
         "proved (interval arithmetic): the state x = [{}, {}, {}] is admissible at lambda_lo = {} {} ({pieces} enclosures)",
         adm.x[0], adm.x[1], adm.x[2], adm.lambda, everywhere(model, live)
     ));
-    let margin = prove_farkas_at(model, live, inf, lambda_hi, mu)?;
+    let margin = prove_infeasible(model, live, inf, Some(lambda_hi), mu)?;
     checks.push(format!(
         "proved (interval arithmetic): no state is admissible at lambda_hi = {lambda_hi} (Farkas on {} joints{}, margin {margin:.3e}); the admissible (x, lambda) are convex, so none at any lambda >= lambda_hi",
         inf.joints.len(),
         if inf.joints.len() == 3 { ", sliding rows in (h, v): w does not enter them" } else { "" }
     ));
-    check_gap(cert, adm.lambda, lambda_hi)?;
+    check_gap(cert, adm.lambda, lambda_hi, "lambda")?;
     Ok((adm.lambda, Some(lambda_hi)))
 }
 
@@ -149,7 +151,8 @@ fn unbounded_multiplier(
     if cert.gap.is_some() || cert.gap_relative.is_some() {
         return reject("unbounded_multiplier: a gap is stated, but there is no bracket");
     }
-    let pieces = prove_state(model, live, adm, mu, "admissible side")?;
+    let state = StateAt::loaded(live, adm.lambda, adm.x);
+    let pieces = prove_state(model, state, mu, false, "admissible side")?;
     checks.push(format!(
         "proved (interval arithmetic): the state x = [{}, {}, {}] is admissible at lambda = {} {} ({pieces} enclosures)",
         adm.x[0], adm.x[1], adm.x[2], adm.lambda, everywhere(model, live)
@@ -186,7 +189,7 @@ fn no_equilibrium(
     if cert.gap.is_some() || cert.gap_relative.is_some() {
         return reject("no_equilibrium: a gap is stated, but there is no bracket");
     }
-    let margin = prove_farkas_any(model, live, inf, mu)?;
+    let margin = prove_infeasible(model, live, inf, None, mu)?;
     checks.push(format!(
         "proved (interval arithmetic): no state (h, v, w, lambda) with lambda >= 0 is admissible (Farkas on {} joints{}, margin {margin:.3e})",
         inf.joints.len(),
@@ -195,23 +198,13 @@ fn no_equilibrium(
     Ok(())
 }
 
-/// The stated gaps must be λ_hi − λ_lo and (λ_hi − λ_lo)/λ_hi.
-fn check_gap(cert: &Certificate, lo: f64, hi: f64) -> Result<(), Rejection> {
-    let gap = hi - lo;
-    if let Some(g) = cert.gap {
-        if !g.is_finite() || (g - gap).abs() > 1e-15 * hi.abs() + 1e-300 {
-            return reject(format!(
-                "stated gap {g} differs from lambda_hi - lambda_lo = {gap}"
-            ));
-        }
-    }
-    if let Some(g) = cert.gap_relative {
-        let r = gap / hi;
-        if !g.is_finite() || (g - r).abs() > 1e-15 + 1e-9 * r.abs() {
-            return reject(format!(
-                "stated gap_relative {g} differs from (lambda_hi - lambda_lo)/lambda_hi = {r}"
-            ));
-        }
+/// A state (x, λ) as read: λ finite and ≥ 0, x finite.
+pub(super) fn check_state(s: &LoadState, what: &str) -> Result<(), Rejection> {
+    if !(s.lambda.is_finite() && s.lambda >= 0.0 && s.x.iter().all(|v| v.is_finite())) {
+        return reject(format!(
+            "{what}: lambda must be finite and >= 0 and x finite, found lambda = {}",
+            s.lambda
+        ));
     }
     Ok(())
 }

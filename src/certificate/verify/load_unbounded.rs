@@ -2,9 +2,8 @@
 //! a recession direction of the admissible set, keeps the admissible state admissible as λ
 //! grows.
 
-use super::enclosure::{prove_pieces, Piece};
-use super::live::{sections, side_text, Live};
-use super::load_admissible::{everywhere, prove_with_live};
+use super::enclosure::{prove_pieces, prove_with_live, Piece};
+use super::live::{everywhere, sections, side_text, Live};
 use super::report::{reject, Rejection};
 use super::statics::{kinds, phi, Model, Ntm};
 use crate::certificate::format::{ContactKind, LoadState, Side, Transfer};
@@ -143,7 +142,16 @@ pub(super) fn prove_recession(
     }
     let (dx, dl) = (d.x, d.lambda);
     let weightless = move |b: I| model.ntm_weightless(b, dx);
-    let count = prove_with_live(model, live, &weightless, dl, mu, "multiplier.recession")?;
+    let load = Some((live, dl));
+    let count = prove_with_live(
+        model,
+        &weightless,
+        live.eta,
+        load,
+        mu,
+        false,
+        "multiplier.recession",
+    )?;
     Ok(format!(
         "proved (interval arithmetic): along the direction (d_x, d_lambda) = ([{}, {}, {}], {dl}) no activation function grows {} ({count} enclosures), so the admissible state stays admissible at every larger lambda",
         dx[0], dx[1], dx[2], everywhere(model, live)

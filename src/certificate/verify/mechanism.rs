@@ -4,49 +4,15 @@
 //! section.
 
 use super::joints::check_pattern;
-use super::limit_state::LIMIT_STATE_TOL;
-use super::live::{sections, side_text, Live};
+use super::live::{sections, side_text, StateAt};
 use super::report::{reject, Rejection};
-use super::statics::{kinds, phi, Model, Ntm};
+use super::statics::{kinds, phi, Model, LIMIT_STATE_TOL};
 use crate::certificate::format::{ContactKind, KinematicFarkas, PatternJoint, Side};
 use crate::certificate::interval::Interval as I;
 
 /// A contact not listed in a state's pattern must lie at least this far below zero,
 /// relative to (1 + ‖x‖₁), for the pattern to count as the state's whole active set.
 pub const INACTIVE_REL: f64 = 1e-12;
-
-/// A state of either problem, for the checks of a listed state: reactions x at thickness
-/// η and, under a live load, its multiplier λ.
-#[derive(Clone, Copy)]
-pub(super) struct StateAt<'a> {
-    /// Reactions.
-    pub(super) x: [f64; 3],
-    /// Thickness.
-    pub(super) eta: f64,
-    /// The live load and λ (load certificates).
-    pub(super) load: Option<(&'a Live, f64)>,
-}
-
-impl StateAt<'_> {
-    /// N, T, M (with β-derivatives) at the joint β on `side`: the dead actions of x,
-    /// plus λ times the live ones where the section carries the load.
-    pub(super) fn ntm(&self, model: &Model, beta: f64, side: Option<Side>) -> Ntm {
-        let b = I::point(beta);
-        let dead = model.ntm(b, self.x, self.eta);
-        match self.load {
-            Some((live, lambda)) => match live.ntm(model, b, live.carries(beta, side)) {
-                Some(l) => dead.plus(lambda, &l),
-                None => dead,
-            },
-            None => dead,
-        }
-    }
-
-    /// The point load's angle (two sections there).
-    fn split(&self) -> Option<f64> {
-        self.load.and_then(|(live, _)| live.split())
-    }
-}
 
 /// Checks a state listed without mechanism (its `pattern` and `farkas` at `state`);
 /// `Ok(true)` when the Farkas certificates prove it for every one-sense choice,
@@ -80,7 +46,7 @@ pub(super) fn no_mechanism(
         pattern.iter().map(|j| (j.beta, j.kind, j.side)).collect();
     // the pattern: valid joints, active (floating point), and the whole active set
     check_pattern(model, pattern, mu, state.split(), whose)?;
-    let scale = 1.0 + state.x.iter().map(|v| v.abs()).sum::<f64>();
+    let scale = state.scale();
     for &(b, k, side) in &keyed {
         let v = phi(k, 0, &state.ntm(model, b, side), state.eta, mu).mid();
         if v.is_nan() || v.abs() > LIMIT_STATE_TOL * scale {
@@ -112,21 +78,9 @@ pub(super) fn no_mechanism(
     }
     // every one-sense choice must be covered by a proved Farkas certificate (a section
     // slides one way only)
-    let both: Vec<(usize, usize)> = (0..keyed.len())
-        .filter(|&i| keyed[i].1 == ContactKind::SlidePlus)
-        .filter_map(|i| {
-            (0..keyed.len())
-                .find(|&k| {
-                    keyed[k].1 == ContactKind::SlideMinus
-                        && keyed[k].0 == keyed[i].0
-                        && keyed[k].2 == keyed[i].2
-                })
-                .map(|k| (i, k))
-        })
-        .collect();
-    if both.len() > 8 {
+    let Some(choices) = one_sense_choices(&keyed) else {
         return Ok(false);
-    }
+    };
     let mut proved: Vec<&KinematicFarkas> = Vec::new();
     for (i, f) in farkas.iter().enumerate() {
         if f.drop.iter().any(|&d| d >= keyed.len()) {
@@ -147,17 +101,42 @@ pub(super) fn no_mechanism(
             ));
         }
     }
-    let covered = (0..1usize << both.len()).all(|choice| {
-        let dropped: Vec<usize> = both
-            .iter()
-            .enumerate()
-            .map(|(b, &(pl, mi))| if choice >> b & 1 == 0 { mi } else { pl })
-            .collect();
+    Ok(choices.iter().all(|dropped| {
         proved
             .iter()
             .any(|f| f.drop.iter().all(|d| dropped.contains(d)))
-    });
-    Ok(covered)
+    }))
+}
+
+/// The choices of one sliding sense per section of a pattern whose contacts have the keys
+/// (angle, kind, section), each as the indices of the contacts left out (one choice, none
+/// left out, where no section lists both senses); `None` beyond 8 such sections.
+pub(crate) fn one_sense_choices<S: PartialEq>(
+    keys: &[(f64, ContactKind, S)],
+) -> Option<Vec<Vec<usize>>> {
+    // sections with both senses: (index of S+, index of S−)
+    let both: Vec<(usize, usize)> = (0..keys.len())
+        .filter(|&i| keys[i].1 == ContactKind::SlidePlus)
+        .filter_map(|i| {
+            (0..keys.len())
+                .find(|&k| {
+                    keys[k].1 == ContactKind::SlideMinus
+                        && keys[k].0 == keys[i].0
+                        && keys[k].2 == keys[i].2
+                })
+                .map(|k| (i, k))
+        })
+        .collect();
+    if both.len() > 8 {
+        return None;
+    }
+    let choice = |c: usize| -> Vec<usize> {
+        both.iter()
+            .enumerate()
+            .map(|(b, &(p, m))| if c >> b & 1 == 0 { m } else { p })
+            .collect()
+    };
+    Some((0..1usize << both.len()).map(choice).collect())
 }
 
 /// The compatibility column of a contact at η (formulation §4), in intervals.
@@ -180,7 +159,7 @@ pub(super) fn column(kind: ContactKind, beta: f64, eta: f64) -> [I; 3] {
 /// blocks beyond it (between consecutive distinct kept joints) in its unit motion,
 /// p_j = −Σ_m [W_m c_j,y + ρ (sin β_{m+1} − sin β_m) c_j,ψ], W_m = β_{m+1} − β_m.
 /// Under a live load at λ the power is the total one, P_j = p_j + λ q_j, and the live
-/// power q_j ([`Live::power`]) enters again with its own multiplier v ≥ 0:
+/// power q_j ([`super::live::Live::power`]) enters again with its own multiplier v ≥ 0:
 /// `c_j · y + z + u P_j + v q_j ≤ 0`.
 pub(super) fn prove_farkas(
     model: &Model,

@@ -2,25 +2,29 @@
 //! and its own interval evaluation of the statics (formulation §3) written out again
 //! from the formulas, with outward rounding ([`super::interval`]).
 //!
-//! * **Safe side**: φ ≤ 0 at (η_hi, x) is *proved* on the whole continuum of joints by
-//!   second-order Taylor enclosures on subintervals of [β_R, β_L]:
-//!   φ(β) ≤ φ(m) + φ'(m)(β − m) + ½ sup φ'' (β − m)², with adaptive splitting; for a
-//!   discrete arch, at each listed joint.
-//! * **Collapse side**: for d + 1 contacts (d = 3 unknowns h, v, w; d = 2 for the
-//!   friction-only problem, where w does not enter) the exact multipliers of a Farkas
-//!   combination are the signed cofactors of the d × (d+1) gradient matrix, enclosed in
-//!   intervals; if they share a sign and Σ yᵢ φᵢ(0) > 0 rigorously, then Σ yᵢ φᵢ(x) > 0 for
-//!   every x, so no admissible state exists. The multipliers stored in the certificate must
-//!   match the recomputed ones.
+//! Both problems are checked by the same code over their rows — the thickness problem's
+//! at η, the load problem's at λ with a live part (`live.rs`):
+//!
+//! * **Safe side** (an admissible state at η_hi, or at λ_lo under a load): φ ≤ 0 is
+//!   *proved* on the whole continuum of joints by second-order Taylor enclosures on
+//!   subintervals of [β_R, β_L]: φ(β) ≤ φ(m) + φ'(m)(β − m) + ½ sup φ'' (β − m)², with
+//!   adaptive splitting (both sides of a loaded section); for a discrete arch, at each
+//!   listed joint.
+//! * **Collapse side** (at η_lo, at λ_hi, or over every λ ≥ 0): for d + 1 contacts (d = 3
+//!   unknowns h, v, w; d = 2 where w does not enter; d = 4 with λ) the exact multipliers of
+//!   a Farkas combination are the signed cofactors of the d × (d+1) gradient matrix,
+//!   enclosed in intervals; if they share a sign and Σ yᵢ φᵢ(0) > 0 rigorously, then
+//!   Σ yᵢ φᵢ(x) > 0 for every x, so no admissible state exists. The multipliers stored in
+//!   the certificate must match the recomputed ones.
 //! * **Limit state**: consistency checks in floating point with stated tolerances
 //!   (B λ = 0, λ ≥ 0, Σ λ = 1, L_e ≥ 0, complementarity) — evidence, not proof.
 //!
 //! This file is the dispatcher [`verify()`]; each file below it imports only files further
-//! down, and none imports the solver: the vocabulary (`report.rs`, `statics.rs`, `live.rs`),
-//! the proofs and checks (`enclosure.rs`, `farkas.rs`, `joints.rs`, `limit_state.rs`,
-//! `mechanism.rs`, `input.rs`), and the claims (`thickness.rs` with `search.rs`; `load.rs`
-//! with `load_admissible.rs`, `load_farkas.rs`, `load_unbounded.rs`, `load_search.rs` with
-//! `load_limit_state.rs`).
+//! down, and none imports the solver: the vocabulary (`report.rs`, `statics.rs`, `live.rs`
+//! with the state of either problem), the proofs and checks of either problem
+//! (`enclosure.rs`, `farkas.rs`, `joints.rs`, `limit_state.rs`, `mechanism.rs`, `input.rs`,
+//! and the search walker `search.rs`), and the claims (`thickness.rs`; `load.rs` with
+//! `load_unbounded.rs`).
 
 mod enclosure;
 mod farkas;
@@ -29,10 +33,6 @@ mod joints;
 mod limit_state;
 mod live;
 mod load;
-mod load_admissible;
-mod load_farkas;
-mod load_limit_state;
-mod load_search;
 mod load_unbounded;
 mod mechanism;
 mod report;
@@ -40,14 +40,15 @@ mod search;
 mod statics;
 mod thickness;
 
-pub use limit_state::LIMIT_STATE_TOL;
-pub(crate) use load_admissible::prove_admissible_side;
+pub(crate) use mechanism::one_sense_choices;
 pub use report::{Rejection, Report};
-pub use thickness::prove_safe_only;
+pub use statics::LIMIT_STATE_TOL;
 
 use crate::certificate::format::{Certificate, Claim, FORMAT, VERSION};
+use enclosure::prove_state;
 use input::{check_finite, model_of};
-use load::verify_load;
+use live::{Live, StateAt};
+use load::{check_state, verify_load};
 use report::reject;
 use thickness::verify_thickness;
 
@@ -77,4 +78,31 @@ pub fn verify(cert: &Certificate) -> Result<Report, Rejection> {
         return verify_load(cert, &model);
     }
     verify_thickness(cert, &model)
+}
+
+/// Proves only the admissible side of a certificate — the safe state of a least-thickness
+/// certificate, `multiplier.admissible` of a load certificate — (used by `certify` while it
+/// searches for the other side).
+pub fn prove_admissible_side(cert: &Certificate) -> Result<usize, Rejection> {
+    check_finite(cert)?;
+    let model = model_of(cert)?;
+    let Some(spec) = &cert.load else {
+        let Some(safe) = &cert.safe else {
+            return reject("no safe side");
+        };
+        return prove_state(
+            &model,
+            StateAt::bare(safe.x, safe.eta),
+            cert.mu,
+            false,
+            "safe side",
+        );
+    };
+    let Some(adm) = cert.multiplier.as_ref().and_then(|m| m.admissible.as_ref()) else {
+        return reject("no admissible side");
+    };
+    check_state(adm, "multiplier.admissible")?;
+    let live = Live::of(spec, &model)?;
+    let state = StateAt::loaded(&live, adm.lambda, adm.x);
+    prove_state(&model, state, cert.mu, false, "admissible side")
 }

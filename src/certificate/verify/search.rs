@@ -1,41 +1,188 @@
-//! Re-checking the evidence of the limit-state search (the `search` section of a
-//! certificate): which limit states exist with η in [η_s, 2).
+//! Re-checking the evidence of a limit-state search, for both families: the `search`
+//! section of a thickness certificate (which limit states exist with η in [η_s, 2)) and the
+//! `load_search` section of a load certificate (the limit states under the load). One
+//! walker re-checks the listed states and each method's own evidence.
 //!
-//! * **No mechanism** at a listed state (the least admissible state, or a point of the
-//!   sweep): *proved* in interval arithmetic by the Farkas alternative of the kinematic LP
-//!   on the listed contacts — `c_j · y + z + u p_j ≤ 0` for every contact kept, z > 0,
-//!   u ≥ 0, so no rates λ ≥ 0, Σ λ = 1, B λ = 0, L_e = p · λ ≥ 0 exist — for every choice
-//!   of one sliding sense at a joint where both are listed. That the listed contacts are
-//!   the state's whole active set is *checked* in floating point (for a discrete arch,
-//!   every other contact at every joint at least
+//! * **No mechanism** at a listed state (the least admissible state, the state at
+//!   λ_static, or a point of the sweep): *proved* in interval arithmetic by the Farkas
+//!   alternative of the kinematic LP on the listed contacts — `c_j · y + z + u p_j ≤ 0` for
+//!   every contact kept, z > 0, u ≥ 0, so no rates λ ≥ 0, Σ λ = 1, B λ = 0, L_e = p · λ ≥ 0
+//!   exist; under a load with the total power P_j = p_j + λ q_j and the live power q_j
+//!   again, `c_j · y + z + u P_j + v q_j ≤ 0`, v ≥ 0 — for every choice of one sliding sense
+//!   per section. That the listed contacts are the state's whole active set is *checked* in
+//!   floating point (for a discrete arch, every other contact at every joint at least
 //!   [`INACTIVE_REL`](super::mechanism::INACTIVE_REL) below zero).
-//! * **Limit states above η_s**: admissibility at the joints (floating point) and the
-//!   consistency of the mechanism, as for the certificate's limit state.
-//! * **μ = ∞** (`hinges_only`): the safe state is *proved* to lie strictly inside P(η_hi)
-//!   (every φ < 0 over the whole arch); a hinge-only mechanism λ has λᵀφ(x) = L_e(λ) for
-//!   every x (formulation §6), so a limit state needs P(η) without interior, and P(η) grows
-//!   with η: no limit state has η ≥ η_hi.
+//! * **Limit states**: admissibility (every joint, or 2000 samples per piece of a
+//!   continuous arch) and the consistency of the mechanism (under a load: one sliding sense
+//!   per section, live power > 0) — *checked* in floating point.
+//! * **μ = ∞**, thickness (`hinges_only`): the safe state is *proved* to lie strictly
+//!   inside P(η_hi) (every φ < 0 over the whole arch); a hinge-only mechanism λ has
+//!   λᵀφ(x) = L_e(λ) for every x (formulation §6), so a limit state needs P(η) without
+//!   interior, and P(η) grows with η: no limit state has η ≥ η_hi.
+//! * **μ = ∞**, load (`associative`): every mechanism is made of hinges and dissipates
+//!   nothing, so for compatible rates Σ φ λ̇ = L_dead + λ L_live (virtual work,
+//!   docs/loads.md); a limit state at λ* has L_dead + λ* L_live = 0 with L_live > 0, and a
+//!   state admissible at λ' > λ* would give (λ' − λ*) L_live ≤ 0. With the state *proved*
+//!   admissible at λ_lo, no limit state lies below λ_lo (none at all when λ is unbounded).
 //!
 //! What is *not* re-proved: that the sweep met every event (its completeness argument,
-//! docs/limit-states.md), or that two discretisations agreed (`refined`).
+//! docs/limit-states.md, docs/loads.md), that two discretisations agreed (`refined`), and
+//! λ_min.
 
-use super::enclosure::prove_admissible;
+use super::enclosure::prove_state;
 use super::joints::check_pattern;
-use super::limit_state::{check_limit_state, LIMIT_STATE_TOL};
-use super::mechanism::{no_mechanism, StateAt};
+use super::limit_state::{check_admissible, check_limit_state, check_load_limit_state};
+use super::live::{Live, StateAt};
+use super::mechanism::no_mechanism;
 use super::report::{reject, Rejection};
-use super::statics::{kinds, phi, Model};
+use super::statics::{Model, LIMIT_STATE_TOL};
 use crate::certificate::format::{
-    Certificate, LimitStateCert, NoMechanism, SafeSide, SearchEvidence, SearchMethod,
+    Certificate, KinematicFarkas, LimitStateCert, LoadSearchEvidence, LoadSearchMethod,
+    NoMechanism, PatternJoint, SafeSide, SearchEvidence, SearchMethod,
 };
-use crate::certificate::interval::Interval as I;
 
-/// Samples of a continuous arch for the floating-point admissibility check of a limit
-/// state above η_s.
-const SAMPLES: usize = 2000;
+/// How a search established its list, for the walker: the sweep, the μ = ∞ argument
+/// (`hinges_only` or `associative`), or the refinement.
+#[derive(Clone, Copy)]
+enum Method {
+    Sweep,
+    Infinite(&'static str),
+    Refined,
+}
 
-/// Re-checks `search` against the bracket [η_lo, safe.eta]; returns the lines of the
-/// report (each saying proved or checked) and the one-line verdict on the limit states.
+impl Method {
+    fn name(self) -> &'static str {
+        match self {
+            Method::Sweep => "sweep",
+            Method::Infinite(name) => name,
+            Method::Refined => "refined",
+        }
+    }
+}
+
+/// A state listed without a mechanism: the state, its pattern and the Farkas proof.
+type Point<'a> = (StateAt<'a>, &'a [PatternJoint], &'a [KinematicFarkas]);
+
+/// The search section being walked: its name in messages, and the live load (load
+/// certificates), which sets the words of the proofs.
+struct Walk<'a> {
+    section: &'static str,
+    live: Option<&'a Live>,
+}
+
+impl Walk<'_> {
+    /// The kind of mechanism ruled out, in words.
+    fn power(&self) -> &'static str {
+        match self.live {
+            Some(_) => " with non-negative total and live power",
+            None => "",
+        }
+    }
+
+    /// The line of a listed state without a mechanism (`what`: which state, in words),
+    /// proved or not.
+    fn listed_state(
+        &self,
+        model: &Model,
+        mu: Option<f64>,
+        (state, pattern, farkas): Point,
+        what: String,
+        whose: &str,
+    ) -> Result<String, Rejection> {
+        let proved = no_mechanism(model, mu, state, pattern, farkas, whose)?;
+        Ok(if proved {
+            format!(
+                "proved (interval arithmetic): the {} contacts active at {what} carry no mechanism {} (Farkas); checked (floating point): they are its whole active set{}",
+                pattern.len(),
+                if self.live.is_some() { self.power().trim_start() } else { "without dilatancy" },
+                if model.joints.is_some() { "" } else { " (at the listed contacts; a continuous arch's other angles are not enumerated)" }
+            )
+        } else {
+            format!(
+                "not proved: {what} carries no mechanism (no Farkas certificate covers every sliding sense)"
+            )
+        })
+    }
+
+    /// The line of the limit states listed (`values`: their parameters), each checked.
+    fn states_line(&self, n: usize, values: Vec<f64>) -> String {
+        let (above, live, param) = match self.live {
+            Some(_) => ("", " of positive live power", "lambda"),
+            None => (" above eta_s", "", "eta"),
+        };
+        format!(
+            "checked (floating point, tolerance {LIMIT_STATE_TOL:e}; evidence, not proof): {n} limit state(s){above}, admissible, each with a mechanism without dilatancy{live} ({param} = {})",
+            values.iter().map(|v| v.to_string()).collect::<Vec<_>>().join(", ")
+        )
+    }
+
+    /// The method's own evidence: the sweep's `points` without a mechanism, the μ = ∞
+    /// argument (`infinite`, the family's own), or the refinement (not re-checked);
+    /// pushes the report's lines.
+    #[allow(clippy::too_many_arguments)]
+    fn method_evidence(
+        &self,
+        model: &Model,
+        mu: Option<f64>,
+        (method, events): (Method, usize),
+        points: &[Point],
+        checks: &mut Vec<String>,
+        infinite: impl FnOnce(&mut Vec<String>) -> Result<(), Rejection>,
+    ) -> Result<(), Rejection> {
+        let section = self.section;
+        match method {
+            Method::Sweep => {
+                if model.joints.is_none() {
+                    return reject(format!("{section}: method sweep needs a discrete arch"));
+                }
+                if self.live.is_some() && mu.is_none() {
+                    return reject(
+                        "load_search: method sweep is for finite friction (mu = inf is associative)",
+                    );
+                }
+                let mut proved = 0;
+                for (i, &(state, pattern, farkas)) in points.iter().enumerate() {
+                    let whose = format!("{section}: no_mechanism {i}");
+                    if no_mechanism(model, mu, state, pattern, farkas, &whose)? {
+                        proved += 1;
+                    }
+                }
+                let n = points.len();
+                checks.push(format!(
+                    "proved (interval arithmetic) at {proved} of the {n} points the sweep checked without finding a mechanism ({events} events): their active contacts carry no mechanism{} (Farkas); not re-proved: that the sweep met every event{}",
+                    self.power(),
+                    match self.live {
+                        Some(_) => " of P(lambda) (docs/loads.md), so that no limit state lies between them",
+                        None => " (docs/limit-states.md)",
+                    }
+                ));
+                if proved < n {
+                    checks.push(format!(
+                        "not proved: {} points of the sweep have no Farkas certificate covering every sliding sense",
+                        n - proved
+                    ));
+                }
+            }
+            Method::Infinite(_) => infinite(checks)?,
+            Method::Refined => {
+                if model.joints.is_some() {
+                    return reject(format!(
+                        "{section}: method refined is for a continuous arch"
+                    ));
+                }
+                if self.live.is_some() && !points.is_empty() {
+                    return reject("load_search: method refined lists no sweep points");
+                }
+                checks.push("not re-checked: that the refined limit states of two discretisations agreed (method refined); the listed states are checked above".into());
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Re-checks the `search` section of a thickness certificate against the bracket
+/// [η_lo, safe.eta]; returns the lines of the report (each saying proved or checked) and the
+/// one-line verdict on the limit states.
 pub(super) fn verify_search(
     model: &Model,
     cert: &Certificate,
@@ -43,12 +190,77 @@ pub(super) fn verify_search(
     eta_lo: f64,
     safe: &SafeSide,
 ) -> Result<(Vec<String>, String), Rejection> {
+    let mu = cert.mu;
+    let walk = Walk {
+        section: "search",
+        live: None,
+    };
     let mut checks = Vec::new();
     let count = check_listing(cert, search)?;
-    least_state(model, cert.mu, search, eta_lo, safe, &mut checks)?;
-    limit_states_above(model, cert.mu, search, eta_lo, safe, &mut checks)?;
-    method_evidence(model, cert.mu, search, safe, &mut checks)?;
-    Ok((checks, verdict(search, count)))
+    if let Some(ls) = &search.least_state {
+        if search.mechanism_at_eta {
+            return reject(
+                "search: a least_state without mechanism is listed, but mechanism_at_eta is true",
+            );
+        }
+        if !(ls.eta >= eta_lo && ls.eta <= safe.eta) {
+            return reject(format!(
+                "search: least_state eta = {} lies outside [eta_lo, eta_hi]",
+                ls.eta
+            ));
+        }
+        let what = format!("the least admissible state (eta = {})", ls.eta);
+        checks.push(walk.listed_state(model, mu, point(ls), what, "search: least_state")?);
+    } else if !search.mechanism_at_eta {
+        checks.push("no least admissible state is listed: eta_s is not attained by a bounded state (an infimum), so no limit state exists there".into());
+    }
+    limit_states_above(model, mu, search, eta_lo, safe)?;
+    if !search.limit_states_above.is_empty() {
+        let etas = search.limit_states_above.iter().map(|s| s.eta).collect();
+        checks.push(walk.states_line(search.limit_states_above.len(), etas));
+    }
+    let method = match search.method {
+        SearchMethod::Sweep => Method::Sweep,
+        SearchMethod::HingesOnly => Method::Infinite("hinges only"),
+        SearchMethod::Refined => Method::Refined,
+    };
+    let points: Vec<Point> = search.no_mechanism.iter().map(point).collect();
+    walk.method_evidence(model, mu, (method, search.events), &points, &mut checks, |checks| {
+        if mu.is_some() {
+            return reject("search: method hinges_only needs infinite friction (mu = null)");
+        }
+        if !search.limit_states_above.is_empty() || !search.no_mechanism.is_empty() {
+            return reject("search: method hinges_only lists nothing above eta_s");
+        }
+        let state = StateAt::bare(safe.x, safe.eta);
+        prove_state(model, state, mu, true, "safe side").map_err(|e| {
+            Rejection(format!("search (hinges_only): the safe state is not proved strictly inside P(eta_hi): {}", e.0))
+        })?;
+        checks.push(format!(
+            "proved (interval arithmetic): the safe state lies strictly inside P(eta_hi) (every phi < 0 over the whole arch), so at mu = inf no limit state has eta >= {} (a hinge-only mechanism needs P(eta) without interior, formulation §6)",
+            safe.eta
+        ));
+        Ok(())
+    })?;
+    let verdict = match (count, search.mechanism_at_eta) {
+        (0, _) => {
+            "no limit state with eta in [eta_s, 2): the arch is safe from eta_s on".to_string()
+        }
+        (1, true) => "one limit state with eta in [eta_s, 2), at eta_s (unique)".to_string(),
+        (1, false) => "one limit state with eta in [eta_s, 2), above eta_s (unique; none at eta_s)"
+            .to_string(),
+        (n, _) => format!("{n} limit states with eta in [eta_s, 2) (not unique)"),
+    };
+    Ok((
+        checks,
+        format!("the search ({}) lists {verdict}", method.name()),
+    ))
+}
+
+/// A state of the thickness problem listed without a mechanism.
+fn point(p: &NoMechanism) -> Point<'_> {
+    let state = StateAt::bare(p.x, p.eta);
+    (state, &p.pattern, &p.farkas)
 }
 
 /// The listing agrees with itself and with the certificate: `unique` with the number of
@@ -82,57 +294,14 @@ fn check_listing(cert: &Certificate, search: &SearchEvidence) -> Result<usize, R
     Ok(count)
 }
 
-/// The least admissible state without a mechanism, proved to carry none (or said not to
-/// be attained); pushes the report's line.
-fn least_state(
-    model: &Model,
-    mu: Option<f64>,
-    search: &SearchEvidence,
-    eta_lo: f64,
-    safe: &SafeSide,
-    checks: &mut Vec<String>,
-) -> Result<(), Rejection> {
-    if let Some(ls) = &search.least_state {
-        if search.mechanism_at_eta {
-            return reject(
-                "search: a least_state without mechanism is listed, but mechanism_at_eta is true",
-            );
-        }
-        if !(ls.eta >= eta_lo && ls.eta <= safe.eta) {
-            return reject(format!(
-                "search: least_state eta = {} lies outside [eta_lo, eta_hi]",
-                ls.eta
-            ));
-        }
-        let proved = thickness_no_mechanism(model, mu, ls, "search: least_state")?;
-        checks.push(if proved {
-            format!(
-                "proved (interval arithmetic): the {} contacts active at the least admissible state (eta = {}) carry no mechanism without dilatancy (Farkas); checked (floating point): they are its whole active set{}",
-                ls.pattern.len(),
-                ls.eta,
-                if model.joints.is_some() { "" } else { " (at the listed contacts; a continuous arch's other angles are not enumerated)" }
-            )
-        } else {
-            format!(
-                "not proved: the least admissible state (eta = {}) carries no mechanism (no Farkas certificate covers every sliding sense)",
-                ls.eta
-            )
-        });
-    } else if !search.mechanism_at_eta {
-        checks.push("no least admissible state is listed: eta_s is not attained by a bounded state (an infimum), so no limit state exists there".into());
-    }
-    Ok(())
-}
-
 /// The limit states listed above η_s, each checked in floating point (ascending, finite,
-/// admissible, with a mechanism); pushes the report's line.
+/// admissible, with a mechanism).
 fn limit_states_above(
     model: &Model,
     mu: Option<f64>,
     search: &SearchEvidence,
     eta_lo: f64,
     safe: &SafeSide,
-    checks: &mut Vec<String>,
 ) -> Result<(), Rejection> {
     let mut last = safe.eta;
     for (i, ls) in search.limit_states_above.iter().enumerate() {
@@ -147,118 +316,10 @@ fn limit_states_above(
         }
         last = ls.eta;
         check_limit_state(model, mu, ls, eta_lo, 2.0)?;
-        admissible_at_samples(model, mu, ls, &whose)?;
-    }
-    if !search.limit_states_above.is_empty() {
-        checks.push(format!(
-            "checked (floating point, tolerance {LIMIT_STATE_TOL:e}; evidence, not proof): {} limit state(s) above eta_s, admissible, each with a mechanism without dilatancy (eta = {})",
-            search.limit_states_above.len(),
-            search
-                .limit_states_above
-                .iter()
-                .map(|s| s.eta.to_string())
-                .collect::<Vec<_>>()
-                .join(", ")
-        ));
+        let state = StateAt::bare(ls.x, ls.eta);
+        check_admissible(model, mu, state, &whose)?;
     }
     Ok(())
-}
-
-/// The method's own evidence: the sweep's points without a mechanism, the safe state
-/// strictly inside at μ = ∞, or the refinement (not re-checked); pushes the report's lines.
-fn method_evidence(
-    model: &Model,
-    mu: Option<f64>,
-    search: &SearchEvidence,
-    safe: &SafeSide,
-    checks: &mut Vec<String>,
-) -> Result<(), Rejection> {
-    match search.method {
-        SearchMethod::Sweep => {
-            if model.joints.is_none() {
-                return reject("search: method sweep needs a discrete arch");
-            }
-            let mut proved = 0;
-            for (i, p) in search.no_mechanism.iter().enumerate() {
-                if thickness_no_mechanism(model, mu, p, &format!("search: no_mechanism {i}"))? {
-                    proved += 1;
-                }
-            }
-            let n = search.no_mechanism.len();
-            checks.push(format!(
-                "proved (interval arithmetic) at {proved} of the {n} points the sweep checked without finding a mechanism ({} events): their active contacts carry no mechanism (Farkas); not re-proved: that the sweep met every event (docs/limit-states.md)",
-                search.events
-            ));
-            if proved < n {
-                checks.push(format!(
-                    "not proved: {} points of the sweep have no Farkas certificate covering every sliding sense",
-                    n - proved
-                ));
-            }
-        }
-        SearchMethod::HingesOnly => {
-            if mu.is_some() {
-                return reject("search: method hinges_only needs infinite friction (mu = null)");
-            }
-            if !search.limit_states_above.is_empty() || !search.no_mechanism.is_empty() {
-                return reject("search: method hinges_only lists nothing above eta_s");
-            }
-            prove_admissible(model, safe.x, safe.eta, mu, true).map_err(|e| {
-                Rejection(format!("search (hinges_only): the safe state is not proved strictly inside P(eta_hi): {}", e.0))
-            })?;
-            checks.push(format!(
-                "proved (interval arithmetic): the safe state lies strictly inside P(eta_hi) (every phi < 0 over the whole arch), so at mu = inf no limit state has eta >= {} (a hinge-only mechanism needs P(eta) without interior, formulation §6)",
-                safe.eta
-            ));
-        }
-        SearchMethod::Refined => {
-            if model.joints.is_some() {
-                return reject("search: method refined is for a continuous arch");
-            }
-            checks.push("not re-checked: that the refined limit states of two discretisations agreed (method refined); the listed states are checked above".into());
-        }
-    }
-    Ok(())
-}
-
-/// The one-line verdict on the `count` limit states listed.
-fn verdict(search: &SearchEvidence, count: usize) -> String {
-    let verdict = match (count, search.mechanism_at_eta) {
-        (0, _) => {
-            "no limit state with eta in [eta_s, 2): the arch is safe from eta_s on".to_string()
-        }
-        (1, true) => "one limit state with eta in [eta_s, 2), at eta_s (unique)".to_string(),
-        (1, false) => "one limit state with eta in [eta_s, 2), above eta_s (unique; none at eta_s)"
-            .to_string(),
-        (n, _) => format!("{n} limit states with eta in [eta_s, 2) (not unique)"),
-    };
-    format!(
-        "the search ({}) lists {verdict}",
-        method_name(search.method)
-    )
-}
-
-/// [`no_mechanism`] for a state of the thickness problem.
-fn thickness_no_mechanism(
-    model: &Model,
-    mu: Option<f64>,
-    p: &NoMechanism,
-    whose: &str,
-) -> Result<bool, Rejection> {
-    let state = StateAt {
-        x: p.x,
-        eta: p.eta,
-        load: None,
-    };
-    no_mechanism(model, mu, state, &p.pattern, &p.farkas, whose)
-}
-
-fn method_name(m: SearchMethod) -> &'static str {
-    match m {
-        SearchMethod::Sweep => "sweep",
-        SearchMethod::HingesOnly => "hinges only",
-        SearchMethod::Refined => "refined",
-    }
 }
 
 fn finite(ls: &LimitStateCert, whose: &str) -> Result<(), Rejection> {
@@ -273,32 +334,245 @@ fn finite(ls: &LimitStateCert, whose: &str) -> Result<(), Rejection> {
     }
 }
 
-/// φ ≤ tol·(1 + ‖x‖₁) at every joint (discrete) or at [`SAMPLES`] angles (continuous):
-/// a floating-point check.
-fn admissible_at_samples(
+/// Re-checks the `load_search` section of a load certificate against the claim: λ_static in
+/// [λ_lo, λ_hi] (`hi` `None`: unbounded, admissible states from λ_lo on). Returns the
+/// report's lines and the verdict.
+pub(super) fn verify_load_search(
     model: &Model,
+    live: &Live,
     mu: Option<f64>,
-    ls: &LimitStateCert,
-    whose: &str,
-) -> Result<(), Rejection> {
-    let scale = 1.0 + ls.x.iter().map(|v| v.abs()).sum::<f64>();
-    let angles: Vec<f64> = match &model.joints {
-        Some(j) => j.clone(),
-        None => (0..=SAMPLES)
-            .map(|i| model.beta_r + (model.beta_l - model.beta_r) * i as f64 / SAMPLES as f64)
-            .collect(),
+    search: &LoadSearchEvidence,
+    lo: f64,
+    hi: Option<f64>,
+) -> Result<(Vec<String>, String), Rejection> {
+    let walk = Walk {
+        section: "load_search",
+        live: Some(live),
     };
-    for &b in &angles {
-        let a = model.ntm(I::point(b), ls.x, ls.eta);
-        for &k in kinds(mu) {
-            let v = phi(k, 0, &a, ls.eta, mu).mid();
-            if v.is_nan() || v > LIMIT_STATE_TOL * scale {
-                return reject(format!(
-                    "{whose}: not admissible, {} = {v:e} > 0 at beta = {b}",
-                    k.name()
-                ));
-            }
+    let mut checks = Vec::new();
+    let unique = check_load_listing(search, lo)?;
+    let states = &search.limit_states;
+    let mut last = f64::NEG_INFINITY;
+    for (i, ls) in states.iter().enumerate() {
+        let whose = format!("load_search: limit state {i}");
+        if ls.lambda.is_nan() || ls.lambda < last {
+            return reject(format!("{whose}: lambda = {} is not ascending", ls.lambda));
         }
+        last = ls.lambda;
+        if hi.is_some_and(|h| ls.lambda >= h) {
+            return reject(format!(
+                "{whose}: lambda = {} is not below lambda_hi = {} (no state is admissible there)",
+                ls.lambda,
+                hi.unwrap_or(f64::INFINITY)
+            ));
+        }
+        let state = StateAt::loaded(live, ls.lambda, ls.x);
+        check_load_limit_state(model, state, mu, ls, &whose)?;
+    }
+    if !states.is_empty() {
+        checks.push(walk.states_line(states.len(), states.iter().map(|s| s.lambda).collect()));
+    }
+    if let Some(c) = states.iter().find(|s| s.continuum.is_some()) {
+        checks.push(format!(
+            "not re-checked: the continuum of limit states from lambda = {} (only its least state is checked)",
+            c.lambda
+        ));
+    }
+    check_mechanism_at_static(search, lo, hi)?;
+    static_state(model, &walk, mu, search, (lo, hi), &mut checks)?;
+    let method = match search.method {
+        LoadSearchMethod::Sweep => Method::Sweep,
+        LoadSearchMethod::Associative => Method::Infinite("associative"),
+        LoadSearchMethod::Refined => Method::Refined,
+    };
+    let mut points: Vec<Point> = Vec::new();
+    for (i, p) in search.no_mechanism.iter().enumerate() {
+        let top = hi.unwrap_or(f64::INFINITY);
+        if matches!(method, Method::Sweep) && !(p.lambda >= search.lambda_min && p.lambda <= top) {
+            return reject(format!(
+                "load_search: no_mechanism {i}: lambda = {} lies outside [lambda_min, lambda_hi]",
+                p.lambda
+            ));
+        }
+        points.push((StateAt::loaded(live, p.lambda, p.x), &p.pattern, &p.farkas));
+    }
+    walk.method_evidence(
+        model,
+        mu,
+        (method, search.events),
+        &points,
+        &mut checks,
+        |checks| associative(mu, search, (lo, hi), checks),
+    )?;
+    if search.lambda_min > 0.0 {
+        checks.push(format!(
+            "not proved: lambda_min = {} (below it the arch does not stand; the state there is an unloading limit, never a collapse)",
+            search.lambda_min
+        ));
+    }
+    Ok((checks, load_verdict(search, unique, method)))
+}
+
+/// The listing agrees with itself: `unique` (returned) with the limit states listed, the
+/// collapse multiplier with the least of them, λ_min in [0, λ_lo].
+fn check_load_listing(search: &LoadSearchEvidence, lo: f64) -> Result<bool, Rejection> {
+    let states = &search.limit_states;
+    let unique = states.len() == 1
+        && states[0]
+            .continuum
+            .as_ref()
+            .is_none_or(|c| c.to.is_some_and(|to| to <= states[0].lambda));
+    if search.unique != unique {
+        return reject(format!(
+            "load_search: unique = {} but {} limit state(s) are listed{}",
+            search.unique,
+            states.len(),
+            if states.iter().any(|s| s.continuum.is_some()) {
+                " (with a continuum)"
+            } else {
+                ""
+            }
+        ));
+    }
+    if search.lambda != states.first().map(|s| s.lambda) {
+        return reject(format!(
+            "load_search: the collapse multiplier lambda = {:?} is not the least listed limit state's ({:?})",
+            search.lambda,
+            states.first().map(|s| s.lambda)
+        ));
+    }
+    if !(search.lambda_min.is_finite() && search.lambda_min >= 0.0 && search.lambda_min <= lo) {
+        return reject(format!(
+            "load_search: lambda_min = {} must lie in [0, lambda_lo = {lo}]",
+            search.lambda_min
+        ));
+    }
+    Ok(unique)
+}
+
+/// `mechanism_at_static` agrees with the limit states listed in [λ_lo, λ_hi].
+fn check_mechanism_at_static(
+    search: &LoadSearchEvidence,
+    lo: f64,
+    hi: Option<f64>,
+) -> Result<(), Rejection> {
+    let states = &search.limit_states;
+    // a state at λ_static: an isolated one in the bracket, or a continuum reaching it
+    let isolated_at_static = states
+        .iter()
+        .any(|s| s.continuum.is_none() && s.lambda >= lo);
+    let at_static = isolated_at_static
+        || states.iter().any(|s| {
+            s.continuum
+                .as_ref()
+                .is_some_and(|c| c.to.is_none_or(|to| to >= lo))
+        });
+    match (search.mechanism_at_static, hi) {
+        (true, None) => {
+            return reject("load_search: mechanism_at_static is true, but lambda_static is unbounded")
+        }
+        (true, Some(_)) if !at_static => {
+            return reject(format!(
+                "load_search: mechanism_at_static is true, but no listed limit state (or continuum of them) reaches [lambda_lo, lambda_hi] (from {lo})"
+            ))
+        }
+        (false, Some(_)) if isolated_at_static => {
+            return reject(format!(
+                "load_search: mechanism_at_static is false, but a listed limit state lies in [lambda_lo, lambda_hi] (from {lo})"
+            ))
+        }
+        _ => {}
     }
     Ok(())
+}
+
+/// The state at λ_static listed without a mechanism, proved to carry none; pushes the
+/// report's line.
+fn static_state(
+    model: &Model,
+    walk: &Walk,
+    mu: Option<f64>,
+    search: &LoadSearchEvidence,
+    (lo, hi): (f64, Option<f64>),
+    checks: &mut Vec<String>,
+) -> Result<(), Rejection> {
+    match (&search.static_state, hi, walk.live) {
+        (Some(_), _, _) if search.mechanism_at_static => {
+            return reject("load_search: a static_state without mechanism is listed, but mechanism_at_static is true")
+        }
+        (Some(_), None, _) => {
+            return reject("load_search: a static_state is listed, but lambda_static is unbounded")
+        }
+        (Some(p), Some(h), Some(live)) => {
+            if !(p.lambda >= lo && p.lambda <= h) {
+                return reject(format!(
+                    "load_search: static_state lambda = {} lies outside [lambda_lo, lambda_hi]",
+                    p.lambda
+                ));
+            }
+            let point = (StateAt::loaded(live, p.lambda, p.x), &p.pattern[..], &p.farkas[..]);
+            let what = format!("the state at lambda_static (lambda = {})", p.lambda);
+            checks.push(walk.listed_state(model, mu, point, what, "load_search: static_state")?);
+        }
+        (None, Some(_), _) if !search.mechanism_at_static => checks.push(
+            "not proved: that the state at lambda_static carries no mechanism (no evidence listed)"
+                .into(),
+        ),
+        _ => {}
+    }
+    Ok(())
+}
+
+/// The evidence of method `associative` (μ = ∞): virtual work; pushes the report's line.
+fn associative(
+    mu: Option<f64>,
+    search: &LoadSearchEvidence,
+    (lo, hi): (f64, Option<f64>),
+    checks: &mut Vec<String>,
+) -> Result<(), Rejection> {
+    if mu.is_some() {
+        return reject("load_search: method associative needs infinite friction (mu = null)");
+    }
+    if !search.no_mechanism.is_empty() {
+        return reject("load_search: method associative lists no sweep points");
+    }
+    if search.limit_states.iter().any(|s| s.lambda < lo) {
+        return reject(format!(
+            "load_search (associative): a limit state below lambda_lo = {lo} is listed, which virtual work rules out"
+        ));
+    }
+    checks.push(match hi {
+        Some(_) => format!(
+            "proved (virtual work, mu = inf): no limit state lies below lambda_lo = {lo}: a hinge-only mechanism dissipates nothing, so a limit state at lambda* admits no state at any lambda > lambda*, and one is proved admissible at lambda_lo; with lambda_hi, every limit state lies in [lambda_lo, lambda_hi)"
+        ),
+        None => "proved (virtual work, mu = inf): no limit state exists: a hinge-only mechanism dissipates nothing, so a limit state at lambda* admits no state at any lambda > lambda*, and states are proved admissible at every lambda from lambda_lo on".to_string(),
+    });
+    Ok(())
+}
+
+/// The one-line verdict on the limit states listed under the load.
+fn load_verdict(search: &LoadSearchEvidence, unique: bool, method: Method) -> String {
+    let states = &search.limit_states;
+    let verdict = match (states.len(), unique) {
+        (0, _) => "no limit state: the load never drives a mechanism".to_string(),
+        (1, true) => format!(
+            "one limit state, lambda = {} (unique{})",
+            states[0].lambda,
+            if search.mechanism_at_static {
+                ", at lambda_static"
+            } else {
+                ""
+            }
+        ),
+        (n, _) => format!(
+            "{n} limit states, the least at lambda = {} (not unique{})",
+            states[0].lambda,
+            if states.iter().any(|s| s.continuum.is_some()) {
+                "; with a continuum"
+            } else {
+                ""
+            }
+        ),
+    };
+    format!("the search ({}) lists {verdict}", method.name())
 }

@@ -7,6 +7,9 @@ use super::report::{reject, Rejection};
 use crate::certificate::format::ContactKind;
 use crate::certificate::interval::Interval as I;
 
+/// Tolerances of the floating-point consistency checks of the limit state.
+pub const LIMIT_STATE_TOL: f64 = 1e-9;
+
 /// The geometry and weight of the certificate's arch, for interval evaluation.
 pub(super) struct Model {
     pub(super) beta_r: f64,

@@ -2,14 +2,15 @@
 //! state proved admissible at η_hi over the whole arch, the Farkas certificate proved at
 //! η_lo, the limit state checked, and the `search` section re-checked ([`super::search`]).
 
-use super::enclosure::prove_admissible;
+use super::enclosure::prove_state;
 use super::farkas::prove_farkas;
-use super::input::{check_finite, model_of};
+use super::input::check_gap;
 use super::joints::check_pattern;
-use super::limit_state::{check_limit_state, LIMIT_STATE_TOL};
+use super::limit_state::check_limit_state;
+use super::live::StateAt;
 use super::report::{mu_text, reject, Rejection, Report};
 use super::search::verify_search;
-use super::statics::Model;
+use super::statics::{Model, LIMIT_STATE_TOL};
 use crate::certificate::format::{Certificate, Claim};
 
 /// Re-checks a certificate of the thickness problem (`least_thickness` or
@@ -92,7 +93,13 @@ fn least_thickness(
     if let Some(ls) = &cert.limit_state {
         check_pattern(model, &ls.pattern, cert.mu, None, "limit state")?;
     }
-    let pieces = prove_admissible(model, safe.x, safe.eta, cert.mu, false)?;
+    let pieces = prove_state(
+        model,
+        StateAt::bare(safe.x, safe.eta),
+        cert.mu,
+        false,
+        "safe side",
+    )?;
     checks.push(format!(
         "proved (interval arithmetic): the state x = [{}, {}, {}] is admissible at eta_hi = {} over the whole arch ({pieces} enclosures)",
         safe.x[0], safe.x[1], safe.x[2], safe.eta
@@ -102,7 +109,7 @@ fn least_thickness(
         "proved (interval arithmetic): no state is admissible at eta_lo = {eta_lo} (Farkas on {} joints, margin {margin:.3e})",
         col.joints.len()
     ));
-    check_gap(cert, eta_lo, safe.eta)?;
+    check_gap(cert, eta_lo, safe.eta, "eta")?;
     if let Some(ls) = &cert.limit_state {
         // the least limit state lies above η_s where η_s carries no mechanism
         let above = cert.search.as_ref().is_some_and(|s| !s.mechanism_at_eta);
@@ -125,36 +132,4 @@ fn least_thickness(
         verdict = Some(v);
     }
     Ok(((eta_lo, safe.eta), verdict))
-}
-
-/// The stated gaps must be η_hi − η_lo and (η_hi − η_lo)/η_hi.
-fn check_gap(cert: &Certificate, eta_lo: f64, eta_hi: f64) -> Result<(), Rejection> {
-    let gap = eta_hi - eta_lo;
-    if let Some(g) = cert.gap {
-        if (g - gap).abs() > 1e-15 * eta_hi + 1e-300 {
-            return reject(format!(
-                "stated gap {g} differs from eta_hi - eta_lo = {gap}"
-            ));
-        }
-    }
-    if let Some(g) = cert.gap_relative {
-        let r = gap / eta_hi;
-        if (g - r).abs() > 1e-15 + 1e-9 * r {
-            return reject(format!(
-                "stated gap_relative {g} differs from (eta_hi - eta_lo)/eta_hi = {r}"
-            ));
-        }
-    }
-    Ok(())
-}
-
-/// Proves only the safe side of a least-thickness certificate (used by `certify` while
-/// it searches for the lower side).
-pub fn prove_safe_only(cert: &Certificate) -> Result<usize, Rejection> {
-    check_finite(cert)?;
-    let model = model_of(cert)?;
-    let Some(safe) = &cert.safe else {
-        return reject("no safe side");
-    };
-    prove_admissible(&model, safe.x, safe.eta, cert.mu, false)
 }
