@@ -15,7 +15,8 @@
 //! standing). A branch shorter than the sampling step between two samples on one branch is
 //! not seen: sample densely where that matters.
 
-use super::{survey, LoadOutcome};
+use super::outcome::LoadOutcome;
+use super::survey::{below, survey};
 use crate::arch::{Arch, InputError, JointLayout};
 use crate::contact::{Contact, ContactKind, Location};
 use crate::family;
@@ -105,7 +106,7 @@ pub fn branch_key(
         .collect();
     let at_static = sv
         .lambda_static
-        .is_some_and(|(top, _)| !super::below(least.lambda, top, settings));
+        .is_some_and(|(top, _)| !below(least.lambda, top, settings));
     BranchKey::Collapse { pattern, at_static }
 }
 

@@ -397,16 +397,6 @@ fn file_imports() -> BTreeMap<Vec<String>, BTreeSet<Vec<String>>> {
     graph
 }
 
-/// Imports inside a folder that close a circle known before this check existed, each named
-/// by (folder, importing file, imported file): left out of the graph so that any new circle
-/// still fails. All but one are a file importing its folder's `mod.rs`, which dispatches to
-/// it (the fix: move what the file takes from `mod.rs` into a file below both); in
-/// `render/`, `live_load.rs` (shared by both forms of the load question) takes `Dimensions`
-/// from `table/`, whose load files import it.
-const KNOWN_CIRCLES: &[(&str, &str, &str)] = &[
-    ("multiplier", "curve.rs", "mod.rs"), // TODO: circle to remove
-];
-
 /// In every folder of `src/` below the root (the root's modules are checked above), the
 /// files import each other without a circle: a file (or subfolder, as one) never imports one
 /// that imports it, directly or through others; `mod.rs` counts as a file of its folder.
@@ -431,7 +421,6 @@ fn files_inside_every_folder_import_without_cycle() {
         let is_folder = files.get(&sub).is_some_and(|p| p.ends_with("mod.rs"));
         Some(format!("{name}{}", if is_folder { "/" } else { ".rs" }))
     };
-    let mut known_seen = BTreeSet::new();
     let mut edges = 0;
     let mut cycles = Vec::new();
     for folder in &folders {
@@ -446,10 +435,6 @@ fn files_inside_every_folder_import_without_cycle() {
                 let Some(b) = entry(folder, to).filter(|b| *b != a) else {
                     continue;
                 };
-                if KNOWN_CIRCLES.contains(&(name.as_str(), a.as_str(), b.as_str())) {
-                    known_seen.insert((name.clone(), a.clone(), b));
-                    continue;
-                }
                 deps.insert(b);
                 edges += 1;
             }
@@ -463,12 +448,6 @@ fn files_inside_every_folder_import_without_cycle() {
         "import cycles between the files of a folder (a file must not import one that imports it):\n{}",
         cycles.join("\n")
     );
-    for (folder, from, to) in KNOWN_CIRCLES {
-        assert!(
-            known_seen.contains(&(folder.to_string(), from.to_string(), to.to_string())),
-            "src/{folder}/{from} no longer imports {to}: remove it from KNOWN_CIRCLES"
-        );
-    }
     assert!(folders.len() > 8 && edges > 100, "{folders:?} {edges}");
 }
 

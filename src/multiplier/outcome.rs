@@ -1,0 +1,91 @@
+//! What the load question answers: the static range, every limit state in it, and the
+//! outcome at one (η, μ).
+
+use super::limit_state::LoadLimitState;
+use crate::limit_states::sweep::CheckedPoint;
+use crate::statics::Reactions;
+
+/// The admissible multipliers λ ≥ 0 at (η, μ).
+#[derive(Debug, Clone, PartialEq)]
+pub enum StaticRange {
+    /// No state is admissible at any λ ≥ 0.
+    NoEquilibrium,
+    /// Admissible states exist for λ in [`min`, `max`] (`max` `None`: unbounded), each end
+    /// with a state that attains it.
+    Interval {
+        /// The least admissible λ (0 when the arch stands unloaded) and a state there.
+        min: (f64, Reactions),
+        /// The largest admissible λ, λ_static, and a state there; `None` when unbounded.
+        max: Option<(f64, Reactions)>,
+    },
+}
+
+/// Where admissible states exist at every λ (λ_static unbounded) the sweep runs up to
+/// this multiplier; states there have reactions far beyond the box of the sweep
+/// (|x_k| ≤ 1e7), which bounds every state it follows.
+pub const UNBOUNDED_SEARCH_TOP: f64 = 1e9;
+
+/// Every limit state of a loaded discrete arch at (η, μ) with λ in [λ_min, λ_static].
+#[derive(Debug, Clone)]
+pub struct LoadSurvey {
+    /// The least admissible multiplier (0 when the arch stands unloaded) and a state.
+    pub lambda_min: (f64, Reactions),
+    /// The largest admissible multiplier and a state there; `None` when admissible states
+    /// exist at every λ ≥ λ_min (the search then runs up to [`UNBOUNDED_SEARCH_TOP`]).
+    pub lambda_static: Option<(f64, Reactions)>,
+    /// Whether some state at λ_static carries a mechanism with positive live power (the
+    /// whole optimal face is decided, in the private module `multiplier::face`).
+    pub mechanism_at_static: bool,
+    /// Every limit state, ascending in λ (those at λ_static included when they exist); a
+    /// continuum of limit states appears once, by its least state; a face of limit states
+    /// at λ_static (all at one λ) once, by the centroid of its vertices with the contacts
+    /// active on the whole face, `continuum_to` = λ_static.
+    pub limit_states: Vec<LoadLimitState>,
+    /// Events of the sweep.
+    pub events: usize,
+    /// How the list was established: `sweep` (discrete arch: every event of P(λ)) or
+    /// `associative` (μ = ∞: the static maximum is the only limit state).
+    pub method: &'static str,
+    /// `sweep` only: every point the sweep checked whose active contacts carry no
+    /// mechanism with positive live power (the evidence a certificate carries); empty
+    /// otherwise.
+    pub no_mechanism: Vec<CheckedPoint>,
+}
+
+impl LoadSurvey {
+    /// The collapse multiplier: the least limit state's λ (`None`: no limit state at all,
+    /// which the static maximum without a mechanism can leave).
+    pub fn lambda(&self) -> Option<f64> {
+        self.limit_states.first().map(|s| s.lambda)
+    }
+    /// Whether exactly one limit state exists (a continuum is not unique).
+    pub fn unique(&self) -> bool {
+        self.limit_states.len() == 1
+            && self.limit_states[0]
+                .continuum_to
+                .is_none_or(|to| to <= self.limit_states[0].lambda)
+    }
+    /// 1 − λ/λ_static: how far non-associative friction lowers the collapse multiplier
+    /// (1 when λ_static is unbounded and a limit state exists).
+    pub fn reduction(&self) -> Option<f64> {
+        let l = self.lambda()?;
+        Some(self.lambda_static.map_or(1.0, |s| 1.0 - l / s.0))
+    }
+}
+
+/// The answer to the load question at (η, μ).
+#[derive(Debug, Clone)]
+pub enum LoadOutcome {
+    /// No state is admissible at any λ ≥ 0.
+    NoEquilibrium,
+    /// λ is unbounded and no limit state exists up to [`UNBOUNDED_SEARCH_TOP`]: the load
+    /// never breaks the arch (the least admissible multiplier and a state there).
+    NoCollapse {
+        /// λ_min and a state there.
+        lambda_min: (f64, Reactions),
+        /// Events of the sweep.
+        events: usize,
+    },
+    /// The static range and every limit state in it.
+    Limits(LoadSurvey),
+}
