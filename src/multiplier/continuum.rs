@@ -40,6 +40,19 @@ const MULTIPLIER_SLACK: f64 = 1e-9;
 const EXCHANGE_TOL: f64 = 1e-9;
 /// At most this many exchange rounds.
 const MAX_ROUNDS: usize = 200;
+/// The exchange's starting angles keep this distance from a point load's angle (which
+/// joins the working set on both sides of its section).
+const SAME_ANGLE: f64 = 1e-12;
+/// A violated angle within this of one already in the working set (radians) adds nothing.
+const WORK_GAP: f64 = 1e-9;
+/// A multiplier within this (relative) of the cap is at the cap.
+const AT_CAP_REL: f64 = 1e-9;
+/// The exchange's state makes a contact active, for Newton, within this × its magnitude
+/// (the LP's tolerance, well above rounding and below any real slack).
+const ACTIVE_SLACK: f64 = 1e-7;
+/// Newton from the exchange's state may move it this far (relative): the LP's state is good
+/// to the back end's tolerance, so a root farther away is another vertex.
+const EXCHANGE_REACH: f64 = 1e-2;
 /// The multiplier is capped here in the LP (a finite working set can leave it unbounded);
 /// an answer at the cap means unbounded.
 const LAMBDA_CAP: f64 = 1e9;
@@ -303,7 +316,7 @@ pub fn extreme(
         .map(|i| (a + (b - a) * i as f64 / 64.0, Side::After))
         .collect();
     if let LiveLoad::Point { beta } = *load {
-        work.retain(|(w, _)| (w - beta).abs() > 1e-12);
+        work.retain(|(w, _)| (w - beta).abs() > SAME_ANGLE);
         work.push((beta, Side::Before));
         work.push((beta, Side::After));
     }
@@ -340,7 +353,7 @@ pub fn extreme(
         // measured against that direction's size, (1 + ‖x‖₁ + λ), and join the working set
         // until the direction is admissible over the whole arch (against the state's own
         // magnitude, which grows like λ² there, every violation would pass)
-        let at_cap = maximise && (lambda >= LAMBDA_CAP * (1.0 - 1e-9) || lp::on_box(&z));
+        let at_cap = maximise && (lambda >= LAMBDA_CAP * (1.0 - AT_CAP_REL) || lp::on_box(&z));
         let size = |kind: ContactKind| {
             if at_cap {
                 p.ray_magnitude(kind, &x, lambda, settings)
@@ -357,7 +370,7 @@ pub fn extreme(
             let beta = pk.contact.beta;
             if !work
                 .iter()
-                .any(|(w, s)| (w - beta).abs() <= 1e-9 && s == side)
+                .any(|(w, s)| (w - beta).abs() <= WORK_GAP && s == side)
             {
                 work.push((beta, *side));
             }
@@ -416,7 +429,7 @@ fn refine(
             active(p, &x, 0.0, peaks, 10.0 * settings.adm_tol, settings),
         ));
     }
-    let pattern = active(p, &x, lambda, peaks, 1e-7, settings);
+    let pattern = active(p, &x, lambda, peaks, ACTIVE_SLACK, settings);
     newton_verified(
         p,
         x,
@@ -424,7 +437,7 @@ fn refine(
         &pattern,
         Goal {
             maximise: Some(maximise),
-            reach: 1e-2,
+            reach: EXCHANGE_REACH,
         },
         settings,
     )

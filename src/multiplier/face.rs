@@ -28,7 +28,7 @@ use super::limit_state::{limit_state_on, LoadLimitState};
 use crate::arch::Arch;
 use crate::contact::Contact;
 use crate::family::Tagged;
-use crate::limit_states::sweep::{CheckedPoint, BOX};
+use crate::limit_states::sweep::{CheckedPoint, BOX, BOX_EDGE_REL};
 use crate::load::{LiveLoad, LoadRow, Side};
 use crate::settings::Settings;
 use crate::statics::{magnitude, Reactions};
@@ -204,7 +204,7 @@ pub(super) fn face(
     let mut vertices: Vec<(Reactions, Vec<usize>)> = Vec::new();
     for x in points {
         if x.iter()
-            .any(|v| !v.is_finite() || v.abs() >= BOX * (1.0 - 1e-9))
+            .any(|v| !v.is_finite() || v.abs() >= BOX * (1.0 - BOX_EDGE_REL))
         {
             continue;
         }

@@ -189,6 +189,10 @@ fn associative(
     }
 }
 
+/// Two compatibility columns cancel when their sum is below this in every component (the
+/// columns are of size 1: exact cancellation leaves rounding only).
+const CANCEL_TOL: f64 = 1e-12;
+
 /// Continua of limit states. Two active contacts whose compatibility columns cancel — the
 /// two sections of the point load's joint sliding opposite ways (the zero-width piece that
 /// carries the load slides along the joint between blocks at rest), or two joints half a
@@ -223,7 +227,7 @@ pub fn continua(
                 column(p.contact.kind, p.contact.beta, eta),
                 column(q.contact.kind, q.contact.beta, eta),
             );
-            if (0..3).any(|k| (cp[k] + cq[k]).abs() > 1e-12) {
+            if (0..3).any(|k| (cp[k] + cq[k]).abs() > CANCEL_TOL) {
                 continue;
             }
             let pair = [(p.contact, p.side), (q.contact, q.side)];

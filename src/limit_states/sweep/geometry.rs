@@ -12,7 +12,7 @@ use crate::statics::{actions, Reactions};
 pub const BOX: f64 = 1e7;
 
 /// A state lies inside the box, not on it, when every |x_k| < [`BOX`] (1 − this).
-pub(super) const BOX_EDGE_REL: f64 = 1e-9;
+pub const BOX_EDGE_REL: f64 = 1e-9;
 
 /// A plane's coefficients, interpolated from three thicknesses, keep no trailing
 /// coefficient below this fraction of their largest: it is the rounding residue of a term

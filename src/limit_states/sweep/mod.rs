@@ -40,7 +40,7 @@ mod vertices;
 mod walk;
 
 pub use found::{CheckedPoint, Sweep, SweptState};
-pub use geometry::BOX;
+pub use geometry::{BOX, BOX_EDGE_REL};
 
 use crate::arch::{Arch, JointLayout, ETA_TOP};
 use crate::load::LiveLoad;
