@@ -33,7 +33,7 @@ pub struct LoadLimitState {
     /// The live load's power in that mechanism (> 0).
     pub live_power: f64,
     /// `Some(λ_to)` when this state is the least of a continuum of limit states that
-    /// reaches up to λ_to (see [`continua`]); `None` for an isolated limit state.
+    /// reaches up to λ_to (see [`continua`](super::continua)); `None` for an isolated limit state.
     pub continuum_to: Option<f64>,
 }
 

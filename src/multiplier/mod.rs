@@ -1,5 +1,5 @@
 //! The load-multiplier problem at fixed η and μ: the range of multipliers
-//! λ ≥ 0 of a [`LiveLoad`] at which a statically admissible state exists, and every limit
+//! λ ≥ 0 of a [`LiveLoad`](crate::load::LiveLoad) at which a statically admissible state exists, and every limit
 //! state in it (a state whose active contacts carry a mechanism with positive live power).
 //!
 //! Every activation function is affine in (x, λ) ([`crate::load`]), so the admissible
