@@ -80,5 +80,5 @@ pub use collapse_mode::CollapseMode;
 pub use contact::ContactKind;
 pub use contact::{Contact, Location};
 pub use friction::{friction_limit, least_friction, FrictionLimit};
-pub use limit::{solve, LimitState, Outcome, Solution};
+pub use limit::{solve, LeastLimitState, Outcome, Solution};
 pub use settings::{LpBackend, Settings};

@@ -13,7 +13,7 @@ use crate::arch::{Arch, Radians};
 use crate::collapse_mode::CollapseMode;
 use crate::contact::Contact;
 use crate::kinematics::block_motions;
-use crate::limit::{solve, LimitState, Outcome};
+use crate::limit::{solve, LeastLimitState, Outcome};
 use crate::limit_curve::{trace, LimitCurve};
 use crate::limit_states::{search, survey, Survey};
 use crate::load::LiveLoad;
@@ -141,7 +141,7 @@ fn sample(
                 hi * (b.mu_min / hi).powf(i as f64 / (k - 1) as f64)
             };
             if let Ok(Ok(found)) = search(arch, mu, settings) {
-                limit_states.extend(found.above.iter().map(|st| (mu, st.eta)));
+                limit_states.extend(found.above.iter().map(|st| (mu, st.t)));
             }
         }
     }
@@ -280,7 +280,7 @@ pub fn survey_scene(survey: &Survey) -> Result<ArchScene, NoFigure> {
 }
 
 /// The scene of a limit state `ls` found at friction `mu` (what [`scene`] draws at η*).
-pub fn limit_scene(arch: &Arch, mu: f64, ls: &LimitState) -> ArchScene {
+pub fn limit_scene(arch: &Arch, mu: f64, ls: &LeastLimitState) -> ArchScene {
     build_scene(
         arch,
         mu,
@@ -292,11 +292,11 @@ pub fn limit_scene(arch: &Arch, mu: f64, ls: &LimitState) -> ArchScene {
 }
 
 /// The scene of a limit state found by the search above η_s.
-fn swept_scene(arch: &Arch, mu: f64, st: &crate::limit_states::SweptState) -> ArchScene {
+fn swept_scene(arch: &Arch, mu: f64, st: &crate::limit_states::LimitState) -> ArchScene {
     build_scene(
         arch,
         mu,
-        (st.eta, st.x),
+        (st.t, st.x),
         st.pattern.clone(),
         Some((st.mode, st.mechanism.clone())),
         None,
@@ -381,7 +381,7 @@ pub fn load_scenes(
                     "limit state"
                 },
                 k + 1,
-                st.lambda,
+                st.t,
                 stat.map_or(String::new(), |s| format!(" (lambda_static = {s:.9})")),
                 st.continuum_to.map_or(String::new(), |to| format!(
                     ", least of a continuum up to {to:.6}"
@@ -395,7 +395,7 @@ pub fn load_scenes(
                     (eta, st.x),
                     st.pattern.clone(),
                     Some((st.mode, st.mechanism.clone())),
-                    Some((*load, st.lambda)),
+                    Some((*load, st.t)),
                 ),
             )
         })
@@ -427,8 +427,8 @@ pub fn limit_scenes(
             format!(
                 "above eta_s = {:.9} by {:.3e}: eta = {:.9}",
                 found.eta_s,
-                st.eta - found.eta_s,
-                st.eta
+                st.t - found.eta_s,
+                st.t
             ),
             swept_scene(arch, mu, st),
         ));

@@ -2,7 +2,7 @@
 //! refined by Newton ([`crate::refine`]), then checked in increasing η for static
 //! admissibility over the whole arch and a non-associative mechanism on its active set.
 
-use super::solution::{Candidate, LimitState};
+use super::solution::{Candidate, LeastLimitState};
 use crate::arch::Arch;
 use crate::collapse_mode::classify;
 use crate::contact::{Contact, ContactKind};
@@ -16,7 +16,7 @@ use itertools::Itertools;
 /// What one enumeration found.
 pub(crate) struct Enumeration {
     /// The verified limit state of least η.
-    pub limit: Option<LimitState>,
+    pub limit: Option<LeastLimitState>,
     /// The least-η statically admissible refined state (with or without mechanism).
     pub least_static: Option<Refined>,
 }
@@ -182,7 +182,7 @@ fn verify_group(
                     0.5 * (arch.beta_right() + arch.beta_left()),
                     settings.same_joint,
                 );
-                out.limit = Some(LimitState {
+                out.limit = Some(LeastLimitState {
                     eta_rounding: crate::statics::eta_rounding(arch, r.t, &r.x, &pattern),
                     mu,
                     eta: r.t,

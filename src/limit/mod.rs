@@ -25,7 +25,7 @@ pub mod recession;
 pub mod solution;
 mod vanishing;
 
-pub use solution::{Candidate, LimitState, Outcome, Solution};
+pub use solution::{Candidate, LeastLimitState, Outcome, Solution};
 pub(crate) use vanishing::vanishing_thickness_state;
 
 use crate::admissibility::{Margin, WorkingSet};

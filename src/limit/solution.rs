@@ -9,7 +9,7 @@ use crate::statics::Reactions;
 
 /// A verified limit state (incipient collapse) at friction μ.
 #[derive(Debug, Clone)]
-pub struct LimitState {
+pub struct LeastLimitState {
     /// Friction coefficient μ (∞ allowed).
     pub mu: f64,
     /// The least thickness ratio η*(μ).
@@ -46,7 +46,7 @@ pub struct LimitState {
 #[derive(Debug, Clone)]
 pub enum Outcome {
     /// A verified limit state.
-    Limit(LimitState),
+    Limit(LeastLimitState),
     /// No thickness η < 2 admits equilibrium.
     NoEquilibrium {
         /// The least friction coefficient that admits equilibrium at some

@@ -479,8 +479,8 @@ fn limit_branches<'a>(
                 Some(o) => {
                     let b = &mut o.1.branch;
                     b.mu_min = s.mu;
-                    b.eta_min = b.eta_min.min(st.eta);
-                    b.eta_max = b.eta_max.max(st.eta);
+                    b.eta_min = b.eta_min.min(st.t);
+                    b.eta_max = b.eta_max.max(st.t);
                     o.1.samples += 1;
                     o.2 = true;
                 }
@@ -491,8 +491,8 @@ fn limit_branches<'a>(
                             mode,
                             mu_min: s.mu,
                             mu_max: s.mu,
-                            eta_min: st.eta,
-                            eta_max: st.eta,
+                            eta_min: st.t,
+                            eta_max: st.t,
                             pattern: st.pattern.clone(),
                         },
                         samples: 1,

@@ -29,7 +29,7 @@ use crate::state::State;
 use crate::statics::Reactions;
 use crate::undecided::Undecided;
 use discretised::{agreed, Carried, Compare};
-pub use sweep::{CheckedPoint, SweptState};
+pub use sweep::{CheckedPoint, LimitState};
 
 /// Every limit state of a discrete arch at friction μ, above the least admissible state.
 #[derive(Debug, Clone)]
@@ -45,7 +45,7 @@ pub struct LimitStates {
     /// Whether the least admissible state carries a non-associative mechanism.
     pub mechanism_at_eta_s: bool,
     /// Limit states strictly above η_s, ascending in η.
-    pub above: Vec<SweptState>,
+    pub above: Vec<LimitState>,
     /// Events of the sweep (of the finer discretisation for a continuous arch).
     pub events: usize,
     /// The points of a discrete arch's sweep whose active contacts carry no mechanism
@@ -175,7 +175,7 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Undec
             None => f,
         });
     }
-    let mut above: Vec<SweptState> = sw.states.into_iter().filter(|s| s.eta > lo).collect();
+    let mut above: Vec<LimitState> = sw.states.into_iter().filter(|s| s.t > lo).collect();
     ridge::sort_states(&mut above, settings);
     Ok(LimitStates {
         eta_s,
@@ -210,7 +210,7 @@ fn from_vanishing_thickness(
     if let Some(f) = sw.failure {
         return Err(f);
     }
-    let mut above: Vec<SweptState> = sw.states.into_iter().filter(|s| s.eta > 0.0).collect();
+    let mut above: Vec<LimitState> = sw.states.into_iter().filter(|s| s.t > 0.0).collect();
     ridge::sort_states(&mut above, settings);
     Ok(LimitStates {
         eta_s: 0.0,
@@ -285,7 +285,7 @@ fn continuous(
     settings: &Settings,
 ) -> Result<LimitStates, Undecided> {
     let mut walked = 0;
-    let carry = |pieces: usize| -> Result<Carried<SweptState>, Undecided> {
+    let carry = |pieces: usize| -> Result<Carried<LimitState>, Undecided> {
         let discrete = arch
             .clone()
             .with_blocks(pieces)
@@ -306,8 +306,8 @@ fn continuous(
         let h = arch.span() / pieces as f64;
         let states = states
             .iter()
-            .filter_map(|s| refine(arch, mu, s.eta, s.x, &merge(&s.pattern, h), settings))
-            .filter(|r| r.eta > eta_s * (1.0 + settings.root_slack))
+            .filter_map(|s| refine(arch, mu, s.t, s.x, &merge(&s.pattern, h), settings))
+            .filter(|r| r.t > eta_s * (1.0 + settings.root_slack))
             .collect();
         Ok(Carried {
             states,
@@ -315,9 +315,9 @@ fn continuous(
         })
     };
     let cmp = Compare {
-        same: |p: &SweptState, q: &SweptState| same_state(p, q, settings),
-        sort: |l: &mut Vec<SweptState>| ridge::sort_states(l, settings),
-        t: |s: &SweptState| s.eta,
+        same: |p: &LimitState, q: &LimitState| same_state(p, q, settings),
+        sort: |l: &mut Vec<LimitState>| ridge::sort_states(l, settings),
+        t: |s: &LimitState| s.t,
     };
     let (fine, events) = agreed(settings, carry, cmp)?;
     Ok(LimitStates {
@@ -347,7 +347,7 @@ fn discrete_sweep(
     mu: f64,
     pieces: usize,
     settings: &Settings,
-) -> Result<(Vec<SweptState>, usize), Undecided> {
+) -> Result<(Vec<LimitState>, usize), Undecided> {
     let start = match solve(discrete, mu, settings)
         .map_err(|e| Undecided::Discretisation(e.to_string()))?
         .outcome
@@ -372,11 +372,11 @@ fn discrete_sweep(
 
 /// Two refined limit states are the same ([`discretised::same_state`], η to
 /// `settings.same_state_eta` relative).
-fn same_state(p: &SweptState, q: &SweptState, settings: &Settings) -> bool {
+fn same_state(p: &LimitState, q: &LimitState, settings: &Settings) -> bool {
     discretised::same_state(
-        (p.eta, &p.pattern, &p.sides),
-        (q.eta, &q.pattern, &q.sides),
-        settings.same_state_eta * p.eta,
+        (p.t, &p.pattern, &p.sides),
+        (q.t, &q.pattern, &q.sides),
+        settings.same_state_eta * p.t,
         settings,
     )
 }
@@ -403,7 +403,7 @@ fn refine(
     x: Reactions,
     pattern: &[Contact],
     settings: &Settings,
-) -> Option<SweptState> {
+) -> Option<LimitState> {
     if pattern.len() < 4 {
         return None;
     }
@@ -420,7 +420,7 @@ fn refine(
         return None;
     }
     let mech = mechanism::find(&st, &v.active, settings).ok()??;
-    Some(SweptState::unloaded(
+    Some(LimitState::unloaded(
         arch,
         (r.t, r.x),
         v.active,

@@ -106,7 +106,7 @@ pub fn branch_key(
         .collect();
     let at_static = sv
         .lambda_static
-        .is_some_and(|(top, _)| !below(least.lambda, top, settings));
+        .is_some_and(|(top, _)| !below(least.t, top, settings));
     BranchKey::Collapse { pattern, at_static }
 }
 
@@ -439,7 +439,7 @@ fn least(answer: &Result<LoadOutcome, Undecided>) -> Option<LeastState> {
     };
     let l = sv.limit_states.first()?;
     Some((
-        l.lambda,
+        l.t,
         l.x,
         l.pattern
             .iter()

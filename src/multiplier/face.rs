@@ -24,11 +24,12 @@
 //!   order of [`crate::load::rows`] (joint by joint from the right springing). The first
 //!   is the state reported with λ_static.
 
-use super::limit_state::{limit_state_on, LoadLimitState};
+use super::limit_state::limit_state_on;
 use crate::arch::Arch;
 use crate::contact::Contact;
 use crate::family::Tagged;
 use crate::limit_states::sweep::{CheckedPoint, BOX, BOX_EDGE_REL};
+use crate::limit_states::LimitState;
 use crate::load::{LiveLoad, LoadRow, Side};
 use crate::settings::Settings;
 use crate::statics::{magnitude, Reactions};
@@ -49,7 +50,7 @@ pub(super) struct AtStatic {
     /// λ_static and the first vertex of F (the state reported there).
     pub state: (f64, Reactions),
     /// The maximal faces of F made of limit states, in the canonical order.
-    pub limit_states: Vec<LoadLimitState>,
+    pub limit_states: Vec<LimitState>,
     /// The vertices of F without a mechanism with positive live power (evidence), the
     /// first vertex excluded (a certificate describes it as the state at λ_static).
     pub without: Vec<CheckedPoint>,
@@ -280,7 +281,7 @@ pub(super) fn decide(
             .filter(|&v| act.iter().all(|r| verts[v].1.contains(r)))
             .collect()
     };
-    let mut limit: Vec<(Vec<usize>, LoadLimitState)> = Vec::new();
+    let mut limit: Vec<(Vec<usize>, LimitState)> = Vec::new();
     let mut carries = vec![false; verts.len()];
     for act in &faces {
         let on = vertices_of(act);
@@ -307,7 +308,7 @@ pub(super) fn decide(
         }
     }
     // maximal: no other limit face whose active set is a proper subset
-    let maximal: Vec<LoadLimitState> = limit
+    let maximal: Vec<LimitState> = limit
         .iter()
         .filter(|(a, _)| {
             !limit

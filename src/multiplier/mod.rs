@@ -17,7 +17,6 @@ mod outcome;
 mod range;
 mod survey;
 
-pub use limit_state::LoadLimitState;
 pub use outcome::{LoadOutcome, LoadSurvey, StaticRange, UNBOUNDED_SEARCH_TOP};
 pub use range::{check_load, static_range};
 pub use survey::{continua, survey};

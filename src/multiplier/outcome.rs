@@ -1,8 +1,8 @@
 //! What the load question answers: the static range, every limit state in it, and the
 //! outcome at one (η, μ).
 
-use super::limit_state::LoadLimitState;
 use crate::limit_states::sweep::CheckedPoint;
+use crate::limit_states::LimitState;
 use crate::statics::Reactions;
 
 /// The admissible multipliers λ ≥ 0 at (η, μ).
@@ -40,7 +40,7 @@ pub struct LoadSurvey {
     /// continuum of limit states appears once, by its least state; a face of limit states
     /// at λ_static (all at one λ) once, by the centroid of its vertices with the contacts
     /// active on the whole face, `continuum_to` = λ_static.
-    pub limit_states: Vec<LoadLimitState>,
+    pub limit_states: Vec<LimitState>,
     /// Events of the sweep.
     pub events: usize,
     /// How the list was established: `sweep` (discrete arch: every event of P(λ)) or
@@ -56,14 +56,14 @@ impl LoadSurvey {
     /// The collapse multiplier: the least limit state's λ (`None`: no limit state at all,
     /// which the static maximum without a mechanism can leave).
     pub fn lambda(&self) -> Option<f64> {
-        self.limit_states.first().map(|s| s.lambda)
+        self.limit_states.first().map(|s| s.t)
     }
     /// Whether exactly one limit state exists (a continuum is not unique).
     pub fn unique(&self) -> bool {
         self.limit_states.len() == 1
             && self.limit_states[0]
                 .continuum_to
-                .is_none_or(|to| to <= self.limit_states[0].lambda)
+                .is_none_or(|to| to <= self.limit_states[0].t)
     }
     /// 1 − λ/λ_static: how far non-associative friction lowers the collapse multiplier
     /// (1 when λ_static is unbounded and a limit state exists).

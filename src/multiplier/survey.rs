@@ -4,7 +4,7 @@
 
 use super::continuum::{self, NoExtreme};
 use super::face;
-use super::limit_state::{limit_state_on, LoadLimitState};
+use super::limit_state::limit_state_on;
 use super::outcome::{LoadOutcome, LoadSurvey, StaticRange, UNBOUNDED_SEARCH_TOP};
 use super::range::{check_load, static_range, UNBOUNDED_BELOW};
 use crate::arch::{check_eta, Arch, InputError, JointLayout};
@@ -14,6 +14,7 @@ use crate::family::Tagged;
 use crate::kinematics::{column, power};
 use crate::limit_states::discretised::{self, agreed, Carried, Compare};
 use crate::limit_states::sweep::sweep_load_with_top;
+use crate::limit_states::LimitState;
 use crate::load::{rows, LiveLoad, LoadRow, Side};
 use crate::lp::{self, LpOutcome};
 use crate::mechanism;
@@ -99,20 +100,10 @@ pub fn survey(
     // unloading end: the arch fails there as λ decreases, and it is never reported as a
     // collapse under the load, whatever mechanism the load could also drive there
     let above_min = |l: f64| min.0 == 0.0 || l > min.0 * (1.0 + settings.root_slack);
-    let mut limit_states: Vec<LoadLimitState> = sw
+    let mut limit_states: Vec<LimitState> = sw
         .states
         .into_iter()
-        .filter(|s| s.eta < top * (1.0 - settings.root_slack) && above_min(s.eta))
-        .map(|s| LoadLimitState {
-            lambda: s.eta,
-            x: s.x,
-            pattern: s.pattern,
-            sides: s.sides,
-            mode: s.mode,
-            mechanism: s.mechanism,
-            live_power: s.live_power,
-            continuum_to: None,
-        })
+        .filter(|s| s.t < top * (1.0 - settings.root_slack) && above_min(s.t))
         .collect();
     let mut no_mechanism = sw.no_mechanism;
     let (mechanism_at_static, at_static) = match at_static {
@@ -125,7 +116,7 @@ pub fn survey(
     limit_states.extend(at_static);
     limit_states.retain(|s| !in_continuum(&s.pattern, &s.sides));
     limit_states.extend(continua);
-    limit_states.sort_by(|a, b| a.lambda.total_cmp(&b.lambda));
+    limit_states.sort_by(|a, b| a.t.total_cmp(&b.t));
     if max.is_none() && limit_states.is_empty() {
         return Ok(Ok(LoadOutcome::NoCollapse {
             lambda_min: min,
@@ -208,7 +199,7 @@ pub fn continua(
     load: &LiveLoad,
     rows: &[LoadRow],
     settings: &Settings,
-) -> Result<Vec<LoadLimitState>, Undecided> {
+) -> Result<Vec<LimitState>, Undecided> {
     let mut out = Vec::new();
     if !mu.is_finite() {
         return Ok(out); // hinge columns cancel only at η = 0
@@ -262,8 +253,8 @@ pub fn continua(
                 continue;
             };
             let contacts: Vec<Contact> = plain.to_vec();
-            out.push(LoadLimitState {
-                lambda: from[3],
+            out.push(LimitState {
+                t: from[3],
                 x,
                 mode: classify(
                     &contacts,
@@ -314,7 +305,7 @@ fn continuous_survey(
             events: 0,
         });
     };
-    let limit_states: Vec<LoadLimitState> =
+    let limit_states: Vec<LimitState> =
         limit_state_on(arch, eta, mu, load, (lambda, x), &pattern, settings)?
             .into_iter()
             .collect();
@@ -350,9 +341,9 @@ fn continuous_finite_friction(
     };
     let carry = |pieces| carried_states(arch, eta, mu, load, pieces, lambda_s, min, settings);
     let cmp = Compare {
-        same: |p: &LoadLimitState, q: &LoadLimitState| same_load_state(p, q, settings),
-        sort: |l: &mut Vec<LoadLimitState>| l.sort_by(|p, q| p.lambda.total_cmp(&q.lambda)),
-        t: |s: &LoadLimitState| s.lambda,
+        same: |p: &LimitState, q: &LimitState| same_load_state(p, q, settings),
+        sort: |l: &mut Vec<LimitState>| l.sort_by(|p, q| p.t.total_cmp(&q.t)),
+        t: |s: &LimitState| s.t,
     };
     let (fine, events) = agreed(settings, carry, cmp)?;
     let at_static = limit_state_on(arch, eta, mu, load, (lambda_s, x_s), &pattern_s, settings)?;
@@ -384,7 +375,7 @@ fn carried_states(
     lambda_s: f64,
     min: (f64, Reactions),
     settings: &Settings,
-) -> Result<Carried<LoadLimitState>, Undecided> {
+) -> Result<Carried<LimitState>, Undecided> {
     let (a, b) = (arch.beta_right(), arch.beta_left());
     let above_min = |l: f64| min.0 == 0.0 || l > min.0 * (1.0 + settings.root_slack);
     let mut events = None;
@@ -423,31 +414,24 @@ fn carried_states(
         Err(e) => return Err(e.map_text(|e| format!("{pieces} pieces: {e}"))),
     };
     let h = (b - a) / pieces as f64;
-    let mut found: Vec<LoadLimitState> = Vec::new();
+    let mut found: Vec<LimitState> = Vec::new();
     for st in &states {
         // a face of states at the discretisation's own static maximum (a continuum at
         // one λ): its states lie at or above the continuous arch's λ_static, which is
         // decided on the continuum itself below
-        if st.continuum_to.is_some_and(|to| to <= st.lambda) {
+        if st.continuum_to.is_some_and(|to| to <= st.t) {
             continue;
         }
         if st.continuum_to.is_some() {
             return Err(Undecided::NotCovered(format!(
                     "the {pieces}-piece discretisation has a continuum of limit states from lambda = {} (the loaded point sliding along its section): not carried over to the continuous arch yet",
-                    st.lambda
+                    st.t
                 )));
         }
         let pattern: Vec<Tagged<Side>> = st.pattern.iter().copied().zip(st.sides.clone()).collect();
-        let Some((l, x, active)) = continuum::carry_over(
-            arch,
-            eta,
-            mu,
-            load,
-            (st.lambda, st.x),
-            &pattern,
-            h,
-            settings,
-        ) else {
+        let Some((l, x, active)) =
+            continuum::carry_over(arch, eta, mu, load, (st.t, st.x), &pattern, h, settings)
+        else {
             continue;
         };
         if !below(l, lambda_s, settings) || !above_min(l) {
@@ -479,11 +463,11 @@ pub(crate) fn below(l: f64, top: f64, settings: &Settings) -> bool {
 /// Two carried limit states are the same ([`discretised::same_state`], λ to
 /// `settings.same_state_eta` × (1 + |λ|): a multiplier near zero is fixed in absolute
 /// terms).
-fn same_load_state(p: &LoadLimitState, q: &LoadLimitState, settings: &Settings) -> bool {
+fn same_load_state(p: &LimitState, q: &LimitState, settings: &Settings) -> bool {
     discretised::same_state(
-        (p.lambda, &p.pattern, &p.sides),
-        (q.lambda, &q.pattern, &q.sides),
-        settings.same_state_eta * (1.0 + p.lambda.abs()),
+        (p.t, &p.pattern, &p.sides),
+        (q.t, &q.pattern, &q.sides),
+        settings.same_state_eta * (1.0 + p.t.abs()),
         settings,
     )
 }

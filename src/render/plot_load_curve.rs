@@ -34,7 +34,7 @@ fn point((mu, o): &(f64, Result<LoadOutcome, Undecided>)) -> Sample {
         Ok(LoadOutcome::Limits(s)) => (
             *mu,
             s.lambda_static.map(|m| m.0),
-            s.limit_states.first().map(|l| (l.lambda, l.mode)),
+            s.limit_states.first().map(|l| (l.t, l.mode)),
         ),
         _ => (*mu, None, None),
     }

@@ -2,14 +2,14 @@
 //! Each must give a verified limit state or an honest outcome — never a panic.
 
 use crate::invariants::check_limit_state;
-use arch_enum::{solve, Arch, CollapseMode, LimitState, Outcome, Settings, WeightModel};
+use arch_enum::{solve, Arch, CollapseMode, LeastLimitState, Outcome, Settings, WeightModel};
 use std::f64::consts::PI;
 
 fn outcome(arch: &Arch, mu: f64) -> Outcome {
     solve(arch, mu, &Settings::default()).unwrap().outcome
 }
 
-fn limit(arch: &Arch, mu: f64) -> LimitState {
+fn limit(arch: &Arch, mu: f64) -> LeastLimitState {
     match outcome(arch, mu) {
         Outcome::Limit(ls) => {
             check_limit_state(arch, &ls);

@@ -6,7 +6,7 @@
 //! than the continuous one with the same springings.
 
 use crate::model::{column, max_rel_violation, ntm};
-use arch_enum::{least_friction, solve, Arch, LimitState, Outcome, Settings, WeightModel};
+use arch_enum::{least_friction, solve, Arch, LeastLimitState, Outcome, Settings, WeightModel};
 use proptest::prelude::*;
 use std::f64::consts::PI;
 
@@ -15,7 +15,7 @@ fn solved(arch: &Arch, mu: f64) -> Outcome {
 }
 
 /// All the checks on one limit state.
-pub fn check_limit_state(arch: &Arch, ls: &LimitState) {
+pub fn check_limit_state(arch: &Arch, ls: &LeastLimitState) {
     // static admissibility over a dense sampling of the continuum
     let v = max_rel_violation(arch, ls, 4000);
     assert!(v <= 1e-10, "max relative phi {v:e} at eta = {}", ls.eta);

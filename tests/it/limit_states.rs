@@ -59,7 +59,7 @@ fn compare_with(
             };
         }
     };
-    let above: Vec<f64> = r.above.iter().map(|s| s.eta).collect();
+    let above: Vec<f64> = r.above.iter().map(|s| s.t).collect();
     let close = |a: f64, b: f64| (a - b).abs() <= 1e-10 * b.abs().max(1e-300);
     if !close(r.eta_s, reference.eta_s) {
         return Err(format!(
@@ -142,10 +142,10 @@ fn symmetric_horseshoe_has_a_mirror_pair_above_eta_s() {
         r.above.len(),
         2,
         "{:?}",
-        r.above.iter().map(|s| s.eta).collect::<Vec<_>>()
+        r.above.iter().map(|s| s.t).collect::<Vec<_>>()
     );
     for s in &r.above {
-        assert!((s.eta - 0.905960101783).abs() < 1e-11, "{}", s.eta);
+        assert!((s.t - 0.905960101783).abs() < 1e-11, "{}", s.t);
     }
 }
 
@@ -257,9 +257,9 @@ fn unsymmetric_gap_is_decided() {
     assert!(!r.mechanism_at_eta_s);
     assert_eq!(r.above.len(), 1);
     assert!(
-        r.above[0].eta > r.eta_s * 1.1,
+        r.above[0].t > r.eta_s * 1.1,
         "{} vs {}",
-        r.above[0].eta,
+        r.above[0].t,
         r.eta_s
     );
 }
@@ -275,7 +275,7 @@ fn continuous_symmetric_mirror_pair() {
     assert!(r.mechanism_at_eta_s);
     assert_eq!(r.above.len(), 2);
     let (a, b) = (&r.above[0], &r.above[1]);
-    assert!((a.eta - b.eta).abs() < 1e-10 * a.eta);
+    assert!((a.t - b.t).abs() < 1e-10 * a.t);
     // mirror images: β ↦ π − β, S+ ↔ S−
     for c in &a.pattern {
         assert!(
@@ -499,11 +499,7 @@ fn balanced_on_one_springing_edge() {
         } else {
             2.0 * (chord / br.cos() - 1.0)
         };
-        assert!(
-            (s.eta - exact).abs() <= 1e-12 * exact,
-            "{} vs {exact}",
-            s.eta
-        );
+        assert!((s.t - exact).abs() <= 1e-12 * exact, "{} vs {exact}", s.t);
         assert!(s.x[0].abs() <= 1e-12 * span && (s.x[1] - span).abs() <= 1e-12 * span);
         assert!(s.mechanism.power.abs() <= 1e-12 && s.mechanism.dissipation.abs() <= 1e-12);
     }
@@ -555,9 +551,9 @@ fn stands_at_every_eta_with_a_limit_state_above() {
     assert!(!r.mechanism_at_eta_s);
     assert_eq!(r.above.len(), 1);
     assert!(
-        (r.above[0].eta - 1.542014859695).abs() < 1e-11,
+        (r.above[0].t - 1.542014859695).abs() < 1e-11,
         "{}",
-        r.above[0].eta
+        r.above[0].t
     );
     assert!(r.above[0].mechanism.dissipation > 0.0);
     // the arch: two equal voussoirs, standing at every η > 0, no limit state
@@ -676,7 +672,7 @@ fn infimum_sweep_starts_inside_the_box() {
     };
     let etas = |s: &Settings| -> Vec<f64> {
         let r = search(&arch, 0.2870169351378892, s).unwrap().unwrap();
-        r.above.iter().map(|a| a.eta).collect()
+        r.above.iter().map(|a| a.t).collect()
     };
     assert_eq!(etas(&raised), etas(&Settings::default()));
     let joints = [-0.965545198893314, -0.7856270637541098, -0.6415860867560821];

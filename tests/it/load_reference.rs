@@ -493,7 +493,7 @@ fn loaded_arches_match_the_brute_force() {
         let reference = Case::new(&joints, centroid, eta, mu, load).brute_force();
         let crate_states: Vec<f64> = match survey(&arch, eta, mu, &load, &settings).unwrap() {
             Ok(LoadOutcome::Limits(s)) => {
-                let mut v: Vec<f64> = s.limit_states.iter().map(|l| l.lambda).collect();
+                let mut v: Vec<f64> = s.limit_states.iter().map(|l| l.t).collect();
                 v.dedup_by(|a, b| (*a - *b).abs() <= 1e-9 * (1.0 + b.abs()));
                 if s.reduction().is_some_and(|r| r > 1e-9) {
                     reduced += 1;
@@ -823,7 +823,7 @@ fn the_state_at_lambda_static_is_the_faces() {
         let at_static: Vec<_> = sv
             .limit_states
             .iter()
-            .filter(|s| s.lambda >= lambda_s * (1.0 - 1e-9))
+            .filter(|s| s.t >= lambda_s * (1.0 - 1e-9))
             .collect();
         let any = vertices
             .iter()
@@ -837,7 +837,7 @@ fn the_state_at_lambda_static_is_the_faces() {
         // a continuum of limit states in λ that reaches λ_static (two contacts whose
         // columns cancel) holds the states there that have both its contacts active
         let in_lambda_continuum = sv.limit_states.iter().any(|s| {
-            s.lambda < lambda_s * (1.0 - 1e-9)
+            s.t < lambda_s * (1.0 - 1e-9)
                 && s.continuum_to
                     .is_some_and(|to| to >= lambda_s * (1.0 - 1e-9))
         });
@@ -874,7 +874,7 @@ fn the_state_at_lambda_static_is_the_faces() {
                     vertices.len(),
                     at_static
                         .iter()
-                        .map(|s| (s.lambda, s.pattern.iter().map(|c| (c.beta, c.kind)).collect::<Vec<_>>(), s.continuum_to))
+                        .map(|s| (s.t, s.pattern.iter().map(|c| (c.beta, c.kind)).collect::<Vec<_>>(), s.continuum_to))
                         .collect::<Vec<_>>()
                 ));
             }

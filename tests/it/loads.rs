@@ -457,8 +457,8 @@ fn load_symmetry_infinite_friction_and_virtual_work() {
             (LoadOutcome::Limits(r), LoadOutcome::Limits(l)) => {
                 let (a, b) = (r.lambda_static.unwrap().0, l.lambda_static.unwrap().0);
                 assert!((a - b).abs() < 1e-9 * (1.0 + a), "case {case}: {a} vs {b}");
-                let la: Vec<f64> = r.limit_states.iter().map(|s| s.lambda).collect();
-                let lb: Vec<f64> = l.limit_states.iter().map(|s| s.lambda).collect();
+                let la: Vec<f64> = r.limit_states.iter().map(|s| s.t).collect();
+                let lb: Vec<f64> = l.limit_states.iter().map(|s| s.t).collect();
                 assert_eq!(la.len(), lb.len(), "case {case}: {la:?} vs {lb:?}");
                 for (x, y) in la.iter().zip(&lb) {
                     assert!(

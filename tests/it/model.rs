@@ -2,7 +2,7 @@
 //! written out again (not calling `arch_enum::statics` or `kinematics`), a dense
 //! sampling check of admissibility, and a fixed-grid LP for η*.
 
-use arch_enum::{Arch, JointLayout, LimitState};
+use arch_enum::{Arch, JointLayout, LeastLimitState};
 use good_lp::{highs, variable, Expression, ProblemVariables, SolverModel};
 
 /// (N, T, M) at β for reactions x, centreline (rho = 1) or centroid weight.
@@ -41,12 +41,12 @@ pub fn sample_joints(arch: &Arch, n: usize) -> Vec<f64> {
 
 /// The magnitude of the activation functions of a state: (1 + |x|₁)·min(η, μ, 1),
 /// but not below 1e-3 (M, N and T are sums of terms of size |x|).
-pub fn scale(ls: &LimitState) -> f64 {
+pub fn scale(ls: &LeastLimitState) -> f64 {
     (1.0 + ls.x.iter().map(|v| v.abs()).sum::<f64>()) * ls.eta.min(ls.mu).clamp(1e-3, 1.0)
 }
 
 /// Greatest activation over `n` sampled joints, relative to [`scale`].
-pub fn max_rel_violation(arch: &Arch, ls: &LimitState, n: usize) -> f64 {
+pub fn max_rel_violation(arch: &Arch, ls: &LeastLimitState, n: usize) -> f64 {
     let rho = arch.weight().rho(ls.eta);
     let scale = scale(ls);
     sample_joints(arch, n)

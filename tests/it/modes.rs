@@ -6,7 +6,8 @@ use crate::cli::{json_of, round};
 use arch_enum::assess::safest_state;
 use arch_enum::limit_curve::{trace, LimitCurve};
 use arch_enum::{
-    solve, Arch, CollapseMode, ContactKind, LimitState, Location, Outcome, Settings, WeightModel,
+    solve, Arch, CollapseMode, ContactKind, LeastLimitState, Location, Outcome, Settings,
+    WeightModel,
 };
 use std::f64::consts::PI;
 
@@ -19,7 +20,7 @@ fn curve(alpha: f64) -> LimitCurve {
 
 /// The limit state at η*(μ) of the symmetric arch of opening `alpha`, solved on its own
 /// (not taken from the traced curve).
-fn limit_at(alpha: f64, mu: f64) -> LimitState {
+fn limit_at(alpha: f64, mu: f64) -> LeastLimitState {
     let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
     match solve(&arch, mu, &Settings::default()).unwrap().outcome {
         Outcome::Limit(ls) => ls,
@@ -423,7 +424,7 @@ fn symmetric_continuous_non_uniqueness_is_independently_checked() {
     assert_eq!(r.above.len(), 2);
     let (br, bl) = (-alpha, PI + alpha);
     for s in &r.above {
-        assert!(s.eta > r.eta_s * (1.0 + 1e-6), "{} vs {}", s.eta, r.eta_s);
+        assert!(s.t > r.eta_s * (1.0 + 1e-6), "{} vs {}", s.t, r.eta_s);
         let mut joints: Vec<f64> = (0..=4000)
             .map(|i| br + (bl - br) * i as f64 / 4000.0)
             .collect();
@@ -451,7 +452,7 @@ fn symmetric_continuous_non_uniqueness_is_independently_checked() {
             .collect();
         active.sort_by_key(|a| a.0);
         let state = RefLimitState {
-            eta: s.eta,
+            eta: s.t,
             x: s.x,
             active: active.iter().map(|a| a.0).collect(),
             rates: active.iter().map(|a| a.1).collect(),

@@ -4,11 +4,11 @@
 //! half a unit in the last printed place.
 
 use arch_enum::{
-    least_friction, solve, Arch, ContactKind, LimitState, Outcome, Settings, WeightModel,
+    least_friction, solve, Arch, ContactKind, LeastLimitState, Outcome, Settings, WeightModel,
 };
 use std::f64::consts::PI;
 
-fn limit(alpha: f64, mu: f64, weight: WeightModel) -> LimitState {
+fn limit(alpha: f64, mu: f64, weight: WeightModel) -> LeastLimitState {
     let arch = Arch::symmetric(alpha, weight).unwrap();
     match solve(&arch, mu, &Settings::default()).unwrap().outcome {
         Outcome::Limit(ls) => ls,
@@ -25,7 +25,7 @@ fn assert_digits(what: &str, value: f64, printed: f64, digits: i32) {
     );
 }
 
-fn intrados_hinges(ls: &LimitState) -> Vec<f64> {
+fn intrados_hinges(ls: &LeastLimitState) -> Vec<f64> {
     ls.pattern
         .iter()
         .filter(|c| c.kind == ContactKind::HingeIntrados)

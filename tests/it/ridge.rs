@@ -35,7 +35,7 @@ fn same_answer(ridge: &LimitStates, sweep: &LimitStates) -> Result<(), String> {
     let list = |s: &LimitStates| {
         s.above
             .iter()
-            .map(|a| format!("{:.15} {:?} {:?}", a.eta, a.x, a.pattern))
+            .map(|a| format!("{:.15} {:?} {:?}", a.t, a.x, a.pattern))
             .collect::<Vec<_>>()
     };
     if ridge.above.len() != sweep.above.len() {
@@ -47,7 +47,7 @@ fn same_answer(ridge: &LimitStates, sweep: &LimitStates) -> Result<(), String> {
     }
     for (p, q) in ridge.above.iter().zip(&sweep.above) {
         let scale = 1.0 + q.x.iter().map(|v| v.abs()).sum::<f64>();
-        let same = (p.eta - q.eta).abs() <= 1e-10 * q.eta
+        let same = (p.t - q.t).abs() <= 1e-10 * q.t
             && (0..3).all(|k| (p.x[k] - q.x[k]).abs() <= 1e-8 * scale)
             && p.mode == q.mode
             && p.pattern.len() == q.pattern.len()

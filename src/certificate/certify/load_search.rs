@@ -12,8 +12,9 @@ use crate::certificate::format::{
 };
 use crate::contact::{Contact, ContactKind};
 use crate::limit_states::sweep::{sweep_load, CheckedPoint};
+use crate::limit_states::LimitState;
 use crate::load::LiveLoad;
-use crate::multiplier::{LoadLimitState, LoadSurvey, UNBOUNDED_SEARCH_TOP};
+use crate::multiplier::{LoadSurvey, UNBOUNDED_SEARCH_TOP};
 use crate::settings::Settings;
 use crate::statics::Reactions;
 
@@ -130,10 +131,7 @@ fn checked(
 }
 
 /// A limit state under the load in the certificate's order, its rates on its pattern.
-fn limit_state_cert(
-    load: &LiveLoad,
-    s: &LoadLimitState,
-) -> Result<LoadLimitStateCert, NotCertified> {
+fn limit_state_cert(load: &LiveLoad, s: &LimitState) -> Result<LoadLimitStateCert, NotCertified> {
     let pattern = sorted(
         s.pattern
             .iter()
@@ -144,11 +142,11 @@ fn limit_state_cert(
     let rates = rates_on(&pattern, &s.mechanism.contacts, &s.mechanism.rates).ok_or_else(|| {
         NotCertified(format!(
             "the mechanism of the limit state at lambda = {} does not match its pattern",
-            s.lambda
+            s.t
         ))
     })?;
     Ok(LoadLimitStateCert {
-        lambda: s.lambda,
+        lambda: s.t,
         x: s.x,
         pattern: pattern.iter().map(|&l| joint(Some(load), l)).collect(),
         rates,

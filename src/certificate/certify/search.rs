@@ -9,7 +9,7 @@ use crate::certificate::format::{
     LimitStateCert, NoMechanism, PatternJoint, SearchEvidence, SearchMethod, Side,
 };
 use crate::contact::Contact;
-use crate::limit_states::{LimitStates, SweptState};
+use crate::limit_states::{LimitState, LimitStates};
 use crate::mechanism::Mechanism;
 use crate::settings::Settings;
 use crate::statics::Reactions;
@@ -65,7 +65,7 @@ pub(super) fn evidence(
     } else {
         SearchMethod::Refined
     };
-    let above = |s: &SweptState| limit_state_cert(s.eta, s.x, &s.mechanism);
+    let above = |s: &LimitState| limit_state_cert(s.t, s.x, &s.mechanism);
     SearchEvidence {
         method,
         events: found.events,

@@ -11,7 +11,7 @@ use crate::certificate::format::{Certificate, Claim, Farkas, NotCertified, SafeS
 use crate::certificate::verify::{prove_admissible_side, verify};
 use crate::contact::{Contact, ContactKind};
 use crate::friction::friction_limit;
-use crate::limit::LimitState;
+use crate::limit::LeastLimitState;
 use crate::limit_states::Survey;
 use crate::settings::Settings;
 use crate::state::State;
@@ -69,7 +69,7 @@ pub(super) fn certify_limit(
     arch: &Arch,
     mu: f64,
     survey: &Survey,
-    ls: &LimitState,
+    ls: &LeastLimitState,
     gap: f64,
     settings: &Settings,
 ) -> Result<Certificate, NotCertified> {
@@ -97,7 +97,7 @@ pub(super) fn certify_limit(
         (Ok(found), true) => found
             .above
             .first()
-            .map(|s| limit_state_cert(s.eta, s.x, &s.mechanism)),
+            .map(|s| limit_state_cert(s.t, s.x, &s.mechanism)),
         (Err(_), true) => None,
     };
     if let (Ok(found), Some(unique)) = (&survey.states, survey.unique()) {

@@ -6,7 +6,7 @@ use super::rows::{det3, ev, Candidate, JointRows};
 use crate::arch::Arch;
 use crate::contact::ContactKind;
 use crate::kinematics::column;
-use crate::limit_states::sweep::SweptState;
+use crate::limit_states::sweep::LimitState;
 use crate::mechanism;
 use crate::settings::Settings;
 use crate::state::State;
@@ -119,7 +119,7 @@ pub(super) fn check(
     mu: f64,
     c: &Candidate,
     settings: &Settings,
-) -> Result<Option<SweptState>, Undecided> {
+) -> Result<Option<LimitState>, Undecided> {
     let st = State {
         arch,
         eta: c.eta,
@@ -149,5 +149,5 @@ pub(super) fn check(
             c.eta
         ))
     })?;
-    Ok(mech.map(|m| SweptState::unloaded(arch, (c.eta, c.x), v.active, m, settings)))
+    Ok(mech.map(|m| LimitState::unloaded(arch, (c.eta, c.x), v.active, m, settings)))
 }

@@ -40,13 +40,13 @@ use candidates::candidates;
 use check::{check, may_carry_mechanism};
 use rows::JointRows;
 
-use super::sweep::SweptState;
+use super::sweep::LimitState;
 
 /// The limit states the ridge search found, and how many candidate points it checked.
 #[derive(Debug, Clone)]
 pub struct Ridge {
     /// Limit states with η > `eta_lo`, ascending in η.
-    pub states: Vec<SweptState>,
+    pub states: Vec<LimitState>,
     /// Candidate points of the ridge checked (vertices, apexes, breakpoints, dependent
     /// columns) with η > `eta_lo`.
     pub candidates: usize,
@@ -84,14 +84,14 @@ pub fn search(arch: &Arch, mu: f64, eta_lo: f64, settings: &Settings) -> Result<
     }
     let js: Vec<JointRows> = joints.iter().map(|&b| JointRows::at(arch, b)).collect();
     let cands = candidates(&js, mu, eta_lo)?;
-    let mut states: Vec<SweptState> = Vec::new();
+    let mut states: Vec<LimitState> = Vec::new();
     for c in &cands {
         if !may_carry_mechanism(&js, mu, c, settings) {
             continue;
         }
         if let Some(s) = check(arch, mu, c, settings)? {
             let dup = states.iter().any(|p| {
-                (p.eta - s.eta).abs() <= settings.same_state_eta * s.eta
+                (p.t - s.t).abs() <= settings.same_state_eta * s.t
                     && (0..3).all(|k| {
                         (p.x[k] - s.x[k]).abs() <= settings.same_state_x * reaction_scale(&s.x)
                     })
@@ -111,18 +111,17 @@ pub fn search(arch: &Arch, mu: f64, eta_lo: f64, settings: &Settings) -> Result<
 /// Ascending in η; states whose η agree to `settings.same_root` (relative: mirror images)
 /// by their patterns (angles, then kinds), so that the order does not depend on the order
 /// of the walk.
-pub(crate) fn sort_states(states: &mut [SweptState], settings: &Settings) {
-    states.sort_by(|p, q| p.eta.total_cmp(&q.eta));
+pub(crate) fn sort_states(states: &mut [LimitState], settings: &Settings) {
+    states.sort_by(|p, q| p.t.total_cmp(&q.t));
     let mut k = 0;
     while k < states.len() {
         let mut end = k + 1;
-        while end < states.len()
-            && states[end].eta - states[k].eta <= settings.same_root * states[k].eta
+        while end < states.len() && states[end].t - states[k].t <= settings.same_root * states[k].t
         {
             end += 1;
         }
         states[k..end].sort_by(|p, q| {
-            let key = |s: &SweptState| {
+            let key = |s: &LimitState| {
                 s.pattern
                     .iter()
                     .map(|c| (c.beta, c.kind))

@@ -2,7 +2,7 @@
 //! mechanism makes the point a limit state; none makes it evidence of "no limit state
 //! here" that a certificate can carry.
 
-use super::found::{CheckedPoint, SweptState};
+use super::found::{CheckedPoint, LimitState};
 use super::sweeper::{Param, Sweeper};
 use crate::collapse_mode::classify;
 use crate::contact::Contact;
@@ -72,14 +72,15 @@ impl Sweeper<'_> {
                 0.5 * (self.arch.beta_right() + self.arch.beta_left()),
                 self.settings.same_joint,
             );
-            self.states.push(SweptState {
-                eta: t,
+            self.states.push(LimitState {
+                t,
                 x,
                 pattern: contacts,
                 mode,
                 mechanism: mech,
                 sides,
                 live_power,
+                continuum_to: None,
             });
         } else {
             self.no_mechanism.push(CheckedPoint {

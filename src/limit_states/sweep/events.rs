@@ -103,9 +103,9 @@ impl Sweeper<'_> {
     /// are one).
     fn found(mut self, events: usize) -> Sweep {
         let same_root = self.settings.same_root;
-        self.states.sort_by(|a, b| a.eta.total_cmp(&b.eta));
+        self.states.sort_by(|a, b| a.t.total_cmp(&b.t));
         self.states.dedup_by(|a, b| {
-            (a.eta - b.eta).abs() <= same_root * (1.0 + b.eta)
+            (a.t - b.t).abs() <= same_root * (1.0 + b.t)
                 && a.pattern.len() == b.pattern.len()
                 && a.pattern
                     .iter()

@@ -14,7 +14,7 @@ use crate::undecided::Undecided;
 #[derive(Debug, Clone)]
 pub struct Sweep {
     /// Limit states above η_s (η_s itself excluded), ascending in η.
-    pub states: Vec<SweptState>,
+    pub states: Vec<LimitState>,
     /// Events processed.
     pub events: usize,
     /// Every point checked whose active contacts carry no mechanism (events, and the
@@ -58,26 +58,35 @@ pub struct CheckedPoint {
     pub sides: Vec<Side>,
 }
 
-/// A limit state found by the sweep.
+/// A limit state of any question: an admissible state at the parameter t (the thickness
+/// ratio η, or a load's multiplier λ) whose active contacts carry a mechanism (under a live
+/// load, one with positive live power).
 #[derive(Debug, Clone)]
-pub struct SweptState {
-    /// Thickness ratio.
-    pub eta: f64,
+pub struct LimitState {
+    /// The parameter: η (thickness) or λ (load multiplier).
+    pub t: f64,
     /// Reactions.
     pub x: Reactions,
-    /// Every contact active there, by increasing β.
+    /// Every contact active there, by increasing β (at a point load's joint, the side of
+    /// the loaded section in `sides`).
     pub pattern: Vec<Contact>,
     /// The collapse mode named from the pattern.
     pub mode: CollapseMode,
-    /// A mechanism on them.
+    /// A mechanism on them (its `power` is the total external power).
     pub mechanism: Mechanism,
-    /// The side of the loaded section of each contact (load sweeps; `After` elsewhere).
+    /// The side of the loaded section of each contact (`After` away from a point load, and
+    /// in the thickness question).
     pub sides: Vec<Side>,
-    /// The live-load power of the mechanism (load sweeps; 0 elsewhere).
+    /// The live load's power in the mechanism (> 0 under a load; 0 in the thickness
+    /// question).
     pub live_power: f64,
+    /// Under a load: `Some(λ_to)` when this state is the least of a continuum of limit
+    /// states that reaches up to λ_to (`multiplier::continua`); `None` for an isolated
+    /// limit state.
+    pub continuum_to: Option<f64>,
 }
 
-impl SweptState {
+impl LimitState {
     /// A limit state of the thickness problem (no live load) at the state (`arch`, η, x):
     /// its active contacts, the mode they are named, and a mechanism on them.
     pub(crate) fn unloaded(
@@ -86,20 +95,21 @@ impl SweptState {
         pattern: Vec<Contact>,
         mechanism: Mechanism,
         settings: &Settings,
-    ) -> SweptState {
+    ) -> LimitState {
         let mode = classify(
             &pattern,
             0.5 * (arch.beta_right() + arch.beta_left()),
             settings.same_joint,
         );
-        SweptState {
-            eta,
+        LimitState {
+            t: eta,
             x,
             sides: vec![Side::After; pattern.len()],
             pattern,
             mode,
             mechanism,
             live_power: 0.0,
+            continuum_to: None,
         }
     }
 }

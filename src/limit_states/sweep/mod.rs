@@ -39,7 +39,7 @@ mod sweeper;
 mod vertices;
 mod walk;
 
-pub use found::{CheckedPoint, Sweep, SweptState};
+pub use found::{CheckedPoint, LimitState, Sweep};
 pub use geometry::{BOX, BOX_EDGE_REL};
 
 use crate::arch::{Arch, JointLayout, ETA_TOP};

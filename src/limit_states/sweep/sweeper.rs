@@ -1,7 +1,7 @@
 //! The sweep's state: the planes of P(t), the vertices alive with their deaths, what was
 //! found so far; and the one activity test every step uses.
 
-use super::found::{CheckedPoint, SweptState};
+use super::found::{CheckedPoint, LimitState};
 use super::geometry::{Plane, Vertex, BOX};
 use crate::arch::Arch;
 use crate::load::LiveLoad;
@@ -29,7 +29,7 @@ pub(super) struct Sweeper<'a> {
     /// The vertices alive, each with its death (the parameter and the plane that crosses
     /// it), `None` when it survives to the top.
     pub(super) alive: Vec<(Vertex, Option<(f64, usize)>)>,
-    pub(super) states: Vec<SweptState>,
+    pub(super) states: Vec<LimitState>,
     pub(super) no_mechanism: Vec<CheckedPoint>,
     /// The first kinematic LP that the back end could not decide: the sweep then decides
     /// nothing (an undecided point is neither a limit state nor "no mechanism").

@@ -4,8 +4,9 @@
 use super::common::{ArchJson, JSON_VERSION};
 use super::state::{mechanism_json, reactions, MechanismJson, Reactions};
 use crate::contact::Contact;
+use crate::limit_states::LimitState;
 use crate::load::LiveLoad;
-use crate::multiplier::{LoadLimitState, LoadOutcome};
+use crate::multiplier::LoadOutcome;
 use crate::render::live_load::{at_joint, force_unit_kn, merged, LoadQuestion};
 use crate::undecided::Undecided;
 use serde::Serialize;
@@ -105,16 +106,16 @@ pub(super) fn load_json(q: &LoadQuestion) -> LoadJson {
 }
 
 /// The pattern of a limit state, each contact with the side of the loaded section it is on.
-pub(super) fn pattern_json(load: &LiveLoad, s: &LoadLimitState) -> Vec<PatternContact> {
+pub(super) fn pattern_json(load: &LiveLoad, s: &LimitState) -> Vec<PatternContact> {
     merged(load, s.pattern.iter().zip(s.sides.iter().copied()))
         .into_iter()
         .map(|(contact, side)| PatternContact { contact, side })
         .collect()
 }
 
-fn state_json(load: &LiveLoad, s: &LoadLimitState) -> StateJson {
+fn state_json(load: &LiveLoad, s: &LimitState) -> StateJson {
     StateJson {
-        lambda: s.lambda,
+        lambda: s.t,
         mode: s.mode.name(),
         pattern: pattern_json(load, s),
         reactions: reactions(&s.x),

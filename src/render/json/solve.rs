@@ -3,7 +3,7 @@
 use super::common::{status, ArchJson, JSON_VERSION};
 use super::state::{mechanism_json, reactions, MechanismJson, Reactions};
 use crate::contact::Contact;
-use crate::limit::{Candidate, LimitState, Outcome};
+use crate::limit::{Candidate, LeastLimitState, Outcome};
 use crate::limit_states::{LimitStates, Survey};
 use serde::Serialize;
 
@@ -89,7 +89,7 @@ struct SearchJson {
     reason: Option<String>,
 }
 
-fn limit_parts(ls: &LimitState) -> (Vec<Contact>, Reactions, MechanismJson, Checks) {
+fn limit_parts(ls: &LeastLimitState) -> (Vec<Contact>, Reactions, MechanismJson, Checks) {
     let m = &ls.mechanism;
     (
         ls.pattern.clone(),
@@ -209,7 +209,7 @@ fn with_limit_states(doc: &mut SolveJson, survey: &Survey, s: &LimitStates) {
         });
     }
     all.extend(s.above.iter().map(|a| LimitStateJson {
-        eta: a.eta,
+        eta: a.t,
         mode: a.mode.name(),
         pattern: a.pattern.clone(),
         reactions: reactions(&a.x),

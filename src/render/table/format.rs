@@ -4,7 +4,7 @@
 
 use crate::arch::{Arch, JointLayout};
 use crate::contact::Contact;
-use crate::limit::LimitState;
+use crate::limit::LeastLimitState;
 pub use crate::render::dimensions::Dimensions;
 use std::fmt::Write;
 
@@ -24,9 +24,9 @@ pub fn sig(v: f64, digits: usize) -> String {
     }
 }
 
-/// The significant digits of η that its rounding leaves ([`LimitState::eta_rounding`]): at
+/// The significant digits of η that its rounding leaves ([`LeastLimitState::eta_rounding`]): at
 /// most 12, at least 3.
-pub(super) fn eta_digits(ls: &LimitState) -> usize {
+pub(super) fn eta_digits(ls: &LeastLimitState) -> usize {
     let r = ls.eta_rounding;
     if r > 0.0 && r.is_finite() {
         ((-r.log10()).floor() as i64).clamp(3, 12) as usize

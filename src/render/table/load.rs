@@ -2,14 +2,15 @@
 //! maximum, the collapse multiplier and every limit state.
 
 use super::format::{describe_arch, fmt_mu, short, sig};
+use crate::limit_states::LimitState;
 use crate::load::LiveLoad;
-use crate::multiplier::{LoadLimitState, LoadOutcome, LoadSurvey};
+use crate::multiplier::{LoadOutcome, LoadSurvey};
 use crate::render::live_load::{at_joint, force_unit_kn, merged, LoadQuestion};
 use crate::undecided::Undecided;
 use std::fmt::Write;
 
 /// A pattern as `kind@beta`, `<`/`>` marking the contacts before/after the loaded section.
-pub(super) fn pattern_text(load: &LiveLoad, s: &LoadLimitState) -> String {
+pub(super) fn pattern_text(load: &LiveLoad, s: &LimitState) -> String {
     merged(load, s.pattern.iter().zip(s.sides.iter().copied()))
         .iter()
         .map(|(c, side)| {
@@ -166,10 +167,10 @@ fn limit_states(s: &mut String, q: &LoadQuestion, sv: &LoadSurvey) {
         let _ = writeln!(
             s,
             "  lambda = {}  {}  {}{}",
-            sig(l.lambda, 12),
+            sig(l.t, 12),
             l.mode.name(),
             pattern_text(&q.load, l),
-            l.continuum_to.map_or(String::new(), |to| if to > l.lambda {
+            l.continuum_to.map_or(String::new(), |to| if to > l.t {
                 format!(
                     "  (least of a continuum of limit states up to lambda = {})",
                     sig(to, 12)

@@ -19,7 +19,7 @@ fn least_text(load: &LiveLoad, o: &Result<LoadOutcome, Undecided>) -> String {
             None => "no limit state".into(),
             Some(l) => format!(
                 "lambda = {}  {}  {}{}",
-                sig(l.lambda, 12),
+                sig(l.t, 12),
                 l.mode.name(),
                 pattern_text(load, l),
                 if sv.reduction().is_some_and(|r| r > 0.0) {

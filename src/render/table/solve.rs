@@ -2,7 +2,7 @@
 //! above it, and with `--explain` the patterns tried.
 
 use super::format::{describe_arch, eta_digits, fmt_mu, pattern_table, short, sig};
-use crate::limit::{LimitState, Outcome, Solution};
+use crate::limit::{LeastLimitState, Outcome, Solution};
 use crate::limit_states::{LimitStates, Survey};
 use crate::undecided::Undecided;
 use std::fmt::Write;
@@ -75,7 +75,7 @@ fn least_thickness(s: &mut String, survey: &Survey) {
 fn least_limit_state(
     s: &mut String,
     sol: &Solution,
-    ls: &LimitState,
+    ls: &LeastLimitState,
     states: &Result<LimitStates, Undecided>,
 ) {
     let _ = writeln!(
@@ -139,7 +139,7 @@ fn patterns_tried(s: &mut String, sol: &Solution) {
 }
 
 /// The limit state at η_s in detail: pattern, reactions, mechanism, checks.
-fn limit_detail(sol: &Solution, ls: &LimitState) -> String {
+fn limit_detail(sol: &Solution, ls: &LeastLimitState) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
@@ -230,7 +230,7 @@ fn limit_states(survey: &Survey) -> String {
         let _ = writeln!(
             s,
             "  eta = {}  {}  {}",
-            sig(a.eta, 12),
+            sig(a.t, 12),
             a.mode.name(),
             a.pattern
                 .iter()
