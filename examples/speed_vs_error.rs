@@ -12,7 +12,7 @@
 //!
 //! `cargo run --release --example speed_vs_error [-- OUT.svg]`
 
-use arch_enum::admissibility::{max_margin, Goal, WorkingSet};
+use arch_enum::admissibility::{margin_over_arch, Goal, WorkingSet};
 use arch_enum::certificate::certify;
 use arch_enum::limit_curve::trace;
 use arch_enum::statics::{actions, Affine};
@@ -68,7 +68,7 @@ fn cg_eta(arch: &Arch, mu: f64, s: &Settings) -> f64 {
     let (mut lo, mut hi) = (0.0, 1.999);
     while hi - lo > 1e-13 * hi {
         let mid = 0.5 * (lo + hi);
-        let m = max_margin(
+        let m = margin_over_arch(
             arch,
             mid,
             mu,

@@ -185,7 +185,7 @@ pub enum Goal {
 
 /// Maximises the admissibility margin over the continuum at (η, μ) restricted to
 /// the activation functions `modes`, growing `ws` as needed.
-pub fn max_margin(
+pub fn margin_over_arch(
     arch: &Arch,
     eta: f64,
     mu: f64,

@@ -12,7 +12,7 @@
 //! * the collapse mode of η*(μ) (the mode this arch is closest to at this friction);
 //! * the admissible state of largest margin at (η, μ): the "safest" line of thrust.
 
-use crate::admissibility::{max_margin, Goal, WorkingSet};
+use crate::admissibility::{margin_over_arch, Goal, WorkingSet};
 use crate::arch::{check_eta, check_mu, Arch, InputError};
 use crate::collapse_mode::CollapseMode;
 use crate::contact::{Contact, ContactKind};
@@ -125,7 +125,7 @@ pub fn assess(
 /// The admissible state of largest margin at (η, μ) (constraint generation to optimality).
 pub fn safest_state(arch: &Arch, eta: f64, mu: f64, settings: &Settings) -> Option<SafestState> {
     let mut ws = WorkingSet::initial(arch);
-    let m = max_margin(
+    let m = margin_over_arch(
         arch,
         eta,
         mu,

@@ -5,7 +5,7 @@
 //! limit curve η*(μ). Rows are computed in parallel, each from a fresh working set (so
 //! the values do not depend on the number of threads); progress goes through a callback.
 
-use crate::admissibility::{max_margin, Goal, WorkingSet};
+use crate::admissibility::{margin_over_arch, Goal, WorkingSet};
 use crate::arch::Arch;
 use crate::contact::ContactKind;
 use crate::settings::Settings;
@@ -28,7 +28,7 @@ pub fn margin_map(
         let mut ws = WorkingSet::initial(arch);
         mus.iter()
             .map(|&mu| {
-                let v = max_margin(
+                let v = margin_over_arch(
                     arch,
                     eta,
                     mu,

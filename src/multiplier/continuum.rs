@@ -435,7 +435,7 @@ fn refine(
         x,
         lambda,
         &pattern,
-        Goal {
+        Refinement {
             maximise: Some(maximise),
             reach: EXCHANGE_REACH,
         },
@@ -454,7 +454,7 @@ fn newton_verified(
     x: Reactions,
     lambda: f64,
     pattern: &[Tagged<Side>],
-    goal: Goal,
+    goal: Refinement,
     settings: &Settings,
 ) -> Result<Extreme, Undecided> {
     let verified = |(l, x): (f64, Reactions)| verify(p, &x, l, settings).map(|a| (l, x, a));
@@ -527,7 +527,7 @@ fn verify(
 /// completed by the KKT conditions of that optimum), or a limit state of a discretisation
 /// carried over (no objective); and how far from its start the root may lie (relative).
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Goal {
+pub(crate) struct Refinement {
     /// `Some(true)`: the largest λ; `Some(false)`: the least; `None`: no objective.
     pub(crate) maximise: Option<bool>,
     /// The root must lie within this relative distance of the start.
@@ -548,7 +548,7 @@ fn newton(
     x: Reactions,
     lambda: f64,
     pattern: &[Tagged<Side>],
-    goal: Goal,
+    goal: Refinement,
     settings: &Settings,
 ) -> Result<(f64, Reactions), Undecided> {
     let pattern = distinct_rows(p, pattern);
@@ -663,7 +663,7 @@ pub fn carry_over(
     let merged: Vec<Tagged<Side>> = family::merge_adjacent(pattern, h, fixed)
         .into_iter()
         .collect();
-    let goal = Goal {
+    let goal = Refinement {
         maximise: None,
         reach: 0.1,
     };

@@ -2,7 +2,7 @@
 //! thickness problem, s(μ) in the friction-only problem): Illinois regula falsi with a
 //! geometric-bisection safeguard, and the LP evaluation it calls.
 
-use crate::admissibility::{max_margin, Goal, Margin, WorkingSet};
+use crate::admissibility::{margin_over_arch, Goal, Margin, WorkingSet};
 use crate::arch::Arch;
 use crate::contact::ContactKind;
 use crate::lp::LpOutcome;
@@ -19,7 +19,7 @@ pub fn margin_at(
     ws: &mut WorkingSet,
     settings: &Settings,
 ) -> Result<Margin, Undecided> {
-    max_margin(arch, eta, mu, kinds, ws, Goal::Decide, settings).map_err(|e| match e {
+    margin_over_arch(arch, eta, mu, kinds, ws, Goal::Decide, settings).map_err(|e| match e {
         LpOutcome::Infeasible => Undecided::Lp("margin LP infeasible".to_string()),
         LpOutcome::Failed(m) => Undecided::Lp(m),
     })

@@ -5,7 +5,7 @@
 
 use super::geometry::{BOX, BOX_EDGE_REL};
 use super::sweeper::Sweeper;
-use crate::admissibility::{max_margin, Goal, WorkingSet};
+use crate::admissibility::{margin_over_arch, Goal, WorkingSet};
 use crate::arch::ETA_TOP;
 use crate::contact::ContactKind;
 use crate::lp;
@@ -56,7 +56,7 @@ impl Sweeper<'_> {
             // start from the state of largest margin at η₀ (inside P(η₀))
             let centre = if bounded_start {
                 let mut ws = WorkingSet::initial(arch);
-                max_margin(
+                margin_over_arch(
                     arch,
                     eta0,
                     mu,
