@@ -740,3 +740,37 @@ fn search_budget_is_said_not_hidden() {
     assert_eq!(code, 0);
     assert_eq!(v["unique"], true);
 }
+
+/// A search that reaches no decision says which step stopped it, typed: the sweep over more
+/// joints than its budget is `Undecided::Budget` (for thickness and load alike), its text
+/// naming the setting; a smaller budget on the same arch is the same failure.
+#[test]
+fn undecided_search_names_its_step() {
+    use arch_enum::multiplier::{survey as load_survey, LoadOutcome};
+    use arch_enum::undecided::Undecided;
+    let arch = Arch::symmetric(0.0, WeightModel::Centroid)
+        .unwrap()
+        .with_blocks(40)
+        .unwrap();
+    let settings = Settings {
+        sweep_max_joints: 20,
+        ..Settings::default()
+    };
+    match search(&arch, 0.5, &settings).unwrap() {
+        Err(Undecided::Budget(t)) => assert!(t.contains("sweep_max_joints"), "{t}"),
+        other => panic!("expected a budget failure, got {other:?}"),
+    }
+    let load = arch_enum::load::LiveLoad::Horizontal {
+        towards_right: true,
+    };
+    match load_survey(&arch, 0.3, 0.8, &load, &settings).unwrap() {
+        Err(Undecided::Budget(t)) => assert!(t.contains("sweep_max_joints"), "{t}"),
+        Err(other) => panic!("expected a budget failure, got {other:?}"),
+        Ok(o) => panic!(
+            "expected a budget failure, got an answer ({})",
+            matches!(o, LoadOutcome::Limits(_))
+        ),
+    }
+    // with the default budget the same arch is searched to the end
+    assert!(search(&arch, 0.5, &Settings::default()).unwrap().is_ok());
+}
