@@ -774,3 +774,26 @@ fn undecided_search_names_its_step() {
     // with the default budget the same arch is searched to the end
     assert!(search(&arch, 0.5, &Settings::default()).unwrap().is_ok());
 }
+
+/// `solve --json`'s `eta` is η_s even when the search above it is incomplete: here the
+/// least admissible state carries no mechanism and the 48- and 96-piece searches disagree;
+/// the text output and `checks.eta_static` both give η_s = 0.453470319823 (the least limit
+/// state found lies at 0.62, above it). It used to print that state's η as `eta`.
+#[test]
+fn json_eta_is_eta_static_when_the_search_is_incomplete() {
+    let (v, code) = crate::cli::json_of(&[
+        "solve",
+        "--beta-right",
+        "-0.6847873579095128",
+        "--beta-left",
+        "3.428723873012637",
+        "--mu",
+        "1.0125176406133969",
+    ]);
+    assert_eq!(code, 0);
+    assert_eq!(v["search"]["complete"], false);
+    let eta = v["eta"].as_f64().unwrap();
+    assert!((eta - 0.453470319823).abs() < 1e-12, "{eta}");
+    assert_eq!(v["checks"]["eta_static"].as_f64().unwrap(), eta);
+    assert_eq!(v["mechanism_at_eta"], false);
+}

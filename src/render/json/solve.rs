@@ -141,8 +141,15 @@ pub fn solve(survey: &Survey, explain: bool) -> SolveJson {
                 events: None,
                 reason: Some(reason.to_string()),
             });
-            if let Outcome::Limit(_) = &sol.outcome {
+            if let Outcome::Limit(ls) = &sol.outcome {
                 doc.unique = Some(None);
+                // `eta` is η_s, decided whatever the search above it says; where the
+                // least admissible state carries no mechanism (a non-associative gap), the
+                // limit state described is the least one found above it
+                doc.eta = Some(ls.eta_static);
+                if ls.eta_static < ls.eta {
+                    doc.mechanism_at_eta = Some(false);
+                }
             }
         }
     }
