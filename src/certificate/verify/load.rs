@@ -118,12 +118,7 @@ fn largest_multiplier(
             adm.lambda
         ));
     }
-    let state = StateAt::loaded(live, adm.lambda, adm.x);
-    let pieces = prove_state(model, state, mu, false, "admissible side")?;
-    checks.push(format!(
-        "proved (interval arithmetic): the state x = [{}, {}, {}] is admissible at lambda_lo = {} {} ({pieces} enclosures)",
-        adm.x[0], adm.x[1], adm.x[2], adm.lambda, everywhere(model, live)
-    ));
+    checks.push(admissible_line(model, live, adm, mu, "lambda_lo")?);
     let margin = prove_infeasible(model, live, inf, Some(lambda_hi), mu)?;
     checks.push(format!(
         "proved (interval arithmetic): no state is admissible at lambda_hi = {lambda_hi} (Farkas on {} joints{}, margin {margin:.3e}); the admissible (x, lambda) are convex, so none at any lambda >= lambda_hi",
@@ -132,6 +127,23 @@ fn largest_multiplier(
     ));
     check_gap(cert, adm.lambda, lambda_hi, "lambda")?;
     Ok((adm.lambda, Some(lambda_hi)))
+}
+
+/// The state `adm` proved admissible at its λ (named `at` in the report), and the report's
+/// line.
+fn admissible_line(
+    model: &Model,
+    live: &Live,
+    adm: &LoadState,
+    mu: Option<f64>,
+    at: &str,
+) -> Result<String, Rejection> {
+    let state = StateAt::loaded(live, adm.lambda, adm.x);
+    let pieces = prove_state(model, state, mu, false, "admissible side")?;
+    Ok(format!(
+        "proved (interval arithmetic): the state x = [{}, {}, {}] is admissible at {at} = {} {} ({pieces} enclosures)",
+        adm.x[0], adm.x[1], adm.x[2], adm.lambda, everywhere(model, live)
+    ))
 }
 
 /// `unbounded_multiplier`: the state proved admissible and the transfer or the recession
@@ -151,12 +163,7 @@ fn unbounded_multiplier(
     if cert.gap.is_some() || cert.gap_relative.is_some() {
         return reject("unbounded_multiplier: a gap is stated, but there is no bracket");
     }
-    let state = StateAt::loaded(live, adm.lambda, adm.x);
-    let pieces = prove_state(model, state, mu, false, "admissible side")?;
-    checks.push(format!(
-        "proved (interval arithmetic): the state x = [{}, {}, {}] is admissible at lambda = {} {} ({pieces} enclosures)",
-        adm.x[0], adm.x[1], adm.x[2], adm.lambda, everywhere(model, live)
-    ));
+    checks.push(admissible_line(model, live, adm, mu, "lambda")?);
     checks.push(match (sides.transfer, &sides.recession) {
         (Some(transfer), None) => prove_transfer(model, live, transfer, mu)?,
         (None, Some(d)) => prove_recession(model, live, d, mu)?,
