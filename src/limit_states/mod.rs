@@ -28,7 +28,7 @@ use crate::settings::{LimitStateSearch, Settings};
 use crate::state::State;
 use crate::statics::Reactions;
 use crate::undecided::Undecided;
-use discretised::{agreed, Carried, Compare};
+use discretised::{agreed, Carried};
 pub use sweep::{CheckedPoint, LimitState};
 
 /// Every limit state of a discrete arch at friction μ, above the least admissible state.
@@ -285,7 +285,7 @@ fn continuous(
     settings: &Settings,
 ) -> Result<LimitStates, Undecided> {
     let mut walked = 0;
-    let carry = |pieces: usize| -> Result<Carried<LimitState>, Undecided> {
+    let carry = |pieces: usize| -> Result<Carried, Undecided> {
         let discrete = arch
             .clone()
             .with_blocks(pieces)
@@ -314,12 +314,11 @@ fn continuous(
             events: Some(events),
         })
     };
-    let cmp = Compare {
-        same: |p: &LimitState, q: &LimitState| same_state(p, q, settings),
-        sort: |l: &mut Vec<LimitState>| ridge::sort_states(l, settings),
-        t: |s: &LimitState| s.t,
+    let same = |p: &LimitState, q: &LimitState| {
+        discretised::same_state(p, q, settings.same_state_eta * p.t, settings)
     };
-    let (fine, events) = agreed(settings, carry, cmp)?;
+    let sort = |l: &mut Vec<LimitState>| ridge::sort_states(l, settings);
+    let (fine, events) = agreed(settings, carry, same, sort)?;
     Ok(LimitStates {
         eta_s,
         attained,
@@ -368,17 +367,6 @@ fn discrete_sweep(
         Some(f) => Err(f.map_text(|f| format!("{pieces} pieces: {f}"))),
         None => Ok((sw.states, sw.events)),
     }
-}
-
-/// Two refined limit states are the same ([`discretised::same_state`], η to
-/// `settings.same_state_eta` relative).
-fn same_state(p: &LimitState, q: &LimitState, settings: &Settings) -> bool {
-    discretised::same_state(
-        (p.t, &p.pattern, &p.sides),
-        (q.t, &q.pattern, &q.sides),
-        settings.same_state_eta * p.t,
-        settings,
-    )
 }
 
 /// A discrete pattern carried over to the continuum ([`crate::family::merge_adjacent`]; a

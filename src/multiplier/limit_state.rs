@@ -2,8 +2,6 @@
 //! active contacts carry a mechanism with positive live power.
 
 use crate::arch::Arch;
-use crate::collapse_mode::classify;
-use crate::contact::Contact;
 use crate::family::Tagged;
 use crate::limit_states::LimitState;
 use crate::load::{LiveLoad, Side};
@@ -31,21 +29,8 @@ pub(super) fn limit_state_on(
         Err(LpOutcome::Failed(e)) => return Err(Undecided::back_end(e)),
         Err(LpOutcome::Infeasible) => None,
     };
-    Ok(found.map(|(mechanism, live_power)| {
-        let contacts: Vec<Contact> = pairs.iter().map(|p| p.0).collect();
-        LimitState {
-            t: lambda,
-            x,
-            mode: classify(
-                &contacts,
-                0.5 * (arch.beta_right() + arch.beta_left()),
-                settings.same_joint,
-            ),
-            sides: pairs.iter().map(|p| p.1).collect(),
-            pattern: contacts,
-            mechanism,
-            live_power,
-            continuum_to: None,
-        }
+    Ok(found.map(|m| {
+        let contacts = pairs.iter().copied().unzip();
+        LimitState::new(arch, (lambda, x), contacts, m, settings)
     }))
 }

@@ -8,11 +8,10 @@ use super::limit_state::limit_state_on;
 use super::outcome::{LoadOutcome, LoadSurvey, StaticRange, UNBOUNDED_SEARCH_TOP};
 use super::range::{check_load, static_range, UNBOUNDED_BELOW};
 use crate::arch::{check_eta, Arch, InputError, JointLayout};
-use crate::collapse_mode::classify;
 use crate::contact::Contact;
 use crate::family::Tagged;
 use crate::kinematics::{column, power};
-use crate::limit_states::discretised::{self, agreed, Carried, Compare};
+use crate::limit_states::discretised::{self, agreed, Carried};
 use crate::limit_states::sweep::sweep_load_with_top;
 use crate::limit_states::LimitState;
 use crate::load::{rows, LiveLoad, LoadRow, Side};
@@ -252,20 +251,16 @@ pub fn continua(
             else {
                 continue;
             };
-            let contacts: Vec<Contact> = plain.to_vec();
+            let contacts = (plain.to_vec(), vec![p.side, q.side]);
             out.push(LimitState {
-                t: from[3],
-                x,
-                mode: classify(
-                    &contacts,
-                    0.5 * (arch.beta_right() + arch.beta_left()),
-                    settings.same_joint,
-                ),
-                pattern: contacts,
-                sides: vec![p.side, q.side],
-                mechanism,
-                live_power,
                 continuum_to: Some(to),
+                ..LimitState::new(
+                    arch,
+                    (from[3], x),
+                    contacts,
+                    (mechanism, live_power),
+                    settings,
+                )
             });
         }
     }
@@ -340,12 +335,12 @@ fn continuous_finite_friction(
         return Err(Undecided::NotCovered("continuous arch at finite friction with lambda_static unbounded: the limit states are not searched on the continuum in that case yet".into()));
     };
     let carry = |pieces| carried_states(arch, eta, mu, load, pieces, lambda_s, min, settings);
-    let cmp = Compare {
-        same: |p: &LimitState, q: &LimitState| same_load_state(p, q, settings),
-        sort: |l: &mut Vec<LimitState>| l.sort_by(|p, q| p.t.total_cmp(&q.t)),
-        t: |s: &LimitState| s.t,
+    // λ to `same_state_eta` × (1 + |λ|): a multiplier near zero is fixed in absolute terms
+    let same = |p: &LimitState, q: &LimitState| {
+        discretised::same_state(p, q, settings.same_state_eta * (1.0 + p.t.abs()), settings)
     };
-    let (fine, events) = agreed(settings, carry, cmp)?;
+    let sort = |l: &mut Vec<LimitState>| l.sort_by(|p, q| p.t.total_cmp(&q.t));
+    let (fine, events) = agreed(settings, carry, same, sort)?;
     let at_static = limit_state_on(arch, eta, mu, load, (lambda_s, x_s), &pattern_s, settings)?;
     let mechanism_at_static = at_static.is_some();
     let mut limit_states = fine;
@@ -375,7 +370,7 @@ fn carried_states(
     lambda_s: f64,
     min: (f64, Reactions),
     settings: &Settings,
-) -> Result<Carried<LimitState>, Undecided> {
+) -> Result<Carried, Undecided> {
     let (a, b) = (arch.beta_right(), arch.beta_left());
     let above_min = |l: f64| min.0 == 0.0 || l > min.0 * (1.0 + settings.root_slack);
     let mut events = None;
@@ -458,16 +453,4 @@ fn carried_states(
 /// near zero is fixed to rounding in absolute terms, not relative ones).
 pub(crate) fn below(l: f64, top: f64, settings: &Settings) -> bool {
     l < top - settings.root_slack * top.abs().max(1.0)
-}
-
-/// Two carried limit states are the same ([`discretised::same_state`], λ to
-/// `settings.same_state_eta` × (1 + |λ|): a multiplier near zero is fixed in absolute
-/// terms).
-fn same_load_state(p: &LimitState, q: &LimitState, settings: &Settings) -> bool {
-    discretised::same_state(
-        (p.t, &p.pattern, &p.sides),
-        (q.t, &q.pattern, &q.sides),
-        settings.same_state_eta * (1.0 + p.t.abs()),
-        settings,
-    )
 }

@@ -4,7 +4,6 @@
 
 use super::found::{CheckedPoint, LimitState};
 use super::sweeper::{Param, Sweeper};
-use crate::collapse_mode::classify;
 use crate::contact::Contact;
 use crate::load::Side;
 use crate::mechanism;
@@ -67,21 +66,13 @@ impl Sweeper<'_> {
             }
         };
         if let Some((mech, live_power)) = found {
-            let mode = classify(
-                &contacts,
-                0.5 * (self.arch.beta_right() + self.arch.beta_left()),
-                self.settings.same_joint,
-            );
-            self.states.push(LimitState {
-                t,
-                x,
-                pattern: contacts,
-                mode,
-                mechanism: mech,
-                sides,
-                live_power,
-                continuum_to: None,
-            });
+            self.states.push(LimitState::new(
+                self.arch,
+                (t, x),
+                (contacts, sides),
+                (mech, live_power),
+                self.settings,
+            ));
         } else {
             self.no_mechanism.push(CheckedPoint {
                 eta: t,

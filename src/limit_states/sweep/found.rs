@@ -87,13 +87,13 @@ pub struct LimitState {
 }
 
 impl LimitState {
-    /// A limit state of the thickness problem (no live load) at the state (`arch`, η, x):
-    /// its active contacts, the mode they are named, and a mechanism on them.
-    pub(crate) fn unloaded(
+    /// An isolated limit state at (t, x) of `arch`: its active contacts with their sides,
+    /// the mode they are named, a mechanism on them and its live power.
+    pub(crate) fn new(
         arch: &Arch,
-        (eta, x): (f64, Reactions),
-        pattern: Vec<Contact>,
-        mechanism: Mechanism,
+        (t, x): (f64, Reactions),
+        (pattern, sides): (Vec<Contact>, Vec<Side>),
+        (mechanism, live_power): (Mechanism, f64),
         settings: &Settings,
     ) -> LimitState {
         let mode = classify(
@@ -102,14 +102,26 @@ impl LimitState {
             settings.same_joint,
         );
         LimitState {
-            t: eta,
+            t,
             x,
-            sides: vec![Side::After; pattern.len()],
             pattern,
             mode,
             mechanism,
-            live_power: 0.0,
+            sides,
+            live_power,
             continuum_to: None,
         }
+    }
+
+    /// A limit state of the thickness problem (no live load) at the state (`arch`, η, x).
+    pub(crate) fn unloaded(
+        arch: &Arch,
+        (eta, x): (f64, Reactions),
+        pattern: Vec<Contact>,
+        mechanism: Mechanism,
+        settings: &Settings,
+    ) -> LimitState {
+        let sides = vec![Side::After; pattern.len()];
+        LimitState::new(arch, (eta, x), (pattern, sides), (mechanism, 0.0), settings)
     }
 }
