@@ -2,8 +2,11 @@
 //! friction-only problem when μ is below it) and an honestly unresolved bracket.
 
 use super::solution::Outcome;
-use crate::arch::{fmt_value, Arch};
+use crate::admissibility::WorkingSet;
+use crate::arch::{fmt_value, Arch, ETA_TOP};
+use crate::contact::ContactKind;
 use crate::friction::least_friction;
+use crate::search::margin_at;
 use crate::settings::Settings;
 
 pub(crate) fn unresolved(eta_lo: f64, eta_hi: f64, reason: String) -> Outcome {
@@ -23,6 +26,16 @@ pub(crate) fn no_equilibrium(arch: &Arch, mu: f64, settings: &Settings) -> Outco
                 "mu = {} is below mu_ms = {mu_ms:.10}: no thickness can stand (purely sliding collapse)", fmt_value(mu)
             ),
         },
+        Ok(Some(mu_ms)) if mu < mu_ms * (1.0 + settings.mu_ms_resolution) && !stands_at_all(arch, settings) => {
+            Outcome::NoEquilibrium {
+                mu_ms: Some(mu_ms),
+                reason: format!(
+                    "mu = {} is within {} (relative) of mu_ms = {mu_ms:.10}, but no thickness eta < 2 admits equilibrium even without sliding (mu = inf)",
+                    fmt_value(mu),
+                    settings.mu_ms_resolution
+                ),
+            }
+        }
         Ok(Some(mu_ms)) if mu < mu_ms * (1.0 + settings.mu_ms_resolution) => Outcome::Unresolved {
             eta_lo: 0.0,
             eta_hi: 2.0,
@@ -49,4 +62,14 @@ pub(crate) fn no_equilibrium(arch: &Arch, mu: f64, settings: &Settings) -> Outco
             reason: format!("no thickness eta < 2 admits equilibrium (mu_ms not computed: {e})"),
         },
     }
+}
+
+/// Whether some thickness below the limit admits equilibrium without sliding (μ = ∞):
+/// admissibility only grows with μ, so an arch that fails this stands at no friction. An
+/// LP that cannot decide counts as standing (the caller then says "unresolved").
+fn stands_at_all(arch: &Arch, settings: &Settings) -> bool {
+    let mu = f64::INFINITY;
+    let mut ws = WorkingSet::initial(arch);
+    let modes = ContactKind::active_at(mu);
+    margin_at(arch, ETA_TOP, mu, modes, &mut ws, settings).map_or(true, |m| m.margin >= 0.0)
 }

@@ -31,6 +31,19 @@ const IMPROVE_TOL: f64 = 1e-14;
 /// (the same problem as [`super::highs::max_margin`]). `tol` is the feasibility tolerance
 /// on normalised rows.
 pub fn max_margin(rows: &[Affine], cap: f64, tol: f64) -> Result<(Reactions, f64), LpOutcome> {
+    margin_in_box(rows, cap, tol, BOX, false)
+}
+
+/// [`max_margin`] with the reactions boxed at `reaction_box`; with `on_box_ok`, an optimum
+/// on the box is returned (the optimum of the boxed LP: a state near an infimum that is
+/// approached with growing reactions), otherwise it is a `Failed` that names the box.
+pub fn margin_in_box(
+    rows: &[Affine],
+    cap: f64,
+    tol: f64,
+    reaction_box: f64,
+    on_box_ok: bool,
+) -> Result<(Reactions, f64), LpOutcome> {
     // constraint columns a_j ∈ R⁴ and right-hand sides b_j of the primal a_j·z ≤ b_j
     let mut a: Vec<[f64; 4]> = Vec::with_capacity(rows.len() + 7);
     let mut b: Vec<f64> = Vec::with_capacity(rows.len() + 7);
@@ -41,13 +54,13 @@ pub fn max_margin(rows: &[Affine], cap: f64, tol: f64) -> Result<(Reactions, f64
         let mut e = [0.0; 4];
         e[k] = 1.0;
         a.push(e);
-        b.push(BOX);
+        b.push(reaction_box);
     }
     for k in 0..3 {
         let mut e = [0.0; 4];
         e[k] = -1.0;
         a.push(e);
-        b.push(BOX);
+        b.push(reaction_box);
     }
     for r in rows {
         let n = r.grad_norm();
@@ -73,7 +86,7 @@ pub fn max_margin(rows: &[Affine], cap: f64, tol: f64) -> Result<(Reactions, f64
                     let k = (i - 1) % 3;
                     if unused[k] {
                         x[k] = 0.0;
-                    } else {
+                    } else if !on_box_ok {
                         return Err(LpOutcome::Failed(
                             "the optimum touches the starting box".into(),
                         ));

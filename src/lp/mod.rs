@@ -29,10 +29,23 @@ pub fn max_margin(
     cap: f64,
     settings: &Settings,
 ) -> Result<(Reactions, f64), LpOutcome> {
-    match settings.lp_backend {
-        LpBackend::Highs => highs::max_margin(rows, cap, settings.lp_tol),
-        LpBackend::Dense => dense::max_margin(rows, cap, settings.dense_lp_tol)
-            .or_else(|_| highs::max_margin(rows, cap, settings.lp_tol)),
+    let reference = || highs::max_margin(rows, cap, settings.lp_tol);
+    let first = match settings.lp_backend {
+        LpBackend::Highs => reference(),
+        LpBackend::Dense => {
+            dense::max_margin(rows, cap, settings.dense_lp_tol).or_else(|_| reference())
+        }
+    };
+    // A back end that fails is not an answer: the exact dense simplex then solves the LP
+    // with the reactions boxed as HiGHS's own retry boxes them (its optimum on the box
+    // is that LP's optimum, as HiGHS's would be).
+    match first {
+        Err(LpOutcome::Failed(e)) => {
+            let tol = settings.dense_lp_tol;
+            dense::margin_in_box(rows, cap, tol, highs::REACTION_BOX, true)
+                .map_err(|d| LpOutcome::Failed(format!("{e}; then the dense simplex: {d:?}")))
+        }
+        other => other,
     }
 }
 

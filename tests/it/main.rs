@@ -6,6 +6,7 @@ mod cli;
 mod compas;
 mod continuum_reference;
 mod dense_grid;
+mod edges;
 mod hard_cases;
 mod identities;
 mod intervals;
