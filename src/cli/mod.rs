@@ -17,6 +17,7 @@ mod dimension_args;
 mod io;
 pub(crate) mod load;
 mod modes;
+mod mu_arg;
 mod plot;
 mod progress;
 pub mod serve;

@@ -3,6 +3,7 @@
 
 use super::arch_args::{ArchArgs, WeightArg};
 use super::io::{Exit, Io};
+use super::mu_arg::MuArg;
 use super::threads_arg::ThreadsArg;
 use crate::arch::{check_eta, check_mu, Arch, InputError};
 use crate::settings::Settings;
@@ -76,9 +77,10 @@ impl Output {
 pub(crate) struct StateArgs {
     #[command(flatten)]
     arch: ArchArgs,
-    /// Friction coefficient mu > 0; `inf` for no sliding.
+    /// Friction coefficient mu > 0; `inf` for no sliding; `ms` for the arch's own mu_ms (with
+    /// --eta above eta_ms: a purely sliding limit state of the vertical branch).
     #[arg(long, allow_negative_numbers = true)]
-    mu: f64,
+    mu: MuArg,
     /// Thickness ratio to draw (default: eta*(mu)); above eta* the state of greatest margin is drawn.
     #[arg(long, allow_negative_numbers = true)]
     eta: Option<f64>,
@@ -240,11 +242,11 @@ pub(crate) fn draw(figure: Figure, settings: &Settings, io: &mut Io) -> Result<S
             state: st,
             limit_states,
             ..
-        } => match plot_inputs(&st) {
-            Ok(a) if limit_states => {
-                figures::limit_scenes(&a, st.mu, settings).map(|s| plot_arch::svg_panels(&s))
+        } => match plot_inputs(&st, settings) {
+            Ok((a, mu)) if limit_states => {
+                figures::limit_scenes(&a, mu, settings).map(|s| plot_arch::svg_panels(&s))
             }
-            Ok(a) => figures::scene(&a, st.mu, st.eta, settings).map(|s| plot_arch::svg(&s)),
+            Ok((a, mu)) => figures::scene(&a, mu, st.eta, settings).map(|s| plot_arch::svg(&s)),
             Err(e) => return Err(io.bad_input(&e)),
         },
         Figure::Load {
@@ -273,8 +275,8 @@ pub(crate) fn draw(figure: Figure, settings: &Settings, io: &mut Io) -> Result<S
             Ok((title, traced)) => Ok(crate::render::plot_load_curve::svg(&title, &traced)),
             Err(e) => return Err(io.bad_input(&e)),
         },
-        Figure::Eccentricity { state: st, .. } => match plot_inputs(&st) {
-            Ok(a) => figures::scene(&a, st.mu, st.eta, settings).map(|s| plot_ecc::svg(&s)),
+        Figure::Eccentricity { state: st, .. } => match plot_inputs(&st, settings) {
+            Ok((a, mu)) => figures::scene(&a, mu, st.eta, settings).map(|s| plot_ecc::svg(&s)),
             Err(e) => return Err(io.bad_input(&e)),
         },
         Figure::Map {
@@ -320,11 +322,13 @@ pub(crate) fn draw(figure: Figure, settings: &Settings, io: &mut Io) -> Result<S
     }
 }
 
-fn plot_inputs(st: &StateArgs) -> Result<Arch, InputError> {
+/// The arch and μ of a state figure (`--mu ms` resolved), the inputs checked.
+fn plot_inputs(st: &StateArgs, settings: &Settings) -> Result<(Arch, f64), InputError> {
     let a = st.arch.build()?;
-    check_mu(st.mu)?;
+    let mu = st.mu.resolve(&a, settings)?;
+    check_mu(mu)?;
     if let Some(e) = st.eta {
         check_eta(e)?;
     }
-    Ok(a)
+    Ok((a, mu))
 }

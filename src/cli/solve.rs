@@ -2,6 +2,7 @@
 
 use super::arch_args::ArchArgs;
 use super::io::{to_json, Exit, Io};
+use super::mu_arg::MuArg;
 use crate::figures::survey_scene;
 use crate::limit::Outcome;
 use crate::limit_states::survey;
@@ -14,9 +15,10 @@ use std::path::PathBuf;
 pub(crate) struct SolveArgs {
     #[command(flatten)]
     arch: ArchArgs,
-    /// Friction coefficient mu = tan(phi) > 0; `inf` for no sliding.
+    /// Friction coefficient mu = tan(phi) > 0; `inf` for no sliding; `ms` for the arch's own
+    /// mu_ms (the vertical branch: the corner eta_ms and the purely sliding limit states).
     #[arg(long, allow_hyphen_values = true)]
-    mu: f64,
+    mu: MuArg,
     /// List every pattern tried and why it was kept or rejected.
     #[arg(long)]
     explain: bool,
@@ -41,7 +43,7 @@ pub(crate) struct SolveArgs {
 pub(crate) fn run(a: SolveArgs, settings: &Settings, io: &mut Io) -> Exit {
     let survey = match compas::check_radius(a.radius)
         .and_then(|_| a.arch.build())
-        .and_then(|arch| survey(&arch, a.mu, settings))
+        .and_then(|arch| survey(&arch, a.mu.resolve(&arch, settings)?, settings))
     {
         Ok(s) => s,
         Err(e) => return io.bad_input(&e),

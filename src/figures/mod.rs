@@ -8,6 +8,7 @@
 pub mod margin_map;
 pub mod polylines;
 pub mod thrust_line;
+mod vertical;
 
 use crate::arch::{Arch, Radians};
 use crate::collapse_mode::CollapseMode;
@@ -244,6 +245,24 @@ pub fn scene(
             "no admissible state at eta = {e}: the least thickness at this friction is eta* = {}",
             ls.eta
         )))
+        }
+        Some(e) if e > ls.eta * (1.0 + AT_LIMIT) && sol.vertical.is_some() => {
+            let sliding = sol.vertical.as_deref().unwrap_or_default();
+            let (x, pattern, mech) = vertical::vertical_state(
+                arch,
+                e,
+                mu,
+                ls.x_static,
+                sliding,
+                settings,
+            )
+            .ok_or_else(|| {
+                NoFigure(format!(
+                    "no purely sliding limit state found at eta = {e} on the vertical branch"
+                ))
+            })?;
+            let limit = Some((CollapseMode::PurelySliding, mech));
+            return Ok(build_scene(arch, mu, (e, x), pattern, limit, None));
         }
         Some(e) if e > ls.eta * (1.0 + AT_LIMIT) => {
             let (x, pattern) = safe_state(arch, e, mu, settings)?;

@@ -24,9 +24,11 @@ mod enumerate;
 pub mod recession;
 pub mod solution;
 mod vanishing;
+mod vertical;
 
 pub use solution::{Candidate, LeastLimitState, Outcome, Solution};
 pub(crate) use vanishing::vanishing_thickness_state;
+pub use vertical::{MU_MS_ROUNDING, MU_MS_ZERO};
 
 use crate::admissibility::{Margin, WorkingSet};
 use crate::arch::{check_mu, Arch, InputError, JointLayout};
@@ -102,18 +104,38 @@ pub fn solve_near(
     let mu = check_mu(mu)?;
     settings.validate()?;
     let mut candidates = Vec::new();
-    let outcome = exact_infimum(
-        arch,
-        mu,
-        solve_inner(arch, mu, settings, &mut candidates, guess),
-        settings,
-    );
+    let (outcome, vertical) = match vertical::band(arch, mu, settings) {
+        vertical::Band::Near(fl) => {
+            let above = |mu1: f64| solve_at(arch, mu1, settings, &mut Vec::new());
+            vertical::near_mu_ms(arch, mu, &fl, settings, &mut candidates, above)
+        }
+        vertical::Band::Above => (
+            exact_infimum(
+                arch,
+                mu,
+                solve_inner(arch, mu, settings, &mut candidates, guess),
+                settings,
+            ),
+            None,
+        ),
+    };
     Ok(Solution {
         arch: arch.clone(),
         mu,
         outcome,
         candidates,
+        vertical,
     })
+}
+
+/// The outcome at a μ clearly above μ_ms, from the whole range (no guess).
+fn solve_at(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidate>) -> Outcome {
+    exact_infimum(
+        arch,
+        mu,
+        solve_inner(arch, mu, settings, log, None),
+        settings,
+    )
 }
 
 /// An arch whose least admissible state is unbounded (its reactions beyond

@@ -20,7 +20,7 @@ pub mod sweep;
 use crate::admissibility::WorkingSet;
 use crate::arch::{Arch, InputError, JointLayout};
 use crate::contact::{Contact, ContactKind, Location};
-use crate::limit::{bounded, solve, Outcome, Solution};
+use crate::limit::{bounded, solve, LeastLimitState, Outcome, Solution};
 use crate::mechanism;
 use crate::refine::{solve_system, Unknowns};
 use crate::search::margin_at;
@@ -55,6 +55,10 @@ pub struct LimitStates {
     /// argument) or `"refined J/2J"` (continuous arch: the refined limit states of two
     /// discretisations agree).
     pub method: String,
+    /// At μ = μ_ms: the sliding contacts whose purely sliding mechanism makes every
+    /// admissible state at every η ≥ η_s a limit state (the vertical branch; `above` is
+    /// then empty: its limit states are not isolated). Checked at the least state.
+    pub vertical: Option<Vec<Contact>>,
 }
 
 /// Everything `solve` reports at one μ: the thickness solution (η_s, the least limit
@@ -72,6 +76,9 @@ impl Survey {
     /// not completed).
     pub fn unique(&self) -> Option<bool> {
         let s = self.states.as_ref().ok()?;
+        if s.vertical.is_some() {
+            return Some(false);
+        }
         Some(usize::from(s.mechanism_at_eta_s) + s.above.len() == 1)
     }
 }
@@ -102,6 +109,9 @@ pub fn search_after(sol: &Solution, settings: &Settings) -> Result<LimitStates, 
 
 fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Undecided> {
     let (arch, mu) = (&sol.arch, sol.mu);
+    if let (Some(sliding), Outcome::Limit(ls)) = (&sol.vertical, &sol.outcome) {
+        return vertical_branch(sol, ls, sliding, settings);
+    }
     let (eta_s, x_s, mechanism_at_eta_s) = match &sol.outcome {
         Outcome::Limit(ls) => (ls.eta_static, ls.x_static, ls.eta == ls.eta_static),
         Outcome::Unresolved {
@@ -164,6 +174,7 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Undec
                     events: r.candidates,
                     no_mechanism: Vec::new(),
                     method: "ridge".into(),
+                    vertical: None,
                 })
             }
         }
@@ -185,6 +196,7 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Undec
         events: sw.events,
         no_mechanism: sw.no_mechanism,
         method: "sweep".into(),
+        vertical: None,
     })
 }
 
@@ -220,6 +232,7 @@ fn from_vanishing_thickness(
         events: sw.events,
         no_mechanism: sw.no_mechanism,
         method: "sweep from eta = 0 (the arch stands at every eta > 0)".into(),
+        vertical: None,
     })
 }
 
@@ -268,6 +281,7 @@ fn hinges_only(
         events: 0,
         no_mechanism: Vec::new(),
         method: "hinges only (mu = inf): P(eta) has an interior just above eta_s".into(),
+        vertical: None,
     }
 }
 
@@ -336,6 +350,7 @@ fn continuous(
                 _ => "",
             }
         ),
+        vertical: None,
     })
 }
 
@@ -415,4 +430,38 @@ fn refine(
         mech,
         settings,
     ))
+}
+
+/// At μ = μ_ms: the vertical branch, when the sliding contacts carry a mechanism at the
+/// least state by themselves (the purely sliding one). They are active in every
+/// admissible state at μ_ms, whose (h, v) the friction conditions pin; so that
+/// mechanism makes every admissible state at every η ≥ η_s a limit state.
+fn vertical_branch(
+    sol: &Solution,
+    ls: &LeastLimitState,
+    sliding: &[Contact],
+    settings: &Settings,
+) -> Result<LimitStates, Undecided> {
+    let st = State {
+        arch: &sol.arch,
+        eta: ls.eta_static,
+        mu: sol.mu,
+        x: ls.x_static,
+    };
+    match crate::mechanism::find(&st, sliding, settings) {
+        Ok(Some(_)) => Ok(LimitStates {
+            eta_s: ls.eta_static,
+            attained: true,
+            mechanism_at_eta_s: ls.eta == ls.eta_static,
+            above: Vec::new(),
+            events: 0,
+            no_mechanism: Vec::new(),
+            method: "vertical branch".into(),
+            vertical: Some(sliding.to_vec()),
+        }),
+        Ok(None) => Err(Undecided::Resolution(
+            "at mu_ms the sliding contacts of the friction limit carry no mechanism at the least state".into(),
+        )),
+        Err(e) => Err(Undecided::Lp(format!("the kinematic LP of the vertical branch: {e:?}"))),
+    }
 }

@@ -8,7 +8,7 @@ use assert_cmd::Command;
 use nalgebra::{DMatrix, DVector};
 use serde_json::{json, Value};
 
-fn arch_enum() -> Command {
+pub fn arch_enum() -> Command {
     Command::cargo_bin("arch-enum").unwrap()
 }
 

@@ -69,6 +69,18 @@ pub struct SolveJson {
     /// How the limit states were searched.
     #[serde(skip_serializing_if = "Option::is_none")]
     search: Option<SearchJson>,
+    /// At μ = μ_ms: the purely sliding limit states of every η ≥ η_s.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    vertical_branch: Option<VerticalJson>,
+}
+
+/// The vertical branch at μ = μ_ms: from `eta_min` up, every admissible state is a limit
+/// state with the purely sliding mechanism on `pattern`.
+#[derive(Debug, Serialize)]
+struct VerticalJson {
+    eta_min: f64,
+    mode: &'static str,
+    pattern: Vec<Contact>,
 }
 
 #[derive(Debug, Serialize)]
@@ -130,6 +142,7 @@ pub fn solve(survey: &Survey, explain: bool) -> SolveJson {
         unique: None,
         limit_states: None,
         search: None,
+        vertical_branch: None,
     };
     with_outcome(&mut doc, &sol.outcome);
     match &survey.states {
@@ -234,6 +247,11 @@ fn with_limit_states(doc: &mut SolveJson, survey: &Survey, s: &LimitStates) {
         doc.checks = None;
     }
     doc.limit_states = Some(all);
+    doc.vertical_branch = s.vertical.as_ref().map(|p| VerticalJson {
+        eta_min: s.eta_s,
+        mode: crate::collapse_mode::CollapseMode::PurelySliding.name(),
+        pattern: p.clone(),
+    });
     doc.search = Some(SearchJson {
         complete: true,
         method: Some(s.method.clone()),

@@ -177,12 +177,19 @@ fn limit_detail(sol: &Solution, ls: &LeastLimitState) -> String {
         "checks: Newton residual {:.1e}; max phi over the arch {:.1e}; |B lambda| {:.1e}; complementarity {:.1e}",
         ls.newton_residual, ls.max_phi, m.compatibility, m.complementarity
     );
-    let _ = writeln!(
-        s,
-        "        LP bracket of eta_s: [{}, {}]",
-        sig(ls.bracket.0, 12),
-        sig(ls.bracket.1, 12)
-    );
+    if sol.vertical.is_some() {
+        let _ = writeln!(
+            s,
+            "        at mu_ms: (h, v) pinned by the friction limit; eta_s is the least eta of the patterns of its sliding contacts and the branch above (no LP bracket)"
+        );
+    } else {
+        let _ = writeln!(
+            s,
+            "        LP bracket of eta_s: [{}, {}]",
+            sig(ls.bracket.0, 12),
+            sig(ls.bracket.1, 12)
+        );
+    }
     s
 }
 
@@ -202,22 +209,29 @@ fn limit_states(survey: &Survey) -> String {
         }
     };
     let count = usize::from(states.mechanism_at_eta_s) + states.above.len();
-    let _ = writeln!(
-        s,
-        "limit states with eta in [eta_s, 2) ({}, {} {}{}):",
-        states.method,
-        states.events,
-        if states.method.contains("ridge") {
-            "ridge points"
-        } else {
-            "events"
-        },
-        if states.attained {
-            ""
-        } else {
-            "; eta_s is an infimum: the least states' reactions grow without bound"
-        }
-    );
+    if states.vertical.is_some() {
+        let _ = writeln!(
+            s,
+            "limit states with eta in [eta_s, 2) (the vertical branch at mu = mu_ms):"
+        );
+    } else {
+        let _ = writeln!(
+            s,
+            "limit states with eta in [eta_s, 2) ({}, {} {}{}):",
+            states.method,
+            states.events,
+            if states.method.contains("ridge") {
+                "ridge points"
+            } else {
+                "events"
+            },
+            if states.attained {
+                ""
+            } else {
+                "; eta_s is an infimum: the least states' reactions grow without bound"
+            }
+        );
+    }
     if let (true, Outcome::Limit(ls)) = (states.mechanism_at_eta_s, &survey.solution.outcome) {
         let _ = writeln!(
             s,
@@ -238,6 +252,22 @@ fn limit_states(survey: &Survey) -> String {
                 .collect::<Vec<_>>()
                 .join(" ")
         );
+    }
+    if let Some(sliding) = &states.vertical {
+        let _ = writeln!(
+            s,
+            "  every eta >= eta_s  purely_sliding  {}  (mu = mu_ms: every admissible state is a limit state)",
+            sliding
+                .iter()
+                .map(|c| format!("{}@{:.4}", short(c), c.beta))
+                .collect::<Vec<_>>()
+                .join(" ")
+        );
+        let _ = writeln!(
+            s,
+            "verdict             not unique: the vertical branch (a purely sliding limit state at every eta >= eta_s)"
+        );
+        return s;
     }
     let _ = writeln!(
         s,
