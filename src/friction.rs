@@ -9,12 +9,12 @@
 
 use crate::admissibility::WorkingSet;
 use crate::arch::Arch;
-use crate::contact::Contact;
-use crate::contact::ContactKind;
+use crate::contact::{Contact, ContactKind, Location};
 use crate::refine::{solve_system, Unknowns};
 use crate::search::{bracket_root, candidates_at, margin_at};
 use crate::settings::Settings;
 use crate::state::State;
+use crate::statics::actions;
 use crate::statics::Reactions;
 use crate::undecided::Undecided;
 use itertools::Itertools;
@@ -35,9 +35,14 @@ pub struct FrictionLimit {
     pub x: Reactions,
     /// The active sliding contacts, by increasing β.
     pub pattern: Vec<Contact>,
-    /// True when μ comes from a verified exact pattern; false when only the LP bracket
-    /// (relative width `bracket_rel`) is available.
+    /// True when μ comes from a verified exact pattern (or is the exact chord value
+    /// tan(Δ/2) of an infimum); false when only the LP bracket (relative width
+    /// `bracket_rel`) is available.
     pub exact: bool,
+    /// False when μ_ms is an infimum approached only as the reactions grow without bound:
+    /// a weightless line of thrust along the chord, at T/N = tan(Δ/2) at both springings
+    /// ([`chord_limit`]); `x` is then that line's direction (|x|∞ = 1), not a state.
+    pub attained: bool,
 }
 
 /// Solves the friction-only problem. `Ok(None)` when no finite μ suffices.
@@ -66,6 +71,7 @@ pub fn friction_limit(
             x: x0,
             pattern: Vec::new(),
             exact: true,
+            attained: true,
         }));
     }
     let (_, (mu_hi, margin_hi, x_hi)) =
@@ -109,14 +115,68 @@ pub fn friction_limit(
             x: r.x,
             pattern,
             exact: true,
+            attained: true,
         });
+    }
+    // the weightless line along the chord, where the bracket reaches it and no bounded
+    // state does better
+    if let Some(chord) = chord_limit(arch) {
+        let reached = chord.mu <= mu_hi * (1.0 + settings.bracket_rel);
+        if reached && best.as_ref().is_none_or(|b| chord.mu < b.mu) {
+            return Ok(Some(chord));
+        }
     }
     Ok(Some(best.unwrap_or(FrictionLimit {
         mu: mu_hi,
         x: x_hi,
         pattern: cand,
         exact: false,
+        attained: true,
     })))
+}
+
+/// The friction of a weightless line of thrust along the chord of an arch of opening
+/// Δ = β_L − β_R < π: a constant force (h, v) = (sin m, cos m), m the middle angle, has
+/// N = cos(β − m) > 0 and |T|/N = |tan(β − m)| at every joint, the most, tan(Δ/2), at
+/// both springings, and no constant force does better (its worst joint is a springing).
+/// Far along it the weight no longer counts: μ_ms ≤ tan(Δ/2), with equality only as an
+/// infimum. `None` for Δ ≥ π (no such line keeps N > 0).
+pub fn chord_limit(arch: &Arch) -> Option<FrictionLimit> {
+    let (br, bl) = (arch.beta_right(), arch.beta_left());
+    let half = 0.5 * (bl - br);
+    if half >= 0.5 * std::f64::consts::PI {
+        return None;
+    }
+    let m = 0.5 * (br + bl);
+    let x = [m.sin(), m.cos(), 0.0];
+    let mu = half.tan();
+    let at_springings = [(br, Location::Springing), (bl, Location::Springing)];
+    let pattern = at_springings
+        .iter()
+        .filter_map(|&(beta, at)| {
+            let a = actions(arch, 1.0, beta);
+            let phi = |k: ContactKind| {
+                let g = a.activation(k, 0, 1.0, mu).g;
+                g[0] * x[0] + g[1] * x[1] + g[2] * x[2]
+            };
+            SLIDES
+                .into_iter()
+                .max_by(|p, q| phi(*p).total_cmp(&phi(*q)))
+                .map(|kind| Contact {
+                    beta,
+                    kind,
+                    at,
+                    free: false,
+                })
+        })
+        .collect();
+    Some(FrictionLimit {
+        mu,
+        x,
+        pattern,
+        exact: true,
+        attained: false,
+    })
 }
 
 /// μ_ms alone (see [`friction_limit`]).

@@ -47,6 +47,7 @@ from ._results import (
     SolveResult,
     ThicknessLimit,
     VerifyResult,
+    VerticalBranch,
 )
 
 __version__: str = _native.__version__
@@ -76,6 +77,7 @@ __all__ = [
     "SolveResult",
     "ThicknessLimit",
     "VerifyResult",
+    "VerticalBranch",
     "assess",
     "certify",
     "curve",
@@ -102,12 +104,22 @@ def _scalar(name: str, v: Any) -> float:
         raise TypeError(f"{name} must be a number, got {v!r}") from None
 
 
-def solve(arch: Arch, mu: float) -> SolveResult:
-    """The least thickness eta*(mu) of ``arch`` at friction ``mu`` (> 0, or
-    ``math.inf``), its collapse mode, pattern, reactions and mechanism, and every limit
-    state with eta in [eta_s, 2) (``arch-enum solve``)."""
+def _friction(a: Arch, mu: Any) -> float:
+    """``mu`` as a number: ``"ms"`` is the arch's own mu_ms (the vertical branch)."""
+    if isinstance(mu, str) and mu.strip().lower() == "ms":
+        return _native.mu_ms(a._spec())
+    if isinstance(mu, str):
+        raise TypeError(f"mu must be a number or 'ms', got {mu!r}")
+    return _scalar("mu", mu)
+
+
+def solve(arch: Arch, mu: Union[float, str]) -> SolveResult:
+    """The least thickness eta*(mu) of ``arch`` at friction ``mu`` (> 0, ``math.inf``, or
+    ``"ms"``: the arch's own mu_ms, the corner of the vertical branch with its purely
+    sliding limit states), its collapse mode, pattern, reactions and mechanism, and every
+    limit state with eta in [eta_s, 2) (``arch-enum solve``)."""
     a = _arch(arch)
-    return SolveResult._of(a, _native.solve(a._spec(), _scalar("mu", mu)))
+    return SolveResult._of(a, _native.solve(a._spec(), _friction(a, mu)))
 
 
 def curve(arch: Arch, mu: Any, *, threads: Optional[int] = None) -> CurveResult:

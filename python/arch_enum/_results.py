@@ -158,6 +158,22 @@ def _pattern(p: Any) -> Optional[Tuple[Contact, ...]]:
 
 
 @dataclass(frozen=True)
+class VerticalBranch(_Result):
+    """At mu = mu_ms: from ``eta_min`` up every admissible state is a limit state with the
+    purely sliding mechanism on ``pattern`` (the vertical branch of the limit curve)."""
+
+    eta_min: float
+    mode: str
+    pattern: Tuple[Contact, ...]
+
+    @staticmethod
+    def _of(d: Optional[Dict[str, Any]]) -> Optional["VerticalBranch"]:
+        if d is None:
+            return None
+        return VerticalBranch(float(d["eta_min"]), d["mode"], tuple(Contact._of(c) for c in d["pattern"]))
+
+
+@dataclass(frozen=True)
 class Reactions(_Result):
     """The redundant reactions at the right springing: h, v (forces) and w (moment)."""
 
@@ -313,6 +329,7 @@ class SolveResult(_Result):
     unique: Optional[bool]
     limit_states: Tuple[LimitState, ...]
     search: Optional[Search]
+    vertical_branch: Optional[VerticalBranch]
     eta_drawn: Optional[float]
     thrust_line: np.ndarray
     friction_line: Optional[np.ndarray]
@@ -343,6 +360,7 @@ class SolveResult(_Result):
             unique=d.get("unique"),
             limit_states=tuple(LimitState._of(s) for s in d.get("limit_states") or ()),
             search=Search._of(d.get("search")),
+            vertical_branch=VerticalBranch._of(d.get("vertical_branch")),
             eta_drawn=None if d.get("lines") is None else float(d["lines"]["eta"]),
             thrust_line=thrust,
             friction_line=friction,

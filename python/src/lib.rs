@@ -12,6 +12,7 @@ use arch_enum::arch::{check_eta, check_mu, fmt_value, InputError, JointLayout};
 use arch_enum::certificate::{certify as certify_eta, verify as verify_cert, Certificate};
 use arch_enum::figures::{self, ArchScene};
 use arch_enum::friction::least_friction;
+use arch_enum::limit::mu_ms_of;
 use arch_enum::limit_curve::{available_threads, sample, trace_parallel};
 use arch_enum::limit_states::survey;
 use arch_enum::load::LiveLoad;
@@ -203,6 +204,15 @@ fn solve<'py>(py: Python<'py>, spec: ArchIn, mu: f64) -> PyResult<Bound<'py, PyA
     let out = to_py(py, &d)?;
     out.set_item("lines", to_py(py, &lines)?)?;
     Ok(out)
+}
+
+/// μ_ms of the arch (`mu="ms"` in Python, `--mu ms` on the command line): a `ValueError`
+/// naming `mu` when the arch has none.
+#[pyfunction]
+fn mu_ms(py: Python<'_>, spec: ArchIn) -> PyResult<f64> {
+    let arch = build_arch(&spec)?;
+    py.detach(|| mu_ms_of(&arch, &Settings::default()))
+        .map_err(|e| value_error_as(e, Some("mu")))
 }
 
 /// The scene `solve` reports at the top level, or the reason there is none.
@@ -529,6 +539,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("JSON_VERSION", JSON_VERSION)?;
     m.add_function(wrap_pyfunction!(arch, m)?)?;
     m.add_function(wrap_pyfunction!(solve, m)?)?;
+    m.add_function(wrap_pyfunction!(mu_ms, m)?)?;
     m.add_function(wrap_pyfunction!(solve_svg, m)?)?;
     m.add_function(wrap_pyfunction!(solve_compas, m)?)?;
     m.add_function(wrap_pyfunction!(curve, m)?)?;

@@ -139,3 +139,21 @@ def test_certify_then_verify():
     bad["safe"]["eta"] = c.eta_lo * 0.9
     rejected = ae.verify(bad)
     assert rejected.status == "rejected" and rejected.reason
+
+
+def test_mu_ms_is_the_corner_of_the_vertical_branch():
+    """mu="ms": the paper's eta_ms (reference-values.md, 8 digits), not unique, with the
+    purely sliding limit states of the vertical branch; as `solve --mu ms` says."""
+    r = ae.solve(ae.Arch(alpha=0), mu="ms")
+    assert r.status == "ok"
+    assert abs(r.mu - 0.30921544) < 5e-9
+    assert abs(r.eta - 0.20063732) < 5e-9
+    assert r.unique is False
+    assert r.vertical_branch is not None
+    assert r.vertical_branch.mode == "purely_sliding"
+    assert r.vertical_branch.eta_min == r.eta
+    assert all(c.kind.startswith("slide") for c in r.vertical_branch.pattern)
+    with pytest.raises(ValueError, match="mu"):
+        ae.solve(ae.Arch(alpha=0, blocks=2), mu="ms")
+    with pytest.raises(TypeError, match="mu"):
+        ae.solve(ae.Arch(alpha=0), mu="xs")

@@ -1,8 +1,7 @@
 //! `--mu`: a friction coefficient, `inf` (no sliding) or `ms` (the arch's own μ_ms).
 
 use crate::arch::{Arch, InputError};
-use crate::friction::least_friction;
-use crate::limit::MU_MS_ZERO;
+use crate::limit::mu_ms_of;
 use crate::settings::Settings;
 use std::str::FromStr;
 
@@ -29,21 +28,11 @@ impl FromStr for MuArg {
 }
 
 impl MuArg {
-    /// The number: `ms` is μ_ms of `arch`, an error naming `--mu` when the arch has none
-    /// (it stands without friction, or at no finite friction) or it cannot be computed.
+    /// The number: `ms` is μ_ms of `arch` ([`crate::limit::mu_ms_of`]).
     pub(crate) fn resolve(self, arch: &Arch, settings: &Settings) -> Result<f64, InputError> {
-        if let MuArg::Value(mu) = self {
-            return Ok(mu);
+        match self {
+            MuArg::Value(mu) => Ok(mu),
+            MuArg::Ms => mu_ms_of(arch, settings),
         }
-        let reason = match least_friction(arch, settings) {
-            Ok(Some(m)) if m >= MU_MS_ZERO => return Ok(m),
-            Ok(Some(_)) => "this arch stands without friction (mu_ms = 0)".to_string(),
-            Ok(None) => "no finite friction makes this arch stand".to_string(),
-            Err(e) => format!("mu_ms could not be computed ({e})"),
-        };
-        Err(InputError::Inconsistent {
-            arg: "--mu ms",
-            reason,
-        })
     }
 }

@@ -248,19 +248,14 @@ pub fn scene(
         }
         Some(e) if e > ls.eta * (1.0 + AT_LIMIT) && sol.vertical.is_some() => {
             let sliding = sol.vertical.as_deref().unwrap_or_default();
-            let (x, pattern, mech) = vertical::vertical_state(
-                arch,
-                e,
-                mu,
-                ls.x_static,
-                sliding,
-                settings,
-            )
-            .ok_or_else(|| {
-                NoFigure(format!(
+            let (x, pattern, mech) =
+                vertical::vertical_state(arch, e, mu, ls.x_static, sliding, settings).ok_or_else(
+                    || {
+                        NoFigure(format!(
                     "no purely sliding limit state found at eta = {e} on the vertical branch"
                 ))
-            })?;
+                    },
+                )?;
             let limit = Some((CollapseMode::PurelySliding, mech));
             return Ok(build_scene(arch, mu, (e, x), pattern, limit, None));
         }

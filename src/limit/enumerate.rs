@@ -194,6 +194,7 @@ fn verify_group(
                     mechanism: mech,
                     newton_residual: r.residual,
                     max_phi: worst,
+                    attained: true,
                     bracket,
                 });
             }

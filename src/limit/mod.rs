@@ -28,7 +28,7 @@ mod vertical;
 
 pub use solution::{Candidate, LeastLimitState, Outcome, Solution};
 pub(crate) use vanishing::vanishing_thickness_state;
-pub use vertical::{MU_MS_ROUNDING, MU_MS_ZERO};
+pub use vertical::{mu_ms_of, MU_MS_ROUNDING, MU_MS_ZERO};
 
 use crate::admissibility::{Margin, WorkingSet};
 use crate::arch::{check_mu, Arch, InputError, JointLayout};
@@ -160,6 +160,7 @@ fn exact_infimum(arch: &Arch, mu: f64, outcome: Outcome, settings: &Settings) ->
     };
     match outcome {
         Outcome::Limit(mut ls) if !bounded(arch, &ls.x_static, settings) => {
+            ls.attained = false;
             if let Some(eta) = exact(ls.eta_static, &ls.x_static) {
                 if ls.eta <= ls.eta_static * (1.0 + settings.root_slack) {
                     ls.eta = eta;

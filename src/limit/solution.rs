@@ -36,6 +36,11 @@ pub struct LeastLimitState {
     /// hinge conditions in double precision ([`crate::statics::eta_rounding`]): about
     /// 1e-15 on ordinary arches, 1e-6 on a segment of 2° (η ~ 2e-9).
     pub eta_rounding: f64,
+    /// Whether η_s is attained by a bounded state (`x_static` within
+    /// `settings.unbounded_reactions` × (1 + span)). When false η_s is an infimum
+    /// approached as the reactions grow without bound, and the state at η_s (reactions of
+    /// 1e6 and more, with its "mechanism") is no limit state: none exists at η_s.
+    pub attained: bool,
     /// The bracket [η_lo, η_hi] found before refinement: at η_hi a state was verified
     /// admissible over the whole arch; η_lo was judged infeasible by the LP (to
     /// HiGHS's tolerance, so for very shallow arches η* may lie slightly below it).

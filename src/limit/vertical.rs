@@ -15,8 +15,9 @@ use super::diagnosis::{no_equilibrium, unresolved};
 use super::enumerate::enumerate;
 use super::solution::{Candidate, Outcome};
 use crate::admissibility::WorkingSet;
-use crate::arch::{fmt_value, Arch};
+use crate::arch::{fmt_value, Arch, InputError};
 use crate::contact::Contact;
+use crate::friction::least_friction;
 use crate::friction::{friction_limit, FrictionLimit, SLIDES};
 use crate::search::margin_at;
 use crate::settings::Settings;
@@ -61,7 +62,7 @@ pub(super) fn band(arch: &Arch, mu: f64, settings: &Settings) -> Band {
     // it has no vertical branch to answer from
     let pinned = |fl: &FrictionLimit| {
         let cap = settings.unbounded_reactions * (1.0 + arch.span());
-        fl.x[0].abs() <= cap && fl.x[1].abs() <= cap
+        fl.attained && fl.x[0].abs() <= cap && fl.x[1].abs() <= cap
     };
     match friction_limit(arch, settings) {
         Ok(Some(fl))
@@ -185,4 +186,20 @@ fn union(a: &[Contact], b: &[Contact], same_joint: f64) -> Vec<Contact> {
     }
     out.sort_by(|x, y| x.beta.total_cmp(&y.beta));
     out
+}
+
+/// The friction `--mu ms` (or `mu="ms"`) asks for: μ_ms of `arch`, the corner of its
+/// vertical branch. An error naming the argument when the arch has none (it stands
+/// without friction, or at no finite friction) or it cannot be computed.
+pub fn mu_ms_of(arch: &Arch, settings: &Settings) -> Result<f64, InputError> {
+    let reason = match least_friction(arch, settings) {
+        Ok(Some(m)) if m >= MU_MS_ZERO => return Ok(m),
+        Ok(Some(_)) => "this arch stands without friction (mu_ms = 0)".to_string(),
+        Ok(None) => "no finite friction makes this arch stand".to_string(),
+        Err(e) => format!("mu_ms could not be computed ({e})"),
+    };
+    Err(InputError::Inconsistent {
+        arg: "--mu ms",
+        reason,
+    })
 }

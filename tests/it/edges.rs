@@ -203,3 +203,86 @@ fn plot_arch_at_mu_ms_draws_a_purely_sliding_limit_state() {
     assert!(svg.contains("η = 0.300"));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A sideways two-voussoir arch at μ = 1e6: η_s is the infimum of μ = ∞ (a weightless
+/// line of thrust through E, I, E, crossing every joint at T/N ≤ tan 0.95 ≪ 1e6), not
+/// attained. The issue that reported the case proposed 0.528951759880497, attained; the
+/// tests' own LP (model.rs, written apart from the crate) finds admissible states at
+/// thicknesses between the two, so that value is not the least, and none below the
+/// infimum.
+#[test]
+fn large_finite_friction_keeps_the_infimum_of_a_weightless_line() {
+    let args = [
+        "--beta-right",
+        "-1.4",
+        "--beta-left",
+        "0.5",
+        "--blocks",
+        "2",
+    ];
+    let mut a = args.to_vec();
+    a.extend(["--mu", "1e6"]);
+    let (status, eta, attained) = solved(&a);
+    assert_eq!(status, "ok");
+    assert!((eta - 0.5289516127758643).abs() < 1e-15, "{eta}");
+    assert_eq!(attained, Some(false));
+    let joints = [-1.4, -0.45, 0.5];
+    for between in [0.52895165, 0.5289517] {
+        assert!(
+            crate::model::grid_feasible(-1.4, &joints, between, 1e6),
+            "{between}"
+        );
+    }
+    assert!(!crate::model::grid_feasible(-1.4, &joints, 0.5289515, 1e6));
+}
+
+/// The continuous sideways arch at μ = 1e6: η_s is an infimum whatever the search above
+/// it says, and the state found there (reactions ~1e9, external power 0.0178 against no
+/// dissipation) is reported as no limit state: `attained` false, no mechanism at η_s.
+#[test]
+fn an_infimum_is_no_limit_state_even_when_the_search_above_is_incomplete() {
+    for mu in ["1e3", "1e6", "1e9", "inf"] {
+        let (v, code) = json_of(&[
+            "solve",
+            "--beta-right",
+            "-1.1",
+            "--beta-left",
+            "1.0",
+            "--mu",
+            mu,
+        ]);
+        assert!(code == 0 || code == 1, "{v}");
+        assert_eq!(v["status"], "ok", "mu {mu}");
+        let eta = v["eta"].as_f64().unwrap();
+        assert!((eta - 0.670991807454598).abs() < 1e-14, "mu {mu}: {eta}");
+        assert_eq!(v["attained"], false, "mu {mu}");
+        assert_eq!(v["mechanism_at_eta"], false, "mu {mu}");
+        if v["search"]["complete"] == false {
+            assert!(
+                v["mechanism"].is_null() && v["reactions"].is_null(),
+                "mu {mu}: {v}"
+            );
+        }
+    }
+}
+
+/// μ_ms of a sideways arch whose friction limit is a weightless line of thrust along the
+/// chord is tan(Δ/2) to the last digit (the LP bracket gave 9 digits: 1.229076281153).
+/// Reference: the closed form, computed here.
+#[test]
+fn mu_ms_of_a_weightless_chord_line_is_tan_of_half_the_opening() {
+    let (br, bl) = (-1.2494380567094454_f64, 0.5261739770329115_f64);
+    let (v, _) = json_of(&[
+        "solve",
+        "--beta-right",
+        &br.to_string(),
+        "--beta-left",
+        &bl.to_string(),
+        "--mu",
+        "1e-9",
+    ]);
+    assert_eq!(v["status"], "no_equilibrium");
+    let mu_ms = v["mu_ms"].as_f64().unwrap();
+    let exact = (0.5 * (bl - br)).tan();
+    assert!((mu_ms - exact).abs() <= 4.0 * f64::EPSILON * exact, "{mu_ms} vs {exact}");
+}

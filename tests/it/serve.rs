@@ -155,6 +155,10 @@ fn api_bodies_are_the_cli_json() {
             &["solve", "--alpha", "0", "--mu", "0.35"],
         ),
         (
+            "/api/solve?alpha=0&blocks=6&mu=ms",
+            &["solve", "--alpha", "0", "--blocks", "6", "--mu", "ms"],
+        ),
+        (
             "/api/solve?alpha-deg=30&blocks=12&mu=inf&weight=centroid",
             &[
                 "solve",

@@ -163,6 +163,17 @@ pub fn solve(survey: &Survey, explain: bool) -> SolveJson {
                 if ls.eta_static < ls.eta {
                     doc.mechanism_at_eta = Some(false);
                 }
+                // an infimum: the state found at η_s has unbounded reactions and is no
+                // limit state (its "mechanism" balances no finite thrust)
+                if !ls.attained {
+                    doc.attained = Some(false);
+                    doc.mechanism_at_eta = Some(false);
+                    doc.mode = None;
+                    doc.mode_standard = None;
+                    doc.pattern = None;
+                    doc.reactions = None;
+                    doc.mechanism = None;
+                }
             }
         }
     }

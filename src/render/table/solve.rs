@@ -91,7 +91,7 @@ fn least_limit_state(
             ls.eta_rounding
         );
     }
-    if states.as_ref().is_ok_and(|st| !st.attained) {
+    if !ls.attained || states.as_ref().is_ok_and(|st| !st.attained) {
         let _ = writeln!(
             s,
             "note                eta_s is an infimum, approached only as the reactions grow without\n                    bound (a weightless line of thrust fits the arch): no finite state there, so no\n                    limit state at eta_s"
