@@ -199,10 +199,11 @@ fn claim_text(cert: &Certificate, requested: f64) -> String {
 
 /// What the certificate says about the limit states, one line.
 fn limit_states_text(cert: &Certificate) -> String {
+    // no admissible state at all: no limit state either, nothing more to certify
+    if cert.claim == Claim::NoEquilibrium {
+        return String::new();
+    }
     if cert.load.is_some() {
-        if cert.claim == Claim::NoEquilibrium {
-            return String::new();
-        }
         return cert.load_search.as_ref().map_or(
             "  limit states: not certified (the search could not be completed)\n".to_string(),
             |s| {

@@ -72,6 +72,37 @@ fn below_mu_ms_certifies_no_equilibrium() {
     holds(&c);
 }
 
+/// Above μ_ms (and at μ = ∞) an arch that stands at no η < 2: a Farkas certificate at
+/// the thickness limit η = 2, accepted with the centreline weight only; an edited thickness,
+/// a changed weight model or a dropped joint is rejected.
+#[test]
+fn no_equilibrium_above_mu_ms_is_certified_at_the_thickness_limit() {
+    let arch = Arch::new(
+        1.3173171303776912,
+        4.513760350322722,
+        WeightModel::Centreline,
+    )
+    .unwrap();
+    for mu in [5.1, 50.0, f64::INFINITY] {
+        let c = cert(&arch, mu);
+        assert_eq!(c.claim, Claim::NoEquilibrium, "mu = {mu}");
+        assert_eq!(c.collapse.as_ref().unwrap().eta, Some(2.0));
+        holds(&c);
+        let mut t = c.clone();
+        t.collapse.as_mut().unwrap().eta = Some(1.5);
+        assert!(verify(&t).unwrap_err().0.contains("eta = 2"));
+        let mut t = c.clone();
+        t.arch.weight = WeightModel::Centroid;
+        assert!(verify(&t).unwrap_err().0.contains("centreline"));
+        let mut t = c.clone();
+        t.collapse.as_mut().unwrap().joints.pop();
+        assert!(verify(&t).is_err());
+    }
+    let centroid = Arch::new(1.3173171303776912, 4.513760350322722, WeightModel::Centroid).unwrap();
+    let e = certify(&centroid, 5.1, 1e-12, &Settings::default()).unwrap_err();
+    assert!(e.0.contains("centreline"), "{e:?}");
+}
+
 #[test]
 fn tampering_is_caught() {
     let arch = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();

@@ -284,5 +284,8 @@ fn mu_ms_of_a_weightless_chord_line_is_tan_of_half_the_opening() {
     assert_eq!(v["status"], "no_equilibrium");
     let mu_ms = v["mu_ms"].as_f64().unwrap();
     let exact = (0.5 * (bl - br)).tan();
-    assert!((mu_ms - exact).abs() <= 4.0 * f64::EPSILON * exact, "{mu_ms} vs {exact}");
+    assert!(
+        (mu_ms - exact).abs() <= 4.0 * f64::EPSILON * exact,
+        "{mu_ms} vs {exact}"
+    );
 }

@@ -41,7 +41,7 @@ use load_bracket::{bracket, static_state};
 use load_ends::{no_equilibrium, unbounded};
 use load_search::{evidence, unbounded_evidence};
 use loaded::load_spec;
-use thickness::{certify_limit, certify_no_equilibrium};
+use thickness::{certify_limit, certify_no_equilibrium, certify_no_equilibrium_at_top};
 
 use crate::arch::{Arch, JointLayout};
 use crate::certificate::format::{Certificate, Claim, NotCertified};
@@ -77,9 +77,10 @@ pub fn certify(
         Outcome::NoEquilibrium { mu_ms: Some(m), .. } if mu < m => {
             certify_no_equilibrium(arch, mu, settings)
         }
-        Outcome::NoEquilibrium { reason, .. }
-        | Outcome::Unresolved { reason, .. }
-        | Outcome::NoCollapse { reason } => Err(NotCertified(reason)),
+        Outcome::NoEquilibrium { .. } => certify_no_equilibrium_at_top(arch, mu, settings),
+        Outcome::Unresolved { reason, .. } | Outcome::NoCollapse { reason } => {
+            Err(NotCertified(reason))
+        }
     }
 }
 

@@ -6,13 +6,15 @@ use super::blank::empty;
 use super::loaded::{cert_joints, Loaded};
 use super::search::{evidence, limit_state_cert};
 use super::sides::{chord_pool, find_farkas, move_inside, widening, Row};
-use crate::arch::Arch;
+use crate::admissibility::{margin_over_arch, Goal, WorkingSet};
+use crate::arch::{Arch, WeightModel};
 use crate::certificate::format::{Certificate, Claim, Farkas, NotCertified, SafeSide, Side};
 use crate::certificate::verify::{prove_admissible_side, verify};
 use crate::contact::{Contact, ContactKind};
 use crate::friction::friction_limit;
 use crate::limit::LeastLimitState;
 use crate::limit_states::Survey;
+use crate::search::candidates_at;
 use crate::settings::Settings;
 use crate::state::State;
 use crate::statics::{actions, Affine, Reactions};
@@ -63,6 +65,66 @@ pub(super) fn certify_no_equilibrium(
     })?;
     cert.collapse = Some(f);
     Ok(cert)
+}
+
+/// The thickness limit t = 2r, where a no-equilibrium certificate proves that no state
+/// is admissible.
+const ETA_LIMIT: f64 = 2.0;
+
+/// No thickness stands at μ although μ is not below μ_ms (or no μ_ms exists): a Farkas
+/// certificate that no state is admissible at the thickness limit η = 2, from the contacts
+/// of the margin LP's best state there. With the weight along the centreline the
+/// admissible set only grows with η (the verifier says why), so that proves it for every
+/// η < 2; with the true-centroid weight the weight itself moves with η and no such proof is
+/// offered.
+pub(super) fn certify_no_equilibrium_at_top(
+    arch: &Arch,
+    mu: f64,
+    settings: &Settings,
+) -> Result<Certificate, NotCertified> {
+    if arch.weight() != WeightModel::Centreline {
+        return Err(NotCertified(
+            "no equilibrium at eta < 2 is certified for the centreline weight only (with the true-centroid weight the admissible set is not monotone in eta)".into(),
+        ));
+    }
+    let modes = ContactKind::active_at(mu);
+    let mut ws = WorkingSet::initial(arch);
+    let m = margin_over_arch(
+        arch,
+        ETA_LIMIT,
+        mu,
+        modes,
+        &mut ws,
+        Goal::Optimise,
+        settings,
+    )
+    .map_err(|e| NotCertified(format!("the margin LP at eta = 2 failed: {e:?}")))?;
+    let top = State {
+        arch,
+        eta: ETA_LIMIT,
+        mu,
+        x: m.x,
+    };
+    let active: Vec<Loaded> = candidates_at(&top, None, modes, settings)
+        .into_iter()
+        .map(|c| (c, Side::After))
+        .collect();
+    let pool = chord_pool(arch, &active);
+    let cert = empty(arch, mu, Claim::NoEquilibrium);
+    let f = find_contact_farkas(arch, &pool, ETA_LIMIT, mu, 3, |f| {
+        let mut c = cert.clone();
+        c.collapse = Some(f.clone());
+        verify(&c).is_ok()
+    })
+    .ok_or_else(|| {
+        NotCertified(format!(
+            "no provable Farkas certificate that no state stands at eta = 2 (mu = {mu})"
+        ))
+    })?;
+    Ok(Certificate {
+        collapse: Some(f),
+        ..cert
+    })
 }
 
 pub(super) fn certify_limit(

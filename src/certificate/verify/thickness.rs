@@ -11,7 +11,7 @@ use super::live::StateAt;
 use super::report::{mu_text, reject, Rejection, Report};
 use super::search::verify_search;
 use super::statics::{Model, LIMIT_STATE_TOL};
-use crate::certificate::format::{Certificate, Claim};
+use crate::certificate::format::{CertJoint, Certificate, Claim};
 
 /// Re-checks a certificate of the thickness problem (`least_thickness` or
 /// `no_equilibrium`, no load section) on its checked arch `model`.
@@ -44,27 +44,55 @@ pub(super) fn verify_thickness(cert: &Certificate, model: &Model) -> Result<Repo
     })
 }
 
-/// `no_equilibrium`: the friction-only Farkas certificate, proved; returns the report's
-/// line.
+/// The thickness limit: every arch has η < 2 (t < 2r).
+const ETA_LIMIT: f64 = 2.0;
+
+/// `no_equilibrium`: the friction-only Farkas certificate (`eta` null), or the Farkas
+/// certificate at the thickness limit η = 2 (centreline weight); proved; returns the
+/// report's line.
 fn no_equilibrium(cert: &Certificate, model: &Model) -> Result<String, Rejection> {
     let Some(f) = &cert.collapse else {
         return reject("no_equilibrium claim without a Farkas certificate");
     };
-    if cert.mu.is_none() {
-        return reject("no_equilibrium claim at infinite friction (mu = null): the friction-only problem has no sliding rows there");
-    }
-    if f.eta.is_some() {
-        return reject(
-            "collapse side: a no_equilibrium (friction-only) certificate has eta = null",
-        );
-    }
     if cert.safe.is_some() || cert.limit_state.is_some() || cert.search.is_some() {
         return reject("a no_equilibrium claim cannot carry a safe state or a limit state");
+    }
+    if let Some(eta) = f.eta {
+        return no_equilibrium_at_limit(cert, model, &f.joints, eta);
+    }
+    if cert.mu.is_none() {
+        return reject("no_equilibrium claim at infinite friction (mu = null): the friction-only problem has no sliding rows there");
     }
     let margin = prove_farkas(model, &f.joints, 1.0, cert.mu, true)?;
     Ok(format!(
         "proved (interval arithmetic): no (h, v) satisfies |T| <= mu N at the {} listed joints (Farkas, margin {margin:.3e}), so no thickness can stand at mu = {}",
         f.joints.len(),
+        mu_text(cert.mu)
+    ))
+}
+
+/// `no_equilibrium` by a Farkas certificate at η = 2: no state is admissible at the
+/// thickness limit. With the weight along the centreline N, T and M do not involve η; a
+/// state admissible at some η < 2 has N ≥ 0 (the sum of its two hinge rows is −ηN ≤ 0),
+/// so its hinge rows ±M − ηN/2 only decrease as η grows to 2: it would be admissible
+/// at η = 2. So no thickness stands.
+fn no_equilibrium_at_limit(
+    cert: &Certificate,
+    model: &Model,
+    joints: &[CertJoint],
+    eta: f64,
+) -> Result<String, Rejection> {
+    if eta != ETA_LIMIT {
+        return reject(format!(
+            "collapse side: a no_equilibrium certificate with a thickness has eta = 2 (the thickness limit), found {eta}"
+        ));
+    }
+    if model.centroid {
+        return reject("a no_equilibrium certificate at eta = 2 needs the centreline weight (with the true-centroid weight the admissible set is not monotone in eta)");
+    }
+    let margin = prove_farkas(model, joints, eta, cert.mu, false)?;
+    Ok(format!(
+        "proved (interval arithmetic): no state is admissible at the thickness limit eta = 2 (Farkas on 4 joints, margin {margin:.3e}); with the weight along the centreline a state admissible at any eta < 2 (N >= 0 there) would be admissible at eta = 2, so no thickness stands at mu = {}",
         mu_text(cert.mu)
     ))
 }
