@@ -103,6 +103,43 @@ fn no_equilibrium_above_mu_ms_is_certified_at_the_thickness_limit() {
     assert!(e.0.contains("centreline"), "{e:?}");
 }
 
+/// Where η_s is an infimum (a weightless line of thrust fits the arch; no state attains
+/// it), the safe side is a state far out along the weightless direction: certified and
+/// verified at the requested gap on a continuous and a discrete arch; the same state
+/// brought a thousand times closer in is rejected.
+#[test]
+fn an_unattained_infimum_is_certified_by_a_far_state() {
+    let cases = [
+        (
+            Arch::new(
+                -0.8482668896669746,
+                0.5209867212148728,
+                WeightModel::Centreline,
+            )
+            .unwrap(),
+            f64::INFINITY,
+        ),
+        (
+            Arch::new(-1.4, 0.5, WeightModel::Centreline)
+                .unwrap()
+                .with_blocks(2)
+                .unwrap(),
+            1e6,
+        ),
+    ];
+    for (arch, mu) in cases {
+        let c = cert(&arch, mu);
+        assert_eq!(c.claim, Claim::LeastThickness);
+        holds(&c);
+        assert!(c.delivers_gap(1e-12), "{:?}", c.gap_relative);
+        let x = c.safe.as_ref().unwrap().x;
+        assert!(x.iter().any(|v| v.abs() > 1e6), "a far state: {x:?}");
+        let mut near = c.clone();
+        near.safe.as_mut().unwrap().x = x.map(|v| v * 1e-3);
+        assert!(verify(&near).unwrap_err().0.contains("safe side"));
+    }
+}
+
 #[test]
 fn tampering_is_caught() {
     let arch = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();
@@ -124,6 +161,12 @@ fn tampering_is_caught() {
     c.collapse.as_mut().unwrap().joints[1].y *= -1.0;
     let why = rejected(&c, "flipped multiplier");
     assert!(why.contains("multiplier"), "{why}");
+    // one Farkas multiplier edited by 1e-6 relative (claims nothing false, but is not
+    // the multiplier the joints give)
+    let mut c = good.clone();
+    c.collapse.as_mut().unwrap().joints[2].y *= 1.0 + 1e-6;
+    let why = rejected(&c, "edited multiplier");
+    assert!(why.contains("does not match"), "{why}");
     // drop a Farkas joint
     let mut c = good.clone();
     c.collapse.as_mut().unwrap().joints.pop();

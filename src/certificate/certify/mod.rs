@@ -27,6 +27,7 @@
 //! `kinematic.rs` and `blank.rs`, and on the verifier.
 
 mod blank;
+mod infimum;
 mod kinematic;
 mod load_bracket;
 mod load_ends;
@@ -37,6 +38,7 @@ mod sides;
 mod thickness;
 
 use blank::empty;
+use infimum::certify_infimum;
 use load_bracket::{bracket, static_state};
 use load_ends::{no_equilibrium, unbounded};
 use load_search::{evidence, unbounded_evidence};
@@ -73,6 +75,7 @@ pub fn certify(
     };
     let survey = survey(arch, mu, settings).map_err(|e| NotCertified(e.to_string()))?;
     match survey.solution.outcome.clone() {
+        Outcome::Limit(ls) if !ls.attained => certify_infimum(arch, mu, &ls, gap, settings),
         Outcome::Limit(ls) => certify_limit(arch, mu, &survey, &ls, gap, settings),
         Outcome::NoEquilibrium { mu_ms: Some(m), .. } if mu < m => {
             certify_no_equilibrium(arch, mu, settings)

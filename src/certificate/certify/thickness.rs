@@ -20,7 +20,7 @@ use crate::state::State;
 use crate::statics::{actions, Affine, Reactions};
 
 /// The thickness problem's Farkas search over contacts at (η, μ).
-fn find_contact_farkas(
+pub(super) fn find_contact_farkas(
     arch: &Arch,
     pool: &[Loaded],
     eta: f64,

@@ -208,6 +208,13 @@ pub(super) fn prove_infeasible(
 /// with a label for the messages), and give Σ yᵢ cᵢ > 0 rigorously, so that
 /// Σ yᵢ rowᵢ(u) = Σ yᵢ cᵢ > 0 for every u: no u satisfies all rows. Returns the margin
 /// Σ yᵢ cᵢ / Σ yᵢ (lower bound).
+/// A stored Farkas multiplier may differ from the recomputed one by this many widths of
+/// its interval enclosure ...
+const MULTIPLIER_WIDTHS: f64 = 16.0;
+
+/// ... plus this much relative to it.
+const MULTIPLIER_REL: f64 = 1e-12;
+
 pub(super) fn prove_cofactors(
     rows: &[(Vec<I>, I)],
     stored: &[(f64, String)],
@@ -236,16 +243,16 @@ pub(super) fn prove_cofactors(
     } else {
         y
     };
-    // the stored multipliers must be the recomputed ones (normalised to sum 1)
+    // the stored multipliers must be the recomputed ones (normalised to sum 1), to the
+    // width of their enclosure (a few times over: `certify` computes them from its own
+    // rounding of the same rows) and a rounding of the normalisation: an edited digit is
+    // rejected, though it would prove nothing false
     let total: f64 = y.iter().map(|v| v.mid()).sum();
     let stored_total: f64 = stored.iter().map(|s| s.0).sum();
     for ((sy, label), v) in stored.iter().zip(&y) {
         let (a, b) = (v.mid() / total, sy / stored_total);
-        if stored_total.is_nan()
-            || stored_total <= 0.0
-            || (a - b).abs() > 1e-6 * (1.0 + a.abs())
-            || *sy < 0.0
-        {
+        let allowed = MULTIPLIER_WIDTHS * (v.hi - v.lo) / total + MULTIPLIER_REL * (1.0 + a.abs());
+        if stored_total.is_nan() || stored_total <= 0.0 || (a - b).abs() > allowed || *sy < 0.0 {
             return reject(format!("collapse side: stored multiplier {sy} at {label} does not match the recomputed {a:.9e} (normalised)"));
         }
     }
