@@ -7,8 +7,9 @@
 //! cargo run --release --example certify_campaign -- [cases] [seed]
 //! ```
 
-use arch_enum::certificate::{certify, verify};
+use arch_enum::certificate::{certify, verify, Certificate, Claim};
 use arch_enum::{least_friction, Arch, Settings, WeightModel};
+use arch_enum::{solve, Outcome};
 use std::collections::BTreeMap;
 
 /// A small deterministic generator (64-bit LCG), so that a run can be repeated.
@@ -67,6 +68,7 @@ fn main() {
     let mut tally: BTreeMap<String, usize> = BTreeMap::new();
     let mut failures = Vec::new();
     let mut done = 0;
+    let mut verified: Vec<Certificate> = Vec::new();
     while done < cases {
         let Some((arch, text)) = random_arch(&mut rng) else {
             continue;
@@ -96,13 +98,17 @@ fn main() {
                     "rejected by verify (defect)".to_string()
                 }
                 Ok(_) if !c.delivers_gap(1e-12) => {
+                    verified.push(c.clone());
                     failures.push(format!(
                         "{text} mu = {mu}: gap not reached (relative {:?})",
                         c.gap_relative
                     ));
                     format!("verified, gap not reached ({:?})", c.claim)
                 }
-                Ok(_) => format!("verified at 1e-12 ({:?})", c.claim),
+                Ok(_) => {
+                    verified.push(c.clone());
+                    format!("verified at 1e-12 ({:?})", c.claim)
+                }
             },
         };
         *tally.entry(outcome).or_default() += 1;
@@ -114,5 +120,117 @@ fn main() {
     println!("\nnot certified at 1e-12:");
     for f in &failures {
         println!("  {f}");
+    }
+    tamper(&verified, &mut rng, &settings);
+}
+
+/// Every numeric leaf of a JSON value, as a path of keys and indices.
+fn leaves(v: &serde_json::Value, path: &mut Vec<String>, out: &mut Vec<Vec<String>>) {
+    match v {
+        serde_json::Value::Number(_) => out.push(path.clone()),
+        serde_json::Value::Array(a) => {
+            for (i, x) in a.iter().enumerate() {
+                path.push(i.to_string());
+                leaves(x, path, out);
+                path.pop();
+            }
+        }
+        serde_json::Value::Object(o) => {
+            for (k, x) in o {
+                path.push(k.clone());
+                leaves(x, path, out);
+                path.pop();
+            }
+        }
+        _ => {}
+    }
+}
+
+fn at<'a>(v: &'a mut serde_json::Value, path: &[String]) -> &'a mut serde_json::Value {
+    path.iter().fold(v, |v, k| match v {
+        serde_json::Value::Array(a) => &mut a[k.parse::<usize>().unwrap()],
+        other => &mut other[k.as_str()],
+    })
+}
+
+/// Whether an accepted certificate claims something true, by solving its arch anew.
+fn still_true(c: &Certificate, settings: &Settings) -> Result<bool, String> {
+    let a = &c.arch;
+    let mut arch = Arch::new(a.beta_right, a.beta_left, a.weight).map_err(|e| e.to_string())?;
+    if let Some(j) = &a.joint_angles {
+        arch = arch.with_joints(j).map_err(|e| e.to_string())?;
+    }
+    let mu = c.mu.unwrap_or(f64::INFINITY);
+    let out = solve(&arch, mu, settings)
+        .map_err(|e| e.to_string())?
+        .outcome;
+    Ok(match (c.claim, out) {
+        (Claim::NoEquilibrium, Outcome::NoEquilibrium { .. }) => true,
+        (Claim::LeastThickness, Outcome::Limit(ls)) => {
+            let (lo, hi) = (
+                c.collapse.as_ref().and_then(|f| f.eta),
+                c.safe.as_ref().map(|s| s.eta),
+            );
+            let (Some(lo), Some(hi)) = (lo, hi) else {
+                return Ok(false);
+            };
+            let e = ls.eta_static;
+            e >= lo * (1.0 - 1e-14) && e <= hi * (1.0 + 1e-14)
+        }
+        _ => false,
+    })
+}
+
+/// The tamper campaign over the verified certificates (see the module).
+fn tamper(certs: &[Certificate], rng: &mut Rng, settings: &Settings) {
+    const EDITS: usize = 14;
+    let factors = [1e-15, 1e-12, 1e-9, 1e-6, 1e-3];
+    let (mut edits, mut refused, mut accepted_true) = (0, 0, 0);
+    let mut false_claims = Vec::new();
+    for c in certs {
+        let v = serde_json::to_value(c).unwrap();
+        let mut paths = Vec::new();
+        leaves(&v, &mut Vec::new(), &mut paths);
+        for _ in 0..EDITS {
+            let path = &paths[(rng.next() * paths.len() as f64) as usize];
+            let mut e = v.clone();
+            let slot = at(&mut e, path);
+            let x = slot.as_f64().unwrap();
+            let k = (rng.next() * (factors.len() + 1) as f64) as usize;
+            let sign = if rng.next() < 0.5 { -1.0 } else { 1.0 };
+            let y = match factors.get(k) {
+                Some(f) => x * (1.0 + sign * f),
+                None => -x,
+            };
+            if y == x {
+                continue;
+            }
+            edits += 1;
+            *slot = serde_json::json!(y);
+            let Ok(t) = serde_json::from_value::<Certificate>(e) else {
+                refused += 1;
+                continue;
+            };
+            if verify(&t).is_err() {
+                refused += 1;
+                continue;
+            }
+            match still_true(&t, settings) {
+                Ok(true) => accepted_true += 1,
+                Ok(false) => false_claims.push(format!("{}: {x} -> {y}", path.join("."))),
+                Err(e) => false_claims.push(format!(
+                    "{}: {x} -> {y} (arch refused: {e})",
+                    path.join(".")
+                )),
+            }
+        }
+    }
+    println!(
+        "\ntamper campaign: {edits} edits of {} verified certificates: {refused} rejected, {accepted_true} accepted with a claim that is still true, {} accepted with a false claim",
+        certs.len(),
+        false_claims.len()
+    );
+    for f in &false_claims {
+        println!("  FALSE CLAIM ACCEPTED: {f}");
     }
 }
