@@ -107,7 +107,9 @@ pub fn solve_near(
     let (outcome, vertical) = match vertical::band(arch, mu, settings) {
         vertical::Band::Near(fl) => {
             let above = |mu1: f64| solve_at(arch, mu1, settings, &mut Vec::new());
-            vertical::near_mu_ms(arch, mu, &fl, settings, &mut candidates, above)
+            let outcome = vertical::near_mu_ms(arch, mu, &fl, settings, &mut candidates, above);
+            let sliding = vertical::vertical_branch(mu, &fl, &outcome);
+            (outcome, sliding)
         }
         vertical::Band::Above => (
             exact_infimum(

@@ -76,27 +76,22 @@ pub(super) fn band(arch: &Arch, mu: f64, settings: &Settings) -> Band {
     }
 }
 
-/// The outcome at a μ near μ_ms ([`band`]), and at μ_ms itself (to its rounding) the
-/// sliding contacts of the vertical branch ([`crate::limit::Solution::vertical`]).
-/// `solve_above` is the ordinary solve, at μ₁.
-pub(super) fn near_mu_ms(
-    arch: &Arch,
+/// At μ_ms itself (to its rounding) with a limit state: the sliding contacts of the
+/// vertical branch ([`crate::limit::Solution::vertical`]).
+pub(super) fn vertical_branch(
     mu: f64,
     fl: &FrictionLimit,
-    settings: &Settings,
-    log: &mut Vec<Candidate>,
-    solve_above: impl Fn(f64) -> Outcome,
-) -> (Outcome, Option<Vec<Contact>>) {
-    let outcome = outcome_near(arch, mu, fl, settings, log, solve_above);
+    outcome: &Outcome,
+) -> Option<Vec<Contact>> {
     let at_ms = mu <= fl.mu * (1.0 + MU_MS_ROUNDING);
-    let vertical = (at_ms && matches!(outcome, Outcome::Limit(_))).then(|| fl.pattern.clone());
-    (outcome, vertical)
+    (at_ms && matches!(outcome, Outcome::Limit(_))).then(|| fl.pattern.clone())
 }
 
-/// No equilibrium below μ_ms; at it and in the band above it, the least verified limit
-/// state among the patterns of μ_ms's sliding contacts and the least limit state at μ₁
-/// (see the module). Every pattern tried goes to `log`.
-fn outcome_near(
+/// The outcome at a μ near μ_ms ([`band`]): no equilibrium below μ_ms; at it and in the
+/// band above it, the least verified limit state among the patterns of μ_ms's sliding
+/// contacts and the least limit state at μ₁ (see the module), `solve_above` being the
+/// ordinary solve there. Every pattern tried goes to `log`.
+pub(super) fn near_mu_ms(
     arch: &Arch,
     mu: f64,
     fl: &FrictionLimit,

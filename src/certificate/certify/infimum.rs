@@ -8,11 +8,11 @@
 
 use super::blank::empty;
 use super::loaded::Loaded;
-use super::sides::{chord_pool, widening};
-use super::thickness::find_contact_farkas;
+use super::sides::chord_pool;
+use super::thickness::bracket_around;
 use crate::arch::{grid_angle, Arch, JointLayout};
 use crate::certificate::format::{Certificate, Claim, NotCertified, SafeSide, Side};
-use crate::certificate::verify::{prove_admissible_side, verify};
+use crate::certificate::verify::prove_admissible_side;
 use crate::contact::ContactKind;
 use crate::limit::recession::{continuum_threshold, threshold};
 use crate::limit::LeastLimitState;
@@ -76,17 +76,8 @@ pub(super) fn certify_infimum(
     let active: Vec<Loaded> = contacts.into_iter().map(|c| (c, Side::After)).collect();
     let pool = chord_pool(arch, &active);
     let cert = empty(arch, mu, Claim::LeastThickness);
-    let wide = |lo: f64, hi: f64, g: f64| (hi - lo) / hi > g;
-    widening(eta_s, gap, wide, |eta_lo, eta_hi| {
-        let mut c = far_state(arch, mu, eta_hi, &rec.d, &cert)?;
-        c.gap = Some(eta_hi - eta_lo);
-        c.gap_relative = Some((eta_hi - eta_lo) / eta_hi);
-        c.collapse = Some(find_contact_farkas(arch, &pool, eta_lo, mu, 3, |f| {
-            let mut full = c.clone();
-            full.collapse = Some(f.clone());
-            verify(&full).is_ok()
-        })?);
-        Some(c)
+    bracket_around((arch, mu), eta_s, gap, &pool, |eta_hi| {
+        far_state(arch, mu, eta_hi, &rec.d, &cert)
     })
     .ok_or_else(|| {
         NotCertified(format!(

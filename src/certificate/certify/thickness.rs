@@ -20,7 +20,7 @@ use crate::state::State;
 use crate::statics::{actions, Affine, Reactions};
 
 /// The thickness problem's Farkas search over contacts at (η, μ).
-pub(super) fn find_contact_farkas(
+fn find_contact_farkas(
     arch: &Arch,
     pool: &[Loaded],
     eta: f64,
@@ -173,25 +173,41 @@ pub(super) fn certify_limit(
     }
     let pattern: Vec<Loaded> = pattern_s.iter().map(|&c| (c, Side::After)).collect();
     let pool = chord_pool(arch, &pattern);
-    let wide = |lo: f64, hi: f64, g: f64| (hi - lo) / hi > g;
-    widening(eta_s, gap, wide, |eta_lo, eta_hi| {
+    bracket_around((arch, mu), eta_s, gap, &pool, |eta_hi| {
         let x = safe_state(arch, mu, (eta_s, x_s, &pattern_s), eta_hi, settings)?;
         let mut c = cert.clone();
         c.safe = Some(SafeSide { eta: eta_hi, x });
         prove_admissible_side(&c).ok()?;
-        c.gap = Some(eta_hi - eta_lo);
-        c.gap_relative = Some((eta_hi - eta_lo) / eta_hi);
-        c.collapse = Some(find_contact_farkas(arch, &pool, eta_lo, mu, 3, |f| {
-            let mut full = c.clone();
-            full.collapse = Some(f.clone());
-            verify(&full).is_ok()
-        })?);
         Some(c)
     })
     .ok_or_else(|| {
         NotCertified(format!(
             "no certificate could be proved at a relative gap up to 1e-4 (eta_s = {eta_s})"
         ))
+    })
+}
+
+/// The widening loop of a least-thickness bracket around η_s: at each relative gap,
+/// `safe_side(η_hi)` gives the certificate with its safe side proved, then a Farkas
+/// certificate at η_lo from `pool` that the verifier proves completes it.
+pub(super) fn bracket_around(
+    (arch, mu): (&Arch, f64),
+    eta_s: f64,
+    gap: f64,
+    pool: &[Loaded],
+    safe_side: impl Fn(f64) -> Option<Certificate>,
+) -> Option<Certificate> {
+    let wide = |lo: f64, hi: f64, g: f64| (hi - lo) / hi > g;
+    widening(eta_s, gap, wide, |eta_lo, eta_hi| {
+        let mut c = safe_side(eta_hi)?;
+        c.gap = Some(eta_hi - eta_lo);
+        c.gap_relative = Some((eta_hi - eta_lo) / eta_hi);
+        c.collapse = Some(find_contact_farkas(arch, pool, eta_lo, mu, 3, |f| {
+            let mut full = c.clone();
+            full.collapse = Some(f.clone());
+            verify(&full).is_ok()
+        })?);
+        Some(c)
     })
 }
 
