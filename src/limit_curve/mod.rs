@@ -191,6 +191,7 @@ pub fn trace_parallel(arch: &Arch, settings: &Settings, threads: usize) -> Limit
     let (thickness_limit, lowest) = lowest_end(&mut tr, &fl, &samples);
     changes.extend(lowest);
     changes.sort_by(|a, b| b.mu.total_cmp(&a.mu));
+    let changes = merge_duplicates(changes, settings.same_root);
     let branches = branches_between(
         &mut tr,
         &fl,
@@ -222,6 +223,26 @@ pub fn trace_parallel(arch: &Arch, settings: &Settings, threads: usize) -> Limit
         samples: searched,
         thickness_limit,
     }
+}
+
+/// One corner for each place: exact corners located from several pairs of samples (where
+/// two patterns of one state alternate from sample to sample, e.g. two intrados hinges of a
+/// discrete arch tied) agree in μ and η to `same` (relative) and become one, joining the
+/// branch above the first to the branch below the last; the zero-width branches between
+/// them go. `changes` by decreasing μ.
+fn merge_duplicates(changes: Vec<Corner>, same: f64) -> Vec<Corner> {
+    let close = |a: f64, b: f64| (a - b).abs() <= same * a.abs().max(b.abs());
+    let mut out: Vec<Corner> = Vec::with_capacity(changes.len());
+    for c in changes {
+        match out.last_mut() {
+            Some(p) if p.exact && c.exact && close(p.mu, c.mu) && close(p.t, c.t) => {
+                p.sides[0] = c.sides[0];
+                p.detail.kink |= c.detail.kink;
+            }
+            _ => out.push(c),
+        }
+    }
+    out
 }
 
 /// The curve of an arch without branches: no finite μ suffices (`mu_ms` `None`), or

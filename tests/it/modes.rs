@@ -702,3 +702,48 @@ fn symmetric_openings_are_decided() {
         assert!(c.corners.iter().all(|k| k.detail.kink), "{alpha}");
     }
 }
+
+/// A discrete arch whose near-vertical chord makes two intrados hinges tie along the
+/// boundary: each corner once (the same corner was located from several sample pairs:
+/// 105 corners, 73 duplicates, zero-width branches between them), every branch of
+/// positive width, and no slope that rises (η_s is non-increasing in μ).
+#[test]
+fn each_corner_once_and_no_rising_slope_on_a_near_vertical_chord() {
+    let (v, code) = crate::cli::json_of(&[
+        "modes",
+        "--blocks",
+        "34",
+        "--beta-right",
+        "-1.4177333410457853",
+        "--beta-left",
+        "1.5001011218600866",
+    ]);
+    assert_eq!(code, 0, "{v}");
+    let corners = v["corners"].as_array().unwrap();
+    assert!(!corners.is_empty());
+    for (i, a) in corners.iter().enumerate() {
+        for b in &corners[i + 1..] {
+            let same = |k: &str| {
+                let (x, y) = (a[k].as_f64(), b[k].as_f64());
+                matches!((x, y), (Some(x), Some(y)) if (x - y).abs() <= 1e-9 * x.abs())
+            };
+            assert!(!(same("mu") && same("eta")), "duplicate corner {a} / {b}");
+        }
+    }
+    for br in v["branches"].as_array().unwrap() {
+        let (lo, hi) = (br["mu_min"].as_f64().unwrap(), br["mu_max"].as_f64());
+        assert!(
+            hi.is_none_or(|hi| hi > lo * (1.0 + 1e-9)),
+            "zero-width branch {br}"
+        );
+    }
+    // η_s at the corners falls as μ grows
+    let mut pts: Vec<(f64, f64)> = corners
+        .iter()
+        .filter_map(|c| Some((c["mu"].as_f64()?, c["eta"].as_f64()?)))
+        .collect();
+    pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+    for w in pts.windows(2) {
+        assert!(w[1].1 <= w[0].1 * (1.0 + 1e-12), "eta rises with mu: {w:?}");
+    }
+}
