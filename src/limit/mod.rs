@@ -160,14 +160,22 @@ fn exact_infimum(arch: &Arch, mu: f64, outcome: Outcome, settings: &Settings) ->
         r.filter(|r| r.exact && r.eta >= eta * (1.0 - settings.infimum_rel) && r.eta <= hi)
             .map(|r| r.eta)
     };
+    // η_rec above the state found (beyond the rounding of its η): that admissible state is a
+    // finite one below every weightless direction, and η_s is attained there however large
+    // its reactions; η_rec is kept only at or below it
+    let at_or_below = |rec: f64, eta: f64| rec <= eta * (1.0 + settings.root_slack);
     match outcome {
         Outcome::Limit(mut ls) if !bounded(arch, &ls.x_static, settings) => {
-            ls.attained = false;
-            if let Some(eta) = exact(ls.eta_static, &ls.x_static) {
-                if ls.eta <= ls.eta_static * (1.0 + settings.root_slack) {
-                    ls.eta = eta;
+            match exact(ls.eta_static, &ls.x_static) {
+                Some(eta) if at_or_below(eta, ls.eta_static) => {
+                    if ls.eta <= ls.eta_static * (1.0 + settings.root_slack) {
+                        ls.eta = eta;
+                    }
+                    ls.eta_static = eta;
+                    ls.attained = false;
                 }
-                ls.eta_static = eta;
+                Some(_) => {}
+                None => ls.attained = false,
             }
             Outcome::Limit(ls)
         }
@@ -177,7 +185,9 @@ fn exact_infimum(arch: &Arch, mu: f64, outcome: Outcome, settings: &Settings) ->
             reason,
             least_static: Some((eta, x)),
         } if !bounded(arch, &x, settings) => {
-            let eta = exact(eta, &x).unwrap_or(eta);
+            let eta = exact(eta, &x)
+                .filter(|&rec| at_or_below(rec, eta))
+                .unwrap_or(eta);
             Outcome::Unresolved {
                 eta_lo: eta_lo.min(eta),
                 eta_hi,

@@ -112,12 +112,19 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Undec
     if let (Some(sliding), Outcome::Limit(ls)) = (&sol.vertical, &sol.outcome) {
         return vertical_branch(sol, ls, sliding, settings);
     }
-    let (eta_s, x_s, mechanism_at_eta_s) = match &sol.outcome {
-        Outcome::Limit(ls) => (ls.eta_static, ls.x_static, ls.eta == ls.eta_static),
+    // whether η_s is attained: the solve's word for a limit state (a large finite state
+    // below every weightless direction is attained), else by the size of the reactions
+    let (eta_s, x_s, mechanism_at_eta_s, attained) = match &sol.outcome {
+        Outcome::Limit(ls) => (
+            ls.eta_static,
+            ls.x_static,
+            ls.eta == ls.eta_static,
+            ls.attained,
+        ),
         Outcome::Unresolved {
             least_static: Some((eta, x)),
             ..
-        } => (*eta, *x, false),
+        } => (*eta, *x, false, bounded(arch, x, settings)),
         Outcome::NoCollapse { .. } if matches!(arch.layout(), JointLayout::Discrete(_)) => {
             return from_vanishing_thickness(arch, mu, settings);
         }
@@ -130,7 +137,7 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Undec
     // an infimum approached only with reactions growing without bound is not a state: no
     // limit state exists at η_s itself (its "mechanism" would balance no finite thrust;
     // the virtual-work identity fails there)
-    let mechanism_at_eta_s = mechanism_at_eta_s && bounded(arch, &x_s, settings);
+    let mechanism_at_eta_s = mechanism_at_eta_s && attained;
     if eta_s < settings.sweep_min_eta {
         return Err(Undecided::Resolution(format!(
             "eta_s = {eta_s:e} is below {:e}, where the sweep's polynomial roots are not resolved",
@@ -147,7 +154,6 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Undec
     if interior && mu.is_infinite() {
         return Ok(hinges_only(arch, eta_s, &x_s, mechanism_at_eta_s, settings));
     }
-    let attained = bounded(arch, &x_s, settings);
     let ridge = interior && ridge_may_apply;
     if !matches!(arch.layout(), JointLayout::Discrete(_)) {
         return continuous(

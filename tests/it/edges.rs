@@ -289,3 +289,34 @@ fn mu_ms_of_a_weightless_chord_line_is_tan_of_half_the_opening() {
         "{mu_ms} vs {exact}"
     );
 }
+
+/// A sideways arch with a near-vertical chord (true-centroid weight) near μ = 2.1622,
+/// where the least states' reactions exceed 1e6 and a weightless direction lies just
+/// above them: η_s was snapped up to that direction's η_rec (0.8173472049946352) over a
+/// band of μ 2e-7 wide, flat where the boundary falls with slope about −0.16, and above
+/// admissible states found below it. η_s must fall strictly through the band, and keep the
+/// independent reference's 0.8173471727285947 at μ = 2.162176106125 (issue text).
+#[test]
+fn eta_s_is_not_snapped_above_a_finite_state_on_a_near_vertical_chord() {
+    let arch = [
+        "--beta-right",
+        "-1.0480193077958069",
+        "--beta-left",
+        "1.2271778497692674",
+        "--weight",
+        "centroid",
+    ];
+    let at = |mu: &str| {
+        let mut a = arch.to_vec();
+        a.extend(["--mu", mu]);
+        solved(&a).1
+    };
+    assert!((at("2.162176106125") - 0.8173471727285947).abs() < 1e-12);
+    let etas: Vec<f64> = ["2.1621762", "2.1621761", "2.162176", "2.1621759"]
+        .iter()
+        .map(|m| at(m))
+        .collect();
+    for w in etas.windows(2) {
+        assert!(w[1] > w[0] + 1e-9, "eta_s must rise as mu falls: {etas:?}");
+    }
+}
