@@ -60,6 +60,17 @@ fn certify_discrete_and_unsymmetric_and_centroid() {
     }
 }
 
+/// Below the μ_ms of a sideways arch whose friction limit is the weightless chord line
+/// (μ_ms = tan(Δ/2), its two springings sliding): the friction-only Farkas certificate
+/// needs a third sliding row from elsewhere on the arch.
+#[test]
+fn below_a_chord_mu_ms_no_equilibrium_is_certified() {
+    let arch = Arch::new(-1.1558203985211706, 1.0823733720941493, WeightModel::Centreline).unwrap();
+    let c = cert(&arch, 1.855085722026927);
+    assert_eq!(c.claim, Claim::NoEquilibrium);
+    holds(&c);
+}
+
 #[test]
 fn below_mu_ms_certifies_no_equilibrium() {
     let arch = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();

@@ -7,11 +7,11 @@ use super::loaded::{cert_joints, Loaded};
 use super::search::{evidence, limit_state_cert};
 use super::sides::{chord_pool, find_farkas, move_inside, widening, Row};
 use crate::admissibility::{margin_over_arch, Goal, WorkingSet};
-use crate::arch::{Arch, WeightModel};
+use crate::arch::{grid_angle, Arch, JointLayout, WeightModel};
 use crate::certificate::format::{Certificate, Claim, Farkas, NotCertified, SafeSide, Side};
 use crate::certificate::verify::{prove_admissible_side, verify};
-use crate::contact::{Contact, ContactKind};
-use crate::friction::friction_limit;
+use crate::contact::{Contact, ContactKind, Location};
+use crate::friction::{friction_limit, SLIDES};
 use crate::limit::LeastLimitState;
 use crate::limit_states::Survey;
 use crate::search::candidates_at;
@@ -51,7 +51,10 @@ pub(super) fn certify_no_equilibrium(
         .map_err(|e| NotCertified(e.to_string()))?
         .ok_or_else(|| NotCertified("no finite friction admits equilibrium".into()))?;
     let mut cert = empty(arch, mu, Claim::NoEquilibrium);
-    let pool: Vec<Loaded> = fl.pattern.iter().map(|&c| (c, Side::After)).collect();
+    // the friction limit's sliding contacts, and sliding rows spread over the arch (where
+    // the limit is the weightless chord line, its two springings alone prove nothing)
+    let mut pool: Vec<Loaded> = fl.pattern.iter().map(|&c| (c, Side::After)).collect();
+    pool.extend(spread_slides(arch).into_iter().map(|c| (c, Side::After)));
     let f = find_contact_farkas(arch, &pool, 1.0, mu, 2, |f| {
         let mut c = cert.clone();
         c.collapse = Some(f.clone());
@@ -65,6 +68,40 @@ pub(super) fn certify_no_equilibrium(
     })?;
     cert.collapse = Some(f);
     Ok(cert)
+}
+
+/// Sliding rows spread over the arch for a friction-only Farkas search: both kinds at
+/// every joint of a discrete arch of at most this many (else at as many spread joints), or at
+/// as many equally spaced angles of a continuous one.
+const SPREAD: usize = 48;
+
+fn spread_slides(arch: &Arch) -> Vec<Contact> {
+    let angles: Vec<f64> = match arch.layout() {
+        JointLayout::Discrete(j) => {
+            let stride = j.len().div_ceil(SPREAD).max(1);
+            j.iter().step_by(stride).copied().collect()
+        }
+        JointLayout::Continuous => (0..SPREAD)
+            .map(|i| grid_angle(arch.beta_right(), arch.beta_left(), SPREAD, i))
+            .collect(),
+    };
+    let ends = (arch.beta_right(), arch.beta_left());
+    angles
+        .into_iter()
+        .flat_map(|beta| {
+            let at = if beta == ends.0 || beta == ends.1 {
+                Location::Springing
+            } else {
+                Location::Interior
+            };
+            SLIDES.map(|kind| Contact {
+                beta,
+                kind,
+                at,
+                free: false,
+            })
+        })
+        .collect()
 }
 
 /// The thickness limit t = 2r, where a no-equilibrium certificate proves that no state
