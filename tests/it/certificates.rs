@@ -65,7 +65,12 @@ fn certify_discrete_and_unsymmetric_and_centroid() {
 /// needs a third sliding row from elsewhere on the arch.
 #[test]
 fn below_a_chord_mu_ms_no_equilibrium_is_certified() {
-    let arch = Arch::new(-1.1558203985211706, 1.0823733720941493, WeightModel::Centreline).unwrap();
+    let arch = Arch::new(
+        -1.1558203985211706,
+        1.0823733720941493,
+        WeightModel::Centreline,
+    )
+    .unwrap();
     let c = cert(&arch, 1.855085722026927);
     assert_eq!(c.claim, Claim::NoEquilibrium);
     holds(&c);
