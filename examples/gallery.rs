@@ -1,5 +1,6 @@
 //! Regenerates the gallery into a folder: for α_s ∈ {−π/6, 0, π/6, 1, 1.15} one arch
-//! figure per collapse mode present on its limit curve (at the middle of each branch),
+//! figure per collapse mode present on its limit curve (at the middle of each branch; on
+//! the vertical branch at μ_ms, a purely sliding limit state at 1.25 η_ms),
 //! the limit curves of all five in one figure, and one margin map; SVG and PNG of each.
 //!
 //! ```sh
@@ -41,15 +42,15 @@ fn main() {
         let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
         let curve = trace(&arch, &s);
         for b in &curve.branches {
-            if b.mode == CollapseMode::PurelySliding {
-                continue; // a single μ: its state is the corner with the lowest branch
-            }
-            let mu = if b.mu_max.is_finite() {
-                (b.mu_min * b.mu_max).sqrt()
+            // the vertical branch at μ_ms: a purely sliding limit state a quarter above η_ms
+            let (mu, eta) = if b.mode == CollapseMode::PurelySliding {
+                (b.mu_min, Some(1.25 * b.eta_min))
+            } else if b.mu_max.is_finite() {
+                ((b.mu_min * b.mu_max).sqrt(), None)
             } else {
-                3.0 * b.mu_min
+                (3.0 * b.mu_min, None)
             };
-            match figures::scene(&arch, mu, None, &s) {
+            match figures::scene(&arch, mu, eta, &s) {
                 Ok(scene) => save(
                     dir,
                     &format!("arch_{name}_{}", b.mode.name()),
