@@ -17,8 +17,7 @@ use super::solution::{Candidate, Outcome};
 use crate::admissibility::WorkingSet;
 use crate::arch::{fmt_value, Arch, InputError};
 use crate::contact::Contact;
-use crate::friction::least_friction;
-use crate::friction::{friction_limit, FrictionLimit, SLIDES};
+use crate::friction::{friction_limit, least_friction, FrictionLimit, SLIDES};
 use crate::search::margin_at;
 use crate::settings::Settings;
 
