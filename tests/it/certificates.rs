@@ -114,6 +114,17 @@ fn no_equilibrium_above_mu_ms_is_certified_at_the_thickness_limit() {
         t.collapse.as_mut().unwrap().joints.pop();
         assert!(verify(&t).is_err());
     }
+    // an opening beyond π at μ = ∞: the fourth Farkas row is at a springing, not a local
+    // maximum at the margin LP's state
+    let wide = Arch::new(
+        0.959965684523493,
+        4.507054865528689,
+        WeightModel::Centreline,
+    )
+    .unwrap();
+    let c = cert(&wide, f64::INFINITY);
+    assert_eq!(c.claim, Claim::NoEquilibrium);
+    holds(&c);
     let centroid = Arch::new(1.3173171303776912, 4.513760350322722, WeightModel::Centroid).unwrap();
     let e = certify(&centroid, 5.1, 1e-12, &Settings::default()).unwrap_err();
     assert!(e.0.contains("centreline"), "{e:?}");

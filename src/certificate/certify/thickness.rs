@@ -142,10 +142,22 @@ pub(super) fn certify_no_equilibrium_at_top(
         mu,
         x: m.x,
     };
-    let active: Vec<Loaded> = candidates_at(&top, None, modes, settings)
-        .into_iter()
-        .map(|c| (c, Side::After))
-        .collect();
+    // the best local maxima there, and every row at both springings (a Farkas row need not
+    // be a local maximum of its function at the LP's state)
+    let mut contacts = candidates_at(&top, None, modes, settings);
+    for beta in [arch.beta_right(), arch.beta_left()] {
+        for &kind in modes {
+            if !contacts.iter().any(|c| c.kind == kind && c.beta == beta) {
+                contacts.push(Contact {
+                    beta,
+                    kind,
+                    at: Location::Springing,
+                    free: false,
+                });
+            }
+        }
+    }
+    let active: Vec<Loaded> = contacts.into_iter().map(|c| (c, Side::After)).collect();
     let pool = chord_pool(arch, &active);
     let cert = empty(arch, mu, Claim::NoEquilibrium);
     let f = find_contact_farkas(arch, &pool, ETA_LIMIT, mu, 3, |f| {
