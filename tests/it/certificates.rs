@@ -167,6 +167,35 @@ fn an_unattained_infimum_is_certified_by_a_far_state() {
     }
 }
 
+/// A symmetric 33-voussoir arch at μ = 44 with a mirror pair of limit states above η_s
+/// whose η agree to rounding (4.5e-15 apart), listed by the search in pattern order: the
+/// certificate lists them ascending to the last bit, as the verifier reads them (it was
+/// "not ascending" at every gap, so never certified).
+#[test]
+fn a_mirror_pair_equal_to_rounding_is_listed_ascending() {
+    let arch = Arch::new(
+        -1.072809887004872,
+        4.214402540594665,
+        WeightModel::Centreline,
+    )
+    .unwrap()
+    .with_blocks(33)
+    .unwrap();
+    let c = cert(&arch, 44.21055589579238);
+    holds(&c);
+    assert!(c.delivers_gap(1e-12), "{:?}", c.gap_relative);
+    let listed: Vec<f64> = c
+        .search
+        .as_ref()
+        .unwrap()
+        .limit_states_above
+        .iter()
+        .map(|s| s.eta)
+        .collect();
+    assert_eq!(listed.len(), 2, "{listed:?}");
+    assert!(listed[0] <= listed[1], "{listed:?}");
+}
+
 #[test]
 fn tampering_is_caught() {
     let arch = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();

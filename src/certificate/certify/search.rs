@@ -65,7 +65,11 @@ pub(super) fn evidence(
     } else {
         SearchMethod::Refined
     };
-    let above = |s: &LimitState| limit_state_cert(s.t, s.x, &s.mechanism);
+    // ascending in η to the last bit, as the verifier reads them (the search orders a
+    // mirror pair equal to rounding by its patterns)
+    let mut listed: Vec<&LimitState> = found.above.iter().collect();
+    listed.sort_by(|a, b| a.t.total_cmp(&b.t));
+    let above = |s: &&LimitState| limit_state_cert(s.t, s.x, &s.mechanism);
     SearchEvidence {
         method,
         events: found.events,
@@ -73,7 +77,7 @@ pub(super) fn evidence(
         unique,
         least_state: (!found.mechanism_at_eta_s && found.attained)
             .then(|| no_mechanism(arch, least.0, least.1, least.2, settings)),
-        limit_states_above: found.above.iter().map(above).collect(),
+        limit_states_above: listed.iter().map(above).collect(),
         no_mechanism: found
             .no_mechanism
             .iter()
