@@ -323,6 +323,16 @@ impl Arch {
     pub fn layout(&self) -> &JointLayout {
         &self.layout
     }
+    /// Angles at which to evaluate the arch: every joint of a discrete arch, or `n` equally
+    /// spaced angles from springing to springing of a continuous one.
+    pub fn angles(&self, n: usize) -> Vec<Radians> {
+        match &self.layout {
+            JointLayout::Discrete(j) => j.clone(),
+            JointLayout::Continuous => (0..n)
+                .map(|i| grid_angle(self.beta_right, self.beta_left, n, i))
+                .collect(),
+        }
+    }
     /// Weight model.
     pub fn weight(&self) -> WeightModel {
         self.weight

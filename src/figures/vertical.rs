@@ -3,7 +3,7 @@
 //! of the interval the hinge conditions leave at η (every such state is a limit state,
 //! with the purely sliding mechanism of the friction limit's contacts).
 
-use crate::arch::{grid_angle, Arch, JointLayout};
+use crate::arch::Arch;
 use crate::contact::{Contact, ContactKind};
 use crate::mechanism::{self, Mechanism};
 use crate::settings::Settings;
@@ -25,12 +25,7 @@ pub(super) fn vertical_state(
     sliding: &[Contact],
     settings: &Settings,
 ) -> Option<(Reactions, Vec<Contact>, Mechanism)> {
-    let joints: Vec<f64> = match arch.layout() {
-        JointLayout::Discrete(j) => j.to_vec(),
-        JointLayout::Continuous => (0..SAMPLES)
-            .map(|i| grid_angle(arch.beta_right(), arch.beta_left(), SAMPLES, i))
-            .collect(),
-    };
+    let joints = arch.angles(SAMPLES);
     // each hinge row g·x + c ≤ 0 with (h, v) fixed bounds w on one side
     let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
     for &beta in &joints {

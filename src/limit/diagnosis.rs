@@ -18,14 +18,20 @@ pub(crate) fn unresolved(eta_lo: f64, eta_hi: f64, reason: String) -> Outcome {
     }
 }
 
+/// No equilibrium at μ below μ_ms: no thickness can stand.
+pub(crate) fn below_mu_ms(mu: f64, mu_ms: f64) -> Outcome {
+    Outcome::NoEquilibrium {
+        mu_ms: Some(mu_ms),
+        reason: format!(
+            "mu = {} is below mu_ms = {mu_ms:.10}: no thickness can stand (purely sliding collapse)",
+            fmt_value(mu)
+        ),
+    }
+}
+
 pub(crate) fn no_equilibrium(arch: &Arch, mu: f64, settings: &Settings) -> Outcome {
     match least_friction(arch, settings) {
-        Ok(Some(mu_ms)) if mu < mu_ms => Outcome::NoEquilibrium {
-            mu_ms: Some(mu_ms),
-            reason: format!(
-                "mu = {} is below mu_ms = {mu_ms:.10}: no thickness can stand (purely sliding collapse)", fmt_value(mu)
-            ),
-        },
+        Ok(Some(mu_ms)) if mu < mu_ms => below_mu_ms(mu, mu_ms),
         Ok(Some(mu_ms)) if mu < mu_ms * (1.0 + settings.mu_ms_resolution) && !stands_at_all(arch, settings) => {
             Outcome::NoEquilibrium {
                 mu_ms: Some(mu_ms),

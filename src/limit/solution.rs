@@ -106,8 +106,8 @@ pub struct Solution {
     /// Every pattern tried, in the order verified.
     pub candidates: Vec<Candidate>,
     /// At μ = μ_ms (to its rounding, [`crate::limit::MU_MS_ROUNDING`]) with a limit state:
-    /// the sliding contacts of the friction limit. The statics pin (h, v) there, these
-    /// contacts are active in every admissible state, and their purely sliding mechanism
-    /// makes each one a limit state: the vertical branch, for every η ≥ η_s.
+    /// the sliding contacts of the friction limit, whose purely sliding mechanism (checked
+    /// by the limit-state search) makes every admissible state a limit state: the vertical
+    /// branch, for every η ≥ η_s.
     pub vertical: Option<Vec<Contact>>,
 }

@@ -11,7 +11,7 @@
 //! branch, where the sliding contacts of μ_ms become active too. Below μ_ms by more than
 //! the rounding of μ_ms itself no thickness stands.
 
-use super::diagnosis::{no_equilibrium, unresolved};
+use super::diagnosis::{below_mu_ms, unresolved};
 use super::enumerate::enumerate;
 use super::solution::{Candidate, Outcome};
 use crate::admissibility::WorkingSet;
@@ -99,7 +99,7 @@ pub(super) fn near_mu_ms(
     solve_above: impl Fn(f64) -> Outcome,
 ) -> Outcome {
     if mu < fl.mu * (1.0 - MU_MS_ROUNDING) {
-        return no_equilibrium(arch, mu, settings);
+        return below_mu_ms(mu, fl.mu);
     }
     let at = format!(
         "mu = {} is at or within {} (relative) above mu_ms = {:.10}",

@@ -439,9 +439,12 @@ fn refine(
 }
 
 /// At μ = μ_ms: the vertical branch, when the sliding contacts carry a mechanism at the
-/// least state by themselves (the purely sliding one). They are active in every
-/// admissible state at μ_ms, whose (h, v) the friction conditions pin; so that
-/// mechanism makes every admissible state at every η ≥ η_s a limit state.
+/// least state by themselves (the purely sliding one). Why that makes every admissible
+/// state at every η ≥ η_s a limit state: the mechanism's rates λ are compatible,
+/// Σ λ_i ∇ₓφ_i = 0, so Σ λ_i φ_i(x) is the same at every x, and it is 0 at the least
+/// state, where these contacts are active. At any admissible state every φ_i ≤ 0, so each
+/// contact the mechanism moves is active there too. Its power equals its dissipation
+/// μ Σ N s ≥ 0 at any admissible state (virtual work), so it is a mechanism there as well.
 fn vertical_branch(
     sol: &Solution,
     ls: &LeastLimitState,

@@ -10,7 +10,7 @@ use super::blank::empty;
 use super::loaded::Loaded;
 use super::sides::chord_pool;
 use super::thickness::bracket_around;
-use crate::arch::{grid_angle, Arch, JointLayout};
+use crate::arch::{Arch, JointLayout};
 use crate::certificate::format::{Certificate, Claim, NotCertified, SafeSide, Side};
 use crate::certificate::verify::prove_admissible_side;
 use crate::contact::ContactKind;
@@ -95,22 +95,17 @@ fn far_state(
     d: &Reactions,
     cert: &Certificate,
 ) -> Option<Certificate> {
-    let angles: Vec<f64> = match arch.layout() {
-        JointLayout::Discrete(j) => j.to_vec(),
-        JointLayout::Continuous => (0..SAMPLES)
-            .map(|i| grid_angle(arch.beta_right(), arch.beta_left(), SAMPLES, i))
-            .collect(),
-    };
-    // φ(t d) = c + t g·d < 0 needs t > c / (−g·d) wherever g·d < 0
+    // φ(t d) = c + t g·d < 0 needs t > c / (−g·d) wherever g·d < 0; a row with g·d > 0
+    // turns positive far out (d is no weightless direction there)
     let mut t: f64 = 1.0;
-    for &beta in &angles {
+    for beta in arch.angles(SAMPLES) {
         let a = actions(arch, eta, beta);
         for &kind in ContactKind::active_at(mu) {
             let row = a.activation(kind, 0, eta, mu);
             let gd = row.g[0] * d[0] + row.g[1] * d[1] + row.g[2] * d[2];
             if gd < 0.0 {
                 t = t.max(row.c / -gd);
-            } else if row.c >= 0.0 {
+            } else if gd > 0.0 || row.c >= 0.0 {
                 return None;
             }
         }

@@ -7,7 +7,7 @@ use super::loaded::{cert_joints, Loaded};
 use super::search::{evidence, limit_state_cert};
 use super::sides::{chord_pool, find_farkas, move_inside, widening, Row};
 use crate::admissibility::{margin_over_arch, Goal, WorkingSet};
-use crate::arch::{grid_angle, Arch, JointLayout, WeightModel};
+use crate::arch::{Arch, WeightModel};
 use crate::certificate::format::{Certificate, Claim, Farkas, NotCertified, SafeSide, Side};
 use crate::certificate::verify::{prove_admissible_side, verify};
 use crate::contact::{Contact, ContactKind, Location};
@@ -51,21 +51,27 @@ pub(super) fn certify_no_equilibrium(
         .map_err(|e| NotCertified(e.to_string()))?
         .ok_or_else(|| NotCertified("no finite friction admits equilibrium".into()))?;
     let mut cert = empty(arch, mu, Claim::NoEquilibrium);
-    // the friction limit's sliding contacts, and sliding rows spread over the arch (where
-    // the limit is the weightless chord line, its two springings alone prove nothing)
-    let mut pool: Vec<Loaded> = fl.pattern.iter().map(|&c| (c, Side::After)).collect();
-    pool.extend(spread_slides(arch).into_iter().map(|c| (c, Side::After)));
-    let f = find_contact_farkas(arch, &pool, 1.0, mu, 2, |f| {
+    // the friction limit's sliding contacts; failing them, with sliding rows spread over
+    // the arch too (where the limit is the weightless chord line, its two springings alone
+    // prove nothing)
+    let proved = |f: &Farkas| {
         let mut c = cert.clone();
         c.collapse = Some(f.clone());
         verify(&c).is_ok()
-    })
-    .ok_or_else(|| {
-        NotCertified(format!(
-            "no provable Farkas certificate for mu = {mu} below mu_ms = {}",
-            fl.mu
-        ))
-    })?;
+    };
+    let pool: Vec<Loaded> = fl.pattern.iter().map(|&c| (c, Side::After)).collect();
+    let f = find_contact_farkas(arch, &pool, 1.0, mu, 2, proved)
+        .or_else(|| {
+            let mut wider = pool.clone();
+            wider.extend(spread_slides(arch).into_iter().map(|c| (c, Side::After)));
+            find_contact_farkas(arch, &wider, 1.0, mu, 2, proved)
+        })
+        .ok_or_else(|| {
+            NotCertified(format!(
+                "no provable Farkas certificate for mu = {mu} below mu_ms = {}",
+                fl.mu
+            ))
+        })?;
     cert.collapse = Some(f);
     Ok(cert)
 }
@@ -76,15 +82,12 @@ pub(super) fn certify_no_equilibrium(
 const SPREAD: usize = 48;
 
 fn spread_slides(arch: &Arch) -> Vec<Contact> {
-    let angles: Vec<f64> = match arch.layout() {
-        JointLayout::Discrete(j) => {
-            let stride = j.len().div_ceil(SPREAD).max(1);
-            j.iter().step_by(stride).copied().collect()
-        }
-        JointLayout::Continuous => (0..SPREAD)
-            .map(|i| grid_angle(arch.beta_right(), arch.beta_left(), SPREAD, i))
-            .collect(),
-    };
+    let all = arch.angles(SPREAD);
+    let angles: Vec<f64> = all
+        .iter()
+        .step_by(all.len().div_ceil(SPREAD).max(1))
+        .copied()
+        .collect();
     let ends = (arch.beta_right(), arch.beta_left());
     angles
         .into_iter()

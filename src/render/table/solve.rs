@@ -180,7 +180,7 @@ fn limit_detail(sol: &Solution, ls: &LeastLimitState) -> String {
     if sol.vertical.is_some() {
         let _ = writeln!(
             s,
-            "        at mu_ms: (h, v) pinned by the friction limit; eta_s is the least eta of the patterns of its sliding contacts and the branch above (no LP bracket)"
+            "        at mu_ms: eta_s is the least eta among the patterns of the friction limit's sliding contacts and of the branch above (no LP bracket)"
         );
     } else {
         let _ = writeln!(
