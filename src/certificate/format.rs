@@ -141,6 +141,49 @@ pub enum SearchMethod {
     /// A continuous arch: the limit states of two discretisations (J and 2J pieces),
     /// refined on the continuum, agreed (not re-checked by `verify`).
     Refined,
+    /// A discrete arch, centreline weight, finite μ: every limit state above η_s lies on
+    /// the ridge over the boundary of the friction polygon Q; `ridge` lists Q's edges and
+    /// the ridge's pieces along them, and `verify` re-proves that no limit state lies
+    /// between the junctions of the pieces (docs/certificates.md#the-ridge).
+    Ridge,
+}
+
+/// The ridge over the friction polygon Q = {(h, v) : |T_j| ≤ μ N_j at every joint}: its
+/// edges, each with the pieces of the ridge along it and the junctions between them.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct RidgeEvidence {
+    /// A point (h, v) strictly inside Q.
+    pub inside: [f64; 2],
+    /// The edges of Q, counter-clockwise: edge k runs from the meeting of the lines of
+    /// edges k − 1 and k to the meeting of the lines of k and k + 1.
+    pub edges: Vec<RidgeEdge>,
+}
+
+/// One edge of Q: the sliding row whose line carries it, the pieces of the ridge along it
+/// (s from 0 at its first vertex to 1 at its last), and one junction per piece: the state
+/// at the piece's start, with its contacts and the Farkas proof that they carry no
+/// mechanism (no proof where the junction is a limit state).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct RidgeEdge {
+    /// The sliding row (`slide_plus` or `slide_minus`) active along the edge.
+    pub row: PatternJoint,
+    /// The pieces along the edge, in order of s.
+    pub pieces: Vec<RidgePiece>,
+    /// The state where each piece starts (at s = 0, then at each piece's end but the
+    /// last), with the contacts that may be active around it.
+    pub junctions: Vec<NoMechanism>,
+}
+
+/// A piece of the ridge: one extrados and one intrados hinge row close the band of the
+/// moment's constant w, η = 2 (m_E − m_I)/(N_E + N_I).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct RidgePiece {
+    /// Where the piece ends along the edge, s in (0, 1]; the last piece ends at 1.
+    pub end: f64,
+    /// The joint of the extrados hinge row.
+    pub extrados: f64,
+    /// The joint of the intrados hinge row.
+    pub intrados: f64,
 }
 
 /// The Farkas alternative of the kinematic LP on a pattern: with c_j the compatibility
@@ -187,7 +230,7 @@ pub struct NoMechanism {
 /// Evidence for the list of limit states with η in [η_s, 2).
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct SearchEvidence {
-    /// `sweep`, `hinges_only` or `refined` (anything else is rejected when read).
+    /// `sweep`, `hinges_only`, `refined` or `ridge` (anything else is rejected when read).
     #[serde(deserialize_with = "field_method")]
     pub method: SearchMethod,
     /// Events of the sweep.
@@ -203,6 +246,9 @@ pub struct SearchEvidence {
     pub limit_states_above: Vec<LimitStateCert>,
     /// `sweep` only: every point checked without a mechanism, with its proof.
     pub no_mechanism: Vec<NoMechanism>,
+    /// `ridge` only: the friction polygon and the ridge's pieces.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ridge: Option<RidgeEvidence>,
 }
 
 /// A certificate (format version 1).

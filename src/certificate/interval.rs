@@ -47,6 +47,24 @@ impl Interval {
     pub fn scale(self, k: f64) -> Interval {
         self * Interval::point(k)
     }
+    /// An enclosure of 1/x, for an interval that excludes 0 (`None` otherwise).
+    pub fn recip(self) -> Option<Interval> {
+        (self.lo > 0.0 || self.hi < 0.0).then(|| Interval {
+            lo: down(1.0 / self.hi),
+            hi: up(1.0 / self.lo),
+        })
+    }
+    /// The smallest interval holding both.
+    pub fn hull(self, o: Interval) -> Interval {
+        Interval {
+            lo: self.lo.min(o.lo),
+            hi: self.hi.max(o.hi),
+        }
+    }
+    /// Whether 0 lies outside the interval.
+    pub fn excludes_zero(self) -> bool {
+        self.lo > 0.0 || self.hi < 0.0
+    }
     /// An enclosure of sin over the interval.
     pub fn sin(self) -> Interval {
         trig(self, f64::sin, std::f64::consts::FRAC_PI_2)

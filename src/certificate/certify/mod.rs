@@ -48,6 +48,7 @@ use thickness::{certify_limit, certify_no_equilibrium, certify_no_equilibrium_at
 use crate::arch::{Arch, JointLayout};
 use crate::certificate::format::{Certificate, Claim, NotCertified};
 use crate::limit::Outcome;
+use crate::limit_states::ridge::trace;
 use crate::limit_states::survey;
 use crate::load::LiveLoad;
 use crate::multiplier::{self, static_range, LoadOutcome, StaticRange};
@@ -64,14 +65,14 @@ pub fn certify(
     gap: f64,
     settings: &Settings,
 ) -> Result<Certificate, NotCertified> {
-    // a discrete arch's certificate carries the sweep's checked points as evidence (the
-    // ridge walk has no evidence format yet): its search is the sweep
+    // a discrete arch's certificate carries the ridge's pieces as evidence where the ridge
+    // can be traced (a bounded Q, ...), else the sweep's checked points
     let settings = &match arch.layout() {
-        JointLayout::Discrete(_) => Settings {
+        JointLayout::Discrete(_) if !(mu.is_finite() && trace(arch, mu).is_ok()) => Settings {
             limit_state_search: LimitStateSearch::Sweep,
             ..settings.clone()
         },
-        JointLayout::Continuous => settings.clone(),
+        _ => settings.clone(),
     };
     let survey = survey(arch, mu, settings).map_err(|e| NotCertified(e.to_string()))?;
     match survey.solution.outcome.clone() {

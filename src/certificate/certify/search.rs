@@ -6,9 +6,11 @@ use super::kinematic::no_mechanism as unmoved;
 use super::loaded::joint;
 use crate::arch::Arch;
 use crate::certificate::format::{
-    LimitStateCert, NoMechanism, PatternJoint, SearchEvidence, SearchMethod, Side,
+    LimitStateCert, NoMechanism, PatternJoint, RidgeEdge, RidgeEvidence, RidgePiece,
+    SearchEvidence, SearchMethod, Side,
 };
 use crate::contact::Contact;
+use crate::limit_states::ridge::{trace, TracedEdge};
 use crate::limit_states::{LimitState, LimitStates};
 use crate::mechanism::Mechanism;
 use crate::settings::Settings;
@@ -50,15 +52,54 @@ fn no_mechanism(
     }
 }
 
+/// A Farkas certificate for the junction `nm`'s pattern without `row` (its `drop`), where
+/// one exists.
+fn without(
+    arch: &Arch,
+    nm: &NoMechanism,
+    row: Contact,
+    settings: &Settings,
+) -> Option<crate::certificate::format::KinematicFarkas> {
+    let at = nm
+        .pattern
+        .iter()
+        .position(|j| j.beta == row.beta && j.kind == row.kind)?;
+    let rest: Vec<(Contact, Side)> = nm
+        .pattern
+        .iter()
+        .enumerate()
+        .filter(|&(k, _)| k != at)
+        .map(|(_, j)| {
+            let c = Contact {
+                beta: j.beta,
+                kind: j.kind,
+                at: j.at,
+                free: false,
+            };
+            (c, Side::After)
+        })
+        .collect();
+    let (_, farkas) = unmoved(arch, nm.eta, None, rest, settings);
+    let mut f = farkas.into_iter().find(|f| f.drop.is_empty())?;
+    f.drop = vec![at];
+    Some(f)
+}
+
 /// The evidence of the limit-state search, for the certificate.
 pub(super) fn evidence(
-    arch: &Arch,
+    (arch, mu): (&Arch, f64),
     found: &LimitStates,
     least: (f64, Reactions, &[Contact]),
     unique: bool,
     settings: &Settings,
 ) -> SearchEvidence {
-    let method = if found.method.starts_with("sweep") {
+    let ridge = (found.method == "ridge")
+        .then(|| trace(arch, mu).ok())
+        .flatten()
+        .map(|edges| ridge_evidence(arch, &edges, settings));
+    let method = if ridge.is_some() {
+        SearchMethod::Ridge
+    } else if found.method.starts_with("sweep") {
         SearchMethod::Sweep
     } else if found.method.starts_with("hinges only") {
         SearchMethod::HingesOnly
@@ -83,5 +124,65 @@ pub(super) fn evidence(
             .iter()
             .map(|p| no_mechanism(arch, p.eta, p.x, &p.pattern, settings))
             .collect(),
+        ridge,
     }
+}
+
+/// The ridge's evidence: Q's edges, the pieces along each, and at each junction the
+/// contacts that may be active around it (the edge's sliding row, the previous edge's at a
+/// vertex, the hinge rows of the pieces on both sides) with the Farkas proof that they
+/// carry no mechanism there (none where the junction is a limit state).
+fn ridge_evidence(arch: &Arch, edges: &[TracedEdge], settings: &Settings) -> RidgeEvidence {
+    let m = edges.len();
+    let mut inside = [0.0; 2];
+    for e in edges {
+        inside[0] += e.junctions[0].x[0] / m as f64;
+        inside[1] += e.junctions[0].x[1] / m as f64;
+    }
+    let edges = (0..m)
+        .map(|k| {
+            let (edge, prev) = (&edges[k], &edges[(k + m - 1) % m]);
+            let junctions = edge
+                .junctions
+                .iter()
+                .enumerate()
+                .map(|(i, jn)| {
+                    let (before_row, before) = match i {
+                        0 => (Some(prev.row), prev.pieces.last().expect("a piece per edge")),
+                        _ => (None, &edge.pieces[i - 1]),
+                    };
+                    let mut pattern: Vec<Contact> = [edge.row, before.1, before.2]
+                        .into_iter()
+                        .chain(before_row)
+                        .chain([edge.pieces[i].1, edge.pieces[i].2])
+                        .collect();
+                    pattern.sort_by(|a, b| a.beta.total_cmp(&b.beta).then(a.kind.cmp(&b.kind)));
+                    pattern.dedup_by(|a, b| a.beta == b.beta && a.kind == b.kind);
+                    let mut nm = no_mechanism(arch, jn.eta, jn.x, &pattern, settings);
+                    if i == 0 && nm.farkas.is_empty() {
+                        // a limit state at a vertex: away from it, on either edge, the
+                        // other edge's row is inactive; a proof without it for each side
+                        for row in [prev.row, edge.row] {
+                            nm.farkas.extend(without(arch, &nm, row, settings));
+                        }
+                    }
+                    nm
+                })
+                .collect();
+            RidgeEdge {
+                row: joint(None, (edge.row, Side::After)),
+                pieces: edge
+                    .pieces
+                    .iter()
+                    .map(|&(end, e, i)| RidgePiece {
+                        end,
+                        extrados: e.beta,
+                        intrados: i.beta,
+                    })
+                    .collect(),
+                junctions,
+            }
+        })
+        .collect();
+    RidgeEvidence { inside, edges }
 }

@@ -216,7 +216,7 @@ pub(super) fn certify_limit(
     };
     if let (Ok(found), Some(unique)) = (&survey.states, survey.unique()) {
         cert.search = Some(evidence(
-            arch,
+            (arch, mu),
             found,
             (eta_s, x_s, &pattern_s),
             unique,

@@ -216,7 +216,7 @@ fn check_mechanism(model: &Model, ls: &Listed, whose: &str) -> Result<(), Reject
         .iter()
         .map(|&(b, k, _)| column(k, b, state.eta))
         .collect();
-    let work = weight_work(model, state.eta, &kept, &columns);
+    let work = weight_work(model, I::point(state.eta), &kept, &columns);
     let live = state.load.map(|(live, lambda)| {
         let q: Vec<f64> = live
             .power(model, &kept, &columns)

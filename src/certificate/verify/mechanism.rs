@@ -141,9 +141,14 @@ pub(crate) fn one_sense_choices<S: PartialEq>(
 
 /// The compatibility column of a contact at η (formulation §4), in intervals.
 pub(super) fn column(kind: ContactKind, beta: f64, eta: f64) -> [I; 3] {
+    column_over(kind, beta, I::point(eta))
+}
+
+/// The compatibility column of a contact over an interval of η.
+pub(super) fn column_over(kind: ContactKind, beta: f64, eta: I) -> [I; 3] {
     let b = I::point(beta);
     let (s, c) = (b.sin(), b.cos());
-    let half = I::point(0.5) * I::point(eta);
+    let half = I::point(0.5) * eta;
     let (re, ri) = (I::point(1.0) + half, I::point(1.0) - half);
     let (one, zero) = (I::point(1.0), I::point(0.0));
     match kind {
@@ -167,6 +172,17 @@ pub(super) fn prove_farkas(
     pattern: &[(f64, ContactKind, Option<Side>)],
     f: &KinematicFarkas,
 ) -> bool {
+    prove_farkas_over(model, (I::point(state.eta), state.load), pattern, f)
+}
+
+/// [`prove_farkas`] over an interval of η (the columns and the weight's work enclosed over
+/// it): one proof for every state of a cell of the ridge.
+pub(super) fn prove_farkas_over(
+    model: &Model,
+    (eta, load): (I, Option<(&super::live::Live, f64)>),
+    pattern: &[(f64, ContactKind, Option<Side>)],
+    f: &KinematicFarkas,
+) -> bool {
     if !(f.z > 0.0
         && f.u >= 0.0
         && f.v >= 0.0
@@ -183,10 +199,10 @@ pub(super) fn prove_farkas(
         .collect();
     let columns: Vec<[I; 3]> = kept
         .iter()
-        .map(|&(beta, kind, _)| column(kind, beta, state.eta))
+        .map(|&(beta, kind, _)| column_over(kind, beta, eta))
         .collect();
-    let work = weight_work(model, state.eta, &kept, &columns);
-    let live: Option<(Vec<I>, I)> = state.load.map(|(l, lambda)| {
+    let work = weight_work(model, eta, &kept, &columns);
+    let live: Option<(Vec<I>, I)> = load.map(|(l, lambda)| {
         (
             l.power(model, &kept, &columns),
             I::point(f.u) * I::point(lambda) + I::point(f.v),
@@ -210,14 +226,14 @@ pub(super) fn prove_farkas(
 /// external power of the weight is its negative, p_j.
 pub(super) fn weight_work(
     model: &Model,
-    eta: f64,
+    eta: I,
     kept: &[(f64, ContactKind, Option<Side>)],
     columns: &[[I; 3]],
 ) -> Vec<I> {
     let mut angles: Vec<f64> = kept.iter().map(|&(b, _, _)| b).collect();
     angles.sort_by(f64::total_cmp);
     angles.dedup();
-    let rho = model.rho(eta);
+    let rho = model.rho_over(eta);
     let blocks: Vec<(f64, I, I)> = angles
         .windows(2)
         .map(|w| {

@@ -36,6 +36,7 @@ mod load;
 mod load_unbounded;
 mod mechanism;
 mod report;
+mod ridge;
 mod search;
 mod statics;
 mod thickness;

@@ -35,6 +35,7 @@ use super::limit_state::{check_admissible, check_limit_state, check_load_limit_s
 use super::live::{Live, StateAt};
 use super::mechanism::no_mechanism;
 use super::report::{reject, Rejection};
+use super::ridge::prove_ridge;
 use super::statics::{Model, LIMIT_STATE_TOL};
 use crate::certificate::format::{
     Certificate, KinematicFarkas, LimitStateCert, LoadSearchEvidence, LoadSearchMethod,
@@ -48,6 +49,7 @@ enum Method {
     Sweep,
     Infinite(&'static str),
     Refined,
+    Ridge,
 }
 
 impl Method {
@@ -56,6 +58,7 @@ impl Method {
             Method::Sweep => "sweep",
             Method::Infinite(name) => name,
             Method::Refined => "refined",
+            Method::Ridge => "ridge",
         }
     }
 }
@@ -164,6 +167,7 @@ impl Walk<'_> {
                 }
             }
             Method::Infinite(_) => infinite(checks)?,
+            Method::Ridge => {} // re-proved by the caller (`ridge.rs`)
             Method::Refined => {
                 if model.joints.is_some() {
                     return reject(format!(
@@ -223,7 +227,9 @@ pub(super) fn verify_search(
         SearchMethod::Sweep => Method::Sweep,
         SearchMethod::HingesOnly => Method::Infinite("hinges only"),
         SearchMethod::Refined => Method::Refined,
+        SearchMethod::Ridge => Method::Ridge,
     };
+    ridge_evidence(model, cert, search, safe, &mut checks)?;
     let points: Vec<Point> = search.no_mechanism.iter().map(point).collect();
     walk.method_evidence(model, mu, (method, search.events), &points, &mut checks, |checks| {
         if mu.is_some() {
@@ -255,6 +261,37 @@ pub(super) fn verify_search(
         checks,
         format!("the search ({}) lists {verdict}", method.name()),
     ))
+}
+
+/// The `ridge` section (method `ridge` only), re-proved: its lines, or a line saying what
+/// it does not prove.
+fn ridge_evidence(
+    model: &Model,
+    cert: &Certificate,
+    search: &SearchEvidence,
+    safe: &SafeSide,
+    checks: &mut Vec<String>,
+) -> Result<(), Rejection> {
+    let ridge = match (search.method, &search.ridge, cert.mu) {
+        (SearchMethod::Ridge, Some(ridge), Some(mu)) => (ridge, mu),
+        (SearchMethod::Ridge, _, _) => {
+            return reject("search: method ridge needs a ridge section and finite mu")
+        }
+        (_, Some(_), _) => return reject("search: a ridge section belongs to method ridge"),
+        (_, None, _) => return Ok(()),
+    };
+    if !search.no_mechanism.is_empty() {
+        return reject("search: method ridge lists no sweep points");
+    }
+    let at_eta_s = cert.limit_state.as_ref().filter(|_| search.mechanism_at_eta);
+    let listed: Vec<&LimitStateCert> = search.limit_states_above.iter().chain(at_eta_s).collect();
+    match prove_ridge(model, ridge.1, ridge.0, (&listed, at_eta_s), (safe.eta, safe.x)) {
+        Ok(lines) => checks.extend(lines),
+        Err(why) => checks.push(format!(
+            "not proved: that the listed limit states are every one above eta_hi (the ridge evidence does not prove it: {why})"
+        )),
+    }
+    Ok(())
 }
 
 /// A state of the thickness problem listed without a mechanism.

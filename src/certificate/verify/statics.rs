@@ -72,8 +72,12 @@ impl Model {
     }
 
     pub(super) fn rho(&self, eta: f64) -> I {
+        self.rho_over(I::point(eta))
+    }
+
+    /// ρ over an interval of η (1, or 1 + η²/12 for the true centroid; η ≥ 0).
+    pub(super) fn rho_over(&self, e: I) -> I {
         if self.centroid {
-            let e = I::point(eta);
             I::point(1.0) + e * e * I::new((1.0f64 / 12.0).next_down(), (1.0f64 / 12.0).next_up())
         } else {
             I::point(1.0)

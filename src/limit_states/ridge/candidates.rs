@@ -42,7 +42,7 @@ pub(super) fn candidates(
 
 /// G1: no third sliding line through a vertex of Q (a pure-sliding mechanism may then
 /// hold over an interval of η, and the pair of lines would not define the vertex).
-fn no_third_line(lines: &[Line], poly: &[QVertex]) -> Result<(), Undecided> {
+pub(super) fn no_third_line(lines: &[Line], poly: &[QVertex]) -> Result<(), Undecided> {
     for &(q, _) in poly {
         if on_box(q) {
             continue;
@@ -99,6 +99,17 @@ fn apexes(
     out
 }
 
+/// The frame p = p0 + t d of a line of Q: parametrised from the foot of the perpendicular
+/// from the origin (not from a vertex, which may be on the box, 10⁶ away: t would lose ~10
+/// digits), d of unit length.
+pub(super) fn edge_frame(line: &Line) -> ([f64; 2], [f64; 2]) {
+    let (a, b) = (line.a, line.b);
+    let na2 = a[0] * a[0] + a[1] * a[1];
+    let p0 = [-b * a[0] / na2, -b * a[1] / na2];
+    let d = [-a[1] / na2.sqrt(), a[0] / na2.sqrt()];
+    (p0, d)
+}
+
 /// The walk along each sliding edge of Q: the points it returns inside the box, added to
 /// `out`.
 fn along_edges(
@@ -118,16 +129,11 @@ fn along_edges(
         if len <= SHORT_EDGE_REL * scale(q0) {
             continue;
         }
-        // parametrised from the foot of the perpendicular from the origin (not from a
-        // vertex, which may be on the box, 10⁶ away: t would lose ~10 digits)
-        let (a, b) = (lines[ri].a, lines[ri].b);
-        let na2 = a[0] * a[0] + a[1] * a[1];
-        let p0 = [-b * a[0] / na2, -b * a[1] / na2];
-        let d = [-a[1] / na2.sqrt(), a[0] / na2.sqrt()];
+        let (p0, d) = edge_frame(&lines[ri]);
         let tof = |q: [f64; 2]| (q[0] - p0[0]) * d[0] + (q[1] - p0[1]) * d[1];
         let hr = hinge_rows(js, p0, d);
         let cs = column(sl.1, js[sl.0].beta, 0.0);
-        for (t, eta, w) in walk_edge(&hr, (tof(q0), tof(q1)), cs, js)? {
+        for (t, eta, w) in walk_edge(&hr, (tof(q0), tof(q1)), cs, js)?.points {
             let p = [p0[0] + t * d[0], p0[1] + t * d[1]];
             if in_range(eta) && !on_box(p) {
                 out.push(Candidate {

@@ -30,6 +30,7 @@ mod candidates;
 mod check;
 mod polygon;
 mod rows;
+mod trace;
 mod walk;
 
 use crate::arch::{Arch, JointLayout, WeightModel};
@@ -39,6 +40,7 @@ use crate::undecided::Undecided;
 use candidates::candidates;
 use check::{check, may_carry_mechanism};
 use rows::JointRows;
+pub use trace::{trace, Junction, TracedEdge};
 
 use super::sweep::LimitState;
 

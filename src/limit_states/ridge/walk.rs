@@ -89,6 +89,13 @@ fn diff(hr: &[HingeRow], e: usize, i: usize) -> [f64; 4] {
     std::array::from_fn(|k| hr[e].c[k] - hr[i].c[k])
 }
 
+/// The ridge over one edge of Q as walked: the points to check (t, η, w) and the pieces
+/// (t_start, t_end, E row, I row), in order.
+pub(super) struct Walked {
+    pub(super) points: Vec<(f64, f64, f64)>,
+    pub(super) pieces: Vec<(f64, f64, usize, usize)>,
+}
+
 /// The ridge over one edge of Q, followed from t0 to t1. On each piece one E row and one I
 /// row close the band: η(t) = −(d0 + d1 t)/(d2 + d3 t) with d = row_E − row_I. The piece
 /// ends where a third row reaches w (a quadratic per row); there the pair changes to the one
@@ -100,13 +107,14 @@ pub(super) fn walk_edge(
     (t0, t1): (f64, f64),
     cs: [f64; 3],
     js: &[JointRows],
-) -> Result<Vec<(f64, f64, f64)>, Undecided> {
+) -> Result<Walked, Undecided> {
     let eta_of = |d: &[f64; 4], t: f64| -(d[0] + d[1] * t) / (d[2] + d[3] * t);
     let slope = |d: &[f64; 4], t: f64| {
         let q = d[2] + d[3] * t;
         (d[0] * d[3] - d[1] * d[2]) / (q * q)
     };
     let mut out = Vec::new();
+    let mut pieces = Vec::new();
     let Some((mut e, mut i)) = ridge_pair(hr, t0) else {
         return Err(Undecided::Resolution(format!(
             "no ridge over the edge of Q at t = {t0}"
@@ -158,6 +166,7 @@ pub(super) fn walk_edge(
             }
         }
         let t_end = next.map_or(t1, |n| n.0.min(t1));
+        pieces.push((t, t_end, e, i));
         // E2 on the piece (t, t_end)
         let (ke, be) = (hr[e].kind(), js[hr[e].j].beta);
         let (ki, bi) = (hr[i].kind(), js[hr[i].j].beta);
@@ -186,7 +195,13 @@ pub(super) fn walk_edge(
         }
         let Some((tn, r)) = next.filter(|n| n.0 < t1 - eps) else {
             out.push((t1, eta_of(&d, t1), w_at(e, &d, t1)));
-            return Ok(out);
+            if let Some(last) = pieces.last_mut() {
+                last.1 = t1;
+            }
+            return Ok(Walked {
+                points: out,
+                pieces,
+            });
         };
         out.push((tn, eta_of(&d, tn), w_at(e, &d, tn)));
         // the pair after the breakpoint: the one with the larger dη/dt

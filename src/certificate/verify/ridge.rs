@@ -1,0 +1,723 @@
+//! The `ridge` evidence of a thickness certificate, re-proved in interval arithmetic: that
+//! the listed limit states are every limit state with η in (η_hi, 2) of a discrete arch
+//! with the centreline weight at finite μ (docs/design/limit-states-on-boundary.md).
+//!
+//! With the centreline weight, N_j, T_j and m_j = M_j − w are affine in (h, v) alone; the
+//! sliding rows cut the friction polygon Q, and the hinge rows leave w the band
+//! [max_I l_j, min_E u_k], l = −m − ηN/2, u = −m + ηN/2. The argument, each step proved:
+//!
+//! 1. **Q is the listed polygon**: its vertices (two lines met, enclosed) satisfy every
+//!    other sliding row strictly, `inside` satisfies every sliding row strictly, and the
+//!    edges turn around `inside` once, counter-clockwise. So every point of ∂Q lies on a
+//!    listed edge.
+//! 2. **Every limit state above η_hi lies on the ridge over ∂Q**: the safe state has N > 0
+//!    at every joint, so with `inside`, P(η) has an interior point at every η > η_hi; a
+//!    limit state there slides at an active sliding row ((h, v) ∈ ∂Q), and by rotation
+//!    balance (the third row of B) a mechanism with hinge rates has an active extrados and
+//!    intrados row, so the band of w is closed: η = g(h, v), the ridge.
+//! 3. **Cells along each edge** (s ∈ [0, 1], vertex to vertex): over a cell, the listed
+//!    hinge rows give g as the largest of their pair values 2 (m_E − m_I)/(N_E + N_I)
+//!    (each pair is necessary; at the largest, the others are open), provided every other
+//!    row is strictly inactive on the box of (s, η, w) — proved. Then at every point of the
+//!    cell the active contacts are among the listed ones. Inside a piece (one pair, one
+//!    sliding row) the three columns are independent (det ≠ 0 over the cell's η): no
+//!    mechanism. Around a junction, a Farkas certificate over the cell's η rules out a
+//!    mechanism on the listed contacts and every subset; where the junction is a limit
+//!    state, all its contacts are active at one point of the cell only (the difference of
+//!    the two pairs' η, or the other sliding row, is monotone along the cell) and the other
+//!    points have three independent columns: one limit state, matched (floating point) to
+//!    a listed one.
+
+use super::mechanism::{column_over, one_sense_choices, prove_farkas_over};
+use super::statics::Model;
+use crate::certificate::format::{
+    ContactKind, LimitStateCert, NoMechanism, RidgeEdge, RidgeEvidence, Side,
+};
+use crate::certificate::interval::{det3, Interval as I};
+
+/// Junction cells are tried with these half-widths in s (each edge has length 1), widest
+/// first.
+const CELL_RADII: [f64; 3] = [1e-9, 1e-11, 1e-13];
+
+/// A piece's interior is split down to this fraction of its end cells' half-width before
+/// a part of it counts as not proved.
+const SPLIT_FLOOR: f64 = 1.0 / 4096.0;
+
+/// The cells one piece may be split into before it counts as not proved.
+const PIECE_CELLS: usize = 20_000;
+
+/// A junction matches a listed limit state when their η and reactions agree to this
+/// (relative; floating point).
+const MATCH_REL: f64 = 1e-8;
+
+/// A joint's N, T and m = M − w as affine functions of (h, v): [∂h, ∂v, constant].
+struct Rows {
+    n: [I; 3],
+    t: [I; 3],
+    m: [I; 3],
+}
+
+/// The rows of the joint at `beta` (formulation §3, centreline weight).
+fn rows_at(model: &Model, beta: f64) -> Rows {
+    let b = I::point(beta);
+    let (s, c) = (b.sin(), b.cos());
+    let br = I::point(model.beta_r);
+    let (sr, cr) = (br.sin(), br.cos());
+    let d = b - br;
+    Rows {
+        n: [s, c, -(d * c)],
+        t: [c, -s, d * s],
+        m: [-(s - sr), cr - c, d * c - (s - sr)],
+    }
+}
+
+fn ev(a: &[I; 3], p: [I; 2]) -> I {
+    a[0] * p[0] + a[1] * p[1] + a[2]
+}
+
+/// The sliding row ±T − μN of a joint, affine in (h, v).
+fn slide_row(r: &Rows, kind: ContactKind, mu: f64) -> [I; 3] {
+    let sg = I::point(if kind == ContactKind::SlidePlus { 1.0 } else { -1.0 });
+    let mu = I::point(mu);
+    [0, 1, 2].map(|k| sg * r.t[k] - mu * r.n[k])
+}
+
+/// Where two lines a·p + a₂ = 0 meet, enclosed (`None` if they may be parallel).
+fn meet(a: &[I; 3], b: &[I; 3]) -> Option<[I; 2]> {
+    let inv = (a[0] * b[1] - a[1] * b[0]).recip()?;
+    Some([
+        (b[2] * a[1] - a[2] * b[1]) * inv,
+        (b[0] * a[2] - a[0] * b[2]) * inv,
+    ])
+}
+
+/// A contact of the ridge: (joint index, kind).
+type Row = (usize, ContactKind);
+
+/// One edge, ready for cells: every joint's N, m and both sliding rows at its two
+/// vertices (each f along the edge is f₀ + s (f₁ − f₀)), its sliding row.
+struct EdgeCtx {
+    n: Vec<[I; 2]>,
+    m: Vec<[I; 2]>,
+    slides: Vec<(Row, [I; 2])>,
+    row: Row,
+}
+
+fn along(f: [I; 2], s: I) -> I {
+    f[0] + s * (f[1] - f[0])
+}
+
+/// What a cell proved.
+enum Cell {
+    /// Its ridge lies at η ≥ 2 or η ≤ η_hi: no claim there.
+    Outside,
+    /// The listed contacts are the only ones that may be active; η over the cell.
+    Listed(I),
+    /// Not proved.
+    Open,
+}
+
+/// The setting of the proof: the model, μ and η_hi.
+struct Proof<'a> {
+    model: &'a Model,
+    joints: &'a [f64],
+    eta_hi: f64,
+}
+
+impl Proof<'_> {
+    /// The cell s ∈ `s` with the sliding rows `slides` and the hinge rows `hinges` listed.
+    fn cell(&self, e: &EdgeCtx, s: I, slides: &[Row], hinges: &[Row]) -> Cell {
+        if let [a, b] = hinges {
+            if a.1 != b.1 && a.0 != b.0 {
+                let pair = if a.1 == ContactKind::HingeExtrados { [*a, *b] } else { [*b, *a] };
+                return self.one_pair(e, s, slides, pair);
+            }
+        }
+        let n = |j: usize| along(e.n[j], s);
+        let m = |j: usize| along(e.m[j], s);
+        let upper = |r: &&Row| r.1 == ContactKind::HingeExtrados;
+        let (es, is): (Vec<&Row>, Vec<&Row>) = hinges.iter().partition(upper);
+        let mut h: Option<I> = None;
+        for &&(ej, _) in &es {
+            for &&(ij, _) in is.iter().filter(|r| r.0 != ej) {
+                let Some(inv) = (n(ej) + n(ij)).recip().filter(|i| i.lo > 0.0) else {
+                    return Cell::Open;
+                };
+                let eta = I::point(2.0) * (m(ej) - m(ij)) * inv;
+                h = Some(h.map_or(eta, |x| I::new(x.lo.max(eta.lo), x.hi.max(eta.hi))));
+            }
+        }
+        let Some(h) = h else { return Cell::Open };
+        if h.lo >= 2.0 {
+            return Cell::Outside;
+        }
+        let half = I::point(0.5) * h;
+        let u = |j: usize| -m(j) + half * n(j);
+        let l = |j: usize| -m(j) - half * n(j);
+        let fold = |v: Vec<I>, f: fn(f64, f64) -> f64| {
+            v.into_iter().reduce(|a, b| I::new(f(a.lo, b.lo), f(a.hi, b.hi)))
+        };
+        let (Some(we), Some(wi)) = (
+            fold(es.iter().map(|r| u(r.0)).collect(), f64::min),
+            fold(is.iter().map(|r| l(r.0)).collect(), f64::max),
+        ) else {
+            return Cell::Open;
+        };
+        let (lo, hi) = (we.lo.max(wi.lo), we.hi.min(wi.hi));
+        if lo > hi {
+            return Cell::Open;
+        }
+        let w = I::new(lo, hi);
+        for j in 0..self.joints.len() {
+            if !hinges.contains(&(j, ContactKind::HingeExtrados)) && (u(j) - w).lo <= 0.0 {
+                return Cell::Open;
+            }
+            if !hinges.contains(&(j, ContactKind::HingeIntrados)) && (w - l(j)).lo <= 0.0 {
+                return Cell::Open;
+            }
+        }
+        if e.slides.iter().any(|(r, f)| !slides.contains(r) && along(*f, s).hi >= 0.0) {
+            return Cell::Open;
+        }
+        if h.hi <= self.eta_hi {
+            return Cell::Outside;
+        }
+        Cell::Listed(h)
+    }
+
+    /// [`Proof::cell`] with one pair of hinge rows (E_k, I_j): η = 2a/b, a = m_k − m_j,
+    /// b = N_k + N_j, is monotone over the cell (linear-fractional, b > 0), and each other
+    /// hinge row's slack times b is a quadratic in s, enclosed in centred form about the
+    /// cell's middle (tight near a junction, where the slack vanishes linearly).
+    fn one_pair(&self, e: &EdgeCtx, s: I, slides: &[Row], [(k, _), (j, _)]: [Row; 2]) -> Cell {
+        let (c, rad) = (I::point(s.mid()), I::new(-0.5 * s.width(), 0.5 * s.width()));
+        let sq = I::new(0.0, 0.25 * s.width() * s.width());
+        // an affine f along the edge: its value at the middle and its slope
+        let at = |f: [I; 2]| (along(f, c), f[1] - f[0]);
+        let diff = |f: &[[I; 2]], x: usize, y: usize, sg: f64| {
+            [0, 1].map(|v| f[x][v] + I::point(sg) * f[y][v])
+        };
+        let (a, b) = (diff(&e.m, k, j, -1.0), diff(&e.n, k, j, 1.0));
+        if along(b, s).lo <= 0.0 {
+            return Cell::Open;
+        }
+        let eta_at = |x: f64| {
+            let x = I::point(x);
+            along(b, x).recip().map(|inv| I::point(2.0) * along(a, x) * inv)
+        };
+        let (Some(e0), Some(e1)) = (eta_at(s.lo), eta_at(s.hi)) else {
+            return Cell::Open;
+        };
+        let h = e0.hull(e1);
+        if h.lo >= 2.0 {
+            return Cell::Outside;
+        }
+        // slack · b = p q + r t (p, q, r, t affine in s), enclosed about the middle
+        let positive = |p: [I; 2], q: [I; 2], r: [I; 2], t: [I; 2]| {
+            let ((p0, p1), (q0, q1), (r0, r1), (t0, t1)) = (at(p), at(q), at(r), at(t));
+            let g = p0 * q0 + r0 * t0 + (p0 * q1 + p1 * q0 + r0 * t1 + r1 * t0) * rad
+                + (p1 * q1 + r1 * t1) * sq;
+            g.lo > 0.0
+        };
+        for r in 0..self.joints.len() {
+            // E_r: (m_k − m_r) b + a (N_r − N_k) > 0; I_r: (m_r − m_k) b + a (N_k + N_r) > 0
+            if r != k && !positive(diff(&e.m, k, r, -1.0), b, a, diff(&e.n, r, k, -1.0)) {
+                return Cell::Open;
+            }
+            if r != j && !positive(diff(&e.m, r, k, -1.0), b, a, diff(&e.n, k, r, 1.0)) {
+                return Cell::Open;
+            }
+        }
+        if e.slides.iter().any(|(r, f)| !slides.contains(r) && along(*f, s).hi >= 0.0) {
+            return Cell::Open;
+        }
+        if h.hi <= self.eta_hi {
+            return Cell::Outside;
+        }
+        Cell::Listed(h)
+    }
+
+    /// The compatibility column of a row over η.
+    fn column(&self, (j, kind): Row, eta: I) -> [I; 3] {
+        column_over(kind, self.joints[j], eta)
+    }
+
+    /// The sliding column and a pair's two hinge columns are independent over η.
+    fn independent(&self, slide: Row, pair: [Row; 2], eta: I) -> bool {
+        det3([self.column(slide, eta), self.column(pair[0], eta), self.column(pair[1], eta)])
+            .excludes_zero()
+    }
+
+    /// The interior of a piece (s in `span`, the pair `pair`), split until every part is
+    /// proved; `Err` with the first part that is not, narrower than `floor`.
+    fn piece(&self, e: &EdgeCtx, span: (f64, f64), pair: [Row; 2], floor: f64) -> Result<usize, f64> {
+        let mut stack = vec![span];
+        let mut cells = 0;
+        while let Some((a, b)) = stack.pop() {
+            if b <= a {
+                continue;
+            }
+            cells += 1;
+            let proved = match self.cell(e, I::new(a, b), &[e.row], &pair) {
+                Cell::Outside => true,
+                Cell::Listed(h) => self.independent(e.row, pair, h),
+                Cell::Open => false,
+            };
+            if !proved {
+                if b - a < floor || cells > PIECE_CELLS {
+                    return Err(0.5 * (a + b));
+                }
+                let mid = 0.5 * (a + b);
+                stack.push((mid, b));
+                stack.push((a, mid));
+            }
+        }
+        Ok(cells)
+    }
+}
+
+/// How the cell around a junction was settled.
+enum Settled {
+    /// No mechanism on its contacts over the cell (Farkas), or nothing to claim there.
+    NoMechanism,
+    /// One limit state in the cell, the junction's, matched to a listed one.
+    Listed,
+    /// The cell around the least limit state (at η_s): no other limit state is excluded
+    /// there, up to this η (the top of the cell's range).
+    NearLeast(f64),
+}
+
+/// Whether a junction is (to floating point, [`MATCH_REL`]) the listed limit state `ls`.
+fn matches(jn: &NoMechanism, ls: &LimitStateCert) -> bool {
+    let scale = 1.0 + jn.x.iter().map(|v| v.abs()).sum::<f64>();
+    (ls.eta - jn.eta).abs() <= MATCH_REL * jn.eta
+        && (0..3).all(|k| (ls.x[k] - jn.x[k]).abs() <= MATCH_REL * scale)
+}
+
+/// Re-proves the ridge evidence; `Ok` with the report's lines, `Err` with the reason the
+/// list is not proved complete (a line of the report, not a rejection: nothing false is
+/// claimed by evidence that fails to prove).
+pub(super) fn prove_ridge(
+    model: &Model,
+    mu: f64,
+    ridge: &RidgeEvidence,
+    (listed, least): (&[&LimitStateCert], Option<&LimitStateCert>),
+    (eta_hi, x_hi): (f64, [f64; 3]),
+) -> Result<Vec<String>, String> {
+    let Some(joints) = &model.joints else {
+        return Err("the ridge needs a discrete arch".into());
+    };
+    if model.centroid {
+        return Err("the ridge needs the centreline weight".into());
+    }
+    let rows: Vec<Rows> = joints.iter().map(|&b| rows_at(model, b)).collect();
+    let mut lines = vec![polygon(mu, joints, &rows, ridge)?];
+    // P(η) has an interior point at every η > η_hi
+    let p = [I::point(x_hi[0]), I::point(x_hi[1])];
+    if rows.iter().any(|r| ev(&r.n, p).lo <= 0.0) {
+        return Err("the safe state does not have N > 0 at every joint".into());
+    }
+    lines.push(format!(
+        "proved (interval arithmetic): N > 0 at every joint of the safe state and a point strictly inside Q, so P(eta) has an interior point at every eta > {eta_hi}: every limit state there slides at an active sliding row and has an active extrados and intrados row (rotation balance), so it lies on the ridge over the edges of Q (docs/design/limit-states-on-boundary.md §2–3)"
+    ));
+    let proof = Proof {
+        model,
+        joints,
+        eta_hi,
+    };
+    let m = ridge.edges.len();
+    let (mut cells, mut pieces, mut by_farkas, mut matched) = (0, 0, 0, 0);
+    let mut floor = eta_hi;
+    for k in 0..m {
+        let e = edge_ctx(joints, &rows, mu, ridge, k)?;
+        let next = &ridge.edges[(k + 1) % m];
+        let (prev_row, next_row) = (
+            edge_row(joints, &ridge.edges[(k + m - 1) % m])?,
+            edge_row(joints, next)?,
+        );
+        let edge = &ridge.edges[k];
+        let ends = ends(edge)?;
+        let pairs = edge_pairs(joints, edge)?;
+        let prev_pair = *edge_pairs(joints, &ridge.edges[(k + m - 1) % m])?
+            .last()
+            .ok_or("an edge without pieces")?;
+        let next_pair = edge_pairs(joints, next)?[0];
+        // the junctions: 0..pieces (junction i starts piece i), then the last vertex
+        let mut radius = vec![0.0; ends.len()];
+        for i in 0..ends.len() {
+            let last = i + 1 == ends.len();
+            let jn = if last { &next.junctions[0] } else { &edge.junctions[i] };
+            let mut slides = vec![e.row];
+            if i == 0 {
+                slides.push(prev_row);
+            }
+            if last {
+                slides.push(next_row);
+            }
+            // the pieces on either side (at a vertex, the neighbouring edge's)
+            let mut around: Vec<[Row; 2]> = vec![
+                if i == 0 { prev_pair } else { pairs[i - 1] },
+                if last { next_pair } else { pairs[i] },
+            ];
+            around.dedup();
+            let gap = |a: usize, b: usize| (ends[b] - ends[a]).abs() / 2.0;
+            let room = match (i.checked_sub(1), (!last).then_some(i + 1)) {
+                (Some(a), Some(b)) => gap(a, i).min(gap(i, b)),
+                (Some(a), None) => gap(a, i),
+                (None, Some(b)) => gap(i, b),
+                (None, None) => 1.0,
+            };
+            let ctx = (&e, jn, &slides[..], &around[..]);
+            let (r, how) = proof
+                .junction(ctx, ends[i], room, (listed, least))
+                .map_err(|why| format!("edge {k}, junction at s = {}: {why}", ends[i]))?;
+            radius[i] = r;
+            cells += 1;
+            match how {
+                Settled::NoMechanism => by_farkas += 1,
+                Settled::Listed => matched += 1,
+                Settled::NearLeast(top) => floor = floor.max(top),
+            }
+        }
+        for (i, pair) in pairs.iter().enumerate() {
+            let span = (ends[i] + radius[i], ends[i + 1] - radius[i + 1]);
+            let floor = radius[i].min(radius[i + 1]) * SPLIT_FLOOR;
+            cells += proof
+                .piece(&e, span, *pair, floor)
+                .map_err(|s| format!("edge {k}, piece {i}: not proved near s = {s}"))?;
+            pieces += 1;
+        }
+    }
+    lines.push(format!(
+        "proved (interval arithmetic): along the {pieces} pieces of the ridge ({cells} cells), every other row is strictly inactive and the sliding and hinge columns are independent, so no limit state lies inside a piece; around {by_farkas} junctions the contacts carry no mechanism over the cell's eta (Farkas){}",
+        if matched > 0 {
+            format!("; around {matched}, one limit state only (all its contacts are active at one point of the cell), matched to a listed limit state (checked, floating point)")
+        } else {
+            String::new()
+        }
+    ));
+    if floor > eta_hi {
+        lines.push(format!(
+            "not proved: around the least limit state, that no other limit state has eta in ({eta_hi}, {floor}] ({:.1e} relative; its cell's contacts carry a mechanism)",
+            floor / eta_hi - 1.0
+        ));
+    }
+    lines.push(format!(
+        "proved: the listed limit states are every limit state with eta in ({floor}, 2)"
+    ));
+    Ok(lines)
+}
+
+impl Proof<'_> {
+    /// The cell around the junction `jn` at s = `at` (half-width at most `room`), with its
+    /// listed sliding rows and the pairs of the pieces on either side: the half-width used
+    /// and how it was settled.
+    fn junction(
+        &self,
+        (e, jn, slides, pairs): (&EdgeCtx, &NoMechanism, &[Row], &[[Row; 2]]),
+        at: f64,
+        room: f64,
+        (listed, least): (&[&LimitStateCert], Option<&LimitStateCert>),
+    ) -> Result<(f64, Settled), String> {
+        let hinges: Vec<Row> = {
+            let mut h: Vec<Row> = pairs.iter().flatten().copied().collect();
+            h.sort();
+            h.dedup();
+            h
+        };
+        let mut last = String::from("no cell proved");
+        for r in CELL_RADII.iter().map(|&r| r.min(room)) {
+            let s = I::new((at - r).max(0.0), (at + r).min(1.0));
+            let h = match self.cell(e, s, slides, &hinges) {
+                Cell::Outside => return Ok((r, Settled::NoMechanism)),
+                Cell::Open => {
+                    last = "the other rows are not proved inactive around it".into();
+                    continue;
+                }
+                Cell::Listed(h) => h,
+            };
+            if self.farkas_covers(jn, slides.iter().chain(&hinges), h)? {
+                return Ok((r, Settled::NoMechanism));
+            }
+            match self.one_point((e, jn), s, slides, pairs, h) {
+                Ok(()) if listed.iter().any(|ls| matches(jn, ls)) => {
+                    return Ok((r, Settled::Listed))
+                }
+                Ok(()) => {
+                    last = format!(
+                        "its contacts may carry a mechanism (eta = {}) and no listed limit state is there",
+                        jn.eta
+                    )
+                }
+                Err(why) => last = why,
+            }
+            if least.is_some_and(|ls| matches(jn, ls)) {
+                // the least limit state: the widest cell (the pieces beside it are proved
+                // up to its ends), with no claim below its top
+                return Ok((r, Settled::NearLeast(h.hi)));
+            }
+        }
+        Err(last)
+    }
+
+    /// Whether the junction's Farkas certificates cover every one-sense choice of its
+    /// pattern over η ∈ `h`, the pattern holding every listed contact of the cell.
+    fn farkas_covers<'r>(
+        &self,
+        jn: &NoMechanism,
+        cell: impl Iterator<Item = &'r Row>,
+        h: I,
+    ) -> Result<bool, String> {
+        for j in &jn.pattern {
+            index(self.joints, j.beta)?;
+        }
+        let keyed: Vec<(f64, ContactKind, Option<Side>)> =
+            jn.pattern.iter().map(|j| (j.beta, j.kind, j.side)).collect();
+        for &(j, kind) in cell {
+            if !keyed.iter().any(|k| k.0 == self.joints[j] && k.1 == kind) {
+                return Err(format!(
+                    "its pattern lacks {} at beta = {}",
+                    kind.name(),
+                    self.joints[j]
+                ));
+            }
+        }
+        let Some(choices) = one_sense_choices(&keyed) else {
+            return Ok(false);
+        };
+        let proved: Vec<&Vec<usize>> = jn
+            .farkas
+            .iter()
+            .filter(|f| f.drop.iter().all(|&d| d < keyed.len()))
+            .filter(|f| prove_farkas_over(self.model, (h, None), &keyed, f))
+            .map(|f| &f.drop)
+            .collect();
+        Ok(choices
+            .iter()
+            .all(|c| proved.iter().any(|d| d.iter().all(|i| c.contains(i)))))
+    }
+
+    /// At most one point of the cell can be a limit state, the junction: at a vertex, the
+    /// other sliding row vanishes there only and, away from it, the contacts of the edge
+    /// carry no mechanism (one pair's independent columns, or the junction's Farkas
+    /// certificate without that row); at a breakpoint, the two pairs' η cross once and
+    /// each pair's columns are independent of the sliding column.
+    fn one_point(
+        &self,
+        (e, jn): (&EdgeCtx, &NoMechanism),
+        s: I,
+        slides: &[Row],
+        pairs: &[[Row; 2]],
+        h: I,
+    ) -> Result<(), String> {
+        let independent = |p: &[Row; 2]| self.independent(e.row, *p, h);
+        match (slides, pairs) {
+            ([_, other], _) => {
+                let f = e.slides.iter().find(|(r, _)| r == other).map(|x| x.1);
+                if !f.is_some_and(|f| (f[1] - f[0]).excludes_zero()) {
+                    return Err("the other sliding row may vanish more than once".into());
+                }
+                if let [p] = pairs {
+                    if independent(p) {
+                        return Ok(());
+                    }
+                }
+                match self.without(jn, *other, h) {
+                    true => Ok(()),
+                    false => Err("no Farkas certificate covers the edge's contacts away from the vertex".into()),
+                }
+            }
+            ([_], [p, q]) => {
+                if !(independent(p) && independent(q)) {
+                    return Err("a pair's columns may be dependent with the sliding column".into());
+                }
+                let d = self.slope(e, *p, s) - self.slope(e, *q, s);
+                match d.excludes_zero() {
+                    true => Ok(()),
+                    false => Err("the two pairs' eta may meet more than once".into()),
+                }
+            }
+            _ => Err("a limit state at a point of dependent columns is not covered".into()),
+        }
+    }
+
+    /// Whether one of the junction's Farkas certificates leaves out no contact but `row`
+    /// and is proved over η ∈ `h` (no mechanism on the others).
+    fn without(&self, jn: &NoMechanism, (j, kind): Row, h: I) -> bool {
+        let keyed: Vec<(f64, ContactKind, Option<Side>)> =
+            jn.pattern.iter().map(|p| (p.beta, p.kind, p.side)).collect();
+        let Some(at) = keyed.iter().position(|k| k.0 == self.joints[j] && k.1 == kind) else {
+            return false;
+        };
+        jn.farkas.iter().any(|f| {
+            f.drop.iter().all(|&d| d == at) && prove_farkas_over(self.model, (h, None), &keyed, f)
+        })
+    }
+
+    /// dη/ds of a pair's η = 2 a/b along the edge, over s.
+    fn slope(&self, e: &EdgeCtx, [(ej, _), (ij, _)]: [Row; 2], s: I) -> I {
+        let a = [e.m[ej][0] - e.m[ij][0], e.m[ej][1] - e.m[ij][1]];
+        let b = [e.n[ej][0] + e.n[ij][0], e.n[ej][1] + e.n[ij][1]];
+        let (a1, b1) = (a[1] - a[0], b[1] - b[0]);
+        let bs = along(b, s);
+        let num = I::point(2.0) * (a1 * bs - along(a, s) * b1);
+        match (bs * bs).recip() {
+            Some(inv) => num * inv,
+            None => I::new(f64::NEG_INFINITY, f64::INFINITY),
+        }
+    }
+}
+
+/// The index of a joint angle among the arch's joints.
+fn index(joints: &[f64], beta: f64) -> Result<usize, String> {
+    joints
+        .iter()
+        .position(|&b| b == beta)
+        .ok_or_else(|| format!("beta = {beta} is not a joint of the arch"))
+}
+
+/// The pair of hinge rows of each piece of an edge.
+fn edge_pairs(joints: &[f64], edge: &RidgeEdge) -> Result<Vec<[Row; 2]>, String> {
+    if edge.pieces.is_empty() {
+        return Err("an edge without pieces".into());
+    }
+    edge.pieces
+        .iter()
+        .map(|p| {
+            Ok([
+                (index(joints, p.extrados)?, ContactKind::HingeExtrados),
+                (index(joints, p.intrados)?, ContactKind::HingeIntrados),
+            ])
+        })
+        .collect()
+}
+
+/// The sliding row of an edge.
+fn edge_row(joints: &[f64], edge: &RidgeEdge) -> Result<Row, String> {
+    if !matches!(edge.row.kind, ContactKind::SlidePlus | ContactKind::SlideMinus) {
+        return Err("an edge's row must be a sliding row".into());
+    }
+    Ok((index(joints, edge.row.beta)?, edge.row.kind))
+}
+
+/// The positions of an edge's junctions: 0, the ends of its pieces but the last, and 1.
+fn ends(edge: &RidgeEdge) -> Result<Vec<f64>, String> {
+    let n = edge.pieces.len();
+    if n == 0 || edge.junctions.len() != n {
+        return Err("an edge needs a junction per piece".into());
+    }
+    let mut ends = vec![0.0];
+    for p in &edge.pieces {
+        if !(p.end > *ends.last().expect("nonempty") && p.end <= 1.0) {
+            return Err("the pieces' ends must increase in (0, 1]".into());
+        }
+        ends.push(p.end);
+    }
+    if ends[n] != 1.0 {
+        return Err("the last piece must end at s = 1".into());
+    }
+    Ok(ends)
+}
+
+/// The vertices of edge k (enclosed) and every joint's N, m and sliding rows at them.
+fn edge_ctx(
+    joints: &[f64],
+    rows: &[Rows],
+    mu: f64,
+    ridge: &RidgeEvidence,
+    k: usize,
+) -> Result<EdgeCtx, String> {
+    let m = ridge.edges.len();
+    let line = |e: &RidgeEdge| -> Result<[I; 3], String> {
+        let (j, kind) = edge_row(joints, e)?;
+        Ok(slide_row(&rows[j], kind, mu))
+    };
+    let (l0, l1, l2) = (
+        line(&ridge.edges[(k + m - 1) % m])?,
+        line(&ridge.edges[k])?,
+        line(&ridge.edges[(k + 1) % m])?,
+    );
+    let (Some(v0), Some(v1)) = (meet(&l0, &l1), meet(&l1, &l2)) else {
+        return Err(format!("the lines of edge {k} and a neighbour may be parallel"));
+    };
+    let at = |a: &[I; 3]| [ev(a, v0), ev(a, v1)];
+    let mut slides = Vec::with_capacity(2 * rows.len());
+    for (j, r) in rows.iter().enumerate() {
+        for kind in [ContactKind::SlidePlus, ContactKind::SlideMinus] {
+            slides.push(((j, kind), at(&slide_row(r, kind, mu))));
+        }
+    }
+    Ok(EdgeCtx {
+        n: rows.iter().map(|r| at(&r.n)).collect(),
+        m: rows.iter().map(|r| at(&r.m)).collect(),
+        slides,
+        row: edge_row(joints, &ridge.edges[k])?,
+    })
+}
+
+/// Step 1: Q is the polygon of the listed edges. Returns the report's line.
+fn polygon(
+    mu: f64,
+    joints: &[f64],
+    rows: &[Rows],
+    ridge: &RidgeEvidence,
+) -> Result<String, String> {
+    let m = ridge.edges.len();
+    if m < 3 {
+        return Err("Q needs at least three edges".into());
+    }
+    let q = [I::point(ridge.inside[0]), I::point(ridge.inside[1])];
+    for r in rows {
+        for kind in [ContactKind::SlidePlus, ContactKind::SlideMinus] {
+            if ev(&slide_row(r, kind, mu), q).hi >= 0.0 {
+                return Err("the point inside is not strictly inside Q".into());
+            }
+        }
+    }
+    let edge_rows: Vec<Row> = ridge
+        .edges
+        .iter()
+        .map(|e| edge_row(joints, e))
+        .collect::<Result<_, _>>()?;
+    let line = |(j, kind): Row| slide_row(&rows[j], kind, mu);
+    let mut vertices = Vec::with_capacity(m);
+    for k in 0..m {
+        let (a, b) = (edge_rows[(k + m - 1) % m], edge_rows[k]);
+        if a.0 == b.0 {
+            return Err("an apex of Q (both lines of one joint) is not covered".into());
+        }
+        let v = meet(&line(a), &line(b)).ok_or("two consecutive edges may be parallel")?;
+        for (j, r) in rows.iter().enumerate() {
+            for kind in [ContactKind::SlidePlus, ContactKind::SlideMinus] {
+                if (j, kind) != a && (j, kind) != b && ev(&slide_row(r, kind, mu), v).hi >= 0.0 {
+                    return Err(format!("a third sliding row may pass through vertex {k} of Q"));
+                }
+            }
+        }
+        // the two sliding columns there are not parallel (no pure sliding)
+        let (ba, bb) = (I::point(joints[a.0]), I::point(joints[b.0]));
+        if !(ba.cos() * bb.sin() - ba.sin() * bb.cos()).excludes_zero() {
+            return Err(format!("the sliding columns at vertex {k} may be parallel"));
+        }
+        vertices.push(v);
+    }
+    let mut turn = 0.0;
+    for k in 0..m {
+        let (a, b) = (vertices[k], vertices[(k + 1) % m]);
+        let (ax, ay, bx, by) = (a[0] - q[0], a[1] - q[1], b[0] - q[0], b[1] - q[1]);
+        if (ax * by - ay * bx).lo <= 0.0 {
+            return Err(format!("edge {k} does not turn counter-clockwise around the point inside"));
+        }
+        let ang = |x: I, y: I| y.mid().atan2(x.mid());
+        let d = ang(bx, by) - ang(ax, ay);
+        turn += if d < 0.0 { d + std::f64::consts::TAU } else { d };
+    }
+    // each step turns by an angle in (0, π) (proved above); their sum is 2π times the
+    // winding number, which a floating-point sum within 1 of 2π settles
+    if (turn - std::f64::consts::TAU).abs() > 1.0 {
+        return Err("the edges wind around the point inside more than once".into());
+    }
+    Ok(format!(
+        "proved (interval arithmetic): the friction polygon Q is the listed polygon of {m} edges (each vertex enclosed where two lines meet satisfies every other sliding row strictly, the point inside satisfies all, and the edges turn once around it)"
+    ))
+}
