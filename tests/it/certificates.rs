@@ -4,6 +4,7 @@
 
 use arch_enum::certificate::verify;
 use arch_enum::certificate::{certify, Certificate, Claim};
+use arch_enum::settings::LimitStateSearch;
 use arch_enum::{least_friction, Arch, ContactKind, Location, Settings, WeightModel};
 use assert_cmd::Command;
 
@@ -760,7 +761,11 @@ fn sweep_evidence_is_proved_on_random_discrete_arches() {
             .unwrap()
             .unwrap();
         let mu = ms * (1.0 + 1e-2) + 1.5 * rng.next();
-        let c = cert(&arch, mu);
+        let sweep = Settings {
+            limit_state_search: LimitStateSearch::Sweep,
+            ..Settings::default()
+        };
+        let c = certify(&arch, mu, 1e-12, &sweep).unwrap();
         let r = verify(&c).unwrap_or_else(|e| panic!("case {case}: {e:?}"));
         let s = c.search.as_ref().expect("search evidence");
         let n_points = s.no_mechanism.len();
@@ -785,6 +790,109 @@ fn sweep_evidence_is_proved_on_random_discrete_arches() {
     }
     println!("12 arches: {points} sweep points proved without mechanism, {above} limit states above eta_s");
     assert!(points > 0);
+}
+
+/// The ridge's evidence (discrete arch, centreline weight, finite μ) proves the list of
+/// limit states complete on random arches (μ near μ_ms, where limit states above η_s are
+/// common), checked against the sweep's list (an independent search). Evidence edited to
+/// claim something false proves nothing: a limit state taken off the list, an edge of Q
+/// left out. (Edits that leave the claim true may still prove it: a piece's pair is any
+/// lower bound of the ridge.)
+#[test]
+fn ridge_evidence_proves_the_list_complete_on_random_discrete_arches() {
+    use crate::search_reference::{random_joints, Rng};
+    let complete = |r: &arch_enum::certificate::verify::Report| {
+        r.checks
+            .iter()
+            .any(|l| l.starts_with("proved: the listed limit states are every limit state"))
+    };
+    let mut rng = Rng(0x5eed_cafe_0000_0022);
+    let (mut ridge, mut proved, mut above, mut dropped) = (0, 0, 0, 0);
+    let cases = 300;
+    for case in 0..cases {
+        let n = 2 + (rng.next() * 11.0) as usize;
+        let (br, bl) = if case % 2 == 1 {
+            let br = -1.2 + 2.6 * rng.next();
+            (br, br + 0.4 + 3.3 * rng.next())
+        } else {
+            (
+                -0.6 + 1.2 * rng.next(),
+                std::f64::consts::PI - 0.6 + 1.2 * rng.next(),
+            )
+        };
+        let joints = random_joints(&mut rng, br, bl, n);
+        let arch = Arch::new(br, bl, WeightModel::Centreline)
+            .unwrap()
+            .with_joints(&joints)
+            .unwrap();
+        let Ok(Some(ms)) = least_friction(&arch, &Settings::default()) else {
+            continue;
+        };
+        let mu = ms * (1.0 + 1e-3 + 3.0 * rng.next().powi(2));
+        let Ok(c) = certify(&arch, mu, 1e-12, &Settings::default()) else {
+            continue;
+        };
+        let Some(s) = c.search.as_ref().filter(|s| s.ridge.is_some()) else {
+            continue; // Q unbounded or degenerate: the sweep's evidence
+        };
+        ridge += 1;
+        let r = verify(&c).unwrap_or_else(|e| panic!("case {case}: {e:?}"));
+        if !complete(&r) {
+            let why = r.checks.iter().find(|l| l.starts_with("not proved"));
+            println!("case {case}: {}", why.map_or("", |l| l.as_str()));
+            continue;
+        }
+        proved += 1;
+        above += s.limit_states_above.len();
+        // the independent list: the sweep's, on the same arch
+        let sweep = Settings {
+            limit_state_search: LimitStateSearch::Sweep,
+            ..Settings::default()
+        };
+        let other = certify(&arch, mu, 1e-12, &sweep).unwrap();
+        let etas = |c: &Certificate| -> Vec<f64> {
+            let s = c.search.as_ref().unwrap();
+            s.limit_states_above.iter().map(|s| s.eta).collect()
+        };
+        let (a, b) = (etas(&c), etas(&other));
+        assert_eq!(a.len(), b.len(), "case {case}: ridge {a:?} sweep {b:?}");
+        for (x, y) in a.iter().zip(&b) {
+            assert!(
+                (x - y).abs() <= 1e-9 * x,
+                "case {case}: ridge {a:?} sweep {b:?}"
+            );
+        }
+        // an edge of Q left out
+        let mut bad = c.clone();
+        let edges = &mut bad.search.as_mut().unwrap().ridge.as_mut().unwrap().edges;
+        edges.remove(edges.len() / 2);
+        if let Ok(r) = verify(&bad) {
+            assert!(
+                !complete(&r),
+                "case {case}: an edge left out still proves the list"
+            );
+        }
+        // a limit state taken off the list (a false claim)
+        if !a.is_empty() {
+            let mut bad = c.clone();
+            let search = bad.search.as_mut().unwrap();
+            search.limit_states_above.pop();
+            search.unique =
+                usize::from(search.mechanism_at_eta) + search.limit_states_above.len() == 1;
+            if let Ok(r) = verify(&bad) {
+                assert!(
+                    !complete(&r),
+                    "case {case}: a list short of a limit state is proved complete"
+                );
+            }
+            dropped += 1;
+        }
+    }
+    println!("{cases} arches: {ridge} with ridge evidence, {proved} lists proved complete, {above} limit states above eta_s; {dropped} lists short of one not proved");
+    assert!(
+        proved >= cases / 2 && dropped >= 3,
+        "{proved} proved, {dropped} dropped of {cases}"
+    );
 }
 
 /// At μ = ∞ the search needs no sweep: the safe state is proved strictly inside P(η_hi),

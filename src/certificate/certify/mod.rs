@@ -47,12 +47,13 @@ use thickness::{certify_limit, certify_no_equilibrium, certify_no_equilibrium_at
 
 use crate::arch::{Arch, JointLayout};
 use crate::certificate::format::{Certificate, Claim, NotCertified};
-use crate::limit::Outcome;
+use crate::limit::{LeastLimitState, Outcome};
 use crate::limit_states::ridge::trace;
-use crate::limit_states::survey;
+use crate::limit_states::{survey, LimitState};
 use crate::load::LiveLoad;
 use crate::multiplier::{self, static_range, LoadOutcome, StaticRange};
 use crate::settings::{LimitStateSearch, Settings};
+use crate::statics::Reactions;
 
 /// Builds a certificate for `arch` at friction `mu` with requested relative gap `gap`
 /// (e.g. 1e-12). The certificate is verified before it is returned. When the requested
@@ -82,9 +83,42 @@ pub fn certify(
             certify_no_equilibrium(arch, mu, settings)
         }
         Outcome::NoEquilibrium { .. } => certify_no_equilibrium_at_top(arch, mu, settings),
+        // the least admissible state carries no mechanism and the solve found none above,
+        // but the complete search did: the least limit state is its first one
+        Outcome::Unresolved {
+            least_static: Some(least),
+            reason,
+            ..
+        } => match survey.states.as_ref().ok().and_then(|f| f.above.first()) {
+            Some(first) => {
+                let ls = above_gap(mu, least, first);
+                certify_limit(arch, mu, &survey, &ls, gap, settings)
+            }
+            None => Err(NotCertified(reason)),
+        },
         Outcome::Unresolved { reason, .. } | Outcome::NoCollapse { reason } => {
             Err(NotCertified(reason))
         }
+    }
+}
+
+/// The least limit state `first`, found by the search above the least admissible state
+/// `(η_s, x_s)` (a non-associative gap), as the solve would have returned it.
+fn above_gap(mu: f64, (eta_s, x_s): (f64, Reactions), first: &LimitState) -> LeastLimitState {
+    LeastLimitState {
+        mu,
+        eta: first.t,
+        eta_static: eta_s,
+        x_static: x_s,
+        x: first.x,
+        pattern: first.pattern.clone(),
+        mode: first.mode,
+        mechanism: first.mechanism.clone(),
+        newton_residual: 0.0,
+        max_phi: 0.0,
+        eta_rounding: 0.0,
+        attained: true,
+        bracket: (eta_s, first.t),
     }
 }
 

@@ -148,7 +148,10 @@ fn ridge_evidence(arch: &Arch, edges: &[TracedEdge], settings: &Settings) -> Rid
                 .enumerate()
                 .map(|(i, jn)| {
                     let (before_row, before) = match i {
-                        0 => (Some(prev.row), prev.pieces.last().expect("a piece per edge")),
+                        0 => (
+                            Some(prev.row),
+                            prev.pieces.last().expect("a piece per edge"),
+                        ),
                         _ => (None, &edge.pieces[i - 1]),
                     };
                     let mut pattern: Vec<Contact> = [edge.row, before.1, before.2]

@@ -77,7 +77,11 @@ fn ev(a: &[I; 3], p: [I; 2]) -> I {
 
 /// The sliding row ±T − μN of a joint, affine in (h, v).
 fn slide_row(r: &Rows, kind: ContactKind, mu: f64) -> [I; 3] {
-    let sg = I::point(if kind == ContactKind::SlidePlus { 1.0 } else { -1.0 });
+    let sg = I::point(if kind == ContactKind::SlidePlus {
+        1.0
+    } else {
+        -1.0
+    });
     let mu = I::point(mu);
     [0, 1, 2].map(|k| sg * r.t[k] - mu * r.n[k])
 }
@@ -129,7 +133,11 @@ impl Proof<'_> {
     fn cell(&self, e: &EdgeCtx, s: I, slides: &[Row], hinges: &[Row]) -> Cell {
         if let [a, b] = hinges {
             if a.1 != b.1 && a.0 != b.0 {
-                let pair = if a.1 == ContactKind::HingeExtrados { [*a, *b] } else { [*b, *a] };
+                let pair = if a.1 == ContactKind::HingeExtrados {
+                    [*a, *b]
+                } else {
+                    [*b, *a]
+                };
                 return self.one_pair(e, s, slides, pair);
             }
         }
@@ -155,7 +163,8 @@ impl Proof<'_> {
         let u = |j: usize| -m(j) + half * n(j);
         let l = |j: usize| -m(j) - half * n(j);
         let fold = |v: Vec<I>, f: fn(f64, f64) -> f64| {
-            v.into_iter().reduce(|a, b| I::new(f(a.lo, b.lo), f(a.hi, b.hi)))
+            v.into_iter()
+                .reduce(|a, b| I::new(f(a.lo, b.lo), f(a.hi, b.hi)))
         };
         let (Some(we), Some(wi)) = (
             fold(es.iter().map(|r| u(r.0)).collect(), f64::min),
@@ -176,7 +185,10 @@ impl Proof<'_> {
                 return Cell::Open;
             }
         }
-        if e.slides.iter().any(|(r, f)| !slides.contains(r) && along(*f, s).hi >= 0.0) {
+        if e.slides
+            .iter()
+            .any(|(r, f)| !slides.contains(r) && along(*f, s).hi >= 0.0)
+        {
             return Cell::Open;
         }
         if h.hi <= self.eta_hi {
@@ -203,7 +215,9 @@ impl Proof<'_> {
         }
         let eta_at = |x: f64| {
             let x = I::point(x);
-            along(b, x).recip().map(|inv| I::point(2.0) * along(a, x) * inv)
+            along(b, x)
+                .recip()
+                .map(|inv| I::point(2.0) * along(a, x) * inv)
         };
         let (Some(e0), Some(e1)) = (eta_at(s.lo), eta_at(s.hi)) else {
             return Cell::Open;
@@ -215,7 +229,9 @@ impl Proof<'_> {
         // slack · b = p q + r t (p, q, r, t affine in s), enclosed about the middle
         let positive = |p: [I; 2], q: [I; 2], r: [I; 2], t: [I; 2]| {
             let ((p0, p1), (q0, q1), (r0, r1), (t0, t1)) = (at(p), at(q), at(r), at(t));
-            let g = p0 * q0 + r0 * t0 + (p0 * q1 + p1 * q0 + r0 * t1 + r1 * t0) * rad
+            let g = p0 * q0
+                + r0 * t0
+                + (p0 * q1 + p1 * q0 + r0 * t1 + r1 * t0) * rad
                 + (p1 * q1 + r1 * t1) * sq;
             g.lo > 0.0
         };
@@ -228,7 +244,10 @@ impl Proof<'_> {
                 return Cell::Open;
             }
         }
-        if e.slides.iter().any(|(r, f)| !slides.contains(r) && along(*f, s).hi >= 0.0) {
+        if e.slides
+            .iter()
+            .any(|(r, f)| !slides.contains(r) && along(*f, s).hi >= 0.0)
+        {
             return Cell::Open;
         }
         if h.hi <= self.eta_hi {
@@ -244,13 +263,23 @@ impl Proof<'_> {
 
     /// The sliding column and a pair's two hinge columns are independent over η.
     fn independent(&self, slide: Row, pair: [Row; 2], eta: I) -> bool {
-        det3([self.column(slide, eta), self.column(pair[0], eta), self.column(pair[1], eta)])
-            .excludes_zero()
+        det3([
+            self.column(slide, eta),
+            self.column(pair[0], eta),
+            self.column(pair[1], eta),
+        ])
+        .excludes_zero()
     }
 
     /// The interior of a piece (s in `span`, the pair `pair`), split until every part is
     /// proved; `Err` with the first part that is not, narrower than `floor`.
-    fn piece(&self, e: &EdgeCtx, span: (f64, f64), pair: [Row; 2], floor: f64) -> Result<usize, f64> {
+    fn piece(
+        &self,
+        e: &EdgeCtx,
+        span: (f64, f64),
+        pair: [Row; 2],
+        floor: f64,
+    ) -> Result<usize, f64> {
         let mut stack = vec![span];
         let mut cells = 0;
         while let Some((a, b)) = stack.pop() {
@@ -346,7 +375,11 @@ pub(super) fn prove_ridge(
         let mut radius = vec![0.0; ends.len()];
         for i in 0..ends.len() {
             let last = i + 1 == ends.len();
-            let jn = if last { &next.junctions[0] } else { &edge.junctions[i] };
+            let jn = if last {
+                &next.junctions[0]
+            } else {
+                &edge.junctions[i]
+            };
             let mut slides = vec![e.row];
             if i == 0 {
                 slides.push(prev_row);
@@ -471,8 +504,11 @@ impl Proof<'_> {
         for j in &jn.pattern {
             index(self.joints, j.beta)?;
         }
-        let keyed: Vec<(f64, ContactKind, Option<Side>)> =
-            jn.pattern.iter().map(|j| (j.beta, j.kind, j.side)).collect();
+        let keyed: Vec<(f64, ContactKind, Option<Side>)> = jn
+            .pattern
+            .iter()
+            .map(|j| (j.beta, j.kind, j.side))
+            .collect();
         for &(j, kind) in cell {
             if !keyed.iter().any(|k| k.0 == self.joints[j] && k.1 == kind) {
                 return Err(format!(
@@ -524,7 +560,10 @@ impl Proof<'_> {
                 }
                 match self.without(jn, *other, h) {
                     true => Ok(()),
-                    false => Err("no Farkas certificate covers the edge's contacts away from the vertex".into()),
+                    false => Err(
+                        "no Farkas certificate covers the edge's contacts away from the vertex"
+                            .into(),
+                    ),
                 }
             }
             ([_], [p, q]) => {
@@ -544,9 +583,15 @@ impl Proof<'_> {
     /// Whether one of the junction's Farkas certificates leaves out no contact but `row`
     /// and is proved over η ∈ `h` (no mechanism on the others).
     fn without(&self, jn: &NoMechanism, (j, kind): Row, h: I) -> bool {
-        let keyed: Vec<(f64, ContactKind, Option<Side>)> =
-            jn.pattern.iter().map(|p| (p.beta, p.kind, p.side)).collect();
-        let Some(at) = keyed.iter().position(|k| k.0 == self.joints[j] && k.1 == kind) else {
+        let keyed: Vec<(f64, ContactKind, Option<Side>)> = jn
+            .pattern
+            .iter()
+            .map(|p| (p.beta, p.kind, p.side))
+            .collect();
+        let Some(at) = keyed
+            .iter()
+            .position(|k| k.0 == self.joints[j] && k.1 == kind)
+        else {
             return false;
         };
         jn.farkas.iter().any(|f| {
@@ -594,7 +639,10 @@ fn edge_pairs(joints: &[f64], edge: &RidgeEdge) -> Result<Vec<[Row; 2]>, String>
 
 /// The sliding row of an edge.
 fn edge_row(joints: &[f64], edge: &RidgeEdge) -> Result<Row, String> {
-    if !matches!(edge.row.kind, ContactKind::SlidePlus | ContactKind::SlideMinus) {
+    if !matches!(
+        edge.row.kind,
+        ContactKind::SlidePlus | ContactKind::SlideMinus
+    ) {
         return Err("an edge's row must be a sliding row".into());
     }
     Ok((index(joints, edge.row.beta)?, edge.row.kind))
@@ -638,7 +686,9 @@ fn edge_ctx(
         line(&ridge.edges[(k + 1) % m])?,
     );
     let (Some(v0), Some(v1)) = (meet(&l0, &l1), meet(&l1, &l2)) else {
-        return Err(format!("the lines of edge {k} and a neighbour may be parallel"));
+        return Err(format!(
+            "the lines of edge {k} and a neighbour may be parallel"
+        ));
     };
     let at = |a: &[I; 3]| [ev(a, v0), ev(a, v1)];
     let mut slides = Vec::with_capacity(2 * rows.len());
@@ -690,7 +740,9 @@ fn polygon(
         for (j, r) in rows.iter().enumerate() {
             for kind in [ContactKind::SlidePlus, ContactKind::SlideMinus] {
                 if (j, kind) != a && (j, kind) != b && ev(&slide_row(r, kind, mu), v).hi >= 0.0 {
-                    return Err(format!("a third sliding row may pass through vertex {k} of Q"));
+                    return Err(format!(
+                        "a third sliding row may pass through vertex {k} of Q"
+                    ));
                 }
             }
         }
@@ -706,11 +758,17 @@ fn polygon(
         let (a, b) = (vertices[k], vertices[(k + 1) % m]);
         let (ax, ay, bx, by) = (a[0] - q[0], a[1] - q[1], b[0] - q[0], b[1] - q[1]);
         if (ax * by - ay * bx).lo <= 0.0 {
-            return Err(format!("edge {k} does not turn counter-clockwise around the point inside"));
+            return Err(format!(
+                "edge {k} does not turn counter-clockwise around the point inside"
+            ));
         }
         let ang = |x: I, y: I| y.mid().atan2(x.mid());
         let d = ang(bx, by) - ang(ax, ay);
-        turn += if d < 0.0 { d + std::f64::consts::TAU } else { d };
+        turn += if d < 0.0 {
+            d + std::f64::consts::TAU
+        } else {
+            d
+        };
     }
     // each step turns by an angle in (0, π) (proved above); their sum is 2π times the
     // winding number, which a floating-point sum within 1 of 2π settles

@@ -283,7 +283,10 @@ fn ridge_evidence(
     if !search.no_mechanism.is_empty() {
         return reject("search: method ridge lists no sweep points");
     }
-    let at_eta_s = cert.limit_state.as_ref().filter(|_| search.mechanism_at_eta);
+    let at_eta_s = cert
+        .limit_state
+        .as_ref()
+        .filter(|_| search.mechanism_at_eta);
     let listed: Vec<&LimitStateCert> = search.limit_states_above.iter().chain(at_eta_s).collect();
     match prove_ridge(model, ridge.1, ridge.0, (&listed, at_eta_s), (safe.eta, safe.x)) {
         Ok(lines) => checks.extend(lines),

@@ -33,12 +33,13 @@ mod rows;
 mod trace;
 mod walk;
 
-use crate::arch::{Arch, JointLayout, WeightModel};
+use crate::arch::{Arch, JointLayout};
 use crate::settings::Settings;
 use crate::statics::reaction_scale;
 use crate::undecided::Undecided;
 use candidates::candidates;
 use check::{check, may_carry_mechanism};
+pub use rows::applies;
 use rows::JointRows;
 pub use trace::{trace, Junction, TracedEdge};
 
@@ -52,15 +53,6 @@ pub struct Ridge {
     /// Candidate points of the ridge checked (vertices, apexes, breakpoints, dependent
     /// columns) with η > `eta_lo`.
     pub candidates: usize,
-}
-
-/// Whether the ridge search applies: a discrete arch with the centreline weight at finite μ
-/// (the true centroid puts η² into the hinge rows; μ = ∞ has no sliding rows, and
-/// `limit_states` answers it by the interior alone).
-pub fn applies(arch: &Arch, mu: f64) -> bool {
-    mu.is_finite()
-        && matches!(arch.layout(), JointLayout::Discrete(_))
-        && matches!(arch.weight(), WeightModel::Centreline)
 }
 
 /// Every limit state of a discrete arch (centreline weight, finite μ) with η in

@@ -2,13 +2,22 @@
 //! hinge rows along a line of the (h, v) plane, which bound w above (extrados) or below
 //! (intrados); the candidate points the walk hands over to the check.
 
-use crate::arch::Arch;
+use crate::arch::{Arch, JointLayout, WeightModel};
 use crate::contact::ContactKind;
 use crate::statics::{actions, Reactions};
 
 /// Relative tolerance of the walk's own tests (band membership, rows through a vertex);
 /// the verdict on a candidate is `Settings::adm_tol`'s.
 pub(super) const TOL: f64 = 1e-9;
+
+/// Whether the ridge search applies: a discrete arch with the centreline weight at finite μ
+/// (the true centroid puts η² into the hinge rows; μ = ∞ has no sliding rows, and
+/// `limit_states` answers it by the interior alone).
+pub fn applies(arch: &Arch, mu: f64) -> bool {
+    mu.is_finite()
+        && matches!(arch.layout(), JointLayout::Discrete(_))
+        && matches!(arch.weight(), WeightModel::Centreline)
+}
 
 /// N, T and m = M − w at one joint as affine functions of (h, v): [∂/∂h, ∂/∂v, constant].
 pub(super) struct JointRows {

@@ -6,7 +6,7 @@
 
 use super::candidates::{edge_frame, no_third_line};
 use super::polygon::{lines, on_box, q_polygon, Line};
-use super::rows::{hinge_rows, JointRows};
+use super::rows::{applies, hinge_rows, JointRows};
 use super::walk::walk_edge;
 use crate::arch::{Arch, JointLayout};
 use crate::contact::{Contact, ContactKind, Location};
@@ -44,7 +44,7 @@ pub struct TracedEdge {
 /// (both lines of one joint) or a third line through a vertex, or where the walk fails.
 pub fn trace(arch: &Arch, mu: f64) -> Result<Vec<TracedEdge>, Undecided> {
     let not = |why: &str| Err(Undecided::NotCovered(format!("no ridge evidence: {why}")));
-    if !super::applies(arch, mu) {
+    if !applies(arch, mu) {
         return not("the ridge needs a discrete arch, the centreline weight and finite mu");
     }
     let JointLayout::Discrete(joints) = arch.layout() else {
@@ -56,7 +56,10 @@ pub fn trace(arch: &Arch, mu: f64) -> Result<Vec<TracedEdge>, Undecided> {
     if poly.len() < 3 {
         return not("Q has no interior");
     }
-    if poly.iter().any(|&(q, e)| on_box(q) || lines[e].slide.is_none()) {
+    if poly
+        .iter()
+        .any(|&(q, e)| on_box(q) || lines[e].slide.is_none())
+    {
         return not("Q is unbounded");
     }
     no_third_line(&lines, &poly)?;
@@ -105,18 +108,26 @@ fn trace_edge(
     points.sort_by(|a, b| a.0.total_cmp(&b.0));
     points.dedup_by(|b, a| b.0 - a.0 <= SAME_JUNCTION);
     let Some(first) = points.first_mut() else {
-        return Err(Undecided::Resolution("the walk gave no point on an edge of Q".into()));
+        return Err(Undecided::Resolution(
+            "the walk gave no point on an edge of Q".into(),
+        ));
     };
     first.0 = first.0.max(0.0);
     if first.0 > SAME_JUNCTION {
-        return Err(Undecided::Resolution("the walk did not start at a vertex of Q".into()));
+        return Err(Undecided::Resolution(
+            "the walk did not start at a vertex of Q".into(),
+        ));
     }
     first.0 = 0.0;
     let junctions: Vec<Junction> = points
         .iter()
         .map(|&(s, eta, w)| Junction {
             s,
-            x: [p0[0] + (t0 + s * (t1 - t0)) * d[0], p0[1] + (t0 + s * (t1 - t0)) * d[1], w],
+            x: [
+                p0[0] + (t0 + s * (t1 - t0)) * d[0],
+                p0[1] + (t0 + s * (t1 - t0)) * d[1],
+                w,
+            ],
             eta,
         })
         .collect();
@@ -132,7 +143,11 @@ fn trace_edge(
             .copied()
             .find(|p| mid.clamp(lo, hi) >= p.0.min(p.1) && mid.clamp(lo, hi) <= p.0.max(p.1))
             .ok_or_else(|| Undecided::Resolution("a piece of the ridge has no pair".into()))?;
-        pieces.push((end, contact(hr[e].j, hr[e].kind()), contact(hr[i].j, hr[i].kind())));
+        pieces.push((
+            end,
+            contact(hr[e].j, hr[e].kind()),
+            contact(hr[i].j, hr[i].kind()),
+        ));
     }
     Ok(TracedEdge {
         row: contact(slide.0, slide.1),
