@@ -232,8 +232,15 @@ fn limit_states_text(cert: &Certificate) -> String {
     cert.search.as_ref().map_or(
         "  limit states: not certified (the search could not be completed)\n".to_string(),
         |s| {
+            let ridge = s.ridge.as_ref().map_or(String::new(), |r| {
+                let pieces: usize = r.edges.iter().map(|e| e.pieces.len()).sum();
+                format!(
+                    "; ridge evidence: {} edges of Q, {pieces} pieces",
+                    r.edges.len()
+                )
+            });
             format!(
-                "  limit states: {} at eta_s, {} above it ({}; Farkas evidence for {} state(s) without a mechanism)\n",
+                "  limit states: {} at eta_s, {} above it ({}; Farkas evidence for {} state(s) without a mechanism{ridge})\n",
                 if s.mechanism_at_eta { "one" } else { "none" },
                 s.limit_states_above.len(),
                 if s.unique { "unique" } else { "not unique" },

@@ -185,16 +185,7 @@ impl Proof<'_> {
                 return Cell::Open;
             }
         }
-        if e.slides
-            .iter()
-            .any(|(r, f)| !slides.contains(r) && along(*f, s).hi >= 0.0)
-        {
-            return Cell::Open;
-        }
-        if h.hi <= self.eta_hi {
-            return Cell::Outside;
-        }
-        Cell::Listed(h)
+        self.finish(e, s, slides, h)
     }
 
     /// [`Proof::cell`] with one pair of hinge rows (E_k, I_j): η = 2a/b, a = m_k − m_j,
@@ -244,6 +235,13 @@ impl Proof<'_> {
                 return Cell::Open;
             }
         }
+        self.finish(e, s, slides, h)
+    }
+
+    /// The end of a cell's proof, once its hinge rows are settled: every sliding row not
+    /// listed strictly inactive over the cell, then whether its ridge (η over `h`) needs a
+    /// claim at all.
+    fn finish(&self, e: &EdgeCtx, s: I, slides: &[Row], h: I) -> Cell {
         if e.slides
             .iter()
             .any(|(r, f)| !slides.contains(r) && along(*f, s).hi >= 0.0)
