@@ -166,7 +166,17 @@ fn still_true(c: &Certificate, settings: &Settings) -> Result<bool, String> {
         .outcome;
     Ok(match (c.claim, out) {
         (Claim::NoEquilibrium, Outcome::NoEquilibrium { .. }) => true,
-        (Claim::LeastThickness, Outcome::Limit(ls)) => {
+        (Claim::LeastThickness, out @ (Outcome::Limit(_) | Outcome::Unresolved { .. })) => {
+            // η_s: the least admissible state's (also where the solve found no limit state
+            // above it and the certificate takes the search's first)
+            let e = match out {
+                Outcome::Limit(ls) => ls.eta_static,
+                Outcome::Unresolved {
+                    least_static: Some((e, _)),
+                    ..
+                } => e,
+                _ => return Ok(false),
+            };
             let (lo, hi) = (
                 c.collapse.as_ref().and_then(|f| f.eta),
                 c.safe.as_ref().map(|s| s.eta),
@@ -174,7 +184,6 @@ fn still_true(c: &Certificate, settings: &Settings) -> Result<bool, String> {
             let (Some(lo), Some(hi)) = (lo, hi) else {
                 return Ok(false);
             };
-            let e = ls.eta_static;
             e >= lo * (1.0 - 1e-14) && e <= hi * (1.0 + 1e-14)
         }
         _ => false,
