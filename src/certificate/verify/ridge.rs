@@ -37,7 +37,7 @@ use crate::certificate::interval::{det3, Interval as I};
 
 /// Junction cells are tried with these half-widths in s (each edge has length 1), widest
 /// first.
-const CELL_RADII: [f64; 3] = [1e-9, 1e-11, 1e-13];
+const CELL_RADII: [f64; 5] = [1e-5, 1e-7, 1e-9, 1e-11, 1e-13];
 
 /// A piece's interior is split down to this fraction of its end cells' half-width before
 /// a part of it counts as not proved.
@@ -399,8 +399,13 @@ pub(super) fn prove_ridge(
                 (None, None) => 1.0,
             };
             let ctx = (&e, jn, &slides[..], &around[..]);
+            // this edge's pieces before and after the junction
+            let beside = [
+                i.checked_sub(1).map(|p| pairs[p]),
+                (!last).then(|| pairs[i]),
+            ];
             let (r, how) = proof
-                .junction(ctx, ends[i], room, (listed, least))
+                .junction(ctx, (ends[i], room, beside), (listed, least))
                 .map_err(|why| format!("edge {k}, junction at s = {}: {why}", ends[i]))?;
             radius[i] = r;
             cells += 1;
@@ -441,13 +446,12 @@ pub(super) fn prove_ridge(
 
 impl Proof<'_> {
     /// The cell around the junction `jn` at s = `at` (half-width at most `room`), with its
-    /// listed sliding rows and the pairs of the pieces on either side: the half-width used
-    /// and how it was settled.
+    /// listed sliding rows and the pairs of the pieces on either side (`beside`: this
+    /// edge's before and after it): the half-width used and how it was settled.
     fn junction(
         &self,
         (e, jn, slides, pairs): (&EdgeCtx, &NoMechanism, &[Row], &[[Row; 2]]),
-        at: f64,
-        room: f64,
+        (at, room, beside): (f64, f64, [Option<[Row; 2]>; 2]),
         (listed, least): (&[&LimitStateCert], Option<&LimitStateCert>),
     ) -> Result<(f64, Settled), String> {
         let hinges: Vec<Row> = {
@@ -457,21 +461,35 @@ impl Proof<'_> {
             h
         };
         let mut last = String::from("no cell proved");
+        let mut near: Vec<(f64, f64)> = Vec::new();
+        // a cell of half-width r stands only if this edge's pieces beside it are proved from
+        // its ends out to the widest cell's (where the pieces' own proofs take over)
+        let widest = CELL_RADII[0].min(room);
+        let beside_ok = |r: f64| {
+            let floor = r * SPLIT_FLOOR;
+            let piece = |p: [Row; 2], span| self.piece(e, span, p, floor).is_ok();
+            beside[0].is_none_or(|p| piece(p, (at - widest, at - r)))
+                && beside[1].is_none_or(|p| piece(p, (at + r, at + widest)))
+        };
         for r in CELL_RADII.iter().map(|&r| r.min(room)) {
             let s = I::new((at - r).max(0.0), (at + r).min(1.0));
             let h = match self.cell(e, s, slides, &hinges) {
-                Cell::Outside => return Ok((r, Settled::NoMechanism)),
+                Cell::Outside if beside_ok(r) => return Ok((r, Settled::NoMechanism)),
+                Cell::Outside => {
+                    last = "the pieces beside its cell are not proved up to it".into();
+                    continue;
+                }
                 Cell::Open => {
                     last = "the other rows are not proved inactive around it".into();
                     continue;
                 }
                 Cell::Listed(h) => h,
             };
-            if self.farkas_covers(jn, slides.iter().chain(&hinges), h)? {
+            if self.farkas_covers(jn, slides.iter().chain(&hinges), h)? && beside_ok(r) {
                 return Ok((r, Settled::NoMechanism));
             }
             match self.one_point((e, jn), s, slides, pairs, h) {
-                Ok(()) if listed.iter().any(|ls| matches(jn, ls)) => {
+                Ok(()) if listed.iter().any(|ls| matches(jn, ls)) && beside_ok(r) => {
                     return Ok((r, Settled::Listed))
                 }
                 Ok(()) => {
@@ -483,12 +501,16 @@ impl Proof<'_> {
                 Err(why) => last = why,
             }
             if least.is_some_and(|ls| matches(jn, ls)) {
-                // the least limit state: the widest cell (the pieces beside it are proved
-                // up to its ends), with no claim below its top
-                return Ok((r, Settled::NearLeast(h.hi)));
+                near.push((r, h.hi));
             }
         }
-        Err(last)
+        // the least limit state: the narrowest cell whose pieces beside it are proved up
+        // to the widest cell's ends, with no claim below its top
+        near.sort_by(|a, b| a.0.total_cmp(&b.0));
+        near.into_iter()
+            .find(|&(r, _)| beside_ok(r))
+            .map(|(r, top)| (r, Settled::NearLeast(top)))
+            .ok_or(last)
     }
 
     /// Whether the junction's Farkas certificates cover every one-sense choice of its
