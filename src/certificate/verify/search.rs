@@ -25,6 +25,10 @@
 //!   state admissible at λ' > λ* would give (λ' − λ*) L_live ≤ 0. With the state *proved*
 //!   admissible at λ_lo, no limit state lies below λ_lo (none at all when λ is unbounded).
 //!
+//! * **The ridge** (`ridge`, thickness, discrete arch, centreline weight): that the listed
+//!   limit states are every one above η_hi, *proved* from Q's edges, the ridge's pieces and
+//!   their junctions ([`super::ridge`]).
+//!
 //! What is *not* re-proved: that the sweep met every event (its completeness argument,
 //! docs/limit-states.md, docs/loads.md), that two discretisations agreed (`refined`), and
 //! λ_min.
