@@ -596,7 +596,18 @@ impl Proof<'_> {
                     false => Err("the two pairs' eta may meet more than once".into()),
                 }
             }
-            _ => Err("a limit state at a point of dependent columns is not covered".into()),
+            // a point of dependent columns: the pair's η is monotone along the cell and the
+            // determinant vanishes at one η of the cell's range only
+            ([_], [p]) => {
+                if self.slope(e, *p, s).excludes_zero()
+                    && self.det_slope(e.row, *p, h).excludes_zero()
+                {
+                    Ok(())
+                } else {
+                    Err("the columns may be dependent at more than one point of the cell".into())
+                }
+            }
+            _ => Err("a limit state where the cell lists other contacts is not covered".into()),
         }
     }
 
@@ -617,6 +628,22 @@ impl Proof<'_> {
         jn.farkas.iter().any(|f| {
             f.drop.iter().all(|&d| d == at) && prove_farkas_over(self.model, (h, None), &keyed, f)
         })
+    }
+
+    /// d/dη of det[sliding column, E column, I column] over η ∈ `h`: the hinge columns
+    /// change with η by [−sin β, cos β, 0]/2 (formulation §4: radii 1 ± η/2).
+    fn det_slope(&self, slide: Row, pair: [Row; 2], h: I) -> I {
+        let rate = |(j, _): Row| {
+            let b = I::point(self.joints[j]);
+            let half = I::point(0.5);
+            [-(half * b.sin()), half * b.cos(), I::point(0.0)]
+        };
+        let (cs, ce, ci) = (
+            self.column(slide, h),
+            self.column(pair[0], h),
+            self.column(pair[1], h),
+        );
+        det3([cs, rate(pair[0]), ci]) + det3([cs, ce, rate(pair[1])])
     }
 
     /// dη/ds of a pair's η = 2 a/b along the edge, over s.
