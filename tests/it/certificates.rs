@@ -889,9 +889,10 @@ fn ridge_evidence_proves_the_list_complete_on_random_discrete_arches() {
         }
     }
     println!("{cases} arches: {ridge} with ridge evidence, {proved} lists proved complete, {above} limit states above eta_s; {dropped} lists short of one not proved");
+    // 236 of 236 when written: a list not proved is an honest "not proved", but rare
     assert!(
-        proved >= cases / 2 && dropped >= 3,
-        "{proved} proved, {dropped} dropped of {cases}"
+        proved * 100 >= ridge * 98 && ridge >= cases / 2 && dropped >= 3,
+        "{proved} proved of {ridge} with ridge evidence, {dropped} dropped, of {cases}"
     );
 }
 
