@@ -47,13 +47,12 @@ use thickness::{certify_limit, certify_no_equilibrium, certify_no_equilibrium_at
 
 use crate::arch::{Arch, JointLayout};
 use crate::certificate::format::{Certificate, Claim, NotCertified};
-use crate::limit::{LeastLimitState, Outcome};
+use crate::limit::Outcome;
 use crate::limit_states::ridge::trace;
-use crate::limit_states::{survey, LimitState};
+use crate::limit_states::survey;
 use crate::load::LiveLoad;
 use crate::multiplier::{self, static_range, LoadOutcome, StaticRange};
 use crate::settings::{LimitStateSearch, Settings};
-use crate::statics::Reactions;
 
 /// Builds a certificate for `arch` at friction `mu` with requested relative gap `gap`
 /// (e.g. 1e-12). The certificate is verified before it is returned. When the requested
@@ -68,8 +67,12 @@ pub fn certify(
 ) -> Result<Certificate, NotCertified> {
     // a discrete arch's certificate carries the ridge's pieces as evidence where the ridge
     // can be traced (a bounded Q, ...), else the sweep's checked points
+    let traced = match arch.layout() {
+        JointLayout::Discrete(_) if mu.is_finite() => trace(arch, mu).ok(),
+        _ => None,
+    };
     let settings = &match arch.layout() {
-        JointLayout::Discrete(_) if !(mu.is_finite() && trace(arch, mu).is_ok()) => Settings {
+        JointLayout::Discrete(_) if traced.is_none() => Settings {
             limit_state_search: LimitStateSearch::Sweep,
             ..settings.clone()
         },
@@ -78,7 +81,17 @@ pub fn certify(
     let survey = survey(arch, mu, settings).map_err(|e| NotCertified(e.to_string()))?;
     match survey.solution.outcome.clone() {
         Outcome::Limit(ls) if !ls.attained => certify_infimum(arch, mu, &ls, gap, settings),
-        Outcome::Limit(ls) => certify_limit(arch, mu, &survey, &ls, gap, settings),
+        Outcome::Limit(ls) => {
+            let at_eta_s = (ls.eta == ls.eta_static).then_some(&ls);
+            let least = (ls.eta_static, ls.x_static, at_eta_s);
+            certify_limit(
+                (arch, mu),
+                (&survey, traced.as_deref()),
+                least,
+                gap,
+                settings,
+            )
+        }
         Outcome::NoEquilibrium { mu_ms: Some(m), .. } if mu < m => {
             certify_no_equilibrium(arch, mu, settings)
         }
@@ -86,39 +99,25 @@ pub fn certify(
         // the least admissible state carries no mechanism and the solve found none above,
         // but the complete search did: the least limit state is its first one
         Outcome::Unresolved {
-            least_static: Some(least),
+            least_static: Some((eta_s, x_s)),
             reason,
             ..
-        } => match survey.states.as_ref().ok().and_then(|f| f.above.first()) {
-            Some(first) => {
-                let ls = above_gap(mu, least, first);
-                certify_limit(arch, mu, &survey, &ls, gap, settings)
+        } => match &survey.states {
+            Ok(found) if !found.above.is_empty() => {
+                let least = (eta_s, x_s, None);
+                certify_limit(
+                    (arch, mu),
+                    (&survey, traced.as_deref()),
+                    least,
+                    gap,
+                    settings,
+                )
             }
-            None => Err(NotCertified(reason)),
+            _ => Err(NotCertified(reason)),
         },
         Outcome::Unresolved { reason, .. } | Outcome::NoCollapse { reason } => {
             Err(NotCertified(reason))
         }
-    }
-}
-
-/// The least limit state `first`, found by the search above the least admissible state
-/// `(η_s, x_s)` (a non-associative gap), as the solve would have returned it.
-fn above_gap(mu: f64, (eta_s, x_s): (f64, Reactions), first: &LimitState) -> LeastLimitState {
-    LeastLimitState {
-        mu,
-        eta: first.t,
-        eta_static: eta_s,
-        x_static: x_s,
-        x: first.x,
-        pattern: first.pattern.clone(),
-        mode: first.mode,
-        mechanism: first.mechanism.clone(),
-        newton_residual: 0.0,
-        max_phi: 0.0,
-        eta_rounding: 0.0,
-        attained: true,
-        bracket: (eta_s, first.t),
     }
 }
 

@@ -10,7 +10,7 @@ use crate::certificate::format::{
     SearchEvidence, SearchMethod, Side,
 };
 use crate::contact::Contact;
-use crate::limit_states::ridge::{trace, TracedEdge};
+use crate::limit_states::ridge::TracedEdge;
 use crate::limit_states::{LimitState, LimitStates};
 use crate::mechanism::Mechanism;
 use crate::settings::Settings;
@@ -87,16 +87,15 @@ fn without(
 
 /// The evidence of the limit-state search, for the certificate.
 pub(super) fn evidence(
-    (arch, mu): (&Arch, f64),
+    (arch, traced): (&Arch, Option<&[TracedEdge]>),
     found: &LimitStates,
     least: (f64, Reactions, &[Contact]),
     unique: bool,
     settings: &Settings,
 ) -> SearchEvidence {
-    let ridge = (found.method == "ridge")
-        .then(|| trace(arch, mu).ok())
-        .flatten()
-        .map(|edges| ridge_evidence(arch, &edges, settings));
+    let ridge = traced
+        .filter(|_| found.method == "ridge")
+        .map(|edges| ridge_evidence(arch, edges, settings));
     let method = if ridge.is_some() {
         SearchMethod::Ridge
     } else if found.method.starts_with("sweep") {

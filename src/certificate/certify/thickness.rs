@@ -13,6 +13,7 @@ use crate::certificate::verify::{prove_admissible_side, verify};
 use crate::contact::{Contact, ContactKind, Location};
 use crate::friction::{friction_limit, SLIDES};
 use crate::limit::LeastLimitState;
+use crate::limit_states::ridge::TracedEdge;
 use crate::limit_states::Survey;
 use crate::search::candidates_at;
 use crate::settings::Settings;
@@ -179,44 +180,46 @@ pub(super) fn certify_no_equilibrium_at_top(
     })
 }
 
+/// The least-thickness certificate around the least admissible state (η_s, x_s): with the
+/// solve's limit state there where it carries the mechanism, else (a non-associative gap)
+/// the search's least limit state above it; the ridge's trace, where `certify` made one, is
+/// the search's evidence.
 pub(super) fn certify_limit(
-    arch: &Arch,
-    mu: f64,
-    survey: &Survey,
-    ls: &LeastLimitState,
+    (arch, mu): (&Arch, f64),
+    (survey, traced): (&Survey, Option<&[TracedEdge]>),
+    (eta_s, x_s, at_eta_s): (f64, Reactions, Option<&LeastLimitState>),
     gap: f64,
     settings: &Settings,
 ) -> Result<Certificate, NotCertified> {
     let mut cert = empty(arch, mu, Claim::LeastThickness);
     // the bracket is around η_s, the least admissible state, which need not carry a
     // mechanism (non-associative gap): its pattern is its active set
-    let (eta_s, x_s) = (ls.eta_static, ls.x_static);
-    let gap_case = ls.eta != ls.eta_static;
-    let pattern_s: Vec<Contact> = if gap_case {
-        State {
-            arch,
-            eta: eta_s,
-            mu,
-            x: x_s,
+    let pattern_s: Vec<Contact> = match at_eta_s {
+        Some(ls) => ls.pattern.clone(),
+        None => {
+            State {
+                arch,
+                eta: eta_s,
+                mu,
+                x: x_s,
+            }
+            .verdict(ContactKind::active_at(mu), settings)
+            .active
         }
-        .verdict(ContactKind::active_at(mu), settings)
-        .active
-    } else {
-        ls.pattern.clone()
     };
     // the limit state: the one at η_s, else the least above it (only when the search is
     // complete: otherwise the widened state is not known to be the least)
-    cert.limit_state = match (&survey.states, gap_case) {
-        (_, false) => Some(limit_state_cert(ls.eta, ls.x, &ls.mechanism)),
-        (Ok(found), true) => found
+    cert.limit_state = match (at_eta_s, &survey.states) {
+        (Some(ls), _) => Some(limit_state_cert(ls.eta, ls.x, &ls.mechanism)),
+        (None, Ok(found)) => found
             .above
             .first()
             .map(|s| limit_state_cert(s.t, s.x, &s.mechanism)),
-        (Err(_), true) => None,
+        (None, Err(_)) => None,
     };
     if let (Ok(found), Some(unique)) = (&survey.states, survey.unique()) {
         cert.search = Some(evidence(
-            (arch, mu),
+            (arch, traced),
             found,
             (eta_s, x_s, &pattern_s),
             unique,

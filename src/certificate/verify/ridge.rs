@@ -352,23 +352,79 @@ pub(super) fn prove_ridge(
         joints,
         eta_hi,
     };
-    let m = ridge.edges.len();
-    let (mut cells, mut pieces, mut by_farkas, mut matched) = (0, 0, 0, 0);
-    let mut floor = eta_hi;
-    for k in 0..m {
+    let mut t = Tally {
+        floor: eta_hi,
+        ..Tally::default()
+    };
+    for k in 0..ridge.edges.len() {
         let e = edge_ctx(joints, &rows, mu, ridge, k)?;
-        let next = &ridge.edges[(k + 1) % m];
-        let (prev_row, next_row) = (
-            edge_row(joints, &ridge.edges[(k + m - 1) % m])?,
-            edge_row(joints, next)?,
-        );
+        proof.edge(&e, (ridge, k), (listed, least), &mut t)?;
+    }
+    let Tally {
+        cells,
+        pieces,
+        by_farkas,
+        matched,
+        floor,
+    } = t;
+    lines.push(format!(
+        "proved (interval arithmetic): along the {pieces} pieces of the ridge ({cells} cells), every other row is strictly inactive and the sliding and hinge columns are independent, so no limit state lies inside a piece; around {by_farkas} junctions the contacts carry no mechanism over the cell's eta (Farkas){}",
+        if matched > 0 {
+            format!("; around {matched}, one limit state only (all its contacts are active at one point of the cell), matched to a listed limit state (checked, floating point)")
+        } else {
+            String::new()
+        }
+    ));
+    if floor > eta_hi {
+        lines.push(format!(
+            "not proved: around the least limit state, that no other limit state has eta in ({eta_hi}, {floor}] ({:.1e} relative; its cell's contacts carry a mechanism)",
+            floor / eta_hi - 1.0
+        ));
+    }
+    lines.push(format!(
+        "proved: the listed limit states are every limit state with eta in ({floor}, 2){}",
+        match matched {
+            0 => String::new(),
+            n => format!(
+                " (up to the floating-point match of {n} junction state(s) to listed limit states)"
+            ),
+        }
+    ));
+    Ok(lines)
+}
+
+/// What the edges proved, for the report.
+#[derive(Default)]
+struct Tally {
+    cells: usize,
+    pieces: usize,
+    by_farkas: usize,
+    matched: usize,
+    /// The η from which the list is proved complete (above η_hi where the least limit
+    /// state's cell is left open).
+    floor: f64,
+}
+
+impl Proof<'_> {
+    /// Edge k of the ridge: the cell around each junction (its start, its breakpoints, its
+    /// last vertex), then its pieces between the cells.
+    fn edge(
+        &self,
+        e: &EdgeCtx,
+        (ridge, k): (&RidgeEvidence, usize),
+        (listed, least): (&[&LimitStateCert], Option<&LimitStateCert>),
+        t: &mut Tally,
+    ) -> Result<(), String> {
+        let m = ridge.edges.len();
+        let (prev, next) = (&ridge.edges[(k + m - 1) % m], &ridge.edges[(k + 1) % m]);
+        let (prev_row, next_row) = (edge_row(self.joints, prev)?, edge_row(self.joints, next)?);
         let edge = &ridge.edges[k];
         let ends = ends(edge)?;
-        let pairs = edge_pairs(joints, edge)?;
-        let prev_pair = *edge_pairs(joints, &ridge.edges[(k + m - 1) % m])?
+        let pairs = edge_pairs(self.joints, edge)?;
+        let prev_pair = *edge_pairs(self.joints, prev)?
             .last()
             .ok_or("an edge without pieces")?;
-        let next_pair = edge_pairs(joints, next)?[0];
+        let next_pair = edge_pairs(self.joints, next)?[0];
         // the junctions: 0..pieces (junction i starts piece i), then the last vertex
         let mut radius = vec![0.0; ends.len()];
         for i in 0..ends.len() {
@@ -398,50 +454,33 @@ pub(super) fn prove_ridge(
                 (None, Some(b)) => gap(i, b),
                 (None, None) => 1.0,
             };
-            let ctx = (&e, jn, &slides[..], &around[..]);
+            let ctx = (e, jn, &slides[..], &around[..]);
             // this edge's pieces before and after the junction
             let beside = [
                 i.checked_sub(1).map(|p| pairs[p]),
                 (!last).then(|| pairs[i]),
             ];
-            let (r, how) = proof
+            let (r, how) = self
                 .junction(ctx, (ends[i], room, beside), (listed, least))
                 .map_err(|why| format!("edge {k}, junction at s = {}: {why}", ends[i]))?;
             radius[i] = r;
-            cells += 1;
+            t.cells += 1;
             match how {
-                Settled::NoMechanism => by_farkas += 1,
-                Settled::Listed => matched += 1,
-                Settled::NearLeast(top) => floor = floor.max(top),
+                Settled::NoMechanism => t.by_farkas += 1,
+                Settled::Listed => t.matched += 1,
+                Settled::NearLeast(top) => t.floor = t.floor.max(top),
             }
         }
         for (i, pair) in pairs.iter().enumerate() {
             let span = (ends[i] + radius[i], ends[i + 1] - radius[i + 1]);
             let floor = radius[i].min(radius[i + 1]) * SPLIT_FLOOR;
-            cells += proof
-                .piece(&e, span, *pair, floor)
+            t.cells += self
+                .piece(e, span, *pair, floor)
                 .map_err(|s| format!("edge {k}, piece {i}: not proved near s = {s}"))?;
-            pieces += 1;
+            t.pieces += 1;
         }
+        Ok(())
     }
-    lines.push(format!(
-        "proved (interval arithmetic): along the {pieces} pieces of the ridge ({cells} cells), every other row is strictly inactive and the sliding and hinge columns are independent, so no limit state lies inside a piece; around {by_farkas} junctions the contacts carry no mechanism over the cell's eta (Farkas){}",
-        if matched > 0 {
-            format!("; around {matched}, one limit state only (all its contacts are active at one point of the cell), matched to a listed limit state (checked, floating point)")
-        } else {
-            String::new()
-        }
-    ));
-    if floor > eta_hi {
-        lines.push(format!(
-            "not proved: around the least limit state, that no other limit state has eta in ({eta_hi}, {floor}] ({:.1e} relative; its cell's contacts carry a mechanism)",
-            floor / eta_hi - 1.0
-        ));
-    }
-    lines.push(format!(
-        "proved: the listed limit states are every limit state with eta in ({floor}, 2)"
-    ));
-    Ok(lines)
 }
 
 impl Proof<'_> {
