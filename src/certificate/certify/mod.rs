@@ -79,18 +79,15 @@ pub fn certify(
         _ => settings.clone(),
     };
     let survey = survey(arch, mu, settings).map_err(|e| NotCertified(e.to_string()))?;
+    let limit = |least| {
+        let found = (&survey, traced.as_deref());
+        certify_limit((arch, mu), found, least, gap, settings)
+    };
     match survey.solution.outcome.clone() {
         Outcome::Limit(ls) if !ls.attained => certify_infimum(arch, mu, &ls, gap, settings),
         Outcome::Limit(ls) => {
             let at_eta_s = (ls.eta == ls.eta_static).then_some(&ls);
-            let least = (ls.eta_static, ls.x_static, at_eta_s);
-            certify_limit(
-                (arch, mu),
-                (&survey, traced.as_deref()),
-                least,
-                gap,
-                settings,
-            )
+            limit((ls.eta_static, ls.x_static, at_eta_s))
         }
         Outcome::NoEquilibrium { mu_ms: Some(m), .. } if mu < m => {
             certify_no_equilibrium(arch, mu, settings)
@@ -103,16 +100,7 @@ pub fn certify(
             reason,
             ..
         } => match &survey.states {
-            Ok(found) if !found.above.is_empty() => {
-                let least = (eta_s, x_s, None);
-                certify_limit(
-                    (arch, mu),
-                    (&survey, traced.as_deref()),
-                    least,
-                    gap,
-                    settings,
-                )
-            }
+            Ok(found) if !found.above.is_empty() => limit((eta_s, x_s, None)),
             _ => Err(NotCertified(reason)),
         },
         Outcome::Unresolved { reason, .. } | Outcome::NoCollapse { reason } => {
