@@ -166,6 +166,7 @@ fn still_true(c: &Certificate, settings: &Settings) -> Result<bool, String> {
         .outcome;
     Ok(match (c.claim, out) {
         (Claim::NoEquilibrium, Outcome::NoEquilibrium { .. }) => true,
+        (Claim::StandsAtEveryThickness, Outcome::NoCollapse { .. }) => true,
         (Claim::LeastThickness, out @ (Outcome::Limit(_) | Outcome::Unresolved { .. })) => {
             // η_s: the least admissible state's (also where the solve found no limit state
             // above it and the certificate takes the search's first)

@@ -24,6 +24,9 @@ pub enum Claim {
     LargestMultiplier,
     /// λ_static = ∞: admissible states exist at every λ from λ_lo on.
     UnboundedMultiplier,
+    /// A state is admissible at every thickness η ∈ (0, 2): η* = 0, not attained (the line
+    /// of thrust through the centre of each joint of a three-joint arch; no other section).
+    StandsAtEveryThickness,
 }
 
 impl Claim {
@@ -34,6 +37,7 @@ impl Claim {
             Claim::NoEquilibrium => "no_equilibrium",
             Claim::LargestMultiplier => "largest_multiplier",
             Claim::UnboundedMultiplier => "unbounded_multiplier",
+            Claim::StandsAtEveryThickness => "stands_at_every_thickness",
         }
     }
 }
@@ -88,6 +92,22 @@ pub struct Farkas {
     /// η_lo (`null` for the friction-only problem, where η does not enter).
     pub eta: Option<f64>,
     /// The contacts and their multipliers.
+    pub joints: Vec<CertJoint>,
+}
+
+/// One cell of a `no_equilibrium` proof over the thickness: a Farkas certificate that no
+/// state is admissible at any η in [`eta_lo`, `eta_hi`] (its multipliers, stored at the
+/// cell's middle, are the signed cofactors of the rows' gradients, which depend on η).
+///
+/// [`eta_lo`]: FarkasCell::eta_lo
+/// [`eta_hi`]: FarkasCell::eta_hi
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct FarkasCell {
+    /// The cell's least thickness.
+    pub eta_lo: f64,
+    /// The cell's greatest thickness.
+    pub eta_hi: f64,
+    /// The contacts and their multipliers (at the cell's middle).
     pub joints: Vec<CertJoint>,
 }
 
@@ -270,6 +290,10 @@ pub struct Certificate {
     pub safe: Option<SafeSide>,
     /// Lower-bound side.
     pub collapse: Option<Farkas>,
+    /// `no_equilibrium` over every thickness where the weight moves with η (true
+    /// centroid): Farkas cells covering [0, 2], in order, each ending where the next begins.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub collapse_cells: Option<Vec<FarkasCell>>,
     /// The limit state.
     pub limit_state: Option<LimitStateCert>,
     /// η_hi − η_lo.
@@ -554,11 +578,13 @@ impl Certificate {
 
     /// Whether the certificate delivers a requested relative gap: a least-thickness claim
     /// when (η_hi − η_lo)/η_hi ≤ `requested` as computed in floating point, a
-    /// largest-multiplier claim when λ_hi − λ_lo ≤ `requested` λ_hi; a no-equilibrium or
-    /// unbounded-multiplier claim always (it has no gap).
+    /// largest-multiplier claim when λ_hi − λ_lo ≤ `requested` λ_hi; a no-equilibrium,
+    /// unbounded-multiplier or stands-at-every-thickness claim always (it has no gap).
     pub fn delivers_gap(&self, requested: f64) -> bool {
         match self.claim {
-            Claim::NoEquilibrium | Claim::UnboundedMultiplier => true,
+            Claim::NoEquilibrium | Claim::UnboundedMultiplier | Claim::StandsAtEveryThickness => {
+                true
+            }
             Claim::LeastThickness => self
                 .bracket()
                 .is_some_and(|(lo, hi)| (hi - lo) / hi <= requested),

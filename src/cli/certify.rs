@@ -193,6 +193,9 @@ fn claim_text(cert: &Certificate, requested: f64) -> String {
         (None, None, Some(eta)) => {
             format!("claim: no state is admissible at any lambda >= 0 at eta = {eta}, mu = {mu}")
         }
+        (None, _, None) if cert.claim == Claim::StandsAtEveryThickness => format!(
+            "claim: a state is admissible at every thickness eta > 0 at mu = {mu} (eta* = 0, not attained)"
+        ),
         (None, _, None) => format!("claim: no thickness stands at mu = {mu}"),
     }
 }
@@ -202,6 +205,9 @@ fn limit_states_text(cert: &Certificate) -> String {
     // no admissible state at all: no limit state either, nothing more to certify
     if cert.claim == Claim::NoEquilibrium {
         return String::new();
+    }
+    if cert.claim == Claim::StandsAtEveryThickness {
+        return "  limit states: not certified (no least thickness to bracket; `modes` and `solve` list the limit states above it)\n".to_string();
     }
     if cert.load.is_some() {
         return cert.load_search.as_ref().map_or(

@@ -26,6 +26,7 @@ pub(super) fn empty(arch: &Arch, mu: f64, claim: Claim) -> Certificate {
         claim,
         safe: None,
         collapse: None,
+        collapse_cells: None,
         limit_state: None,
         gap: None,
         gap_relative: None,

@@ -43,7 +43,9 @@ use load_bracket::{bracket, static_state};
 use load_ends::{no_equilibrium, unbounded};
 use load_search::{evidence, unbounded_evidence};
 use loaded::load_spec;
-use thickness::{certify_limit, certify_no_equilibrium, certify_no_equilibrium_at_top};
+use thickness::{
+    certify_limit, certify_no_equilibrium, certify_no_equilibrium_at_top, certify_stands,
+};
 
 use crate::arch::{Arch, JointLayout};
 use crate::certificate::format::{Certificate, Claim, NotCertified};
@@ -103,9 +105,8 @@ pub fn certify(
             Ok(found) if !found.above.is_empty() => limit((eta_s, x_s, None)),
             _ => Err(NotCertified(reason)),
         },
-        Outcome::Unresolved { reason, .. } | Outcome::NoCollapse { reason } => {
-            Err(NotCertified(reason))
-        }
+        Outcome::NoCollapse { reason } => certify_stands(arch, mu, &reason),
+        Outcome::Unresolved { reason, .. } => Err(NotCertified(reason)),
     }
 }
 

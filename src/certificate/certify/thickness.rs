@@ -1,6 +1,7 @@
 //! A thickness certificate: the bracket around η_s built from the exact limit state (see the
 //! module documentation of [`crate::certificate`]), or, below μ_ms, a friction-only Farkas
-//! certificate that no thickness stands.
+//! certificate that no thickness stands; above it, Farkas certificates at η = 2 or over
+//! cells of η; and the centred line of thrust of an arch that stands at every thickness.
 
 use super::blank::empty;
 use super::loaded::{cert_joints, Loaded};
@@ -8,8 +9,10 @@ use super::search::{evidence, limit_state_cert};
 use super::sides::{chord_pool, find_farkas, move_inside, widening, Row};
 use crate::admissibility::{margin_over_arch, Goal, WorkingSet};
 use crate::arch::{Arch, WeightModel};
-use crate::certificate::format::{Certificate, Claim, Farkas, NotCertified, SafeSide, Side};
-use crate::certificate::verify::{prove_admissible_side, verify};
+use crate::certificate::format::{
+    Certificate, Claim, Farkas, FarkasCell, NotCertified, SafeSide, Side,
+};
+use crate::certificate::verify::{prove_admissible_side, prove_farkas_cell, verify};
 use crate::contact::{Contact, ContactKind, Location};
 use crate::friction::{friction_limit, SLIDES};
 use crate::limit::LeastLimitState;
@@ -112,58 +115,26 @@ fn spread_slides(arch: &Arch) -> Vec<Contact> {
 /// is admissible.
 const ETA_LIMIT: f64 = 2.0;
 
-/// No thickness stands at μ although μ is not below μ_ms (or no μ_ms exists): a Farkas
-/// certificate that no state is admissible at the thickness limit η = 2, from the contacts
-/// of the margin LP's best state there. With the weight along the centreline the
-/// admissible set only grows with η (the verifier says why), so that proves it for every
-/// η < 2; with the true-centroid weight the weight itself moves with η and no such proof is
-/// offered.
+/// No thickness stands at μ although μ is not below μ_ms (or no μ_ms exists). With the
+/// weight along the centreline, a Farkas certificate that no state is admissible at the
+/// thickness limit η = 2: the admissible set only grows with η (the verifier says why), so
+/// that proves it for every η < 2. With the true-centroid weight the weight itself moves
+/// with η: Farkas cells that cover [0, 2], each proved over its whole interval of η.
 pub(super) fn certify_no_equilibrium_at_top(
     arch: &Arch,
     mu: f64,
     settings: &Settings,
 ) -> Result<Certificate, NotCertified> {
-    if arch.weight() != WeightModel::Centreline {
-        return Err(NotCertified(
-            "no equilibrium at eta < 2 is certified for the centreline weight only (with the true-centroid weight the admissible set is not monotone in eta)".into(),
-        ));
-    }
-    let modes = ContactKind::active_at(mu);
-    let mut ws = WorkingSet::initial(arch);
-    let m = margin_over_arch(
-        arch,
-        ETA_LIMIT,
-        mu,
-        modes,
-        &mut ws,
-        Goal::Optimise,
-        settings,
-    )
-    .map_err(|e| NotCertified(format!("the margin LP at eta = 2 failed: {e:?}")))?;
-    let top = State {
-        arch,
-        eta: ETA_LIMIT,
-        mu,
-        x: m.x,
-    };
-    // the best local maxima there, and every row at both springings (a Farkas row need not
-    // be a local maximum of its function at the LP's state)
-    let mut contacts = candidates_at(&top, None, modes, settings);
-    for beta in [arch.beta_right(), arch.beta_left()] {
-        for &kind in modes {
-            if !contacts.iter().any(|c| c.kind == kind && c.beta == beta) {
-                contacts.push(Contact {
-                    beta,
-                    kind,
-                    at: Location::Springing,
-                    free: false,
-                });
-            }
-        }
-    }
-    let active: Vec<Loaded> = contacts.into_iter().map(|c| (c, Side::After)).collect();
-    let pool = chord_pool(arch, &active);
     let cert = empty(arch, mu, Claim::NoEquilibrium);
+    if arch.weight() != WeightModel::Centreline {
+        let mut cells = Vec::new();
+        cover(&cert, (arch, mu), (0.0, ETA_LIMIT), 0, &mut cells, settings)?;
+        return Ok(Certificate {
+            collapse_cells: Some(cells),
+            ..cert
+        });
+    }
+    let pool = pool_at(arch, ETA_LIMIT, mu, settings)?;
     let f = find_contact_farkas(arch, &pool, ETA_LIMIT, mu, 3, |f| {
         let mut c = cert.clone();
         c.collapse = Some(f.clone());
@@ -178,6 +149,91 @@ pub(super) fn certify_no_equilibrium_at_top(
         collapse: Some(f),
         ..cert
     })
+}
+
+/// A Farkas cell is halved at most this many times below [0, 2] before `certify` gives up.
+const CELL_DEPTH: usize = 10;
+
+/// Covers the thicknesses `[lo, hi]` with Farkas cells, left to right: a certificate at the
+/// middle proved over the whole cell, else the two halves.
+fn cover(
+    cert: &Certificate,
+    (arch, mu): (&Arch, f64),
+    (lo, hi): (f64, f64),
+    depth: usize,
+    cells: &mut Vec<FarkasCell>,
+    settings: &Settings,
+) -> Result<(), NotCertified> {
+    let mid = 0.5 * (lo + hi);
+    let cell = |f: &Farkas| FarkasCell {
+        eta_lo: lo,
+        eta_hi: hi,
+        joints: f.joints.clone(),
+    };
+    let pool = pool_at(arch, mid, mu, settings)?;
+    let proved = |f: &Farkas| prove_farkas_cell(cert, &cell(f)).is_ok();
+    if let Some(f) = find_contact_farkas(arch, &pool, mid, mu, 3, proved) {
+        cells.push(cell(&f));
+        return Ok(());
+    }
+    if depth == CELL_DEPTH {
+        return Err(NotCertified(format!(
+            "no Farkas certificate could be proved over eta in [{lo}, {hi}] (mu = {mu})"
+        )));
+    }
+    cover(cert, (arch, mu), (lo, mid), depth + 1, cells, settings)?;
+    cover(cert, (arch, mu), (mid, hi), depth + 1, cells, settings)
+}
+
+/// The contacts for a Farkas certificate that no state stands at `eta`: the local maxima
+/// at the margin LP's best state there, every row at both springings (a Farkas row need not
+/// be a local maximum of its function at the LP's state), and their chords.
+fn pool_at(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    settings: &Settings,
+) -> Result<Vec<Loaded>, NotCertified> {
+    let modes = ContactKind::active_at(mu);
+    let mut ws = WorkingSet::initial(arch);
+    let m = margin_over_arch(arch, eta, mu, modes, &mut ws, Goal::Optimise, settings)
+        .map_err(|e| NotCertified(format!("the margin LP at eta = {eta} failed: {e:?}")))?;
+    let best = State {
+        arch,
+        eta,
+        mu,
+        x: m.x,
+    };
+    let mut contacts = candidates_at(&best, None, modes, settings);
+    for beta in [arch.beta_right(), arch.beta_left()] {
+        for &kind in modes {
+            if !contacts.iter().any(|c| c.kind == kind && c.beta == beta) {
+                contacts.push(Contact {
+                    beta,
+                    kind,
+                    at: Location::Springing,
+                    free: false,
+                });
+            }
+        }
+    }
+    let active: Vec<Loaded> = contacts.into_iter().map(|c| (c, Side::After)).collect();
+    Ok(chord_pool(arch, &active))
+}
+
+/// An arch that stands at every thickness η > 0: the centred line of thrust, proved by the
+/// verifier (a discrete arch of three joints; otherwise, or where it is not proved, no
+/// certificate, with `reason`, the solver's answer, and why not).
+pub(super) fn certify_stands(
+    arch: &Arch,
+    mu: f64,
+    reason: &str,
+) -> Result<Certificate, NotCertified> {
+    let cert = empty(arch, mu, Claim::StandsAtEveryThickness);
+    match verify(&cert) {
+        Ok(_) => Ok(cert),
+        Err(r) => Err(NotCertified(format!("{reason}; not certified: {}", r.0))),
+    }
 }
 
 /// The least-thickness certificate around the least admissible state (η_s, x_s): with the

@@ -21,7 +21,7 @@ fn joint_row(
     mu: Option<f64>,
 ) -> ([I; 3], I, I) {
     // `exists` guarantees a finite μ for sliding rows; hinge rows do not use it
-    let (g, c) = affine(model, j.kind, j.beta, eta, mu.unwrap_or(0.0));
+    let (g, c) = affine(model, j.kind, j.beta, I::point(eta), mu.unwrap_or(0.0));
     let l = live
         .and_then(|live| live.ntm(model, I::point(j.beta), live.carries(j.beta, j.side)))
         .map_or(I::point(0.0), |l| phi(j.kind, 0, &l, eta, mu));
@@ -49,6 +49,12 @@ fn prove_rows(
             (g, c)
         })
         .collect();
+    prove_cofactors(&rows, &stored_of(joints, lambda_row))
+}
+
+/// The stored multipliers of the joints (and of the row −λ ≤ 0, when given), each with a
+/// label for the messages.
+fn stored_of(joints: &[CertJoint], lambda_row: Option<f64>) -> Vec<(f64, String)> {
     let mut stored: Vec<(f64, String)> = joints
         .iter()
         .map(|j| (j.y, format!("beta = {}{}", j.beta, side_text(j.side))))
@@ -56,15 +62,15 @@ fn prove_rows(
     if let Some(y) = lambda_row {
         stored.push((y, "the row -lambda <= 0".to_string()));
     }
-    prove_cofactors(&rows, &stored)
+    stored
 }
 
-/// Proves that the Farkas joints rule out every state at η (or, with `friction_only`,
-/// every (h, v) for the sliding conditions alone, w left out).
+/// Proves that the Farkas joints rule out every state at every η in `eta` (a point, or a
+/// cell; with `friction_only`, every (h, v) for the sliding conditions alone, w left out).
 pub(super) fn prove_farkas(
     model: &Model,
     joints: &[CertJoint],
-    eta: f64,
+    eta: I,
     mu: Option<f64>,
     friction_only: bool,
 ) -> Result<f64, Rejection> {
@@ -85,14 +91,54 @@ pub(super) fn prove_farkas(
             ));
         }
     }
-    let rows = joints
+    // `exists` (checked above) guarantees a finite μ for sliding rows
+    let at = |e: I| -> Vec<(Vec<I>, I)> {
+        joints
+            .iter()
+            .map(|j| {
+                let (g, c) = affine(model, j.kind, j.beta, e, mu.unwrap_or(0.0));
+                (g.to_vec(), c)
+            })
+            .collect()
+    };
+    if eta.lo < eta.hi && !friction_only {
+        return prove_over_cell(joints, eta, at);
+    }
+    prove_rows(
+        at(eta),
+        if friction_only { &[2] } else { &[] },
+        joints,
+        None,
+    )
+}
+
+/// The Farkas proof over a cell of η, the multipliers in centred form about the cell's
+/// middle m (|η − m| ≤ `half`, rounded up): the hinge rows' gradients ±∇M − (η/2)∇N have
+/// the slope −∇N/2 in η, the sliding rows' none.
+fn prove_over_cell(
+    joints: &[CertJoint],
+    eta: I,
+    at: impl Fn(I) -> Vec<(Vec<I>, I)>,
+) -> Result<f64, Rejection> {
+    let m = 0.5 * (eta.lo + eta.hi);
+    let half = (eta.hi - m).max(m - eta.lo).next_up();
+    let grads =
+        |rows: &[(Vec<I>, I)]| -> Vec<Vec<I>> { rows.iter().map(|r| r.0.clone()).collect() };
+    let (mid, over) = (at(I::point(m)), at(eta));
+    let slopes: Vec<Vec<I>> = joints
         .iter()
         .map(|j| {
-            let (g, c, _) = joint_row(model, None, j, eta, mu);
-            (g.to_vec(), c)
+            let b = I::point(j.beta);
+            match j.kind.is_hinge() {
+                true => vec![b.sin().scale(-0.5), b.cos().scale(-0.5), I::point(0.0)],
+                false => vec![I::point(0.0); 3],
+            }
         })
         .collect();
-    prove_rows(rows, if friction_only { &[2] } else { &[] }, joints, None)
+    let y = cofactors_over(&grads(&mid), &grads(&over), &slopes, half);
+    let consts: Vec<I> = over.iter().map(|r| r.1).collect();
+    let at_mid = cofactors(&grads(&mid));
+    prove_multipliers(y, Some(at_mid), &consts, &stored_of(joints, None))
 }
 
 /// The Farkas proof for rows over the unknowns (h, v, w) — and λ when `with_lambda` — after
@@ -219,12 +265,20 @@ pub(super) fn prove_cofactors(
     rows: &[(Vec<I>, I)],
     stored: &[(f64, String)],
 ) -> Result<f64, Rejection> {
-    let d = rows.len() - 1;
-    let y: Vec<I> = (0..=d)
+    let grads: Vec<Vec<I>> = rows.iter().map(|r| r.0.clone()).collect();
+    let consts: Vec<I> = rows.iter().map(|r| r.1).collect();
+    prove_multipliers(cofactors(&grads), None, &consts, stored)
+}
+
+/// The signed cofactors of d + 1 gradients in d unknowns (d = 2, 3 or 4): the exact
+/// multipliers of their Farkas combination, up to a common factor.
+fn cofactors(grads: &[Vec<I>]) -> Vec<I> {
+    let d = grads.len() - 1;
+    (0..=d)
         .map(|i| {
             let cols: Vec<usize> = (0..=d).filter(|&k| k != i).collect();
             let sign = if i % 2 == 0 { 1.0 } else { -1.0 };
-            let g = |k: usize, r: usize| rows[cols[k]].0[r];
+            let g = |k: usize, r: usize| grads[cols[k]][r];
             let det = match d {
                 4 => det4([0, 1, 2, 3].map(|k| [0, 1, 2, 3].map(|r| g(k, r)))),
                 3 => det3([0, 1, 2].map(|k| [0, 1, 2].map(|r| g(k, r)))),
@@ -232,24 +286,66 @@ pub(super) fn prove_cofactors(
             };
             det.scale(sign)
         })
-        .collect();
+        .collect()
+}
+
+/// The cofactors over a cell of η in centred (mean-value) form, y(E) ⊂ y(m) + y'(E)(E − m):
+/// each gradient is affine in η (`over` the cell, at its middle `at_mid`, slope `slopes`),
+/// so y' is the sum over the rows of the cofactors with that row's gradient replaced by its
+/// slope. The naive enclosure over the cell loses a small multiplier in the dependency of
+/// the entries on η; this one keeps it to the width of its true variation.
+fn cofactors_over(at_mid: &[Vec<I>], over: &[Vec<I>], slopes: &[Vec<I>], half: f64) -> Vec<I> {
+    let mut dy = vec![I::point(0.0); over.len()];
+    for (k, slope) in slopes.iter().enumerate() {
+        if slope.iter().all(|v| v.lo == 0.0 && v.hi == 0.0) {
+            continue;
+        }
+        let mut g = over.to_vec();
+        g[k].clone_from(slope);
+        for (i, c) in cofactors(&g).into_iter().enumerate() {
+            // the cofactor of row k itself does not contain row k
+            if i != k {
+                dy[i] = dy[i] + c;
+            }
+        }
+    }
+    let spread = I::new(-half, half);
+    cofactors(at_mid)
+        .into_iter()
+        .zip(dy)
+        .map(|(y, dy)| y + dy * spread)
+        .collect()
+}
+
+/// The Farkas proof from the multipliers `y` (exact, enclosed) and the rows' constants: the
+/// multipliers must share a sign, the `stored` ones must match `matched` (the multipliers
+/// at one point: `y` itself, or at a cell's middle), and Σ yᵢ cᵢ > 0.
+fn prove_multipliers(
+    y: Vec<I>,
+    matched: Option<Vec<I>>,
+    consts: &[I],
+    stored: &[(f64, String)],
+) -> Result<f64, Rejection> {
     let positive = y.iter().all(|v| v.lo > 0.0);
     let negative = y.iter().all(|v| v.hi < 0.0);
     if !positive && !negative {
         return reject("collapse side: the exact Farkas multipliers do not share a sign (or are not resolved): no proof");
     }
-    let y: Vec<I> = if negative {
-        y.iter().map(|v| -*v).collect()
-    } else {
-        y
+    let flip = |y: Vec<I>| -> Vec<I> {
+        match negative {
+            true => y.iter().map(|v| -*v).collect(),
+            false => y,
+        }
     };
+    let y = flip(y);
+    let matched = flip(matched.unwrap_or_else(|| y.clone()));
     // the stored multipliers must be the recomputed ones (normalised to sum 1), to the
     // width of their enclosure (a few times over: `certify` computes them from its own
     // rounding of the same rows) and a rounding of the normalisation: an edited digit is
     // rejected, though it would prove nothing false
-    let total: f64 = y.iter().map(|v| v.mid()).sum();
+    let total: f64 = matched.iter().map(|v| v.mid()).sum();
     let stored_total: f64 = stored.iter().map(|s| s.0).sum();
-    for ((sy, label), v) in stored.iter().zip(&y) {
+    for ((sy, label), v) in stored.iter().zip(&matched) {
         let (a, b) = (v.mid() / total, sy / stored_total);
         let allowed = MULTIPLIER_WIDTHS * (v.hi - v.lo) / total + MULTIPLIER_REL * (1.0 + a.abs());
         if stored_total.is_nan() || stored_total <= 0.0 || (a - b).abs() > allowed || *sy < 0.0 {
@@ -258,13 +354,13 @@ pub(super) fn prove_cofactors(
     }
     let c = y
         .iter()
-        .zip(rows)
-        .fold(I::point(0.0), |acc, (yi, (_, ci))| acc + *yi * *ci);
+        .zip(consts)
+        .fold(I::point(0.0), |acc, (yi, ci)| acc + *yi * *ci);
     if c.lo.is_nan() || c.lo <= 0.0 {
         return reject(format!(
             "collapse side: sum y_i phi_i(0) = [{:e}, {:e}] is not proved > 0",
             c.lo, c.hi
         ));
     }
-    Ok(c.lo / total)
+    Ok(c.lo / y.iter().map(|v| v.mid()).sum::<f64>())
 }

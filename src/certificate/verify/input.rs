@@ -31,6 +31,18 @@ pub(super) fn check_finite(cert: &Certificate) -> Result<(), Rejection> {
             nums.extend([("collapse.joints.beta", j.beta), ("collapse.joints.y", j.y)]);
         }
     }
+    for cell in cert.collapse_cells.iter().flatten() {
+        nums.extend([
+            ("collapse_cells.eta_lo", cell.eta_lo),
+            ("collapse_cells.eta_hi", cell.eta_hi),
+        ]);
+        for j in &cell.joints {
+            nums.extend([
+                ("collapse_cells.joints.beta", j.beta),
+                ("collapse_cells.joints.y", j.y),
+            ]);
+        }
+    }
     if let Some(ls) = &cert.limit_state {
         nums.push(("limit_state.eta", ls.eta));
         nums.extend(ls.x.iter().map(|&v| ("limit_state.x", v)));

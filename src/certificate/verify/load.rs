@@ -34,15 +34,22 @@ pub(super) fn verify_load(cert: &Certificate, model: &Model) -> Result<Report, R
             cert.claim.name()
         ));
     };
-    if matches!(cert.claim, Claim::LeastThickness) {
-        return reject("a least_thickness claim carries no load section");
+    if matches!(
+        cert.claim,
+        Claim::LeastThickness | Claim::StandsAtEveryThickness
+    ) {
+        return reject(format!(
+            "a {} claim carries no load section",
+            cert.claim.name()
+        ));
     }
     if cert.safe.is_some()
         || cert.collapse.is_some()
+        || cert.collapse_cells.is_some()
         || cert.limit_state.is_some()
         || cert.search.is_some()
     {
-        return reject("a load certificate carries none of the thickness sections (safe, collapse, limit_state, search)");
+        return reject("a load certificate carries none of the thickness sections (safe, collapse, collapse_cells, limit_state, search)");
     }
     let live = Live::of(spec, model)?;
     let Some(sides) = &cert.multiplier else {
@@ -65,7 +72,7 @@ pub(super) fn verify_load(cert: &Certificate, model: &Model) -> Result<Report, R
             no_equilibrium(cert, model, &live, sides, &mut checks)?;
             None
         }
-        Claim::LeastThickness => unreachable!("checked above"),
+        Claim::LeastThickness | Claim::StandsAtEveryThickness => unreachable!("checked above"),
     };
     let limit_states = match &cert.load_search {
         Some(search) => {

@@ -26,6 +26,7 @@
 //! and the search walker `search.rs`), and the claims (`thickness.rs`; `load.rs` with
 //! `load_unbounded.rs`).
 
+mod centred;
 mod enclosure;
 mod farkas;
 mod input;
@@ -45,13 +46,13 @@ pub(crate) use mechanism::one_sense_choices;
 pub use report::{Rejection, Report};
 pub use statics::LIMIT_STATE_TOL;
 
-use crate::certificate::format::{Certificate, Claim, FORMAT, VERSION};
+use crate::certificate::format::{Certificate, Claim, FarkasCell, FORMAT, VERSION};
 use enclosure::prove_state;
 use input::{check_finite, model_of};
 use live::{Live, StateAt};
 use load::{check_state, verify_load};
 use report::reject;
-use thickness::verify_thickness;
+use thickness::{prove_cell, verify_thickness};
 
 /// Re-checks `cert`. Ok with what was proved and checked, or the first reason it fails.
 pub fn verify(cert: &Certificate) -> Result<Report, Rejection> {
@@ -106,4 +107,12 @@ pub fn prove_admissible_side(cert: &Certificate) -> Result<usize, Rejection> {
     let live = Live::of(spec, &model)?;
     let state = StateAt::loaded(&live, adm.lambda, adm.x);
     prove_state(&model, state, cert.mu, false, "admissible side")
+}
+
+/// Proves one Farkas cell of a `no_equilibrium` certificate over its whole η interval, on
+/// the certificate's arch and μ (used by `certify` while it covers [0, 2]); returns its
+/// margin.
+pub fn prove_farkas_cell(cert: &Certificate, cell: &FarkasCell) -> Result<f64, Rejection> {
+    let model = model_of(cert)?;
+    prove_cell(&model, cell, cert.mu)
 }

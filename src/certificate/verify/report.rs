@@ -59,6 +59,11 @@ impl Report {
                 ),
             };
         }
+        if self.claim == Claim::StandsAtEveryThickness {
+            return format!(
+                "proved: for this arch at mu = {mu}, a state is statically admissible at every thickness eta in (0, 2): eta* = 0, not attained (no least thickness)"
+            );
+        }
         match self.bracket {
             Some((lo, hi)) => format!(
                 "proved: for this arch at mu = {mu}, eta* lies in [{lo}, {hi}] (relative gap {:.3e}; eta* = the least thickness with a statically admissible state)",

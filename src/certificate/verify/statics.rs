@@ -157,26 +157,21 @@ pub(super) fn kinds(mu: Option<f64>) -> &'static [ContactKind] {
     }
 }
 
-/// Interval gradient (w.r.t. x) and constant term of an activation function at β.
-pub(super) fn affine(
-    model: &Model,
-    kind: ContactKind,
-    beta: f64,
-    eta: f64,
-    mu: f64,
-) -> ([I; 3], I) {
+/// Interval gradient (w.r.t. x) and constant term of an activation function at β, over
+/// the thicknesses `eta` (a point, or a cell of a proof over η).
+pub(super) fn affine(model: &Model, kind: ContactKind, beta: f64, eta: I, mu: f64) -> ([I; 3], I) {
     let b = I::point(beta);
     let (s, c) = (b.sin(), b.cos());
     let br = I::point(model.beta_r);
     let (sr, cr) = (br.sin(), br.cos());
     let d = b - br;
-    let rho = model.rho(eta);
+    let rho = model.rho_over(eta);
     let z = I::point(0.0);
     let gn = [s, c, z];
     let gt = [c, -s, z];
     let gm = [-(s - sr), cr - c, I::point(1.0)];
     let (n0, t0, m0) = (-(d * c), d * s, d * c - rho * (s - sr));
-    let he = I::point(0.5) * I::point(eta);
+    let he = I::point(0.5) * eta;
     let m = I::point(mu);
     let comb = |a: I, g1: [I; 3], c1: I, k: I, g2: [I; 3], c2: I| {
         (

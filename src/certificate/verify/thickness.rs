@@ -1,7 +1,10 @@
-//! Re-checking a thickness certificate (`least_thickness` or `no_equilibrium`): the safe
-//! state proved admissible at η_hi over the whole arch, the Farkas certificate proved at
-//! η_lo, the limit state checked, and the `search` section re-checked ([`super::search`]).
+//! Re-checking a thickness certificate (`least_thickness`, `no_equilibrium` or
+//! `stands_at_every_thickness`): the safe state proved admissible at η_hi over the whole
+//! arch, the Farkas certificate proved at η_lo (or over cells of η), the limit state
+//! checked, and the `search` section re-checked ([`super::search`]); the centred line of
+//! thrust of a three-joint arch ([`super::centred`]).
 
+use super::centred::prove_centred;
 use super::enclosure::prove_state;
 use super::farkas::prove_farkas;
 use super::input::check_gap;
@@ -11,19 +14,30 @@ use super::live::StateAt;
 use super::report::{mu_text, reject, Rejection, Report};
 use super::search::verify_search;
 use super::statics::{Model, LIMIT_STATE_TOL};
-use crate::certificate::format::{CertJoint, Certificate, Claim};
+use crate::certificate::format::{CertJoint, Certificate, Claim, FarkasCell};
+use crate::certificate::interval::Interval as I;
 
 /// Re-checks a certificate of the thickness problem (`least_thickness` or
 /// `no_equilibrium`, no load section) on its checked arch `model`.
 pub(super) fn verify_thickness(cert: &Certificate, model: &Model) -> Result<Report, Rejection> {
     let mut checks = Vec::new();
     let mut limit_states = None;
+    if cert.collapse_cells.is_some() && cert.claim != Claim::NoEquilibrium {
+        return reject(format!(
+            "collapse_cells belong to a no_equilibrium claim, not to {}",
+            cert.claim.name()
+        ));
+    }
     let bracket = match cert.claim {
         Claim::LargestMultiplier | Claim::UnboundedMultiplier => {
             unreachable!("load claims are verified by verify_load")
         }
         Claim::NoEquilibrium => {
             checks.push(no_equilibrium(cert, model)?);
+            None
+        }
+        Claim::StandsAtEveryThickness => {
+            checks.push(stands(cert, model)?);
             None
         }
         Claim::LeastThickness => {
@@ -51,19 +65,26 @@ const ETA_LIMIT: f64 = 2.0;
 /// certificate at the thickness limit η = 2 (centreline weight); proved; returns the
 /// report's line.
 fn no_equilibrium(cert: &Certificate, model: &Model) -> Result<String, Rejection> {
-    let Some(f) = &cert.collapse else {
-        return reject("no_equilibrium claim without a Farkas certificate");
-    };
     if cert.safe.is_some() || cert.limit_state.is_some() || cert.search.is_some() {
         return reject("a no_equilibrium claim cannot carry a safe state or a limit state");
     }
+    match (&cert.collapse, &cert.collapse_cells) {
+        (None, Some(cells)) => return no_equilibrium_over_cells(cert, model, cells),
+        (Some(_), Some(_)) => {
+            return reject("a no_equilibrium claim carries collapse or collapse_cells, not both")
+        }
+        _ => {}
+    }
+    let Some(f) = &cert.collapse else {
+        return reject("no_equilibrium claim without a Farkas certificate");
+    };
     if let Some(eta) = f.eta {
         return no_equilibrium_at_limit(cert, model, &f.joints, eta);
     }
     if cert.mu.is_none() {
         return reject("no_equilibrium claim at infinite friction (mu = null): the friction-only problem has no sliding rows there");
     }
-    let margin = prove_farkas(model, &f.joints, 1.0, cert.mu, true)?;
+    let margin = prove_farkas(model, &f.joints, I::point(1.0), cert.mu, true)?;
     Ok(format!(
         "proved (interval arithmetic): no (h, v) satisfies |T| <= mu N at the {} listed joints (Farkas, margin {margin:.3e}), so no thickness can stand at mu = {}",
         f.joints.len(),
@@ -90,10 +111,94 @@ fn no_equilibrium_at_limit(
     if model.centroid {
         return reject("a no_equilibrium certificate at eta = 2 needs the centreline weight (with the true-centroid weight the admissible set is not monotone in eta)");
     }
-    let margin = prove_farkas(model, joints, eta, cert.mu, false)?;
+    let margin = prove_farkas(model, joints, I::point(eta), cert.mu, false)?;
     Ok(format!(
         "proved (interval arithmetic): no state is admissible at the thickness limit eta = 2 (Farkas on 4 joints, margin {margin:.3e}); with the weight along the centreline a state admissible at any eta < 2 (N >= 0 there) would be admissible at eta = 2, so no thickness stands at mu = {}",
         mu_text(cert.mu)
+    ))
+}
+
+/// `no_equilibrium` by Farkas cells that cover the thicknesses [0, 2], each proved over its
+/// whole η interval (the cofactors are enclosed with η an interval): no state is admissible
+/// at any thickness, for either weight model.
+fn no_equilibrium_over_cells(
+    cert: &Certificate,
+    model: &Model,
+    cells: &[FarkasCell],
+) -> Result<String, Rejection> {
+    check_cover(cells)?;
+    let mut least = f64::INFINITY;
+    for (i, cell) in cells.iter().enumerate() {
+        let margin = prove_cell(model, cell, cert.mu).map_err(|r| {
+            Rejection(format!(
+                "collapse_cells[{i}] (eta in [{}, {}]): {}",
+                cell.eta_lo, cell.eta_hi, r.0
+            ))
+        })?;
+        least = least.min(margin);
+    }
+    Ok(format!(
+        "proved (interval arithmetic): no state is admissible at any thickness eta in [0, 2] ({} cell(s), each a Farkas certificate on 4 joints proved over its whole eta interval; least margin {least:.3e}), so no thickness stands at mu = {}",
+        cells.len(),
+        mu_text(cert.mu)
+    ))
+}
+
+/// The cells must cover [0, 2] in order, each ending exactly where the next begins.
+fn check_cover(cells: &[FarkasCell]) -> Result<(), Rejection> {
+    let (Some(first), Some(last)) = (cells.first(), cells.last()) else {
+        return reject("collapse_cells is empty");
+    };
+    if first.eta_lo != 0.0 || last.eta_hi != ETA_LIMIT {
+        return reject(format!(
+            "collapse_cells must cover the thicknesses [0, 2]; they cover [{}, {}]",
+            first.eta_lo, last.eta_hi
+        ));
+    }
+    if let Some(i) = cells.iter().position(|c| c.eta_lo >= c.eta_hi) {
+        return reject(format!(
+            "collapse_cells[{i}]: eta_lo = {} is not below eta_hi = {}",
+            cells[i].eta_lo, cells[i].eta_hi
+        ));
+    }
+    if let Some(i) = cells.windows(2).position(|w| w[0].eta_hi != w[1].eta_lo) {
+        return reject(format!(
+            "collapse_cells[{i}] ends at eta = {} but collapse_cells[{}] begins at {}",
+            cells[i].eta_hi,
+            i + 1,
+            cells[i + 1].eta_lo
+        ));
+    }
+    Ok(())
+}
+
+/// One Farkas cell proved over its whole η interval; returns its margin.
+pub(super) fn prove_cell(
+    model: &Model,
+    cell: &FarkasCell,
+    mu: Option<f64>,
+) -> Result<f64, Rejection> {
+    let eta = I::new(cell.eta_lo, cell.eta_hi);
+    prove_farkas(model, &cell.joints, eta, mu, false)
+}
+
+/// `stands_at_every_thickness`: no other section; the centred line of thrust proved.
+fn stands(cert: &Certificate, model: &Model) -> Result<String, Rejection> {
+    if cert.safe.is_some()
+        || cert.collapse.is_some()
+        || cert.limit_state.is_some()
+        || cert.search.is_some()
+        || cert.gap.is_some()
+    {
+        return reject("a stands_at_every_thickness claim carries no other section (safe, collapse, limit_state, search, gap)");
+    }
+    let (cells, x) = prove_centred(model, cert.mu)?;
+    Ok(format!(
+        "proved (interval arithmetic): the line of thrust through the centre of each of the 3 joints (M = 0 there; x = [{}, {}, {}] at eta = 0) has N > 0{} at every joint for every eta in [0, 2] ({cells} cell(s)), so every hinge row -eta N/2 < 0: a state is admissible at every thickness eta > 0",
+        x[0],
+        x[1],
+        x[2],
+        if cert.mu.is_some() { " and |T| < mu N" } else { "" }
     ))
 }
 
@@ -132,7 +237,7 @@ fn least_thickness(
         "proved (interval arithmetic): the state x = [{}, {}, {}] is admissible at eta_hi = {} over the whole arch ({pieces} enclosures)",
         safe.x[0], safe.x[1], safe.x[2], safe.eta
     ));
-    let margin = prove_farkas(model, &col.joints, eta_lo, cert.mu, false)?;
+    let margin = prove_farkas(model, &col.joints, I::point(eta_lo), cert.mu, false)?;
     checks.push(format!(
         "proved (interval arithmetic): no state is admissible at eta_lo = {eta_lo} (Farkas on {} joints, margin {margin:.3e})",
         col.joints.len()
