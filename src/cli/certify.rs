@@ -249,7 +249,11 @@ fn limit_states_text(cert: &Certificate) -> String {
                 "  limit states: {} at eta_s, {} above it ({}; Farkas evidence for {} state(s) without a mechanism{ridge})\n",
                 if s.mechanism_at_eta { "one" } else { "none" },
                 s.limit_states_above.len(),
-                if s.unique { "unique" } else { "not unique" },
+                match (s.unique, s.mechanism_at_eta || !s.limit_states_above.is_empty()) {
+                    (true, _) => "unique",
+                    (false, true) => "not unique",
+                    (false, false) => "the search found no limit state",
+                },
                 s.no_mechanism.len() + usize::from(s.least_state.is_some())
             )
         },

@@ -1029,3 +1029,44 @@ fn infinite_friction_uniqueness_is_proved_by_an_interior_state() {
     bad.safe.as_mut().unwrap().eta = ls.eta;
     assert!(verify(&bad).is_err());
 }
+
+/// Campaign arches whose Farkas certificates at η_lo have cofactors of negative sign (a
+/// verifier that compared the stored multipliers with the wrong sign rejected every one of
+/// them), and two where `solve` is unresolved (the least admissible state carries no
+/// mechanism and no limit state was found above it): the bracket of η_s is a claim of the
+/// statics alone, certified with no limit state listed, and `verify` says so.
+#[test]
+fn negative_cofactors_and_unresolved_collapse_are_certified() {
+    let shallow = Arch::new(
+        -0.5236482096775523,
+        0.5462123164767054,
+        WeightModel::Centreline,
+    )
+    .unwrap();
+    let c = cert(&shallow, 6.207608447457525);
+    assert_eq!(c.claim, Claim::LeastThickness);
+    holds(&c);
+    for (br, bl, mu) in [
+        (-0.847704814502479, 0.8800593152286043, 1.1345525298308103),
+        (-1.1123952844134388, 2.265084937868778, 5.110613057184961),
+    ] {
+        let arch = Arch::new(br, bl, WeightModel::Centroid).unwrap();
+        let solved = arch_enum::solve(&arch, mu, &Settings::default()).unwrap();
+        let arch_enum::Outcome::Unresolved {
+            least_static: Some((eta_s, _)),
+            ..
+        } = solved.outcome
+        else {
+            panic!("mu = {mu}: {:?}", solved.outcome)
+        };
+        let c = cert(&arch, mu);
+        assert!(c.limit_state.is_none());
+        let (lo, hi) = c.bracket().unwrap();
+        assert!(lo <= eta_s && eta_s <= hi, "{lo} {eta_s} {hi}");
+        let r = verify(&c).unwrap();
+        assert!(r
+            .checks
+            .iter()
+            .any(|l| l.starts_with("not listed: a limit state")));
+    }
+}

@@ -35,9 +35,11 @@ pub(super) fn prove_centred(
         match centred_over(model, &joints, I::new(lo, hi), mu) {
             Ok(_) => cells += 1,
             // with the weight on the centreline nothing depends on η: splitting cannot help
-            Err(why) if !model.centroid || hi - lo <= NARROWEST_CELL => return reject(format!(
+            Err(why) if !model.centroid || hi - lo <= NARROWEST_CELL => {
+                return reject(format!(
                 "the centred line of thrust is not proved admissible at eta in [{lo}, {hi}]: {why}"
-            )),
+            ))
+            }
             Err(_) => {
                 let mid = 0.5 * (lo + hi);
                 todo.push((hi, mid));

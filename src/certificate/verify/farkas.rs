@@ -337,8 +337,8 @@ fn prove_multipliers(
             false => y,
         }
     };
-    let y = flip(y);
     let matched = flip(matched.unwrap_or_else(|| y.clone()));
+    let y = flip(y);
     // the stored multipliers must be the recomputed ones (normalised to sum 1), to the
     // width of their enclosure (a few times over: `certify` computes them from its own
     // rounding of the same rows) and a rounding of the normalisation: an edited digit is

@@ -258,6 +258,9 @@ fn least_thickness(
             ls.eta
         ));
     }
+    if cert.limit_state.is_none() {
+        checks.push("not listed: a limit state (a state with a mechanism); the bracket is a claim of the statics alone (no state stands below eta_lo, one stands at eta_hi)".to_string());
+    }
     let mut verdict = None;
     if let Some(search) = &cert.search {
         let (lines, v) = verify_search(model, cert, search, eta_lo, safe)?;
