@@ -237,7 +237,20 @@ fn tamper(certs: &[Certificate], rng: &mut Rng, settings: &Settings) {
             }
             match still_true(&t, settings) {
                 Ok(true) => accepted_true += 1,
-                Ok(false) => false_claims.push(format!("{}: {x} -> {y}", path.join("."))),
+                Ok(false) => {
+                    // kept for a look: the edited certificate that `verify` accepted
+                    let file = std::env::temp_dir()
+                        .join(format!("false_claim_{}.json", false_claims.len()));
+                    let _ =
+                        std::fs::write(&file, serde_json::to_string_pretty(&t).unwrap_or_default());
+                    false_claims.push(format!(
+                        "{}: {x} -> {y} ({} claim, mu = {:?}; written to {})",
+                        path.join("."),
+                        t.claim.name(),
+                        t.mu,
+                        file.display()
+                    ))
+                }
                 Err(e) => false_claims.push(format!(
                     "{}: {x} -> {y} (arch refused: {e})",
                     path.join(".")

@@ -28,6 +28,7 @@
 //! | [`limit_states`] | §5 every limit state at one μ: the sweep of the admissible polytope in η |
 //! | [`limit_curve`] | §5 the η–μ curve: branches and exact corners; η*(μ) sampled over μ |
 //! | [`assess`] | a given thickness: factors of safety, μ_min(η), the safest state |
+//! | [`bridge`] | bridge spec §1: span, rise and ring in metres ↔ (α, η, r) |
 //! | [`collapse_mode`] | §5 collapse-mode names from the pattern |
 //! | [`certificate`] | certificates (format, certify) and their independent re-check (verify, interval arithmetic) |
 //! | [`figures`] | §3–4 the data of the pictures: sampled curves, lines of thrust and friction, block motions, margin map |
@@ -48,6 +49,7 @@
 pub mod admissibility;
 pub mod arch;
 pub mod assess;
+pub mod bridge;
 pub mod certificate;
 #[cfg(feature = "cli")]
 pub mod cli;

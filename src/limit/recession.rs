@@ -45,6 +45,11 @@ const MAX_TIGHT_CONTINUOUS: usize = 6;
 /// are separated.
 const DET_PIECES: usize = 64;
 
+/// A root η of three tight contacts is where the cone opens when its margin is positive at
+/// η (1 + this) (the margin LP's optimum is exactly 0, at d = 0, where the cone has no
+/// interior).
+const OPENS_ABOVE_REL: f64 = 3e-13;
+
 /// The null direction of three gradients is the bracket's direction when the cosine of
 /// the angle between them is above this.
 const SAME_DIRECTION_COS: f64 = 0.5;
@@ -178,7 +183,10 @@ pub fn threshold(arch: &Arch, mu: f64, lo: f64, hi: f64, settings: &Settings) ->
     tight.sort_by(|a, b| a.0.total_cmp(&b.0));
     tight.truncate(MAX_TIGHT_DISCRETE);
     let width = hi - lo;
-    let mut best: Option<Recession> = None;
+    // every verified root, with whether the cone opens just above it: a triple can be tight
+    // along a ray of a cone that has no interior yet (a root below η_rec, where a joint
+    // nearly repeats a tight one); η_rec is the least root above which the cone opens
+    let mut roots: Vec<(f64, Reactions, bool)> = Vec::new();
     for a in 0..tight.len() {
         for b in a + 1..tight.len() {
             for c in b + 1..tight.len() {
@@ -187,18 +195,24 @@ pub fn threshold(arch: &Arch, mu: f64, lo: f64, hi: f64, settings: &Settings) ->
                 // η_rec: the root lies in [lo0, hi]
                 for eta in det_roots(&rows, lo0, hi + width) {
                     if let Some(dir) = verify(&grads, &rows, eta, &d, settings) {
-                        if best.is_none_or(|r| eta < r.eta) {
-                            best = Some(Recession {
-                                eta,
-                                d: dir,
-                                exact: true,
-                            });
-                        }
+                        let above = eta * (1.0 + OPENS_ABOVE_REL);
+                        let opens = cone_margin(&grads, above, settings).is_some_and(|m| m.0 > 0.0);
+                        roots.push((eta, dir, opens));
                     }
                 }
             }
         }
     }
+    let any_opens = roots.iter().any(|r| r.2);
+    let best = roots
+        .into_iter()
+        .filter(|r| r.2 || !any_opens)
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(eta, d, _)| Recession {
+            eta,
+            d,
+            exact: true,
+        });
     best.or(Some(Recession {
         eta: hi,
         d,

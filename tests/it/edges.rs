@@ -4,6 +4,7 @@
 //! reported the case, or as said at the test) and is written here, never in `src/`.
 
 use crate::cli::json_of;
+use arch_enum::{solve, Arch, Outcome, Settings, WeightModel};
 
 /// The `eta`, `status` and `attained` of `solve --json` with these arguments.
 fn solved(args: &[&str]) -> (String, f64, Option<bool>) {
@@ -319,4 +320,71 @@ fn eta_s_is_not_snapped_above_a_finite_state_on_a_near_vertical_chord() {
     for w in etas.windows(2) {
         assert!(w[1] > w[0] + 1e-9, "eta_s must rise as mu falls: {etas:?}");
     }
+}
+
+/// A campaign arch of 39 voussoirs (η_s an infimum) with its joint 20 moved by 4.9e-10 rad:
+/// three intrados rows there and at joint 19 have a root of their determinant 8.6e-12 below
+/// η_rec, where a ray of the weightless cone is admissible but the cone does not open. The
+/// solve took that root (0.26158493183507614); its certificate proves no state at
+/// 0.2615849318435665 with rows that do not involve joint 20. η_rec is the least root above
+/// which the cone opens: the unedited arch's 0.2615849318436973, to rounding.
+#[test]
+fn an_infimum_is_the_root_where_the_weightless_cone_opens() {
+    let joints = [
+        -1.2047345923244206,
+        -1.1691332775467893,
+        -1.1335319627691578,
+        -1.0979306479915265,
+        -1.0623293332138952,
+        -1.0267280184362637,
+        -0.9911267036586324,
+        -0.955525388881001,
+        -0.9199240741033696,
+        -0.8843227593257382,
+        -0.8487214445481068,
+        -0.8131201297704755,
+        -0.7775188149928441,
+        -0.7419175002152127,
+        -0.7063161854375815,
+        -0.67071487065995,
+        -0.6351135558823187,
+        -0.5995122411046873,
+        -0.5639109263270559,
+        -0.5283096115494246,
+        -0.4927082962790848,
+        -0.4571069819941618,
+        -0.4215056672165304,
+        -0.385904352438899,
+        -0.3503030376612677,
+        -0.3147017228836364,
+        -0.2791004081060048,
+        -0.2434990933283735,
+        -0.2078977785507422,
+        -0.1722964637731108,
+        -0.1366951489954793,
+        -0.10109383421784801,
+        -0.06549251944021672,
+        -0.029891204662585213,
+        0.005710110115046074,
+        0.041311424892677584,
+        0.07691273967030887,
+        0.11251405444794016,
+        0.14811536922557145,
+        0.18371668400320296,
+    ];
+    let arch = Arch::new(joints[0], joints[joints.len() - 1], WeightModel::Centreline)
+        .unwrap()
+        .with_joints(&joints)
+        .unwrap();
+    let sol = solve(&arch, 6.79195980557732, &Settings::default()).unwrap();
+    let Outcome::Limit(ls) = sol.outcome else {
+        panic!("{:?}", sol.outcome)
+    };
+    assert!(!ls.attained);
+    assert!(ls.eta_static >= 0.2615849318435665, "{}", ls.eta_static);
+    assert!(
+        (ls.eta_static - 0.2615849318436973).abs() < 1e-15,
+        "{}",
+        ls.eta_static
+    );
 }

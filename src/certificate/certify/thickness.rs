@@ -67,7 +67,11 @@ pub(super) fn certify_no_equilibrium(
     let f = find_contact_farkas(arch, &pool, 1.0, mu, 2, proved)
         .or_else(|| {
             let mut wider = pool.clone();
-            wider.extend(spread_slides(arch).into_iter().map(|c| (c, Side::After)));
+            wider.extend(
+                spread_slides(arch, SPREAD)
+                    .into_iter()
+                    .map(|c| (c, Side::After)),
+            );
             find_contact_farkas(arch, &wider, 1.0, mu, 2, proved)
         })
         .ok_or_else(|| {
@@ -85,11 +89,15 @@ pub(super) fn certify_no_equilibrium(
 /// as many equally spaced angles of a continuous one.
 const SPREAD: usize = 48;
 
-fn spread_slides(arch: &Arch) -> Vec<Contact> {
-    let all = arch.angles(SPREAD);
+/// As many spread angles for the Farkas cells over η, each tried with the whole pool (a
+/// pool of n rows costs C(n, 4) float certificates).
+const CELL_SPREAD: usize = 12;
+
+fn spread_slides(arch: &Arch, spread: usize) -> Vec<Contact> {
+    let all = arch.angles(spread);
     let angles: Vec<f64> = all
         .iter()
-        .step_by(all.len().div_ceil(SPREAD).max(1))
+        .step_by(all.len().div_ceil(spread).max(1))
         .copied()
         .collect();
     let ends = (arch.beta_right(), arch.beta_left());
@@ -172,7 +180,18 @@ fn cover(
     };
     let pool = pool_at(arch, mid, mu, settings)?;
     let proved = |f: &Farkas| prove_farkas_cell(cert, &cell(f)).is_ok();
-    if let Some(f) = find_contact_farkas(arch, &pool, mid, mu, 3, proved) {
+    // failing the pool, with sliding rows spread over the arch too (near μ_ms the
+    // friction rows alone are nearly infeasible, and the LP's local maxima miss them)
+    let found = find_contact_farkas(arch, &pool, mid, mu, 3, proved).or_else(|| {
+        let mut wider = pool.clone();
+        wider.extend(
+            spread_slides(arch, CELL_SPREAD)
+                .into_iter()
+                .map(|c| (c, Side::After)),
+        );
+        find_contact_farkas(arch, &wider, mid, mu, 3, proved)
+    });
+    if let Some(f) = found {
         cells.push(cell(&f));
         return Ok(());
     }

@@ -1,0 +1,5 @@
+//! The arch as a bridge (bridge spec): engineering inputs in metres ([`geometry`]).
+
+pub mod geometry;
+
+pub use geometry::{Intrados, Ring};

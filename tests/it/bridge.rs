@@ -1,0 +1,87 @@
+//! Bridge spec §1: span, rise and ring in metres ↔ (α, η, r), both ways, against the
+//! spec's formulas written out here (R_i = (L²/4 + f²)/(2f), θ from asin(L/(2R_i)) on
+//! either side of the semicircle), and the command line's engineering flags.
+
+use arch_enum::bridge::Intrados;
+use std::f64::consts::{FRAC_PI_2, PI};
+
+/// The spec's half-angle: asin(L/(2 R_i)) for f ≤ L/2, π − asin(L/(2 R_i)) above.
+fn spec_half_angle(span: f64, rise: f64) -> f64 {
+    let ri = (span * span / 4.0 + rise * rise) / (2.0 * rise);
+    let a = (span / (2.0 * ri)).min(1.0).asin();
+    if rise <= span / 2.0 {
+        a
+    } else {
+        PI - a
+    }
+}
+
+/// A 10 m semicircular arch with a 0.6 m ring (the engineer): r = 5.3 m,
+/// η = 0.6/5.3, α = 0.
+#[test]
+fn a_ten_metre_semicircle_with_a_sixty_centimetre_ring() {
+    let i = Intrados::new(10.0, 5.0).unwrap();
+    assert_eq!(i.radius, 5.0);
+    assert!(i.alpha().abs() < 1e-15);
+    let ring = i.ring(0.6).unwrap();
+    assert!((ring.radius - 5.3).abs() < 1e-14);
+    assert!((ring.eta - 0.6 / 5.3).abs() < 1e-15);
+    // the least ring of a thickness ratio is the ring that has it
+    let back = i.ring_of(ring.eta);
+    assert!((back.thickness - 0.6).abs() < 1e-14);
+}
+
+/// Random segments, semicircles and horseshoes: the half-angle agrees with the spec's
+/// formula, and (L, f, t) → (α, η, r) → (L, f, t) reproduces the input to 1e-12.
+#[test]
+fn engineering_inputs_round_trip() {
+    let mut seed = 7u64;
+    let mut next = || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for _ in 0..2000 {
+        let span = 1.0 + 40.0 * next();
+        let rise = span * (0.02 + 1.5 * next());
+        let t = 0.05 + 0.2 * span * next();
+        let i = Intrados::new(span, rise).unwrap();
+        let theta = spec_half_angle(span, rise);
+        assert!(
+            (i.half_angle - theta).abs() < 1e-9,
+            "{span} {rise}: {} vs {theta}",
+            i.half_angle
+        );
+        assert!(i.alpha() > -FRAC_PI_2 && i.alpha() < FRAC_PI_2);
+        let ring = i.ring(t).unwrap();
+        assert!(ring.eta > 0.0 && ring.eta < 2.0);
+        // back from the non-dimensional description alone
+        let ri = ring.radius * (1.0 - ring.eta / 2.0);
+        let j = Intrados::of_opening(i.alpha(), ri);
+        let rel = |a: f64, b: f64| (a - b).abs() / b;
+        assert!(rel(j.span, span) < 1e-12, "span {span} -> {}", j.span);
+        assert!(rel(j.rise, rise) < 1e-12, "rise {rise} -> {}", j.rise);
+        assert!(rel(ring.eta * ring.radius, t) < 1e-12);
+        assert!(rel(j.ring_of(ring.eta).thickness, t) < 1e-12);
+    }
+}
+
+/// Lengths must be finite and positive; the error names the flag.
+#[test]
+fn bad_lengths_name_the_flag() {
+    for (span, rise, flag) in [
+        (0.0, 1.0, "--span"),
+        (10.0, -1.0, "--rise"),
+        (f64::NAN, 1.0, "--span"),
+    ] {
+        let e = Intrados::new(span, rise).unwrap_err().to_string();
+        assert!(e.contains(flag), "{e}");
+    }
+    let e = Intrados::new(10.0, 5.0)
+        .unwrap()
+        .ring(f64::INFINITY)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("--ring"), "{e}");
+}
