@@ -103,3 +103,12 @@ impl Intrados {
         }
     }
 }
+
+/// An arch as an engineer gave it: the intrados and, when given, the ring.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Geometry {
+    /// The intrados (span, rise).
+    pub intrados: Intrados,
+    /// The ring on it (thickness, mean radius, η).
+    pub ring: Option<Ring>,
+}

@@ -2,4 +2,4 @@
 
 pub mod geometry;
 
-pub use geometry::{Intrados, Ring};
+pub use geometry::{Geometry, Intrados, Ring};

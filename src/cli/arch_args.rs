@@ -1,6 +1,7 @@
 //! The description of the arch shared by every command (`--alpha`, `--beta-right`, ...).
 
-use crate::arch::{fmt_value, Arch, InputError, WeightModel};
+use crate::arch::{check_eta, fmt_value, Arch, InputError, WeightModel};
+use crate::bridge::{Geometry, Intrados};
 use clap::{Args, ValueEnum};
 
 /// Where self-weight acts.
@@ -40,6 +41,18 @@ pub(crate) struct ArchArgs {
     /// Left springing angle (radians), beta_right < beta_left <= beta_right + 2 pi.
     #[arg(long, allow_hyphen_values = true, requires = "beta_right")]
     beta_left: Option<f64>,
+    /// Clear span of the intrados between its springings, in metres (a symmetric arch; with
+    /// --rise).
+    #[arg(long, allow_hyphen_values = true, group = "shape", requires = "rise")]
+    span: Option<f64>,
+    /// Rise of the intrados above its springings, in metres (with --span; rise = span/2 is
+    /// the semicircle, above it a horseshoe).
+    #[arg(long, allow_hyphen_values = true, requires = "span")]
+    rise: Option<f64>,
+    /// Ring thickness t in metres on the --span/--rise intrados: gives eta = t/r, with the
+    /// mean radius r = R_i + t/2.
+    #[arg(long, allow_hyphen_values = true, requires = "span")]
+    pub(crate) ring: Option<f64>,
     /// N equal voussoirs: joints only at the N + 1 equally spaced angles (1 to 100000).
     #[arg(long, conflicts_with = "joints", allow_hyphen_values = true)]
     blocks: Option<usize>,
@@ -62,17 +75,54 @@ impl ArchArgs {
                 range: "(-90, 90) degrees".into(),
             })?,
             (_, _, Some(r), Some(l)) => Arch::new(r, l, weight)?,
-            _ => {
-                return Err(InputError::Inconsistent {
-                    arg: "--alpha/--alpha-deg/--beta-right/--beta-left",
-                    reason: "describe the arch with --alpha A, --alpha-deg D, or --beta-right B1 --beta-left B2".into(),
-                })
-            }
+            _ => match self.intrados()? {
+                Some(i) => Arch::symmetric(i.alpha(), weight)?,
+                None => {
+                    return Err(InputError::Inconsistent {
+                        arg: "--alpha/--alpha-deg/--beta-right/--beta-left/--span",
+                        reason: "describe the arch with --alpha A, --alpha-deg D, --beta-right B1 --beta-left B2, or --span L --rise F".into(),
+                    })
+                }
+            },
         };
         match (&self.blocks, &self.joints) {
             (Some(n), _) => arch.with_blocks(*n),
             (_, Some(j)) => arch.with_joints(j),
             _ => Ok(arch),
+        }
+    }
+
+    /// The intrados of `--span/--rise`, when given.
+    pub(crate) fn intrados(&self) -> Result<Option<Intrados>, InputError> {
+        match (self.span, self.rise) {
+            (Some(l), Some(f)) => Intrados::new(l, f).map(Some),
+            _ => Ok(None),
+        }
+    }
+
+    /// The engineering description (`--span/--rise`, and `--ring`), when given.
+    pub(crate) fn geometry(&self) -> Result<Option<Geometry>, InputError> {
+        let Some(intrados) = self.intrados()? else {
+            return Ok(None);
+        };
+        let ring = self.ring.map(|t| intrados.ring(t)).transpose()?;
+        Ok(Some(Geometry { intrados, ring }))
+    }
+
+    /// The thickness ratio: `--eta`, or that of `--ring` (exactly one of them).
+    pub(crate) fn eta(&self, eta: Option<f64>) -> Result<f64, InputError> {
+        let ring = self.geometry()?.and_then(|g| g.ring);
+        match (eta, ring) {
+            (Some(e), None) => check_eta(e),
+            (None, Some(r)) => Ok(r.eta),
+            (Some(_), Some(_)) => Err(InputError::Inconsistent {
+                arg: "--eta/--ring",
+                reason: "give the thickness as --eta or as --ring (with --span and --rise), not both".into(),
+            }),
+            (None, None) => Err(InputError::Inconsistent {
+                arg: "--eta",
+                reason: "give the thickness ratio --eta (0 < eta < 2), or --ring T with --span and --rise".into(),
+            }),
         }
     }
 }

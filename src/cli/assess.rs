@@ -3,7 +3,7 @@
 
 use super::arch_args::ArchArgs;
 use super::dimension_args::DimensionArgs;
-use super::io::{to_json, Exit, Io};
+use super::io::{geometry_text, json_with_geometry, Exit, Io};
 use crate::assess::assess;
 use crate::render::{json, table};
 use crate::settings::Settings;
@@ -13,9 +13,9 @@ use clap::Args;
 pub(crate) struct AssessArgs {
     #[command(flatten)]
     arch: ArchArgs,
-    /// Thickness ratio eta = t/r of the arch, 0 < eta < 2.
+    /// Thickness ratio eta = t/r of the arch, 0 < eta < 2 (or --ring with --span, --rise).
     #[arg(long, allow_hyphen_values = true)]
-    eta: f64,
+    eta: Option<f64>,
     /// Friction coefficient mu = tan(phi) > 0; `inf` for no sliding.
     #[arg(long, allow_hyphen_values = true)]
     mu: f64,
@@ -27,13 +27,17 @@ pub(crate) struct AssessArgs {
 }
 
 pub(crate) fn run(a: AssessArgs, settings: &Settings, io: &mut Io) -> Exit {
-    let dims = match a.dims.build() {
-        Ok(d) => d,
+    let given = a
+        .arch
+        .geometry()
+        .and_then(|g| Ok((g, a.dims.build(g)?, a.arch.eta(a.eta)?)));
+    let (geometry, dims, eta) = match given {
+        Ok(v) => v,
         Err(e) => return io.bad_input(&e),
     };
     let (arch, res) = match a.arch.build() {
         Ok(arch) => {
-            let r = assess(&arch, a.eta, a.mu, settings);
+            let r = assess(&arch, eta, a.mu, settings);
             (arch, r)
         }
         Err(e) => return io.bad_input(&e),
@@ -42,10 +46,18 @@ pub(crate) fn run(a: AssessArgs, settings: &Settings, io: &mut Io) -> Exit {
         Ok(r) => r,
         Err(e) => return io.bad_input(&e),
     };
+    let least = match &res.limit {
+        crate::limit::Outcome::Limit(ls) => Some(ls.eta),
+        _ => None,
+    };
     if a.json {
-        io.out(&to_json(&json::assess(&arch, &res)));
+        io.out(&json_with_geometry(
+            &json::assess(&arch, &res),
+            geometry,
+            least,
+        ));
     } else {
-        io.out(&table::assess(&arch, &res, dims));
+        io.out(&(geometry_text(geometry, least) + &table::assess(&arch, &res, dims)));
     }
     match res.limit {
         crate::limit::Outcome::Unresolved { .. } => Exit::NoAnswer,

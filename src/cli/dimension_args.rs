@@ -1,7 +1,9 @@
 //! The physical dimensions shared by the commands that can answer in metres and
-//! kilonewtons (`--radius --depth --density [--g]`).
+//! kilonewtons (`--radius --depth --density [--g]`, or with `--span --rise --ring` the
+//! engineer's `--width --unit-weight`).
 
 use crate::arch::{fmt_value, InputError};
+use crate::bridge::Geometry;
 use crate::render::table::Dimensions;
 use clap::Args;
 
@@ -19,6 +21,18 @@ pub(crate) struct DimensionArgs {
     /// Gravitational acceleration in m/s^2.
     #[arg(long, default_value_t = 9.81, allow_hyphen_values = true)]
     g: f64,
+    /// Barrel width d in metres (with --span, --rise, --ring and --unit-weight: results in
+    /// m and kN).
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        requires_all = ["unit_weight", "ring"],
+        conflicts_with = "radius"
+    )]
+    width: Option<f64>,
+    /// Unit weight of the masonry in kN/m^3 (e.g. 20 for stone).
+    #[arg(long, allow_hyphen_values = true, requires = "width")]
+    unit_weight: Option<f64>,
 }
 
 fn positive(arg: &'static str, v: f64) -> Result<f64, InputError> {
@@ -34,8 +48,28 @@ fn positive(arg: &'static str, v: f64) -> Result<f64, InputError> {
 }
 
 impl DimensionArgs {
-    /// The dimensions, when given; each must be a finite positive number.
-    pub(crate) fn build(&self) -> Result<Option<Dimensions>, InputError> {
+    /// The dimensions, when given; each must be a finite positive number. With `--width`
+    /// and `--unit-weight` the mean radius is the ring's (`geometry`), and the density the
+    /// unit weight over g.
+    pub(crate) fn build(
+        &self,
+        geometry: Option<Geometry>,
+    ) -> Result<Option<Dimensions>, InputError> {
+        if let (Some(d), Some(gamma)) = (self.width, self.unit_weight) {
+            let Some(ring) = geometry.and_then(|g| g.ring) else {
+                return Err(InputError::Inconsistent {
+                    arg: "--width/--unit-weight",
+                    reason: "need the ring's mean radius: give --span, --rise and --ring".into(),
+                });
+            };
+            let g = positive("--g", self.g)?;
+            return Ok(Some(Dimensions {
+                radius: ring.radius,
+                depth: positive("--width", d)?,
+                density: positive("--unit-weight", gamma)? * 1000.0 / g,
+                g,
+            }));
+        }
         match (self.radius, self.depth, self.density) {
             (Some(r), Some(d), Some(rho)) => Ok(Some(Dimensions {
                 radius: positive("--radius", r)?,

@@ -89,3 +89,35 @@ impl Io<'_> {
         Exit::BadInput
     }
 }
+
+/// A command's JSON document with the engineer's `geometry` added after its own keys (when
+/// given; without it, the document byte for byte as before).
+pub(crate) fn json_with_geometry<T: serde::Serialize>(
+    doc: &T,
+    geometry: Option<crate::bridge::Geometry>,
+    least_eta: Option<f64>,
+) -> String {
+    #[derive(serde::Serialize)]
+    struct With<'a, T> {
+        #[serde(flatten)]
+        doc: &'a T,
+        geometry: serde_json::Value,
+    }
+    match geometry {
+        None => to_json(doc),
+        Some(g) => to_json(&With {
+            doc,
+            geometry: crate::render::geometry::json(&g, least_eta),
+        }),
+    }
+}
+
+/// The engineer's geometry as text lines above a command's answer ("" without it).
+pub(crate) fn geometry_text(
+    geometry: Option<crate::bridge::Geometry>,
+    least_eta: Option<f64>,
+) -> String {
+    geometry.map_or(String::new(), |g| {
+        crate::render::geometry::text(&g, least_eta)
+    })
+}

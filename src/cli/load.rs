@@ -4,7 +4,7 @@
 
 use super::arch_args::ArchArgs;
 use super::dimension_args::DimensionArgs;
-use super::io::{to_json, Exit, Io};
+use super::io::{geometry_text, json_with_geometry, to_json, Exit, Io};
 use crate::arch::{fmt_value, Arch, InputError, JointLayout};
 use crate::friction::least_friction;
 use crate::limit_curve::mu_grid;
@@ -99,9 +99,9 @@ impl LiveLoadArgs {
 pub(crate) struct LoadArgs {
     #[command(flatten)]
     arch: ArchArgs,
-    /// Thickness ratio eta = t/r of the arch, 0 < eta < 2.
+    /// Thickness ratio eta = t/r of the arch, 0 < eta < 2 (or --ring with --span, --rise).
     #[arg(long, allow_hyphen_values = true)]
-    eta: f64,
+    eta: Option<f64>,
     /// Friction coefficient mu = tan(phi) > 0; `inf` for no sliding.
     #[arg(long, allow_hyphen_values = true)]
     mu: f64,
@@ -115,8 +115,12 @@ pub(crate) struct LoadArgs {
 }
 
 pub(crate) fn run(a: LoadArgs, settings: &Settings, io: &mut Io) -> Exit {
-    let dims = match a.dims.build() {
-        Ok(d) => d,
+    let given = a
+        .arch
+        .geometry()
+        .and_then(|g| Ok((g, a.dims.build(g)?, a.arch.eta(a.eta)?)));
+    let (geometry, dims, eta) = match given {
+        Ok(v) => v,
         Err(e) => return io.bad_input(&e),
     };
     let (arch, load) = match a.arch.build().and_then(|arch| {
@@ -126,21 +130,21 @@ pub(crate) fn run(a: LoadArgs, settings: &Settings, io: &mut Io) -> Exit {
         Ok(v) => v,
         Err(e) => return io.bad_input(&e),
     };
-    let outcome = match survey(&arch, a.eta, a.mu, &load, settings) {
+    let outcome = match survey(&arch, eta, a.mu, &load, settings) {
         Ok(o) => o,
         Err(e) => return io.bad_input(&e),
     };
     let q = LoadQuestion {
         arch: &arch,
-        eta: a.eta,
+        eta,
         mu: a.mu,
         load,
         dims,
     };
     if a.json {
-        io.out(&to_json(&json(&q, &outcome)));
+        io.out(&json_with_geometry(&json(&q, &outcome), geometry, None));
     } else {
-        io.out(&table(&q, &outcome));
+        io.out(&(geometry_text(geometry, None) + &table(&q, &outcome)));
     }
     match outcome {
         Ok(LoadOutcome::Limits(_)) => Exit::Answered,

@@ -1,7 +1,7 @@
 //! `arch-enum solve`: the least thickness at one friction coefficient.
 
 use super::arch_args::ArchArgs;
-use super::io::{to_json, Exit, Io};
+use super::io::{geometry_text, json_with_geometry, to_json, Exit, Io};
 use super::mu_arg::MuArg;
 use crate::figures::survey_scene;
 use crate::limit::Outcome;
@@ -49,10 +49,22 @@ pub(crate) fn run(a: SolveArgs, settings: &Settings, io: &mut Io) -> Exit {
         Err(e) => return io.bad_input(&e),
     };
     let sol = &survey.solution;
+    let geometry = match a.arch.geometry() {
+        Ok(g) => g,
+        Err(e) => return io.bad_input(&e),
+    };
+    let least = match &sol.outcome {
+        Outcome::Limit(ls) => Some(ls.eta),
+        _ => None,
+    };
     if a.json {
-        io.out(&to_json(&json::solve(&survey, a.explain)));
+        io.out(&json_with_geometry(
+            &json::solve(&survey, a.explain),
+            geometry,
+            least,
+        ));
     } else {
-        io.out(&table::solve(&survey, a.explain));
+        io.out(&(geometry_text(geometry, least) + &table::solve(&survey, a.explain)));
     }
     if let Some(path) = &a.compas {
         match survey_scene(&survey) {

@@ -3,6 +3,7 @@
 
 pub mod compas;
 pub mod dimensions;
+pub mod geometry;
 pub mod json;
 mod live_load;
 pub mod load;

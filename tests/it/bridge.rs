@@ -85,3 +85,88 @@ fn bad_lengths_name_the_flag() {
         .to_string();
     assert!(e.contains("--ring"), "{e}");
 }
+
+fn arch_enum() -> assert_cmd::Command {
+    assert_cmd::Command::cargo_bin("arch-enum").unwrap()
+}
+
+/// `--span --rise [--ring]` on the command line: the same answers as the non-dimensional
+/// arch it describes (bit for bit), with the `geometry` object added after the document's
+/// own keys, and the least ring t* = η* R_i/(1 − η*/2) in metres.
+#[test]
+fn span_rise_and_ring_give_the_same_answers_as_alpha_and_eta() {
+    use crate::cli::json_of;
+    // a segmental arch: span 12 m, rise 3 m (R_i = 7.5 m), ring 0.5 m
+    let i = Intrados::new(12.0, 3.0).unwrap();
+    let alpha = i.alpha().to_string();
+    let ring = i.ring(0.5).unwrap();
+    let eta = ring.eta.to_string();
+    let (a, _) = json_of(&["solve", "--span", "12", "--rise", "3", "--mu", "0.6"]);
+    let (b, _) = json_of(&["solve", "--alpha", &alpha, "--mu", "0.6"]);
+    assert_eq!(a["eta"], b["eta"]);
+    assert_eq!(a["limit_states"], b["limit_states"]);
+    let g = &a["geometry"];
+    assert_eq!(g["span_m"], 12.0);
+    assert_eq!(g["intrados_radius_m"], 7.5);
+    let eta_s = a["eta"].as_f64().unwrap();
+    let t_star = g["least_ring_m"].as_f64().unwrap();
+    assert!((t_star - eta_s * 7.5 / (1.0 - eta_s / 2.0)).abs() < 1e-12 * t_star);
+    assert!(b.get("geometry").is_none());
+    let (a, _) = json_of(&[
+        "assess", "--span", "12", "--rise", "3", "--ring", "0.5", "--mu", "0.6",
+    ]);
+    let (b, _) = json_of(&["assess", "--alpha", &alpha, "--eta", &eta, "--mu", "0.6"]);
+    assert_eq!(a["stands"], b["stands"]);
+    assert_eq!(a["geometric_factor"], b["geometric_factor"]);
+    assert_eq!(a["geometry"]["eta"].as_f64(), Some(ring.eta));
+    assert_eq!(a["geometry"]["radius_m"].as_f64(), Some(7.75));
+    // without the flags, the document is the one it was (no geometry key)
+    let text = arch_enum()
+        .args(["solve", "--alpha", "0", "--mu", "0.6"])
+        .output()
+        .unwrap();
+    assert!(!String::from_utf8_lossy(&text.stdout).contains("geometry"));
+}
+
+/// The engineer: a 10 m semicircular ring of 0.6 m, 20 kN/m³, 1 m of barrel: the
+/// geometry and scope lines, kN from `--width --unit-weight` (the ring's own weight 199.8
+/// kN = 20 · 0.6 · π · 5.3), and bad combinations exit 2 naming the flags.
+#[test]
+fn an_engineer_describes_the_arch_in_metres() {
+    let out = arch_enum()
+        .args([
+            "assess", "--span", "10", "--rise", "5", "--ring", "0.6", "--mu", "0.6",
+        ])
+        .args(["--width", "1", "--unit-weight", "20"])
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("mean radius r = 5.30000 m, eta = t/r = 0.113207547170"),
+        "{text}"
+    );
+    assert!(text.contains("scope               single ring"), "{text}");
+    assert!(text.contains("weight of the arch 199.805 kN"), "{text}");
+    for (args, flag) in [
+        (&["--ring", "0.6", "--eta", "0.1"][..], "--eta/--ring"),
+        (&[][..], "--eta"),
+        (&["--ring", "-1"][..], "--ring"),
+    ] {
+        let out = arch_enum()
+            .args(["assess", "--span", "10", "--rise", "5", "--mu", "0.6"])
+            .args(args)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert!(
+            String::from_utf8_lossy(&out.stderr).contains(flag),
+            "{args:?}"
+        );
+    }
+    let out = arch_enum()
+        .args(["solve", "--span", "10", "--rise", "0", "--mu", "0.6"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--rise"));
+}
