@@ -4,7 +4,7 @@
 use super::arch_args::ArchArgs;
 use super::io::{to_json, Exit, Io};
 use super::load::LiveLoadArgs;
-use crate::arch::{check_eta, check_mu, fmt_value, InputError};
+use crate::arch::{check_mu, fmt_value, InputError};
 use crate::certificate::{
     certify, certify_load, verify, ArchSpec, Certificate, Claim, LoadSearchMethod, NotCertified,
     Rejection,
@@ -80,22 +80,15 @@ pub(crate) fn run_certify(a: CertifyArgs, settings: &Settings, io: &mut Io) -> E
         });
     }
     // a live load and its thickness come together
-    let load = match (&a.live, a.eta) {
-        (Some(live), Some(eta)) => match check_eta(eta).and_then(|_| live.build(&arch)) {
-            Ok(load) => Some((eta, load)),
+    let load = match (&a.live, a.eta.or(a.arch.ring)) {
+        (Some(live), _) => match a.arch.eta(a.eta).and_then(|eta| Ok((eta, live.build(&arch)?))) {
+            Ok(load) => Some(load),
             Err(e) => return io.bad_input(&e),
         },
-        (Some(_), None) => {
-            return io.bad_input(&InputError::Inconsistent {
-                arg: "--eta",
-                reason: "a live-load certificate needs the thickness ratio --eta (0 < eta < 2)"
-                    .into(),
-            })
-        }
         (None, Some(_)) => {
             return io.bad_input(&InputError::Inconsistent {
-                arg: "--eta",
-                reason: "--eta is used only with a live load (--horizontal, --horizontal-left, --point-load, --point-load-deg or --point-load-joint); without one, certify finds eta* itself".into(),
+                arg: "--eta/--ring",
+                reason: "--eta (or --ring) is used only with a live load (--horizontal, --horizontal-left, --point-load, --point-load-deg or --point-load-joint); without one, certify finds eta* itself".into(),
             })
         }
         (None, None) => None,

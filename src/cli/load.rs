@@ -156,9 +156,9 @@ pub(crate) fn run(a: LoadArgs, settings: &Settings, io: &mut Io) -> Exit {
 pub(crate) struct LoadCurveArgs {
     #[command(flatten)]
     pub(crate) arch: ArchArgs,
-    /// Thickness ratio eta = t/r of the arch, 0 < eta < 2.
+    /// Thickness ratio eta = t/r of the arch, 0 < eta < 2 (or --ring with --span, --rise).
     #[arg(long, allow_hyphen_values = true)]
-    eta: f64,
+    eta: Option<f64>,
     #[command(flatten)]
     live: LiveLoadArgs,
     /// Smallest mu (default: mu_ms (1 + 1e-6), the least friction at which the arch can
@@ -201,20 +201,20 @@ pub(crate) fn run_curve(a: LoadCurveArgs, settings: &Settings, io: &mut Io) -> E
         Ok(v) => v,
         Err(e) => return io.bad_input(&e),
     };
+    let eta = match a.arch.eta(a.eta) {
+        Ok(e) => e,
+        Err(e) => return io.bad_input(&e),
+    };
     let bar = super::progress::Progress::new("load-curve");
-    let curve = match crate::arch::check_eta(a.eta)
-        .and_then(|_| mu_samples(&arch, a.mu_min, a.mu_max, a.points, settings))
-        .and_then(|grid| {
-            trace(&arch, a.eta, &load, &grid, settings, &|d, t| {
-                bar.update(d, t)
-            })
-        }) {
+    let curve = match mu_samples(&arch, a.mu_min, a.mu_max, a.points, settings).and_then(|grid| {
+        trace(&arch, eta, &load, &grid, settings, &|d, t| bar.update(d, t))
+    }) {
         Ok(s) => s,
         Err(e) => return io.bad_input(&e),
     };
     let q = LoadQuestion {
         arch: &arch,
-        eta: a.eta,
+        eta,
         mu: f64::INFINITY,
         load,
         dims: None,
@@ -232,9 +232,9 @@ impl LoadCurveArgs {
     pub(crate) fn trace(&self, settings: &Settings) -> Result<(String, LoadCurve), InputError> {
         let arch = self.arch.build()?;
         let load = self.live.build(&arch)?;
-        crate::arch::check_eta(self.eta)?;
+        let eta = self.arch.eta(self.eta)?;
         let grid = mu_samples(&arch, self.mu_min, self.mu_max, self.points, settings)?;
-        let samples = trace(&arch, self.eta, &load, &grid, settings, &|_, _| {})?;
+        let samples = trace(&arch, eta, &load, &grid, settings, &|_, _| {})?;
         let what = match load {
             LiveLoad::Horizontal { .. } => "horizontal acceleration".to_string(),
             LiveLoad::Point { beta } => format!("point load at {:.2}°", beta.to_degrees()),
@@ -243,7 +243,7 @@ impl LoadCurveArgs {
             format!(
                 "{} — {what}, η = {}: λ against μ",
                 crate::render::plot::arch_label(&arch),
-                self.eta
+                eta
             ),
             samples,
         ))

@@ -5,7 +5,7 @@ use super::arch_args::{ArchArgs, WeightArg};
 use super::io::{Exit, Io};
 use super::mu_arg::MuArg;
 use super::threads_arg::ThreadsArg;
-use crate::arch::{check_eta, check_mu, Arch, InputError};
+use crate::arch::{check_mu, Arch, InputError};
 use crate::settings::Settings;
 use clap::{Args, Subcommand};
 
@@ -126,9 +126,9 @@ pub(crate) enum Figure {
     Load {
         #[command(flatten)]
         arch: ArchArgs,
-        /// Thickness ratio eta = t/r, 0 < eta < 2.
+        /// Thickness ratio eta = t/r, 0 < eta < 2 (or --ring with --span, --rise).
         #[arg(long, allow_negative_numbers = true)]
-        eta: f64,
+        eta: Option<f64>,
         /// Friction coefficient mu > 0; `inf` for no sliding.
         #[arg(long, allow_negative_numbers = true)]
         mu: f64,
@@ -243,10 +243,10 @@ pub(crate) fn draw(figure: Figure, settings: &Settings, io: &mut Io) -> Result<S
             limit_states,
             ..
         } => match plot_inputs(&st, settings) {
-            Ok((a, mu)) if limit_states => {
+            Ok((a, mu, _)) if limit_states => {
                 figures::limit_scenes(&a, mu, settings).map(|s| plot_arch::svg_panels(&s))
             }
-            Ok((a, mu)) => figures::scene(&a, mu, st.eta, settings).map(|s| plot_arch::svg(&s)),
+            Ok((a, mu, eta)) => figures::scene(&a, mu, eta, settings).map(|s| plot_arch::svg(&s)),
             Err(e) => return Err(io.bad_input(&e)),
         },
         Figure::Load {
@@ -256,12 +256,12 @@ pub(crate) fn draw(figure: Figure, settings: &Settings, io: &mut Io) -> Result<S
             live,
             ..
         } => match arch.build().and_then(|a| {
-            check_eta(eta)?;
+            let eta = arch.eta(eta)?;
             check_mu(mu)?;
             let load = live.build(&a)?;
-            Ok((a, load))
+            Ok((a, eta, load))
         }) {
-            Ok((a, load)) => figures::load_scenes(&a, eta, mu, &load, settings)
+            Ok((a, eta, load)) => figures::load_scenes(&a, eta, mu, &load, settings)
                 .map(|s| plot_arch::svg_panels(&s)),
             Err(e) => return Err(io.bad_input(&e)),
         },
@@ -276,7 +276,7 @@ pub(crate) fn draw(figure: Figure, settings: &Settings, io: &mut Io) -> Result<S
             Err(e) => return Err(io.bad_input(&e)),
         },
         Figure::Eccentricity { state: st, .. } => match plot_inputs(&st, settings) {
-            Ok((a, mu)) => figures::scene(&a, mu, st.eta, settings).map(|s| plot_ecc::svg(&s)),
+            Ok((a, mu, eta)) => figures::scene(&a, mu, eta, settings).map(|s| plot_ecc::svg(&s)),
             Err(e) => return Err(io.bad_input(&e)),
         },
         Figure::Map {
@@ -322,13 +322,18 @@ pub(crate) fn draw(figure: Figure, settings: &Settings, io: &mut Io) -> Result<S
     }
 }
 
-/// The arch and μ of a state figure (`--mu ms` resolved), the inputs checked.
-fn plot_inputs(st: &StateArgs, settings: &Settings) -> Result<(Arch, f64), InputError> {
+/// The arch, μ and thickness of a state figure (`--mu ms` resolved; `--eta` or `--ring`,
+/// default η*), the inputs checked.
+fn plot_inputs(
+    st: &StateArgs,
+    settings: &Settings,
+) -> Result<(Arch, f64, Option<f64>), InputError> {
     let a = st.arch.build()?;
     let mu = st.mu.resolve(&a, settings)?;
     check_mu(mu)?;
-    if let Some(e) = st.eta {
-        check_eta(e)?;
-    }
-    Ok((a, mu))
+    let eta = match (st.eta, st.arch.ring) {
+        (None, None) => None,
+        _ => Some(st.arch.eta(st.eta)?),
+    };
+    Ok((a, mu, eta))
 }
