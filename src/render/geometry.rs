@@ -49,7 +49,7 @@ pub fn text(g: &Geometry, least_eta: Option<f64>) -> String {
     if let Some(e) = least_eta {
         let t = i.ring_of(e).thickness;
         out += &format!(
-            "least ring          t* = {} m on this span and rise",
+            "least ring          t* = {} m with the span and rise held",
             sig(t, 6)
         );
         if let Some(r) = g.ring {
