@@ -55,6 +55,7 @@ __version__: str = _native.__version__
 LP_SOLVER: str = _native.LP_SOLVER
 
 __all__ = [
+    "geometry",
     "Arch",
     "AssessResult",
     "Branch",
@@ -111,6 +112,17 @@ def _friction(a: Arch, mu: Any) -> float:
     if isinstance(mu, str):
         raise TypeError(f"mu must be a number or 'ms', got {mu!r}")
     return _scalar("mu", mu)
+
+
+def geometry(span: float, rise: float, ring: Optional[float] = None) -> dict:
+    """The engineer's description of a symmetric arch (metres): the clear ``span`` and
+    ``rise`` of the intrados and, optionally, the ``ring`` thickness, with what they give:
+    ``intrados_radius_m``, ``alpha``, ``beta_right``, ``beta_left``, and with a ring
+    ``radius_m`` (r = R_i + t/2) and ``eta`` (t/r) to pass to ``assess`` or ``load``
+    (``--span --rise --ring`` on the command line; ``Arch.from_span_rise`` builds the arch)."""
+    g = _native.geometry(_scalar("span", span), _scalar("rise", rise),
+                         None if ring is None else _scalar("ring", ring))
+    return {k: v for k, v in g.items() if k not in ("least_ring_m", "ring_over_least")}
 
 
 def solve(arch: Arch, mu: Union[float, str]) -> SolveResult:

@@ -110,6 +110,22 @@ class Arch(_Result):
             raise TypeError(f"weight must be a string, got {self.weight!r}")
         object.__setattr__(self, "_info", _native.arch(self._spec()))
 
+    @classmethod
+    def from_span_rise(
+        cls,
+        span: float,
+        rise: float,
+        *,
+        blocks: Optional[int] = None,
+        joints: Optional[Tuple[float, ...]] = None,
+        weight: str = "centreline",
+    ) -> "Arch":
+        """The symmetric arch of an intrados of clear ``span`` and ``rise`` (metres; rise =
+        span/2 is the semicircle, above it a horseshoe), as ``--span --rise`` on the
+        command line; ``geometry(span, rise, ring)`` gives eta for a ring."""
+        g = _native.geometry(float(span), float(rise), None)
+        return cls(alpha=g["alpha"], blocks=blocks, joints=joints, weight=weight)
+
     def _spec(self) -> tuple:
         joints = None if self.joints is None else list(self.joints)
         return (self.alpha, self.beta_right, self.beta_left, self.blocks, joints, self.weight)

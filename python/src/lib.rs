@@ -9,6 +9,7 @@
 //! The Python side (`arch_enum/*.py`) turns the dicts into frozen dataclasses.
 
 use arch_enum::arch::{check_eta, check_mu, fmt_value, InputError, JointLayout};
+use arch_enum::bridge::{Geometry, Intrados};
 use arch_enum::certificate::{certify as certify_eta, verify as verify_cert, Certificate};
 use arch_enum::figures::{self, ArchScene};
 use arch_enum::friction::least_friction;
@@ -17,6 +18,7 @@ use arch_enum::limit_curve::{available_threads, sample, trace_parallel};
 use arch_enum::limit_states::survey;
 use arch_enum::load::LiveLoad;
 use arch_enum::multiplier::{check_load, survey as load_survey};
+use arch_enum::render::geometry as render_geometry;
 use arch_enum::render::json::JSON_VERSION;
 use arch_enum::render::load::{json as load_json, LoadQuestion};
 use arch_enum::render::{compas, json, plot_arch, plot_curve};
@@ -178,6 +180,28 @@ fn lines_json(scene: &ArchScene) -> Value {
         "friction_line": pts(scene.friction_line()),
         "outline": pts(scene.outline()),
     })
+}
+
+/// The engineer's description (bridge spec §1): clear span and rise of the intrados and,
+/// optionally, the ring thickness (metres), with what they give (the `geometry` object of
+/// `--span --rise [--ring]`: R_i, α, the springings, r and η).
+#[pyfunction]
+#[pyo3(signature = (span, rise, ring=None))]
+fn geometry<'py>(
+    py: Python<'py>,
+    span: f64,
+    rise: f64,
+    ring: Option<f64>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let intrados = Intrados::new(span, rise).map_err(value_error)?;
+    let ring = ring
+        .map(|t| intrados.ring(t))
+        .transpose()
+        .map_err(value_error)?;
+    to_py(
+        py,
+        &render_geometry::json(&Geometry { intrados, ring }, None),
+    )
 }
 
 /// Validates and describes the arch: the `arch` object of every JSON document.
@@ -538,6 +562,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("LP_SOLVER", arch_enum::lp::highs::SOLVER)?;
     m.add("JSON_VERSION", JSON_VERSION)?;
     m.add_function(wrap_pyfunction!(arch, m)?)?;
+    m.add_function(wrap_pyfunction!(geometry, m)?)?;
     m.add_function(wrap_pyfunction!(solve, m)?)?;
     m.add_function(wrap_pyfunction!(mu_ms, m)?)?;
     m.add_function(wrap_pyfunction!(solve_svg, m)?)?;

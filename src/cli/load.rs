@@ -206,9 +206,9 @@ pub(crate) fn run_curve(a: LoadCurveArgs, settings: &Settings, io: &mut Io) -> E
         Err(e) => return io.bad_input(&e),
     };
     let bar = super::progress::Progress::new("load-curve");
-    let curve = match mu_samples(&arch, a.mu_min, a.mu_max, a.points, settings).and_then(|grid| {
-        trace(&arch, eta, &load, &grid, settings, &|d, t| bar.update(d, t))
-    }) {
+    let curve = match mu_samples(&arch, a.mu_min, a.mu_max, a.points, settings)
+        .and_then(|grid| trace(&arch, eta, &load, &grid, settings, &|d, t| bar.update(d, t)))
+    {
         Ok(s) => s,
         Err(e) => return io.bad_input(&e),
     };
