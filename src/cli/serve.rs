@@ -63,7 +63,11 @@ const LOAD_KEYS: &[&str] = &[
 ];
 
 /// Parameters no endpoint takes: `json` is implied, the rest pick files and formats.
-const NEVER: &[&str] = &["json", "help", "version", "out", "png", "width"];
+const NEVER: &[&str] = &["json", "help", "version", "out", "png"];
+
+/// Parameters the figures refuse: `width` is the PNG's there (the API draws SVG); the
+/// commands take it as the barrel width.
+const FIGURE_NEVER: &[&str] = &["width"];
 
 /// A limit on a count-valued parameter of one endpoint.
 pub struct Limit {
@@ -399,7 +403,7 @@ fn run_command(command: &str, params: &[Param]) -> Reply {
 }
 
 fn run_figure(figure: &str, params: &[Param]) -> Reply {
-    let args = match arguments(&["plot", figure], &[], params) {
+    let args = match arguments(&["plot", figure], FIGURE_NEVER, params) {
         Ok(a) => a,
         Err(message) => return Reply::error(400, message),
     };

@@ -199,6 +199,24 @@ fn api_bodies_are_the_cli_json() {
             &["assess", "--alpha", "0", "--eta", "0.2", "--mu", "0.35"],
         ),
         (
+            "/api/assess?span=10&rise=5&ring=0.6&mu=0.6&width=1&unit_weight=20",
+            &[
+                "assess",
+                "--span",
+                "10",
+                "--rise",
+                "5",
+                "--ring",
+                "0.6",
+                "--mu",
+                "0.6",
+                "--width",
+                "1",
+                "--unit-weight",
+                "20",
+            ],
+        ),
+        (
             "/api/load?alpha=0&eta=0.3&mu=0.8&horizontal",
             &[
                 "load",
@@ -377,6 +395,12 @@ fn malformed_requests_are_refused_with_the_argument_named() {
         &server,
         "/api/solve?alpha=0&mu=1&json",
         "unknown parameter 'json'",
+    );
+    // a figure's width is its PNG's: the API draws SVG
+    refused(
+        &server,
+        "/api/plot/arch?alpha=0&mu=1&width=500",
+        "unknown parameter 'width'",
     );
     refused(
         &server,
