@@ -388,6 +388,19 @@ pub const SYMMETRY_TOL: f64 = 1e-12;
 /// 1 − η/2 vanishes.
 pub const ETA_TOP: f64 = 2.0 * (1.0 - 1e-9);
 
+/// A finite positive number (a length, a width, a unit weight), or the error naming `arg`.
+pub fn check_positive(arg: &'static str, v: f64) -> Result<f64, InputError> {
+    if v.is_finite() && v > 0.0 {
+        Ok(v)
+    } else {
+        Err(InputError::OutOfRange {
+            arg,
+            value: fmt_value(v),
+            range: "a finite number > 0".into(),
+        })
+    }
+}
+
 /// Validates a thickness ratio η = t/r: finite, 0 < η < 2.
 pub fn check_eta(eta: f64) -> Result<f64, InputError> {
     if eta.is_finite() && eta > 0.0 && eta < 2.0 {

@@ -8,7 +8,7 @@
 //! tan(θ/2) = 2f/L (a segment for f < L/2, the semicircle at f = L/2, a horseshoe above);
 //! β_R = π/2 − θ, β_L = π/2 + θ, α = θ − π/2. With a ring t, r = R_i + t/2 and η = t/r.
 
-use crate::arch::{fmt_value, InputError};
+use crate::arch::{check_positive as positive, InputError};
 use serde::Serialize;
 use std::f64::consts::FRAC_PI_2;
 
@@ -34,18 +34,6 @@ pub struct Ring {
     pub radius: f64,
     /// Thickness ratio η = t/r (always in (0, 2)).
     pub eta: f64,
-}
-
-fn positive(arg: &'static str, v: f64) -> Result<f64, InputError> {
-    if v.is_finite() && v > 0.0 {
-        Ok(v)
-    } else {
-        Err(InputError::OutOfRange {
-            arg,
-            value: fmt_value(v),
-            range: "a finite length > 0 in metres".into(),
-        })
-    }
 }
 
 impl Intrados {

@@ -2,7 +2,7 @@
 //! what margins?
 
 use super::arch_args::ArchArgs;
-use super::dimension_args::DimensionArgs;
+use super::dimension_args::{sized, DimensionArgs};
 use super::io::{geometry_text, json_with_geometry, Exit, Io};
 use crate::assess::assess;
 use crate::render::{json, table};
@@ -27,11 +27,7 @@ pub(crate) struct AssessArgs {
 }
 
 pub(crate) fn run(a: AssessArgs, settings: &Settings, io: &mut Io) -> Exit {
-    let given = a
-        .arch
-        .geometry()
-        .and_then(|g| Ok((g, a.dims.build(g)?, a.arch.eta(a.eta)?)));
-    let (geometry, dims, eta) = match given {
+    let (geometry, dims, eta) = match sized(&a.arch, &a.dims, a.eta) {
         Ok(v) => v,
         Err(e) => return io.bad_input(&e),
     };

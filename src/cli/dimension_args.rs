@@ -2,7 +2,8 @@
 //! kilonewtons (`--radius --depth --density [--g]`, or with `--span --rise --ring` the
 //! engineer's `--width --unit-weight`).
 
-use crate::arch::{fmt_value, InputError};
+use super::arch_args::ArchArgs;
+use crate::arch::{check_positive as positive, InputError};
 use crate::bridge::Geometry;
 use crate::render::table::Dimensions;
 use clap::Args;
@@ -33,18 +34,6 @@ pub(crate) struct DimensionArgs {
     /// Unit weight of the masonry in kN/m^3 (e.g. 20 for stone).
     #[arg(long, allow_hyphen_values = true, requires = "width")]
     unit_weight: Option<f64>,
-}
-
-fn positive(arg: &'static str, v: f64) -> Result<f64, InputError> {
-    if v.is_finite() && v > 0.0 {
-        Ok(v)
-    } else {
-        Err(InputError::OutOfRange {
-            arg,
-            value: fmt_value(v),
-            range: "a finite number > 0".into(),
-        })
-    }
 }
 
 impl DimensionArgs {
@@ -80,4 +69,15 @@ impl DimensionArgs {
             _ => Ok(None),
         }
     }
+}
+
+/// The engineer's geometry, the dimensions and the thickness ratio of a command that takes
+/// `--eta` (or `--ring`) with the arch and `DimensionArgs`.
+pub(crate) fn sized(
+    arch: &ArchArgs,
+    dims: &DimensionArgs,
+    eta: Option<f64>,
+) -> Result<(Option<Geometry>, Option<Dimensions>, f64), InputError> {
+    let geometry = arch.geometry()?;
+    Ok((geometry, dims.build(geometry)?, arch.eta(eta)?))
 }

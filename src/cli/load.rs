@@ -3,7 +3,7 @@
 //! the same sampled over a range of friction coefficients.
 
 use super::arch_args::ArchArgs;
-use super::dimension_args::DimensionArgs;
+use super::dimension_args::{sized, DimensionArgs};
 use super::io::{geometry_text, json_with_geometry, to_json, Exit, Io};
 use crate::arch::{fmt_value, Arch, InputError, JointLayout};
 use crate::friction::least_friction;
@@ -115,11 +115,7 @@ pub(crate) struct LoadArgs {
 }
 
 pub(crate) fn run(a: LoadArgs, settings: &Settings, io: &mut Io) -> Exit {
-    let given = a
-        .arch
-        .geometry()
-        .and_then(|g| Ok((g, a.dims.build(g)?, a.arch.eta(a.eta)?)));
-    let (geometry, dims, eta) = match given {
+    let (geometry, dims, eta) = match sized(&a.arch, &a.dims, a.eta) {
         Ok(v) => v,
         Err(e) => return io.bad_input(&e),
     };
