@@ -36,8 +36,12 @@ const fmt = (x, p = 6) => (x === null || x === undefined ? "–" : Number(x).toP
 // ---------------------------------------------------------------- inputs -> parameters
 function archParams() {
   const p = {};
-  if (document.querySelector('input[name="shape"]:checked').value === "alpha") {
+  const shape = document.querySelector('input[name="shape"]:checked').value;
+  if (shape === "alpha") {
     p["alpha-deg"] = $("alpha-deg").value.trim();
+  } else if (shape === "metres") {
+    p.span = $("span").value.trim();
+    p.rise = $("rise").value.trim();
   } else {
     p["beta-right"] = $("beta-right").value.trim();
     p["beta-left"] = $("beta-left").value.trim();
@@ -49,7 +53,9 @@ function archParams() {
   return p;
 }
 const muValue = () => ($("mu-inf").checked ? "inf" : $("mu").value.trim());
-const etaValue = () => $("eta").value.trim();
+const inMetres = () => document.querySelector('input[name="shape"]:checked').value === "metres";
+// the thickness: eta, or in metres the ring (the server derives eta = t/r from it)
+const thickness = () => (inMetres() ? { ring: $("ring").value.trim() } : { eta: $("eta").value.trim() });
 function loadParams() {
   const kind = $("load").value;
   if (kind === "none") return null;
@@ -67,6 +73,7 @@ const url = (endpoint, params) => `/api/${endpoint}?${query(params)}`;
 const ERROR_TARGET = {
   "alpha-deg": "alpha-deg", alpha: "alpha-deg", "beta-right": "beta-right", "beta-left": "beta-right",
   blocks: "blocks", joints: "blocks", mu: "mu", eta: "eta", "point-load-deg": "point-load-deg",
+  span: "span", rise: "span", ring: "ring",
 };
 function clearErrors() {
   document.querySelectorAll(".err").forEach((e) => (e.textContent = ""));
@@ -153,7 +160,7 @@ async function refreshState() {
   const ctl = (stateCtl = new AbortController());
   const arch = archParams();
   const mu = muValue();
-  const eta = etaValue();
+  const eta = thickness();
   const load = loadParams();
   const solveUrl = url("solve", { ...arch, mu });
   $("dl-solve").href = solveUrl;
@@ -166,13 +173,13 @@ async function refreshState() {
   if (!load && state.fig === "load") selectFigure("arch");
   const jobs = [
     getJson(solveUrl, ctl.signal).then((d) => (state.solve = d)),
-    getJson(url("assess", { ...arch, eta, mu }), ctl.signal).then((d) => (state.assess = d)),
+    getJson(url("assess", { ...arch, ...eta, mu }), ctl.signal).then((d) => (state.assess = d)),
     load
-      ? getJson(url("load", { ...arch, eta, mu, ...load }), ctl.signal).then((d) => (state.load = d))
+      ? getJson(url("load", { ...arch, ...eta, mu, ...load }), ctl.signal).then((d) => (state.load = d))
       : Promise.resolve((state.load = null)),
     refreshFigure(ctl, arch, mu, eta, load),
   ];
-  if (load) $("dl-load").href = url("plot/load", { ...arch, eta, mu, ...load });
+  if (load) $("dl-load").href = url("plot/load", { ...arch, ...eta, mu, ...load });
   const results = await Promise.allSettled(jobs);
   if (ctl.signal.aborted) return;
   for (const r of results) {
@@ -189,7 +196,7 @@ async function refreshFigure(ctl, arch, mu, eta, load) {
   const fig = $("figure");
   const u =
     state.fig === "load" && load
-      ? url("plot/load", { ...arch, eta, mu, ...load })
+      ? url("plot/load", { ...arch, ...eta, mu, ...load })
       : url("plot/arch", { ...arch, mu });
   try {
     const svg = await getText(u, ctl.signal);
@@ -246,6 +253,16 @@ function showNumbers() {
     const first = l.limit_states && l.limit_states[0];
     $("load-mode").textContent = first ? `${first.mode.replaceAll("_", " ")}: ${patternText(first.pattern)}` : "–";
     if (l.status !== "ok") msg.push(`load: ${l.status.replaceAll("_", " ")}${l.message ? " — " + l.message : ""}`);
+  }
+  // in metres: what the span, rise and ring give (the documents' `geometry`)
+  const g = (a && a.geometry) || (s && s.geometry);
+  $("geometry").hidden = !g;
+  if (g) {
+    const parts = [`R_i = ${fmt(g.intrados_radius_m, 5)} m, α = ${fmt((g.alpha * 180) / Math.PI, 5)}°`];
+    if (g.eta !== null && g.eta !== undefined) parts.push(`r = ${fmt(g.radius_m, 5)} m, η = t/r = ${fmt(g.eta)}`);
+    const least = s && s.geometry ? s.geometry.least_ring_m : null;
+    if (least !== null && least !== undefined) parts.push(`least ring t* = ${fmt(least, 5)} m`);
+    $("geometry").textContent = parts.join("; ");
   }
   $("message").textContent = msg.join("  ");
 }
@@ -437,7 +454,8 @@ function wire() {
     $("eta-slider").value = String(Math.round(Number($("eta").value) * 1000));
     stateSoon();
   });
-  for (const id of ["beta-right", "beta-left", "blocks", "weight"]) $(id).addEventListener("input", allSoon);
+  for (const id of ["beta-right", "beta-left", "span", "rise", "blocks", "weight"]) $(id).addEventListener("input", allSoon);
+  $("ring").addEventListener("input", stateSoon);
   document.querySelectorAll('input[name="shape"], input[name="joints"]').forEach((r) => r.addEventListener("change", () => {
     showShape();
     allSoon();
@@ -460,6 +478,8 @@ function wire() {
 function showShape() {
   const shape = document.querySelector('input[name="shape"]:checked').value;
   document.querySelectorAll("[data-shape]").forEach((r) => r.classList.toggle("off", r.dataset.shape !== shape));
+  const which = shape === "metres" ? "ring" : "eta";
+  document.querySelectorAll("[data-thickness]").forEach((r) => (r.hidden = r.dataset.thickness !== which));
   $("blocks").disabled = document.querySelector('input[name="joints"]:checked').value !== "blocks";
 }
 

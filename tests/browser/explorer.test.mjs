@@ -138,6 +138,23 @@ test("the explorer follows the mu slider with the library's eta* and mode", { ti
     await page.screenshot({ path: shot, fullPage: false });
     assert.deepEqual(errors, [], "no console error or page error");
 
+    // in metres: a 10 m semicircle with a 0.6 m ring is the arch alpha = 0 (the same eta*),
+    // and the page shows what the ring gives (eta = 0.6/5.3) and the least ring
+    await page.check('input[name="shape"][value="metres"]');
+    await page.fill("#span", "10");
+    await page.fill("#rise", "5");
+    await page.fill("#ring", "0.6");
+    await expectShown(["--span", "10", "--rise", "5", "--mu", "0.35"]);
+    const assessed = cli(["assess", "--span", "10", "--rise", "5", "--ring", "0.6", "--mu", "0.35"]);
+    await page.waitForFunction(
+      (eta) => document.getElementById("geometry").textContent.includes(`η = t/r = ${Number(eta).toPrecision(6)}`)
+        && document.getElementById("geometry").textContent.includes("least ring t*"),
+      assessed.geometry.eta,
+      { timeout: 15_000 },
+    );
+    assert.deepEqual(errors, [], "no console error or page error in metres");
+    await page.check('input[name="shape"][value="alpha"]');
+
     // bad input: the server's 400 message next to the input (the browser logs the failed
     // requests themselves as console errors: those, and only those, are expected here)
     await page.fill("#alpha-deg", "95");
