@@ -170,3 +170,127 @@ fn an_engineer_describes_the_arch_in_metres() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--rise"));
 }
+
+/// The fill's statics (bridge spec §2, §5): F and S against composite Simpson quadrature of
+/// the spec's pressure p(θ) = (g_f/η)(y_s − κ sin θ) κ sin θ over [max(β_R, 0), min(β, π)];
+/// N_f, T_f, M_f and their β- and η-derivatives against central differences; no fill, or a
+/// joint below the loaded part, carries nothing.
+#[test]
+fn fill_statics_against_quadrature_and_differences() {
+    use arch_enum::bridge::Fill;
+    let mut seed = 11u64;
+    let mut next = || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    // the spec's integrals, written out independently
+    let quad = |fill: &Fill, (br, bl): (f64, f64), eta: f64, beta: f64| -> (f64, f64) {
+        let kappa = 1.0 + eta / 2.0;
+        let top = if br <= PI / 2.0 && PI / 2.0 <= bl {
+            1.0
+        } else {
+            br.sin().max(bl.sin())
+        };
+        let ys = kappa * top + fill.depth;
+        let (a, b) = (br.max(0.0), beta.min(PI));
+        if b <= a {
+            return (0.0, 0.0);
+        }
+        let p = |t: f64| fill.weight_ratio / eta * (ys - kappa * t.sin()) * kappa * t.sin();
+        let n = 4000;
+        let h = (b - a) / n as f64;
+        let (mut f, mut s) = (0.0, 0.0);
+        for i in 0..=n {
+            let t = a + h * i as f64;
+            let w = if i == 0 || i == n {
+                1.0
+            } else if i % 2 == 1 {
+                4.0
+            } else {
+                2.0
+            };
+            f += w * p(t);
+            s += w * p(t) * kappa * t.cos();
+        }
+        (f * h / 3.0, s * h / 3.0)
+    };
+    for case in 0..300 {
+        let br = -1.2 + 2.0 * next();
+        let bl = PI - br + (next() - 0.5) * 0.6;
+        let eta = 0.05 + 0.6 * next();
+        let fill = Fill::new(0.3 + next(), 0.05 + 0.4 * next()).unwrap();
+        let beta = br + (bl - br) * next();
+        let l = fill.load((br, bl), eta, beta);
+        let (f, s) = quad(&fill, (br, bl), eta, beta);
+        let scale = 1.0 + f.abs() + s.abs();
+        assert!(
+            (l.f[0] - f).abs() < 1e-10 * scale,
+            "case {case}: F {} vs {f}",
+            l.f[0]
+        );
+        assert!(
+            (l.s[0] - s).abs() < 1e-10 * scale,
+            "case {case}: S {} vs {s}",
+            l.s[0]
+        );
+        // β-derivatives of the actions, away from the kinks at 0 and π
+        if beta.abs() > 1e-3 && (beta - PI).abs() > 1e-3 {
+            let a = fill.actions((br, bl), eta, beta);
+            let d = 1e-5;
+            let (lo, hi) = (
+                fill.actions((br, bl), eta, beta - d),
+                fill.actions((br, bl), eta, beta + d),
+            );
+            for (k, (x, y, z)) in [(a.n, lo.n, hi.n), (a.t, lo.t, hi.t), (a.m, lo.m, hi.m)]
+                .into_iter()
+                .enumerate()
+            {
+                for o in 0..2 {
+                    let fd = (z[o] - y[o]) / (2.0 * d);
+                    assert!(
+                        (x[o + 1] - fd).abs() < 1e-6 * (1.0 + fd.abs()),
+                        "case {case} action {k} order {}: {} vs {fd}",
+                        o + 1,
+                        x[o + 1]
+                    );
+                }
+            }
+            // η-derivatives at fixed β
+            let e = 1e-6;
+            let (lo, hi) = (
+                fill.actions((br, bl), eta - e, beta),
+                fill.actions((br, bl), eta + e, beta),
+            );
+            for (k, (lo, hi)) in [(lo.n[0], hi.n[0]), (lo.t[0], hi.t[0]), (lo.m[0], hi.m[0])]
+                .into_iter()
+                .enumerate()
+            {
+                let fd = (hi - lo) / (2.0 * e);
+                assert!(
+                    (a.d_eta[k] - fd).abs() < 1e-5 * (1.0 + fd.abs()),
+                    "case {case} d/deta {k}: {} vs {fd}",
+                    a.d_eta[k]
+                );
+            }
+            // the spec's identities: dN = T_f − p cos β, dM = −T_f − (η/2) p cos β
+            let p = l.f[1];
+            assert!((a.n[1] - (a.t[0] - p * beta.cos())).abs() < 1e-12 * scale);
+            assert!((a.m[1] - (-a.t[0] - eta / 2.0 * p * beta.cos())).abs() < 1e-12 * scale);
+        }
+    }
+    let none = Fill::new(0.0, 0.5).unwrap();
+    assert_eq!(none.load((0.0, PI), 0.2, 2.0).f, [0.0; 3]);
+    // a horseshoe's lower flank (β < 0) carries no fill
+    let fill = Fill::new(1.0, 0.2).unwrap();
+    assert_eq!(fill.load((-0.5, PI + 0.5), 0.2, -0.1).f, [0.0; 3]);
+    assert!(Fill::new(-1.0, 0.2)
+        .unwrap_err()
+        .to_string()
+        .contains("--fill-weight"));
+    assert!(Fill::new(1.0, f64::NAN)
+        .unwrap_err()
+        .to_string()
+        .contains("--fill-depth"));
+}

@@ -1,0 +1,163 @@
+//! Fill above the extrados (bridge spec §2), in closed form: a vertical dead load equal to
+//! the weight of the fill column above each extrados point, up to a level road.
+//!
+//! Non-dimensional as the statics (r = 1, forces / γ t d r): with g_f = γ_f/γ, κ = 1 + η/2
+//! and the road at height y_s above the centre, the pressure per unit dθ on the extrados
+//! point θ is p(θ) = (g_f/η)(y_s − κ sin θ) κ sin θ, over the loaded part θ ∈ [β_a, π],
+//! β_a = max(β_R, 0) (a horseshoe's lower flanks carry none). On the free body [β_R, β]
+//! the fill's resultant is F(β) = ∫ p dθ at the horizontal position S/F,
+//! S(β) = ∫ p κ cos θ dθ, both over [β_a, min(β, π)], and it adds to the internal actions
+//! N_f = −F cos β, T_f = F sin β, M_f = F cos β − S.
+//!
+//! With A = g_f κ/η:
+//! F = A [y_s (cos β_a − cos b) − κ ((b − β_a)/2 − (sin 2b − sin 2β_a)/4)],
+//! S = κ A [y_s (sin²b − sin²β_a)/2 − κ (sin³b − sin³β_a)/3], b = min(β, π).
+//! The road height y_s = κ max sin β over the arch + h (h = h_c/r, the depth above the
+//! highest extrados point, held fixed as η varies), so ∂y_s/∂η = (max sin β)/2, and
+//! ∂A/∂η = −g_f/η².
+//!
+//! This is the fill's statics alone: no command uses it yet.
+
+use crate::arch::{fmt_value, InputError};
+use std::f64::consts::{FRAC_PI_2, PI};
+
+/// Fill of unit weight g_f γ up to a level road at depth h r above the highest extrados
+/// point (non-dimensional).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Fill {
+    /// g_f = γ_f/γ, the fill's unit weight over the masonry's.
+    pub weight_ratio: f64,
+    /// h = h_c/r, the road's height above the highest extrados point over the mean radius.
+    pub depth: f64,
+}
+
+/// The fill's load on the free body [β_R, β] at one β and η: the resultant, its first
+/// moment, the pressure there, and their derivatives.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FillLoad {
+    /// F, dF/dβ = p(β), d²F/dβ² = p'(β).
+    pub f: [f64; 3],
+    /// S, dS/dβ = p κ cos β, d²S/dβ².
+    pub s: [f64; 3],
+    /// ∂F/∂η and ∂S/∂η at fixed β.
+    pub d_eta: [f64; 2],
+}
+
+/// The fill's contribution to the internal actions at β: N_f, T_f, M_f with their first two
+/// β-derivatives, and their η-derivatives (added to the constant terms of the statics).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FillActions {
+    /// N_f and its β-derivatives.
+    pub n: [f64; 3],
+    /// T_f and its β-derivatives.
+    pub t: [f64; 3],
+    /// M_f and its β-derivatives.
+    pub m: [f64; 3],
+    /// ∂N_f/∂η, ∂T_f/∂η, ∂M_f/∂η.
+    pub d_eta: [f64; 3],
+}
+
+impl Fill {
+    /// Fill of weight ratio `weight_ratio` (≥ 0) and depth `depth` (≥ 0) above the highest
+    /// extrados point; zero weight is no fill.
+    pub fn new(weight_ratio: f64, depth: f64) -> Result<Fill, InputError> {
+        let non_negative = |arg: &'static str, v: f64| match v.is_finite() && v >= 0.0 {
+            true => Ok(v),
+            false => Err(InputError::OutOfRange {
+                arg,
+                value: fmt_value(v),
+                range: "a finite number >= 0".into(),
+            }),
+        };
+        Ok(Fill {
+            weight_ratio: non_negative("--fill-weight", weight_ratio)?,
+            depth: non_negative("--fill-depth", depth)?,
+        })
+    }
+
+    /// The largest sin β over the arch [β_R, β_L]: where the extrados is highest.
+    pub fn top(beta_r: f64, beta_l: f64) -> f64 {
+        if beta_r <= FRAC_PI_2 && FRAC_PI_2 <= beta_l {
+            1.0
+        } else {
+            beta_r.sin().max(beta_l.sin())
+        }
+    }
+
+    /// The road's height y_s above the centre at thickness `eta`.
+    pub fn road(&self, (beta_r, beta_l): (f64, f64), eta: f64) -> f64 {
+        (1.0 + 0.5 * eta) * Fill::top(beta_r, beta_l) + self.depth
+    }
+
+    /// The load on the free body [β_R, `beta`] of the arch with springings `springings`
+    /// at thickness `eta` (> 0).
+    pub fn load(&self, springings: (f64, f64), eta: f64, beta: f64) -> FillLoad {
+        let a_start = springings.0.max(0.0);
+        let b = beta.min(PI);
+        if self.weight_ratio == 0.0 || b <= a_start {
+            return FillLoad {
+                f: [0.0; 3],
+                s: [0.0; 3],
+                d_eta: [0.0; 2],
+            };
+        }
+        let gf = self.weight_ratio;
+        let kappa = 1.0 + 0.5 * eta;
+        let a = gf * kappa / eta;
+        let ys = self.road(springings, eta);
+        let top = Fill::top(springings.0, springings.1);
+        let (sa, ca) = a_start.sin_cos();
+        let (sb, cb) = b.sin_cos();
+        // the integrals of sin θ, sin²θ, sin θ cos θ and sin²θ cos θ over [β_a, b]
+        let c1 = ca - cb;
+        let c2 = 0.5 * (b - a_start) - 0.25 * ((2.0 * b).sin() - (2.0 * a_start).sin());
+        let d1 = 0.5 * (sb * sb - sa * sa);
+        let d2 = (sb * sb * sb - sa * sa * sa) / 3.0;
+        let f = a * (ys * c1 - kappa * c2);
+        let s = kappa * a * (ys * d1 - kappa * d2);
+        // the pressure where the free body ends (zero beyond π) and its β-derivative
+        let inside = beta < PI;
+        let (sbeta, cbeta) = beta.sin_cos();
+        let p = if inside {
+            a * (ys - kappa * sbeta) * sbeta
+        } else {
+            0.0
+        };
+        let dp = if inside {
+            a * (ys * cbeta - 2.0 * kappa * sbeta * cbeta)
+        } else {
+            0.0
+        };
+        let ds2 = kappa * (dp * cbeta - p * sbeta);
+        // η-derivatives: A' = −g_f/η², y_s' = top/2, κ' = 1/2
+        let da = -gf / (eta * eta);
+        let dys = 0.5 * top;
+        let df = da * (ys * c1 - kappa * c2) + a * (dys * c1 - 0.5 * c2);
+        let dka = 0.5 * a + kappa * da;
+        let ds = dka * (ys * d1 - kappa * d2) + kappa * a * (dys * d1 - 0.5 * d2);
+        FillLoad {
+            f: [f, p, dp],
+            s: [s, p * kappa * cbeta, ds2],
+            d_eta: [df, ds],
+        }
+    }
+
+    /// The fill's internal actions at `beta` (N_f = −F cos β, T_f = F sin β,
+    /// M_f = F cos β − S) with their β- and η-derivatives.
+    pub fn actions(&self, springings: (f64, f64), eta: f64, beta: f64) -> FillActions {
+        let l = self.load(springings, eta, beta);
+        let (s, c) = beta.sin_cos();
+        let [f0, f1, f2] = l.f;
+        let [s0, s1, s2] = l.s;
+        FillActions {
+            n: [-f0 * c, f0 * s - f1 * c, f0 * c + 2.0 * f1 * s - f2 * c],
+            t: [f0 * s, f0 * c + f1 * s, -f0 * s + 2.0 * f1 * c + f2 * s],
+            m: [
+                f0 * c - s0,
+                -f0 * s + f1 * c - s1,
+                -f0 * c - 2.0 * f1 * s + f2 * c - s2,
+            ],
+            d_eta: [-l.d_eta[0] * c, l.d_eta[0] * s, l.d_eta[0] * c - l.d_eta[1]],
+        }
+    }
+}
