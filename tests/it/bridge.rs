@@ -16,6 +16,16 @@ fn spec_half_angle(span: f64, rise: f64) -> f64 {
     }
 }
 
+/// A deterministic uniform generator on [0, 1) (a 64-bit LCG), so that a run repeats.
+fn uniform(mut seed: u64) -> impl FnMut() -> f64 {
+    move || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
 /// A 10 m semicircular arch with a 0.6 m ring (the engineer): r = 5.3 m,
 /// η = 0.6/5.3, α = 0.
 #[test]
@@ -35,13 +45,7 @@ fn a_ten_metre_semicircle_with_a_sixty_centimetre_ring() {
 /// formula, and (L, f, t) → (α, η, r) → (L, f, t) reproduces the input to 1e-12.
 #[test]
 fn engineering_inputs_round_trip() {
-    let mut seed = 7u64;
-    let mut next = || {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut next = uniform(7);
     for _ in 0..2000 {
         let span = 1.0 + 40.0 * next();
         let rise = span * (0.02 + 1.5 * next());
@@ -178,13 +182,7 @@ fn an_engineer_describes_the_arch_in_metres() {
 #[test]
 fn fill_statics_against_quadrature_and_differences() {
     use arch_enum::bridge::Fill;
-    let mut seed = 11u64;
-    let mut next = || {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut next = uniform(11);
     // the spec's integrals, written out independently
     let quad = |fill: &Fill, (br, bl): (f64, f64), eta: f64, beta: f64| -> (f64, f64) {
         let kappa = 1.0 + eta / 2.0;
