@@ -57,6 +57,7 @@ impl DimensionArgs {
                 depth: positive("--width", d)?,
                 density: positive("--unit-weight", gamma)? * 1000.0 / g,
                 g,
+                intrados: geometry.map(|g| g.intrados.radius),
             }));
         }
         match (self.radius, self.depth, self.density) {
@@ -65,6 +66,7 @@ impl DimensionArgs {
                 depth: positive("--depth", d)?,
                 density: positive("--density", rho)?,
                 g: positive("--g", self.g)?,
+                intrados: None,
             })),
             _ => Ok(None),
         }

@@ -12,4 +12,8 @@ pub struct Dimensions {
     pub density: f64,
     /// Gravitational acceleration g (m/s²).
     pub g: f64,
+    /// The intrados radius R_i (m) when the arch was given by its span and rise: the least
+    /// thickness is then the least ring on that intrados, t* = η* R_i/(1 − η*/2), rather
+    /// than η* r at the fixed mean radius.
+    pub intrados: Option<f64>,
 }

@@ -116,11 +116,18 @@ fn in_units(s: &mut String, arch: &Arch, a: &Assessment, d: Dimensions) {
         sig(force * arch.span(), 6)
     );
     if let Outcome::Limit(ls) = &a.limit {
-        let _ = writeln!(
-            s,
-            "                    least thickness t* = {} m",
-            sig(ls.eta * d.radius, 6)
-        );
+        let _ = match d.intrados {
+            None => writeln!(
+                s,
+                "                    least thickness t* = {} m",
+                sig(ls.eta * d.radius, 6)
+            ),
+            Some(ri) => writeln!(
+                s,
+                "                    least ring t* = {} m (span and rise held)",
+                sig(ls.eta * ri / (1.0 - 0.5 * ls.eta), 6)
+            ),
+        };
     }
     if let Some(st) = &a.safest {
         let _ = writeln!(
