@@ -390,13 +390,22 @@ pub const ETA_TOP: f64 = 2.0 * (1.0 - 1e-9);
 
 /// A finite positive number (a length, a width, a unit weight), or the error naming `arg`.
 pub fn check_positive(arg: &'static str, v: f64) -> Result<f64, InputError> {
-    if v.is_finite() && v > 0.0 {
+    check_finite_from(arg, v, v > 0.0, "a finite number > 0")
+}
+
+/// A finite number ≥ 0 (a weight ratio or depth that may be zero), or the error naming `arg`.
+pub fn check_non_negative(arg: &'static str, v: f64) -> Result<f64, InputError> {
+    check_finite_from(arg, v, v >= 0.0, "a finite number >= 0")
+}
+
+fn check_finite_from(arg: &'static str, v: f64, ok: bool, range: &str) -> Result<f64, InputError> {
+    if v.is_finite() && ok {
         Ok(v)
     } else {
         Err(InputError::OutOfRange {
             arg,
             value: fmt_value(v),
-            range: "a finite number > 0".into(),
+            range: range.into(),
         })
     }
 }

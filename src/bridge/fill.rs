@@ -18,7 +18,7 @@
 //!
 //! This is the fill's statics alone: no command uses it yet.
 
-use crate::arch::{fmt_value, InputError};
+use crate::arch::{check_non_negative, InputError};
 use std::f64::consts::{FRAC_PI_2, PI};
 
 /// Fill of unit weight g_f γ up to a level road at depth h r above the highest extrados
@@ -61,17 +61,9 @@ impl Fill {
     /// Fill of weight ratio `weight_ratio` (≥ 0) and depth `depth` (≥ 0) above the highest
     /// extrados point; zero weight is no fill.
     pub fn new(weight_ratio: f64, depth: f64) -> Result<Fill, InputError> {
-        let non_negative = |arg: &'static str, v: f64| match v.is_finite() && v >= 0.0 {
-            true => Ok(v),
-            false => Err(InputError::OutOfRange {
-                arg,
-                value: fmt_value(v),
-                range: "a finite number >= 0".into(),
-            }),
-        };
         Ok(Fill {
-            weight_ratio: non_negative("--fill-weight", weight_ratio)?,
-            depth: non_negative("--fill-depth", depth)?,
+            weight_ratio: check_non_negative("--fill-weight", weight_ratio)?,
+            depth: check_non_negative("--fill-depth", depth)?,
         })
     }
 
@@ -104,8 +96,8 @@ impl Fill {
         let gf = self.weight_ratio;
         let kappa = 1.0 + 0.5 * eta;
         let a = gf * kappa / eta;
-        let ys = self.road(springings, eta);
         let top = Fill::top(springings.0, springings.1);
+        let ys = self.road(springings, eta);
         let (sa, ca) = a_start.sin_cos();
         let (sb, cb) = b.sin_cos();
         // the integrals of sin θ, sin²θ, sin θ cos θ and sin²θ cos θ over [β_a, b]

@@ -92,6 +92,18 @@ impl ArchArgs {
         }
     }
 
+    /// [`ArchArgs::build`] for a command that takes no thickness (`modes`, `curve`, `plot
+    /// map`): `--ring` is refused there rather than ignored.
+    pub(crate) fn build_without_ring(&self) -> Result<Arch, InputError> {
+        if self.ring.is_some() {
+            return Err(InputError::Inconsistent {
+                arg: "--ring",
+                reason: "this command takes no thickness (it finds eta* over mu); --ring is for solve, assess, load, load-curve, certify under a load and plot arch/load/eccentricity".into(),
+            });
+        }
+        self.build()
+    }
+
     /// The intrados of `--span/--rise`, when given.
     pub(crate) fn intrados(&self) -> Result<Option<Intrados>, InputError> {
         match (self.span, self.rise) {

@@ -31,7 +31,7 @@ pub(crate) struct CurveArgs {
 }
 
 pub(crate) fn run(a: CurveArgs, settings: &Settings, io: &mut Io) -> Exit {
-    let arch = match a.arch.build() {
+    let arch = match a.arch.build_without_ring() {
         Ok(a) => a,
         Err(e) => return io.bad_input(&e),
     };

@@ -57,7 +57,7 @@ impl DimensionArgs {
                 depth: positive("--width", d)?,
                 density: positive("--unit-weight", gamma)? * 1000.0 / g,
                 g,
-                intrados: geometry.map(|g| g.intrados.radius),
+                intrados: geometry.map(|g| g.intrados),
             }));
         }
         match (self.radius, self.depth, self.density) {

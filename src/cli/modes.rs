@@ -20,7 +20,7 @@ pub(crate) struct ModesArgs {
 }
 
 pub(crate) fn run(a: ModesArgs, settings: &Settings, io: &mut Io) -> Exit {
-    let arch = match a.arch.build() {
+    let arch = match a.arch.build_without_ring() {
         Ok(a) => a,
         Err(e) => return io.bad_input(&e),
     };

@@ -306,7 +306,7 @@ pub(crate) fn draw(figure: Figure, settings: &Settings, io: &mut Io) -> Result<S
                 n_mu,
                 log_eta,
             };
-            match arch.build() {
+            match arch.build_without_ring() {
                 Ok(a) => figures::map(&a, grid, threads, settings, &progress)
                     .map(|m| plot_map::svg(&m, log_eta)),
                 Err(e) => return Err(io.bad_input(&e)),

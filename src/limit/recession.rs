@@ -203,10 +203,11 @@ pub fn threshold(arch: &Arch, mu: f64, lo: f64, hi: f64, settings: &Settings) ->
             }
         }
     }
-    let any_opens = roots.iter().any(|r| r.2);
+    // a root above which the cone does not open is not η_rec: without one, the bracket's
+    // upper end stands, not exact
     let best = roots
         .into_iter()
-        .filter(|r| r.2 || !any_opens)
+        .filter(|r| r.2)
         .min_by(|a, b| a.0.total_cmp(&b.0))
         .map(|(eta, d, _)| Recession {
             eta,

@@ -167,6 +167,18 @@ fn an_engineer_describes_the_arch_in_metres() {
             "{args:?}"
         );
     }
+    // a command that takes no thickness refuses --ring rather than ignoring it
+    for cmd in ["modes", "curve"] {
+        let out = arch_enum()
+            .args([cmd, "--span", "10", "--rise", "5", "--ring", "0.6"])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{cmd}");
+        assert!(
+            String::from_utf8_lossy(&out.stderr).contains("--ring"),
+            "{cmd}"
+        );
+    }
     let out = arch_enum()
         .args(["solve", "--span", "10", "--rise", "0", "--mu", "0.6"])
         .output()

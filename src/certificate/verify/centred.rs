@@ -7,11 +7,8 @@
 //! weight's line of action moves with η), a cell split in two where it is not proved.
 
 use super::report::{reject, Rejection};
-use super::statics::Model;
+use super::statics::{ntm_rows, Model, ETA_LIMIT};
 use crate::certificate::interval::{det3, Interval as I};
-
-/// The thickness limit t = 2r: the cells cover [0, 2].
-const ETA_LIMIT: f64 = 2.0;
 
 /// The narrowest cell of η tried before the proof is given up.
 const NARROWEST_CELL: f64 = ETA_LIMIT / 4096.0;
@@ -60,18 +57,10 @@ fn centred_over(
     eta: I,
     mu: Option<f64>,
 ) -> Result<[I; 3], String> {
-    let br = I::point(model.beta_r);
-    let (sr, cr) = (br.sin(), br.cos());
-    let rho = model.rho_over(eta);
-    // M(β) = −h (sin β − sin β_R) + v (cos β_R − cos β) + w + d cos β − ρ (sin β − sin β_R)
-    let mut a = [[I::point(0.0); 3]; 3];
-    let mut rhs = [I::point(0.0); 3];
-    for (j, &beta) in joints.iter().enumerate() {
-        let b = I::point(beta);
-        let (s, c) = (b.sin(), b.cos());
-        a[j] = [-(s - sr), cr - c, I::point(1.0)];
-        rhs[j] = -((b - br) * c - rho * (s - sr));
-    }
+    // the rows N, T, M at each joint; M = 0 at all three
+    let rows = joints.map(|beta| ntm_rows(model, beta, eta));
+    let a = rows.map(|[_, _, m]| m.0);
+    let rhs = rows.map(|[_, _, m]| -m.1);
     let inv = det3(a)
         .recip()
         .ok_or("the three joints' moment equations are not proved independent")?;
@@ -82,12 +71,9 @@ fn centred_over(
         }
         det3(ak) * inv
     });
-    for &beta in joints {
-        let b = I::point(beta);
-        let (s, c) = (b.sin(), b.cos());
-        let d = b - br;
-        let n = x[0] * s + x[1] * c - d * c;
-        let t = x[0] * c - x[1] * s + d * s;
+    let at = |(g, c): ([I; 3], I)| x[0] * g[0] + x[1] * g[1] + x[2] * g[2] + c;
+    for (&beta, &[n, t, _]) in joints.iter().zip(&rows) {
+        let (n, t) = (at(n), at(t));
         if n.lo <= 0.0 {
             return Err(format!("N at beta = {beta} is not proved positive"));
         }

@@ -157,9 +157,12 @@ pub(super) fn kinds(mu: Option<f64>) -> &'static [ContactKind] {
     }
 }
 
-/// Interval gradient (w.r.t. x) and constant term of an activation function at β, over
-/// the thicknesses `eta` (a point, or a cell of a proof over η).
-pub(super) fn affine(model: &Model, kind: ContactKind, beta: f64, eta: I, mu: f64) -> ([I; 3], I) {
+/// The thickness limit t = 2r: every arch has η < 2, and proofs over η cover [0, 2].
+pub(super) const ETA_LIMIT: f64 = 2.0;
+
+/// N, T and M at β as affine functions of x over the thicknesses `eta`: each (gradient,
+/// constant), in interval arithmetic.
+pub(super) fn ntm_rows(model: &Model, beta: f64, eta: I) -> [([I; 3], I); 3] {
     let b = I::point(beta);
     let (s, c) = (b.sin(), b.cos());
     let br = I::point(model.beta_r);
@@ -167,10 +170,17 @@ pub(super) fn affine(model: &Model, kind: ContactKind, beta: f64, eta: I, mu: f6
     let d = b - br;
     let rho = model.rho_over(eta);
     let z = I::point(0.0);
-    let gn = [s, c, z];
-    let gt = [c, -s, z];
-    let gm = [-(s - sr), cr - c, I::point(1.0)];
-    let (n0, t0, m0) = (-(d * c), d * s, d * c - rho * (s - sr));
+    [
+        ([s, c, z], -(d * c)),
+        ([c, -s, z], d * s),
+        ([-(s - sr), cr - c, I::point(1.0)], d * c - rho * (s - sr)),
+    ]
+}
+
+/// Interval gradient (w.r.t. x) and constant term of an activation function at β, over
+/// the thicknesses `eta` (a point, or a cell of a proof over η).
+pub(super) fn affine(model: &Model, kind: ContactKind, beta: f64, eta: I, mu: f64) -> ([I; 3], I) {
+    let [(gn, n0), (gt, t0), (gm, m0)] = ntm_rows(model, beta, eta);
     let he = I::point(0.5) * eta;
     let m = I::point(mu);
     let comb = |a: I, g1: [I; 3], c1: I, k: I, g2: [I; 3], c2: I| {

@@ -13,7 +13,7 @@ use super::limit_state::check_limit_state;
 use super::live::StateAt;
 use super::report::{mu_text, reject, Rejection, Report};
 use super::search::verify_search;
-use super::statics::{Model, LIMIT_STATE_TOL};
+use super::statics::{Model, ETA_LIMIT, LIMIT_STATE_TOL};
 use crate::certificate::format::{CertJoint, Certificate, Claim, FarkasCell};
 use crate::certificate::interval::Interval as I;
 
@@ -57,9 +57,6 @@ pub(super) fn verify_thickness(cert: &Certificate, model: &Model) -> Result<Repo
         lambda_bracket: None,
     })
 }
-
-/// The thickness limit: every arch has η < 2 (t < 2r).
-const ETA_LIMIT: f64 = 2.0;
 
 /// `no_equilibrium`: the friction-only Farkas certificate (`eta` null), or the Farkas
 /// certificate at the thickness limit η = 2 (centreline weight); proved; returns the

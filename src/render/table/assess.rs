@@ -122,10 +122,10 @@ fn in_units(s: &mut String, arch: &Arch, a: &Assessment, d: Dimensions) {
                 "                    least thickness t* = {} m",
                 sig(ls.eta * d.radius, 6)
             ),
-            Some(ri) => writeln!(
+            Some(i) => writeln!(
                 s,
                 "                    least ring t* = {} m (span and rise held)",
-                sig(ls.eta * ri / (1.0 - 0.5 * ls.eta), 6)
+                sig(i.ring_of(ls.eta).thickness, 6)
             ),
         };
     }
