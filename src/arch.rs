@@ -5,36 +5,14 @@
 //! (formulation §2). The right springing is at `beta_right`, the left at
 //! `beta_left > beta_right`; a symmetric arch of opening α has β_R = −α, β_L = π + α.
 
+use crate::fill::Fill;
+use crate::input::check_finite;
+pub use crate::input::{check_non_negative, check_positive, fmt_value, InputError};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
-use thiserror::Error;
 
 /// An angle in radians, counter-clockwise from the horizontal through the centre.
 pub type Radians = f64;
-
-/// Bad input: the only errors of this crate. Each message names the argument,
-/// its valid range and the value received.
-#[derive(Debug, Error, Clone, PartialEq)]
-pub enum InputError {
-    /// A numeric argument outside its valid range (or NaN).
-    #[error("invalid value for {arg}: {value} (valid range: {range})")]
-    OutOfRange {
-        /// The argument, as the user spells it (e.g. `--mu`).
-        arg: &'static str,
-        /// The value received, formatted.
-        value: String,
-        /// The valid range, in words.
-        range: String,
-    },
-    /// Arguments that are individually valid but inconsistent.
-    #[error("invalid {arg}: {reason}")]
-    Inconsistent {
-        /// The argument(s) concerned.
-        arg: &'static str,
-        /// What is wrong.
-        reason: String,
-    },
-}
 
 /// How the self-weight of a piece of arch is applied (formulation §3).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -98,6 +76,8 @@ pub struct Arch {
     beta_left: Radians,
     layout: JointLayout,
     weight: WeightModel,
+    /// Fill above the extrados (a dead load, bridge spec §2); `None` without fill.
+    fill: Option<Fill>,
     /// (sin β_R, cos β_R), computed once: every internal action needs them.
     right_trig: (f64, f64),
     /// (sin β_j, cos β_j) of each joint of a discrete arch (empty for a continuous one),
@@ -128,27 +108,6 @@ pub fn grid_angle(a: Radians, b: Radians, n: usize, i: usize) -> Radians {
         b
     } else {
         a + (b - a) * i as f64 / (n - 1) as f64
-    }
-}
-
-/// Formats a number for messages: plain for ordinary magnitudes, scientific otherwise.
-pub fn fmt_value(v: f64) -> String {
-    if v != 0.0 && v.is_finite() && (v.abs() < 1e-4 || v.abs() >= 1e7) {
-        format!("{v:e}")
-    } else {
-        format!("{v}")
-    }
-}
-
-fn check_finite(arg: &'static str, value: f64, range: &str) -> Result<(), InputError> {
-    if value.is_finite() {
-        Ok(())
-    } else {
-        Err(InputError::OutOfRange {
-            arg,
-            value: fmt_value(value),
-            range: range.to_string(),
-        })
     }
 }
 
@@ -186,6 +145,7 @@ impl Arch {
             beta_left: beta_left + 0.0,
             layout: JointLayout::Continuous,
             weight,
+            fill: None,
             right_trig: beta_right.sin_cos(),
             joint_trig: Vec::new(),
             scan_trig: ScanTrig::default(),
@@ -203,6 +163,26 @@ impl Arch {
             });
         }
         Arch::new(-alpha, PI + alpha, weight)
+    }
+
+    /// The same arch under `fill` (a dead load on the extrados, held at a depth ratio
+    /// h = h_c/r above its highest point); fill of zero weight is no fill, the same arch bit
+    /// for bit.
+    pub fn with_fill(self, fill: Fill) -> Arch {
+        Arch {
+            fill: (fill.weight_ratio > 0.0).then_some(fill),
+            ..self
+        }
+    }
+
+    /// (β_R, β_L).
+    pub fn springings(&self) -> (Radians, Radians) {
+        (self.beta_right, self.beta_left)
+    }
+
+    /// The fill on the extrados, if any.
+    pub fn fill(&self) -> Option<&Fill> {
+        self.fill.as_ref()
     }
 
     /// The same springings with `blocks` equal voussoirs (joints at the `blocks + 1`
@@ -369,6 +349,7 @@ impl Arch {
             beta_left: PI - self.beta_right,
             layout,
             weight: self.weight,
+            fill: self.fill,
             right_trig: beta_right.sin_cos(),
             joint_trig,
             scan_trig: ScanTrig::default(),
@@ -387,28 +368,6 @@ pub const SYMMETRY_TOL: f64 = 1e-12;
 /// The largest thickness the solver tries: just below η = 2, where the intrados radius
 /// 1 − η/2 vanishes.
 pub const ETA_TOP: f64 = 2.0 * (1.0 - 1e-9);
-
-/// A finite positive number (a length, a width, a unit weight), or the error naming `arg`.
-pub fn check_positive(arg: &'static str, v: f64) -> Result<f64, InputError> {
-    check_finite_from(arg, v, v > 0.0, "a finite number > 0")
-}
-
-/// A finite number ≥ 0 (a weight ratio or depth that may be zero), or the error naming `arg`.
-pub fn check_non_negative(arg: &'static str, v: f64) -> Result<f64, InputError> {
-    check_finite_from(arg, v, v >= 0.0, "a finite number >= 0")
-}
-
-fn check_finite_from(arg: &'static str, v: f64, ok: bool, range: &str) -> Result<f64, InputError> {
-    if v.is_finite() && ok {
-        Ok(v)
-    } else {
-        Err(InputError::OutOfRange {
-            arg,
-            value: fmt_value(v),
-            range: range.into(),
-        })
-    }
-}
 
 /// Validates a thickness ratio η = t/r: finite, 0 < η < 2.
 pub fn check_eta(eta: f64) -> Result<f64, InputError> {

@@ -28,16 +28,29 @@ pub fn column(mode: ContactKind, beta: Radians, eta: f64) -> [f64; 3] {
 /// L_e = −Σ_m [W_m V_y,m + ψ_m (W G_x)_m] over the blocks m between consecutive
 /// distinct active joints, with W_m = β_{m+1} − β_m and
 /// (W G_x)_m = ρ (sin β_{m+1} − sin β_m) (ρ = 1 for centreline weight,
-/// 1 + η²/12 for the true centroid).
+/// 1 + η²/12 for the true centroid), plus the fill's resultant and first moment on the
+/// block when the arch carries fill.
 pub fn power(arch: &Arch, eta: f64, contacts: &[Contact]) -> Vec<f64> {
     let rho = arch.weight().rho(eta);
     let mut joints: Vec<Radians> = contacts.iter().map(|c| c.beta).collect();
     joints.sort_by(f64::total_cmp);
     joints.dedup();
     // For each joint angle, the sum over all blocks after it of (W, W·G_x).
+    let fill = arch.fill();
     let blocks: Vec<(Radians, f64, f64)> = joints
         .windows(2)
-        .map(|w| (w[0], w[1] - w[0], rho * (w[1].sin() - w[0].sin())))
+        .map(|w| {
+            let (weight, moment) = (w[1] - w[0], rho * (w[1].sin() - w[0].sin()));
+            match fill {
+                None => (w[0], weight, moment),
+                // the fill's resultant F and first moment S on the block: differences of
+                // the free body's (bridge spec §2)
+                Some(f) => {
+                    let [a, b] = [w[0], w[1]].map(|beta| f.load(arch.springings(), eta, beta));
+                    (w[0], weight + (b.f[0] - a.f[0]), moment + (b.s[0] - a.s[0]))
+                }
+            }
+        })
         .collect();
     contacts
         .iter()

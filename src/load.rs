@@ -10,7 +10,9 @@
 
 use crate::arch::{Arch, Radians};
 use crate::contact::{Contact, ContactKind, Location};
+use crate::fill::vertical_actions;
 use crate::kinematics::column;
+use crate::pressure::Pressure;
 use crate::statics::{actions, Reactions};
 use serde::{Deserialize, Serialize};
 
@@ -32,6 +34,9 @@ pub enum LiveLoad {
         /// Angle of the loaded extrados point.
         beta: Radians,
     },
+    /// A vertical pressure λ·q on patches of the extrados (a vehicle or a patch load
+    /// spread through the fill, bridge spec §3), built for the thickness it is used at.
+    Pressure(Pressure),
 }
 
 /// Which side of a section at the point load's own angle: the free body [β_R, β] of a
@@ -101,6 +106,22 @@ impl LiveLoad {
                     [[0.0; 3]; 3]
                 }
             }
+            LiveLoad::Pressure(p) => {
+                let (f, m) = p.resultant(arch, eta, beta, side == Side::After);
+                let [n, t, m] = vertical_actions(f, m, beta);
+                [0, 1, 2].map(|k| [n[k], t[k], m[k]])
+            }
+        }
+    }
+
+    /// The angles strictly inside the arch where the live actions are not smooth: a point
+    /// load's (a jump) or a pressure patch's edges (a corner). A continuous arch is scanned
+    /// piece by piece between them, and discretisations keep them as joints.
+    pub fn breaks(&self, arch: &Arch, eta: f64) -> Vec<Radians> {
+        match *self {
+            LiveLoad::Horizontal { .. } => Vec::new(),
+            LiveLoad::Point { beta } => vec![beta],
+            LiveLoad::Pressure(p) => p.breaks(arch, eta),
         }
     }
 
@@ -120,7 +141,9 @@ impl LiveLoad {
     ///   W_m = β_{m+1} − β_m and (W G_y)_m = ρ (cos β_m − cos β_{m+1});
     /// * point load: q_j = −[c_j,y + c_j,ψ (1 + η/2) cos β_P] when the loaded point lies
     ///   after j (β_P > β_j, or β_P = β_j with j on the Before side), else 0. A load beyond
-    ///   the last active joint is at rest: compatible rates (B λ = 0) give it no power.
+    ///   the last active joint is at rest: compatible rates (B λ = 0) give it no power;
+    /// * pressure: q_j = −[c_j,y (F_total − F(β_j)) + c_j,ψ (S_total − S(β_j))], the
+    ///   pressure's resultant and first moment beyond joint j.
     pub fn power(&self, arch: &Arch, eta: f64, contacts: &[(Contact, Side)]) -> Vec<f64> {
         match *self {
             LiveLoad::Horizontal { towards_right } => {
@@ -157,6 +180,18 @@ impl LiveLoad {
                     -(col[1] + col[2] * (1.0 + 0.5 * eta) * bp.cos())
                 })
                 .collect(),
+            // the pressure beyond each joint: the whole less the free body's
+            LiveLoad::Pressure(p) => {
+                let (total_f, total_s) = p.resultant(arch, eta, arch.beta_left(), false);
+                contacts
+                    .iter()
+                    .map(|(c, _)| {
+                        let (f, s) = p.resultant(arch, eta, c.beta, false);
+                        let col = column(c.kind, c.beta, eta);
+                        -(col[1] * (total_f[0] - f[0]) + col[2] * (total_s[0] - s[0]))
+                    })
+                    .collect()
+            }
         }
     }
 }

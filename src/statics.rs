@@ -71,9 +71,23 @@ pub struct Actions {
 }
 
 /// N, T, M alone (no β-derivatives) at angle `beta` with (sin β, cos β) given: what a scan
-/// of the joints needs, the same arithmetic as [`actions_with`]'s (which calls it).
+/// of the joints needs, the same arithmetic as [`actions_with`]'s order 0 (the ring's
+/// weight, then the fill's actions added to the constant terms).
 #[inline]
-pub fn forces_with(arch: &Arch, eta: f64, beta: Radians, (s, c): (f64, f64)) -> [Affine; 3] {
+pub fn forces_with(arch: &Arch, eta: f64, beta: Radians, sc: (f64, f64)) -> [Affine; 3] {
+    let mut f = ring_forces(arch, eta, beta, sc);
+    if let Some(fill) = arch.fill() {
+        let a = fill.actions(arch.springings(), eta, beta);
+        for (k, v) in [a.n[0], a.t[0], a.m[0]].into_iter().enumerate() {
+            f[k].c += v;
+        }
+    }
+    f
+}
+
+/// N, T, M of the ring's own weight alone (no fill).
+#[inline]
+fn ring_forces(arch: &Arch, eta: f64, beta: Radians, (s, c): (f64, f64)) -> [Affine; 3] {
     let (sr, cr) = arch.right_sin_cos();
     let d = beta - arch.beta_right();
     let rho = arch.weight().rho(eta);
@@ -123,7 +137,7 @@ pub fn actions_with(arch: &Arch, eta: f64, beta: Radians, (s, c): (f64, f64)) ->
     let sr = arch.right_sin_cos().0;
     let rho = arch.weight().rho(eta);
     let drho = arch.weight().drho_deta(eta);
-    let [n0, t0, m0] = forces_with(arch, eta, beta, (s, c));
+    let [n0, t0, m0] = ring_forces(arch, eta, beta, (s, c));
     // dN = T − cos β, dT = −N + sin β, dM = −T + (1 − ρ) cos β
     let n1 = Affine {
         g: t0.g,
@@ -150,12 +164,22 @@ pub fn actions_with(arch: &Arch, eta: f64, beta: Radians, (s, c): (f64, f64)) ->
         g: n0.g,
         c: n0.c - (2.0 - rho) * s,
     };
-    Actions {
+    let mut a = Actions {
         n: [n0, n1, n2],
         t: [t0, t1, t2],
         m: [m0, m1, m2],
         dm_deta: [-drho * (s - sr), -drho * c, drho * s],
+    };
+    if let Some(fill) = arch.fill() {
+        // the identities above hold for the ring's weight alone: the fill adds its own
+        let f = fill.actions(arch.springings(), eta, beta);
+        for order in 0..3 {
+            a.n[order].c += f.n[order];
+            a.t[order].c += f.t[order];
+            a.m[order].c += f.m[order];
+        }
     }
+    a
 }
 
 impl Actions {

@@ -3,9 +3,11 @@
 //! the same sampled over a range of friction coefficients.
 
 use super::arch_args::ArchArgs;
+use super::bridge_args::{FillArgs, Placed, VehicleArgs};
 use super::dimension_args::{sized, DimensionArgs};
 use super::io::{geometry_text, json_with_geometry, to_json, Exit, Io};
 use crate::arch::{fmt_value, Arch, InputError, JointLayout};
+use crate::bridge::critical::{critical, Critical};
 use crate::friction::least_friction;
 use crate::limit_curve::mu_grid;
 use crate::load::LiveLoad;
@@ -16,7 +18,7 @@ use clap::{ArgGroup, Args};
 
 /// Which live load (exactly one).
 #[derive(Args, Debug)]
-#[command(group(ArgGroup::new("live").required(true).args(["horizontal", "horizontal_left", "point_load", "point_load_deg", "point_load_joint"])))]
+#[command(group(ArgGroup::new("live").required(true).args(["horizontal", "horizontal_left", "point_load", "point_load_deg", "point_load_joint", "axles"])))]
 pub(crate) struct LiveLoadArgs {
     /// A horizontal body force lambda x self-weight towards +x (the right springing):
     /// a constant horizontal acceleration lambda g.
@@ -37,12 +39,22 @@ pub(crate) struct LiveLoadArgs {
     /// from the right springing (0) to the left one.
     #[arg(long, value_name = "K")]
     point_load_joint: Option<usize>,
+    #[command(flatten)]
+    pub(crate) vehicle: VehicleArgs,
 }
 
 impl LiveLoadArgs {
     /// The load on `arch`, checked (a point load must lie on the arch; the error names the
     /// flag the angle came in).
     pub(crate) fn build(&self, arch: &Arch) -> Result<LiveLoad, InputError> {
+        if self.vehicle.given() {
+            return Err(InputError::Inconsistent {
+                arg: "--axles",
+                reason: "vehicles are placed by `load` (with --at or --critical); this command \
+                         takes a horizontal or a point load"
+                    .into(),
+            });
+        }
         let joints: &[f64] = match arch.layout() {
             JointLayout::Discrete(j) => j,
             JointLayout::Continuous => &[],
@@ -109,6 +121,8 @@ pub(crate) struct LoadArgs {
     live: LiveLoadArgs,
     #[command(flatten)]
     dims: DimensionArgs,
+    #[command(flatten)]
+    fill: FillArgs,
     /// Print one JSON document instead of text.
     #[arg(long)]
     pub(crate) json: bool,
@@ -119,10 +133,20 @@ pub(crate) fn run(a: LoadArgs, settings: &Settings, io: &mut Io) -> Exit {
         Ok(v) => v,
         Err(e) => return io.bad_input(&e),
     };
-    let (arch, load) = match a.arch.build().and_then(|arch| {
-        let load = a.live.build(&arch)?;
-        Ok((arch, load))
-    }) {
+    let built = a.arch.build().and_then(|arch| {
+        let fill = a.fill.build(dims.as_ref())?;
+        let arch = match &fill {
+            Some((f, _)) => arch.with_fill(*f),
+            None => arch,
+        };
+        let bridge = Bridge::build(&a.live, &arch, eta, a.mu, dims.as_ref(), settings)?;
+        let load = match &bridge {
+            Some(b) => b.load,
+            None => a.live.build(&arch)?,
+        };
+        Ok((arch, fill.map(|f| f.1), bridge, load))
+    });
+    let (arch, fill, bridge, load) = match built {
         Ok(v) => v,
         Err(e) => return io.bad_input(&e),
     };
@@ -130,21 +154,96 @@ pub(crate) fn run(a: LoadArgs, settings: &Settings, io: &mut Io) -> Exit {
         Ok(o) => o,
         Err(e) => return io.bad_input(&e),
     };
+    let vehicle_kn = bridge.as_ref().map(|b| b.placed.vehicle.total_kn());
     let q = LoadQuestion {
         arch: &arch,
         eta,
         mu: a.mu,
         load,
         dims,
+        vehicle_kn,
     };
+    let bridged = (fill.is_some() || bridge.is_some()).then(|| {
+        let vehicle = bridge.as_ref().map(|b| b.placed.json(&arch, eta, b.at_m, &load));
+        (vehicle, bridge.as_ref().and_then(|b| b.critical.as_ref()))
+    });
     if a.json {
-        io.out(&json_with_geometry(&json(&q, &outcome), geometry, None));
+        let doc = json(&q, &outcome);
+        io.out(&match bridged {
+            None => json_with_geometry(&doc, geometry, None),
+            Some((vehicle, critical)) => {
+                let keys = crate::render::json::bridge(fill, vehicle, critical, vehicle_kn);
+                json_with_geometry(&WithBridge { doc: &doc, keys: &keys }, geometry, None)
+            }
+        });
     } else {
-        io.out(&(geometry_text(geometry, None) + &table(&q, &outcome)));
+        let lines = bridged.map_or(String::new(), |(vehicle, critical)| {
+            crate::render::table::bridge(fill.as_ref(), vehicle.as_ref(), critical, vehicle_kn)
+        });
+        io.out(&(geometry_text(geometry, None) + &lines + &table(&q, &outcome)));
     }
     match outcome {
         Ok(LoadOutcome::Limits(_)) => Exit::Answered,
         _ => Exit::NoAnswer,
+    }
+}
+
+/// A load document with the bridge keys after its own.
+#[derive(serde::Serialize)]
+struct WithBridge<'a, T> {
+    #[serde(flatten)]
+    doc: &'a T,
+    #[serde(flatten)]
+    keys: &'a crate::render::json::BridgeJson,
+}
+
+/// A vehicle placed at `--at`, or at its critical position with `--critical`.
+struct Bridge {
+    placed: Placed,
+    at_m: f64,
+    load: LiveLoad,
+    critical: Option<Critical>,
+}
+
+impl Bridge {
+    fn build(
+        live: &LiveLoadArgs,
+        arch: &Arch,
+        eta: f64,
+        mu: f64,
+        dims: Option<&crate::render::table::Dimensions>,
+        settings: &Settings,
+    ) -> Result<Option<Bridge>, InputError> {
+        if !live.vehicle.given() {
+            return Ok(None);
+        }
+        let placed = live.vehicle.build(dims)?;
+        let (at_m, critical) = match live.vehicle.at() {
+            Some(at) => (at, None),
+            None => {
+                let c = critical(
+                    arch,
+                    eta,
+                    mu,
+                    &placed.deck,
+                    &placed.vehicle,
+                    live.vehicle.search(),
+                    settings,
+                )?;
+                let at = c.minima.first().map_or_else(
+                    || placed.deck.crossing(arch, eta, &placed.vehicle).0,
+                    |m| m.at_m,
+                );
+                (at, Some(c))
+            }
+        };
+        let load = placed.deck.place(arch, eta, &placed.vehicle, at_m)?;
+        Ok(Some(Bridge {
+            placed,
+            at_m,
+            load,
+            critical,
+        }))
     }
 }
 
@@ -214,6 +313,7 @@ pub(crate) fn run_curve(a: LoadCurveArgs, settings: &Settings, io: &mut Io) -> E
         mu: f64::INFINITY,
         load,
         dims: None,
+        vehicle_kn: None,
     };
     if a.json {
         io.out(&to_json(&curve_json(&q, &curve)));
@@ -234,6 +334,7 @@ impl LoadCurveArgs {
         let what = match load {
             LiveLoad::Horizontal { .. } => "horizontal acceleration".to_string(),
             LiveLoad::Point { beta } => format!("point load at {:.2}°", beta.to_degrees()),
+            LiveLoad::Pressure(_) => "vehicle".to_string(),
         };
         Ok((
             format!(

@@ -10,6 +10,7 @@
 
 mod app;
 mod arch_args;
+mod bridge_args;
 mod assess;
 mod certify;
 mod curve;

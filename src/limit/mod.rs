@@ -51,6 +51,22 @@ pub fn solve(arch: &Arch, mu: f64, settings: &Settings) -> Result<Solution, Inpu
     solve_near(arch, mu, continuum_guess(arch, mu, settings), settings)
 }
 
+/// The least thickness of an arch under fill is not solved yet: the fill's 1/η makes every
+/// activation function nonlinear in η in all of N, T and M, and the thickness engine's
+/// η-derivatives and monotone shortcuts are those of the ring's own weight. Its loads at a
+/// given thickness are solved ([`crate::multiplier`]).
+fn refuse_fill(arch: &Arch) -> Result<(), InputError> {
+    match arch.fill() {
+        Some(_) => Err(InputError::Inconsistent {
+            arg: "--fill-weight",
+            reason: "the least thickness of an arch with fill is not solved yet; \
+                     its live loads at a given ring are (load, load-curve)"
+                .into(),
+        }),
+        None => Ok(()),
+    }
+}
+
 /// The width of a bracket guessed from the continuous arch (relative) is at least this
 /// (the resolution of η_s) ...
 const GUESS_REL_MIN: f64 = 1e-12;
@@ -103,6 +119,7 @@ pub fn solve_near(
 ) -> Result<Solution, InputError> {
     let mu = check_mu(mu)?;
     settings.validate()?;
+    refuse_fill(arch)?;
     let mut candidates = Vec::new();
     let (outcome, vertical) = match vertical::band(arch, mu, settings) {
         vertical::Band::Near(fl) => {

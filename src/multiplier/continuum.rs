@@ -114,13 +114,15 @@ impl<'a> Loaded<'a> {
         let n = settings.scan_points.max(3);
         self.pieces()
             .into_iter()
-            .map(|((a, _), (b, _), side)| {
+            .map(|piece| {
+                let ((a, _), (b, _), _) = piece;
                 // the grid of `peaks_over`, angle for angle
                 let betas: Vec<Radians> = (0..n).map(|i| grid_angle(a, b, n, i)).collect();
                 let rows = betas
                     .iter()
                     .map(|&beta| {
                         let act = actions(self.arch, self.eta, beta);
+                        let side = self.side_at(&piece, beta);
                         let live = self.load.actions_d(self.arch, self.eta, beta, side);
                         let mut r = [[(
                             Affine {
@@ -183,37 +185,43 @@ impl<'a> Loaded<'a> {
         )
     }
 
-    /// The smooth pieces of the arch: one, or two at a point load strictly inside (each
-    /// end with its location, and the side of the section that belongs to the piece).
+    /// The smooth pieces of the arch: one, or one more at each of the load's breaks strictly
+    /// inside (each end with its location, and the side of the section that belongs to the
+    /// piece: `Before` on the first, `After` beyond the first break).
     fn pieces(&self) -> Vec<Piece> {
         let (a, b) = (self.arch.beta_right(), self.arch.beta_left());
-        match *self.load {
-            LiveLoad::Point { beta } if beta > a && beta < b => vec![
-                (
-                    (a, Location::Springing),
-                    (beta, Location::Interior),
-                    Side::Before,
-                ),
-                (
-                    (beta, Location::Interior),
-                    (b, Location::Springing),
-                    Side::After,
-                ),
-            ],
-            // a load at the left springing is carried by the section there (its free body is
-            // the whole arch); at the right springing by every section but the springing's
-            LiveLoad::Point { beta } if beta == b => {
-                vec![(
-                    (a, Location::Springing),
-                    (b, Location::Springing),
-                    Side::After,
-                )]
-            }
-            _ => vec![(
+        // a load at the left springing is carried by the section there (its free body is
+        // the whole arch); at the right springing by every section but the springing's
+        if matches!(*self.load, LiveLoad::Point { beta } if beta == b) {
+            return vec![(
                 (a, Location::Springing),
                 (b, Location::Springing),
-                Side::Before,
-            )],
+                Side::After,
+            )];
+        }
+        let mut ends = vec![(a, Location::Springing)];
+        ends.extend(
+            self.load
+                .breaks(self.arch, self.eta)
+                .into_iter()
+                .filter(|&t| t > a && t < b)
+                .map(|t| (t, Location::Interior)),
+        );
+        ends.push((b, Location::Springing));
+        ends.windows(2)
+            .enumerate()
+            .map(|(i, w)| (w[0], w[1], if i == 0 { Side::Before } else { Side::After }))
+            .collect()
+    }
+
+    /// The side at which the piece `(from, to, side)` evaluates the load at `beta`: its own,
+    /// except at the ends of a pressure's piece, where the β-derivatives are the piece's
+    /// one-sided ones (a pressure's actions are continuous, with corners at its breaks).
+    fn side_at(&self, (from, to, side): &Piece, beta: Radians) -> Side {
+        match *self.load {
+            LiveLoad::Pressure(_) if beta == from.0 => Side::After,
+            LiveLoad::Pressure(_) if beta == to.0 => Side::Before,
+            _ => *side,
         }
     }
 
@@ -223,7 +231,8 @@ impl<'a> Loaded<'a> {
         let mut out = Vec::new();
         let grids = (self.scans.replace(self.scans.get() + 1) > 0)
             .then(|| self.grids.get_or_init(|| self.grids(settings)));
-        for (i, (from, to, side)) in self.pieces().into_iter().enumerate() {
+        for (i, piece) in self.pieces().into_iter().enumerate() {
+            let (from, to, side) = piece;
             let grid = grids.map(|g| &g[i]);
             let phi = |beta: Radians, orders: usize| {
                 let mut v = [[0.0; 3]; 4];
@@ -239,7 +248,9 @@ impl<'a> Loaded<'a> {
                     }
                 }
                 let act = actions(self.arch, self.eta, beta);
-                let live = self.load.actions_d(self.arch, self.eta, beta, side);
+                let live =
+                    self.load
+                        .actions_d(self.arch, self.eta, beta, self.side_at(&piece, beta));
                 for (k, &mode) in modes.iter().enumerate() {
                     for (d, slot) in v[k].iter_mut().enumerate().take(orders) {
                         *slot = act.activation(mode, d, self.eta, self.mu).at(x)
@@ -315,10 +326,12 @@ pub fn extreme(
     let mut work: Vec<(Radians, Side)> = (0..=64)
         .map(|i| (a + (b - a) * i as f64 / 64.0, Side::After))
         .collect();
-    if let LiveLoad::Point { beta } = *load {
+    for beta in load.breaks(arch, eta) {
         work.retain(|(w, _)| (w - beta).abs() > SAME_ANGLE);
         work.push((beta, Side::Before));
-        work.push((beta, Side::After));
+        if load.splits(beta) {
+            work.push((beta, Side::After));
+        }
     }
     // λ_min = 0 when the arch stands unloaded: the state of largest margin at λ = 0 on
     // the working set, verified over the whole arch, proves it (one margin LP and one
@@ -656,10 +669,8 @@ pub fn carry_over(
     settings: &Settings,
 ) -> Option<Extreme> {
     let p = Loaded::new(arch, eta, mu, load);
-    let fixed = |c: &(Contact, Side)| {
-        c.0.at == Location::Springing
-            || matches!(*load, LiveLoad::Point { beta } if beta == c.0.beta)
-    };
+    let breaks = load.breaks(arch, eta);
+    let fixed = |c: &(Contact, Side)| c.0.at == Location::Springing || breaks.contains(&c.0.beta);
     let merged: Vec<Tagged<Side>> = family::merge_adjacent(pattern, h, fixed)
         .into_iter()
         .collect();

@@ -93,7 +93,7 @@ pub fn branch_key(
     let discrete = matches!(arch.layout(), JointLayout::Discrete(_));
     let loaded = match *load {
         LiveLoad::Point { beta } => Some(beta),
-        LiveLoad::Horizontal { .. } => None,
+        LiveLoad::Horizontal { .. } | LiveLoad::Pressure(_) => None,
     };
     let pattern = least
         .pattern

@@ -13,8 +13,17 @@ use crate::undecided::Undecided;
 /// above).
 pub(super) const UNBOUNDED_BELOW: &str = "the least multiplier came out unbounded";
 
-/// Checks the load against the arch: a point load must lie on it (β_R ≤ β_P ≤ β_L).
+/// Checks the load against the arch: a point load must lie on it (β_R ≤ β_P ≤ β_L), and a
+/// horizontal acceleration has no fill to act on.
 pub fn check_load(arch: &Arch, load: &LiveLoad) -> Result<(), InputError> {
+    if arch.fill().is_some() && matches!(load, LiveLoad::Horizontal { .. }) {
+        return Err(InputError::Inconsistent {
+            arg: "--fill-weight",
+            reason: "a horizontal acceleration acts on the ring's weight alone, and the \
+                     fill's inertia is not modelled: no fill with --horizontal"
+                .into(),
+        });
+    }
     if let LiveLoad::Point { beta } = *load {
         let (a, b) = (arch.beta_right(), arch.beta_left());
         if !(beta.is_finite() && beta >= a && beta <= b) {

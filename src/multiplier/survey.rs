@@ -383,12 +383,12 @@ fn carried_states(
             }
         })
         .collect();
-    if let LiveLoad::Point { beta } = *load {
+    for beta in load.breaks(arch, eta) {
         if !joints.contains(&beta) {
             joints.push(beta);
-            joints.sort_by(f64::total_cmp);
         }
     }
+    joints.sort_by(f64::total_cmp);
     let discrete = arch
         .clone()
         .with_joints(&joints)

@@ -19,6 +19,9 @@ pub struct LoadQuestion<'a> {
     pub load: LiveLoad,
     /// Physical dimensions, for loads in kN or accelerations in m/s².
     pub dims: Option<Dimensions>,
+    /// A pressure's load at λ = 1 in kN, when it was given in kN (a vehicle: the sum of its
+    /// axles; a patch load: q times its area).
+    pub vehicle_kn: Option<f64>,
 }
 
 pub(super) fn at_joint(arch: &Arch, beta: f64) -> bool {

@@ -94,6 +94,7 @@ fn live_ntm(
     loaded: bool,
 ) -> [f64; 3] {
     match *load {
+        LiveLoad::Pressure(_) => unreachable!("this reference draws horizontal and point loads"),
         LiveLoad::Horizontal { towards_right } => {
             let k = if towards_right { 1.0 } else { -1.0 };
             let d = beta - br;
@@ -219,6 +220,9 @@ impl RefLambda {
 impl LoadedCont {
     pub fn new(br: f64, bl: f64, centroid: bool, eta: f64, mu: f64, load: LiveLoad) -> Self {
         let pieces = match load {
+            LiveLoad::Pressure(_) => {
+                unreachable!("this reference draws horizontal and point loads")
+            }
             LiveLoad::Horizontal { .. } => vec![Piece::new(br, bl, true)],
             LiveLoad::Point { beta } => {
                 assert!(br < beta && beta < bl, "point load inside the arch");
@@ -545,6 +549,7 @@ fn discrete_joints(br: f64, bl: f64, n: usize, load: LiveLoad, extra: &[f64]) ->
         })
         .collect();
     let bp = match load {
+        LiveLoad::Pressure(_) => unreachable!("this reference draws horizontal and point loads"),
         LiveLoad::Point { beta } => Some(beta),
         LiveLoad::Horizontal { .. } => None,
     };
@@ -584,6 +589,7 @@ fn discrete_lambda_at(
         1.0
     };
     let bp = match load {
+        LiveLoad::Pressure(_) => unreachable!("this reference draws horizontal and point loads"),
         LiveLoad::Point { beta } => Some(beta),
         LiveLoad::Horizontal { .. } => None,
     };
@@ -650,6 +656,7 @@ fn quadrature_ntm(
     let mut f = [-x[0], x[1]];
     let mut m = x[2] + (br.cos() - p_x) * x[1] - (br.sin() - p_y) * (-x[0]);
     let kx = match *load {
+        LiveLoad::Pressure(_) => unreachable!("this reference draws horizontal and point loads"),
         LiveLoad::Horizontal { towards_right } => lambda * if towards_right { 1.0 } else { -1.0 },
         LiveLoad::Point { .. } => 0.0,
     };
@@ -747,6 +754,7 @@ fn describe(r: &RefLambda) -> String {
 
 fn load_name(load: &LiveLoad) -> String {
     match load {
+        LiveLoad::Pressure(_) => unreachable!("this reference draws horizontal and point loads"),
         LiveLoad::Horizontal { towards_right } => {
             format!("horizontal {}", if *towards_right { "+x" } else { "-x" })
         }

@@ -46,6 +46,9 @@ struct Case {
     sections: Vec<Section>,
     /// (section index, kind): every contact.
     contacts: Vec<(usize, ContactKind)>,
+    /// Fill above the extrados (g_f = γ_f/γ, depth h above its highest point over r): a
+    /// dead load integrated here by Simpson's rule (bridge spec §2, written again).
+    fill: Option<(f64, f64)>,
 }
 
 impl Case {
@@ -81,7 +84,71 @@ impl Case {
             load,
             sections,
             contacts,
+            fill: None,
         }
+    }
+
+    /// The fill's resultant and first moment about the centre's vertical, (F, S), on the
+    /// extrados of the angles [lo, hi]: the weight of the fill column above each point of the
+    /// upward-facing extrados up to the road, by composite Simpson (4000 intervals).
+    fn fill_force(&self, lo: f64, hi: f64) -> (f64, f64) {
+        let Some((gf, h)) = self.fill else {
+            return (0.0, 0.0);
+        };
+        let (br, bl) = (self.joints[0], *self.joints.last().unwrap());
+        let kappa = 1.0 + self.eta / 2.0;
+        let top = if br <= PI / 2.0 && bl >= PI / 2.0 {
+            1.0
+        } else {
+            br.sin().max(bl.sin())
+        };
+        let road = kappa * top + h;
+        let (a, b) = (lo.max(br).max(0.0), hi.min(PI));
+        if b <= a {
+            return (0.0, 0.0);
+        }
+        // the column's height times its horizontal width per dθ, d(κ cos θ) = κ sin θ dθ
+        let p = |t: f64| gf / self.eta * (road - kappa * t.sin()) * kappa * t.sin();
+        let n = 4000;
+        let step = (b - a) / n as f64;
+        let (mut f, mut m) = (0.0, 0.0);
+        for i in 0..=n {
+            let t = a + step * i as f64;
+            let w = if i == 0 || i == n {
+                1.0
+            } else if i % 2 == 1 {
+                4.0
+            } else {
+                2.0
+            };
+            f += w * p(t);
+            m += w * p(t) * kappa * t.cos();
+        }
+        (f * step / 3.0, m * step / 3.0)
+    }
+
+    /// A pressure's resultant and first moment on the extrados of the angles [lo, hi]:
+    /// each patch's part over the horizontal extent of those extrados points.
+    fn pressure_force(&self, lo: f64, hi: f64) -> (f64, f64) {
+        let LiveLoad::Pressure(p) = self.load else {
+            return (0.0, 0.0);
+        };
+        let (br, bl) = (self.joints[0], *self.joints.last().unwrap());
+        let (a, b) = (lo.max(br).max(0.0), hi.min(bl).min(PI));
+        if b <= a {
+            return (0.0, 0.0);
+        }
+        let kappa = 1.0 + self.eta / 2.0;
+        let (x_lo, x_hi) = (kappa * b.cos(), kappa * a.cos());
+        let (mut f, mut m) = (0.0, 0.0);
+        for patch in p.patches() {
+            let (u, v) = (patch.x_lo.max(x_lo), patch.x_hi.min(x_hi));
+            if u < v {
+                f += patch.q * (v - u);
+                m += patch.q * (v * v - u * u) / 2.0;
+            }
+        }
+        (f, m)
     }
 
     fn rho(&self) -> f64 {
@@ -117,6 +184,10 @@ impl Case {
                     [0.0; 3]
                 }
             }
+            LiveLoad::Pressure(_) => {
+                let (f, m) = self.pressure_force(br, b);
+                [-f * b.cos(), f * b.sin(), f * b.cos() - m]
+            }
         }
     }
 
@@ -124,9 +195,12 @@ impl Case {
     fn row(&self, (s, kind): (usize, ContactKind)) -> ([f64; 4], f64) {
         let sec = self.sections[s];
         let br = self.joints[0];
+        // a vertical dead load F at the horizontal position S/F on the free body [β_R, β]
+        let (ff, fs) = self.fill_force(br, sec.beta);
+        let (cb, sb) = (sec.beta.cos(), sec.beta.sin());
         let f = |x: [f64; 3]| {
             let (n, t, m) = ntm(br, self.rho(), x, sec.beta);
-            self.combine(kind, n, t, m)
+            self.combine(kind, n - ff * cb, t + ff * sb, m + ff * cb - fs)
         };
         let c = f([0.0; 3]);
         let g = [
@@ -164,6 +238,8 @@ impl Case {
                 let wgx = rho * (b.sin() - a.sin());
                 let wgy = rho * (a.cos() - b.cos());
                 dead[i] -= w * col[1] + col[2] * wgx;
+                let (ff, fs) = self.fill_force(a, b);
+                dead[i] -= ff * col[1] + col[2] * fs;
                 match self.load {
                     LiveLoad::Horizontal { towards_right } => {
                         let k = if towards_right { 1.0 } else { -1.0 };
@@ -176,6 +252,10 @@ impl Case {
                             let px = (1.0 + self.eta / 2.0) * beta.cos();
                             live[i] -= col[1] + col[2] * px;
                         }
+                    }
+                    LiveLoad::Pressure(_) => {
+                        let (f, m) = self.pressure_force(a, b);
+                        live[i] -= col[1] * f + col[2] * m;
                     }
                 }
             }
@@ -887,6 +967,121 @@ fn the_state_at_lambda_static_is_the_faces() {
     assert!(
         edges >= 1,
         "no degenerate maximum met: the test checks nothing"
+    );
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// The crate against the brute force on random small discrete arches under fill (bridge
+/// spec §2, §5): the fill a dead load (integrated by the reference's own quadrature), the
+/// live load a point load or a pressure of one to three patches on the extrados (some
+/// reaching past its ends, which the abutments carry), both weight models, finite and
+/// infinite friction; a tenth of the cases without fill (a pressure alone).
+/// `FILL_CASES=N` runs more.
+#[test]
+fn filled_arches_under_pressure_match_the_brute_force() {
+    use arch_enum::bridge::Fill;
+    use arch_enum::pressure::{Patch, Pressure};
+    let count: usize = std::env::var("FILL_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(30);
+    let mut rng = Rng(0xf111_0000_0000_0023);
+    let settings = Settings::default();
+    let (mut compared, mut skipped, mut never, mut pressures, mut several) = (0, 0, 0, 0, 0);
+    let mut failures = Vec::new();
+    for case in 0..count {
+        let n = 3 + (rng.next() * 4.0) as usize;
+        let br = -0.2 + 0.6 * rng.next();
+        let bl = PI - 0.4 + 0.6 * rng.next();
+        let joints = random_joints(&mut rng, br, bl, n);
+        let centroid = rng.next() < 0.3;
+        let weight = if centroid {
+            WeightModel::Centroid
+        } else {
+            WeightModel::Centreline
+        };
+        let mu = if rng.next() < 0.2 {
+            f64::INFINITY
+        } else {
+            0.3 + 1.5 * rng.next()
+        };
+        let eta = 0.1 + 0.15 * rng.next();
+        let fill = (rng.next() > 0.1).then(|| (0.05 + 0.2 * rng.next(), 0.02 + 0.2 * rng.next()));
+        let kappa = 1.0 + eta / 2.0;
+        let load = if rng.next() < 0.3 {
+            LiveLoad::Point {
+                beta: br.max(0.0) + (bl.min(PI) - br.max(0.0)) * (0.05 + 0.9 * rng.next()),
+            }
+        } else {
+            pressures += 1;
+            let k = 1 + (rng.next() * 3.0) as usize;
+            let patches: Vec<Patch> = (0..k)
+                .map(|_| {
+                    let x = kappa * (-1.1 + 2.2 * rng.next());
+                    let half = 0.02 + 0.3 * rng.next();
+                    Patch {
+                        x_lo: x - half,
+                        x_hi: x + half,
+                        q: (0.2 + rng.next()) / half,
+                    }
+                })
+                .collect();
+            LiveLoad::Pressure(Pressure::new(&patches).unwrap())
+        };
+        let mut arch = Arch::new(br, bl, weight)
+            .unwrap()
+            .with_joints(&joints)
+            .unwrap();
+        if let Some((g, h)) = fill {
+            arch = arch.with_fill(Fill::new(g, h).unwrap());
+        }
+        let mut reference = Case::new(&joints, centroid, eta, mu, load);
+        reference.fill = fill;
+        let reference = reference.brute_force();
+        let crate_states: Vec<f64> = match survey(&arch, eta, mu, &load, &settings).unwrap() {
+            Ok(LoadOutcome::Limits(s)) => {
+                let mut v: Vec<f64> = s.limit_states.iter().map(|l| l.t).collect();
+                v.dedup_by(|a, b| (*a - *b).abs() <= 1e-9 * (1.0 + b.abs()));
+                several += usize::from(v.len() > 1);
+                v
+            }
+            Ok(LoadOutcome::NoEquilibrium) => {
+                skipped += 1;
+                Vec::new()
+            }
+            Ok(LoadOutcome::NoCollapse { .. }) => {
+                never += 1;
+                Vec::new()
+            }
+            Err(e) => {
+                failures.push(format!("case {case}: no decision: {e}"));
+                continue;
+            }
+        };
+        compared += 1;
+        // the reference's quadrature of the fill is good to about 1e-12
+        let same = crate_states.len() == reference.len()
+            && crate_states
+                .iter()
+                .zip(&reference)
+                .all(|(a, b)| (a - b).abs() <= 1e-8 * (1.0 + b.abs()));
+        if !same {
+            failures.push(format!(
+                "case {case}: joints {joints:?} centroid {centroid} eta {eta} mu {mu} fill {fill:?} {load:?}: crate {crate_states:?} vs brute force {reference:?}"
+            ));
+        }
+    }
+    println!(
+        "{compared} filled or pressed arches compared ({pressures} pressures, {skipped} no_equilibrium, {never} no_collapse, {several} with several limit states), {} disagreements",
+        failures.len()
+    );
+    assert!(
+        compared >= count * 9 / 10,
+        "too few cases compared: {compared} of {count}"
+    );
+    assert!(
+        compared - skipped - never >= count / 2,
+        "too few cases with limit states"
     );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }

@@ -30,6 +30,7 @@ pub(super) fn load_spec(eta: f64, load: &LiveLoad) -> LoadSpec {
             towards: None,
             beta: Some(beta),
         },
+        LiveLoad::Pressure(_) => unreachable!("certify_load refuses pressures"),
     }
 }
 
@@ -87,6 +88,7 @@ pub(super) fn carries(load: &LiveLoad, (c, side): Loaded) -> bool {
     match *load {
         LiveLoad::Horizontal { .. } => true,
         LiveLoad::Point { beta } => c.beta > beta || (c.beta == beta && side == Side::After),
+        LiveLoad::Pressure(_) => unreachable!("certify_load refuses pressures"),
     }
 }
 

@@ -25,7 +25,7 @@ pub(super) struct LoadJson {
 }
 
 #[derive(Debug, Serialize)]
-pub(super) struct PatternContact {
+pub struct PatternContact {
     #[serde(flatten)]
     contact: Contact,
     /// At the point load's joint: `before` or `after` the loaded section.
@@ -102,6 +102,12 @@ pub(super) fn load_json(q: &LoadQuestion) -> LoadJson {
             towards: None,
             at_joint: Some(at_joint(q.arch, beta)),
         },
+        LiveLoad::Pressure(_) => LoadJson {
+            kind: "pressure",
+            beta: None,
+            towards: None,
+            at_joint: None,
+        },
     }
 }
 
@@ -128,13 +134,19 @@ fn state_json(load: &LiveLoad, s: &LimitState) -> StateJson {
 fn units(q: &LoadQuestion, lambda: Option<f64>, lambda_static: Option<f64>) -> Option<UnitsJson> {
     let d = q.dims.as_ref()?;
     let unit = force_unit_kn(q, d);
-    let point = matches!(q.load, LiveLoad::Point { .. });
+    // the load at λ = 1 in kN: γ t d r for a point load, the vehicle's for a pressure
+    let horizontal = matches!(q.load, LiveLoad::Horizontal { .. });
+    let at_one = match q.load {
+        LiveLoad::Point { .. } => Some(unit),
+        LiveLoad::Pressure(_) => q.vehicle_kn,
+        LiveLoad::Horizontal { .. } => None,
+    };
     Some(UnitsJson {
         force_unit_kn: unit,
-        lambda_kn: lambda.filter(|_| point).map(|l| l * unit),
-        lambda_static_kn: lambda_static.filter(|_| point).map(|l| l * unit),
-        acceleration_ms2: lambda.filter(|_| !point).map(|l| l * d.g),
-        acceleration_static_ms2: lambda_static.filter(|_| !point).map(|l| l * d.g),
+        lambda_kn: lambda.zip(at_one).map(|(l, u)| l * u),
+        lambda_static_kn: lambda_static.zip(at_one).map(|(l, u)| l * u),
+        acceleration_ms2: lambda.filter(|_| horizontal).map(|l| l * d.g),
+        acceleration_static_ms2: lambda_static.filter(|_| horizontal).map(|l| l * d.g),
     })
 }
 

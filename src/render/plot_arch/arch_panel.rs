@@ -1,6 +1,7 @@
 //! The top panel of the arch figure: the arch to scale, its joints, the lines of thrust and
 //! friction, the active contacts and the live load.
 
+use crate::pressure::Pressure;
 use super::canvas::{
     axes, closed, err, joints_visible, Chart, View, ARROW, MARGIN, X_LABELS, Y_LABELS,
 };
@@ -111,6 +112,7 @@ fn load_arrows(
                 (tail.0 + 0.02 * size, tail.1),
             )
         }
+        LiveLoad::Pressure(p) => pressure_arrows(ch, scene, &p, (len, head), lambda)?,
     };
     ch.draw_series(std::iter::once(Text::new(
         label,
@@ -119,6 +121,39 @@ fn load_arrows(
     )))
     .map_err(err)?;
     Ok(())
+}
+
+/// A pressure on the extrados: arrows down onto each patch, their lengths in proportion to
+/// the intensity, and the label above the most loaded one.
+fn pressure_arrows(
+    ch: &mut Chart,
+    scene: &ArchScene,
+    p: &Pressure,
+    (len, head): (f64, f64),
+    lambda: f64,
+) -> Result<(String, (f64, f64)), String> {
+    let top = 1.0 + scene.eta / 2.0;
+    let (lo_end, hi_end) = Pressure::extrados(&scene.arch, scene.eta);
+    let q_max = p.patches().iter().map(|q| q.q).fold(0.0, f64::max);
+    let mut label_at = (0.0, top + 2.5 * len);
+    for patch in p.patches() {
+        let (lo, hi) = (patch.x_lo.max(lo_end), patch.x_hi.min(hi_end));
+        if lo >= hi || q_max <= 0.0 {
+            continue;
+        }
+        let shaft = len * (0.6 + 1.4 * patch.q / q_max);
+        let n = ((hi - lo) / (0.08 * top)).ceil().max(1.0) as usize + 1;
+        for i in 0..n {
+            let x = lo + (hi - lo) * i as f64 / (n - 1).max(1) as f64;
+            let y = (top * top - x * x).max(0.0).sqrt();
+            arrow(ch, (x, y + shaft), (x, y), head)?;
+        }
+        let y = (top * top - lo * lo).max(0.0).sqrt();
+        if patch.q == q_max {
+            label_at = (hi + 0.02, y + shaft);
+        }
+    }
+    Ok((format!("λ = {}", short_num(lambda)), label_at))
 }
 
 /// The radial joints of a discrete arch (one line each; called only when they are visible).

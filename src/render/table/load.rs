@@ -78,7 +78,21 @@ fn load_text(q: &LoadQuestion) -> String {
                 _ => ", inside a voussoir",
             }
         ),
+        LiveLoad::Pressure(p) => pressure_text(q, &p),
     }
+}
+
+/// A pressure on the extrados in words: its patches and resultant at λ = 1.
+pub(super) fn pressure_text(q: &LoadQuestion, p: &crate::pressure::Pressure) -> String {
+    let (f, _) = p.resultant(q.arch, q.eta, q.arch.beta_left(), false);
+    let kn = q.vehicle_kn.map_or(String::new(), |v| {
+        format!("; the whole load {} kN", sig(v, 6))
+    });
+    format!(
+        "vertical pressure lambda x q on {} patch(es) of the extrados; reaching the arch at lambda = 1: {} (units of gamma t d r){kn}",
+        p.patches().len(),
+        sig(f[0], 6)
+    )
 }
 
 /// A multiplier in physical units, when the question has dimensions: the point load in kN,
@@ -87,6 +101,10 @@ fn physical(q: &LoadQuestion, l: f64) -> String {
     let unit = q.dims.as_ref().map(|d| (force_unit_kn(q, d), d.g));
     match (unit, q.load) {
         (Some((u, _)), LiveLoad::Point { .. }) => format!("  ({} kN)", sig(l * u, 6)),
+        (Some(_), LiveLoad::Pressure(_)) => match q.vehicle_kn {
+            Some(v) => format!("  ({} kN)", sig(l * v, 6)),
+            None => String::new(),
+        },
         (Some((_, g)), LiveLoad::Horizontal { .. }) => {
             format!("  ({} m/s^2 = {} g)", sig(l * g, 6), sig(l, 6))
         }

@@ -49,6 +49,7 @@ pub fn load_curve(q: &LoadQuestion, curve: &LoadCurve) -> String {
                 "vertical point load at the extrados point beta = {beta:.10} rad ({:.4} deg)",
                 beta.to_degrees()
             ),
+            LiveLoad::Pressure(p) => super::load::pressure_text(q, &p),
         }
     );
     let _ = writeln!(

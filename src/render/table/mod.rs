@@ -2,6 +2,7 @@
 //! formats of numbers and patterns they share (`format`).
 
 mod assess;
+mod bridge;
 mod corners;
 mod curve;
 mod format;
@@ -11,6 +12,7 @@ mod modes;
 mod solve;
 
 pub use assess::assess;
+pub use bridge::bridge;
 pub use corners::{corner_rows, CORNER_HEADER};
 pub use curve::curve;
 pub use format::{describe_arch, fmt_mu, pattern_table, right_half_angle, sig, Dimensions, LEGEND};

@@ -18,7 +18,7 @@
 //!
 //! This is the fill's statics alone: no command uses it yet.
 
-use crate::arch::{check_non_negative, InputError};
+use crate::input::{check_non_negative, InputError};
 use std::f64::consts::{FRAC_PI_2, PI};
 
 /// Fill of unit weight g_f γ up to a level road at depth h r above the highest extrados
@@ -138,18 +138,31 @@ impl Fill {
     /// M_f = F cos β − S) with their β- and η-derivatives.
     pub fn actions(&self, springings: (f64, f64), eta: f64, beta: f64) -> FillActions {
         let l = self.load(springings, eta, beta);
+        let [n, t, m] = vertical_actions(l.f, l.s, beta);
         let (s, c) = beta.sin_cos();
-        let [f0, f1, f2] = l.f;
-        let [s0, s1, s2] = l.s;
         FillActions {
-            n: [-f0 * c, f0 * s - f1 * c, f0 * c + 2.0 * f1 * s - f2 * c],
-            t: [f0 * s, f0 * c + f1 * s, -f0 * s + 2.0 * f1 * c + f2 * s],
-            m: [
-                f0 * c - s0,
-                -f0 * s + f1 * c - s1,
-                -f0 * c - 2.0 * f1 * s + f2 * c - s2,
-            ],
+            n,
+            t,
+            m,
             d_eta: [-l.d_eta[0] * c, l.d_eta[0] * s, l.d_eta[0] * c - l.d_eta[1]],
         }
     }
+}
+
+/// The internal actions at `beta` of any vertical load on the free body [β_R, β] with
+/// resultant `f` = F and first moment `s` = S (each with its first two β-derivatives):
+/// `[N, T, M][derivative order]`, N = −F cos β, T = F sin β, M = F cos β − S.
+pub fn vertical_actions(f: [f64; 3], s: [f64; 3], beta: f64) -> [[f64; 3]; 3] {
+    let (sn, c) = beta.sin_cos();
+    let [f0, f1, f2] = f;
+    let [s0, s1, s2] = s;
+    [
+        [-f0 * c, f0 * sn - f1 * c, f0 * c + 2.0 * f1 * sn - f2 * c],
+        [f0 * sn, f0 * c + f1 * sn, -f0 * sn + 2.0 * f1 * c + f2 * sn],
+        [
+            f0 * c - s0,
+            -f0 * sn + f1 * c - s1,
+            -f0 * c - 2.0 * f1 * sn + f2 * c - s2,
+        ],
+    ]
 }

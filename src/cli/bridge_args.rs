@@ -1,0 +1,182 @@
+//! The bridge flags of `load`: fill above the extrados (`--fill-weight --fill-depth` in kN/m³
+//! and m, or `--fill-ratio --fill-height` non-dimensional), and a vehicle at the road
+//! (`--axles --spacing --at`, `--dispersal`, `--effective-width`), with `--critical` for the
+//! position where it is worst.
+
+use crate::arch::{Arch, InputError};
+use crate::bridge::critical::Search;
+use crate::bridge::{Deck, Fill, Vehicle};
+use crate::render::json::{FillJson, VehicleJson};
+use crate::render::table::Dimensions;
+use clap::Args;
+
+#[derive(Args, Debug, Default)]
+pub(crate) struct FillArgs {
+    /// Unit weight of the fill in kN/m^3 (with --fill-depth; needs the masonry's unit
+    /// weight: --width --unit-weight, or --radius --depth --density).
+    #[arg(long, allow_hyphen_values = true, requires = "fill_depth", conflicts_with_all = ["fill_ratio", "fill_height"])]
+    fill_weight: Option<f64>,
+    /// Depth of the fill in metres above the highest extrados point (the road's level).
+    #[arg(long, allow_hyphen_values = true, requires = "fill_weight")]
+    fill_depth: Option<f64>,
+    /// The fill's unit weight over the masonry's, g_f (non-dimensional; with --fill-height).
+    #[arg(long, allow_hyphen_values = true, requires = "fill_height")]
+    fill_ratio: Option<f64>,
+    /// The road's height above the highest extrados point over the mean radius, h = h_c/r.
+    #[arg(long, allow_hyphen_values = true, requires = "fill_ratio")]
+    fill_height: Option<f64>,
+}
+
+impl FillArgs {
+    /// The fill (`None` without fill flags) and its description.
+    pub(crate) fn build(
+        &self,
+        dims: Option<&Dimensions>,
+    ) -> Result<Option<(Fill, FillJson)>, InputError> {
+        if let (Some(g), Some(h)) = (self.fill_ratio, self.fill_height) {
+            let fill = Fill::new(g, h)?;
+            return Ok(Some((fill, fill_json(&fill, None, None))));
+        }
+        let (Some(w), Some(d)) = (self.fill_weight, self.fill_depth) else {
+            return Ok(None);
+        };
+        let Some(dims) = dims else {
+            return Err(InputError::Inconsistent {
+                arg: "--fill-weight/--fill-depth",
+                reason: "need the masonry's unit weight and the radius: give --span --rise \
+                         --ring --width --unit-weight (or --radius --depth --density), or use \
+                         --fill-ratio --fill-height"
+                    .into(),
+            });
+        };
+        let w = crate::input::check_non_negative("--fill-weight", w)?;
+        let d = crate::input::check_non_negative("--fill-depth", d)?;
+        let fill = Fill::new(w / unit_weight(dims), d / dims.radius)?;
+        Ok(Some((fill, fill_json(&fill, Some(w), Some(d)))))
+    }
+}
+
+fn fill_json(f: &Fill, weight: Option<f64>, depth: Option<f64>) -> FillJson {
+    FillJson {
+        weight_kn_m3: weight,
+        depth_m: depth,
+        weight_ratio: f.weight_ratio,
+        depth_ratio: f.depth,
+    }
+}
+
+/// The masonry's unit weight γ (kN/m³) of the dimensions.
+fn unit_weight(d: &Dimensions) -> f64 {
+    d.density * d.g / 1000.0
+}
+
+#[derive(Args, Debug, Default)]
+pub(crate) struct VehicleArgs {
+    /// A vehicle: its axle loads in kN, first axle first (e.g. 100,100). Needs the
+    /// dimensions (--span --rise --ring --width --unit-weight, or --radius --depth --density).
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    pub(crate) axles: Vec<f64>,
+    /// Metres between consecutive axles: one value for every gap, or one per gap.
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, requires = "axles")]
+    spacing: Vec<f64>,
+    /// Road position of the first axle in metres from the left intrados springing
+    /// (horizontally, towards the right springing); the vehicle travels left to right.
+    #[arg(long, allow_hyphen_values = true, requires = "axles")]
+    at: Option<f64>,
+    /// Dispersal through the fill, horizontal per vertical (0: point loads).
+    #[arg(long, default_value_t = 0.5, allow_hyphen_values = true)]
+    dispersal: f64,
+    /// Width of barrel one axle spreads over, in metres (default: the barrel width).
+    #[arg(long, allow_hyphen_values = true, requires = "axles")]
+    effective_width: Option<f64>,
+    /// Find the critical position X* of the vehicle (the least collapse multiplier as it
+    /// crosses) instead of taking --at.
+    #[arg(long, requires = "axles", conflicts_with = "at")]
+    pub(crate) critical: bool,
+    /// Samples of the influence line with --critical (3 to 100000).
+    #[arg(long, default_value_t = 41, allow_hyphen_values = true)]
+    samples: usize,
+    /// Width (m) to which each local minimum of the influence line is bracketed.
+    #[arg(long, default_value_t = 1e-6, allow_hyphen_values = true)]
+    bracket: f64,
+}
+
+/// A vehicle on its deck, ready to be placed.
+pub(crate) struct Placed {
+    pub(crate) vehicle: Vehicle,
+    pub(crate) deck: Deck,
+    pub(crate) spacing: Vec<f64>,
+}
+
+impl VehicleArgs {
+    /// Whether a vehicle was given.
+    pub(crate) fn given(&self) -> bool {
+        !self.axles.is_empty()
+    }
+
+    /// The vehicle and its deck (with the dimensions the loads in kN need).
+    pub(crate) fn build(&self, dims: Option<&Dimensions>) -> Result<Placed, InputError> {
+        let Some(d) = dims else {
+            return Err(InputError::Inconsistent {
+                arg: "--axles",
+                reason: "axle loads in kN need the dimensions: give --span --rise --ring \
+                         --width --unit-weight (or --radius --depth --density)"
+                    .into(),
+            });
+        };
+        if self.at.is_none() && !self.critical {
+            return Err(InputError::Inconsistent {
+                arg: "--axles",
+                reason: "place the vehicle with --at X (metres), or find its worst place with \
+                         --critical"
+                    .into(),
+            });
+        }
+        let vehicle = Vehicle::new(&self.axles, &self.spacing)?;
+        let deck = Deck::new(
+            d.radius,
+            unit_weight(d),
+            self.effective_width.unwrap_or(d.depth),
+            self.dispersal,
+        )?;
+        let spacing = vehicle.offsets_m.windows(2).map(|w| w[1] - w[0]).collect();
+        Ok(Placed {
+            vehicle,
+            deck,
+            spacing,
+        })
+    }
+
+    /// The road position given (with `--at`).
+    pub(crate) fn at(&self) -> Option<f64> {
+        self.at
+    }
+
+    /// How finely `--critical` looks.
+    pub(crate) fn search(&self) -> Search {
+        Search {
+            samples: self.samples,
+            bracket_m: self.bracket,
+        }
+    }
+}
+
+impl Placed {
+    /// The vehicle's description at `at_m`, with what reaches the ring.
+    pub(crate) fn json(&self, arch: &Arch, eta: f64, at_m: f64, load: &crate::load::LiveLoad) -> VehicleJson {
+        let total = self.vehicle.total_kn();
+        let (carried, abutments) = self
+            .deck
+            .carried_kn(arch, eta, &self.vehicle, load)
+            .unwrap_or((total, 0.0));
+        VehicleJson {
+            axles_kn: self.vehicle.axles_kn.clone(),
+            spacing_m: self.spacing.clone(),
+            at_m,
+            dispersal: self.deck.dispersal,
+            effective_width_m: self.deck.effective_width_m,
+            carried_kn: carried,
+            abutments_kn: abutments,
+        }
+    }
+}
