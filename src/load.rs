@@ -127,7 +127,11 @@ impl LiveLoad {
 
     /// Whether a section at `beta` has two sides that differ (the point load's angle).
     pub fn splits(&self, beta: Radians) -> bool {
-        matches!(*self, LiveLoad::Point { beta: bp } if bp == beta)
+        match self {
+            LiveLoad::Point { beta: bp } => *bp == beta,
+            LiveLoad::Pressure(p) => p.splits(beta),
+            LiveLoad::Horizontal { .. } => false,
+        }
     }
 
     /// The coefficients q with L_live = λ q · rates for `contacts` (any order; a contact
@@ -143,7 +147,7 @@ impl LiveLoad {
     ///   after j (β_P > β_j, or β_P = β_j with j on the Before side), else 0. A load beyond
     ///   the last active joint is at rest: compatible rates (B λ = 0) give it no power;
     /// * pressure: q_j = −[c_j,y (F_total − F(β_j)) + c_j,ψ (S_total − S(β_j))], the
-    ///   pressure's resultant and first moment beyond joint j.
+    ///   pressure's resultant and first moment beyond joint j (on its side).
     pub fn power(&self, arch: &Arch, eta: f64, contacts: &[(Contact, Side)]) -> Vec<f64> {
         match *self {
             LiveLoad::Horizontal { towards_right } => {
@@ -182,11 +186,11 @@ impl LiveLoad {
                 .collect(),
             // the pressure beyond each joint: the whole less the free body's
             LiveLoad::Pressure(p) => {
-                let (total_f, total_s) = p.resultant(arch, eta, arch.beta_left(), false);
+                let (total_f, total_s) = p.resultant(arch, eta, arch.beta_left(), true);
                 contacts
                     .iter()
-                    .map(|(c, _)| {
-                        let (f, s) = p.resultant(arch, eta, c.beta, false);
+                    .map(|(c, side)| {
+                        let (f, s) = p.resultant(arch, eta, c.beta, *side == Side::After);
                         let col = column(c.kind, c.beta, eta);
                         -(col[1] * (total_f[0] - f[0]) + col[2] * (total_s[0] - s[0]))
                     })

@@ -28,23 +28,46 @@ pub struct Patch {
     pub q: f64,
 }
 
-/// Up to [`MAX_PATCHES`] patches on the extrados (`Copy`, so a live load stays a value).
+/// A vertical point load `q` (per unit λ) at the extrados point of angle `beta` (loads
+/// that do not spread: no fill, or no dispersal).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct PointLoad {
+    /// Angle of the loaded extrados point (in [max(β_R, 0), min(β_L, π)]).
+    pub beta: Radians,
+    /// The load per unit λ.
+    pub q: f64,
+}
+
+/// Up to [`MAX_PATCHES`] patches and as many point loads on the extrados (`Copy`, so a live
+/// load stays a value).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Pressure {
     patches: [Patch; MAX_PATCHES],
     len: usize,
+    points: [PointLoad; MAX_PATCHES],
+    n_points: usize,
 }
 
 impl Pressure {
-    /// The pressure of `patches`: each finite with x_lo < x_hi and q ≥ 0, at most
-    /// [`MAX_PATCHES`], at least one.
-    pub fn new(patches: &[Patch]) -> Result<Pressure, InputError> {
-        if patches.is_empty() || patches.len() > MAX_PATCHES {
+    /// The pressure of `patches` (each finite with x_lo < x_hi and q ≥ 0) and `points` (each
+    /// finite with q ≥ 0): at most [`MAX_PATCHES`] of each, at least one load.
+    pub fn new(patches: &[Patch], points: &[PointLoad]) -> Result<Pressure, InputError> {
+        let count = patches.len() + points.len();
+        if count == 0 || patches.len() > MAX_PATCHES || points.len() > MAX_PATCHES {
             return Err(InputError::OutOfRange {
                 arg: "--axles",
-                value: patches.len().to_string(),
-                range: format!("1 to {MAX_PATCHES} loaded patches"),
+                value: count.to_string(),
+                range: format!("1 to {MAX_PATCHES} loads that spread and as many that do not"),
             });
+        }
+        for p in points {
+            if !(p.beta.is_finite() && p.q.is_finite() && p.q >= 0.0) {
+                return Err(InputError::OutOfRange {
+                    arg: "--axles",
+                    value: format!("{} at {}", fmt_value(p.q), p.beta),
+                    range: "a finite load >= 0 at a finite angle".into(),
+                });
+            }
         }
         for p in patches {
             let ok = p.x_lo.is_finite() && p.x_hi.is_finite() && p.x_lo < p.x_hi;
@@ -59,14 +82,27 @@ impl Pressure {
         let mut out = Pressure {
             patches: [Patch::default(); MAX_PATCHES],
             len: patches.len(),
+            points: [PointLoad::default(); MAX_PATCHES],
+            n_points: points.len(),
         };
         out.patches[..patches.len()].copy_from_slice(patches);
+        out.points[..points.len()].copy_from_slice(points);
         Ok(out)
     }
 
     /// The patches.
     pub fn patches(&self) -> &[Patch] {
         &self.patches[..self.len]
+    }
+
+    /// The point loads.
+    pub fn points(&self) -> &[PointLoad] {
+        &self.points[..self.n_points]
+    }
+
+    /// Whether a point load sits at `beta`: the section there has two sides that differ.
+    pub fn splits(&self, beta: Radians) -> bool {
+        self.points().iter().any(|p| p.beta == beta)
     }
 
     /// The loaded extrados of `arch` at thickness `eta`, as x from its left end to its
@@ -79,7 +115,8 @@ impl Pressure {
 
     /// The resultant F and first moment S of the pressure on the free body [β_R, `beta`]
     /// with their first two β-derivatives; at a patch's edge the derivatives are those of
-    /// the side `after` (larger β) or before.
+    /// the side `after` (larger β) or before, and at a point load's angle the side `after`
+    /// carries it (as [`crate::load::LiveLoad::Point`]).
     pub fn resultant(
         &self,
         arch: &Arch,
@@ -93,6 +130,12 @@ impl Pressure {
         let edge = kappa * b.cos();
         let (s, c) = beta.sin_cos();
         let (mut f, mut m) = ([0.0; 3], [0.0; 3]);
+        for p in self.points() {
+            if beta > p.beta || (beta == p.beta && after) {
+                f[0] += p.q;
+                m[0] += p.q * kappa * p.beta.cos();
+            }
+        }
         if beta <= arch.beta_right().max(0.0) {
             return (f, m);
         }
@@ -132,6 +175,7 @@ impl Pressure {
             .flat_map(|p| [p.x_lo, p.x_hi])
             .filter(|x| x.abs() < kappa)
             .map(|x| (x / kappa).acos())
+            .chain(self.points().iter().map(|p| p.beta))
             .filter(|&t| t > br && t < bl)
             .collect();
         out.sort_by(f64::total_cmp);

@@ -83,7 +83,8 @@ pub struct Search {
     pub bracket_m: f64,
 }
 
-/// λ_c of `vehicle` with its first axle at `at_m`, with the load and its survey.
+/// λ_c of `vehicle` with its first axle at `at_m`, with the load and its survey (neither
+/// when the vehicle is off the ring).
 pub fn collapse_at(
     arch: &Arch,
     eta: f64,
@@ -92,17 +93,20 @@ pub fn collapse_at(
     vehicle: &Vehicle,
     at_m: f64,
     settings: &Settings,
-) -> Result<(Collapse, LiveLoad, Option<LoadSurvey>), InputError> {
+) -> Result<(Collapse, Option<LiveLoad>, Option<LoadSurvey>), InputError> {
+    if !deck.on_arch(arch, eta, vehicle, at_m) {
+        return Ok((Collapse::Never, None, None));
+    }
     let load = deck.place(arch, eta, vehicle, at_m)?;
     let outcome = survey(arch, eta, mu, &load, settings)?;
     Ok(match outcome {
         Ok(LoadOutcome::Limits(sv)) => match sv.lambda() {
-            Some(l) => (Collapse::At(l), load, Some(sv)),
-            None => (Collapse::Never, load, Some(sv)),
+            Some(l) => (Collapse::At(l), Some(load), Some(sv)),
+            None => (Collapse::Never, Some(load), Some(sv)),
         },
-        Ok(LoadOutcome::NoCollapse { .. }) => (Collapse::Never, load, None),
-        Ok(LoadOutcome::NoEquilibrium) => (Collapse::NoEquilibrium, load, None),
-        Err(e) => (Collapse::Undecided(e.to_string()), load, None),
+        Ok(LoadOutcome::NoCollapse { .. }) => (Collapse::Never, Some(load), None),
+        Ok(LoadOutcome::NoEquilibrium) => (Collapse::NoEquilibrium, Some(load), None),
+        Err(e) => (Collapse::Undecided(e.to_string()), Some(load), None),
     })
 }
 
@@ -166,7 +170,7 @@ pub fn critical(
     let at_critical = match minima.first() {
         Some(m) => {
             let (_, load, sv) = collapse_at(arch, eta, mu, deck, vehicle, m.at_m, settings)?;
-            sv.map(|sv| (load, sv))
+            load.zip(sv)
         }
         None => None,
     };

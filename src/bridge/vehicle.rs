@@ -9,12 +9,13 @@
 //! width 2 s D centred on it (s the dispersal, horizontal per vertical); beyond an extrados
 //! end D is the end's, and the part of a patch beyond the loaded extrados is carried by the
 //! abutment ([`crate::pressure::Pressure::resultant`] clips it). Without fill or with s = 0
-//! a single axle is a point load at the extrados point below it.
+//! each axle is a point load at the extrados point below it (one beyond the loaded extrados
+//! bears on the abutment).
 
 use crate::arch::{fmt_value, Arch, InputError};
 use crate::input::check_non_negative;
 use crate::load::LiveLoad;
-use crate::pressure::{Patch, Pressure, MAX_PATCHES};
+use crate::pressure::{Patch, PointLoad, Pressure, MAX_PATCHES};
 use std::f64::consts::PI;
 
 /// A train of axles: loads (kN) and offsets behind the first axle (m, a_1 = 0).
@@ -153,8 +154,24 @@ impl Deck {
         )
     }
 
+    /// Whether some axle of `vehicle` at `at_m` loads the ring: its spread (or, not spread,
+    /// the axle itself) meets the loaded extrados.
+    pub fn on_arch(&self, arch: &Arch, eta: f64, vehicle: &Vehicle, at_m: f64) -> bool {
+        let (lo, hi) = Pressure::extrados(arch, eta);
+        let spreads = self.spreads(arch);
+        vehicle.offsets_m.iter().any(|&a| {
+            let x = self.x_of(arch, eta, at_m - a);
+            if spreads {
+                let half = self.half_width(arch, eta, x);
+                x + half > lo && x - half < hi
+            } else {
+                (lo..=hi).contains(&x)
+            }
+        })
+    }
+
     /// The live load of `vehicle` with its first axle at `at_m`: a pressure of one patch per
-    /// axle when loads spread, else (one axle) a point load at the extrados point below it.
+    /// axle when loads spread, else of one point load per axle over the extrados.
     pub fn place(
         &self,
         arch: &Arch,
@@ -169,8 +186,17 @@ impl Deck {
                 range: "a finite road position in metres".into(),
             });
         }
+        if !self.on_arch(arch, eta, vehicle, at_m) {
+            let (from, to) = self.crossing(arch, eta, vehicle);
+            return Err(InputError::OutOfRange {
+                arg: "--at",
+                value: fmt_value(at_m),
+                range: format!("positions where the vehicle loads the ring, {from} to {to} m"),
+            });
+        }
         if !self.spreads(arch) {
-            return self.point(arch, eta, vehicle, at_m);
+            return Pressure::new(&[], &self.points(arch, eta, vehicle, at_m))
+                .map(LiveLoad::Pressure);
         }
         let patches: Vec<Patch> = vehicle
             .axles_kn
@@ -194,52 +220,37 @@ impl Deck {
                     .into(),
             });
         }
-        Pressure::new(&patches).map(LiveLoad::Pressure)
+        Pressure::new(&patches, &[]).map(LiveLoad::Pressure)
     }
 
-    /// One axle without dispersal: a point load at the extrados point below it.
-    fn point(
-        &self,
-        arch: &Arch,
-        eta: f64,
-        vehicle: &Vehicle,
-        at_m: f64,
-    ) -> Result<LiveLoad, InputError> {
-        if vehicle.axles_kn.len() != 1 {
-            return Err(InputError::Inconsistent {
-                arg: "--axles",
-                reason: "several axles are loads spread through fill: give --fill-weight and \
-                         --fill-depth with a --dispersal > 0 (without fill, one axle is a \
-                         point load)"
-                    .into(),
-            });
-        }
+    /// Axles that do not spread: point loads at the extrados points below them (an axle
+    /// beyond the loaded extrados bears on the abutment, not on the ring). On a discrete
+    /// arch an angle within 1e-9 rad of a joint is that joint.
+    fn points(&self, arch: &Arch, eta: f64, vehicle: &Vehicle, at_m: f64) -> Vec<PointLoad> {
         let kappa = 1.0 + 0.5 * eta;
         let (lo, hi) = Pressure::extrados(arch, eta);
-        let x = self.x_of(arch, eta, at_m);
-        if !(lo..=hi).contains(&x) {
-            return Err(InputError::OutOfRange {
-                arg: "--at",
-                value: fmt_value(at_m),
-                range: format!(
-                    "over the extrados without fill: {} to {} m",
-                    self.at_of(arch, eta, lo),
-                    self.at_of(arch, eta, hi)
-                ),
-            });
-        }
         let (br, bl) = arch.springings();
-        let beta = (x / kappa)
-            .clamp(-1.0, 1.0)
-            .acos()
-            .clamp(br.max(0.0), bl.min(PI));
-        Ok(LiveLoad::Point {
-            beta: arch.snap_to_joint(beta),
-        })
+        vehicle
+            .axles_kn
+            .iter()
+            .zip(&vehicle.offsets_m)
+            .filter_map(|(&kn, &a)| {
+                let x = self.x_of(arch, eta, at_m - a);
+                (lo..=hi).contains(&x).then(|| PointLoad {
+                    beta: arch.snap_to_joint(
+                        (x / kappa)
+                            .clamp(-1.0, 1.0)
+                            .acos()
+                            .clamp(br.max(0.0), bl.min(PI)),
+                    ),
+                    q: self.scaled(eta, kn),
+                })
+            })
+            .collect()
     }
 
     /// The vehicle's load at λ = 1 that reaches the arch, and the part the abutments carry
-    /// (kN), for a pressure; `None` for a point load (all of it reaches the arch).
+    /// (kN); `None` for a load that is not a pressure.
     pub fn carried_kn(
         &self,
         arch: &Arch,

@@ -74,10 +74,20 @@ fn unit_weight(d: &Dimensions) -> f64 {
 pub(crate) struct VehicleArgs {
     /// A vehicle: its axle loads in kN, first axle first (e.g. 100,100). Needs the
     /// dimensions (--span --rise --ring --width --unit-weight, or --radius --depth --density).
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        conflicts_with = "live"
+    )]
     pub(crate) axles: Vec<f64>,
     /// Metres between consecutive axles: one value for every gap, or one per gap.
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, requires = "axles")]
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        requires = "axles"
+    )]
     spacing: Vec<f64>,
     /// Road position of the first axle in metres from the left intrados springing
     /// (horizontally, towards the right springing); the vehicle travels left to right.
@@ -163,7 +173,13 @@ impl VehicleArgs {
 
 impl Placed {
     /// The vehicle's description at `at_m`, with what reaches the ring.
-    pub(crate) fn json(&self, arch: &Arch, eta: f64, at_m: f64, load: &crate::load::LiveLoad) -> VehicleJson {
+    pub(crate) fn json(
+        &self,
+        arch: &Arch,
+        eta: f64,
+        at_m: f64,
+        load: &crate::load::LiveLoad,
+    ) -> VehicleJson {
         let total = self.vehicle.total_kn();
         let (carried, abutments) = self
             .deck

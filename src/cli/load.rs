@@ -18,7 +18,7 @@ use clap::{ArgGroup, Args};
 
 /// Which live load (exactly one).
 #[derive(Args, Debug)]
-#[command(group(ArgGroup::new("live").required(true).args(["horizontal", "horizontal_left", "point_load", "point_load_deg", "point_load_joint", "axles"])))]
+#[command(group(ArgGroup::new("live").required(true).args(["horizontal", "horizontal_left", "point_load", "point_load_deg", "point_load_joint"])))]
 pub(crate) struct LiveLoadArgs {
     /// A horizontal body force lambda x self-weight towards +x (the right springing):
     /// a constant horizontal acceleration lambda g.
@@ -39,22 +39,12 @@ pub(crate) struct LiveLoadArgs {
     /// from the right springing (0) to the left one.
     #[arg(long, value_name = "K")]
     point_load_joint: Option<usize>,
-    #[command(flatten)]
-    pub(crate) vehicle: VehicleArgs,
 }
 
 impl LiveLoadArgs {
     /// The load on `arch`, checked (a point load must lie on the arch; the error names the
     /// flag the angle came in).
     pub(crate) fn build(&self, arch: &Arch) -> Result<LiveLoad, InputError> {
-        if self.vehicle.given() {
-            return Err(InputError::Inconsistent {
-                arg: "--axles",
-                reason: "vehicles are placed by `load` (with --at or --critical); this command \
-                         takes a horizontal or a point load"
-                    .into(),
-            });
-        }
         let joints: &[f64] = match arch.layout() {
             JointLayout::Discrete(j) => j,
             JointLayout::Continuous => &[],
@@ -101,13 +91,19 @@ impl LiveLoadArgs {
                 }
             }
         } else {
-            unreachable!("clap requires one load")
+            return Err(InputError::Inconsistent {
+                arg: "--horizontal/--point-load/--axles",
+                reason: "give a live load: --horizontal, --horizontal-left, --point-load, \
+                         --point-load-deg, --point-load-joint, or a vehicle with --axles"
+                    .into(),
+            });
         };
         check_load(arch, &load).map(|_| load)
     }
 }
 
 #[derive(Args, Debug)]
+#[command(mut_group("live", |g| g.required(false)))]
 pub(crate) struct LoadArgs {
     #[command(flatten)]
     arch: ArchArgs,
@@ -121,6 +117,8 @@ pub(crate) struct LoadArgs {
     live: LiveLoadArgs,
     #[command(flatten)]
     dims: DimensionArgs,
+    #[command(flatten)]
+    vehicle: VehicleArgs,
     #[command(flatten)]
     fill: FillArgs,
     /// Print one JSON document instead of text.
@@ -139,7 +137,7 @@ pub(crate) fn run(a: LoadArgs, settings: &Settings, io: &mut Io) -> Exit {
             Some((f, _)) => arch.with_fill(*f),
             None => arch,
         };
-        let bridge = Bridge::build(&a.live, &arch, eta, a.mu, dims.as_ref(), settings)?;
+        let bridge = Bridge::build(&a.vehicle, &arch, eta, a.mu, dims.as_ref(), settings)?;
         let load = match &bridge {
             Some(b) => b.load,
             None => a.live.build(&arch)?,
@@ -164,7 +162,9 @@ pub(crate) fn run(a: LoadArgs, settings: &Settings, io: &mut Io) -> Exit {
         vehicle_kn,
     };
     let bridged = (fill.is_some() || bridge.is_some()).then(|| {
-        let vehicle = bridge.as_ref().map(|b| b.placed.json(&arch, eta, b.at_m, &load));
+        let vehicle = bridge
+            .as_ref()
+            .map(|b| b.placed.json(&arch, eta, b.at_m, &load));
         (vehicle, bridge.as_ref().and_then(|b| b.critical.as_ref()))
     });
     if a.json {
@@ -173,7 +173,14 @@ pub(crate) fn run(a: LoadArgs, settings: &Settings, io: &mut Io) -> Exit {
             None => json_with_geometry(&doc, geometry, None),
             Some((vehicle, critical)) => {
                 let keys = crate::render::json::bridge(fill, vehicle, critical, vehicle_kn);
-                json_with_geometry(&WithBridge { doc: &doc, keys: &keys }, geometry, None)
+                json_with_geometry(
+                    &WithBridge {
+                        doc: &doc,
+                        keys: &keys,
+                    },
+                    geometry,
+                    None,
+                )
             }
         });
     } else {
@@ -207,18 +214,18 @@ struct Bridge {
 
 impl Bridge {
     fn build(
-        live: &LiveLoadArgs,
+        vehicle: &VehicleArgs,
         arch: &Arch,
         eta: f64,
         mu: f64,
         dims: Option<&crate::render::table::Dimensions>,
         settings: &Settings,
     ) -> Result<Option<Bridge>, InputError> {
-        if !live.vehicle.given() {
+        if !vehicle.given() {
             return Ok(None);
         }
-        let placed = live.vehicle.build(dims)?;
-        let (at_m, critical) = match live.vehicle.at() {
+        let placed = vehicle.build(dims)?;
+        let (at_m, critical) = match vehicle.at() {
             Some(at) => (at, None),
             None => {
                 let c = critical(
@@ -227,7 +234,7 @@ impl Bridge {
                     mu,
                     &placed.deck,
                     &placed.vehicle,
-                    live.vehicle.search(),
+                    vehicle.search(),
                     settings,
                 )?;
                 let at = c.minima.first().map_or_else(

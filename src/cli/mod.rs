@@ -10,8 +10,8 @@
 
 mod app;
 mod arch_args;
-mod bridge_args;
 mod assess;
+mod bridge_args;
 mod certify;
 mod curve;
 mod dimension_args;

@@ -215,13 +215,22 @@ impl<'a> Loaded<'a> {
     }
 
     /// The side at which the piece `(from, to, side)` evaluates the load at `beta`: its own,
-    /// except at the ends of a pressure's piece, where the β-derivatives are the piece's
-    /// one-sided ones (a pressure's actions are continuous, with corners at its breaks).
+    /// except at the ends of a pressure's piece, where the values (at a point load) and the
+    /// β-derivatives (at a patch's edge) are the piece's own, one-sided ones.
     fn side_at(&self, (from, to, side): &Piece, beta: Radians) -> Side {
-        match *self.load {
-            LiveLoad::Pressure(_) if beta == from.0 => Side::After,
-            LiveLoad::Pressure(_) if beta == to.0 => Side::Before,
-            _ => *side,
+        if !matches!(self.load, LiveLoad::Pressure(_)) {
+            return *side;
+        }
+        // a point load at a springing is carried as by `LiveLoad::Point`: by every section
+        // but the right springing's, and by the left springing's (the whole arch)
+        if beta == self.arch.beta_right() {
+            Side::Before
+        } else if beta == self.arch.beta_left() || beta == from.0 {
+            Side::After
+        } else if beta == to.0 {
+            Side::Before
+        } else {
+            *side
         }
     }
 

@@ -331,16 +331,32 @@ fn continuous_finite_friction(
     max: Option<continuum::Extreme>,
     settings: &Settings,
 ) -> Result<LoadOutcome, Undecided> {
-    let Some((lambda_s, x_s, pattern_s)) = max else {
-        return Err(Undecided::NotCovered("continuous arch at finite friction with lambda_static unbounded: the limit states are not searched on the continuum in that case yet".into()));
-    };
-    let carry = |pieces| carried_states(arch, eta, mu, load, pieces, lambda_s, min, settings);
+    // unbounded: the discretisations sweep up to `UNBOUNDED_SEARCH_TOP`, as a discrete arch's
+    let top = max.as_ref().map_or(UNBOUNDED_SEARCH_TOP, |m| m.0);
+    let carry = |pieces| carried_states(arch, eta, mu, load, pieces, top, min, settings);
     // λ to `same_state_eta` × (1 + |λ|): a multiplier near zero is fixed in absolute terms
     let same = |p: &LimitState, q: &LimitState| {
         discretised::same_state(p, q, settings.same_state_eta * (1.0 + p.t.abs()), settings)
     };
     let sort = |l: &mut Vec<LimitState>| l.sort_by(|p, q| p.t.total_cmp(&q.t));
     let (fine, events) = agreed(settings, carry, same, sort)?;
+    let Some((lambda_s, x_s, pattern_s)) = max else {
+        if fine.is_empty() {
+            return Ok(LoadOutcome::NoCollapse {
+                lambda_min: min,
+                events: events.unwrap_or(0),
+            });
+        }
+        return Ok(LoadOutcome::Limits(LoadSurvey {
+            lambda_min: min,
+            lambda_static: None,
+            mechanism_at_static: false,
+            limit_states: fine,
+            events: events.unwrap_or(0),
+            method: "refined",
+            no_mechanism: Vec::new(),
+        }));
+    };
     let at_static = limit_state_on(arch, eta, mu, load, (lambda_s, x_s), &pattern_s, settings)?;
     let mechanism_at_static = at_static.is_some();
     let mut limit_states = fine;

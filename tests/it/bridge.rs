@@ -304,3 +304,223 @@ fn fill_statics_against_quadrature_and_differences() {
         .to_string()
         .contains("--fill-depth"));
 }
+
+/// Fill of zero weight is no fill: the same arch (bit for bit, so every answer is today's);
+/// with fill, the scan's forces (`forces_with`) are the full statics' order 0 bit for bit,
+/// and the β-derivatives obey the spec's identities with the fill's pressure p:
+/// dN/dβ = T − cos β − p cos β, dT/dβ = −N + sin β + p sin β,
+/// dM/dβ = −T + (1 − ρ) cos β − (η/2) p cos β (ρ the ring's centroid factor).
+#[test]
+fn fill_enters_the_statics_and_zero_fill_is_none() {
+    use arch_enum::bridge::Fill;
+    use arch_enum::statics::{actions, forces_with};
+    use arch_enum::{Arch, WeightModel};
+    let plain = Arch::symmetric(0.2, WeightModel::Centroid).unwrap();
+    assert_eq!(plain.clone().with_fill(Fill::new(0.0, 0.4).unwrap()), plain);
+    let mut next = uniform(0xf111_5a71_0000_0001);
+    for case in 0..200 {
+        let weight = if case % 2 == 0 {
+            WeightModel::Centreline
+        } else {
+            WeightModel::Centroid
+        };
+        let (br, bl) = (-0.5 + next(), PI - 0.5 + next());
+        let eta = 0.05 + 0.5 * next();
+        let arch = Arch::new(br, bl, weight)
+            .unwrap()
+            .with_fill(Fill::new(0.2 + next(), 0.4 * next()).unwrap());
+        let fill = *arch.fill().unwrap();
+        let beta = br + (bl - br) * next();
+        let a = actions(&arch, eta, beta);
+        let f = forces_with(&arch, eta, beta, beta.sin_cos());
+        for k in 0..3 {
+            let full = [a.n[0], a.t[0], a.m[0]][k];
+            assert_eq!(
+                (f[k].g, f[k].c),
+                (full.g, full.c),
+                "case {case}: order 0 differs"
+            );
+        }
+        let p = fill.load((br, bl), eta, beta).f[1];
+        let (s, c) = beta.sin_cos();
+        let x = [next() - 0.5, next() - 0.5, next() - 0.5];
+        let (n, t) = (a.n[0].at(&x), a.t[0].at(&x));
+        let rho = weight.rho(eta);
+        let checks = [
+            (a.n[1].at(&x), t - c - p * c),
+            (a.t[1].at(&x), -n + s + p * s),
+            (a.m[1].at(&x), -t + (1.0 - rho) * c - 0.5 * eta * p * c),
+        ];
+        for (got, want) in checks {
+            assert!(
+                (got - want).abs() < 1e-12 * (1.0 + want.abs()),
+                "case {case}: {got} vs {want}"
+            );
+        }
+    }
+}
+
+/// A 10 m semicircle, 0.6 m ring, 20 kN/m³, 1 m barrel, μ = 0.6 (the engineer).
+fn ten_metre_deck(dispersal: f64) -> (arch_enum::Arch, f64, arch_enum::bridge::Deck) {
+    let ring = Intrados::new(10.0, 5.0).unwrap().ring(0.6).unwrap();
+    let arch = arch_enum::Arch::symmetric(0.0, arch_enum::WeightModel::Centreline).unwrap();
+    let deck = arch_enum::bridge::Deck::new(ring.radius, 20.0, 1.0, dispersal).unwrap();
+    (arch, ring.eta, deck)
+}
+
+fn least_lambda(arch: &arch_enum::Arch, eta: f64, load: &arch_enum::load::LiveLoad) -> Option<f64> {
+    use arch_enum::multiplier::{survey, LoadOutcome};
+    match survey(arch, eta, 0.6, load, &arch_enum::Settings::default()).unwrap() {
+        Ok(LoadOutcome::Limits(s)) => s.lambda(),
+        _ => None,
+    }
+}
+
+/// Dispersal (bridge spec §5): with s = 0 an axle through fill is today's point load at the
+/// extrados point below it (λ scaled by the axle's size); a patch narrowing to a point tends
+/// to the point load; a symmetric two-axle vehicle and its mirror position give one answer
+/// on a symmetric arch; a vehicle off the ring is refused by name.
+#[test]
+fn dispersal_tends_to_the_point_load_and_keeps_symmetry() {
+    use arch_enum::bridge::{Fill, Vehicle};
+    use arch_enum::load::LiveLoad;
+    use arch_enum::pressure::{Patch, Pressure};
+    let (bare, eta, deck0) = ten_metre_deck(0.0);
+    let arch = bare.clone().with_fill(Fill::new(0.9, 0.3 / 5.3).unwrap());
+    let axle = Vehicle::new(&[100.0], &[]).unwrap();
+    let kappa = 1.0 + eta / 2.0;
+    for at in [1.3, 2.5, 4.2, 6.9] {
+        let LiveLoad::Pressure(p) = deck0.place(&arch, eta, &axle, at).unwrap() else {
+            panic!("a vehicle is a pressure")
+        };
+        let q = p.points()[0].q;
+        let beta = p.points()[0].beta;
+        let via_vehicle = least_lambda(&arch, eta, &LiveLoad::Pressure(p)).unwrap();
+        let point = least_lambda(&arch, eta, &LiveLoad::Point { beta }).unwrap();
+        assert!(
+            (via_vehicle * q - point).abs() <= 1e-10 * point,
+            "at {at}: {via_vehicle} * {q} vs {point}"
+        );
+        // narrow patches centred on the point: the error falls with the width
+        let x = kappa * beta.cos();
+        let errs: Vec<f64> = [1e-2, 1e-3, 1e-4]
+            .iter()
+            .map(|&h| {
+                let patch = Patch {
+                    x_lo: x - h,
+                    x_hi: x + h,
+                    q: 0.5 / h,
+                };
+                let l = least_lambda(
+                    &arch,
+                    eta,
+                    &LiveLoad::Pressure(Pressure::new(&[patch], &[]).unwrap()),
+                )
+                .unwrap();
+                (l - point).abs() / point
+            })
+            .collect();
+        assert!(
+            errs[2] < 1e-4 && errs[2] < errs[0],
+            "at {at}: relative errors {errs:?}"
+        );
+    }
+    // a symmetric vehicle at X and at its mirror position on the symmetric arch
+    let (_, _, deck) = ten_metre_deck(0.5);
+    let pair = Vehicle::new(&[100.0, 100.0], &[1.2]).unwrap();
+    for at in [2.0, 3.7, 5.3] {
+        let mirror = 10.0 + 1.2 - at;
+        let l =
+            |x: f64| least_lambda(&arch, eta, &deck.place(&arch, eta, &pair, x).unwrap()).unwrap();
+        let (a, b) = (l(at), l(mirror));
+        assert!((a - b).abs() <= 1e-9 * a, "at {at}: {a} vs mirror {b}");
+    }
+    let err = deck.place(&arch, eta, &pair, 40.0).unwrap_err().to_string();
+    assert!(err.contains("--at"), "{err}");
+}
+
+/// The critical position of one axle on the bare ring (no fill: a point load) against the
+/// least λ over a grid of 121 point-load runs across the crossing: never above it, within
+/// what the grid's spacing can miss, and located more precisely than the grid (its bracket
+/// narrower than the grid's spacing).
+#[test]
+fn the_critical_position_beats_a_fine_grid_of_point_loads() {
+    use arch_enum::bridge::{critical, Search, Vehicle};
+    let (arch, eta, deck) = ten_metre_deck(0.5);
+    let axle = Vehicle::new(&[100.0], &[]).unwrap();
+    let settings = arch_enum::Settings::default();
+    let c = critical(
+        &arch,
+        eta,
+        0.6,
+        &deck,
+        &axle,
+        Search {
+            samples: 41,
+            bracket_m: 1e-6,
+        },
+        &settings,
+    )
+    .unwrap();
+    let best = &c.minima[0];
+    let (from, to) = deck.crossing(&arch, eta, &axle);
+    let n = 121;
+    let spacing = (to - from) / (n - 1) as f64;
+    let mut grid = (f64::INFINITY, 0.0);
+    for i in 0..n {
+        let at = from + spacing * i as f64;
+        if let Ok(load) = deck.place(&arch, eta, &axle, at) {
+            if let Some(l) = least_lambda(&arch, eta, &load) {
+                if l < grid.0 {
+                    grid = (l, at);
+                }
+            }
+        }
+    }
+    println!(
+        "critical X* = {} lambda = {} (bracket {:?}); grid best X = {} lambda = {}",
+        best.at_m, best.lambda, best.bracket_m, grid.1, grid.0
+    );
+    assert!(
+        best.lambda <= grid.0 * (1.0 + 1e-12),
+        "the grid found less: {grid:?} vs {best:?}"
+    );
+    assert!(
+        grid.0 - best.lambda <= 0.05 * best.lambda,
+        "too far below the grid: {grid:?} vs {best:?}"
+    );
+    let mirror = c.mirror_m.unwrap();
+    let near = (best.at_m - grid.1).abs().min((mirror - grid.1).abs());
+    assert!(
+        near <= spacing,
+        "X* = {} (mirror {mirror}) far from the grid's {}",
+        best.at_m,
+        grid.1
+    );
+    assert!(best.bracket_m.1 - best.bracket_m.0 < 1e-5 * spacing);
+}
+
+/// A continuous arch with fill under a two-axle vehicle spread through it: fine equal
+/// discretisations (the angles of the patches' edges not among their joints) converge to
+/// the continuous arch's collapse multiplier from above, the error falling with the
+/// spacing.
+#[test]
+fn a_filled_continuous_arch_is_the_limit_of_fine_discretisations() {
+    use arch_enum::bridge::{Fill, Vehicle};
+    let (bare, eta, deck) = ten_metre_deck(0.5);
+    let arch = bare.with_fill(Fill::new(0.9, 0.3 / 5.3).unwrap());
+    let pair = Vehicle::new(&[100.0, 100.0], &[1.2]).unwrap();
+    let load = deck.place(&arch, eta, &pair, 3.1).unwrap();
+    let exact = least_lambda(&arch, eta, &load).unwrap();
+    let errs: Vec<f64> = [50, 100, 200]
+        .iter()
+        .map(|&n| {
+            let discrete = arch.clone().with_blocks(n).unwrap();
+            let l = least_lambda(&discrete, eta, &load).unwrap();
+            (l - exact) / exact
+        })
+        .collect();
+    println!("continuous lambda {exact}; discretisations' relative excess {errs:?}");
+    assert!(errs.iter().all(|&e| e >= -1e-12), "{errs:?}");
+    assert!(errs[2] < errs[0] && errs[2] < 1e-3, "{errs:?}");
+}

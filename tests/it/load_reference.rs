@@ -1026,7 +1026,7 @@ fn filled_arches_under_pressure_match_the_brute_force() {
                     }
                 })
                 .collect();
-            LiveLoad::Pressure(Pressure::new(&patches).unwrap())
+            LiveLoad::Pressure(Pressure::new(&patches, &[]).unwrap())
         };
         let mut arch = Arch::new(br, bl, weight)
             .unwrap()

@@ -3,10 +3,12 @@
 //! compatible rates, and the static multiplier of a published discrete arch.
 
 use crate::search_reference::{random_joints, Rng};
+use arch_enum::bridge::Fill;
 use arch_enum::contact::{Contact, ContactKind, Location};
 use arch_enum::kinematics::{column, power};
 use arch_enum::load::{live_activation, LiveLoad, Side};
 use arch_enum::multiplier::{static_range, StaticRange};
+use arch_enum::pressure::{Patch, PointLoad, Pressure};
 use arch_enum::statics::actions;
 use arch_enum::{Arch, Settings, WeightModel};
 use nalgebra::DMatrix;
@@ -82,8 +84,9 @@ fn horizontal_moment_matches_a_quadrature_of_the_sector() {
 /// Σ_j φ_j(x, λ) r_j = L_dead + λ L_live − μ Σ_sliding N_j(x, λ) r_j for every compatible
 /// rate vector r (B r = 0, any sign) and any state (x, λ): a direct test of the live
 /// statics against the live kinematics (loads.md), on random discrete arches with every
-/// contact of every joint, both weight models, both loads (the point load at a joint,
-/// with both sides of its section, or inside a voussoir).
+/// contact of every joint, both weight models, every load (the point load at a joint,
+/// with both sides of its section, or inside a voussoir; patches and point loads on the
+/// extrados), a third of the arches under fill.
 #[test]
 fn virtual_work_identity_with_the_live_load() {
     let mut rng = Rng(0x11fe_10ad_0000_0001);
@@ -97,13 +100,18 @@ fn virtual_work_identity_with_the_live_load() {
         } else {
             WeightModel::Centreline
         };
-        let arch = Arch::new(br, bl, weight)
+        let mut arch = Arch::new(br, bl, weight)
             .unwrap()
             .with_joints(&joints)
             .unwrap();
+        // fill (bridge spec §2) on a third of the arches: its power block by block
+        if case % 3 == 0 {
+            arch = arch.with_fill(Fill::new(0.2 + rng.next(), 0.3 * rng.next()).unwrap());
+        }
         let mu = 0.2 + 2.0 * rng.next();
         let eta = 0.01 + 1.9 * rng.next();
-        let load = match case % 4 {
+        let kappa = 1.0 + eta / 2.0;
+        let load = match case % 6 {
             0 => LiveLoad::Horizontal {
                 towards_right: true,
             },
@@ -113,9 +121,46 @@ fn virtual_work_identity_with_the_live_load() {
             2 => LiveLoad::Point {
                 beta: joints[(rng.next() * joints.len() as f64) as usize % joints.len()],
             },
-            _ => LiveLoad::Point {
+            3 => LiveLoad::Point {
                 beta: br + (bl - br) * rng.next(),
             },
+            // patches on the extrados (some past its ends), and point loads at joints
+            // and inside voussoirs (bridge spec §3)
+            4 => LiveLoad::Pressure(
+                Pressure::new(
+                    &(0..3)
+                        .map(|_| {
+                            let x = kappa * (2.4 * rng.next() - 1.2);
+                            let half = 0.4 * rng.next() + 1e-3;
+                            Patch {
+                                x_lo: x - half,
+                                x_hi: x + half,
+                                q: rng.next(),
+                            }
+                        })
+                        .collect::<Vec<_>>(),
+                    &[],
+                )
+                .unwrap(),
+            ),
+            _ => {
+                let (a, b) = (br.max(0.0), bl.min(PI));
+                let on = |beta: f64| beta >= a && beta <= b;
+                let mut points = Vec::new();
+                for &beta in &joints {
+                    if on(beta) && rng.next() < 0.5 {
+                        points.push(PointLoad {
+                            beta,
+                            q: rng.next(),
+                        });
+                    }
+                }
+                points.push(PointLoad {
+                    beta: a + (b - a) * rng.next(),
+                    q: 1.0,
+                });
+                LiveLoad::Pressure(Pressure::new(&[], &points).unwrap())
+            }
         };
         // every contact at every joint (both sides of a loaded joint)
         let mut contacts: Vec<(Contact, Side)> = Vec::new();

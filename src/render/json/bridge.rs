@@ -131,7 +131,11 @@ fn critical_json(c: &Critical, vehicle_kn: Option<f64>) -> Option<CriticalJson> 
         .minima
         .iter()
         .skip(1)
-        .find(|o| c.mirror_m.is_none_or(|x| (o.at_m - x).abs() > 2.0 * (m.bracket_m.1 - m.bracket_m.0).max(1e-9)))
+        .find(|o| {
+            c.mirror_m.is_none_or(|x| {
+                (o.at_m - x).abs() > 2.0 * (m.bracket_m.1 - m.bracket_m.0).max(1e-9)
+            })
+        })
         .map(|o| Second {
             at_m: o.at_m,
             lambda: o.lambda,

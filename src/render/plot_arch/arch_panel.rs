@@ -1,7 +1,6 @@
 //! The top panel of the arch figure: the arch to scale, its joints, the lines of thrust and
 //! friction, the active contacts and the live load.
 
-use crate::pressure::Pressure;
 use super::canvas::{
     axes, closed, err, joints_visible, Chart, View, ARROW, MARGIN, X_LABELS, Y_LABELS,
 };
@@ -10,6 +9,7 @@ use crate::contact::{Contact, ContactKind};
 use crate::figures::thrust_line::Eccentricity;
 use crate::figures::ArchScene;
 use crate::load::LiveLoad;
+use crate::pressure::Pressure;
 use crate::render::plot::{short_num, FAMILY};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -123,8 +123,8 @@ fn load_arrows(
     Ok(())
 }
 
-/// A pressure on the extrados: arrows down onto each patch, their lengths in proportion to
-/// the intensity, and the label above the most loaded one.
+/// A pressure on the extrados: arrows down onto each patch, their lengths growing with the
+/// intensity, a long arrow onto each point load, and the label beside the last drawn.
 fn pressure_arrows(
     ch: &mut Chart,
     scene: &ArchScene,
@@ -152,6 +152,12 @@ fn pressure_arrows(
         if patch.q == q_max {
             label_at = (hi + 0.02, y + shaft);
         }
+    }
+    for point in p.points() {
+        let tip = (top * point.beta.cos(), top * point.beta.sin());
+        let tail = (tip.0, tip.1 + 2.5 * len);
+        arrow(ch, tail, tip, head)?;
+        label_at = (tail.0 + 0.02, tail.1);
     }
     Ok((format!("λ = {}", short_num(lambda)), label_at))
 }

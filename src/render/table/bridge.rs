@@ -58,7 +58,10 @@ fn critical_lines(s: &mut String, c: &Critical, vehicle_kn: Option<f64>) {
     let kn = |l: f64| vehicle_kn.map_or(String::new(), |v| format!(" ({} kN)", sig(l * v, 6)));
     match c.minima.first() {
         None => {
-            let _ = writeln!(s, "critical            no finite collapse multiplier on the crossing");
+            let _ = writeln!(
+                s,
+                "critical            no finite collapse multiplier on the crossing"
+            );
         }
         Some(m) => {
             let _ = writeln!(
@@ -84,7 +87,12 @@ fn critical_lines(s: &mut String, c: &Critical, vehicle_kn: Option<f64>) {
             }
         }
     }
-    let _ = writeln!(s, "influence line      {} samples, {} surveys in all", c.influence.len(), c.surveys);
+    let _ = writeln!(
+        s,
+        "influence line      {} samples, {} surveys in all",
+        c.influence.len(),
+        c.surveys
+    );
     let _ = writeln!(s, "{:>16}  {:>16}", "X (m)", "lambda_c");
     for p in &c.influence {
         let v = match &p.collapse {
