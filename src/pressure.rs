@@ -71,7 +71,7 @@ impl Pressure {
         }
         for p in patches {
             let ok = p.x_lo.is_finite() && p.x_hi.is_finite() && p.x_lo < p.x_hi;
-            if !ok || !(p.q.is_finite() && p.q >= 0.0) {
+            if !(ok && p.q.is_finite() && p.q >= 0.0) {
                 return Err(InputError::OutOfRange {
                     arg: "--axles",
                     value: format!("{} on [{}, {}]", fmt_value(p.q), p.x_lo, p.x_hi),

@@ -81,6 +81,8 @@ pub struct Search {
     pub samples: usize,
     /// A minimum's bracket is narrowed to this width (m).
     pub bracket_m: f64,
+    /// Worker threads for the samples and the minima (the answer does not depend on it).
+    pub threads: usize,
 }
 
 /// λ_c of `vehicle` with its first axle at `at_m`, with the load and its survey (neither
@@ -110,7 +112,11 @@ pub fn collapse_at(
     })
 }
 
-/// The critical position of `vehicle` crossing `arch` (thickness `eta`, friction `mu`).
+/// The critical position of `vehicle` crossing `arch` (thickness `eta`, friction `mu`):
+/// the influence line on `search.samples` positions, then each sampled local minimum
+/// refined by Brent's method (parabolic steps where λ_c is smooth, golden sections at a
+/// kink) to a bracket of `search.bracket_m`. On a symmetric arch under a symmetric vehicle
+/// only the minima up to the axis are refined (their mirror images tie).
 pub fn critical(
     arch: &Arch,
     eta: f64,
@@ -130,41 +136,60 @@ pub fn critical(
     crate::input::check_positive("--bracket", search.bracket_m)?;
     let (from, to) = deck.crossing(arch, eta, vehicle);
     let n = search.samples;
-    let mut surveys = 0;
-    let mut lambda = |at: f64| -> Result<f64, InputError> {
-        surveys += 1;
+    let value = |at: f64| -> Result<f64, InputError> {
         Ok(collapse_at(arch, eta, mu, deck, vehicle, at, settings)?
             .0
             .value())
     };
-    let mut influence = Vec::with_capacity(n);
-    for i in 0..n {
-        let at_m = crate::arch::grid_angle(from, to, n, i);
-        let (collapse, _, _) = collapse_at(arch, eta, mu, deck, vehicle, at_m, settings)?;
-        influence.push(InfluencePoint { at_m, collapse });
-    }
+    let positions: Vec<f64> = (0..n)
+        .map(|i| crate::arch::grid_angle(from, to, n, i))
+        .collect();
+    let influence = crate::threads::map(&positions, search.threads, |_, &at_m| {
+        collapse_at(arch, eta, mu, deck, vehicle, at_m, settings)
+            .map(|(collapse, _, _)| InfluencePoint { at_m, collapse })
+    })
+    .into_iter()
+    .collect::<Result<Vec<_>, _>>()?;
     let values: Vec<f64> = influence.iter().map(|p| p.collapse.value()).collect();
-    let mut minima = Vec::new();
-    for i in 0..n {
-        let v = values[i];
-        let left = if i > 0 { values[i - 1] } else { f64::INFINITY };
-        let right = if i + 1 < n {
-            values[i + 1]
-        } else {
-            f64::INFINITY
-        };
-        // a finite sample no larger than its neighbours (the first of a flat run)
-        if !(v.is_finite() && v < left && v <= right) {
-            continue;
-        }
+    // the axis of a mirror-symmetric crossing: minima beyond it are mirror images
+    let axis = mirror(arch, eta, deck, vehicle, 0.0).map(|m| 0.5 * m);
+    let spacing = (to - from) / (n - 1) as f64;
+    let starts: Vec<usize> = (0..n)
+        .filter(|&i| {
+            let v = values[i];
+            let left = if i > 0 { values[i - 1] } else { f64::INFINITY };
+            let right = if i + 1 < n {
+                values[i + 1]
+            } else {
+                f64::INFINITY
+            };
+            // a finite sample below its left neighbour and no larger than its right one
+            v.is_finite() && v < left && v <= right
+        })
+        .filter(|&i| axis.is_none_or(|a| influence[i].at_m <= a + spacing))
+        .collect();
+    let refined = crate::threads::map(&starts, search.threads, |_, &i| {
         let lo = influence[i.saturating_sub(1)].at_m;
         let hi = influence[(i + 1).min(n - 1)].at_m;
-        minima.push(golden(
-            &mut lambda,
+        let mut evals = 0;
+        let mut f = |x: f64| {
+            evals += 1;
+            value(x)
+        };
+        brent(
+            &mut f,
             (lo, hi),
-            (influence[i].at_m, v),
+            (influence[i].at_m, values[i]),
             search.bracket_m,
-        )?);
+        )
+        .map(|m| (m, evals))
+    });
+    let mut minima = Vec::new();
+    let mut surveys = n + 1;
+    for r in refined {
+        let (m, evals) = r?;
+        surveys += evals;
+        minima.push(m);
     }
     minima.sort_by(|a, b| a.lambda.total_cmp(&b.lambda));
     let at_critical = match minima.first() {
@@ -182,56 +207,88 @@ pub fn critical(
         minima,
         at_critical,
         mirror_m,
-        surveys: surveys + n + 1,
+        surveys,
     })
 }
 
-/// Golden-section search for the least λ_c in `bracket`, from the sample `best` inside it,
-/// until the bracket is narrower than `width`: returns the best position evaluated.
-fn golden(
-    lambda: &mut dyn FnMut(f64) -> Result<f64, InputError>,
-    (mut lo, mut hi): (f64, f64),
-    mut best: (f64, f64),
+/// Brent's minimisation of λ_c in `bracket` from the sample `best` inside it, until the
+/// bracket is narrower than `width` (R. P. Brent, Algorithms for Minimization without
+/// Derivatives, 1973, ch. 5): parabolic steps through the three best points when they are
+/// finite and the step stays well inside, golden sections otherwise. Returns the best
+/// position evaluated, with the final bracket.
+fn brent(
+    f: &mut dyn FnMut(f64) -> Result<f64, InputError>,
+    (mut a, mut b): (f64, f64),
+    (x0, f0): (f64, f64),
     width: f64,
 ) -> Result<Minimum, InputError> {
-    const INV_PHI: f64 = 0.618_033_988_749_894_9;
-    let mut x1 = hi - INV_PHI * (hi - lo);
-    let mut x2 = lo + INV_PHI * (hi - lo);
-    let (mut f1, mut f2) = (lambda(x1)?, lambda(x2)?);
-    for (x, f) in [(x1, f1), (x2, f2)] {
-        if f < best.1 {
-            best = (x, f);
-        }
-    }
-    while hi - lo > width {
-        // NaN (undecided) compares false: treated as larger
-        if f1 <= f2 || f2.is_nan() {
-            hi = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = hi - INV_PHI * (hi - lo);
-            f1 = lambda(x1)?;
-            if f1 < best.1 {
-                best = (x1, f1);
-            }
-        } else {
-            lo = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = lo + INV_PHI * (hi - lo);
-            f2 = lambda(x2)?;
-            if f2 < best.1 {
-                best = (x2, f2);
-            }
-        }
-        if x1 == x2 {
+    const CGOLD: f64 = 0.381_966_011_250_105_1;
+    let (mut x, mut w, mut v) = (x0, x0, x0);
+    let (mut fx, mut fw, mut fv) = (f0, f0, f0);
+    let (mut d, mut e): (f64, f64) = (0.0, 0.0);
+    let tol1 = 0.25 * width;
+    for _ in 0..200 {
+        let xm = 0.5 * (a + b);
+        if b - a <= width || (x - xm).abs() <= 2.0 * tol1 - 0.5 * (b - a) {
             break;
+        }
+        let smooth = fx.is_finite() && fw.is_finite() && fv.is_finite();
+        let mut golden = true;
+        if smooth && e.abs() > tol1 {
+            let r = (x - w) * (fx - fv);
+            let mut q = (x - v) * (fx - fw);
+            let mut p = (x - v) * q - (x - w) * r;
+            q = 2.0 * (q - r);
+            if q > 0.0 {
+                p = -p;
+            } else {
+                q = -q;
+            }
+            let last = e;
+            if p.abs() < (0.5 * q * last).abs() && p > q * (a - x) && p < q * (b - x) {
+                e = d;
+                d = p / q;
+                if (x + d) - a < 2.0 * tol1 || b - (x + d) < 2.0 * tol1 {
+                    d = tol1.copysign(xm - x);
+                }
+                golden = false;
+            }
+        }
+        if golden {
+            e = if x >= xm { a - x } else { b - x };
+            d = CGOLD * e;
+        }
+        let u = if d.abs() >= tol1 {
+            x + d
+        } else {
+            x + tol1.copysign(d)
+        };
+        let fu = f(u)?;
+        // NaN (undecided) compares false: never taken as better
+        if fu <= fx {
+            if u >= x {
+                a = x;
+            } else {
+                b = x;
+            }
+            (v, fv, w, fw, x, fx) = (w, fw, x, fx, u, fu);
+        } else {
+            if u < x {
+                a = u;
+            } else {
+                b = u;
+            }
+            if fu <= fw || w == x {
+                (v, fv, w, fw) = (w, fw, u, fu);
+            } else if fu <= fv || v == x || v == w {
+                (v, fv) = (u, fu);
+            }
         }
     }
     Ok(Minimum {
-        at_m: best.0,
-        lambda: best.1,
-        bracket_m: (lo, hi),
+        at_m: x,
+        lambda: fx,
+        bracket_m: (a, b),
     })
 }
 

@@ -212,7 +212,7 @@ impl Deck {
                 }
             })
             .collect();
-        if patches.iter().any(|p| !(p.x_lo < p.x_hi)) {
+        if patches.iter().any(|p| p.x_lo >= p.x_hi || p.x_lo.is_nan()) {
             return Err(InputError::Inconsistent {
                 arg: "--fill-depth",
                 reason: "an axle reaches the extrados without spreading (the road touches it): \

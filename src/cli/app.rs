@@ -83,7 +83,7 @@ pub(super) enum Command {
     #[command(
         after_help = "Example:\n  arch-enum load --alpha 0 --blocks 27 --weight centroid --eta 0.153361 --mu inf --point-load-deg 53.3333333333\n  arch-enum load --alpha 0 --blocks 20 --eta 0.3 --mu 0.8 --horizontal --json"
     )]
-    Load(load::LoadArgs),
+    Load(Box<load::LoadArgs>),
     /// The load multiplier against friction at a fixed thickness: lambda_static and the collapse multiplier lambda (the least limit state) sampled over mu, and at mu = inf.
     #[command(
         after_help = "Example:\n  arch-enum load-curve --alpha 0 --blocks 20 --eta 0.3 --horizontal\n  arch-enum load-curve --alpha 0 --eta 0.2 --point-load-deg 60 --mu-min 0.4 --mu-max 2 --json"
@@ -156,7 +156,7 @@ where
         Command::Plot { figure } => plot::run(figure, &settings, &mut io),
         Command::Curve(a) => curve::run(a, &settings, &mut io),
         Command::Assess(a) => assess::run(a, &settings, &mut io),
-        Command::Load(a) => load::run(a, &settings, &mut io),
+        Command::Load(a) => load::run(*a, &settings, &mut io),
         Command::LoadCurve(a) => load::run_curve(a, &settings, &mut io),
         Command::Serve(a) => serve(a, &mut io),
     };

@@ -3,6 +3,7 @@
 //! (`--axles --spacing --at`, `--dispersal`, `--effective-width`), with `--critical` for the
 //! position where it is worst.
 
+use super::threads_arg::ThreadsArg;
 use crate::arch::{Arch, InputError};
 use crate::bridge::critical::Search;
 use crate::bridge::{Deck, Fill, Vehicle};
@@ -70,7 +71,7 @@ fn unit_weight(d: &Dimensions) -> f64 {
     d.density * d.g / 1000.0
 }
 
-#[derive(Args, Debug, Default)]
+#[derive(Args, Debug)]
 pub(crate) struct VehicleArgs {
     /// A vehicle: its axle loads in kN, first axle first (e.g. 100,100). Needs the
     /// dimensions (--span --rise --ring --width --unit-weight, or --radius --depth --density).
@@ -109,6 +110,8 @@ pub(crate) struct VehicleArgs {
     /// Width (m) to which each local minimum of the influence line is bracketed.
     #[arg(long, default_value_t = 1e-6, allow_hyphen_values = true)]
     bracket: f64,
+    #[command(flatten)]
+    threads: ThreadsArg,
 }
 
 /// A vehicle on its deck, ready to be placed.
@@ -162,12 +165,13 @@ impl VehicleArgs {
         self.at
     }
 
-    /// How finely `--critical` looks.
-    pub(crate) fn search(&self) -> Search {
-        Search {
+    /// How finely `--critical` looks, and on how many threads.
+    pub(crate) fn search(&self) -> Result<Search, InputError> {
+        Ok(Search {
             samples: self.samples,
             bracket_m: self.bracket,
-        }
+            threads: self.threads.count()?,
+        })
     }
 }
 

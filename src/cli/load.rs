@@ -126,29 +126,70 @@ pub(crate) struct LoadArgs {
     pub(crate) json: bool,
 }
 
+/// A load question as the flags give it: the engineer's geometry and dimensions, η, the
+/// arch with its fill, the vehicle placed (at `--at` or its critical position) and the load.
+pub(crate) struct Prepared {
+    geometry: Option<crate::bridge::Geometry>,
+    dims: Option<crate::render::table::Dimensions>,
+    pub(crate) eta: f64,
+    pub(crate) mu: f64,
+    pub(crate) arch: Arch,
+    fill: Option<crate::render::json::FillJson>,
+    bridge: Option<Bridge>,
+    pub(crate) load: LiveLoad,
+}
+
+impl Prepared {
+    /// The critical position found with `--critical`, and the vehicle's total (kN).
+    pub(crate) fn critical(&self) -> Option<(&Critical, f64)> {
+        let b = self.bridge.as_ref()?;
+        Some((b.critical.as_ref()?, b.placed.vehicle.total_kn()))
+    }
+}
+
+/// The question of `a`, every input checked (the critical position searched with
+/// `--critical`).
+pub(crate) fn prepare(a: &LoadArgs, settings: &Settings) -> Result<Prepared, InputError> {
+    let (geometry, dims, eta) = sized(&a.arch, &a.dims, a.eta)?;
+    let arch = a.arch.build()?;
+    let fill = a.fill.build(dims.as_ref())?;
+    let arch = match &fill {
+        Some((f, _)) => arch.with_fill(*f),
+        None => arch,
+    };
+    let bridge = Bridge::build(&a.vehicle, &arch, eta, a.mu, dims.as_ref(), settings)?;
+    let load = match &bridge {
+        Some(b) => b.load,
+        None => a.live.build(&arch)?,
+    };
+    Ok(Prepared {
+        geometry,
+        dims,
+        eta,
+        mu: a.mu,
+        arch,
+        fill: fill.map(|f| f.1),
+        bridge,
+        load,
+    })
+}
+
 pub(crate) fn run(a: LoadArgs, settings: &Settings, io: &mut Io) -> Exit {
-    let (geometry, dims, eta) = match sized(&a.arch, &a.dims, a.eta) {
-        Ok(v) => v,
+    let p = match prepare(&a, settings) {
+        Ok(p) => p,
         Err(e) => return io.bad_input(&e),
     };
-    let built = a.arch.build().and_then(|arch| {
-        let fill = a.fill.build(dims.as_ref())?;
-        let arch = match &fill {
-            Some((f, _)) => arch.with_fill(*f),
-            None => arch,
-        };
-        let bridge = Bridge::build(&a.vehicle, &arch, eta, a.mu, dims.as_ref(), settings)?;
-        let load = match &bridge {
-            Some(b) => b.load,
-            None => a.live.build(&arch)?,
-        };
-        Ok((arch, fill.map(|f| f.1), bridge, load))
-    });
-    let (arch, fill, bridge, load) = match built {
-        Ok(v) => v,
-        Err(e) => return io.bad_input(&e),
-    };
-    let outcome = match survey(&arch, eta, a.mu, &load, settings) {
+    let Prepared {
+        geometry,
+        dims,
+        eta,
+        arch,
+        fill,
+        bridge,
+        load,
+        mu,
+    } = p;
+    let outcome = match survey(&arch, eta, mu, &load, settings) {
         Ok(o) => o,
         Err(e) => return io.bad_input(&e),
     };
@@ -187,7 +228,13 @@ pub(crate) fn run(a: LoadArgs, settings: &Settings, io: &mut Io) -> Exit {
         let lines = bridged.map_or(String::new(), |(vehicle, critical)| {
             crate::render::table::bridge(fill.as_ref(), vehicle.as_ref(), critical, vehicle_kn)
         });
-        io.out(&(geometry_text(geometry, None) + &lines + &table(&q, &outcome)));
+        // a bridge answer states its own scope (with fill, not the bare ring's)
+        let head = geometry_text(geometry, None);
+        let head = match lines.is_empty() {
+            false => head.replace(crate::render::geometry::RING_SCOPE, ""),
+            true => head,
+        };
+        io.out(&(head + &lines + &table(&q, &outcome)));
     }
     match outcome {
         Ok(LoadOutcome::Limits(_)) => Exit::Answered,
@@ -234,7 +281,7 @@ impl Bridge {
                     mu,
                     &placed.deck,
                     &placed.vehicle,
-                    vehicle.search(),
+                    vehicle.search()?,
                     settings,
                 )?;
                 let at = c.minima.first().map_or_else(

@@ -72,6 +72,32 @@ impl Output {
     }
 }
 
+/// The output flags of a figure whose command also takes the barrel's `--width` (metres):
+/// the PNG width is `--png-width` there.
+#[derive(Args, Debug)]
+pub(crate) struct BridgeOutput {
+    /// Output file; its extension picks the format: .svg or .png (default: <figure>.svg, or
+    /// <figure>.png with --png, in the current folder).
+    #[arg(long)]
+    out: Option<std::path::PathBuf>,
+    /// PNG output (rendered in-process, fonts embedded); with --out the path must end in .png.
+    #[arg(long)]
+    png: bool,
+    /// PNG width in pixels (100 to 8000).
+    #[arg(long, default_value_t = 1200)]
+    png_width: u32,
+}
+
+impl BridgeOutput {
+    fn output(&self) -> Output {
+        Output {
+            out: self.out.clone(),
+            png: self.png,
+            width: self.png_width,
+        }
+    }
+}
+
 /// The arch and the state a figure draws.
 #[derive(Args, Debug)]
 pub(crate) struct StateArgs {
@@ -147,6 +173,16 @@ pub(crate) enum Figure {
         #[command(flatten)]
         output: Output,
     },
+    /// The influence line of a vehicle: its collapse multiplier against its road position, the local minima and the critical position X* marked, and the arch with the mechanism at X*.
+    #[command(
+        after_help = "Example:\n  arch-enum plot influence --span 10 --rise 5 --ring 0.6 --width 1 --unit-weight 20 --mu 0.6 --fill-weight 18 --fill-depth 0.3 --axles 100,100 --spacing 1.2 --critical --out influence.png"
+    )]
+    Influence {
+        #[command(flatten)]
+        load: Box<super::load::LoadArgs>,
+        #[command(flatten)]
+        output: BridgeOutput,
+    },
     /// The eccentricities e_M = M/N and e_T = (T/N)/mu eta/2 against beta.
     Eccentricity {
         #[command(flatten)]
@@ -178,12 +214,17 @@ pub(crate) enum Figure {
 }
 
 pub(crate) fn run(figure: Figure, settings: &Settings, io: &mut Io) -> Exit {
+    let bridge_output;
     let (name, output) = match &figure {
         Figure::Curve { output, .. } => ("curve", output),
         Figure::Arch { output, .. } => ("arch", output),
         Figure::Eccentricity { output, .. } => ("eccentricity", output),
         Figure::Load { output, .. } => ("load", output),
         Figure::LoadCurve { output, .. } => ("load_curve", output),
+        Figure::Influence { output, .. } => {
+            bridge_output = output.output();
+            ("influence", &bridge_output)
+        }
         Figure::Map { output, .. } => ("map", output),
     };
     let (path, format, width) = match output.target(name) {
@@ -275,6 +316,10 @@ pub(crate) fn draw(figure: Figure, settings: &Settings, io: &mut Io) -> Result<S
             Ok((title, traced)) => Ok(crate::render::plot_load_curve::svg(&title, &traced)),
             Err(e) => return Err(io.bad_input(&e)),
         },
+        Figure::Influence { load, .. } => match influence(&load, settings) {
+            Ok(drawn) => drawn,
+            Err(e) => return Err(io.bad_input(&e)),
+        },
         Figure::Eccentricity { state: st, .. } => match plot_inputs(&st, settings) {
             Ok((a, mu, eta)) => figures::scene(&a, mu, eta, settings).map(|s| plot_ecc::svg(&s)),
             Err(e) => return Err(io.bad_input(&e)),
@@ -336,4 +381,49 @@ fn plot_inputs(
         _ => Some(st.arch.eta(st.eta)?),
     };
     Ok((a, mu, eta))
+}
+
+/// The influence figure of a vehicle with `--critical`: the line, and the arch at X* with
+/// the collapse mechanism there.
+fn influence(
+    a: &super::load::LoadArgs,
+    settings: &Settings,
+) -> Result<Result<Result<String, String>, crate::figures::NoFigure>, InputError> {
+    if a.json {
+        return Err(InputError::Inconsistent {
+            arg: "--json",
+            reason: "plot influence draws a figure; `arch-enum load --critical --json` prints the numbers".into(),
+        });
+    }
+    let p = super::load::prepare(a, settings)?;
+    let Some((c, vehicle_kn)) = p.critical() else {
+        return Err(InputError::Inconsistent {
+            arg: "--critical",
+            reason: "plot influence draws a vehicle crossing: give --axles and --critical".into(),
+        });
+    };
+    let scenes = match crate::figures::load_scenes(&p.arch, p.eta, p.mu, &p.load, settings) {
+        Ok(s) => s,
+        Err(e) => return Ok(Err(e)),
+    };
+    let title = format!(
+        "{} — η = {}, μ = {}: influence line of the vehicle",
+        crate::render::plot::arch_label(&p.arch),
+        short(p.eta),
+        short(p.mu)
+    );
+    let at = c.minima.first().map_or(0.0, |m| m.at_m);
+    let scene = scenes
+        .first()
+        .map(|(label, s)| (format!("the vehicle at X* = {} m: {label}", short(at)), s));
+    Ok(Ok(crate::render::plot_influence::svg(
+        &title,
+        c,
+        Some(vehicle_kn),
+        scene,
+    )))
+}
+
+fn short(v: f64) -> String {
+    crate::render::plot::short_num(v)
 }

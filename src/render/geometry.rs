@@ -60,6 +60,9 @@ pub fn text(g: &Geometry, least_eta: Option<f64>) -> String {
         }
         out += "\n";
     }
-    out += "scope               single ring, radial joints, no crushing, no fill (the ring's own weight)\n";
-    out
+    out + RING_SCOPE
 }
+
+/// The scope line of an arch without fill or vehicle (a bridge answer prints its own).
+pub const RING_SCOPE: &str =
+    "scope               single ring, radial joints, no crushing, no fill (the ring's own weight)\n";

@@ -15,6 +15,7 @@ pub mod plot_arch;
 pub mod plot_curve;
 #[cfg(feature = "svg")]
 pub mod plot_ecc;
+pub mod plot_influence;
 #[cfg(feature = "svg")]
 pub mod plot_load_curve;
 #[cfg(feature = "svg")]

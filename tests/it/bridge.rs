@@ -458,6 +458,7 @@ fn the_critical_position_beats_a_fine_grid_of_point_loads() {
         Search {
             samples: 41,
             bracket_m: 1e-6,
+            threads: 2,
         },
         &settings,
     )
@@ -497,7 +498,7 @@ fn the_critical_position_beats_a_fine_grid_of_point_loads() {
         best.at_m,
         grid.1
     );
-    assert!(best.bracket_m.1 - best.bracket_m.0 < 1e-5 * spacing);
+    assert!(best.bracket_m.1 - best.bracket_m.0 <= 1e-6 && 1e-6 < 1e-4 * spacing);
 }
 
 /// A continuous arch with fill under a two-axle vehicle spread through it: fine equal

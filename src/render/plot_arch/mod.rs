@@ -21,17 +21,28 @@ use plotters::prelude::*;
 /// Draws several states one under the other, each headed by its label (every limit
 /// state of a non-unique case): the single-state figures nested in one SVG.
 pub fn svg_panels(scenes: &[(String, ArchScene)]) -> Result<String, String> {
+    let panels = scenes
+        .iter()
+        .map(|(label, scene)| Ok((label.clone(), svg(scene)?)))
+        .collect::<Result<Vec<_>, String>>()?;
+    stack(&panels)
+}
+
+/// SVG documents one under the other in one SVG, each headed by its label (none for an
+/// empty label), at the width of the arch figures.
+pub fn stack(panels: &[(String, String)]) -> Result<String, String> {
     let mut body = String::new();
     let mut y = 0u32;
-    for (label, scene) in scenes {
-        let one = svg(scene)?;
-        let h = svg_height(&one).ok_or("a panel without a height")?;
-        body.push_str(&format!(
-            "<text x=\"16\" y=\"{}\" font-family=\"{FAMILY}\" font-size=\"16\" font-weight=\"bold\">{}</text>\n",
-            y + 22,
-            label.replace('&', "&amp;").replace('<', "&lt;")
-        ));
-        y += LABEL_H;
+    for (label, one) in panels {
+        let h = svg_height(one).ok_or("a panel without a height")?;
+        if !label.is_empty() {
+            body.push_str(&format!(
+                "<text x=\"16\" y=\"{}\" font-family=\"{FAMILY}\" font-size=\"16\" font-weight=\"bold\">{}</text>\n",
+                y + 22,
+                label.replace('&', "&amp;").replace('<', "&lt;")
+            ));
+            y += LABEL_H;
+        }
         let inner = one
             .split_once("?>")
             .map_or(one.as_str(), |(_, rest)| rest)
