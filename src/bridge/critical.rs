@@ -166,7 +166,7 @@ pub fn critical(
             // a finite sample below its left neighbour and no larger than its right one
             v.is_finite() && v < left && v <= right
         })
-        .filter(|&i| axis.is_none_or(|a| influence[i].at_m <= a + spacing))
+        .filter(|&i| axis.is_none_or(|a| influence[i].at_m <= a + 0.5 * spacing))
         .collect();
     let refined = crate::threads::map(&starts, search.threads, |_, &i| {
         let lo = influence[i.saturating_sub(1)].at_m;

@@ -40,7 +40,10 @@ pub fn svg(
 }
 
 fn chart_svg(title: &str, c: &Critical, vehicle_kn: Option<f64>) -> Result<String, String> {
-    let best = c.minima.first().ok_or("no finite collapse multiplier on the crossing")?;
+    let best = c
+        .minima
+        .first()
+        .ok_or("no finite collapse multiplier on the crossing")?;
     let finite: Vec<(f64, f64)> = c
         .influence
         .iter()
@@ -161,16 +164,29 @@ fn draw_minima(
             )))
             .map_err(err)?;
     }
-    let kn = vehicle_kn.map_or(String::new(), |v| format!(" ({} kN)", short_num(v * best.lambda)));
-    let tie = if c.mirror_m.is_some() { ", its mirror ties" } else { "" };
+    let kn = vehicle_kn.map_or(String::new(), |v| {
+        format!(" ({} kN)", short_num(v * best.lambda))
+    });
+    let tie = if c.mirror_m.is_some() {
+        ", its mirror ties"
+    } else {
+        ""
+    };
     chart
         .draw_series(std::iter::once(Text::new(
-            format!("X* = {} m, λ_c = {}{kn}{tie}", short_num(best.at_m), short_num(best.lambda)),
+            format!(
+                "X* = {} m, λ_c = {}{kn}{tie}",
+                short_num(best.at_m),
+                short_num(best.lambda)
+            ),
             (best.at_m, best.lambda + 0.05 * top),
-            (FAMILY, 16).into_font().color(&CRITICAL).pos(plotters::style::text_anchor::Pos::new(
-                plotters::style::text_anchor::HPos::Center,
-                plotters::style::text_anchor::VPos::Bottom,
-            )),
+            (FAMILY, 16)
+                .into_font()
+                .color(&CRITICAL)
+                .pos(plotters::style::text_anchor::Pos::new(
+                    plotters::style::text_anchor::HPos::Center,
+                    plotters::style::text_anchor::VPos::Bottom,
+                )),
         )))
         .map_err(err)?;
     Ok(())

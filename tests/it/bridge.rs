@@ -525,3 +525,132 @@ fn a_filled_continuous_arch_is_the_limit_of_fine_discretisations() {
     assert!(errs.iter().all(|&e| e >= -1e-12), "{errs:?}");
     assert!(errs[2] < errs[0] && errs[2] < 1e-3, "{errs:?}");
 }
+
+fn load_json(args: &[&str]) -> serde_json::Value {
+    let out = arch_enum()
+        .arg("load")
+        .args(args)
+        .arg("--json")
+        .output()
+        .unwrap();
+    assert!(
+        out.status.code().is_some_and(|c| c <= 1),
+        "{args:?}: {out:?}"
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+const ENGINEER: [&str; 12] = [
+    "--span",
+    "10",
+    "--rise",
+    "5",
+    "--ring",
+    "0.6",
+    "--width",
+    "1",
+    "--unit-weight",
+    "20",
+    "--mu",
+    "0.6",
+];
+
+/// The JSON contract of `load` with a vehicle (issue 23): `lambda` the adequacy factor,
+/// `lambda_static`, `vehicle {axles_kn, spacing_m, at_m}`, `units.lambda_kn` = λ × the
+/// vehicle's total, `fill {weight_kn_m3, depth_m}` (null without fill), `geometry`; with
+/// `--critical`, `critical {at_m, lambda, mode, pattern, second}` and `influence`, X* the
+/// least λ of the influence line and `load`'s own answer at X*. Fill of zero weight gives
+/// the numbers without fill, bit for bit; bad bridge flags are refused by name.
+#[test]
+fn load_with_a_vehicle_keeps_the_json_contract() {
+    let mut args = ENGINEER.to_vec();
+    args.extend(["--axles", "100,100", "--spacing", "1.2", "--at", "3.1"]);
+    let bare = load_json(&args);
+    assert!(bare["fill"].is_null());
+    assert_eq!(
+        bare["vehicle"]["axles_kn"],
+        serde_json::json!([100.0, 100.0])
+    );
+    assert_eq!(bare["vehicle"]["spacing_m"], serde_json::json!([1.2]));
+    assert_eq!(bare["vehicle"]["at_m"], serde_json::json!(3.1));
+    let lambda = bare["lambda"].as_f64().unwrap();
+    let kn = bare["units"]["lambda_kn"].as_f64().unwrap();
+    assert_eq!(kn, lambda * 200.0);
+    assert!(bare["lambda_static"].as_f64().unwrap() >= lambda);
+    assert_eq!(bare["geometry"]["span_m"], serde_json::json!(10.0));
+    // zero fill: the same numbers bit for bit
+    let mut zero = args.clone();
+    zero.extend(["--fill-ratio", "0", "--fill-height", "0.1"]);
+    let z = load_json(&zero);
+    assert_eq!(z["lambda"], bare["lambda"]);
+    assert_eq!(z["limit_states"], bare["limit_states"]);
+    // fill, and the critical position
+    let mut filled = ENGINEER.to_vec();
+    filled.extend([
+        "--fill-weight",
+        "18",
+        "--fill-depth",
+        "0.3",
+        "--axles",
+        "100",
+        "--critical",
+        "--samples",
+        "15",
+    ]);
+    let c = load_json(&filled);
+    assert_eq!(c["fill"]["weight_kn_m3"], serde_json::json!(18.0));
+    assert_eq!(c["fill"]["depth_m"], serde_json::json!(0.3));
+    let crit = &c["critical"];
+    let at = crit["at_m"].as_f64().unwrap();
+    assert_eq!(c["vehicle"]["at_m"].as_f64().unwrap(), at);
+    assert_eq!(crit["lambda"], c["lambda"], "load answers at X*");
+    assert!(crit["mode"].is_string() && crit["pattern"].as_array().is_some_and(|p| !p.is_empty()));
+    assert!(crit.get("second").is_some());
+    let least = c["influence"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter_map(|p| p["lambda"].as_f64())
+        .fold(f64::INFINITY, f64::min);
+    assert!(
+        crit["lambda"].as_f64().unwrap() <= least,
+        "X* above a sample of its line"
+    );
+    // refused by name
+    for (extra, flag) in [
+        (vec!["--axles", "100"], "--axles"),
+        (
+            vec!["--axles", "100", "--at", "3", "--dispersal", "-1"],
+            "--dispersal",
+        ),
+        (vec!["--axles", "100,-5", "--at", "3"], "--axles"),
+        (
+            vec!["--axles", "100,100,100", "--spacing", "1,2,3", "--at", "3"],
+            "--spacing",
+        ),
+        (vec!["--axles", "100", "--at", "40"], "--at"),
+        (
+            vec![
+                "--fill-weight",
+                "18",
+                "--fill-depth",
+                "-0.3",
+                "--axles",
+                "100",
+                "--at",
+                "3",
+            ],
+            "--fill-depth",
+        ),
+    ] {
+        let mut a = ENGINEER.to_vec();
+        a.extend(extra.iter().copied());
+        let out = arch_enum().arg("load").args(&a).output().unwrap();
+        assert_eq!(out.status.code(), Some(2), "{a:?}");
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert!(
+            err.contains(flag) && !err.contains("panicked"),
+            "{a:?}: {err}"
+        );
+    }
+}
