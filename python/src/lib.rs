@@ -442,6 +442,7 @@ fn load<'py>(
                 mu,
                 load: live,
                 dims: None,
+                vehicle_kn: None,
             };
             Ok::<_, InputError>(
                 serde_json::to_value(load_json(&q, &outcome)).expect("serialisable"),
