@@ -1,6 +1,6 @@
 //! The arch as a bridge (bridge spec): engineering inputs in metres ([`geometry`]), the
 //! fill's statics in closed form ([`crate::fill`]), vehicles spread through the fill onto the
-//! extrados ([`vehicle`]) and the position where a vehicle is worst ([`critical`]).
+//! extrados ([`vehicle`]) and the position where a vehicle is worst ([`mod@critical`]).
 
 pub mod critical;
 pub mod geometry;
