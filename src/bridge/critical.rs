@@ -297,10 +297,14 @@ fn brent(
 fn mirror(arch: &Arch, eta: f64, deck: &Deck, vehicle: &Vehicle, at_m: f64) -> Option<f64> {
     let palindrome = |v: &[f64]| v.iter().eq(v.iter().rev());
     let gaps: Vec<f64> = vehicle.offsets_m.windows(2).map(|w| w[1] - w[0]).collect();
-    if !(arch.is_symmetric() && palindrome(&vehicle.axles_kn) && palindrome(&gaps)) {
-        return None;
-    }
     // the road position below the centre, and the vehicle's reach behind its first axle
     let centre = -(1.0 - 0.5 * eta) * arch.beta_left().cos() * deck.radius_m;
+    let patch_symmetric = vehicle
+        .patch
+        .is_none_or(|p| (p.from_m + p.to_m - 2.0 * centre).abs() <= 1e-12 * (1.0 + centre.abs()));
+    let symmetric = arch.is_symmetric() && palindrome(&vehicle.axles_kn) && palindrome(&gaps);
+    if !(symmetric && patch_symmetric) {
+        return None;
+    }
     Some(2.0 * centre + vehicle.length_m() - at_m)
 }

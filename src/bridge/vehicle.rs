@@ -18,13 +18,48 @@ use crate::load::LiveLoad;
 use crate::pressure::{Patch, PointLoad, Pressure, MAX_PATCHES};
 use std::f64::consts::PI;
 
-/// A train of axles: loads (kN) and offsets behind the first axle (m, a_1 = 0).
+/// A train of axles: loads (kN) and offsets behind the first axle (m, a_1 = 0), with a
+/// uniform patch load that stays where it is on the road while the axles move (or a patch
+/// alone, without axles).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Vehicle {
     /// Axle loads Q_i (kN), first axle first.
     pub axles_kn: Vec<f64>,
     /// Offsets a_i ≥ 0 of each axle behind the first (m), non-decreasing, a_1 = 0.
     pub offsets_m: Vec<f64>,
+    /// A uniform load on the road.
+    pub patch: Option<RoadPatch>,
+}
+
+/// A uniform load `q_kn_m2` (kN/m²) on the road over [`from_m`, `to_m`] (m from the left
+/// intrados springing).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RoadPatch {
+    /// Intensity (kN/m²).
+    pub q_kn_m2: f64,
+    /// Left end (m).
+    pub from_m: f64,
+    /// Right end (m).
+    pub to_m: f64,
+}
+
+impl RoadPatch {
+    /// The patch `q` (kN/m², > 0) over [`from`, `to`] (m, finite, from < to).
+    pub fn new(q: f64, from: f64, to: f64) -> Result<RoadPatch, InputError> {
+        crate::input::check_positive("--patch", q)?;
+        if !(from.is_finite() && to.is_finite() && from < to) {
+            return Err(InputError::OutOfRange {
+                arg: "--patch",
+                value: format!("{from} to {to}"),
+                range: "Q,X1,X2 with finite road positions X1 < X2 (m)".into(),
+            });
+        }
+        Ok(RoadPatch {
+            q_kn_m2: q,
+            from_m: from,
+            to_m: to,
+        })
+    }
 }
 
 impl Vehicle {
@@ -63,12 +98,34 @@ impl Vehicle {
         Ok(Vehicle {
             axles_kn: axles.to_vec(),
             offsets_m,
+            patch: None,
         })
     }
 
-    /// The sum of the axle loads (kN).
-    pub fn total_kn(&self) -> f64 {
-        self.axles_kn.iter().sum()
+    /// A patch load alone.
+    pub fn patch_only(patch: RoadPatch) -> Vehicle {
+        Vehicle {
+            axles_kn: Vec::new(),
+            offsets_m: Vec::new(),
+            patch: Some(patch),
+        }
+    }
+
+    /// The same axles with `patch` on the road.
+    pub fn with_patch(self, patch: RoadPatch) -> Vehicle {
+        Vehicle {
+            patch: Some(patch),
+            ..self
+        }
+    }
+
+    /// The whole live load at λ = 1 (kN): the axles, and the patch over the effective width
+    /// `width_m` of barrel.
+    pub fn total_kn(&self, width_m: f64) -> f64 {
+        let patch = self
+            .patch
+            .map_or(0.0, |p| p.q_kn_m2 * (p.to_m - p.from_m) * width_m);
+        self.axles_kn.iter().sum::<f64>() + patch
     }
 
     /// The distance from the first axle to the last (m).
@@ -159,6 +216,12 @@ impl Deck {
     pub fn on_arch(&self, arch: &Arch, eta: f64, vehicle: &Vehicle, at_m: f64) -> bool {
         let (lo, hi) = Pressure::extrados(arch, eta);
         let spreads = self.spreads(arch);
+        if let Some(p) = &vehicle.patch {
+            let patch = self.road_patch(arch, eta, p);
+            if patch.x_lo < hi && patch.x_hi > lo {
+                return true;
+            }
+        }
         vehicle.offsets_m.iter().any(|&a| {
             let x = self.x_of(arch, eta, at_m - a);
             if spreads {
@@ -194,11 +257,16 @@ impl Deck {
                 range: format!("positions where the vehicle loads the ring, {from} to {to} m"),
             });
         }
+        let road: Vec<Patch> = vehicle
+            .patch
+            .iter()
+            .map(|p| self.road_patch(arch, eta, p))
+            .collect();
         if !self.spreads(arch) {
-            return Pressure::new(&[], &self.points(arch, eta, vehicle, at_m))
+            return Pressure::new(&road, &self.points(arch, eta, vehicle, at_m))
                 .map(LiveLoad::Pressure);
         }
-        let patches: Vec<Patch> = vehicle
+        let mut patches: Vec<Patch> = vehicle
             .axles_kn
             .iter()
             .zip(&vehicle.offsets_m)
@@ -212,6 +280,7 @@ impl Deck {
                 }
             })
             .collect();
+        patches.extend(road);
         if patches.iter().any(|p| p.x_lo >= p.x_hi || p.x_lo.is_nan()) {
             return Err(InputError::Inconsistent {
                 arg: "--fill-depth",
@@ -221,6 +290,28 @@ impl Deck {
             });
         }
         Pressure::new(&patches, &[]).map(LiveLoad::Pressure)
+    }
+
+    /// A patch load on the road as it reaches the extrados: spread by s D at each end (D the
+    /// fill's depth there), its whole load uniform over the widened interval.
+    fn road_patch(&self, arch: &Arch, eta: f64, p: &RoadPatch) -> Patch {
+        let (x1, x2) = (self.x_of(arch, eta, p.from_m), self.x_of(arch, eta, p.to_m));
+        let (lo, hi) = if self.spreads(arch) {
+            (
+                x1 - self.half_width(arch, eta, x1),
+                x2 + self.half_width(arch, eta, x2),
+            )
+        } else {
+            (x1, x2)
+        };
+        // the line load per metre of barrel, q (X2 − X1), over γ t r (t = η r)
+        let total = p.q_kn_m2 * (p.to_m - p.from_m)
+            / (self.unit_weight * eta * self.radius_m * self.radius_m);
+        Patch {
+            x_lo: lo,
+            x_hi: hi,
+            q: total / (hi - lo),
+        }
     }
 
     /// Axles that do not spread: point loads at the extrados points below them (an axle
@@ -261,8 +352,15 @@ impl Deck {
         let LiveLoad::Pressure(p) = load else {
             return None;
         };
-        let (f, _) = p.resultant(arch, eta, arch.beta_left(), false);
+        let (f, _) = p.resultant(arch, eta, arch.beta_left(), true);
         let kn = f[0] / self.scaled(eta, 1.0);
-        Some((kn, vehicle.total_kn() - kn))
+        let total = vehicle.total_kn(self.effective_width_m);
+        // the whole load to rounding is the whole load
+        let kn = if (total - kn).abs() <= 1e-12 * total {
+            total
+        } else {
+            kn
+        };
+        Some((kn, total - kn))
     }
 }

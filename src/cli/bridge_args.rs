@@ -6,6 +6,7 @@
 use super::threads_arg::ThreadsArg;
 use crate::arch::{Arch, InputError};
 use crate::bridge::critical::Search;
+use crate::bridge::vehicle::RoadPatch;
 use crate::bridge::{Deck, Fill, Vehicle};
 use crate::render::json::{FillJson, VehicleJson};
 use crate::render::table::Dimensions;
@@ -82,6 +83,16 @@ pub(crate) struct VehicleArgs {
         conflicts_with = "live"
     )]
     pub(crate) axles: Vec<f64>,
+    /// A uniform load on the road: Q,X1,X2 (kN/m^2 over X1 < X2, m from the left intrados
+    /// springing), spread through the fill at each end; it stays put while axles move.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        num_args = 1,
+        conflicts_with = "live"
+    )]
+    patch: Vec<f64>,
     /// Metres between consecutive axles: one value for every gap, or one per gap.
     #[arg(
         long,
@@ -124,7 +135,7 @@ pub(crate) struct Placed {
 impl VehicleArgs {
     /// Whether a vehicle was given.
     pub(crate) fn given(&self) -> bool {
-        !self.axles.is_empty()
+        !self.axles.is_empty() || !self.patch.is_empty()
     }
 
     /// The vehicle and its deck (with the dimensions the loads in kN need).
@@ -137,7 +148,7 @@ impl VehicleArgs {
                     .into(),
             });
         };
-        if self.at.is_none() && !self.critical {
+        if !self.axles.is_empty() && self.at.is_none() && !self.critical {
             return Err(InputError::Inconsistent {
                 arg: "--axles",
                 reason: "place the vehicle with --at X (metres), or find its worst place with \
@@ -145,7 +156,26 @@ impl VehicleArgs {
                     .into(),
             });
         }
-        let vehicle = Vehicle::new(&self.axles, &self.spacing)?;
+        let patch = match self.patch[..] {
+            [] => None,
+            [q, from, to] => Some(RoadPatch::new(q, from, to)?),
+            _ => {
+                return Err(InputError::Inconsistent {
+                    arg: "--patch",
+                    reason: format!("give Q,X1,X2 (three numbers), got {}", self.patch.len()),
+                })
+            }
+        };
+        let vehicle = match (self.axles.is_empty(), patch) {
+            (true, Some(p)) => Vehicle::patch_only(p),
+            (_, p) => {
+                let v = Vehicle::new(&self.axles, &self.spacing)?;
+                match p {
+                    Some(p) => v.with_patch(p),
+                    None => v,
+                }
+            }
+        };
         let deck = Deck::new(
             d.radius,
             unit_weight(d),
@@ -160,9 +190,12 @@ impl VehicleArgs {
         })
     }
 
-    /// The road position given (with `--at`).
+    /// The road position given (with `--at`; 0 for a patch alone, which does not move).
     pub(crate) fn at(&self) -> Option<f64> {
-        self.at
+        match self.axles.is_empty() {
+            true => Some(0.0),
+            false => self.at,
+        }
     }
 
     /// How finely `--critical` looks, and on how many threads.
@@ -176,6 +209,11 @@ impl VehicleArgs {
 }
 
 impl Placed {
+    /// The live load at λ = 1 in kN.
+    pub(crate) fn total_kn(&self) -> f64 {
+        self.vehicle.total_kn(self.deck.effective_width_m)
+    }
+
     /// The vehicle's description at `at_m`, with what reaches the ring.
     pub(crate) fn json(
         &self,
@@ -184,13 +222,14 @@ impl Placed {
         at_m: f64,
         load: &crate::load::LiveLoad,
     ) -> VehicleJson {
-        let total = self.vehicle.total_kn();
+        let total = self.total_kn();
         let (carried, abutments) = self
             .deck
             .carried_kn(arch, eta, &self.vehicle, load)
             .unwrap_or((total, 0.0));
         VehicleJson {
             axles_kn: self.vehicle.axles_kn.clone(),
+            patch: self.vehicle.patch.map(|p| [p.q_kn_m2, p.from_m, p.to_m]),
             spacing_m: self.spacing.clone(),
             at_m,
             dispersal: self.deck.dispersal,

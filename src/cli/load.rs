@@ -143,7 +143,7 @@ impl Prepared {
     /// The critical position found with `--critical`, and the vehicle's total (kN).
     pub(crate) fn critical(&self) -> Option<(&Critical, f64)> {
         let b = self.bridge.as_ref()?;
-        Some((b.critical.as_ref()?, b.placed.vehicle.total_kn()))
+        Some((b.critical.as_ref()?, b.placed.total_kn()))
     }
 }
 
@@ -193,7 +193,7 @@ pub(crate) fn run(a: LoadArgs, settings: &Settings, io: &mut Io) -> Exit {
         Ok(o) => o,
         Err(e) => return io.bad_input(&e),
     };
-    let vehicle_kn = bridge.as_ref().map(|b| b.placed.vehicle.total_kn());
+    let vehicle_kn = bridge.as_ref().map(|b| b.placed.total_kn());
     let q = LoadQuestion {
         arch: &arch,
         eta,

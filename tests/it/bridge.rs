@@ -682,3 +682,52 @@ fn fill_is_refused_where_it_is_not_solved() {
     let why = certify_load(&filled, 0.2, 0.6, &point, 1e-12, &settings).unwrap_err();
     assert!(why.0.contains("fill"), "{}", why.0);
 }
+
+/// A patch load on the road (bridge spec §3, §5): uniform over the whole road on the
+/// symmetric arch, its least limit state is symmetric (each contact's mirror is a contact);
+/// narrowing about a point with its total held, its collapse load in kN tends to that of one
+/// axle of the same total there.
+#[test]
+fn patch_loads_keep_symmetry_and_narrow_to_an_axle() {
+    use arch_enum::bridge::vehicle::RoadPatch;
+    use arch_enum::bridge::{Fill, Vehicle};
+    use arch_enum::multiplier::{survey, LoadOutcome};
+    let (bare, eta, deck) = ten_metre_deck(0.5);
+    let arch = bare.with_fill(Fill::new(0.9, 0.3 / 5.3).unwrap());
+    let whole = Vehicle::patch_only(RoadPatch::new(10.0, -1.0, 11.0).unwrap());
+    let load = deck.place(&arch, eta, &whole, 0.0).unwrap();
+    let Ok(LoadOutcome::Limits(s)) =
+        survey(&arch, eta, 0.6, &load, &arch_enum::Settings::default()).unwrap()
+    else {
+        panic!("the whole road loaded: no limit states")
+    };
+    let least = &s.limit_states[0];
+    for c in &least.pattern {
+        let mirrored = least
+            .pattern
+            .iter()
+            .any(|d| d.kind == c.kind.mirrored() && (d.beta - (PI - c.beta)).abs() < 1e-9);
+        assert!(mirrored, "{c:?} without its mirror in {:?}", least.pattern);
+    }
+    let axle = least_lambda(
+        &arch,
+        eta,
+        &deck
+            .place(&arch, eta, &Vehicle::new(&[2.0], &[]).unwrap(), 3.3)
+            .unwrap(),
+    )
+    .unwrap()
+        * 2.0;
+    let errs: Vec<f64> = [0.2, 0.02, 0.002]
+        .iter()
+        .map(|&w| {
+            let v =
+                Vehicle::patch_only(RoadPatch::new(2.0 / w, 3.3 - w / 2.0, 3.3 + w / 2.0).unwrap());
+            let kn = least_lambda(&arch, eta, &deck.place(&arch, eta, &v, 0.0).unwrap()).unwrap()
+                * v.total_kn(1.0);
+            (kn - axle).abs() / axle
+        })
+        .collect();
+    println!("narrowing patch: relative differences {errs:?} from the axle's {axle} kN");
+    assert!(errs[2] < errs[0] && errs[2] < 1e-3, "{errs:?}");
+}

@@ -29,6 +29,9 @@ pub struct FillJson {
 pub struct VehicleJson {
     /// Axle loads (kN).
     pub axles_kn: Vec<f64>,
+    /// A patch load on the road: [q (kN/m²), from (m), to (m)].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub patch: Option<[f64; 3]>,
     /// Gaps between consecutive axles (m).
     pub spacing_m: Vec<f64>,
     /// Road position of the first axle (m from the left intrados springing).

@@ -29,7 +29,7 @@ pub fn bridge(
             sig(f.depth_ratio, 6)
         );
     }
-    if let Some(v) = vehicle {
+    if let Some(v) = vehicle.filter(|v| !v.axles_kn.is_empty()) {
         let axles: Vec<String> = v.axles_kn.iter().map(|a| sig(*a, 6)).collect();
         let gaps: Vec<String> = v.spacing_m.iter().map(|a| sig(*a, 6)).collect();
         let _ = writeln!(
@@ -41,6 +41,17 @@ pub fn bridge(
             sig(v.dispersal, 6),
             sig(v.effective_width_m, 6)
         );
+    }
+    if let Some(v) = vehicle {
+        if let Some([q, a, b]) = v.patch {
+            let _ = writeln!(
+                s,
+                "patch load          {} kN/m^2 on the road from X = {} m to {} m",
+                sig(q, 6),
+                sig(a, 8),
+                sig(b, 8)
+            );
+        }
         let _ = writeln!(
             s,
             "                    at lambda = 1 the ring carries {} kN of it, the abutments {} kN",
