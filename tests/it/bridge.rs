@@ -196,35 +196,9 @@ fn fill_statics_against_quadrature_and_differences() {
     use arch_enum::bridge::Fill;
     let mut next = uniform(11);
     // the spec's integrals, written out independently
-    let quad = |fill: &Fill, (br, bl): (f64, f64), eta: f64, beta: f64| -> (f64, f64) {
-        let kappa = 1.0 + eta / 2.0;
-        let top = if br <= PI / 2.0 && PI / 2.0 <= bl {
-            1.0
-        } else {
-            br.sin().max(bl.sin())
-        };
-        let ys = kappa * top + fill.depth;
-        let (a, b) = (br.max(0.0), beta.min(PI));
-        if b <= a {
-            return (0.0, 0.0);
-        }
-        let p = |t: f64| fill.weight_ratio / eta * (ys - kappa * t.sin()) * kappa * t.sin();
-        let n = 4000;
-        let h = (b - a) / n as f64;
-        let (mut f, mut s) = (0.0, 0.0);
-        for i in 0..=n {
-            let t = a + h * i as f64;
-            let w = if i == 0 || i == n {
-                1.0
-            } else if i % 2 == 1 {
-                4.0
-            } else {
-                2.0
-            };
-            f += w * p(t);
-            s += w * p(t) * kappa * t.cos();
-        }
-        (f * h / 3.0, s * h / 3.0)
+    let quad = |fill: &Fill, springings: (f64, f64), eta: f64, beta: f64| -> (f64, f64) {
+        let (gf, h) = (fill.weight_ratio, fill.depth);
+        crate::load_reference::fill_by_simpson(gf, h, eta, springings, (springings.0, beta))
     };
     for case in 0..300 {
         let br = -1.2 + 2.0 * next();
