@@ -24,6 +24,7 @@ use crate::scan::peaks_over;
 use crate::settings::Settings;
 use crate::statics::{actions, magnitude, Affine, Reactions};
 use crate::undecided::Undecided;
+use itertools::Itertools;
 use nalgebra::{DMatrix, DVector};
 use std::cell::{Cell, OnceCell};
 
@@ -466,9 +467,9 @@ fn refine(
     .map_err(NoExtreme::Undecided)
 }
 
-/// [`newton`] on `pattern`, verified over the arch; where the pattern has one equation too
-/// many (a contact within the activity slack that is not active at the root, or a
-/// redundant one), Newton on the pattern less each contact in turn, the first root that is
+/// [`newton`] on `pattern`, verified over the arch; where the pattern has equations too
+/// many (a contact within the activity slack that is not active at the root, or redundant
+/// ones at a degenerate vertex), Newton on ever smaller subsets of it, the first root that is
 /// admissible over the whole arch. Returns λ, the state and its active contacts
 /// ([`verify`]).
 fn newton_verified(
@@ -489,17 +490,29 @@ fn newton_verified(
         },
         Err(e) => e,
     };
-    for drop in 0..pattern.len() {
-        let rest: Vec<Tagged<Side>> = (0..pattern.len())
-            .filter(|&i| i != drop)
-            .map(|i| pattern[i])
-            .collect();
-        if let Ok(Ok(found)) = newton(p, x, lambda, &rest, goal, settings).map(verified) {
-            return Ok(found);
+    // fewer and fewer contacts, down to a vertex's four: a degenerate vertex (more active
+    // contacts than unknowns, as a symmetric load on a symmetric arch makes) is the root of
+    // some four of them; any admissible root is the optimum when its multipliers are ≥ 0
+    let n = pattern.len();
+    let smallest = if n <= MAX_DEGENERATE {
+        4.min(n)
+    } else {
+        n.saturating_sub(1)
+    };
+    for size in (smallest.max(1)..n).rev() {
+        for keep in (0..n).combinations(size) {
+            let rest: Vec<Tagged<Side>> = keep.iter().map(|&i| pattern[i]).collect();
+            if let Ok(Ok(found)) = newton(p, x, lambda, &rest, goal, settings).map(verified) {
+                return Ok(found);
+            }
         }
     }
     Err(first)
 }
+
+/// A pattern of at most this many contacts is searched for a vertex among all its subsets
+/// (C(12, 4) = 495 Newton solves at the most); a larger one only drops one contact at a time.
+const MAX_DEGENERATE: usize = 12;
 
 /// The contacts among `peaks` with φ ≥ −slack × magnitude.
 fn active(
