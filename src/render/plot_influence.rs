@@ -172,6 +172,19 @@ fn draw_minima(
     } else {
         ""
     };
+    // the label in the chart's upper left corner, clear of the line (high there only where
+    // the vehicle leaves the ring), joined to X* by a thin leader
+    let (x0, x1) = c
+        .influence
+        .first()
+        .zip(c.influence.last())
+        .map_or((best.at_m, best.at_m), |(a, b)| (a.at_m, b.at_m));
+    chart
+        .draw_series(std::iter::once(PathElement::new(
+            vec![(best.at_m, best.lambda), (best.at_m, 0.97 * top)],
+            CRITICAL.mix(0.5).stroke_width(1),
+        )))
+        .map_err(err)?;
     chart
         .draw_series(std::iter::once(Text::new(
             format!(
@@ -179,14 +192,8 @@ fn draw_minima(
                 short_num(best.at_m),
                 short_num(best.lambda)
             ),
-            (best.at_m, best.lambda + 0.05 * top),
-            (FAMILY, 16)
-                .into_font()
-                .color(&CRITICAL)
-                .pos(plotters::style::text_anchor::Pos::new(
-                    plotters::style::text_anchor::HPos::Center,
-                    plotters::style::text_anchor::VPos::Bottom,
-                )),
+            (x0 + 0.03 * (x1 - x0), 1.05 * top),
+            (FAMILY, 16).into_font().color(&CRITICAL),
         )))
         .map_err(err)?;
     Ok(())

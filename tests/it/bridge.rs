@@ -707,3 +707,47 @@ fn patch_loads_keep_symmetry_and_narrow_to_an_axle() {
     println!("narrowing patch: relative differences {errs:?} from the axle's {axle} kN");
     assert!(errs[2] < errs[0] && errs[2] < 1e-3, "{errs:?}");
 }
+
+/// `plot influence`: the figure of a crossing (the line with X* labelled, the arch at X*
+/// beneath), in SVG; it needs a vehicle with `--critical`, and refuses `--json` by name.
+#[test]
+fn plot_influence_draws_the_crossing() {
+    let dir = std::env::temp_dir().join(format!("arch-enum-influence-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("influence.svg");
+    let mut args = vec!["plot", "influence"];
+    args.extend(ENGINEER);
+    args.extend(["--axles", "100", "--critical", "--samples", "9"]);
+    let run = arch_enum()
+        .args(&args)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert_eq!(run.status.code(), Some(0), "{run:?}");
+    let svg = std::fs::read_to_string(&out).unwrap();
+    assert!(
+        svg.contains("X* = ") && svg.contains("collapse mechanism"),
+        "the figure lacks its parts"
+    );
+    for (extra, flag) in [
+        (vec!["--axles", "100", "--at", "3"], "--critical"),
+        (vec!["--axles", "100", "--critical", "--json"], "--json"),
+    ] {
+        let mut a = vec!["plot", "influence"];
+        a.extend(ENGINEER);
+        a.extend(extra.iter().copied());
+        let run = arch_enum()
+            .args(&a)
+            .arg("--out")
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert_eq!(run.status.code(), Some(2), "{a:?}");
+        assert!(
+            String::from_utf8(run.stderr).unwrap().contains(flag),
+            "{a:?}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
