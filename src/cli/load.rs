@@ -189,7 +189,12 @@ pub(crate) fn run(a: LoadArgs, settings: &Settings, io: &mut Io) -> Exit {
         load,
         mu,
     } = p;
-    let outcome = match survey(&arch, eta, mu, &load, settings) {
+    // at the critical position its search has surveyed the load already
+    let known = bridge
+        .as_ref()
+        .and_then(|b| b.critical.as_ref()?.at_critical.as_ref())
+        .map(|(_, sv)| Ok(LoadOutcome::Limits(sv.clone())));
+    let outcome = match known.map_or_else(|| survey(&arch, eta, mu, &load, settings), Ok) {
         Ok(o) => o,
         Err(e) => return io.bad_input(&e),
     };
