@@ -510,6 +510,35 @@ pub(crate) fn fill_by_simpson(
     (f * step / 3.0, m * step / 3.0)
 }
 
+/// The crate's answer as the brute force gives it.
+enum Answer {
+    /// The λ of every limit state (ascending, distinct to 1e-9), and whether the least lies
+    /// below λ_static.
+    Limits {
+        lambdas: Vec<f64>,
+        reduced: bool,
+    },
+    NoEquilibrium,
+    NoCollapse,
+}
+
+/// The crate's survey as an [`Answer`]; `Err` the reason it decided nothing.
+fn crate_answer(
+    outcome: Result<LoadOutcome, arch_enum::undecided::Undecided>,
+) -> Result<Answer, String> {
+    match outcome {
+        Ok(LoadOutcome::Limits(s)) => {
+            let mut lambdas: Vec<f64> = s.limit_states.iter().map(|l| l.t).collect();
+            lambdas.dedup_by(|a, b| (*a - *b).abs() <= 1e-9 * (1.0 + b.abs()));
+            let reduced = s.reduction().is_some_and(|r| r > 1e-9);
+            Ok(Answer::Limits { lambdas, reduced })
+        }
+        Ok(LoadOutcome::NoEquilibrium) => Ok(Answer::NoEquilibrium),
+        Ok(LoadOutcome::NoCollapse { .. }) => Ok(Answer::NoCollapse),
+        Err(e) => Err(e.to_string()),
+    }
+}
+
 /// The crate's limit states' λ (ascending, distinct to 1e-9) against the brute force's, to
 /// 1e-8 relative: the same list.
 fn same_lambdas(crate_states: &[f64], reference: &[f64]) -> bool {
@@ -602,19 +631,16 @@ fn loaded_arches_match_the_brute_force() {
         } = random_loaded(&mut rng);
         let centroid = weight == WeightModel::Centroid;
         let reference = Case::new(&joints, centroid, eta, mu, load).brute_force();
-        let crate_states: Vec<f64> = match survey(&arch, eta, mu, &load, &settings).unwrap() {
-            Ok(LoadOutcome::Limits(s)) => {
-                let mut v: Vec<f64> = s.limit_states.iter().map(|l| l.t).collect();
-                v.dedup_by(|a, b| (*a - *b).abs() <= 1e-9 * (1.0 + b.abs()));
-                if s.reduction().is_some_and(|r| r > 1e-9) {
-                    reduced += 1;
-                }
-                if v.len() > 1 {
-                    nonunique += 1;
-                }
-                v
+        let crate_states = match crate_answer(survey(&arch, eta, mu, &load, &settings).unwrap()) {
+            Ok(Answer::Limits {
+                lambdas,
+                reduced: r,
+            }) => {
+                reduced += usize::from(r);
+                nonunique += usize::from(lambdas.len() > 1);
+                lambdas
             }
-            Ok(LoadOutcome::NoEquilibrium) | Ok(LoadOutcome::NoCollapse { .. }) => {
+            Ok(Answer::NoEquilibrium | Answer::NoCollapse) => {
                 skipped += 1;
                 Vec::new()
             }
@@ -1075,18 +1101,16 @@ fn filled_arches_under_pressure_match_the_brute_force() {
         let mut reference = Case::new(&joints, centroid, eta, mu, load);
         reference.fill = fill;
         let reference = reference.brute_force();
-        let crate_states: Vec<f64> = match survey(&arch, eta, mu, &load, &settings).unwrap() {
-            Ok(LoadOutcome::Limits(s)) => {
-                let mut v: Vec<f64> = s.limit_states.iter().map(|l| l.t).collect();
-                v.dedup_by(|a, b| (*a - *b).abs() <= 1e-9 * (1.0 + b.abs()));
-                several += usize::from(v.len() > 1);
-                v
+        let crate_states = match crate_answer(survey(&arch, eta, mu, &load, &settings).unwrap()) {
+            Ok(Answer::Limits { lambdas, .. }) => {
+                several += usize::from(lambdas.len() > 1);
+                lambdas
             }
-            Ok(LoadOutcome::NoEquilibrium) => {
+            Ok(Answer::NoEquilibrium) => {
                 skipped += 1;
                 Vec::new()
             }
-            Ok(LoadOutcome::NoCollapse { .. }) => {
+            Ok(Answer::NoCollapse) => {
                 never += 1;
                 Vec::new()
             }

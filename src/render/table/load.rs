@@ -82,17 +82,16 @@ fn load_text(q: &LoadQuestion) -> String {
     }
 }
 
-/// A pressure on the extrados in words: its patches and resultant at λ = 1.
+/// A pressure on the extrados in words: its patches and points, and its load in kN (what
+/// reaches the ring is the bridge lines' `carried` figure, computed by the caller).
 pub(super) fn pressure_text(q: &LoadQuestion, p: &crate::pressure::Pressure) -> String {
-    let (f, _) = p.resultant(q.arch, q.eta, q.arch.beta_left(), true);
     let kn = q.vehicle_kn.map_or(String::new(), |v| {
-        format!("; the whole load {} kN", sig(v, 6))
+        format!("; at lambda = 1, {} kN in all", sig(v, 6))
     });
     format!(
-        "vertical loads lambda x q on the extrados, {} spread over patches and {} at points; reaching the arch at lambda = 1: {} (units of gamma t d r){kn}",
+        "vertical loads lambda x q on the extrados, {} spread over patches and {} at points{kn}",
         p.patches().len(),
         p.points().len(),
-        sig(f[0], 6)
     )
 }
 
