@@ -91,6 +91,7 @@ pub fn assess(
 ) -> Result<Assessment, InputError> {
     let eta = check_eta(eta)?;
     let mu = check_mu(mu)?;
+    crate::limit::refuse_fill(arch, "the assessment (least friction)")?;
     let limit = solve(arch, mu, settings)?.outcome;
     let (stands, geometric_factor, mode) = match &limit {
         // statics decide whether it stands: η at least the least admissible thickness

@@ -16,7 +16,6 @@
 //! highest extrados point, held fixed as η varies), so ∂y_s/∂η = (max sin β)/2, and
 //! ∂A/∂η = −g_f/η².
 //!
-//! This is the fill's statics alone: no command uses it yet.
 
 use crate::input::{check_non_negative, InputError};
 use std::f64::consts::{FRAC_PI_2, PI};
@@ -39,12 +38,15 @@ pub struct FillLoad {
     pub f: [f64; 3],
     /// S, dS/dβ = p κ cos β, d²S/dβ².
     pub s: [f64; 3],
-    /// ∂F/∂η and ∂S/∂η at fixed β.
-    pub d_eta: [f64; 2],
+    /// ∂F/∂η (`[0]`) and ∂²F/∂η² (`[1]`) at fixed β, each with its first two β-derivatives.
+    pub f_eta: [[f64; 3]; 2],
+    /// ∂S/∂η and ∂²S/∂η², likewise.
+    pub s_eta: [[f64; 3]; 2],
 }
 
 /// The fill's contribution to the internal actions at β: N_f, T_f, M_f with their first two
-/// β-derivatives, and their η-derivatives (added to the constant terms of the statics).
+/// β-derivatives, and their first and second η-derivatives (added to the constant terms of
+/// the statics).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FillActions {
     /// N_f and its β-derivatives.
@@ -53,8 +55,21 @@ pub struct FillActions {
     pub t: [f64; 3],
     /// M_f and its β-derivatives.
     pub m: [f64; 3],
-    /// ∂N_f/∂η, ∂T_f/∂η, ∂M_f/∂η.
-    pub d_eta: [f64; 3],
+    /// `eta[k][a][o]`: the (k+1)-th η-derivative of action a (N_f, T_f, M_f) and its
+    /// β-derivative of order o.
+    pub eta: [[[f64; 3]; 3]; 2],
+}
+
+/// A value with its first two derivatives in η: `[v, v', v'']`.
+type Jet = [f64; 3];
+
+/// The product of two jets (Leibniz).
+fn jet_mul(a: Jet, b: Jet) -> Jet {
+    [
+        a[0] * b[0],
+        a[1] * b[0] + a[0] * b[1],
+        a[2] * b[0] + 2.0 * a[1] * b[1] + a[0] * b[2],
+    ]
 }
 
 impl Fill {
@@ -90,7 +105,8 @@ impl Fill {
             return FillLoad {
                 f: [0.0; 3],
                 s: [0.0; 3],
-                d_eta: [0.0; 2],
+                f_eta: [[0.0; 3]; 2],
+                s_eta: [[0.0; 3]; 2],
             };
         }
         let gf = self.weight_ratio;
@@ -121,16 +137,42 @@ impl Fill {
             0.0
         };
         let ds2 = kappa * (dp * cbeta - p * sbeta);
-        // η-derivatives: A' = −g_f/η², y_s' = top/2, κ' = 1/2
-        let da = -gf / (eta * eta);
-        let dys = 0.5 * top;
-        let df = da * (ys * c1 - kappa * c2) + a * (dys * c1 - 0.5 * c2);
-        let dka = 0.5 * a + kappa * da;
-        let ds = dka * (ys * d1 - kappa * d2) + kappa * a * (dys * d1 - 0.5 * d2);
+        // the η-jets of the coefficients: A = g_f (1/η + 1/2), κ = 1 + η/2, y_s = κ top + h
+        let jet_a = [a, -gf / (eta * eta), 2.0 * gf / (eta * eta * eta)];
+        let jet_k = [kappa, 0.5, 0.0];
+        let jet_y = [ys, 0.5 * top, 0.0];
+        let ay = jet_mul(jet_a, jet_y);
+        let ak = jet_mul(jet_a, jet_k);
+        let aky = jet_mul(ak, jet_y);
+        let akk = jet_mul(ak, jet_k);
+        // the β-jets of the four integrals (constant beyond π)
+        let [c1j, c2j, d1j, d2j] = if inside {
+            [
+                [c1, sbeta, cbeta],
+                [c2, sbeta * sbeta, 2.0 * sbeta * cbeta],
+                [d1, sbeta * cbeta, cbeta * cbeta - sbeta * sbeta],
+                [
+                    d2,
+                    sbeta * sbeta * cbeta,
+                    sbeta * (2.0 * cbeta * cbeta - sbeta * sbeta),
+                ],
+            ]
+        } else {
+            [
+                [c1, 0.0, 0.0],
+                [c2, 0.0, 0.0],
+                [d1, 0.0, 0.0],
+                [d2, 0.0, 0.0],
+            ]
+        };
+        let along = |k: usize, p: Jet, u: Jet, q: Jet, v: Jet| -> [f64; 3] {
+            [0, 1, 2].map(|o| p[k] * u[o] - q[k] * v[o])
+        };
         FillLoad {
             f: [f, p, dp],
             s: [s, p * kappa * cbeta, ds2],
-            d_eta: [df, ds],
+            f_eta: [1, 2].map(|k| along(k, ay, c1j, ak, c2j)),
+            s_eta: [1, 2].map(|k| along(k, aky, d1j, akk, d2j)),
         }
     }
 
@@ -139,12 +181,11 @@ impl Fill {
     pub fn actions(&self, springings: (f64, f64), eta: f64, beta: f64) -> FillActions {
         let l = self.load(springings, eta, beta);
         let [n, t, m] = vertical_actions(l.f, l.s, beta);
-        let (s, c) = beta.sin_cos();
         FillActions {
             n,
             t,
             m,
-            d_eta: [-l.d_eta[0] * c, l.d_eta[0] * s, l.d_eta[0] * c - l.d_eta[1]],
+            eta: [0, 1].map(|k| vertical_actions(l.f_eta[k], l.s_eta[k], beta)),
         }
     }
 }

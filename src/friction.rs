@@ -50,6 +50,11 @@ pub fn friction_limit(
     arch: &Arch,
     settings: &Settings,
 ) -> Result<Option<FrictionLimit>, Undecided> {
+    if arch.fill().is_some() {
+        return Err(Undecided::NotCovered(
+            "with fill the sliding rows depend on eta: the friction limit is a curve mu_ms(eta), not computed yet".into(),
+        ));
+    }
     let mut ws = WorkingSet::initial(arch);
     let mut f = |mu: f64| -> Result<(f64, Reactions), Undecided> {
         let m = margin_at(arch, 1.0, mu, &SLIDES, &mut ws, settings)?;

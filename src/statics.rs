@@ -57,7 +57,8 @@ pub fn reaction_scale(x: &Reactions) -> f64 {
 }
 
 /// N, T, M at one angle as affine functions of x, with their first and second
-/// β-derivatives (index = order of the derivative), and ∂M/∂η for the centroid model.
+/// β-derivatives (index = order of the derivative), and the first and second η-derivatives
+/// of their constant terms (the centroid model's ρ(η) in M; the fill's 1/η in all three).
 #[derive(Debug, Clone, Copy)]
 pub struct Actions {
     /// N, dN/dβ, d²N/dβ².
@@ -66,8 +67,13 @@ pub struct Actions {
     pub t: [Affine; 3],
     /// M, dM/dβ, d²M/dβ².
     pub m: [Affine; 3],
-    /// ∂M/∂η and its first two β-derivatives (zero for the centreline model).
-    pub dm_deta: [f64; 3],
+    /// `d_eta[a][o]`: ∂/∂η of action a (N, T, M) at β-derivative order o (only M's, from
+    /// ρ(η), without fill; zero for the centreline model).
+    pub d_eta: [[f64; 3]; 3],
+    /// ∂²/∂η², likewise.
+    pub d2_eta: [[f64; 3]; 3],
+    /// Whether a fill loads the arch (then N and T depend on η too).
+    pub filled: bool,
 }
 
 /// N, T, M alone (no β-derivatives) at angle `beta` with (sin β, cos β) given: what a scan
@@ -137,6 +143,7 @@ pub fn actions_with(arch: &Arch, eta: f64, beta: Radians, (s, c): (f64, f64)) ->
     let sr = arch.right_sin_cos().0;
     let rho = arch.weight().rho(eta);
     let drho = arch.weight().drho_deta(eta);
+    let d2rho = arch.weight().d2rho_deta2(eta);
     let [n0, t0, m0] = ring_forces(arch, eta, beta, (s, c));
     // dN = T − cos β, dT = −N + sin β, dM = −T + (1 − ρ) cos β
     let n1 = Affine {
@@ -168,7 +175,13 @@ pub fn actions_with(arch: &Arch, eta: f64, beta: Radians, (s, c): (f64, f64)) ->
         n: [n0, n1, n2],
         t: [t0, t1, t2],
         m: [m0, m1, m2],
-        dm_deta: [-drho * (s - sr), -drho * c, drho * s],
+        d_eta: [[0.0; 3], [0.0; 3], [-drho * (s - sr), -drho * c, drho * s]],
+        d2_eta: [
+            [0.0; 3],
+            [0.0; 3],
+            [-d2rho * (s - sr), -d2rho * c, d2rho * s],
+        ],
+        filled: false,
     };
     if let Some(fill) = arch.fill() {
         // the identities above hold for the ring's weight alone: the fill adds its own
@@ -177,7 +190,12 @@ pub fn actions_with(arch: &Arch, eta: f64, beta: Radians, (s, c): (f64, f64)) ->
             a.n[order].c += f.n[order];
             a.t[order].c += f.t[order];
             a.m[order].c += f.m[order];
+            for action in 0..3 {
+                a.d_eta[action][order] += f.eta[0][action][order];
+                a.d2_eta[action][order] += f.eta[1][action][order];
+            }
         }
+        a.filled = true;
     }
     a
 }
@@ -195,14 +213,54 @@ impl Actions {
         )
     }
 
-    /// ∂/∂η of the activation function of `mode` (β-derivative `order`) at x.
+    /// ∂/∂η of the activation function of `mode` (β-derivative `order`) at thickness `eta`,
+    /// friction `mu` and reactions x: ±∂M/∂η − N/2 − (η/2) ∂N/∂η for a hinge, ±∂T/∂η − μ ∂N/∂η
+    /// for sliding (the η-terms of N and T come from the fill alone).
     #[inline]
-    pub fn activation_d_eta(&self, mode: ContactKind, order: usize, x: &Reactions) -> f64 {
+    pub fn activation_d_eta(
+        &self,
+        mode: ContactKind,
+        order: usize,
+        (eta, mu): (f64, f64),
+        x: &Reactions,
+    ) -> f64 {
         let n = self.n[order].at(x);
-        match mode {
-            ContactKind::HingeExtrados => -0.5 * n + self.dm_deta[order],
-            ContactKind::HingeIntrados => -0.5 * n - self.dm_deta[order],
+        let [dn, dt, dm] = self.d_eta.map(|a| a[order]);
+        let ring = match mode {
+            ContactKind::HingeExtrados => -0.5 * n + dm,
+            ContactKind::HingeIntrados => -0.5 * n - dm,
             _ => 0.0,
+        };
+        if !self.filled {
+            return ring;
+        }
+        ring + match mode {
+            ContactKind::HingeExtrados | ContactKind::HingeIntrados => -0.5 * eta * dn,
+            ContactKind::SlidePlus => dt - mu * dn,
+            ContactKind::SlideMinus => -dt - mu * dn,
+        }
+    }
+
+    /// ∂²/∂η² of the activation function of `mode` (β-derivative `order`) at (η, μ):
+    /// ±∂²M/∂η² − ∂N/∂η − (η/2) ∂²N/∂η² for a hinge, ±∂²T/∂η² − μ ∂²N/∂η² for sliding
+    /// (independent of x: η enters the gradient linearly).
+    #[inline]
+    pub fn activation_d2_eta(&self, mode: ContactKind, order: usize, (eta, mu): (f64, f64)) -> f64 {
+        let [_, _, d2m] = self.d2_eta.map(|a| a[order]);
+        let ring = match mode {
+            ContactKind::HingeExtrados => d2m,
+            ContactKind::HingeIntrados => -d2m,
+            _ => 0.0,
+        };
+        if !self.filled {
+            return ring;
+        }
+        let dn = self.d_eta[0][order];
+        let [d2n, d2t, _] = self.d2_eta.map(|a| a[order]);
+        ring + match mode {
+            ContactKind::HingeExtrados | ContactKind::HingeIntrados => -dn - 0.5 * eta * d2n,
+            ContactKind::SlidePlus => d2t - mu * d2n,
+            ContactKind::SlideMinus => -d2t - mu * d2n,
         }
     }
 

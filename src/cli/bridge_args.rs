@@ -30,10 +30,12 @@ pub(crate) struct FillArgs {
 }
 
 impl FillArgs {
-    /// The fill (`None` without fill flags) and its description.
+    /// The fill (`None` without fill flags) and its description; `masonry` is the ring's
+    /// mean radius (m) and the masonry's unit weight (kN/m³), which convert `--fill-weight`
+    /// and `--fill-depth`.
     pub(crate) fn build(
         &self,
-        dims: Option<&Dimensions>,
+        masonry: Option<(f64, f64)>,
     ) -> Result<Option<(Fill, FillJson)>, InputError> {
         if let (Some(g), Some(h)) = (self.fill_ratio, self.fill_height) {
             let fill = Fill::new(g, h)?;
@@ -42,18 +44,18 @@ impl FillArgs {
         let (Some(w), Some(d)) = (self.fill_weight, self.fill_depth) else {
             return Ok(None);
         };
-        let Some(dims) = dims else {
+        let Some((radius, gamma)) = masonry else {
             return Err(InputError::Inconsistent {
                 arg: "--fill-weight/--fill-depth",
-                reason: "need the masonry's unit weight and the radius: give --span --rise \
-                         --ring --width --unit-weight (or --radius --depth --density), or use \
-                         --fill-ratio --fill-height"
+                reason: "need the masonry's unit weight and the ring's radius: give --span \
+                         --rise --ring with --unit-weight (and --width on load), or --radius \
+                         --depth --density, or use --fill-ratio --fill-height"
                     .into(),
             });
         };
         let w = crate::input::check_non_negative("--fill-weight", w)?;
         let d = crate::input::check_non_negative("--fill-depth", d)?;
-        let fill = Fill::new(w / unit_weight(dims), d / dims.radius)?;
+        let fill = Fill::new(w / gamma, d / radius)?;
         Ok(Some((fill, fill_json(&fill, Some(w), Some(d)))))
     }
 }
@@ -64,12 +66,18 @@ fn fill_json(f: &Fill, weight: Option<f64>, depth: Option<f64>) -> FillJson {
         depth_m: depth,
         weight_ratio: f.weight_ratio,
         depth_ratio: f.depth,
+        depth_at_least_ring_m: None,
     }
 }
 
 /// The masonry's unit weight γ (kN/m³) of the dimensions.
 fn unit_weight(d: &Dimensions) -> f64 {
     d.density * d.g / 1000.0
+}
+
+/// The ring's mean radius (m) and the masonry's unit weight (kN/m³) of the dimensions.
+pub(crate) fn masonry(d: &Dimensions) -> (f64, f64) {
+    (d.radius, unit_weight(d))
 }
 
 #[derive(Args, Debug)]

@@ -152,7 +152,9 @@ impl Prepared {
 pub(crate) fn prepare(a: &LoadArgs, settings: &Settings) -> Result<Prepared, InputError> {
     let (geometry, dims, eta) = sized(&a.arch, &a.dims, a.eta)?;
     let arch = a.arch.build()?;
-    let fill = a.fill.build(dims.as_ref())?;
+    let fill = a
+        .fill
+        .build(dims.as_ref().map(super::bridge_args::masonry))?;
     let arch = match &fill {
         Some((f, _)) => arch.with_fill(*f),
         None => arch,

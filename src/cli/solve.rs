@@ -1,11 +1,14 @@
 //! `arch-enum solve`: the least thickness at one friction coefficient.
 
 use super::arch_args::ArchArgs;
+use super::bridge_args::FillArgs;
 use super::io::{geometry_text, json_with_geometry, to_json, Exit, Io};
 use super::mu_arg::MuArg;
+use crate::arch::{check_positive, InputError};
 use crate::figures::survey_scene;
 use crate::limit::Outcome;
 use crate::limit_states::survey;
+use crate::render::json::FillJson;
 use crate::render::{compas, json, table};
 use crate::settings::Settings;
 use clap::Args;
@@ -15,6 +18,12 @@ use std::path::PathBuf;
 pub(crate) struct SolveArgs {
     #[command(flatten)]
     arch: ArchArgs,
+    #[command(flatten)]
+    fill: FillArgs,
+    /// Unit weight of the masonry in kN/m^3: with --span --rise --ring, converts
+    /// --fill-weight and --fill-depth to g_f and h = h_c/r.
+    #[arg(long, allow_hyphen_values = true, requires = "fill_weight")]
+    unit_weight: Option<f64>,
     /// Friction coefficient mu = tan(phi) > 0; `inf` for no sliding; `ms` for the arch's own
     /// mu_ms (the vertical branch: the corner eta_ms and the purely sliding limit states).
     #[arg(long, allow_hyphen_values = true)]
@@ -40,11 +49,29 @@ pub(crate) struct SolveArgs {
     radius: f64,
 }
 
+/// The arch of `a` with its fill, and the fill's description.
+fn filled_arch(a: &SolveArgs) -> Result<(crate::Arch, Option<FillJson>), InputError> {
+    let arch = a.arch.build()?;
+    let ring = a.arch.geometry()?.and_then(|g| g.ring);
+    let masonry = match (ring, a.unit_weight) {
+        (Some(r), Some(g)) => Some((r.radius, check_positive("--unit-weight", g)?)),
+        _ => None,
+    };
+    Ok(match a.fill.build(masonry)? {
+        Some((f, j)) => (arch.with_fill(f), Some(j)),
+        None => (arch, None),
+    })
+}
+
 pub(crate) fn run(a: SolveArgs, settings: &Settings, io: &mut Io) -> Exit {
-    let survey = match compas::check_radius(a.radius)
-        .and_then(|_| a.arch.build())
-        .and_then(|arch| survey(&arch, a.mu.resolve(&arch, settings)?, settings))
-    {
+    let (survey, fill) = match compas::check_radius(a.radius)
+        .and_then(|_| filled_arch(&a))
+        .and_then(|(arch, fill)| {
+            Ok((
+                survey(&arch, a.mu.resolve(&arch, settings)?, settings)?,
+                fill,
+            ))
+        }) {
         Ok(s) => s,
         Err(e) => return io.bad_input(&e),
     };
@@ -57,14 +84,24 @@ pub(crate) fn run(a: SolveArgs, settings: &Settings, io: &mut Io) -> Exit {
         Outcome::Limit(ls) => Some(ls.eta),
         _ => None,
     };
+    // the road's depth above the least ring's extrados (h held as the ring varies)
+    let fill = fill.map(|mut f| {
+        f.depth_at_least_ring_m = geometry
+            .zip(least)
+            .map(|(g, e)| f.depth_ratio * g.intrados.ring_of(e).radius);
+        f
+    });
     if a.json {
-        io.out(&json_with_geometry(
-            &json::solve(&survey, a.explain),
-            geometry,
-            least,
-        ));
+        let mut doc = json::solve(&survey, a.explain);
+        doc.fill = fill;
+        io.out(&json_with_geometry(&doc, geometry, least));
     } else {
-        io.out(&(geometry_text(geometry, least) + &table::solve(&survey, a.explain)));
+        let mut head = geometry_text(geometry, least);
+        if let Some(f) = &fill {
+            head = head.replace(crate::render::geometry::RING_SCOPE, "")
+                + &table::bridge(Some(f), None, None, None);
+        }
+        io.out(&(head + &table::solve(&survey, a.explain)));
     }
     if let Some(path) = &a.compas {
         match survey_scene(&survey) {

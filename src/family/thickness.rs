@@ -14,36 +14,25 @@ pub struct Thickness<'a> {
 
 /// The rows of one contact of the thickness family at (η, μ).
 #[derive(Debug, Clone)]
-pub struct ThicknessRows<'a> {
-    arch: &'a Arch,
+pub struct ThicknessRows {
     actions: Actions,
     kind: ContactKind,
-    beta: Radians,
     eta: f64,
     mu: f64,
 }
 
 impl<'a> Family for Thickness<'a> {
     type Tag = ();
-    type Local = ThicknessRows<'a>;
+    type Local = ThicknessRows;
 
     fn arch(&self) -> &Arch {
         self.arch
     }
 
-    fn local(
-        &self,
-        kind: ContactKind,
-        beta: Radians,
-        _: (),
-        eta: f64,
-        mu: f64,
-    ) -> ThicknessRows<'a> {
+    fn local(&self, kind: ContactKind, beta: Radians, _: (), eta: f64, mu: f64) -> ThicknessRows {
         ThicknessRows {
-            arch: self.arch,
             actions: actions(self.arch, eta, beta),
             kind,
-            beta,
             eta,
             mu,
         }
@@ -54,36 +43,30 @@ impl<'a> Family for Thickness<'a> {
     }
 }
 
-impl Rows for ThicknessRows<'_> {
+impl Rows for ThicknessRows {
     fn phi(&self, order: usize) -> Affine {
         self.actions.activation(self.kind, order, self.eta, self.mu)
     }
 
-    /// η enters the hinge rows (M = ±ηN/2, and the weight through ρ(η)); μ the sliding rows
-    /// (T = ±μN).
+    /// η enters the hinge rows (M = ±ηN/2, and the weight through ρ(η)), and with fill every
+    /// row (its 1/η); μ the sliding rows (T = ±μN).
     fn d_param(&self, order: usize, x: &Reactions, p: Param) -> ParamDerivative {
         let a = &self.actions;
         match p {
             Param::T => {
-                if !self.kind.is_hinge() {
+                if !self.kind.is_hinge() && !a.filled {
                     return ParamDerivative::ZERO;
                 }
-                let (s, sr) = (self.beta.sin(), self.arch.beta_right().sin());
-                let shape = match order {
-                    0 => s - sr,
-                    1 => self.beta.cos(),
-                    _ => -s,
-                };
-                let d2 = -self.arch.weight().d2rho_deta2(self.eta) * shape;
-                let sign = if self.kind == ContactKind::HingeExtrados {
-                    1.0
+                let grad = if self.kind.is_hinge() {
+                    a.n[order].g.map(|v| -0.5 * v)
                 } else {
-                    -1.0
+                    [0.0; 3]
                 };
+                let at = (self.eta, self.mu);
                 ParamDerivative {
-                    value: a.activation_d_eta(self.kind, order, x),
-                    grad: a.n[order].g.map(|v| -0.5 * v),
-                    second: sign * d2,
+                    value: a.activation_d_eta(self.kind, order, at, x),
+                    grad,
+                    second: a.activation_d2_eta(self.kind, order, at),
                 }
             }
             Param::Mu => {

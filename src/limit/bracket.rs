@@ -36,20 +36,26 @@ pub(super) fn bracket_eta_s(
     mu: f64,
     modes: &[ContactKind],
     ws: &mut WorkingSet,
-    guess: Option<RootGuess>,
+    start: Start,
     settings: &Settings,
 ) -> ControlFlow<Outcome, Bracket<Margin>> {
     // A bracket found from the guess has a negative margin at a positive η and an
     // admissible state below the thickness limit: neither "no collapse" nor "no
     // equilibrium". Without a guess (or when it brackets nothing) the whole range.
-    let near = guess.and_then(|g| {
-        bracket_near(g, ETA_TOP, |eta| {
-            margin_or_far(arch, eta, mu, modes, ws, settings)
-        })
-        .ok()
-        .flatten()
-    });
-    let from_whole_range = near.is_none();
+    let (near, from_whole_range) = match start {
+        Start::Scanned(b) => (Some(b), true),
+        Start::Near(guess) => {
+            let near = guess.and_then(|g| {
+                bracket_near(g, ETA_TOP, |eta| {
+                    margin_or_far(arch, eta, mu, modes, ws, settings)
+                })
+                .ok()
+                .flatten()
+            });
+            let whole = near.is_none();
+            (near, whole)
+        }
+    };
     let start = match near {
         Some(ends) => ends,
         None => whole_range(arch, mu, modes, ws, settings)?,
@@ -113,9 +119,18 @@ fn whole_range(
     ))
 }
 
+/// Where the bracket of η_s starts.
+pub(super) enum Start {
+    /// Near a guess (a neighbouring solution), or the whole range without one.
+    Near(Option<RootGuess>),
+    /// The bracket of a scan of the whole range (an arch with fill, [`super::filled`]):
+    /// narrowed as a bracket of the whole range is.
+    Scanned(Bracket<Margin>),
+}
+
 /// An LP that fails (not infeasible: a numerical failure of the back end) leaves the
 /// question undecided; its text is kept only as the detail of that reason.
-fn lp_failed(at: &str, e: Undecided) -> Outcome {
+pub(super) fn lp_failed(at: &str, e: Undecided) -> Outcome {
     unresolved(
         0.0,
         2.0,

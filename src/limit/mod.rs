@@ -21,6 +21,7 @@
 mod bracket;
 mod diagnosis;
 mod enumerate;
+pub mod filled;
 pub mod recession;
 pub mod solution;
 mod vanishing;
@@ -51,17 +52,19 @@ pub fn solve(arch: &Arch, mu: f64, settings: &Settings) -> Result<Solution, Inpu
     solve_near(arch, mu, continuum_guess(arch, mu, settings), settings)
 }
 
-/// The least thickness of an arch under fill is not solved yet: the fill's 1/η makes every
-/// activation function nonlinear in η in all of N, T and M, and the thickness engine's
-/// η-derivatives and monotone shortcuts are those of the ring's own weight. Its loads at a
-/// given thickness are solved ([`crate::multiplier`]).
-fn refuse_fill(arch: &Arch) -> Result<(), InputError> {
+/// The questions whose method still assumes that the sliding rows do not depend on η (the
+/// friction limit μ_ms and the vertical branch of the limit curve) refuse an arch with fill
+/// by name: with fill every row depends on η, and μ_ms becomes a curve. Its least thickness
+/// at one μ (`solve`) and its live loads are solved.
+pub(crate) fn refuse_fill(arch: &Arch, what: &str) -> Result<(), InputError> {
     match arch.fill() {
         Some(_) => Err(InputError::Inconsistent {
             arg: "--fill-weight",
-            reason: "the least thickness of an arch with fill is not solved yet; \
-                     its live loads at a given ring are (load, load-curve)"
-                .into(),
+            reason: format!(
+                "{what} of an arch with fill is not solved yet (with fill the friction \
+                 limit depends on eta); its least thickness at one mu (solve) and its live \
+                 loads (load, load-curve) are"
+            ),
         }),
         None => Ok(()),
     }
@@ -88,7 +91,7 @@ fn continuum_guess(arch: &Arch, mu: f64, settings: &Settings) -> Option<RootGues
     let JointLayout::Discrete(joints) = arch.layout() else {
         return None;
     };
-    if joints.len() < GUESS_FROM_CONTINUUM_JOINTS {
+    if joints.len() < GUESS_FROM_CONTINUUM_JOINTS || arch.fill().is_some() {
         return None;
     }
     let continuum = Arch::new(arch.beta_right(), arch.beta_left(), arch.weight()).ok()?;
@@ -119,8 +122,18 @@ pub fn solve_near(
 ) -> Result<Solution, InputError> {
     let mu = check_mu(mu)?;
     settings.validate()?;
-    refuse_fill(arch)?;
     let mut candidates = Vec::new();
+    if arch.fill().is_some() {
+        let (outcome, scan) = solve_filled(arch, mu, settings, &mut candidates);
+        return Ok(Solution {
+            arch: arch.clone(),
+            mu,
+            outcome,
+            candidates,
+            vertical: None,
+            scan,
+        });
+    }
     let (outcome, vertical) = match vertical::band(arch, mu, settings) {
         vertical::Band::Near(fl) => {
             let above = |mu1: f64| solve_at(arch, mu1, settings, &mut Vec::new());
@@ -132,7 +145,13 @@ pub fn solve_near(
             exact_infimum(
                 arch,
                 mu,
-                solve_inner(arch, mu, settings, &mut candidates, guess),
+                solve_inner(
+                    arch,
+                    mu,
+                    settings,
+                    &mut candidates,
+                    bracket::Start::Near(guess),
+                ),
                 settings,
             ),
             None,
@@ -144,7 +163,56 @@ pub fn solve_near(
         outcome,
         candidates,
         vertical,
+        scan: None,
     })
+}
+
+/// The least thickness of an arch with fill ([`filled`]): the scan of the whole range,
+/// then the solve from the bracket of its lowest admissible node.
+fn solve_filled(
+    arch: &Arch,
+    mu: f64,
+    settings: &Settings,
+    log: &mut Vec<Candidate>,
+) -> (Outcome, Option<filled::ThicknessScan>) {
+    let modes = ContactKind::active_at(mu);
+    let mut ws = WorkingSet::initial(arch);
+    let (scan, start) = match filled::scan(arch, mu, modes, &mut ws, settings) {
+        Ok(s) => s,
+        Err(e) => {
+            return (
+                bracket::lp_failed("while scanning the thickness range", e),
+                None,
+            )
+        }
+    };
+    let outcome = match (scan.lowest(), start) {
+        (_, Some(b)) => exact_infimum(
+            arch,
+            mu,
+            solve_inner(arch, mu, settings, log, bracket::Start::Scanned(b)),
+            settings,
+        ),
+        (None, _) => Outcome::NoEquilibrium {
+            mu_ms: None,
+            reason: format!(
+                "with fill, no state is admissible at any of the {} thicknesses scanned from eta = {} to {} at mu = {} (between them the margin is taken as monotone)",
+                scan.etas.len(),
+                filled::SCAN_FLOOR,
+                crate::arch::ETA_TOP,
+                crate::arch::fmt_value(mu)
+            ),
+        },
+        (Some(_), None) => unresolved(
+            0.0,
+            filled::SCAN_FLOOR,
+            format!(
+                "with fill, a state is admissible at eta = {}, the thinnest ring scanned: whether the arch stands at every thickness is not decided",
+                filled::SCAN_FLOOR
+            ),
+        ),
+    };
+    (outcome, Some(scan))
 }
 
 /// The outcome at a μ clearly above μ_ms, from the whole range (no guess).
@@ -152,7 +220,7 @@ fn solve_at(arch: &Arch, mu: f64, settings: &Settings, log: &mut Vec<Candidate>)
     exact_infimum(
         arch,
         mu,
-        solve_inner(arch, mu, settings, log, None),
+        solve_inner(arch, mu, settings, log, bracket::Start::Near(None)),
         settings,
     )
 }
@@ -232,11 +300,11 @@ fn solve_inner(
     mu: f64,
     settings: &Settings,
     log: &mut Vec<Candidate>,
-    guess: Option<RootGuess>,
+    start: bracket::Start,
 ) -> Outcome {
     let modes = ContactKind::active_at(mu);
     let mut ws = WorkingSet::initial(arch);
-    let (lo, hi) = match bracket_eta_s(arch, mu, modes, &mut ws, guess, settings) {
+    let (lo, hi) = match bracket_eta_s(arch, mu, modes, &mut ws, start, settings) {
         Continue(b) => b,
         Break(outcome) => return outcome,
     };

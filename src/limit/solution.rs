@@ -110,4 +110,7 @@ pub struct Solution {
     /// by the limit-state search) makes every admissible state a limit state: the vertical
     /// branch, for every η ≥ η_s.
     pub vertical: Option<Vec<Contact>>,
+    /// With fill: the scan of the thickness range that bracketed η_s, and whether its
+    /// admissible thicknesses form an interval ([`crate::limit::filled`]).
+    pub scan: Option<crate::limit::filled::ThicknessScan>,
 }

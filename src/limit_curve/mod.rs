@@ -160,6 +160,10 @@ const SAMPLE_GROUP: usize = 8;
 /// limit-state search at each sample. The curve is the same for every thread count.
 pub fn trace_parallel(arch: &Arch, settings: &Settings, threads: usize) -> LimitCurve {
     let mut tr = Tracer::new(arch, settings);
+    if let Err(e) = crate::limit::refuse_fill(arch, "the limit curve") {
+        tr.unresolved.push((0.0, e.to_string()));
+        return without_branches(tr, None, 0);
+    }
     let fl: Option<FrictionLimit> = friction_limit(arch, settings).ok().flatten();
     let Some(fl) = fl else {
         return without_branches(tr, None, 0);

@@ -241,22 +241,29 @@ fn fill_statics_against_quadrature_and_differences() {
                     );
                 }
             }
-            // η-derivatives at fixed β
+            // η-derivatives at fixed β: the first against differences of the actions, the
+            // second against differences of the first, at every β-derivative order
             let e = 1e-6;
             let (lo, hi) = (
                 fill.actions((br, bl), eta - e, beta),
                 fill.actions((br, bl), eta + e, beta),
             );
-            for (k, (lo, hi)) in [(lo.n[0], hi.n[0]), (lo.t[0], hi.t[0]), (lo.m[0], hi.m[0])]
-                .into_iter()
-                .enumerate()
-            {
-                let fd = (hi - lo) / (2.0 * e);
-                assert!(
-                    (a.d_eta[k] - fd).abs() < 1e-5 * (1.0 + fd.abs()),
-                    "case {case} d/deta {k}: {} vs {fd}",
-                    a.d_eta[k]
-                );
+            let trio = |f: &arch_enum::fill::FillActions| [f.n, f.t, f.m];
+            for k in 0..3 {
+                for o in 0..3 {
+                    let fd = (trio(&hi)[k][o] - trio(&lo)[k][o]) / (2.0 * e);
+                    let exact = a.eta[0][k][o];
+                    assert!(
+                        (exact - fd).abs() < 1e-5 * (1.0 + fd.abs()),
+                        "case {case} d/deta of action {k} order {o}: {exact} vs {fd}"
+                    );
+                    let fd2 = (hi.eta[0][k][o] - lo.eta[0][k][o]) / (2.0 * e);
+                    let exact2 = a.eta[1][k][o];
+                    assert!(
+                        (exact2 - fd2).abs() < 1e-4 * (1.0 + fd2.abs()),
+                        "case {case} d2/deta2 of action {k} order {o}: {exact2} vs {fd2}"
+                    );
+                }
             }
             // the spec's identities: dN = T_f − p cos β, dM = −T_f − (η/2) p cos β
             let p = l.f[1];
@@ -632,8 +639,9 @@ fn load_with_a_vehicle_keeps_the_json_contract() {
 }
 
 /// What is not solved yet is refused by name, never answered with the wrong derivatives:
-/// the least thickness of an arch with fill, a horizontal acceleration with fill, and a
-/// certificate with fill or a vehicle.
+/// the limit curve and the assessment of an arch with fill (their friction limit is a curve
+/// in η there), a horizontal acceleration with fill, and a certificate with fill or a
+/// vehicle.
 #[test]
 fn fill_is_refused_where_it_is_not_solved() {
     use arch_enum::bridge::Fill;
@@ -643,7 +651,13 @@ fn fill_is_refused_where_it_is_not_solved() {
     let filled = arch_enum::Arch::symmetric(0.0, arch_enum::WeightModel::Centreline)
         .unwrap()
         .with_fill(Fill::new(0.9, 0.05).unwrap());
-    let err = arch_enum::limit::solve(&filled, 0.6, &settings)
+    let curve = arch_enum::limit_curve::trace(&filled, &settings);
+    assert_eq!(
+        curve.status(),
+        arch_enum::limit_curve::CurveStatus::Unresolved
+    );
+    assert!(curve.unresolved[0].1.contains("--fill-weight"));
+    let err = arch_enum::assess::assess(&filled, 0.2, 0.6, &settings)
         .unwrap_err()
         .to_string();
     assert!(err.contains("--fill-weight"), "{err}");

@@ -1,5 +1,6 @@
 //! Exact identities of the formulation, checked on random data (proptest):
-//! the exact β- and η-derivatives of the activation functions against central finite
+//! the exact β- and η-derivatives (first and second in η) of the activation functions,
+//! with and without fill, against central finite
 //! differences, and the virtual-work identity φᵀλ = L_e − μ Σ N (s⁺ + s⁻) for every
 //! compatible λ (formulation §6), which ties the signs of statics, B and L_e together.
 
@@ -25,8 +26,12 @@ proptest! {
     fn derivatives_match_finite_differences(
         alpha in -1.2f64..1.2, t in 0.05f64..0.95, eta in 0.01f64..1.5, mu in 0.1f64..3.0,
         h in -2.0f64..2.0, v in -2.0f64..2.0, w in -1.0f64..1.0, centroid in any::<bool>(), k in 0usize..4,
+        fill in proptest::option::of((0.1f64..2.0, 0.0f64..0.5)),
     ) {
-        let arch = Arch::symmetric(alpha, weight(centroid)).unwrap();
+        let mut arch = Arch::symmetric(alpha, weight(centroid)).unwrap();
+        if let Some((g, depth)) = fill {
+            arch = arch.with_fill(arch_enum::fill::Fill::new(g, depth).unwrap());
+        }
         let beta = arch.beta_right() + t * arch.span();
         let x = [h, v, w];
         let mode = ContactKind::ALL[k];
@@ -36,9 +41,16 @@ proptest! {
             let fd = (phi(beta + d, eta, order) - phi(beta - d, eta, order)) / (2.0 * d);
             let exact = phi(beta, eta, order + 1);
             prop_assert!((fd - exact).abs() < 1e-7 * (1.0 + exact.abs()), "d/dbeta of order {order}: fd {fd} vs {exact}");
-            let fd_eta = (phi(beta, eta + d, order) - phi(beta, eta - d, order)) / (2.0 * d);
-            let exact_eta = actions(&arch, eta, beta).activation_d_eta(mode, order, &x);
+            // a step relative to η: the fill's 1/η makes the differences of absolute steps
+            // inaccurate near η → 0
+            let de = 1e-4 * eta;
+            let fd_eta = (phi(beta, eta + de, order) - phi(beta, eta - de, order)) / (2.0 * de);
+            let exact_eta = actions(&arch, eta, beta).activation_d_eta(mode, order, (eta, mu), &x);
             prop_assert!((fd_eta - exact_eta).abs() < 1e-7 * (1.0 + exact_eta.abs()), "d/deta of order {order}: fd {fd_eta} vs {exact_eta}");
+            let d_eta = |e: f64| actions(&arch, e, beta).activation_d_eta(mode, order, (e, mu), &x);
+            let fd2 = (d_eta(eta + de) - d_eta(eta - de)) / (2.0 * de);
+            let exact2 = actions(&arch, eta, beta).activation_d2_eta(mode, order, (eta, mu));
+            prop_assert!((fd2 - exact2).abs() < 1e-5 * (1.0 + exact2.abs()), "d2/deta2 of order {order}: fd {fd2} vs {exact2}");
         }
     }
 

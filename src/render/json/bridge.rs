@@ -22,6 +22,10 @@ pub struct FillJson {
     pub weight_ratio: f64,
     /// h = h_c/r.
     pub depth_ratio: f64,
+    /// `solve` with span and rise: the road's depth h r* (m) above the extrados of the
+    /// least ring (h held as the ring varies).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub depth_at_least_ring_m: Option<f64>,
 }
 
 /// The vehicle as placed.

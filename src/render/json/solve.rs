@@ -72,6 +72,36 @@ pub struct SolveJson {
     /// At μ = μ_ms: the purely sliding limit states of every η ≥ η_s.
     #[serde(skip_serializing_if = "Option::is_none")]
     vertical_branch: Option<VerticalJson>,
+    /// The fill (an arch with fill only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fill: Option<super::bridge::FillJson>,
+    /// With fill: the scan of the thickness range ([`crate::limit::filled`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    thickness_scan: Option<ScanJson>,
+}
+
+/// The scan of the thickness range of an arch with fill: `interval` when every scanned η
+/// above the lowest admissible one is admissible too, else the inadmissible ones (`gaps`).
+#[derive(Debug, Serialize)]
+struct ScanJson {
+    nodes: usize,
+    eta_from: f64,
+    eta_to: f64,
+    lowest_admissible: Option<f64>,
+    interval: bool,
+    gaps: Vec<f64>,
+}
+
+fn scan_json(s: &crate::limit::filled::ThicknessScan) -> ScanJson {
+    let gaps = s.gaps();
+    ScanJson {
+        nodes: s.etas.len(),
+        eta_from: s.etas[0],
+        eta_to: s.etas[s.etas.len() - 1],
+        lowest_admissible: s.lowest().map(|i| s.etas[i]),
+        interval: gaps.is_empty(),
+        gaps,
+    }
 }
 
 /// The vertical branch at μ = μ_ms: from `eta_min` up, every admissible state is a limit
@@ -143,6 +173,8 @@ pub fn solve(survey: &Survey, explain: bool) -> SolveJson {
         limit_states: None,
         search: None,
         vertical_branch: None,
+        fill: None,
+        thickness_scan: sol.scan.as_ref().map(scan_json),
     };
     with_outcome(&mut doc, &sol.outcome);
     match &survey.states {

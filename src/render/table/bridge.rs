@@ -28,6 +28,13 @@ pub fn bridge(
             sig(f.weight_ratio, 6),
             sig(f.depth_ratio, 6)
         );
+        if let Some(d) = f.depth_at_least_ring_m {
+            let _ = writeln!(
+                s,
+                "                    h held as the ring varies: at the least ring the road is {} m above its extrados",
+                sig(d, 6)
+            );
+        }
     }
     if let Some(v) = vehicle.filter(|v| !v.axles_kn.is_empty()) {
         let axles: Vec<String> = v.axles_kn.iter().map(|a| sig(*a, 6)).collect();

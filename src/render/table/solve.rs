@@ -19,12 +19,49 @@ pub fn solve(survey: &Survey, explain: bool) -> String {
         fmt_mu(sol.mu),
         sol.mu.atan().to_degrees()
     );
+    if let Some(scan) = &sol.scan {
+        thickness_scan(&mut s, scan);
+    }
     least_thickness(&mut s, survey);
     s.push_str(&limit_states(survey));
     if explain {
         patterns_tried(&mut s, sol);
     }
     s
+}
+
+/// The scan of the thickness range of an arch with fill: where η_s was bracketed, and
+/// whether the admissible thicknesses scanned form an interval.
+fn thickness_scan(s: &mut String, scan: &crate::limit::filled::ThicknessScan) {
+    let n = scan.etas.len();
+    let _ = write!(
+        s,
+        "thickness scan      with fill the margin need not grow with eta: {n} thicknesses scanned from eta = {} to {}",
+        sig(scan.etas[0], 3),
+        sig(scan.etas[n - 1], 3)
+    );
+    let gaps = scan.gaps();
+    match scan.lowest() {
+        None => {
+            let _ = writeln!(s, ", none admissible");
+        }
+        Some(i) if gaps.is_empty() => {
+            let _ = writeln!(
+                s,
+                ";\n                    admissible from eta = {} up, at every one: an interval (to the scan's spacing)",
+                sig(scan.etas[i], 6)
+            );
+        }
+        Some(i) => {
+            let list: Vec<String> = gaps.iter().map(|g| sig(*g, 6)).collect();
+            let _ = writeln!(
+                s,
+                ";\n                    admissible from eta = {} but NOT an interval: inadmissible again at eta = {}",
+                sig(scan.etas[i], 6),
+                list.join(", ")
+            );
+        }
+    }
 }
 
 /// η_s and the limit state there, or why there is none.
