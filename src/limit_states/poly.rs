@@ -139,6 +139,22 @@ impl Poly {
         self.coeffs().iter().fold(0.0, |m, c| m.max(c.abs()))
     }
 
+    /// How many of the lowest coefficients are exactly zero (the order of the root at 0;
+    /// 0 for the zero polynomial).
+    pub fn zero_order(&self) -> usize {
+        match self.coeffs().iter().position(|&c| c != 0.0) {
+            Some(k) => k,
+            None => 0,
+        }
+    }
+
+    /// The polynomial divided by η^k (its `k` lowest coefficients dropped: exact when they
+    /// are zero, see [`Poly::zero_order`]).
+    pub fn shifted_down(&self, k: usize) -> Poly {
+        let k = k.min(self.n);
+        Poly::from_coeffs(&self.coeffs()[k..])
+    }
+
     /// The polynomial without trailing coefficients below `tol` × its norm (they are
     /// rounding residue of cancelled terms).
     pub fn trimmed(&self, tol: f64) -> Poly {

@@ -765,3 +765,110 @@ fn plot_influence_draws_the_crossing() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `solve` with fill (bridge spec §2): `--fill-weight --fill-depth` with `--unit-weight` on
+/// `--span --rise --ring` is the same arch as `--fill-ratio --fill-height` with g_f = γ_f/γ
+/// and h = h_c/r (the same η_s, bit for bit); the JSON carries `fill` (with the road's depth
+/// above the least ring, h r*), `thickness_scan` and `geometry`; zero fill weight is the
+/// arch without fill (the same η_s); the text says the scope and the scan; a fill in kN
+/// without the masonry's unit weight exits 2 naming the flags.
+#[test]
+fn solve_takes_fill_in_kn_and_non_dimensionally() {
+    use crate::cli::json_of;
+    let (a, _) = json_of(&[
+        "solve",
+        "--span",
+        "10",
+        "--rise",
+        "5",
+        "--ring",
+        "0.6",
+        "--unit-weight",
+        "20",
+        "--fill-weight",
+        "18",
+        "--fill-depth",
+        "0.3",
+        "--mu",
+        "0.6",
+    ]);
+    let h = (0.3 / 5.3).to_string();
+    let (b, _) = json_of(&[
+        "solve",
+        "--alpha",
+        "0",
+        "--fill-ratio",
+        "0.9",
+        "--fill-height",
+        &h,
+        "--mu",
+        "0.6",
+    ]);
+    assert_eq!(a["eta"], b["eta"]);
+    let eta_s = a["eta"].as_f64().unwrap();
+    let f = &a["fill"];
+    assert_eq!(f["weight_kn_m3"], 18.0);
+    assert_eq!(f["weight_ratio"], 0.9);
+    let r_star = 5.0 / (1.0 - eta_s / 2.0);
+    let d = f["depth_at_least_ring_m"].as_f64().unwrap();
+    assert!((d - 0.3 / 5.3 * r_star).abs() < 1e-12, "{d}");
+    assert_eq!(a["thickness_scan"]["interval"], true);
+    assert!(a["thickness_scan"]["lowest_admissible"].as_f64().unwrap() > eta_s);
+    assert!(a["geometry"]["least_ring_m"].as_f64().is_some());
+    // the fill lightens the semicircle's demand: η_s below the bare ring's
+    let (bare, _) = json_of(&["solve", "--alpha", "0", "--mu", "0.6"]);
+    assert!(eta_s < bare["eta"].as_f64().unwrap());
+    let (zero, _) = json_of(&[
+        "solve",
+        "--alpha",
+        "0",
+        "--fill-ratio",
+        "0",
+        "--fill-height",
+        "0.1",
+        "--mu",
+        "0.6",
+    ]);
+    assert_eq!(zero["eta"], bare["eta"]);
+    assert!(zero.get("thickness_scan").is_none());
+    let text = arch_enum()
+        .args([
+            "solve",
+            "--alpha",
+            "0",
+            "--fill-ratio",
+            "0.9",
+            "--fill-height",
+            "0.1",
+            "--mu",
+            "0.6",
+        ])
+        .output()
+        .unwrap();
+    let text = String::from_utf8(text.stdout).unwrap();
+    assert!(text.contains("the fill a vertical dead load"), "{text}");
+    assert!(
+        text.contains("an interval (to the scan's spacing)"),
+        "{text}"
+    );
+    let out = arch_enum()
+        .args([
+            "solve",
+            "--alpha",
+            "0",
+            "--fill-weight",
+            "18",
+            "--fill-depth",
+            "0.3",
+            "--mu",
+            "0.6",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.contains("--fill-weight") && err.contains("--unit-weight"),
+        "{err}"
+    );
+}

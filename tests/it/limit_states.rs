@@ -3,7 +3,9 @@
 //! same least admissible thickness, whether it carries a mechanism, and the same limit
 //! states above it (η to 1e-10 relative).
 
-use crate::search_reference::{brute_force, least_friction, random_joints, RefSearch, Rng};
+use crate::search_reference::{
+    brute_force, brute_force_filled, least_friction, random_joints, RefSearch, Rng,
+};
 use arch_enum::limit_states::search;
 use arch_enum::{Arch, Settings, WeightModel};
 use std::f64::consts::PI;
@@ -15,6 +17,7 @@ fn compare(br: f64, bl: f64, joints: &[f64], centroid: bool, mu: f64) -> Result<
         joints,
         centroid,
         mu,
+        None,
     )
 }
 
@@ -24,6 +27,7 @@ fn compare_with(
     joints: &[f64],
     centroid: bool,
     mu: f64,
+    fill: Option<(f64, f64)>,
 ) -> Result<usize, String> {
     let (br, bl) = (joints[0], joints[joints.len() - 1]);
     let weight = if centroid {
@@ -31,10 +35,13 @@ fn compare_with(
     } else {
         WeightModel::Centreline
     };
-    let arch = Arch::new(br, bl, weight)
+    let mut arch = Arch::new(br, bl, weight)
         .unwrap()
         .with_joints(joints)
         .unwrap();
+    if let Some((g, h)) = fill {
+        arch = arch.with_fill(arch_enum::fill::Fill::new(g, h).unwrap());
+    }
     let ref_above: Vec<f64> = reference
         .states
         .iter()
@@ -343,7 +350,7 @@ fn few_voussoir_arches_match_brute_force() {
             ms * (1.0 + 1e-4) + 2.0 * u * u * u
         };
         let reference = brute_force(br, bl, &joints, centroid, mu);
-        match compare_with(&reference, &joints, centroid, mu) {
+        match compare_with(&reference, &joints, centroid, mu, None) {
             Ok(k) => {
                 if reference.eta_s == 0.0 {
                     zero += 1;
@@ -796,4 +803,73 @@ fn json_eta_is_eta_static_when_the_search_is_incomplete() {
     assert!((eta - 0.453470319823).abs() < 1e-12, "{eta}");
     assert_eq!(v["checks"]["eta_static"].as_f64().unwrap(), eta);
     assert_eq!(v["mechanism_at_eta"], false);
+}
+
+/// Arches with fill (bridge spec §2): the limit-state search (the sweep, on the rows times
+/// η) against the brute force with the fill written again (Simpson quadrature of the
+/// spec's pressure), on random small discrete arches, both weight models, finite and
+/// infinite friction: the same η_s, the same mechanism at η_s, the same limit states
+/// above it. `FILL_SWEEP_CASES=N` runs more.
+#[test]
+fn filled_arches_match_brute_force() {
+    let mut rng = Rng(0xf111_5ee9_0000_0023);
+    let count: usize = std::env::var("FILL_SWEEP_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(16);
+    let mut failures = Vec::new();
+    let (mut nonunique, mut compared, mut declined) = (0, 0, 0);
+    for case in 0..count {
+        let n = 3 + (rng.next() * 4.0) as usize;
+        let br = -0.5 + 1.0 * rng.next();
+        // a third of the arches with springings anywhere (shallow, steep, unsymmetric)
+        let bl = if case % 3 == 2 {
+            br + 0.3 + 4.0 * rng.next()
+        } else {
+            PI - 0.5 + 1.0 * rng.next()
+        };
+        let joints = random_joints(&mut rng, br, bl, n);
+        let centroid = rng.next() < 0.3;
+        let fill = (0.1 + 1.2 * rng.next(), 0.01 + 0.3 * rng.next());
+        let u = rng.next();
+        let mu = if u < 0.2 {
+            f64::INFINITY
+        } else {
+            0.15 + 1.5 * u * u
+        };
+        let reference = brute_force_filled(&joints, centroid, mu, fill);
+        if !reference.eta_s.is_finite() {
+            continue;
+        }
+        if !reference.attained {
+            // an infimum: the crate declines the search (and must say so)
+            declined += 1;
+            let arch = Arch::new(br, bl, WeightModel::Centreline)
+                .unwrap()
+                .with_joints(&joints)
+                .unwrap()
+                .with_fill(arch_enum::fill::Fill::new(fill.0, fill.1).unwrap());
+            let found = search(&arch, mu, &Settings::default()).unwrap();
+            if !found.as_ref().is_err_and(|e| e.text().contains("infimum")) {
+                failures.push(format!(
+                    "case {case}: an infimum with fill searched: {found:?}"
+                ));
+            }
+            continue;
+        }
+        compared += 1;
+        match compare_with(&reference, &joints, centroid, mu, Some(fill)) {
+            Ok(k) => nonunique += usize::from(k > 0),
+            Err(e) => failures.push(format!(
+                "case {case}: joints {joints:?} centroid {centroid} mu {mu:?} fill {fill:?}: {e} (reference LP bisection {})",
+                reference.eta_s_lp
+            )),
+        }
+    }
+    println!(
+        "{compared} arches with fill compared ({nonunique} with limit states above eta_s), {declined} infima declined, {} disagreements",
+        failures.len()
+    );
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(compared > count / 2);
 }

@@ -8,6 +8,7 @@ mod compas;
 mod continuum_reference;
 mod dense_grid;
 mod edges;
+mod fill_thickness;
 mod hard_cases;
 mod identities;
 mod intervals;

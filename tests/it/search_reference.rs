@@ -111,6 +111,22 @@ pub(crate) struct Ctx {
     centroid: bool,
     mu: f64,
     contacts: Vec<(usize, u8)>,
+    /// With fill (bridge spec §2): per joint, the coefficients (lowest first) of the cubics
+    /// η F_j(η) and η S_j(η) of the fill's resultant and first moment on [β_R, β_j]
+    /// (interpolated from Simpson quadratures at four thicknesses: exact for the spec's
+    /// pressure, whose η F and η S are polynomials of degree 2 and 3). Every row φ is then
+    /// replaced by η φ (a polynomial again, with the sign and zeros of φ for η > 0).
+    fill: Option<Vec<([f64; 4], [f64; 4])>>,
+}
+
+/// The nodes of the fill's cubics.
+const FILL_NODES: [f64; 4] = [0.5, 1.0, 1.5, 2.0];
+
+/// The coefficients (lowest first) of the cubic through (FILL_NODES[i], v[i]).
+fn cubic_through(v: [f64; 4]) -> [f64; 4] {
+    let m = SMatrix::<f64, 4, 4>::from_fn(|r, c| FILL_NODES[r].powi(c as i32));
+    let c = m.try_inverse().expect("Vandermonde") * SMatrix::<f64, 4, 1>::from_column_slice(&v);
+    [c[0], c[1], c[2], c[3]]
 }
 
 fn dot(a: &[f64; 3], x: &[f64; 3]) -> f64 {
@@ -146,6 +162,43 @@ impl Ctx {
             centroid,
             mu,
             contacts,
+            fill: None,
+        }
+    }
+
+    /// The same arch under fill of weight ratio `gf` up to a road `h` above the highest
+    /// extrados point (its left springing `beta_l`).
+    pub(crate) fn with_fill(mut self, beta_l: f64, (gf, h): (f64, f64)) -> Ctx {
+        let springings = (self.br, beta_l);
+        let fill = self
+            .beta
+            .iter()
+            .map(|&b| {
+                let at = FILL_NODES.map(|eta| {
+                    let (f, s) = crate::load_reference::fill_by_simpson(
+                        gf,
+                        h,
+                        eta,
+                        springings,
+                        (self.br, b),
+                    );
+                    (eta * f, eta * s)
+                });
+                (
+                    cubic_through(at.map(|v| v.0)),
+                    cubic_through(at.map(|v| v.1)),
+                )
+            })
+            .collect();
+        self.fill = Some(fill);
+        self
+    }
+
+    /// The fill's (F, S) on [β_R, β_j] at η (zero without fill).
+    fn fill_at(&self, j: usize, eta: f64) -> (f64, f64) {
+        match &self.fill {
+            Some(f) => (peval(&f[j].0, eta) / eta, peval(&f[j].1, eta) / eta),
+            None => (0.0, 0.0),
         }
     }
     fn nj(&self) -> usize {
@@ -169,14 +222,29 @@ impl Ctx {
     fn ntm(&self, j: usize, eta: f64) -> [([f64; 3], f64); 3] {
         let (s, c, d) = (self.sn[j], self.cs[j], self.beta[j] - self.br);
         let (sr, cr) = (self.sr, self.cr);
-        [
+        let mut out = [
             ([s, c, 0.0], -d * c),
             ([c, -s, 0.0], d * s),
             ([-(s - sr), cr - c, 1.0], d * c - self.rho(eta) * (s - sr)),
-        ]
+        ];
+        if self.fill.is_some() {
+            // the fill acts as a weight F at horizontal position S/F (bridge spec §2)
+            let (f, m) = self.fill_at(j, eta);
+            out[0].1 -= f * c;
+            out[1].1 += f * s;
+            out[2].1 += f * c - m;
+        }
+        out
     }
-    /// φ = a·x + c of contact (j, k) at η.
+    /// φ = a·x + c of contact (j, k) at η (with fill, η φ).
     pub(crate) fn row(&self, j: usize, k: u8, eta: f64) -> ([f64; 3], f64) {
+        let (a, c) = self.bare_row(j, k, eta);
+        match self.fill {
+            Some(_) => (a.map(|v| eta * v), eta * c),
+            None => (a, c),
+        }
+    }
+    fn bare_row(&self, j: usize, k: u8, eta: f64) -> ([f64; 3], f64) {
         let [(an, cn), (at, ct), (am, cm)] = self.ntm(j, eta);
         let comb = |p: f64, a1: [f64; 3], c1: f64, q: f64| {
             (
@@ -210,6 +278,11 @@ impl Ctx {
     }
     /// ∂φ/∂η at fixed x.
     fn dphi_deta(&self, j: usize, k: u8, eta: f64, x: &[f64; 3]) -> f64 {
+        if self.fill.is_some() {
+            // of η φ: a central difference (Newton's polish needs no more)
+            let d = 1e-6 * eta;
+            return (self.phi(j, k, eta + d, x) - self.phi(j, k, eta - d, x)) / (2.0 * d);
+        }
         let n = self.normal(j, eta, x);
         let r = self.drho(eta) * (self.sn[j] - self.sr); // ∂M/∂η = −r
         match k {
@@ -269,6 +342,13 @@ impl Ctx {
             let gx = g * (self.sn[m + 1] - self.sn[m]) / w;
             l -= w * (col[1] + col[2] * gx);
             size += w * (col[1].abs() + (col[2] * gx).abs());
+            if self.fill.is_some() {
+                // the fill on block m: a weight F_m with first moment S_m about the centre
+                let ((f0, s0), (f1, s1)) = (self.fill_at(m, eta), self.fill_at(m + 1, eta));
+                let (f, sm) = (f1 - f0, s1 - s0);
+                l -= f * col[1] + col[2] * sm;
+                size += (f * col[1]).abs() + (col[2] * sm).abs();
+            }
         }
         (l, size)
     }
@@ -282,6 +362,10 @@ impl Ctx {
 
 // ---------------------------------------------------------------- polynomials
 
+/// Nodes of the determinants' interpolation: degree ≤ 5 without fill, ≤ 6 with (rows of η φ
+/// have gradients η × (affine) and constants of degree 3, so det[A|c] = η³ × a polynomial of
+/// degree ≤ 6, interpolated divided by η³: the triple root at η = 0 would blur the small
+/// roots).
 const NODES: usize = 7;
 
 fn cheb_nodes() -> [f64; NODES] {
@@ -483,6 +567,11 @@ fn lp_least_thickness(ctx: &Ctx, stands: bool) -> f64 {
 /// meet |M| ≤ ηN/2). The margin is O(1) away from the boundary case N = 0, so its sign is
 /// no matter of tolerance.
 fn stands_at_vanishing_thickness(ctx: &Ctx) -> bool {
+    if ctx.fill.is_some() {
+        // the fill's 1/η grows without bound as η → 0 (the arches compared have a least
+        // thickness)
+        return false;
+    }
     let mut vars = ProblemVariables::new();
     let y: Vec<_> = (0..3).map(|_| vars.add(variable())).collect();
     let s = vars.add(variable().max(1.0));
@@ -743,7 +832,16 @@ fn polish4(ctx: &Ctx, sup: &[usize], eta0: f64) -> Option<(f64, [f64; 3], bool)>
 /// All limit states of the discrete arch with the given joints (both springings
 /// included) at friction μ (∞: hinges only); see the module doc for the method.
 pub fn brute_force(beta_r: f64, beta_l: f64, joints: &[f64], centroid: bool, mu: f64) -> RefSearch {
-    let ctx = Ctx::new(beta_r, beta_l, joints, centroid, mu);
+    brute_force_of(Ctx::new(beta_r, beta_l, joints, centroid, mu))
+}
+
+/// [`brute_force`] of the arch under fill `(g_f, h)` (bridge spec §2).
+pub fn brute_force_filled(joints: &[f64], centroid: bool, mu: f64, fill: (f64, f64)) -> RefSearch {
+    let (br, bl) = (joints[0], joints[joints.len() - 1]);
+    brute_force_of(Ctx::new(br, bl, joints, centroid, mu).with_fill(bl, fill))
+}
+
+fn brute_force_of(ctx: Ctx) -> RefSearch {
     let nc = ctx.contacts.len();
     let t = cheb_nodes();
     let vinv = vandermonde_inverse(&t);
@@ -775,8 +873,13 @@ pub fn brute_force(beta_r: f64, beta_l: f64, joints: &[f64], centroid: bool, mu:
         for q in 0..NODES {
             let rows = &node_rows[q];
             let m = Matrix4::from_fn(|r, c| rows[sup[r]].0[c]);
-            vals[q] = m.determinant();
-            scale = scale.max(sup.iter().map(|&i| rows[i].1).product::<f64>());
+            let eta3 = if ctx.fill.is_some() {
+                (1.0 + t[q]).powi(3)
+            } else {
+                1.0
+            };
+            vals[q] = m.determinant() / eta3;
+            scale = scale.max(sup.iter().map(|&i| rows[i].1).product::<f64>() / eta3);
         }
         let zero = vals.iter().all(|v| v.abs() <= 1e-12 * scale);
         let coef: Vec<f64> = (vinv * vals).iter().copied().collect();
@@ -821,7 +924,7 @@ pub fn brute_force(beta_r: f64, beta_l: f64, joints: &[f64], centroid: bool, mu:
         supports_checked += 1;
         let rows = |eta: f64| -> Vec<[f64; 3]> {
             sup.iter()
-                .map(|&i| ctx.row(ctx.contacts[i].0, ctx.contacts[i].1, eta).0)
+                .map(|&i| ctx.bare_row(ctx.contacts[i].0, ctx.contacts[i].1, eta).0)
                 .collect()
         };
         let det = |eta: f64| {

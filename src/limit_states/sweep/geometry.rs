@@ -6,7 +6,7 @@ use crate::arch::Arch;
 use crate::contact::{Contact, ContactKind, Location};
 use crate::limit_states::poly::Poly;
 use crate::load::{rows, LiveLoad, Side};
-use crate::statics::{actions, Reactions};
+use crate::statics::{actions, Affine, Reactions};
 
 /// Half-width of the box on (h, v, w) that bounds the admissible set (units of γ t d r).
 pub const BOX: f64 = 1e7;
@@ -21,7 +21,8 @@ pub const BOX_EDGE_REL: f64 = 1e-9;
 const COEFF_TRIM_REL: f64 = 1e-15;
 
 /// One activation function at one joint, or a side of the box:
-/// φ(x, η) = g(η)·x + c(η), g affine and c at most quadratic in η.
+/// φ(x, η) = g(η)·x + c(η), g affine and c at most quadratic in η (with fill, the row times
+/// η, `scaled`: g = η × affine, with its constant coefficient exactly zero, and c cubic).
 #[derive(Debug, Clone)]
 pub(super) struct Plane {
     pub(super) contact: Option<Contact>,
@@ -29,14 +30,36 @@ pub(super) struct Plane {
     pub(super) side: Side,
     pub(super) g: [Poly; 3],
     pub(super) c: Poly,
+    /// Whether the row is η φ (an arch with fill).
+    pub(super) scaled: bool,
 }
 
 impl Plane {
+    /// φ at (x, η) (of a scaled row, η φ / η: tolerances stay those of φ).
     pub(super) fn value(&self, x: &Reactions, eta: f64) -> f64 {
-        self.g[0].eval(eta) * x[0]
+        let v = self.g[0].eval(eta) * x[0]
             + self.g[1].eval(eta) * x[1]
             + self.g[2].eval(eta) * x[2]
-            + self.c.eval(eta)
+            + self.c.eval(eta);
+        if self.scaled {
+            v / eta
+        } else {
+            v
+        }
+    }
+    /// φ at η as an affine function of x (of a scaled row, divided by η).
+    pub(super) fn affine(&self, eta: f64) -> Affine {
+        let k = if self.scaled { 1.0 / eta } else { 1.0 };
+        let g = [0, 1, 2].map(|i| self.g[i].eval(eta));
+        let c = self.c.eval(eta);
+        if self.scaled {
+            Affine {
+                g: g.map(|v| k * v),
+                c: k * c,
+            }
+        } else {
+            Affine { g, c }
+        }
     }
     /// ∂φ/∂x (at η) and ∂φ/∂η (at x, η).
     pub(super) fn slopes(&self, x: &Reactions, eta: f64) -> ([f64; 3], f64) {
@@ -49,12 +72,76 @@ impl Plane {
             + self.g[1].derivative().eval(eta) * x[1]
             + self.g[2].derivative().eval(eta) * x[2]
             + self.c.derivative().eval(eta);
+        if self.scaled {
+            // φ = ψ/η: ∂φ/∂η = (ψ' − ψ/η)/η
+            let psi = g[0] * x[0] + g[1] * x[1] + g[2] * x[2] + self.c.eval(eta);
+            return (g.map(|v| v / eta), (d - psi / eta) / eta);
+        }
         (g, d)
     }
 }
 
+/// With fill the rows carry the fill's 1/η: η φ is then a polynomial in η with the sign
+/// and the zeros of φ for η > 0 — its gradient η × (affine), from these two thicknesses,
+/// and its constant term a cubic, from all four.
+const FILLED_NODES: [f64; 4] = [1.0, 2.0, 0.5, 1.5];
+
+/// The cubic through (`FILLED_NODES`[i], `v[i]`) (Newton's divided differences, expanded).
+fn cubic(v: [f64; 4]) -> Poly {
+    let t = FILLED_NODES;
+    let mut d = v;
+    for level in 1..4 {
+        for i in (level..4).rev() {
+            d[i] = (d[i] - d[i - 1]) / (t[i] - t[i - level]);
+        }
+    }
+    // d0 + d1 (η − t0) + d2 (η − t0)(η − t1) + d3 (η − t0)(η − t1)(η − t2), by Horner
+    let mut p = Poly::constant(d[3]);
+    for k in (0..3).rev() {
+        p = p.mul(&Poly::linear(-t[k], 1.0)).add(&Poly::constant(d[k]));
+    }
+    p.trimmed(COEFF_TRIM_REL)
+}
+
+/// The planes of a discrete arch with fill at friction μ: each row times η. The gradient's
+/// constant coefficient is exactly zero, so that every vertex's determinant and numerators
+/// carry their common power of η exactly, and [`Vertex::new`] divides it out (a multiple
+/// root at η = 0 would blur the roots just above it).
+fn filled_planes(arch: &Arch, joints: &[f64], mu: f64) -> Vec<Plane> {
+    let mut out = Vec::new();
+    for (j, &beta) in joints.iter().enumerate() {
+        let at = Location::of_joint(j, joints.len());
+        let a = FILLED_NODES.map(|eta| actions(arch, eta, beta));
+        for &kind in ContactKind::active_at(mu) {
+            let rows = [0, 1, 2, 3].map(|i| a[i].activation(kind, 0, FILLED_NODES[i], mu));
+            // g(η) affine through η = 1 and 2: η g(η) = (2 g₁ − g₂) η + (g₂ − g₁) η²
+            let g = [0, 1, 2].map(|k| {
+                let (g1, g2) = (rows[0].g[k], rows[1].g[k]);
+                Poly::from_coeffs(&[0.0, 2.0 * g1 - g2, g2 - g1]).trimmed(COEFF_TRIM_REL)
+            });
+            out.push(Plane {
+                contact: Some(Contact {
+                    beta,
+                    kind,
+                    at,
+                    free: false,
+                }),
+                side: Side::After,
+                g,
+                c: cubic([0, 1, 2, 3].map(|i| FILLED_NODES[i] * rows[i].c)),
+                scaled: true,
+            });
+        }
+    }
+    out.extend(box_planes());
+    out
+}
+
 /// The planes of a discrete arch at friction μ, then the six box sides.
 pub(super) fn planes(arch: &Arch, joints: &[f64], mu: f64) -> Vec<Plane> {
+    if arch.fill().is_some() {
+        return filled_planes(arch, joints, mu);
+    }
     let mut out = Vec::new();
     for (j, &beta) in joints.iter().enumerate() {
         let at = Location::of_joint(j, joints.len());
@@ -81,6 +168,7 @@ pub(super) fn planes(arch: &Arch, joints: &[f64], mu: f64) -> Vec<Plane> {
                 side: Side::After,
                 g: [0, 1, 2].map(|k| quad(f[0].g[k], f[1].g[k], f[2].g[k])),
                 c: quad(f[0].c, f[1].c, f[2].c),
+                scaled: false,
             });
         }
     }
@@ -104,6 +192,7 @@ fn box_planes() -> Vec<Plane> {
                 side: Side::After,
                 g,
                 c: Poly::constant(-BOX),
+                scaled: false,
             });
         }
     }
@@ -127,6 +216,7 @@ pub(super) fn load_planes(
             side: r.side,
             g: [0, 1, 2].map(|k| Poly::constant(r.a[k])),
             c: Poly::linear(r.c, r.a[3]),
+            scaled: false,
         })
         .collect();
     out.extend(box_planes());
@@ -148,6 +238,8 @@ pub(super) struct Vertex {
     pub(super) planes: [usize; 3],
     num: [Poly; 3],
     pub(super) det: Poly,
+    /// Whether a plane of the vertex is η φ ([`Plane::scaled`]).
+    scaled: bool,
 }
 
 impl Vertex {
@@ -162,10 +254,27 @@ impl Vertex {
                 row
             }))
         });
+        let scaled = rows.iter().any(|r| r.scaled);
+        if scaled {
+            // η^k divides det and every numerator exactly (the scaled gradients' zero
+            // constant coefficients): divide it out, x(η) unchanged
+            let k = num
+                .iter()
+                .filter(|p| p.norm() > 0.0)
+                .map(Poly::zero_order)
+                .fold(det.zero_order(), usize::min);
+            return Vertex {
+                planes: t,
+                num: num.map(|p| p.shifted_down(k)),
+                det: det.shifted_down(k),
+                scaled,
+            };
+        }
         Vertex {
             planes: t,
             num,
             det,
+            scaled,
         }
     }
     pub(super) fn at(&self, eta: f64) -> Reactions {
@@ -174,8 +283,13 @@ impl Vertex {
     }
     /// φ_l(x(η), η) · det(η), a polynomial.
     pub(super) fn along(&self, l: &Plane) -> Poly {
-        (0..3).fold(l.c.mul(&self.det), |acc, k| {
+        let p = (0..3).fold(l.c.mul(&self.det), |acc, k| {
             acc.add(&l.g[k].mul(&self.num[k]))
-        })
+        });
+        if self.scaled || l.scaled {
+            // a power of η from the scaled rows: divided out (same sign for η > 0)
+            return p.shifted_down(p.zero_order());
+        }
+        p
     }
 }

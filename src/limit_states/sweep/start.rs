@@ -111,14 +111,7 @@ impl Sweeper<'_> {
                     + settings.sweep_walk_offset
                         * (lambda_static - lambda_min).min(1.0 + lambda_min)
             };
-            let rows: Vec<Affine> = self
-                .planes
-                .iter()
-                .map(|p| Affine {
-                    g: [0, 1, 2].map(|k| p.g[k].eval(t0)),
-                    c: p.c.eval(t0),
-                })
-                .collect();
+            let rows: Vec<Affine> = self.planes.iter().map(|p| p.affine(t0)).collect();
             let centre = lp::max_margin(&rows, 1.0, settings).map_or(x_min, |m| m.0);
             self.start_by_walk(t0, centre);
         }
@@ -137,9 +130,12 @@ impl Sweeper<'_> {
         let rows: Vec<Affine> = self
             .planes
             .iter()
-            .map(|p| Affine {
-                g: [0, 1, 2].map(|k| p.g[k].eval(eta) * BOX),
-                c: p.c.eval(eta),
+            .map(|p| {
+                let a = p.affine(eta);
+                Affine {
+                    g: a.g.map(|v| v * BOX),
+                    c: a.c,
+                }
             })
             .collect();
         let (u, s) = lp::max_margin(&rows, 1.0, self.settings).ok()?;

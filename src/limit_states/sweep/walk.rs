@@ -30,11 +30,7 @@ impl Sweeper<'_> {
     /// every vertex. Used where the least state is degenerate (its active planes' normals
     /// dependent, so that P(η_s) is not a point) and the first-order start does not apply.
     fn vertices_by_walk(&self, eta: f64, start: Reactions) -> Vec<[usize; 3]> {
-        let g: Vec<[f64; 3]> = self
-            .planes
-            .iter()
-            .map(|p| [p.g[0].eval(eta), p.g[1].eval(eta), p.g[2].eval(eta)])
-            .collect();
+        let g: Vec<[f64; 3]> = self.planes.iter().map(|p| p.affine(eta).g).collect();
         let phi = |x: &Reactions, i: usize| self.planes[i].value(x, eta);
         let dot = |a: &[f64; 3], b: &[f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
         let cross = |a: &[f64; 3], b: &[f64; 3]| {

@@ -1,0 +1,241 @@
+//! The least thickness of an arch with fill (bridge spec §2) against an independent
+//! reference: the dead statics written again (`model::ntm` for the ring, Simpson quadrature
+//! of the fill's column for F and S), a feasibility LP of its own at every joint, and η_s
+//! located by a dense scan of the whole range followed by bisection — no monotone shortcut,
+//! so the reference also tells whether the admissible thicknesses form an interval.
+//! Continuous arches: η_s of fine discretisations converging to the continuous one.
+
+use crate::load_reference::fill_by_simpson;
+use crate::model::ntm;
+use crate::search_reference::{random_joints, Rng};
+use arch_enum::bridge::Fill;
+use arch_enum::limit::{solve, Outcome};
+use arch_enum::{Arch, Settings, WeightModel};
+use good_lp::{highs, variable, Expression, ProblemVariables, SolverModel};
+use std::f64::consts::PI;
+
+/// A discrete arch with fill, as the reference sees it.
+struct Case {
+    br: f64,
+    bl: f64,
+    joints: Vec<f64>,
+    centroid: bool,
+    gf: f64,
+    h: f64,
+    mu: f64,
+}
+
+impl Case {
+    /// The rows (gradient, constant) of every activation function at every joint at η.
+    fn rows(&self, eta: f64) -> Vec<([f64; 3], f64)> {
+        let rho = if self.centroid {
+            1.0 + eta * eta / 12.0
+        } else {
+            1.0
+        };
+        let mut out = Vec::new();
+        for &b in &self.joints {
+            // affine in x: evaluate at 0 and along the axes
+            let at = |x: [f64; 3]| {
+                let (n, t, m) = ntm(self.br, rho, x, b);
+                let (f, s) =
+                    fill_by_simpson(self.gf, self.h, eta, (self.br, self.bl), (self.br, b));
+                let (c, sn) = (b.cos(), b.sin());
+                (n - f * c, t + f * sn, m + f * c - s)
+            };
+            let o = at([0.0; 3]);
+            let axes = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]].map(at);
+            let g = |k: usize| axes.map(|a| [a.0 - o.0, a.1 - o.1, a.2 - o.2][k]);
+            let (gn, gt, gm) = (g(0), g(1), g(2));
+            let comb = |a: f64, p: [f64; 3], pc: f64, k: f64, q: [f64; 3], qc: f64| {
+                ([0, 1, 2].map(|i| a * p[i] + k * q[i]), a * pc + k * qc)
+            };
+            out.push(comb(1.0, gm, o.2, -eta / 2.0, gn, o.0));
+            out.push(comb(-1.0, gm, o.2, -eta / 2.0, gn, o.0));
+            if self.mu.is_finite() {
+                out.push(comb(1.0, gt, o.1, -self.mu, gn, o.0));
+                out.push(comb(-1.0, gt, o.1, -self.mu, gn, o.0));
+            }
+        }
+        out
+    }
+
+    /// Whether some x makes every row ≤ 0 at η (HiGHS on normalised rows).
+    fn feasible(&self, eta: f64) -> bool {
+        let mut vars = ProblemVariables::new();
+        let x: Vec<_> = (0..3).map(|_| vars.add(variable())).collect();
+        let mut p = vars
+            .minimise(Expression::from(0.0))
+            .using(highs)
+            .set_option("primal_feasibility_tolerance", 1e-10)
+            .set_option("output_flag", false);
+        for (g, c) in self.rows(eta) {
+            let norm = (g[0] * g[0] + g[1] * g[1] + g[2] * g[2]).sqrt().max(1e-300);
+            let e = (g[0] / norm) * x[0] + (g[1] / norm) * x[1] + (g[2] / norm) * x[2];
+            p = p.with(e.leq(-c / norm));
+        }
+        p.solve().is_ok()
+    }
+
+    /// The greatest row at (η, x) over the scale of the state (1 + |x|₁)·η.
+    fn violation(&self, eta: f64, x: [f64; 3]) -> f64 {
+        let scale = (1.0 + x.iter().map(|v| v.abs()).sum::<f64>()) * eta.min(1.0);
+        self.rows(eta)
+            .iter()
+            .map(|(g, c)| g[0] * x[0] + g[1] * x[1] + g[2] * x[2] + c)
+            .fold(f64::NEG_INFINITY, f64::max)
+            / scale
+    }
+
+    /// η_s by a scan of 160 thicknesses from 1e-4 to 1.99 and bisection below the lowest
+    /// admissible one, and whether the admissible ones scanned form an interval; `None`
+    /// when none is admissible.
+    fn eta_s(&self) -> Option<(f64, bool)> {
+        let nodes: Vec<f64> = (0..160)
+            .map(|k| 1e-4 * (1.99f64 / 1e-4).powf(k as f64 / 159.0))
+            .collect();
+        let ok: Vec<bool> = nodes.iter().map(|&e| self.feasible(e)).collect();
+        let i = ok.iter().position(|&a| a)?;
+        let interval = ok[i..].iter().all(|&a| a);
+        if i == 0 {
+            return Some((nodes[0], interval));
+        }
+        let (mut lo, mut hi) = (nodes[i - 1], nodes[i]);
+        while hi - lo > 1e-11 * hi {
+            let mid = 0.5 * (lo + hi);
+            if self.feasible(mid) {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        Some((hi, interval))
+    }
+
+    fn arch(&self) -> Arch {
+        let weight = if self.centroid {
+            WeightModel::Centroid
+        } else {
+            WeightModel::Centreline
+        };
+        Arch::new(self.br, self.bl, weight)
+            .unwrap()
+            .with_joints(&self.joints)
+            .unwrap()
+            .with_fill(Fill::new(self.gf, self.h).unwrap())
+    }
+}
+
+fn random_case(rng: &mut Rng) -> Case {
+    let n = 3 + (rng.next() * 6.0) as usize;
+    let br = -0.4 + 0.9 * rng.next();
+    let bl = PI - 0.4 + 0.8 * rng.next();
+    Case {
+        joints: random_joints(rng, br, bl, n),
+        br,
+        bl,
+        centroid: rng.next() < 0.3,
+        gf: 0.1 + 1.5 * rng.next(),
+        h: 0.01 + 0.4 * rng.next(),
+        mu: if rng.next() < 0.2 {
+            f64::INFINITY
+        } else {
+            0.3 + 1.5 * rng.next()
+        },
+    }
+}
+
+/// η_s of random small discrete arches with fill (both weight models, horseshoes and
+/// segments, finite and infinite friction) equals the reference's to 1e-7 (relative), and
+/// the crate's least admissible state and limit state are admissible by the reference's
+/// statics; "no equilibrium" where the reference finds no admissible thickness.
+/// `FILL_ETA_CASES=N` runs more.
+#[test]
+fn least_thickness_with_fill_matches_the_reference() {
+    let count: usize = std::env::var("FILL_ETA_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(30);
+    let mut rng = Rng(0xf111_e7a5_0000_0023);
+    let settings = Settings::default();
+    let (mut limits, mut none, mut gaps, mut not_interval) = (0, 0, 0, 0);
+    let mut failures = Vec::new();
+    for case in 0..count {
+        let c = random_case(&mut rng);
+        let reference = c.eta_s();
+        let sol = solve(&c.arch(), c.mu, &settings).unwrap();
+        let scan = sol.scan.as_ref().expect("an arch with fill is scanned");
+        if !scan.gaps().is_empty() {
+            gaps += 1;
+        }
+        if reference.is_some_and(|r| !r.1) {
+            not_interval += 1;
+        }
+        match (&sol.outcome, reference) {
+            (Outcome::Limit(ls), Some((eta, _))) => {
+                limits += 1;
+                let rel = (ls.eta_static - eta).abs() / eta;
+                let v_static = c.violation(ls.eta_static, ls.x_static);
+                let v_limit = c.violation(ls.eta, ls.x);
+                if rel > 1e-7 || v_static > 1e-8 || v_limit > 1e-8 || ls.eta < ls.eta_static {
+                    failures.push(format!(
+                        "case {case}: eta_s {} vs reference {eta} (rel {rel:.1e}); violations {v_static:.1e}, {v_limit:.1e}",
+                        ls.eta_static
+                    ));
+                }
+            }
+            (Outcome::NoEquilibrium { .. }, None) => none += 1,
+            (other, r) => failures.push(format!("case {case}: crate {other:?} vs reference {r:?}")),
+        }
+    }
+    eprintln!(
+        "{count} cases: {limits} least thicknesses, {none} without equilibrium; \
+         scans not an interval: crate {gaps}, reference {not_interval}"
+    );
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(limits > count / 2, "too few least thicknesses compared");
+}
+
+/// The continuous semicircle and a segment with fill: η_s of equal-voussoir
+/// discretisations converges to the continuous arch's (the differences fall with the
+/// voussoirs' width, the finest within 1e-4, relative), each discretisation with its own
+/// scan.
+#[test]
+fn continuous_arch_with_fill_is_the_limit_of_fine_discretisations() {
+    let settings = Settings::default();
+    for (br, bl, mu) in [(0.0, PI, 0.6), (0.5, PI - 0.5, f64::INFINITY)] {
+        let fill = Fill::new(0.9, 0.1).unwrap();
+        let continuous = Arch::new(br, bl, WeightModel::Centreline)
+            .unwrap()
+            .with_fill(fill);
+        let Outcome::Limit(ls) = solve(&continuous, mu, &settings).unwrap().outcome else {
+            panic!("the continuous arch ({br}, {bl}) has a least thickness");
+        };
+        let mut errs = Vec::new();
+        // numbers of voussoirs with no common joints but the springings and the crown
+        for n in [31, 127, 509] {
+            let joints: Vec<f64> = (0..=n)
+                .map(|i| br + (bl - br) * i as f64 / n as f64)
+                .collect();
+            let discrete = Arch::new(br, bl, WeightModel::Centreline)
+                .unwrap()
+                .with_joints(&joints)
+                .unwrap()
+                .with_fill(fill);
+            let Outcome::Limit(d) = solve(&discrete, mu, &settings).unwrap().outcome else {
+                panic!("{n} voussoirs have a least thickness");
+            };
+            // joints only restrict where the line of thrust is checked: never above
+            assert!(d.eta_static <= ls.eta_static * (1.0 + 1e-12));
+            errs.push((ls.eta_static - d.eta_static) / ls.eta_static);
+        }
+        eprintln!(
+            "({br}, {bl}) eta_s = {}: relative gaps {errs:?}",
+            ls.eta_static
+        );
+        assert!(
+            errs[0] > errs[1] && errs[1] > errs[2] && errs[2] < 1e-4,
+            "{errs:?}"
+        );
+    }
+}
