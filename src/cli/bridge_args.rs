@@ -60,6 +60,40 @@ impl FillArgs {
     }
 }
 
+/// The fill flags of a command that takes the arch without `load`'s dimensions (`solve`,
+/// `plot arch`): `--unit-weight` and the ring of `--span --rise --ring` convert
+/// `--fill-weight --fill-depth`.
+#[derive(Args, Debug, Default)]
+pub(crate) struct ArchFillArgs {
+    #[command(flatten)]
+    fill: FillArgs,
+    /// Unit weight of the masonry in kN/m^3: with --span --rise --ring, converts
+    /// --fill-weight and --fill-depth to g_f and h = h_c/r.
+    #[arg(long, allow_hyphen_values = true, requires = "fill_weight")]
+    unit_weight: Option<f64>,
+}
+
+impl ArchFillArgs {
+    /// The arch of `arch` with its fill, and the fill's description (`None` without fill).
+    pub(crate) fn build(
+        &self,
+        arch: &super::arch_args::ArchArgs,
+    ) -> Result<(Arch, Option<FillJson>), InputError> {
+        let built = arch.build()?;
+        let ring = arch.geometry()?.and_then(|g| g.ring);
+        let masonry = match (ring, self.unit_weight) {
+            (Some(r), Some(g)) => {
+                Some((r.radius, crate::input::check_positive("--unit-weight", g)?))
+            }
+            _ => None,
+        };
+        Ok(match self.fill.build(masonry)? {
+            Some((f, j)) => (built.with_fill(f), Some(j)),
+            None => (built, None),
+        })
+    }
+}
+
 fn fill_json(f: &Fill, weight: Option<f64>, depth: Option<f64>) -> FillJson {
     FillJson {
         weight_kn_m3: weight,

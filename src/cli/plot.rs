@@ -103,6 +103,8 @@ impl BridgeOutput {
 pub(crate) struct StateArgs {
     #[command(flatten)]
     arch: ArchArgs,
+    #[command(flatten)]
+    fill: super::bridge_args::ArchFillArgs,
     /// Friction coefficient mu > 0; `inf` for no sliding; `ms` for the arch's own mu_ms (with
     /// --eta above eta_ms: a purely sliding limit state of the vertical branch).
     #[arg(long, allow_negative_numbers = true)]
@@ -373,7 +375,7 @@ fn plot_inputs(
     st: &StateArgs,
     settings: &Settings,
 ) -> Result<(Arch, f64, Option<f64>), InputError> {
-    let a = st.arch.build()?;
+    let a = st.fill.build(&st.arch)?.0;
     let mu = st.mu.resolve(&a, settings)?;
     check_mu(mu)?;
     let eta = match (st.eta, st.arch.ring) {

@@ -1,14 +1,12 @@
 //! `arch-enum solve`: the least thickness at one friction coefficient.
 
 use super::arch_args::ArchArgs;
-use super::bridge_args::FillArgs;
+use super::bridge_args::ArchFillArgs;
 use super::io::{geometry_text, json_with_geometry, to_json, Exit, Io};
 use super::mu_arg::MuArg;
-use crate::arch::{check_positive, InputError};
 use crate::figures::survey_scene;
 use crate::limit::Outcome;
 use crate::limit_states::survey;
-use crate::render::json::FillJson;
 use crate::render::{compas, json, table};
 use crate::settings::Settings;
 use clap::Args;
@@ -19,11 +17,7 @@ pub(crate) struct SolveArgs {
     #[command(flatten)]
     arch: ArchArgs,
     #[command(flatten)]
-    fill: FillArgs,
-    /// Unit weight of the masonry in kN/m^3: with --span --rise --ring, converts
-    /// --fill-weight and --fill-depth to g_f and h = h_c/r.
-    #[arg(long, allow_hyphen_values = true, requires = "fill_weight")]
-    unit_weight: Option<f64>,
+    fill: ArchFillArgs,
     /// Friction coefficient mu = tan(phi) > 0; `inf` for no sliding; `ms` for the arch's own
     /// mu_ms (the vertical branch: the corner eta_ms and the purely sliding limit states).
     #[arg(long, allow_hyphen_values = true)]
@@ -49,23 +43,9 @@ pub(crate) struct SolveArgs {
     radius: f64,
 }
 
-/// The arch of `a` with its fill, and the fill's description.
-fn filled_arch(a: &SolveArgs) -> Result<(crate::Arch, Option<FillJson>), InputError> {
-    let arch = a.arch.build()?;
-    let ring = a.arch.geometry()?.and_then(|g| g.ring);
-    let masonry = match (ring, a.unit_weight) {
-        (Some(r), Some(g)) => Some((r.radius, check_positive("--unit-weight", g)?)),
-        _ => None,
-    };
-    Ok(match a.fill.build(masonry)? {
-        Some((f, j)) => (arch.with_fill(f), Some(j)),
-        None => (arch, None),
-    })
-}
-
 pub(crate) fn run(a: SolveArgs, settings: &Settings, io: &mut Io) -> Exit {
     let (survey, fill) = match compas::check_radius(a.radius)
-        .and_then(|_| filled_arch(&a))
+        .and_then(|_| a.fill.build(&a.arch))
         .and_then(|(arch, fill)| {
             Ok((
                 survey(&arch, a.mu.resolve(&arch, settings)?, settings)?,

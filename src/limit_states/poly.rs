@@ -142,10 +142,10 @@ impl Poly {
     /// How many of the lowest coefficients are exactly zero (the order of the root at 0;
     /// 0 for the zero polynomial).
     pub fn zero_order(&self) -> usize {
-        match self.coeffs().iter().position(|&c| c != 0.0) {
-            Some(k) => k,
-            None => 0,
-        }
+        self.coeffs()
+            .iter()
+            .position(|&c| c != 0.0)
+            .unwrap_or_default()
     }
 
     /// The polynomial divided by η^k (its `k` lowest coefficients dropped: exact when they

@@ -722,8 +722,9 @@ fn patch_loads_keep_symmetry_and_narrow_to_an_axle() {
     assert!(errs[2] < errs[0] && errs[2] < 1e-3, "{errs:?}");
 }
 
-/// `plot influence`: the figure of a crossing (the line with X* labelled, the arch at X*
-/// beneath), in SVG; it needs a vehicle with `--critical`, and refuses `--json` by name.
+/// `plot influence`: the figure of a crossing over fill (the line with X* labelled, the fill
+/// shaded, the arch at X* beneath), in SVG; it needs a vehicle with `--critical`, and refuses
+/// `--json` by name.
 #[test]
 fn plot_influence_draws_the_crossing() {
     let dir = std::env::temp_dir().join(format!("arch-enum-influence-{}", std::process::id()));
@@ -732,6 +733,7 @@ fn plot_influence_draws_the_crossing() {
     let mut args = vec!["plot", "influence"];
     args.extend(ENGINEER);
     args.extend(["--axles", "100", "--critical", "--samples", "9"]);
+    args.extend(["--fill-weight", "18", "--fill-depth", "0.3"]);
     let run = arch_enum()
         .args(&args)
         .arg("--out")
@@ -744,6 +746,7 @@ fn plot_influence_draws_the_crossing() {
         svg.contains("X* = ") && svg.contains("collapse mechanism"),
         "the figure lacks its parts"
     );
+    assert!(svg.contains("fill (shaded)"), "the fill is not drawn");
     for (extra, flag) in [
         (vec!["--axles", "100", "--at", "3"], "--critical"),
         (vec!["--axles", "100", "--critical", "--json"], "--json"),
@@ -871,4 +874,36 @@ fn solve_takes_fill_in_kn_and_non_dimensionally() {
         err.contains("--fill-weight") && err.contains("--unit-weight"),
         "{err}"
     );
+}
+
+/// `plot arch` with fill: the least thickness of the arch with its fill, drawn with the
+/// fill shaded up to the road and labelled; without fill flags no fill is drawn.
+#[test]
+fn plot_arch_draws_the_fill() {
+    let dir = std::env::temp_dir().join(format!("arch-enum-fill-arch-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("arch.svg");
+    for (fill, drawn) in [
+        (vec!["--fill-ratio", "0.9", "--fill-height", "0.1"], true),
+        (vec![], false),
+    ] {
+        let run = arch_enum()
+            .args(["plot", "arch", "--alpha", "0", "--mu", "0.6"])
+            .args(&fill)
+            .arg("--out")
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert_eq!(run.status.code(), Some(0), "{run:?}");
+        let svg = std::fs::read_to_string(&out).unwrap();
+        assert_eq!(svg.contains("fill (shaded)"), drawn);
+        // the least thickness drawn is that of `solve` with the same flags
+        let (doc, _) = crate::cli::json_of(
+            &[vec!["solve", "--alpha", "0", "--mu", "0.6"], fill.clone()].concat(),
+        );
+        let eta = doc["eta"].as_f64().unwrap();
+        let shown = format!("η = {}", arch_enum::render::plot::short_num(eta));
+        assert!(svg.contains(&shown), "{shown} not in the caption");
+    }
+    std::fs::remove_dir_all(&dir).ok();
 }

@@ -29,6 +29,33 @@ pub(super) fn arch_panel(
         .build_cartesian_2d(view.x.0..view.x.1, view.y.0..view.y.1)
         .map_err(err)?;
     axes(&mut ch)?;
+    let fill = fill_region(scene);
+    if !fill.is_empty() {
+        ch.draw_series(std::iter::once(Polygon::new(fill.clone(), FILL_COLOR)))
+            .map_err(err)?;
+        // the road: the fill's level top
+        let road = vec![fill[0], fill[fill.len() - 1]];
+        ch.draw_series(std::iter::once(PathElement::new(
+            road,
+            RGBColor(90, 80, 60).stroke_width(3),
+        )))
+        .map_err(err)?;
+        if let Some(f) = scene.arch.fill() {
+            // at the foot of the panel, clear of the load's arrows above the road
+            let x = fill[0].0.min(fill[fill.len() - 1].0);
+            let label = format!(
+                "fill (shaded): g_f = {} of the masonry's weight, road h = {} r above the extrados",
+                short_num(f.weight_ratio),
+                short_num(f.depth)
+            );
+            ch.draw_series(std::iter::once(Text::new(
+                label,
+                (x, view.y.0 + 0.55 * view.pad),
+                (FAMILY, 15).into_font().color(&RGBColor(90, 80, 60)),
+            )))
+            .map_err(err)?;
+        }
+    }
     ch.draw_series(std::iter::once(Polygon::new(
         outline.to_vec(),
         RGBColor(225, 215, 195),
@@ -52,6 +79,36 @@ pub(super) fn arch_panel(
         load_arrows(&mut ch, scene, view, load, *lambda)?;
     }
     Ok(())
+}
+
+/// The colour of the fill.
+const FILL_COLOR: RGBColor = RGBColor(240, 232, 170);
+
+/// The fill above the extrados up to the road (bridge spec §2): the region between the
+/// loaded extrados (0 ≤ β ≤ π within the arch) and the road's level, as a polygon from the
+/// road over the first end, along the extrados, back to the road; empty without fill.
+pub(super) fn fill_region(scene: &ArchScene) -> Vec<(f64, f64)> {
+    let arch = &scene.arch;
+    let Some(fill) = arch.fill() else {
+        return Vec::new();
+    };
+    let (a, b) = (
+        arch.beta_right().max(0.0),
+        arch.beta_left().min(std::f64::consts::PI),
+    );
+    if b <= a {
+        return Vec::new();
+    }
+    let kappa = 1.0 + scene.eta / 2.0;
+    let road = fill.road(arch.springings(), scene.eta);
+    let n = 96;
+    let mut out = vec![(kappa * a.cos(), road)];
+    out.extend((0..=n).map(|i| {
+        let t = a + (b - a) * i as f64 / n as f64;
+        (kappa * t.cos(), kappa * t.sin())
+    }));
+    out.push((kappa * b.cos(), road));
+    out
 }
 
 /// The colour of live-load arrows.

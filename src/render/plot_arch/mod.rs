@@ -72,7 +72,7 @@ fn svg_height(svg: &str) -> Option<u32> {
 pub fn svg(scene: &ArchScene) -> Result<String, String> {
     let arch = &scene.arch;
     let outline = block_outline(scene.eta, arch.beta_right(), arch.beta_left());
-    let view = View::new(&outline);
+    let view = View::new(&[outline.clone(), arch_panel::fill_region(scene)].concat());
     let panels = if scene.mechanism.is_some() { 2 } else { 1 };
     let total_h = CAPTION_H + panels * view.panel_h;
     let color = scene.mode.map_or(SAFE_COLOR, mode_color);
