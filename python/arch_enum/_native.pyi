@@ -8,7 +8,7 @@ dataclasses. ``spec`` is (alpha, beta_right, beta_left, blocks, joints, weight).
 from typing import Any, Dict, List, Optional, Tuple
 
 ArchSpec = Tuple[Optional[float], Optional[float], Optional[float], Optional[int],
-                 Optional[List[float]], str]
+                 Optional[List[float]], str, Optional[Tuple[float, float]]]
 
 __version__: str
 LP_SOLVER: str

@@ -71,6 +71,10 @@ class Arch(_Result):
     0 is the semicircle) or ``beta_right`` < ``beta_left`` (the springings, radians);
     optionally ``blocks`` (N equal voussoirs) or ``joints`` (the joint angles of a given
     stereotomy); ``weight`` is ``"centreline"`` (Heyman, the default) or ``"centroid"``.
+    ``fill_ratio`` g_f = gamma_f/gamma and ``fill_height`` h = h_c/r (given together) put fill
+    above the extrados up to a level road h r above its highest point (``--fill-ratio
+    --fill-height``): ``solve`` then answers the least thickness of the arch with its fill
+    (g_f and h held), ``load`` its live loads at a given thickness.
     """
 
     alpha: Optional[float] = None
@@ -79,6 +83,8 @@ class Arch(_Result):
     blocks: Optional[int] = None
     joints: Optional[Tuple[float, ...]] = None
     weight: str = "centreline"
+    fill_ratio: Optional[float] = None
+    fill_height: Optional[float] = None
 
     def __post_init__(self) -> None:
         def number(name: str, v: Any) -> Optional[float]:
@@ -89,8 +95,13 @@ class Arch(_Result):
             except (TypeError, ValueError):
                 raise TypeError(f"{name} must be a number (radians), got {v!r}") from None
 
-        for name in ("alpha", "beta_right", "beta_left"):
+        for name in ("alpha", "beta_right", "beta_left", "fill_ratio", "fill_height"):
             object.__setattr__(self, name, number(name, getattr(self, name)))
+        if (self.fill_ratio is None) != (self.fill_height is None):
+            raise ValueError(
+                "invalid fill_ratio/fill_height: give both (the fill's weight ratio g_f >= 0 "
+                "and the road's height h >= 0 above the extrados, over r), or neither"
+            )
         if self.blocks is not None:
             import operator
 
@@ -128,7 +139,16 @@ class Arch(_Result):
 
     def _spec(self) -> tuple:
         joints = None if self.joints is None else list(self.joints)
-        return (self.alpha, self.beta_right, self.beta_left, self.blocks, joints, self.weight)
+        fill = None if self.fill_ratio is None else (self.fill_ratio, self.fill_height)
+        return (
+            self.alpha,
+            self.beta_right,
+            self.beta_left,
+            self.blocks,
+            joints,
+            self.weight,
+            fill,
+        )
 
     @property
     def springings(self) -> Tuple[float, float]:
@@ -323,7 +343,9 @@ class SolveResult(_Result):
     ``"no_collapse"``; ``message`` says why when not ok. ``mode``, ``pattern``,
     ``reactions`` and ``mechanism`` describe the least limit state, and
     ``thrust_line``, ``friction_line`` ((n, 2) arrays of x, y in units of r; the
-    friction line is ``None`` at mu = inf) and ``outline`` are that state's lines.
+    friction line is ``None`` at mu = inf) and ``outline`` are that state's lines. With fill,
+    ``thickness_scan`` is the scan of the thickness range that bracketed eta_s (``nodes``,
+    ``eta_from``, ``eta_to``, ``lowest_admissible``, ``interval``, ``gaps``).
     """
 
     status: str
@@ -351,6 +373,7 @@ class SolveResult(_Result):
     friction_line: Optional[np.ndarray]
     outline: np.ndarray
     lines: Optional[Lines]
+    thickness_scan: Optional[Dict[str, Any]] = None
 
     @staticmethod
     def _of(arch: Arch, d: Dict[str, Any]) -> "SolveResult":
@@ -382,6 +405,7 @@ class SolveResult(_Result):
             friction_line=friction,
             outline=outline,
             lines=lines,
+            thickness_scan=d.get("thickness_scan"),
         )
 
     def _repr_svg_(self) -> Optional[str]:

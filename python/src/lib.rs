@@ -28,7 +28,8 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use serde_json::Value;
 
-/// The arch as Python describes it: (alpha, beta_right, beta_left, blocks, joints, weight).
+/// The arch as Python describes it: (alpha, beta_right, beta_left, blocks, joints, weight,
+/// fill as (g_f, h)).
 type ArchIn = (
     Option<f64>,
     Option<f64>,
@@ -36,6 +37,7 @@ type ArchIn = (
     Option<i64>,
     Option<Vec<f64>>,
     String,
+    Option<(f64, f64)>,
 );
 
 /// The Python name of a command-line argument: `--beta-right/--beta-left` →
@@ -76,7 +78,22 @@ fn inconsistent(arg: &'static str, reason: &str) -> PyErr {
 
 /// Builds and validates the arch (as `ArchArgs::build` does for the command line).
 fn build_arch(a: &ArchIn) -> PyResult<Arch> {
-    let (alpha, beta_right, beta_left, blocks, joints, weight) = a;
+    let (alpha, beta_right, beta_left, blocks, joints, weight, fill) = a;
+    let fill = fill
+        .map(|(g, h)| {
+            arch_enum::fill::Fill::new(g, h).map_err(|e| {
+                let name = match &e {
+                    InputError::OutOfRange { arg, .. } if *arg == "--fill-depth" => "fill_height",
+                    _ => "fill_ratio",
+                };
+                value_error_as(e, Some(name))
+            })
+        })
+        .transpose()?;
+    let with_fill = |a: Arch| match fill {
+        Some(f) => a.with_fill(f),
+        None => a,
+    };
     let weight = match weight.as_str() {
         "centreline" => WeightModel::Centreline,
         "centroid" => WeightModel::Centroid,
@@ -123,10 +140,10 @@ fn build_arch(a: &ArchIn) -> PyResult<Arch> {
                     range: "whole numbers 1 to 100000".into(),
                 })
             })?;
-            arch.with_blocks(n).map_err(value_error)
+            arch.with_blocks(n).map(with_fill).map_err(value_error)
         }
-        (None, Some(j)) => arch.with_joints(j).map_err(value_error),
-        (None, None) => Ok(arch),
+        (None, Some(j)) => arch.with_joints(j).map(with_fill).map_err(value_error),
+        (None, None) => Ok(with_fill(arch)),
     }
 }
 

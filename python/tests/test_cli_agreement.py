@@ -73,6 +73,30 @@ def test_solve(cli, arch_kw, flags, mu):
     assert (code == 0) == (r.status == "ok")
 
 
+FILLED = [
+    (dict(alpha=0, fill_ratio=0.9, fill_height=0.1), ["--alpha", "0", "--fill-ratio", "0.9", "--fill-height", "0.1"]),
+    (dict(alpha=-0.5, blocks=12, fill_ratio=0.5, fill_height=0.2),
+     ["--alpha", "-0.5", "--blocks", "12", "--fill-ratio", "0.5", "--fill-height", "0.2"]),
+]
+
+
+@pytest.mark.parametrize("arch_kw,flags", FILLED)
+def test_solve_with_fill(cli, arch_kw, flags):
+    """An arch with fill: the same least thickness, scan and limit states as the command
+    line (whose JSON adds the fill as given, `fill`)."""
+    code, doc = cli("solve", *flags, "--mu", "0.6", "--json")
+    arch = ae.Arch(**arch_kw)
+    raw = _native.solve(arch._spec(), 0.6)
+    raw.pop("lines")
+    assert doc.pop("fill")["weight_ratio"] == arch_kw["fill_ratio"]
+    agree(raw, doc)
+    r = ae.solve(arch, 0.6)
+    assert r.thickness_scan["interval"] is True
+    assert r.eta == pytest.approx(doc["eta"], rel=1e-12)
+    bare = ae.solve(ae.Arch(**{k: v for k, v in arch_kw.items() if not k.startswith("fill")}), 0.6)
+    assert bare.thickness_scan is None and bare.eta != r.eta
+
+
 @pytest.mark.parametrize("arch_kw,flags", ARCHES[:4])
 def test_curve(cli, arch_kw, flags):
     code, doc = cli("curve", *flags, "--mu-min", "0.25", "--mu-max", "5", "--points", "12",

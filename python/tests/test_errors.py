@@ -36,6 +36,9 @@ def test_arch_arguments():
     raises(lambda: ae.Arch(alpha=0, joints=[0.5, 4.0]), "invalid value for joints: 4")
     raises(lambda: ae.Arch(alpha=0, blocks=4, joints=[1.0]), "blocks/joints")
     raises(lambda: ae.Arch(alpha=0, weight="middle"), "weight", "centreline", "centroid")
+    raises(lambda: ae.Arch(alpha=0, fill_ratio=-1.0, fill_height=0.1), "invalid value for fill_ratio")
+    raises(lambda: ae.Arch(alpha=0, fill_ratio=1.0, fill_height=-0.1), "invalid value for fill_height")
+    raises(lambda: ae.Arch(alpha=0, fill_ratio=1.0), "fill_ratio/fill_height")
     assert "valid range" in m
     with pytest.raises(TypeError):
         ae.Arch(alpha="wide")
