@@ -103,22 +103,65 @@ fn cubic(v: [f64; 4]) -> Poly {
     p.trimmed(COEFF_TRIM_REL)
 }
 
-/// The planes of a discrete arch with fill at friction μ: each row times η. The gradient's
-/// constant coefficient is exactly zero, so that every vertex's determinant and numerators
+/// The rows of one joint with fill as polynomials in η: each row times η, its gradient's
+/// constant coefficient exactly zero, so that every vertex's determinant and numerators
 /// carry their common power of η exactly, and [`Vertex::new`] divides it out (a multiple
 /// root at η = 0 would blur the roots just above it).
-fn filled_planes(arch: &Arch, joints: &[f64], mu: f64) -> Vec<Plane> {
-    let mut out = Vec::new();
-    for (j, &beta) in joints.iter().enumerate() {
-        let at = Location::of_joint(j, joints.len());
-        let a = FILLED_NODES.map(|eta| actions(arch, eta, beta));
-        for &kind in ContactKind::active_at(mu) {
+fn filled_rows(arch: &Arch, beta: f64, kinds: &[ContactKind], mu: f64) -> Vec<([Poly; 3], Poly)> {
+    let a = FILLED_NODES.map(|eta| actions(arch, eta, beta));
+    kinds
+        .iter()
+        .map(|&kind| {
             let rows = [0, 1, 2, 3].map(|i| a[i].activation(kind, 0, FILLED_NODES[i], mu));
             // g(η) affine through η = 1 and 2: η g(η) = (2 g₁ − g₂) η + (g₂ − g₁) η²
             let g = [0, 1, 2].map(|k| {
                 let (g1, g2) = (rows[0].g[k], rows[1].g[k]);
                 Poly::from_coeffs(&[0.0, 2.0 * g1 - g2, g2 - g1]).trimmed(COEFF_TRIM_REL)
             });
+            (g, cubic([0, 1, 2, 3].map(|i| FILLED_NODES[i] * rows[i].c)))
+        })
+        .collect()
+}
+
+/// The rows of one joint of the ring alone as polynomials in η, from three thicknesses:
+/// exact for g (affine) and c (quadratic).
+fn ring_rows(arch: &Arch, beta: f64, kinds: &[ContactKind], mu: f64) -> Vec<([Poly; 3], Poly)> {
+    let a: Vec<_> = [0.0, 1.0, 2.0]
+        .iter()
+        .map(|&eta| actions(arch, eta, beta))
+        .collect();
+    let quad = |p0: f64, p1: f64, p2: f64| {
+        let c2 = 0.5 * (p2 - 2.0 * p1 + p0);
+        Poly::from_coeffs(&[p0, p1 - p0 - c2, c2]).trimmed(COEFF_TRIM_REL)
+    };
+    kinds
+        .iter()
+        .map(|&kind| {
+            let f: Vec<_> = (0..3)
+                .map(|i| a[i].activation(kind, 0, i as f64, mu))
+                .collect();
+            (
+                [0, 1, 2].map(|k| quad(f[0].g[k], f[1].g[k], f[2].g[k])),
+                quad(f[0].c, f[1].c, f[2].c),
+            )
+        })
+        .collect()
+}
+
+/// The planes of a discrete arch at friction μ (with fill, each row times η:
+/// [`FILLED_NODES`]), then the six box sides.
+pub(super) fn planes(arch: &Arch, joints: &[f64], mu: f64) -> Vec<Plane> {
+    let scaled = arch.fill().is_some();
+    let kinds = ContactKind::active_at(mu);
+    let mut out = Vec::new();
+    for (j, &beta) in joints.iter().enumerate() {
+        let at = Location::of_joint(j, joints.len());
+        let rows = if scaled {
+            filled_rows(arch, beta, kinds, mu)
+        } else {
+            ring_rows(arch, beta, kinds, mu)
+        };
+        for (&kind, (g, c)) in kinds.iter().zip(rows) {
             out.push(Plane {
                 contact: Some(Contact {
                     beta,
@@ -128,47 +171,8 @@ fn filled_planes(arch: &Arch, joints: &[f64], mu: f64) -> Vec<Plane> {
                 }),
                 side: Side::After,
                 g,
-                c: cubic([0, 1, 2, 3].map(|i| FILLED_NODES[i] * rows[i].c)),
-                scaled: true,
-            });
-        }
-    }
-    out.extend(box_planes());
-    out
-}
-
-/// The planes of a discrete arch at friction μ, then the six box sides.
-pub(super) fn planes(arch: &Arch, joints: &[f64], mu: f64) -> Vec<Plane> {
-    if arch.fill().is_some() {
-        return filled_planes(arch, joints, mu);
-    }
-    let mut out = Vec::new();
-    for (j, &beta) in joints.iter().enumerate() {
-        let at = Location::of_joint(j, joints.len());
-        // coefficients from three thicknesses: exact for g (affine) and c (quadratic)
-        let a: Vec<_> = [0.0, 1.0, 2.0]
-            .iter()
-            .map(|&eta| actions(arch, eta, beta))
-            .collect();
-        for &kind in ContactKind::active_at(mu) {
-            let f: Vec<_> = (0..3)
-                .map(|i| a[i].activation(kind, 0, i as f64, mu))
-                .collect();
-            let quad = |p0: f64, p1: f64, p2: f64| {
-                let c2 = 0.5 * (p2 - 2.0 * p1 + p0);
-                Poly::from_coeffs(&[p0, p1 - p0 - c2, c2]).trimmed(COEFF_TRIM_REL)
-            };
-            out.push(Plane {
-                contact: Some(Contact {
-                    beta,
-                    kind,
-                    at,
-                    free: false,
-                }),
-                side: Side::After,
-                g: [0, 1, 2].map(|k| quad(f[0].g[k], f[1].g[k], f[2].g[k])),
-                c: quad(f[0].c, f[1].c, f[2].c),
-                scaled: false,
+                c,
+                scaled,
             });
         }
     }
