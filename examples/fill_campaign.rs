@@ -79,15 +79,20 @@ fn main() {
                     );
                 }
                 let n = 509;
-                let (br, bl) = (arch.beta_right(), arch.beta_left());
+                // the springings as `Arch::new` stores them (it may round β_L by an ulp)
+                let base = Arch::new(arch.beta_right(), arch.beta_left(), weight).unwrap();
+                let (br, bl) = (base.beta_right(), base.beta_left());
+                // the last joint is the springing itself (br + (bl − br) may round off it)
                 let joints: Vec<f64> = (0..=n)
-                    .map(|i| br + (bl - br) * i as f64 / n as f64)
+                    .map(|i| {
+                        if i == n {
+                            bl
+                        } else {
+                            br + (bl - br) * i as f64 / n as f64
+                        }
+                    })
                     .collect();
-                let cut = Arch::new(br, bl, weight)
-                    .unwrap()
-                    .with_joints(&joints)
-                    .unwrap()
-                    .with_fill(fill);
+                let cut = base.with_joints(&joints).unwrap().with_fill(fill);
                 match arch_enum::limit::solve(&cut, mu, &settings)
                     .unwrap()
                     .outcome

@@ -215,7 +215,13 @@ fn continuous_arch_with_fill_is_the_limit_of_fine_discretisations() {
         // numbers of voussoirs with no common joints but the springings and the crown
         for n in [31, 127, 509] {
             let joints: Vec<f64> = (0..=n)
-                .map(|i| br + (bl - br) * i as f64 / n as f64)
+                .map(|i| {
+                    if i == n {
+                        bl
+                    } else {
+                        br + (bl - br) * i as f64 / n as f64
+                    }
+                })
                 .collect();
             let discrete = Arch::new(br, bl, WeightModel::Centreline)
                 .unwrap()
