@@ -61,12 +61,13 @@ fn main() {
             format!("{:?}", solved.outcome),
             format!("{:?}", s.solution.outcome)
         );
-        if s.solution
-            .scan
-            .as_ref()
-            .is_some_and(|sc| !sc.gaps().is_empty())
-        {
+        if let Some(sc) = s.solution.scan.as_ref().filter(|sc| !sc.gaps().is_empty()) {
             gaps += 1;
+            println!(
+                "case {case}: alpha {alpha:?} mu {mu:?} {fill:?} {weight:?}: admissible from eta = {:?}, not at {:?}",
+                sc.lowest().map(|i| sc.etas[i]),
+                sc.gaps()
+            );
         }
         match &s.solution.outcome {
             Outcome::Limit(ls) => {

@@ -245,3 +245,69 @@ fn continuous_arch_with_fill_is_the_limit_of_fine_discretisations() {
         );
     }
 }
+
+/// An arch whose admissible thicknesses are not an interval (found by
+/// `examples/fill_campaign`): a horseshoe under heavy, shallow fill near its friction limit.
+/// Thicker rings carry relatively less fill, and past some η the friction no longer
+/// suffices, so nothing stands above an upper thickness η_up. The reference (its own scan
+/// and bisection) finds the same η_s and the same η_up; the crate's scan reports the gap,
+/// and its complete search lists the limit states where P(η) closes, at η_up.
+#[test]
+fn admissible_thicknesses_need_not_be_an_interval() {
+    let alpha = 0.1825328807489831;
+    let (br, bl) = (-alpha, PI + alpha);
+    let n = 64;
+    let joints: Vec<f64> = (0..=n)
+        .map(|i| {
+            if i == n {
+                bl
+            } else {
+                br + (bl - br) * i as f64 / n as f64
+            }
+        })
+        .collect();
+    let c = Case {
+        br,
+        bl,
+        joints,
+        centroid: false,
+        gf: 1.4170008626893624,
+        h: 0.030118768852026835,
+        mu: 0.3972687290844831,
+    };
+    let (eta_s, interval) = c
+        .eta_s()
+        .expect("the reference finds an admissible thickness");
+    assert!(
+        !interval,
+        "the reference's scan finds the admissible set an interval"
+    );
+    // the reference's upper end: bisection above η_s on its own feasibility
+    let (mut lo, mut hi) = (eta_s * 1.01, 1.99);
+    assert!(c.feasible(lo) && !c.feasible(hi));
+    while hi - lo > 1e-11 * hi {
+        let mid = 0.5 * (lo + hi);
+        if c.feasible(mid) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let settings = Settings::default();
+    let survey = arch_enum::limit_states::survey(&c.arch(), c.mu, &settings).unwrap();
+    let Outcome::Limit(ls) = &survey.solution.outcome else {
+        panic!("{:?}", survey.solution.outcome);
+    };
+    assert!((ls.eta_static - eta_s).abs() < 1e-7 * eta_s);
+    let scan = survey.solution.scan.as_ref().unwrap();
+    assert!(
+        !scan.gaps().is_empty(),
+        "the crate's scan finds an interval"
+    );
+    let states = survey.states.as_ref().expect("the search completes");
+    let top = states.above.iter().map(|s| s.t).fold(0.0, f64::max);
+    assert!(
+        (top - lo).abs() < 1e-7 * lo,
+        "the last limit state {top} is not where P closes, {lo}"
+    );
+}
