@@ -38,6 +38,8 @@ impl FillArgs {
         masonry: Option<(f64, f64)>,
     ) -> Result<Option<(Fill, FillJson)>, InputError> {
         if let (Some(g), Some(h)) = (self.fill_ratio, self.fill_height) {
+            let g = crate::input::check_non_negative("--fill-ratio", g)?;
+            let h = crate::input::check_non_negative("--fill-height", h)?;
             let fill = Fill::new(g, h)?;
             return Ok(Some((fill, fill_json(&fill, None, None))));
         }

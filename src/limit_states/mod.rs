@@ -107,6 +107,11 @@ pub fn search_after(sol: &Solution, settings: &Settings) -> Result<LimitStates, 
     search_from(sol, settings)
 }
 
+/// With fill the sweep's rows are η φ, whose terms span 1/η in magnitude: below this η_s
+/// the limit-state search is declined (a shallow segment of 0.07 rad under fill, η_s =
+/// 1.8e-6, ran for minutes in the sweep).
+const FILL_SWEEP_MIN_ETA: f64 = 1e-4;
+
 fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Undecided> {
     let (arch, mu) = (&sol.arch, sol.mu);
     if let (Some(sliding), Outcome::Limit(ls)) = (&sol.vertical, &sol.outcome) {
@@ -144,6 +149,11 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Undec
         return Err(Undecided::NotCovered(
             "with fill, eta_s is an infimum (the least states' reactions grow without bound): the limit-state search above it is not covered yet".into(),
         ));
+    }
+    if arch.fill().is_some() && eta_s < FILL_SWEEP_MIN_ETA {
+        return Err(Undecided::Resolution(format!(
+            "with fill, eta_s = {eta_s:e} is below {FILL_SWEEP_MIN_ETA:e}: there the fill's 1/eta spreads the sweep's polynomials over that many orders of magnitude, and their roots are not resolved"
+        )));
     }
     if eta_s < settings.sweep_min_eta {
         return Err(Undecided::Resolution(format!(

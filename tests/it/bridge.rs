@@ -874,6 +874,46 @@ fn solve_takes_fill_in_kn_and_non_dimensionally() {
         err.contains("--fill-weight") && err.contains("--unit-weight"),
         "{err}"
     );
+    for (flag, bad) in [
+        ("--fill-ratio", ["nan", "0.1"]),
+        ("--fill-height", ["1", "-0.1"]),
+    ] {
+        let out = arch_enum()
+            .args([
+                "solve",
+                "--alpha",
+                "0",
+                "--mu",
+                "0.6",
+                "--fill-ratio",
+                bad[0],
+            ])
+            .args(["--fill-height", bad[1]])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2));
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert!(err.contains(&format!("invalid value for {flag}")), "{err}");
+    }
+    // a shallow segment under fill with η_s below 1e-4: η_s answered, the search declined
+    // by name (the sweep's rows span 1/η there)
+    let (doc, _) = json_of(&[
+        "solve",
+        "--alpha",
+        "-1.5",
+        "--fill-ratio",
+        "1",
+        "--fill-height",
+        "0.1",
+        "--mu",
+        "0.6",
+    ]);
+    assert!(doc["eta"].as_f64().unwrap() < 1e-4);
+    assert_eq!(doc["search"]["complete"], false);
+    assert!(doc["search"]["reason"]
+        .as_str()
+        .unwrap()
+        .contains("with fill"));
 }
 
 /// `plot arch` with fill: the least thickness of the arch with its fill, drawn with the
