@@ -126,6 +126,19 @@ impl Case {
     }
 }
 
+/// The joints of `n` equal voussoirs, the last exactly the left springing.
+fn equal_joints(br: f64, bl: f64, n: usize) -> Vec<f64> {
+    (0..=n)
+        .map(|i| {
+            if i == n {
+                bl
+            } else {
+                br + (bl - br) * i as f64 / n as f64
+            }
+        })
+        .collect()
+}
+
 fn random_case(rng: &mut Rng) -> Case {
     let n = 3 + (rng.next() * 6.0) as usize;
     let br = -0.4 + 0.9 * rng.next();
@@ -214,18 +227,9 @@ fn continuous_arch_with_fill_is_the_limit_of_fine_discretisations() {
         let mut errs = Vec::new();
         // numbers of voussoirs with no common joints but the springings and the crown
         for n in [31, 127, 509] {
-            let joints: Vec<f64> = (0..=n)
-                .map(|i| {
-                    if i == n {
-                        bl
-                    } else {
-                        br + (bl - br) * i as f64 / n as f64
-                    }
-                })
-                .collect();
             let discrete = Arch::new(br, bl, WeightModel::Centreline)
                 .unwrap()
-                .with_joints(&joints)
+                .with_joints(&equal_joints(br, bl, n))
                 .unwrap()
                 .with_fill(fill);
             let Outcome::Limit(d) = solve(&discrete, mu, &settings).unwrap().outcome else {
@@ -256,20 +260,10 @@ fn continuous_arch_with_fill_is_the_limit_of_fine_discretisations() {
 fn admissible_thicknesses_need_not_be_an_interval() {
     let alpha = 0.1825328807489831;
     let (br, bl) = (-alpha, PI + alpha);
-    let n = 64;
-    let joints: Vec<f64> = (0..=n)
-        .map(|i| {
-            if i == n {
-                bl
-            } else {
-                br + (bl - br) * i as f64 / n as f64
-            }
-        })
-        .collect();
     let c = Case {
         br,
         bl,
-        joints,
+        joints: equal_joints(br, bl, 64),
         centroid: false,
         gf: 1.4170008626893624,
         h: 0.030118768852026835,
