@@ -7,7 +7,7 @@
 
 use crate::load_reference::fill_by_simpson;
 use crate::model::ntm;
-use crate::search_reference::{random_joints, Rng};
+use crate::search_reference::{equal_joints, random_joints, Rng};
 use arch_enum::bridge::Fill;
 use arch_enum::limit::{solve, Outcome};
 use arch_enum::{Arch, Settings, WeightModel};
@@ -124,19 +124,6 @@ impl Case {
             .unwrap()
             .with_fill(Fill::new(self.gf, self.h).unwrap())
     }
-}
-
-/// The joints of `n` equal voussoirs, the last exactly the left springing.
-fn equal_joints(br: f64, bl: f64, n: usize) -> Vec<f64> {
-    (0..=n)
-        .map(|i| {
-            if i == n {
-                bl
-            } else {
-                br + (bl - br) * i as f64 / n as f64
-            }
-        })
-        .collect()
 }
 
 fn random_case(rng: &mut Rng) -> Case {

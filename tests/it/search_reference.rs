@@ -1612,15 +1612,7 @@ fn virtual_work_identity_at_every_limit_state() {
             (-0.6 + 1.2 * rng.next(), PI - 0.6 + 1.2 * rng.next())
         };
         let joints = if case < 4 {
-            (0..=n)
-                .map(|i| {
-                    if i == n {
-                        bl
-                    } else {
-                        br + (bl - br) * i as f64 / n as f64
-                    }
-                })
-                .collect()
+            equal_joints(br, bl, n)
         } else {
             random_joints(&mut rng, br, bl, n)
         };
@@ -1676,6 +1668,19 @@ impl Rng {
         let v = self.0.wrapping_mul(0x2545_f491_4f6c_dd1d);
         (v >> 11) as f64 / (1u64 << 53) as f64
     }
+}
+
+/// The joints of `n` equal voussoirs, the last exactly the left springing.
+pub fn equal_joints(br: f64, bl: f64, n: usize) -> Vec<f64> {
+    (0..=n)
+        .map(|i| {
+            if i == n {
+                bl
+            } else {
+                br + (bl - br) * i as f64 / n as f64
+            }
+        })
+        .collect()
 }
 
 pub fn random_joints(rng: &mut Rng, br: f64, bl: f64, blocks: usize) -> Vec<f64> {
