@@ -57,8 +57,8 @@ pub fn reaction_scale(x: &Reactions) -> f64 {
 }
 
 /// N, T, M at one angle as affine functions of x, with their first and second
-/// β-derivatives (index = order of the derivative), and the first and second η-derivatives
-/// of their constant terms (the centroid model's ρ(η) in M; the fill's 1/η in all three).
+/// β-derivatives (index = order of the derivative). Their η-derivatives, which only the
+/// thickness family needs, are [`eta_terms`].
 #[derive(Debug, Clone, Copy)]
 pub struct Actions {
     /// N, dN/dβ, d²N/dβ².
@@ -67,13 +67,96 @@ pub struct Actions {
     pub t: [Affine; 3],
     /// M, dM/dβ, d²M/dβ².
     pub m: [Affine; 3],
-    /// `d_eta[a][o]`: ∂/∂η of action a (N, T, M) at β-derivative order o (only M's, from
-    /// ρ(η), without fill; zero for the centreline model).
-    pub d_eta: [[f64; 3]; 3],
-    /// ∂²/∂η², likewise.
-    pub d2_eta: [[f64; 3]; 3],
-    /// Whether a fill loads the arch (then N and T depend on η too).
-    pub filled: bool,
+}
+
+/// The first and second η-derivatives of the constant terms of N, T, M at one angle (each
+/// with its β-derivatives of order 0 to 2): the true centroid's ρ(η) in M, and with fill the
+/// fill's 1/η in all three. Apart from [`Actions`], so that a scan of the ring pays nothing
+/// for them.
+#[derive(Debug, Clone, Copy)]
+pub struct EtaTerms {
+    /// ∂M/∂η of the ring's weight (zero for the centreline model), by β-order.
+    ring: [f64; 3],
+    /// ∂²M/∂η² of the ring's weight, by β-order.
+    ring2: [f64; 3],
+    /// With fill, `[k][action][order]`: the (k+1)-th η-derivative of the fill's N, T, M
+    /// ([`crate::fill::FillActions::eta`]).
+    fill: Option<[[[f64; 3]; 3]; 2]>,
+}
+
+/// The η-derivatives of the internal actions of `arch` at thickness `eta` and angle `beta`.
+pub fn eta_terms(arch: &Arch, eta: f64, beta: Radians) -> EtaTerms {
+    let (s, c) = beta.sin_cos();
+    let sr = arch.right_sin_cos().0;
+    let drho = arch.weight().drho_deta(eta);
+    let d2rho = arch.weight().d2rho_deta2(eta);
+    EtaTerms {
+        ring: [-drho * (s - sr), -drho * c, drho * s],
+        ring2: [-d2rho * (s - sr), -d2rho * c, d2rho * s],
+        fill: arch
+            .fill()
+            .map(|f| f.actions(arch.springings(), eta, beta).eta),
+    }
+}
+
+impl EtaTerms {
+    /// Whether the sliding rows depend on η (only through a fill).
+    pub fn moves_sliding(&self) -> bool {
+        self.fill.is_some()
+    }
+
+    /// ∂/∂η of the activation function of `mode` (β-derivative `order`) at thickness `eta`,
+    /// friction `mu`, where N (of that order) is `n`: ±∂M/∂η − N/2 − (η/2) ∂N/∂η for a hinge,
+    /// ±∂T/∂η − μ ∂N/∂η for sliding (the η-terms of N and T come from the fill alone).
+    #[inline]
+    pub fn activation_d_eta(
+        &self,
+        mode: ContactKind,
+        order: usize,
+        (eta, mu): (f64, f64),
+        n: f64,
+    ) -> f64 {
+        let dm = self.ring[order];
+        let ring = match mode {
+            ContactKind::HingeExtrados => -0.5 * n + dm,
+            ContactKind::HingeIntrados => -0.5 * n - dm,
+            _ => 0.0,
+        };
+        let Some(f) = &self.fill else {
+            return ring;
+        };
+        let [dn, dt, dm] = f[0].map(|a| a[order]);
+        ring + match mode {
+            ContactKind::HingeExtrados => dm - 0.5 * eta * dn,
+            ContactKind::HingeIntrados => -dm - 0.5 * eta * dn,
+            ContactKind::SlidePlus => dt - mu * dn,
+            ContactKind::SlideMinus => -dt - mu * dn,
+        }
+    }
+
+    /// ∂²/∂η² of the activation function of `mode` (β-derivative `order`) at (η, μ):
+    /// ±∂²M/∂η² − ∂N/∂η − (η/2) ∂²N/∂η² for a hinge, ±∂²T/∂η² − μ ∂²N/∂η² for sliding
+    /// (independent of x: η enters the gradient linearly).
+    #[inline]
+    pub fn activation_d2_eta(&self, mode: ContactKind, order: usize, (eta, mu): (f64, f64)) -> f64 {
+        let d2m = self.ring2[order];
+        let ring = match mode {
+            ContactKind::HingeExtrados => d2m,
+            ContactKind::HingeIntrados => -d2m,
+            _ => 0.0,
+        };
+        let Some(f) = &self.fill else {
+            return ring;
+        };
+        let dn = f[0][0][order];
+        let [d2n, d2t, d2m] = f[1].map(|a| a[order]);
+        ring + match mode {
+            ContactKind::HingeExtrados => d2m - dn - 0.5 * eta * d2n,
+            ContactKind::HingeIntrados => -d2m - dn - 0.5 * eta * d2n,
+            ContactKind::SlidePlus => d2t - mu * d2n,
+            ContactKind::SlideMinus => -d2t - mu * d2n,
+        }
+    }
 }
 
 /// N, T, M alone (no β-derivatives) at angle `beta` with (sin β, cos β) given: what a scan
@@ -140,10 +223,7 @@ pub fn actions(arch: &Arch, eta: f64, beta: Radians) -> Actions {
 /// [`Arch::joint_sin_cos`]): the same arithmetic, the same bits.
 #[inline]
 pub fn actions_with(arch: &Arch, eta: f64, beta: Radians, (s, c): (f64, f64)) -> Actions {
-    let sr = arch.right_sin_cos().0;
     let rho = arch.weight().rho(eta);
-    let drho = arch.weight().drho_deta(eta);
-    let d2rho = arch.weight().d2rho_deta2(eta);
     let [n0, t0, m0] = ring_forces(arch, eta, beta, (s, c));
     // dN = T − cos β, dT = −N + sin β, dM = −T + (1 − ρ) cos β
     let n1 = Affine {
@@ -175,13 +255,6 @@ pub fn actions_with(arch: &Arch, eta: f64, beta: Radians, (s, c): (f64, f64)) ->
         n: [n0, n1, n2],
         t: [t0, t1, t2],
         m: [m0, m1, m2],
-        d_eta: [[0.0; 3], [0.0; 3], [-drho * (s - sr), -drho * c, drho * s]],
-        d2_eta: [
-            [0.0; 3],
-            [0.0; 3],
-            [-d2rho * (s - sr), -d2rho * c, d2rho * s],
-        ],
-        filled: false,
     };
     if let Some(fill) = arch.fill() {
         // the identities above hold for the ring's weight alone: the fill adds its own
@@ -190,12 +263,7 @@ pub fn actions_with(arch: &Arch, eta: f64, beta: Radians, (s, c): (f64, f64)) ->
             a.n[order].c += f.n[order];
             a.t[order].c += f.t[order];
             a.m[order].c += f.m[order];
-            for action in 0..3 {
-                a.d_eta[action][order] += f.eta[0][action][order];
-                a.d2_eta[action][order] += f.eta[1][action][order];
-            }
         }
-        a.filled = true;
     }
     a
 }
@@ -211,57 +279,6 @@ impl Actions {
             eta,
             mu,
         )
-    }
-
-    /// ∂/∂η of the activation function of `mode` (β-derivative `order`) at thickness `eta`,
-    /// friction `mu` and reactions x: ±∂M/∂η − N/2 − (η/2) ∂N/∂η for a hinge, ±∂T/∂η − μ ∂N/∂η
-    /// for sliding (the η-terms of N and T come from the fill alone).
-    #[inline]
-    pub fn activation_d_eta(
-        &self,
-        mode: ContactKind,
-        order: usize,
-        (eta, mu): (f64, f64),
-        x: &Reactions,
-    ) -> f64 {
-        let n = self.n[order].at(x);
-        let [dn, dt, dm] = self.d_eta.map(|a| a[order]);
-        let ring = match mode {
-            ContactKind::HingeExtrados => -0.5 * n + dm,
-            ContactKind::HingeIntrados => -0.5 * n - dm,
-            _ => 0.0,
-        };
-        if !self.filled {
-            return ring;
-        }
-        ring + match mode {
-            ContactKind::HingeExtrados | ContactKind::HingeIntrados => -0.5 * eta * dn,
-            ContactKind::SlidePlus => dt - mu * dn,
-            ContactKind::SlideMinus => -dt - mu * dn,
-        }
-    }
-
-    /// ∂²/∂η² of the activation function of `mode` (β-derivative `order`) at (η, μ):
-    /// ±∂²M/∂η² − ∂N/∂η − (η/2) ∂²N/∂η² for a hinge, ±∂²T/∂η² − μ ∂²N/∂η² for sliding
-    /// (independent of x: η enters the gradient linearly).
-    #[inline]
-    pub fn activation_d2_eta(&self, mode: ContactKind, order: usize, (eta, mu): (f64, f64)) -> f64 {
-        let [_, _, d2m] = self.d2_eta.map(|a| a[order]);
-        let ring = match mode {
-            ContactKind::HingeExtrados => d2m,
-            ContactKind::HingeIntrados => -d2m,
-            _ => 0.0,
-        };
-        if !self.filled {
-            return ring;
-        }
-        let dn = self.d_eta[0][order];
-        let [d2n, d2t, _] = self.d2_eta.map(|a| a[order]);
-        ring + match mode {
-            ContactKind::HingeExtrados | ContactKind::HingeIntrados => -dn - 0.5 * eta * d2n,
-            ContactKind::SlidePlus => d2t - mu * d2n,
-            ContactKind::SlideMinus => -d2t - mu * d2n,
-        }
     }
 
     /// ∂/∂μ of the activation function of `mode` (β-derivative `order`) at x.

@@ -3,7 +3,7 @@
 use super::traits::{Family, Param, ParamDerivative, Rows};
 use crate::arch::{Arch, Radians};
 use crate::contact::ContactKind;
-use crate::statics::{actions, Actions, Affine, Reactions};
+use crate::statics::{actions, eta_terms, Actions, Affine, EtaTerms, Reactions};
 
 /// The arch under its self-weight; the parameter is the thickness ratio η.
 #[derive(Debug, Clone, Copy)]
@@ -16,6 +16,7 @@ pub struct Thickness<'a> {
 #[derive(Debug, Clone)]
 pub struct ThicknessRows {
     actions: Actions,
+    eta_terms: EtaTerms,
     kind: ContactKind,
     eta: f64,
     mu: f64,
@@ -32,6 +33,7 @@ impl<'a> Family for Thickness<'a> {
     fn local(&self, kind: ContactKind, beta: Radians, _: (), eta: f64, mu: f64) -> ThicknessRows {
         ThicknessRows {
             actions: actions(self.arch, eta, beta),
+            eta_terms: eta_terms(self.arch, eta, beta),
             kind,
             eta,
             mu,
@@ -54,7 +56,8 @@ impl Rows for ThicknessRows {
         let a = &self.actions;
         match p {
             Param::T => {
-                if !self.kind.is_hinge() && !a.filled {
+                let e = &self.eta_terms;
+                if !self.kind.is_hinge() && !e.moves_sliding() {
                     return ParamDerivative::ZERO;
                 }
                 let grad = if self.kind.is_hinge() {
@@ -64,9 +67,9 @@ impl Rows for ThicknessRows {
                 };
                 let at = (self.eta, self.mu);
                 ParamDerivative {
-                    value: a.activation_d_eta(self.kind, order, at, x),
+                    value: e.activation_d_eta(self.kind, order, at, a.n[order].at(x)),
                     grad,
-                    second: a.activation_d2_eta(self.kind, order, at),
+                    second: e.activation_d2_eta(self.kind, order, at),
                 }
             }
             Param::Mu => {

@@ -236,6 +236,13 @@ pub(super) fn det3(m: [[&Poly; 3]; 3]) -> Poly {
         .add(&m[0][2].mul(&minor(m[1][0], m[1][1], m[2][0], m[2][1])))
 }
 
+/// A crossing polynomial of a scaled row with its power of η divided out (same sign for
+/// η > 0); out of line, so that the ring's hot path `along` stays as it was.
+#[inline(never)]
+fn deflated(p: Poly) -> Poly {
+    p.shifted_down(p.zero_order())
+}
+
 /// A vertex of P(η): three planes and its path x(η) = num(η)/det(η) (Cramer's rule).
 #[derive(Debug, Clone)]
 pub(super) struct Vertex {
@@ -286,13 +293,13 @@ impl Vertex {
         [0, 1, 2].map(|k| self.num[k].eval(eta) / d)
     }
     /// φ_l(x(η), η) · det(η), a polynomial.
+    #[inline]
     pub(super) fn along(&self, l: &Plane) -> Poly {
         let p = (0..3).fold(l.c.mul(&self.det), |acc, k| {
             acc.add(&l.g[k].mul(&self.num[k]))
         });
         if self.scaled || l.scaled {
-            // a power of η from the scaled rows: divided out (same sign for η > 0)
-            return p.shifted_down(p.zero_order());
+            return deflated(p);
         }
         p
     }
