@@ -54,6 +54,20 @@ pub struct ArchSpec {
     pub weight: WeightModel,
     /// The joints of a discrete arch; `null` for a continuous one.
     pub joint_angles: Option<Vec<f64>>,
+    /// Fill above the extrados up to a level road (bridge spec §2), a dead load; absent
+    /// without fill.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fill: Option<FillSpec>,
+}
+
+/// The fill of a certificate's arch: unit weight g_f = γ_f/γ and the road's height h = h_c/r
+/// above the highest extrados point (non-dimensional, r = 1).
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+pub struct FillSpec {
+    /// g_f ≥ 0.
+    pub weight_ratio: f64,
+    /// h ≥ 0.
+    pub depth: f64,
 }
 
 /// The upper-bound side: an admissible state at η_hi.
@@ -324,6 +338,9 @@ pub enum LoadKind {
     Horizontal,
     /// A vertical (downward) point load λ (units of γ t d r) at an extrados point.
     Point,
+    /// A vertical pressure λ·q on the extrados: uniform patches over horizontal intervals
+    /// and point loads (a vehicle spread through the fill, bridge spec §3).
+    Pressure,
 }
 
 /// The sense of a horizontal body force (a closed set).
@@ -360,6 +377,33 @@ pub struct LoadSpec {
     /// horizontal load.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub beta: Option<f64>,
+    /// Pressure: its uniform patches; absent for the other loads.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub patches: Option<Vec<PatchSpec>>,
+    /// Pressure: its point loads; absent for the other loads.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub points: Option<Vec<PointSpec>>,
+}
+
+/// A patch of a pressure: q per unit horizontal length (per unit λ, in γ t d r) over
+/// x_lo < x < x_hi of the extrados (x from the centre towards the right springing, r = 1).
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+pub struct PatchSpec {
+    /// Left end.
+    pub x_lo: f64,
+    /// Right end.
+    pub x_hi: f64,
+    /// Intensity (≥ 0).
+    pub q: f64,
+}
+
+/// A point load of a pressure: q (per unit λ) at the extrados point of angle `beta`.
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+pub struct PointSpec {
+    /// Angle of the loaded extrados point (radians).
+    pub beta: f64,
+    /// The load (≥ 0).
+    pub q: f64,
 }
 
 /// A state (x, λ) of the load problem, or a direction (d_x, d_λ).

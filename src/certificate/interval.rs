@@ -61,6 +61,20 @@ impl Interval {
             hi: self.hi.max(o.hi),
         }
     }
+    /// An enclosure of max(x, y) over x in `self`, y in `o` (exact: no rounding).
+    pub fn max(self, o: Interval) -> Interval {
+        Interval {
+            lo: self.lo.max(o.lo),
+            hi: self.hi.max(o.hi),
+        }
+    }
+    /// An enclosure of min(x, y) over x in `self`, y in `o` (exact: no rounding).
+    pub fn min(self, o: Interval) -> Interval {
+        Interval {
+            lo: self.lo.min(o.lo),
+            hi: self.hi.min(o.hi),
+        }
+    }
     /// Whether 0 lies outside the interval.
     pub fn excludes_zero(self) -> bool {
         self.lo > 0.0 || self.hi < 0.0

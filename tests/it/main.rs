@@ -2,6 +2,7 @@
 
 mod assess;
 mod bridge;
+mod bridge_certificates;
 mod certificates;
 mod cli;
 mod compas;

@@ -2,7 +2,7 @@
 //! section still empty.
 
 use crate::arch::{Arch, JointLayout};
-use crate::certificate::format::{ArchSpec, Certificate, Claim, FORMAT, VERSION};
+use crate::certificate::format::{ArchSpec, Certificate, Claim, FillSpec, FORMAT, VERSION};
 
 pub(super) fn spec(arch: &Arch) -> ArchSpec {
     ArchSpec {
@@ -13,6 +13,10 @@ pub(super) fn spec(arch: &Arch) -> ArchSpec {
             JointLayout::Continuous => None,
             JointLayout::Discrete(j) => Some(j.clone()),
         },
+        fill: arch.fill().map(|f| FillSpec {
+            weight_ratio: f.weight_ratio,
+            depth: f.depth,
+        }),
     }
 }
 

@@ -2,7 +2,9 @@
 //! a loaded section, the rows in (h, v, w, λ), the order of the lists.
 
 use crate::arch::Arch;
-use crate::certificate::format::{CertJoint, LoadKind, LoadSpec, PatternJoint, Side, Towards};
+use crate::certificate::format::{
+    CertJoint, LoadKind, LoadSpec, PatchSpec, PatternJoint, PointSpec, Side, Towards,
+};
 use crate::contact::Contact;
 use crate::load::{live_activation, LiveLoad};
 use crate::statics::{actions, Affine};
@@ -23,14 +25,42 @@ pub(super) fn load_spec(eta: f64, load: &LiveLoad) -> LoadSpec {
                 Towards::Left
             }),
             beta: None,
+            patches: None,
+            points: None,
         },
         LiveLoad::Point { beta } => LoadSpec {
             eta,
             kind: LoadKind::Point,
             towards: None,
             beta: Some(beta),
+            patches: None,
+            points: None,
         },
-        LiveLoad::Pressure(_) => unreachable!("certify_load refuses pressures"),
+        LiveLoad::Pressure(p) => LoadSpec {
+            eta,
+            kind: LoadKind::Pressure,
+            towards: None,
+            beta: None,
+            patches: Some(
+                p.patches()
+                    .iter()
+                    .map(|q| PatchSpec {
+                        x_lo: q.x_lo,
+                        x_hi: q.x_hi,
+                        q: q.q,
+                    })
+                    .collect(),
+            ),
+            points: Some(
+                p.points()
+                    .iter()
+                    .map(|q| PointSpec {
+                        beta: q.beta,
+                        q: q.q,
+                    })
+                    .collect(),
+            ),
+        },
     }
 }
 
@@ -83,12 +113,14 @@ pub(super) fn joint(load: Option<&LiveLoad>, (c, side): Loaded) -> PatternJoint 
 }
 
 /// Whether the section of a loaded contact carries the live load (every section for a
-/// horizontal load; for a point load those after it, and the `After` side of its own).
+/// horizontal load and a pressure; for a point load those after it, and the `After` side
+/// of its own).
 pub(super) fn carries(load: &LiveLoad, (c, side): Loaded) -> bool {
     match *load {
         LiveLoad::Horizontal { .. } => true,
         LiveLoad::Point { beta } => c.beta > beta || (c.beta == beta && side == Side::After),
-        LiveLoad::Pressure(_) => unreachable!("certify_load refuses pressures"),
+        // λ enters every section's rows (its patches and point loads are not split out)
+        LiveLoad::Pressure(_) => true,
     }
 }
 

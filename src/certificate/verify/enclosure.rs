@@ -3,7 +3,7 @@
 //! second-order Taylor enclosures with adaptive splitting over a continuum of angles, or the
 //! values at the listed joints of a discrete arch, in interval arithmetic.
 
-use super::live::{Live, StateAt};
+use super::live::{Live, Span, StateAt};
 use super::report::{reject, Rejection};
 use super::statics::{kinds, phi, Model, Ntm};
 use crate::certificate::format::ContactKind;
@@ -70,16 +70,18 @@ pub(super) fn prove_with_live(
     strict: bool,
     what: &str,
 ) -> Result<usize, Rejection> {
+    let whole = [Span::whole(model)];
     let spec = match load {
-        Some((live, _)) => live.pieces(model),
-        None => vec![(model.beta_r, model.beta_l, false)],
+        Some((live, _)) => live.pieces(),
+        None => &whole[..],
     };
     let evals: Vec<Eval> = spec
         .iter()
-        .map(|&(_, _, carries)| -> Eval {
+        .map(|span| -> Eval {
+            let at = span.at;
             Box::new(move |b: I| {
                 let n = base(b);
-                match load.and_then(|(live, lambda)| Some((live.ntm(model, b, carries)?, lambda))) {
+                match load.and_then(|(live, lambda)| Some((live.ntm(model, b, at)?, lambda))) {
                     Some((l, lambda)) => n.plus(lambda, &l),
                     None => n,
                 }
@@ -89,10 +91,11 @@ pub(super) fn prove_with_live(
     let pieces: Vec<Piece> = spec
         .iter()
         .zip(&evals)
-        .map(|(&(a, b, _), f)| Piece {
-            a,
-            b,
+        .map(|(span, f)| Piece {
+            a: span.a,
+            b: span.b,
             eval: f.as_ref(),
+            smooth: span.smooth,
         })
         .collect();
     prove_pieces(model, &pieces, eta, mu, kinds(mu), strict, what)
@@ -107,6 +110,24 @@ pub(super) struct Piece<'a> {
     pub(super) b: f64,
     /// N, T, M and their β-derivatives over an interval of angles inside [a, b].
     pub(super) eval: &'a dyn Fn(I) -> Ntm,
+    /// Whether φ' is continuous on [a, b] (a Taylor form holds); else φ is enclosed over
+    /// each subinterval directly (the sliver around a patch's edge).
+    pub(super) smooth: bool,
+}
+
+/// Upper bound of φ over [a, b] from its enclosure there, and a lower bound at the midpoint
+/// (for a piece where φ' jumps).
+fn direct_upper(
+    eval: &dyn Fn(I) -> Ntm,
+    kind: ContactKind,
+    a: f64,
+    b: f64,
+    eta: f64,
+    mu: Option<f64>,
+) -> (f64, f64) {
+    let over = phi(kind, 0, &eval(I::new(a, b)), eta, mu);
+    let at_m = phi(kind, 0, &eval(I::point(0.5 * (a + b))), eta, mu);
+    (over.hi, at_m.lo)
 }
 
 /// Proves φ ≤ 0 (φ < 0 with `strict`) for the activation functions `kinds` on every
@@ -159,7 +180,11 @@ pub(super) fn prove_pieces(
                         "{what}: enclosure work limit reached without a proof"
                     ));
                 }
-                let (upper, lower_mid) = taylor_upper(eval, kind, a, b, eta, mu);
+                let (upper, lower_mid) = if piece.smooth {
+                    taylor_upper(eval, kind, a, b, eta, mu)
+                } else {
+                    direct_upper(eval, kind, a, b, eta, mu)
+                };
                 if upper < 0.0 || (!strict && upper <= 0.0) {
                     continue;
                 }

@@ -4,7 +4,7 @@
 //! do not enter the rows left out.
 
 use super::joints::check_farkas_joint;
-use super::live::{side_text, Live};
+use super::live::{section, side_text, Live};
 use super::report::{reject, Rejection};
 use super::statics::{affine, phi, Model};
 use crate::certificate::format::{CertJoint, LoadFarkas};
@@ -23,7 +23,7 @@ fn joint_row(
     // `exists` guarantees a finite μ for sliding rows; hinge rows do not use it
     let (g, c) = affine(model, j.kind, j.beta, I::point(eta), mu.unwrap_or(0.0));
     let l = live
-        .and_then(|live| live.ntm(model, I::point(j.beta), live.carries(j.beta, j.side)))
+        .and_then(|live| live.ntm(model, I::point(j.beta), section(j.beta, j.side)))
         .map_or(I::point(0.0), |l| phi(j.kind, 0, &l, eta, mu));
     (g, c, l)
 }
@@ -83,7 +83,7 @@ pub(super) fn prove_farkas(
         ));
     }
     for (i, j) in joints.iter().enumerate() {
-        check_farkas_joint(model, i, j, mu, None)?;
+        check_farkas_joint(model, i, j, mu, &[])?;
         if friction_only && j.kind.is_hinge() {
             return reject(format!(
                 "collapse side: joint {i} is {}, but the friction-only certificate may use sliding joints only",
@@ -158,7 +158,7 @@ fn prove_reduced(
     with_lambda: bool,
 ) -> Result<f64, Rejection> {
     for (i, j) in f.joints.iter().enumerate() {
-        check_farkas_joint(model, i, j, mu, live.split())?;
+        check_farkas_joint(model, i, j, mu, live.splits())?;
     }
     let mut dropped = Vec::new();
     if f.joints.iter().all(|j| !j.kind.is_hinge()) {
@@ -169,7 +169,7 @@ fn prove_reduced(
         .iter()
         .map(|j| live.carries(j.beta, j.side))
         .collect();
-    let point = live.split().is_some();
+    let point = live.point().is_some();
     if with_lambda
         && f.lambda_row.is_none()
         && (carried.iter().all(|c| !c) || (point && carried.iter().all(|&c| c)))

@@ -3,6 +3,7 @@
 
 use super::report::{reject, Rejection};
 use super::statics::Model;
+use super::vertical::FillModel;
 use crate::certificate::format::{Certificate, WeightModel};
 use std::f64::consts::PI;
 
@@ -16,8 +17,26 @@ pub(super) fn check_finite(cert: &Certificate) -> Result<(), Rejection> {
     if let Some(js) = &cert.arch.joint_angles {
         nums.extend(js.iter().map(|&b| ("arch.joint_angles", b)));
     }
+    if let Some(f) = &cert.arch.fill {
+        nums.extend([
+            ("arch.fill.weight_ratio", f.weight_ratio),
+            ("arch.fill.depth", f.depth),
+        ]);
+    }
     if let Some(mu) = cert.mu {
         nums.push(("mu", mu));
+    }
+    if let Some(l) = &cert.load {
+        for p in l.patches.iter().flatten() {
+            nums.extend([
+                ("load.patches", p.x_lo),
+                ("load.patches", p.x_hi),
+                ("load.patches", p.q),
+            ]);
+        }
+        for p in l.points.iter().flatten() {
+            nums.extend([("load.points", p.beta), ("load.points", p.q)]);
+        }
     }
     if let Some(s) = &cert.safe {
         nums.push(("safe.eta", s.eta));
@@ -98,11 +117,25 @@ pub(super) fn model_of(cert: &Certificate) -> Result<Model, Rejection> {
             ));
         }
     }
+    let fill = match a.fill {
+        Some(f) if !(f.weight_ratio >= 0.0 && f.depth >= 0.0) => {
+            return reject(format!(
+                "arch.fill: weight_ratio = {} and depth = {} must be >= 0",
+                f.weight_ratio, f.depth
+            ))
+        }
+        Some(f) => Some(FillModel {
+            weight_ratio: f.weight_ratio,
+            depth: f.depth,
+        }),
+        None => None,
+    };
     Ok(Model {
         beta_r: a.beta_right,
         beta_l: a.beta_left,
         centroid: a.weight == WeightModel::Centroid,
         joints: a.joint_angles.clone(),
+        fill,
     })
 }
 

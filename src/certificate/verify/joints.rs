@@ -8,13 +8,13 @@ use crate::certificate::format::{CertJoint, Location, PatternJoint, Side};
 
 /// A joint of a Farkas certificate: on the arch (a listed joint of a discrete arch), a
 /// kind that exists at μ, a finite multiplier, and a `side` exactly at the point load's
-/// angle `split` (never without a point load).
+/// angles `splits` (never without a point load).
 pub(super) fn check_farkas_joint(
     model: &Model,
     i: usize,
     j: &CertJoint,
     mu: Option<f64>,
-    split: Option<f64>,
+    splits: &[f64],
 ) -> Result<(), Rejection> {
     model.check_joint(j.beta, &format!("collapse side: joint {i}"))?;
     if !exists(j.kind, mu) {
@@ -29,18 +29,18 @@ pub(super) fn check_farkas_joint(
             "collapse side: multiplier of joint {i} is not a finite number"
         ));
     }
-    check_side(j.beta, j.side, split, &format!("collapse side: joint {i}"))
+    check_side(j.beta, j.side, splits, &format!("collapse side: joint {i}"))
 }
 
-/// `side` must be given exactly at the point load's angle `split` (the two sections
+/// `side` must be given exactly at a point load's angle (`splits`: the two sections
 /// there differ) and nowhere else.
 pub(super) fn check_side(
     beta: f64,
     side: Option<Side>,
-    split: Option<f64>,
+    splits: &[f64],
     what: &str,
 ) -> Result<(), Rejection> {
-    match (split == Some(beta), side) {
+    match (splits.contains(&beta), side) {
         (true, None) => reject(format!(
             "{what}: beta = {beta} is the point load's angle: give the side of the loaded section (before or after)"
         )),
@@ -58,13 +58,13 @@ pub(super) fn check_pattern(
     model: &Model,
     pattern: &[PatternJoint],
     mu: Option<f64>,
-    split: Option<f64>,
+    splits: &[f64],
     whose: &str,
 ) -> Result<(), Rejection> {
     for (i, j) in pattern.iter().enumerate() {
         let what = format!("{whose}: pattern joint {i}");
         model.check_joint(j.beta, &what)?;
-        check_side(j.beta, j.side, split, &what)?;
+        check_side(j.beta, j.side, splits, &what)?;
         if !exists(j.kind, mu) {
             return reject(format!(
                 "{what} is {}, but there is no sliding at infinite friction (mu = null)",
@@ -94,7 +94,7 @@ pub(super) fn check_pattern(
     {
         return reject(format!(
             "{whose}: pattern must be strictly increasing in (beta, {}kind), found {} at {} then {} at {}",
-            if split.is_some() { "side, " } else { "" },
+            if !splits.is_empty() { "side, " } else { "" },
             w[0].kind.name(),
             w[0].beta,
             w[1].kind.name(),

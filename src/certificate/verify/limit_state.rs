@@ -5,7 +5,7 @@
 //! piece of a continuous arch (both sides of a loaded section).
 
 use super::joints::check_pattern;
-use super::live::{sections, side_text, StateAt};
+use super::live::{sections, side_text, Span, StateAt};
 use super::mechanism::{column, weight_work};
 use super::report::{reject, Rejection};
 use super::statics::{kinds, phi, Model, LIMIT_STATE_TOL};
@@ -85,7 +85,7 @@ pub(super) fn check_load_limit_state(
             "{whose}: every number must be finite, lambda >= 0 and a continuum's end not below it"
         ));
     }
-    check_pattern(model, &ls.pattern, mu, state.split(), whose)?;
+    check_pattern(model, &ls.pattern, mu, state.splits(), whose)?;
     let listed = Listed {
         state,
         pattern: &ls.pattern,
@@ -156,19 +156,20 @@ pub(super) fn check_admissible(
     state: StateAt,
     whose: &str,
 ) -> Result<(), Rejection> {
-    let split = state.split();
+    let splits = state.splits();
+    let whole = [Span::whole(model)];
     let pieces = match state.live() {
-        Some(live) => live.pieces(model),
-        None => vec![(model.beta_r, model.beta_l, false)],
+        Some(live) => live.pieces(),
+        None => &whole[..],
     };
     let angles: Vec<(f64, Option<Side>)> = match &model.joints {
         Some(js) => js
             .iter()
-            .flat_map(|&b| sections(b, split).into_iter().map(move |s| (b, s)))
+            .flat_map(|&b| sections(b, splits).into_iter().map(move |s| (b, s)))
             .collect(),
         None => pieces
-            .into_iter()
-            .flat_map(|(a, b, carries)| {
+            .iter()
+            .flat_map(|&Span { a, b, at, .. }| {
                 (0..=SAMPLES).map(move |i| {
                     let beta = if i == SAMPLES {
                         b
@@ -176,11 +177,13 @@ pub(super) fn check_admissible(
                         a + (b - a) * i as f64 / SAMPLES as f64
                     };
                     // at the loaded angle, the piece's own side of the section
-                    let side = (split == Some(beta)).then_some(if carries {
-                        Side::After
-                    } else {
-                        Side::Before
-                    });
+                    let side = splits
+                        .contains(&beta)
+                        .then_some(if at.beta == beta && at.after {
+                            Side::After
+                        } else {
+                            Side::Before
+                        });
                     (beta, side)
                 })
             })

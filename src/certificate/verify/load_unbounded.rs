@@ -6,6 +6,7 @@ use super::enclosure::{prove_pieces, prove_with_live, Piece};
 use super::live::{everywhere, sections, side_text, Live};
 use super::report::{reject, Rejection};
 use super::statics::{kinds, phi, Model, Ntm};
+use super::vertical::At;
 use crate::certificate::format::{ContactKind, LoadState, Side, Transfer};
 use crate::certificate::interval::Interval as I;
 
@@ -26,7 +27,7 @@ pub(super) fn prove_transfer(
     transfer: Transfer,
     mu: Option<f64>,
 ) -> Result<String, Rejection> {
-    let Some(bp) = live.split() else {
+    let Some(bp) = live.point() else {
         return reject(
             "multiplier.transfer: a transfer carries a point load, not a horizontal one",
         );
@@ -44,7 +45,14 @@ pub(super) fn prove_transfer(
         .collect();
     let unit = |b: I| -> Ntm {
         let u = live
-            .ntm(model, b, true)
+            .ntm(
+                model,
+                b,
+                At {
+                    beta: bp,
+                    after: true,
+                },
+            )
             .expect("a point load's unit actions");
         Ntm::default().plus(sign, &u)
     };
@@ -53,7 +61,7 @@ pub(super) fn prove_transfer(
         Some(joints) => {
             let sections: Vec<(f64, Option<Side>)> = joints
                 .iter()
-                .flat_map(|&b| sections(b, Some(bp)).into_iter().map(move |s| (b, s)))
+                .flat_map(|&b| sections(b, &[bp]).into_iter().map(move |s| (b, s)))
                 .filter(|&(b, s)| live.carries(b, s) == carrying)
                 .collect();
             for &(b, side) in &sections {
@@ -96,7 +104,12 @@ pub(super) fn prove_transfer(
                 }
             }
             zero += 1;
-            let piece = Piece { a, b, eval: &unit };
+            let piece = Piece {
+                a,
+                b,
+                eval: &unit,
+                smooth: true,
+            };
             proved += prove_pieces(
                 model,
                 &[piece],

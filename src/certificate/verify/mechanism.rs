@@ -7,6 +7,7 @@ use super::joints::check_pattern;
 use super::live::{sections, side_text, StateAt};
 use super::report::{reject, Rejection};
 use super::statics::{kinds, phi, Model, LIMIT_STATE_TOL};
+use super::vertical::fill_jets;
 use crate::certificate::format::{ContactKind, KinematicFarkas, PatternJoint, Side};
 use crate::certificate::interval::Interval as I;
 
@@ -45,7 +46,7 @@ pub(super) fn no_mechanism(
     let keyed: Vec<(f64, ContactKind, Option<Side>)> =
         pattern.iter().map(|j| (j.beta, j.kind, j.side)).collect();
     // the pattern: valid joints, active (floating point), and the whole active set
-    check_pattern(model, pattern, mu, state.split(), whose)?;
+    check_pattern(model, pattern, mu, state.splits(), whose)?;
     let scale = state.scale();
     for &(b, k, side) in &keyed {
         let v = phi(k, 0, &state.ntm(model, b, side), state.eta, mu).mid();
@@ -58,7 +59,7 @@ pub(super) fn no_mechanism(
     }
     if let Some(joints) = &model.joints {
         for &b in joints {
-            for side in sections(b, state.split()) {
+            for side in sections(b, state.splits()) {
                 let a = state.ntm(model, b, side);
                 for &k in kinds(mu) {
                     if keyed.contains(&(b, k, side)) {
@@ -222,8 +223,9 @@ pub(super) fn prove_farkas_over(
 
 /// The work of the weight in the unit motion of each contact of `kept` (with its
 /// compatibility `columns`): Σ over the blocks after it (between consecutive distinct
-/// kept angles) of W_m c_y + ρ (sin β_{m+1} − sin β_m) c_ψ, W_m = β_{m+1} − β_m; the
-/// external power of the weight is its negative, p_j.
+/// kept angles) of W_m c_y + ρ (sin β_{m+1} − sin β_m) c_ψ, W_m = β_{m+1} − β_m, and with
+/// fill of ΔF_m c_y + ΔS_m c_ψ (its resultant and first moment on the block); the
+/// external power of the dead load is its negative, p_j.
 pub(super) fn weight_work(
     model: &Model,
     eta: I,
@@ -234,11 +236,26 @@ pub(super) fn weight_work(
     angles.sort_by(f64::total_cmp);
     angles.dedup();
     let rho = model.rho_over(eta);
+    // the fill's resultant and first moment on the free body [β_R, β]
+    let fill = |beta: f64| {
+        model
+            .fill
+            .as_ref()
+            .map_or((I::point(0.0), I::point(0.0)), |f| {
+                let (f, s) = fill_jets(f, (model.beta_r, model.beta_l), I::point(beta), eta);
+                (f[0], s[0])
+            })
+    };
     let blocks: Vec<(f64, I, I)> = angles
         .windows(2)
         .map(|w| {
             let (a, b) = (I::point(w[0]), I::point(w[1]));
-            (w[0], b - a, rho * (b.sin() - a.sin()))
+            let ((fa, sa), (fb, sb)) = (fill(w[0]), fill(w[1]));
+            (
+                w[0],
+                b - a + (fb - fa),
+                rho * (b.sin() - a.sin()) + (sb - sa),
+            )
         })
         .collect();
     kept.iter()

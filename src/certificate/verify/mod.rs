@@ -41,6 +41,7 @@ mod ridge;
 mod search;
 mod statics;
 mod thickness;
+mod vertical;
 
 pub(crate) use mechanism::one_sense_choices;
 pub use report::{Rejection, Report};

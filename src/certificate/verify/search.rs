@@ -351,7 +351,7 @@ fn limit_states_above(
     for (i, ls) in search.limit_states_above.iter().enumerate() {
         let whose = format!("search: limit state above eta_s {i}");
         finite(ls, &whose)?;
-        check_pattern(model, &ls.pattern, mu, None, &whose)?;
+        check_pattern(model, &ls.pattern, mu, &[], &whose)?;
         if ls.eta < last {
             return reject(format!(
                 "{whose}: eta = {} is not above eta_hi and the previous listed state (not ascending)",

@@ -4,6 +4,7 @@
 //! affine form in x.
 
 use super::report::{reject, Rejection};
+use super::vertical::{actions, fill_jets, FillModel};
 use crate::certificate::format::ContactKind;
 use crate::certificate::interval::Interval as I;
 
@@ -16,6 +17,8 @@ pub(super) struct Model {
     pub(super) beta_l: f64,
     pub(super) centroid: bool,
     pub(super) joints: Option<Vec<f64>>,
+    /// The fill above the extrados, a dead load beside the weight.
+    pub(super) fill: Option<FillModel>,
 }
 
 /// Interval values of N, T, M and their first two β-derivatives at β ∈ `b`.
@@ -120,11 +123,23 @@ impl Model {
         let n2 = two * s - n0;
         let t2 = two * c - t0;
         let m2 = n0 - (two - rho) * s;
-        Ntm {
+        let ring = Ntm {
             n: [n0, n1, n2],
             t: [t0, t1, t2],
             m: [m0, m1, m2],
+        };
+        match self.fill_actions(b, I::point(eta)) {
+            Some(fill) => ring.plus(1.0, &fill),
+            None => ring,
         }
+    }
+
+    /// The fill's N, T, M (with β-derivatives) over the angles `b` and thicknesses `eta`.
+    pub(super) fn fill_actions(&self, b: I, eta: I) -> Option<Ntm> {
+        let fill = self.fill.as_ref()?;
+        let (f, s) = fill_jets(fill, (self.beta_r, self.beta_l), b, eta);
+        let [n, t, m] = actions(f, s, b);
+        Some(Ntm { n, t, m })
     }
 }
 
@@ -170,10 +185,14 @@ pub(super) fn ntm_rows(model: &Model, beta: f64, eta: I) -> [([I; 3], I); 3] {
     let d = b - br;
     let rho = model.rho_over(eta);
     let z = I::point(0.0);
+    let fill = model.fill_actions(b, eta).unwrap_or_default();
     [
-        ([s, c, z], -(d * c)),
-        ([c, -s, z], d * s),
-        ([-(s - sr), cr - c, I::point(1.0)], d * c - rho * (s - sr)),
+        ([s, c, z], -(d * c) + fill.n[0]),
+        ([c, -s, z], d * s + fill.t[0]),
+        (
+            [-(s - sr), cr - c, I::point(1.0)],
+            d * c - rho * (s - sr) + fill.m[0],
+        ),
     ]
 }
 
