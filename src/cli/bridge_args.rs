@@ -30,6 +30,11 @@ pub(crate) struct FillArgs {
 }
 
 impl FillArgs {
+    /// Whether a fill was given.
+    pub(crate) fn given(&self) -> bool {
+        self.fill_weight.is_some() || self.fill_ratio.is_some()
+    }
+
     /// The fill (`None` without fill flags) and its description; `masonry` is the ring's
     /// mean radius (m) and the masonry's unit weight (kN/m³), which convert `--fill-weight`
     /// and `--fill-depth`.

@@ -3,7 +3,7 @@
 
 use super::arch_args::ArchArgs;
 use super::io::{to_json, Exit, Io};
-use super::load::LiveLoadArgs;
+use super::load::{prepare_parts, BridgeFlags, LiveLoadArgs};
 use crate::arch::{check_mu, fmt_value, InputError};
 use crate::certificate::{
     certify, certify_load, verify, ArchSpec, Certificate, Claim, LoadSearchMethod, NotCertified,
@@ -28,6 +28,10 @@ pub(crate) struct CertifyArgs {
     /// A live load (as for `load`): certify its largest admissible multiplier lambda_static and its limit states instead of eta*.
     #[command(flatten)]
     live: Option<LiveLoadArgs>,
+    /// The dimensions, a vehicle (at --at, or at its critical position with --critical) and
+    /// the fill, as for `load`.
+    #[command(flatten)]
+    bridge: BridgeFlags,
     /// Requested relative gap (hi - lo)/hi of the bracket (of eta*, or of lambda_static under a load), 1e-15 to 1e-4. If it cannot be proved, the best certificate found (gap widened tenfold up to 1e-4) is still written, with status gap_not_reached and exit 1.
     #[arg(long, default_value_t = 1e-12, allow_negative_numbers = true)]
     gap: f64,
@@ -64,6 +68,9 @@ fn arch_json(a: &ArchSpec) -> serde_json::Value {
     if let Some(j) = &a.joint_angles {
         v["joint_angles"] = serde_json::json!(j);
     }
+    if let Some(f) = &a.fill {
+        v["fill"] = serde_json::json!(f);
+    }
     v
 }
 
@@ -79,12 +86,28 @@ pub(crate) fn run_certify(a: CertifyArgs, settings: &Settings, io: &mut Io) -> E
             range: "1e-15 <= gap <= 1e-4".into(),
         });
     }
-    // a live load and its thickness come together
-    let load = match (&a.live, a.eta.or(a.arch.ring)) {
-        (Some(live), _) => match a.arch.eta(a.eta).and_then(|eta| Ok((eta, live.build(&arch)?))) {
-            Ok(load) => Some(load),
-            Err(e) => return io.bad_input(&e),
-        },
+    // a live load (or a vehicle, on the arch with its fill) and its thickness come together
+    let loaded = a.live.is_some() || a.bridge.vehicle.given();
+    if !loaded && a.bridge.fill.given() {
+        return io.bad_input(&InputError::Inconsistent {
+            arg: "--fill-weight/--fill-ratio",
+            reason:
+                "a certificate of the least thickness of an arch with fill is not written yet; \
+                     certify a load on it (--axles with --at or --critical, --point-load, ...)"
+                    .into(),
+        });
+    }
+    let question =
+        loaded.then(|| prepare_parts((&a.arch, a.eta, a.mu), a.live.as_ref(), &a.bridge, settings));
+    let question = match question.transpose() {
+        Ok(q) => q,
+        Err(e) => return io.bad_input(&e),
+    };
+    let arch = question.as_ref().map_or(arch, |q| q.arch.clone());
+    let at_m = question.as_ref().and_then(|q| q.vehicle_at());
+    let critical = question.as_ref().is_some_and(|q| q.critical().is_some());
+    let load = match (&question, a.eta.or(a.arch.ring)) {
+        (Some(q), _) => Some((q.eta, q.load)),
         (None, Some(_)) => {
             return io.bad_input(&InputError::Inconsistent {
                 arg: "--eta/--ring",
@@ -144,11 +167,22 @@ pub(crate) fn run_certify(a: CertifyArgs, settings: &Settings, io: &mut Io) -> E
             doc["lambda_lo"] = serde_json::json!(cert.lambda_bracket().map(|b| b.0));
             doc["lambda_hi"] = serde_json::json!(cert.lambda_bracket().map(|b| b.1));
         }
+        if let Some(at) = at_m {
+            doc["at_m"] = serde_json::json!(at);
+        }
         doc["certificate"] = serde_json::json!(cert);
         io.out(&to_json(&doc));
     } else if let Some(path) = &a.out {
+        let vehicle = at_m.map_or(String::new(), |at| {
+            let which = if critical {
+                " (its critical position X*)"
+            } else {
+                ""
+            };
+            format!("  the vehicle at X = {at} m from the left springing{which}\n")
+        });
         io.out(&format!(
-            "wrote {}\n  {}\n{}",
+            "wrote {}\n{vehicle}  {}\n{}",
             path.display(),
             claim_text(&cert, a.gap),
             limit_states_text(&cert)

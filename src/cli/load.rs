@@ -91,12 +91,7 @@ impl LiveLoadArgs {
                 }
             }
         } else {
-            return Err(InputError::Inconsistent {
-                arg: "--horizontal/--point-load/--axles",
-                reason: "give a live load: --horizontal, --horizontal-left, --point-load, \
-                         --point-load-deg, --point-load-joint, or a vehicle with --axles"
-                    .into(),
-            });
+            return Err(no_live_load());
         };
         check_load(arch, &load).map(|_| load)
     }
@@ -116,14 +111,22 @@ pub(crate) struct LoadArgs {
     #[command(flatten)]
     live: LiveLoadArgs,
     #[command(flatten)]
-    dims: DimensionArgs,
-    #[command(flatten)]
-    vehicle: VehicleArgs,
-    #[command(flatten)]
-    fill: FillArgs,
+    bridge: BridgeFlags,
     /// Print one JSON document instead of text.
     #[arg(long)]
     pub(crate) json: bool,
+}
+
+/// The engineer's flags of a load question, shared by `load` and `certify`: the dimensions,
+/// a vehicle and the fill.
+#[derive(Args, Debug)]
+pub(crate) struct BridgeFlags {
+    #[command(flatten)]
+    dims: DimensionArgs,
+    #[command(flatten)]
+    pub(crate) vehicle: VehicleArgs,
+    #[command(flatten)]
+    pub(crate) fill: FillArgs,
 }
 
 /// A load question as the flags give it: the engineer's geometry and dimensions, η, the
@@ -145,35 +148,62 @@ impl Prepared {
         let b = self.bridge.as_ref()?;
         Some((b.critical.as_ref()?, b.placed.total_kn()))
     }
+
+    /// Where the vehicle stands (m from the left intrados springing), if a vehicle is given.
+    pub(crate) fn vehicle_at(&self) -> Option<f64> {
+        self.bridge.as_ref().map(|b| b.at_m)
+    }
 }
 
 /// The question of `a`, every input checked (the critical position searched with
 /// `--critical`).
 pub(crate) fn prepare(a: &LoadArgs, settings: &Settings) -> Result<Prepared, InputError> {
-    let (geometry, dims, eta) = sized(&a.arch, &a.dims, a.eta)?;
-    let arch = a.arch.build()?;
-    let fill = a
+    prepare_parts((&a.arch, a.eta, a.mu), Some(&a.live), &a.bridge, settings)
+}
+
+/// The question of the arch flags with η and μ, a live load (`None`: a vehicle or none)
+/// and the bridge flags, every input checked.
+pub(crate) fn prepare_parts(
+    (arch_args, eta, mu): (&ArchArgs, Option<f64>, f64),
+    live: Option<&LiveLoadArgs>,
+    flags: &BridgeFlags,
+    settings: &Settings,
+) -> Result<Prepared, InputError> {
+    let (geometry, dims, eta) = sized(arch_args, &flags.dims, eta)?;
+    let arch = arch_args.build()?;
+    let fill = flags
         .fill
         .build(dims.as_ref().map(super::bridge_args::masonry))?;
     let arch = match &fill {
         Some((f, _)) => arch.with_fill(*f),
         None => arch,
     };
-    let bridge = Bridge::build(&a.vehicle, &arch, eta, a.mu, dims.as_ref(), settings)?;
-    let load = match &bridge {
-        Some(b) => b.load,
-        None => a.live.build(&arch)?,
+    let bridge = Bridge::build(&flags.vehicle, &arch, eta, mu, dims.as_ref(), settings)?;
+    let load = match (&bridge, live) {
+        (Some(b), _) => b.load,
+        (None, Some(live)) => live.build(&arch)?,
+        (None, None) => return Err(no_live_load()),
     };
     Ok(Prepared {
         geometry,
         dims,
         eta,
-        mu: a.mu,
+        mu,
         arch,
         fill: fill.map(|f| f.1),
         bridge,
         load,
     })
+}
+
+/// The error of a load question without a load.
+fn no_live_load() -> InputError {
+    InputError::Inconsistent {
+        arg: "--horizontal/--point-load/--axles",
+        reason: "give a live load: --horizontal, --horizontal-left, --point-load, \
+                 --point-load-deg, --point-load-joint, or a vehicle with --axles"
+            .into(),
+    }
 }
 
 pub(crate) fn run(a: LoadArgs, settings: &Settings, io: &mut Io) -> Exit {

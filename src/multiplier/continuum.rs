@@ -242,7 +242,7 @@ impl<'a> Loaded<'a> {
         let grids = (self.scans.replace(self.scans.get() + 1) > 0)
             .then(|| self.grids.get_or_init(|| self.grids(settings)));
         for (i, piece) in self.pieces().into_iter().enumerate() {
-            let (from, to, side) = piece;
+            let (from, to, _) = piece;
             let grid = grids.map(|g| &g[i]);
             let phi = |beta: Radians, orders: usize| {
                 let mut v = [[0.0; 3]; 4];
@@ -269,10 +269,12 @@ impl<'a> Loaded<'a> {
                 }
                 v
             };
+            // each peak tagged with the side it was evaluated on (a pressure's piece ends
+            // at a point load on its `before` side)
             out.extend(
                 peaks_over(from, to, modes, settings.scan_points, &phi)
                     .into_iter()
-                    .map(|p| (p, side)),
+                    .map(|p| (p, self.side_at(&piece, p.contact.beta))),
             );
         }
         out

@@ -640,12 +640,12 @@ fn load_with_a_vehicle_keeps_the_json_contract() {
 
 /// What is not solved yet is refused by name, never answered with the wrong derivatives:
 /// the limit curve and the assessment of an arch with fill (their friction limit is a curve
-/// in η there), a horizontal acceleration with fill, and a certificate with fill or a
-/// vehicle.
+/// in η there), a horizontal acceleration with fill, and a certificate of the least
+/// thickness with fill.
 #[test]
 fn fill_is_refused_where_it_is_not_solved() {
     use arch_enum::bridge::Fill;
-    use arch_enum::certificate::certify::certify_load;
+    use arch_enum::certificate::certify::certify;
     use arch_enum::load::LiveLoad;
     let settings = arch_enum::Settings::default();
     let filled = arch_enum::Arch::symmetric(0.0, arch_enum::WeightModel::Centreline)
@@ -668,8 +668,7 @@ fn fill_is_refused_where_it_is_not_solved() {
         .unwrap_err()
         .to_string();
     assert!(err.contains("--fill-weight"), "{err}");
-    let point = LiveLoad::Point { beta: 1.0 };
-    let why = certify_load(&filled, 0.2, 0.6, &point, 1e-12, &settings).unwrap_err();
+    let why = certify(&filled, 0.6, 1e-12, &settings).unwrap_err();
     assert!(why.0.contains("fill"), "{}", why.0);
 }
 

@@ -238,24 +238,20 @@ pub(super) fn weight_work(
     let rho = model.rho_over(eta);
     // the fill's resultant and first moment on the free body [β_R, β]
     let fill = |beta: f64| {
-        model
-            .fill
-            .as_ref()
-            .map_or((I::point(0.0), I::point(0.0)), |f| {
-                let (f, s) = fill_jets(f, (model.beta_r, model.beta_l), I::point(beta), eta);
-                (f[0], s[0])
-            })
+        let f = model.fill.as_ref()?;
+        let (f, s) = fill_jets(f, (model.beta_r, model.beta_l), I::point(beta), eta);
+        Some((f[0], s[0]))
     };
     let blocks: Vec<(f64, I, I)> = angles
         .windows(2)
         .map(|w| {
             let (a, b) = (I::point(w[0]), I::point(w[1]));
-            let ((fa, sa), (fb, sb)) = (fill(w[0]), fill(w[1]));
-            (
-                w[0],
-                b - a + (fb - fa),
-                rho * (b.sin() - a.sin()) + (sb - sa),
-            )
+            let (weight, moment) = (b - a, rho * (b.sin() - a.sin()));
+            // without fill nothing is added: the same bounds as the ring's alone
+            match (fill(w[0]), fill(w[1])) {
+                (Some((fa, sa)), Some((fb, sb))) => (w[0], weight + (fb - fa), moment + (sb - sa)),
+                _ => (w[0], weight, moment),
+            }
         })
         .collect();
     kept.iter()

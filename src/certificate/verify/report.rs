@@ -34,8 +34,14 @@ impl Report {
             None => "continuous".to_string(),
             Some(j) => format!("discrete ({} joints)", j.len()),
         };
+        let fill = a.fill.map_or(String::new(), |f| {
+            format!(
+                ", with fill (weight ratio g_f = {}, road at h = {} above the extrados's top)",
+                f.weight_ratio, f.depth
+            )
+        });
         format!(
-            "{layout} arch, beta_right = {}, beta_left = {}, weight {}",
+            "{layout} arch, beta_right = {}, beta_left = {}, weight {}{fill}",
             a.beta_right,
             a.beta_left,
             a.weight.name()

@@ -185,15 +185,19 @@ pub(super) fn ntm_rows(model: &Model, beta: f64, eta: I) -> [([I; 3], I); 3] {
     let d = b - br;
     let rho = model.rho_over(eta);
     let z = I::point(0.0);
-    let fill = model.fill_actions(b, eta).unwrap_or_default();
-    [
-        ([s, c, z], -(d * c) + fill.n[0]),
-        ([c, -s, z], d * s + fill.t[0]),
-        (
-            [-(s - sr), cr - c, I::point(1.0)],
-            d * c - rho * (s - sr) + fill.m[0],
-        ),
-    ]
+    let ring = [
+        ([s, c, z], -(d * c)),
+        ([c, -s, z], d * s),
+        ([-(s - sr), cr - c, I::point(1.0)], d * c - rho * (s - sr)),
+    ];
+    // the fill adds to the constant terms (without fill nothing is added: the same bounds)
+    match model.fill_actions(b, eta) {
+        Some(f) => {
+            let [(gn, n), (gt, t), (gm, m)] = ring;
+            [(gn, n + f.n[0]), (gt, t + f.t[0]), (gm, m + f.m[0])]
+        }
+        None => ring,
+    }
 }
 
 /// Interval gradient (w.r.t. x) and constant term of an activation function at β, over
