@@ -66,7 +66,7 @@ pub(super) enum Command {
     #[command(
         after_help = "Example:\n  arch-enum certify --alpha 0 --mu 0.35 --out cert.json\n  arch-enum verify cert.json\n  arch-enum certify --alpha 0 --blocks 20 --eta 0.3 --mu 0.8 --horizontal --out load.json"
     )]
-    Certify(certify::CertifyArgs),
+    Certify(Box<certify::CertifyArgs>),
     /// Re-checks a certificate independently (no LP, no solver); exit 0 only if it holds.
     Verify(certify::VerifyArgs),
     /// Pictures: limit curves, the arch with its lines and mechanism, eccentricities, a margin map (SVG, or PNG with --png).
@@ -151,7 +151,7 @@ where
     let exit = match cli.command {
         Command::Solve(a) => solve::run(a, &settings, &mut io),
         Command::Modes(a) => modes::run(a, &settings, &mut io),
-        Command::Certify(a) => certify::run_certify(a, &settings, &mut io),
+        Command::Certify(a) => certify::run_certify(*a, &settings, &mut io),
         Command::Verify(a) => certify::run_verify(a, &mut io),
         Command::Plot { figure } => plot::run(figure, &settings, &mut io),
         Command::Curve(a) => curve::run(a, &settings, &mut io),

@@ -166,6 +166,9 @@ fn random_bridge_certificates_hold() {
     }
 }
 
+/// A change made to a certificate.
+type Tamper = fn(&mut Certificate);
+
 /// A certificate proves its own bridge only: a heavier or shallower fill, no fill, a patch
 /// heavier or moved, an axle that does not spread, each is rejected; and a least-thickness
 /// certificate does not carry fill.
@@ -186,7 +189,7 @@ fn tampered_bridge_certificates_are_rejected() {
         let good = certify_load(&arch, eta, 0.6, &load, 1e-10, &Settings::default()).unwrap();
         assert_eq!(good.claim, Claim::LargestMultiplier);
         verify(&good).unwrap();
-        let tampered: [(&str, fn(&mut Certificate)); 5] = [
+        let tampered: [(&str, Tamper); 5] = [
             ("heavier fill", |c| {
                 c.arch.fill.as_mut().unwrap().weight_ratio *= 1.01
             }),
