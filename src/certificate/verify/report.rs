@@ -36,7 +36,7 @@ impl Report {
         };
         let fill = a.fill.map_or(String::new(), |f| {
             format!(
-                ", with fill (weight ratio g_f = {}, road at h = {} above the extrados's top)",
+                ", with fill (weight ratio g_f = {}, road h = {} above the highest extrados point)",
                 f.weight_ratio, f.depth
             )
         });
