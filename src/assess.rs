@@ -29,6 +29,10 @@ use itertools::Itertools;
 /// The smallest friction at which the upward search for a standing state starts.
 const FIRST_TRIAL_MU: f64 = 1e-3;
 
+/// With fill, the friction at which the search for μ_min starts (μ_ms moves with η there):
+/// a thickness standing at it is reported as μ_min ≤ it.
+const FILL_FIRST_MU: f64 = 1e-6;
+
 /// The least friction at which a given thickness stands.
 #[derive(Debug, Clone, PartialEq)]
 pub enum LeastFriction {
@@ -91,8 +95,10 @@ pub fn assess(
 ) -> Result<Assessment, InputError> {
     let eta = check_eta(eta)?;
     let mu = check_mu(mu)?;
-    crate::limit::refuse_fill(arch, "the assessment (least friction)")?;
-    let limit = solve(arch, mu, settings)?.outcome;
+    let solution = solve(arch, mu, settings)?;
+    // with fill the admissible thicknesses need not form an interval (the scan says)
+    let gaps = solution.scan.as_ref().is_some_and(|s| !s.gaps().is_empty());
+    let limit = solution.outcome;
     let (stands, geometric_factor, mode) = match &limit {
         // statics decide whether it stands: η at least the least admissible thickness
         Outcome::Limit(ls) => (eta >= ls.eta_static, Some(eta / ls.eta), Some(ls.mode)),
@@ -100,6 +106,15 @@ pub fn assess(
         Outcome::NoEquilibrium { .. } => (false, None, None),
         // η_hi carries a verified admissible state
         Outcome::Unresolved { eta_hi, .. } => (eta >= *eta_hi, None, None),
+    };
+    // with fill, whether this thickness stands is its own question (admissibility need not
+    // grow with η), and η/η* is a factor of safety only where every thicker ring stands
+    let (stands, geometric_factor) = match arch.fill() {
+        Some(_) => (
+            safest_state(arch, eta, mu, settings).is_some(),
+            geometric_factor.filter(|_| !gaps),
+        ),
+        None => (stands, geometric_factor),
     };
     let least_friction = least_friction_for(arch, eta, settings);
     let friction_factor = match &least_friction {
@@ -142,6 +157,46 @@ pub fn safest_state(arch: &Arch, eta: f64, mu: f64, settings: &Settings) -> Opti
     })
 }
 
+/// Where the upward search for μ_min starts: just above μ_ms, and its margin there (the
+/// answer itself, `Err`, where η already stands at μ_ms: the vertical branch). With fill
+/// μ_ms moves with η (the friction-only problem is the ring's), so the search starts at
+/// [`FILL_FIRST_MU`] instead, and stands there only as "μ_min ≤ it" (not exact).
+fn lowest_trial(
+    arch: &Arch,
+    settings: &Settings,
+    f: &mut impl FnMut(f64) -> Result<(f64, Reactions), Undecided>,
+) -> Result<(f64, f64), LeastFriction> {
+    if arch.fill().is_some() {
+        let Ok((f_lo, _)) = f(FILL_FIRST_MU) else {
+            return Err(LeastFriction::Never);
+        };
+        if f_lo >= 0.0 {
+            return Err(LeastFriction::Finite {
+                mu: FILL_FIRST_MU,
+                pattern: Vec::new(),
+                exact: false,
+            });
+        }
+        return Ok((FILL_FIRST_MU, f_lo));
+    }
+    let Ok(Some(fl)) = friction_limit(arch, settings) else {
+        return Err(LeastFriction::Never);
+    };
+    // Just above μ_ms: if η already stands there, μ_min = μ_ms (vertical branch).
+    let mu_lo = fl.mu * (1.0 + settings.bracket_rel);
+    let Ok((f_lo, _)) = f(mu_lo.max(f64::MIN_POSITIVE)) else {
+        return Err(LeastFriction::Never);
+    };
+    if f_lo >= 0.0 {
+        return Err(LeastFriction::Finite {
+            mu: fl.mu,
+            pattern: fl.pattern,
+            exact: fl.exact,
+        });
+    }
+    Ok((mu_lo, f_lo))
+}
+
 /// μ_min(η): the least friction coefficient at which thickness `eta` admits a statically
 /// admissible state (the inverse of the limit curve η_s(μ)).
 pub fn least_friction_for(arch: &Arch, eta: f64, settings: &Settings) -> LeastFriction {
@@ -164,21 +219,10 @@ pub fn least_friction_for(arch: &Arch, eta: f64, settings: &Settings) -> LeastFr
     if !stands_at_inf {
         return LeastFriction::Never;
     }
-    let Ok(Some(fl)) = friction_limit(arch, settings) else {
-        return LeastFriction::Never;
+    let (mu_lo, f_lo) = match lowest_trial(arch, settings, &mut f) {
+        Ok(lo) => lo,
+        Err(answer) => return answer,
     };
-    // Just above μ_ms: if η already stands there, μ_min = μ_ms (vertical branch).
-    let mu_lo = fl.mu * (1.0 + settings.bracket_rel);
-    let Ok((f_lo, _)) = f(mu_lo.max(f64::MIN_POSITIVE)) else {
-        return LeastFriction::Never;
-    };
-    if f_lo >= 0.0 {
-        return LeastFriction::Finite {
-            mu: fl.mu,
-            pattern: fl.pattern,
-            exact: fl.exact,
-        };
-    }
     // A finite friction at which η stands: double until the margin is non-negative.
     let mut hi = mu_lo.max(FIRST_TRIAL_MU) * 2.0;
     let (mut f_hi, mut x_hi) = match f(hi) {

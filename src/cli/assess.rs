@@ -2,6 +2,7 @@
 //! what margins?
 
 use super::arch_args::ArchArgs;
+use super::bridge_args::{masonry, FillArgs};
 use super::dimension_args::{sized, DimensionArgs};
 use super::io::{geometry_text, json_with_geometry, Exit, Io};
 use crate::assess::assess;
@@ -21,6 +22,8 @@ pub(crate) struct AssessArgs {
     mu: f64,
     #[command(flatten)]
     dims: DimensionArgs,
+    #[command(flatten)]
+    fill: FillArgs,
     /// Print one JSON document instead of text.
     #[arg(long)]
     pub(crate) json: bool,
@@ -31,13 +34,22 @@ pub(crate) fn run(a: AssessArgs, settings: &Settings, io: &mut Io) -> Exit {
         Ok(v) => v,
         Err(e) => return io.bad_input(&e),
     };
+    let fill = match a.fill.build(dims.as_ref().map(masonry)) {
+        Ok(f) => f,
+        Err(e) => return io.bad_input(&e),
+    };
     let (arch, res) = match a.arch.build() {
         Ok(arch) => {
+            let arch = match &fill {
+                Some((f, _)) => arch.with_fill(*f),
+                None => arch,
+            };
             let r = assess(&arch, eta, a.mu, settings);
             (arch, r)
         }
         Err(e) => return io.bad_input(&e),
     };
+    let fill = fill.map(|f| f.1);
     let res = match res {
         Ok(r) => r,
         Err(e) => return io.bad_input(&e),
@@ -47,13 +59,20 @@ pub(crate) fn run(a: AssessArgs, settings: &Settings, io: &mut Io) -> Exit {
         _ => None,
     };
     if a.json {
-        io.out(&json_with_geometry(
-            &json::assess(&arch, &res),
-            geometry,
-            least,
-        ));
+        let mut doc = json::assess(&arch, &res);
+        doc.fill = fill;
+        io.out(&json_with_geometry(&doc, geometry, least));
     } else {
-        io.out(&(geometry_text(geometry, least) + &table::assess(&arch, &res, dims)));
+        // with fill the answer states its own scope (the bridge's, not the bare ring's)
+        let head = geometry_text(geometry, least);
+        let head = match &fill {
+            Some(f) => {
+                head.replace(crate::render::geometry::RING_SCOPE, "")
+                    + &table::bridge(Some(f), None, None, None)
+            }
+            None => head,
+        };
+        io.out(&(head + &table::assess(&arch, &res, dims)));
     }
     match res.limit {
         crate::limit::Outcome::Unresolved { .. } => Exit::NoAnswer,

@@ -88,3 +88,104 @@ fn too_thin_does_not_stand() {
     assert!(v["friction_factor"].as_f64().unwrap() < 1.0);
     assert!(v["safest_state"].is_null());
 }
+
+/// With fill (bridge spec §2): whether a thickness stands is decided at that thickness
+/// (admissibility need not grow with η), η/η* is a factor only where the admissible
+/// thicknesses form an interval, and μ_min(η) is the root of admissibility in μ: just above it
+/// the thickness stands, just below it does not. On the README's bridge and on a horseshoe
+/// under heavy shallow fill whose admissible thicknesses stop at an upper η.
+#[test]
+fn assessed_with_fill() {
+    use arch_enum::bridge::Fill;
+    use std::f64::consts::PI;
+    let s = Settings::default();
+    let stands = |arch: &Arch, eta: f64, mu: f64| assess(arch, eta, mu, &s).unwrap().stands;
+    let root = |arch: &Arch, eta: f64| {
+        let LeastFriction::Finite { mu, exact, .. } = mu_min(arch, eta) else {
+            panic!("no mu_min at eta {eta}")
+        };
+        assert!(exact, "mu_min at eta {eta} not exact");
+        assert!(
+            stands(arch, eta, mu * (1.0 + 1e-6)),
+            "eta {eta} falls above mu_min {mu}"
+        );
+        assert!(
+            !stands(arch, eta, mu * (1.0 - 1e-6)),
+            "eta {eta} stands below mu_min {mu}"
+        );
+        mu
+    };
+    let bridge = Arch::symmetric(0.0, WeightModel::Centreline)
+        .unwrap()
+        .with_fill(Fill::new(0.9, 0.3 / 5.3).unwrap());
+    let a = assess(&bridge, 0.6 / 5.3, 0.6, &s).unwrap();
+    assert!(a.stands);
+    let es = eta_star(&bridge, 0.6);
+    assert!((a.geometric_factor.unwrap() - 0.6 / 5.3 / es).abs() < 1e-12);
+    let mu = root(&bridge, 0.6 / 5.3);
+    assert!((a.friction_factor.unwrap() - 0.6 / mu).abs() < 1e-12);
+    // the horseshoe of fill_thickness.rs: admissible from eta_s to about 0.93 only
+    let alpha = 0.1825328807489831;
+    let (br, bl) = (-alpha, PI + alpha);
+    let horseshoe = Arch::new(br, bl, WeightModel::Centreline)
+        .unwrap()
+        .with_joints(&crate::search_reference::equal_joints(br, bl, 64))
+        .unwrap()
+        .with_fill(Fill::new(1.4170008626893624, 0.030118768852026835).unwrap());
+    let mu = 0.3972687290844831;
+    for (eta, standing) in [(0.5, true), (1.5, false)] {
+        let a = assess(&horseshoe, eta, mu, &s).unwrap();
+        assert_eq!(a.stands, standing, "eta {eta}");
+        assert!(
+            a.geometric_factor.is_none(),
+            "eta {eta}: a factor over a gap"
+        );
+        let m = root(&horseshoe, eta);
+        assert_eq!(m < mu, standing, "eta {eta}: mu_min {m}");
+    }
+}
+
+/// `assess` takes the fill flags: the fill's line and JSON key, the bridge's scope.
+#[test]
+fn assess_takes_the_fill_flags() {
+    let args = [
+        "assess",
+        "--span",
+        "10",
+        "--rise",
+        "5",
+        "--ring",
+        "0.6",
+        "--width",
+        "1",
+        "--unit-weight",
+        "20",
+        "--mu",
+        "0.6",
+        "--fill-weight",
+        "18",
+        "--fill-depth",
+        "0.3",
+    ];
+    let (v, code) = json_of(&args);
+    assert_eq!(code, 0);
+    assert_eq!(v["fill"]["weight_ratio"], 0.9);
+    assert_eq!(v["stands"], true);
+    let out = assert_cmd::Command::cargo_bin("arch-enum")
+        .unwrap()
+        .args(args)
+        .output()
+        .unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        text.contains("fill                18.0000 kN/m^3"),
+        "{text}"
+    );
+    assert!(text.contains("the fill a vertical dead load"), "{text}");
+    let (v, code) = json_of(&["assess", "--alpha", "0", "--eta", "0.2", "--mu", "0.35"]);
+    assert_eq!(code, 0);
+    assert!(
+        v.get("fill").is_none(),
+        "a bare arch's document has no fill key"
+    );
+}

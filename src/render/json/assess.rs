@@ -45,6 +45,9 @@ pub struct AssessJson {
     /// Why η*(μ) is missing, when it is.
     #[serde(skip_serializing_if = "Option::is_none")]
     message: Option<String>,
+    /// The fill (absent without fill).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fill: Option<super::FillJson>,
 }
 
 fn finite(v: f64) -> Option<f64> {
@@ -91,5 +94,6 @@ pub fn assess(arch: &Arch, a: &crate::assess::Assessment) -> AssessJson {
             margin: s.margin,
         }),
         message,
+        fill: None,
     }
 }
