@@ -5,7 +5,7 @@
 use super::arch_args::ArchArgs;
 use super::bridge_args::{FillArgs, Placed, VehicleArgs};
 use super::dimension_args::{sized, DimensionArgs};
-use super::io::{geometry_text, json_with_geometry, to_json, Exit, Io};
+use super::io::{geometry_text, json_with_geometry, Exit, Io};
 use crate::arch::{fmt_value, Arch, InputError, JointLayout};
 use crate::bridge::critical::{critical, Critical};
 use crate::friction::least_friction;
@@ -211,71 +211,80 @@ pub(crate) fn run(a: LoadArgs, settings: &Settings, io: &mut Io) -> Exit {
         Ok(p) => p,
         Err(e) => return io.bad_input(&e),
     };
-    let Prepared {
-        geometry,
-        dims,
-        eta,
-        arch,
-        fill,
-        bridge,
-        load,
-        mu,
-    } = p;
     // at the critical position its search has surveyed the load already
-    let known = bridge
+    let known = p
+        .bridge
         .as_ref()
         .and_then(|b| b.critical.as_ref()?.at_critical.as_ref())
         .map(|(_, sv)| Ok(LoadOutcome::Limits(sv.clone())));
-    let outcome = match known.map_or_else(|| survey(&arch, eta, mu, &load, settings), Ok) {
+    let outcome = match known.map_or_else(|| survey(&p.arch, p.eta, p.mu, &p.load, settings), Ok) {
         Ok(o) => o,
         Err(e) => return io.bad_input(&e),
     };
-    let vehicle_kn = bridge.as_ref().map(|b| b.placed.total_kn());
-    let q = LoadQuestion {
-        arch: &arch,
-        eta,
-        mu: a.mu,
-        load,
-        dims,
-        vehicle_kn,
-    };
-    let bridged = (fill.is_some() || bridge.is_some()).then(|| {
-        let vehicle = bridge
-            .as_ref()
-            .map(|b| b.placed.json(&arch, eta, b.at_m, &load));
-        (vehicle, bridge.as_ref().and_then(|b| b.critical.as_ref()))
-    });
+    let q = p.question(p.mu);
     if a.json {
-        let doc = json(&q, &outcome);
-        io.out(&match bridged {
-            None => json_with_geometry(&doc, geometry, None),
-            Some((vehicle, critical)) => {
-                let keys = crate::render::json::bridge(fill, vehicle, critical, vehicle_kn);
-                json_with_geometry(
-                    &WithBridge {
-                        doc: &doc,
-                        keys: &keys,
-                    },
-                    geometry,
-                    None,
-                )
-            }
-        });
+        io.out(&p.framed_json(&json(&q, &outcome)));
     } else {
-        let lines = bridged.map_or(String::new(), |(vehicle, critical)| {
-            crate::render::table::bridge(fill.as_ref(), vehicle.as_ref(), critical, vehicle_kn)
-        });
-        // a bridge answer states its own scope (with fill, not the bare ring's)
-        let head = geometry_text(geometry, None);
-        let head = match lines.is_empty() {
-            false => head.replace(crate::render::geometry::RING_SCOPE, ""),
-            true => head,
-        };
-        io.out(&(head + &lines + &table(&q, &outcome)));
+        io.out(&(p.framed_head() + &table(&q, &outcome)));
     }
     match outcome {
         Ok(LoadOutcome::Limits(_)) => Exit::Answered,
         _ => Exit::NoAnswer,
+    }
+}
+
+impl Prepared {
+    /// The question as the renderers take it, at friction `mu`.
+    fn question(&self, mu: f64) -> LoadQuestion<'_> {
+        LoadQuestion {
+            arch: &self.arch,
+            eta: self.eta,
+            mu,
+            load: self.load,
+            dims: self.dims,
+            vehicle_kn: self.bridge.as_ref().map(|b| b.placed.total_kn()),
+        }
+    }
+
+    /// The vehicle's document and the critical search, on a bridge (fill or a vehicle).
+    fn bridged(&self) -> Option<(Option<crate::render::json::VehicleJson>, Option<&Critical>)> {
+        (self.fill.is_some() || self.bridge.is_some()).then(|| {
+            let vehicle = self
+                .bridge
+                .as_ref()
+                .map(|b| b.placed.json(&self.arch, self.eta, b.at_m, &self.load));
+            (
+                vehicle,
+                self.bridge.as_ref().and_then(|b| b.critical.as_ref()),
+            )
+        })
+    }
+
+    /// `doc` with the geometry's keys and, on a bridge, the scope, fill, vehicle and critical
+    /// search after its own.
+    fn framed_json<T: serde::Serialize>(&self, doc: &T) -> String {
+        match self.bridged() {
+            None => json_with_geometry(doc, self.geometry, None),
+            Some((vehicle, critical)) => {
+                let kn = self.bridge.as_ref().map(|b| b.placed.total_kn());
+                let keys = crate::render::json::bridge(self.fill.clone(), vehicle, critical, kn);
+                json_with_geometry(&WithBridge { doc, keys: &keys }, self.geometry, None)
+            }
+        }
+    }
+
+    /// The lines before the answer: the geometry and, on a bridge, its own scope (not the
+    /// bare ring's), the fill, the vehicle and the critical search.
+    fn framed_head(&self) -> String {
+        let lines = self.bridged().map_or(String::new(), |(vehicle, critical)| {
+            let kn = self.bridge.as_ref().map(|b| b.placed.total_kn());
+            crate::render::table::bridge(self.fill.as_ref(), vehicle.as_ref(), critical, kn)
+        });
+        let head = geometry_text(self.geometry, None);
+        match lines.is_empty() {
+            false => head.replace(crate::render::geometry::RING_SCOPE, "") + &lines,
+            true => head,
+        }
     }
 }
 
@@ -339,6 +348,7 @@ impl Bridge {
 }
 
 #[derive(Args, Debug)]
+#[command(mut_group("live", |g| g.required(false)))]
 pub(crate) struct LoadCurveArgs {
     #[command(flatten)]
     pub(crate) arch: ArchArgs,
@@ -347,6 +357,10 @@ pub(crate) struct LoadCurveArgs {
     eta: Option<f64>,
     #[command(flatten)]
     live: LiveLoadArgs,
+    /// The dimensions, a vehicle at --at (it stays there as mu varies) and the fill, as for
+    /// `load`.
+    #[command(flatten)]
+    bridge: BridgeFlags,
     /// Smallest mu (default: mu_ms (1 + 1e-6), the least friction at which the arch can
     /// stand at all).
     #[arg(long, allow_hyphen_values = true)]
@@ -362,16 +376,23 @@ pub(crate) struct LoadCurveArgs {
     pub(crate) json: bool,
 }
 
-/// The friction coefficients of a λ–μ curve: `points` geometrically spaced from `mu_min`
-/// (default μ_ms (1 + 1e-6)) to `mu_max` (default 10 μ_min), then μ = ∞.
+/// The friction coefficients of a λ–μ curve at thickness `eta`: `points` geometrically
+/// spaced from `mu_min` (default μ_ms (1 + 1e-6); with fill, where μ_ms moves with η, the
+/// least friction at which this thickness stands) to `mu_max` (default 10 μ_min), then μ = ∞.
 pub(crate) fn mu_samples(
-    arch: &Arch,
+    (arch, eta): (&Arch, f64),
     mu_min: Option<f64>,
     mu_max: Option<f64>,
     points: usize,
     settings: &Settings,
 ) -> Result<Vec<f64>, InputError> {
-    let mu_ms = least_friction(arch, settings).ok().flatten();
+    let mu_ms = match arch.fill() {
+        Some(_) => match crate::assess::least_friction_for(arch, eta, settings) {
+            crate::assess::LeastFriction::Finite { mu, .. } if mu.is_finite() => Some(mu),
+            _ => None,
+        },
+        None => least_friction(arch, settings).ok().flatten(),
+    };
     let lo = mu_min.unwrap_or_else(|| mu_ms.map_or(0.01, |m| (m * (1.0 + 1e-6)).max(1e-6)));
     let hi = mu_max.unwrap_or(10.0 * lo);
     let mut grid = mu_grid(lo, hi, points)?;
@@ -380,47 +401,63 @@ pub(crate) fn mu_samples(
 }
 
 pub(crate) fn run_curve(a: LoadCurveArgs, settings: &Settings, io: &mut Io) -> Exit {
-    let (arch, load) = match a.arch.build().and_then(|arch| {
-        let load = a.live.build(&arch)?;
-        Ok((arch, load))
-    }) {
-        Ok(v) => v,
-        Err(e) => return io.bad_input(&e),
-    };
-    let eta = match a.arch.eta(a.eta) {
-        Ok(e) => e,
+    let p = match a.question(settings) {
+        Ok(p) => p,
         Err(e) => return io.bad_input(&e),
     };
     let bar = super::progress::Progress::new("load-curve");
-    let curve = match mu_samples(&arch, a.mu_min, a.mu_max, a.points, settings)
-        .and_then(|grid| trace(&arch, eta, &load, &grid, settings, &|d, t| bar.update(d, t)))
+    let (arch, eta, load) = (&p.arch, p.eta, &p.load);
+    let curve = match mu_samples((arch, eta), a.mu_min, a.mu_max, a.points, settings)
+        .and_then(|grid| trace(arch, eta, load, &grid, settings, &|d, t| bar.update(d, t)))
     {
         Ok(s) => s,
         Err(e) => return io.bad_input(&e),
     };
     let q = LoadQuestion {
-        arch: &arch,
-        eta,
-        mu: f64::INFINITY,
-        load,
         dims: None,
         vehicle_kn: None,
+        ..p.question(f64::INFINITY)
     };
     if a.json {
-        io.out(&to_json(&curve_json(&q, &curve)));
+        io.out(&p.framed_json(&curve_json(&q, &curve)));
     } else {
-        io.out(&curve_table(&q, &curve));
+        io.out(&(p.framed_head() + &curve_table(&q, &curve)));
     }
     Exit::Answered
 }
 
 impl LoadCurveArgs {
+    /// The question: the arch with its fill, η and the load (a vehicle stays at `--at`: its
+    /// critical position moves with μ).
+    fn question(&self, settings: &Settings) -> Result<Prepared, InputError> {
+        if self.bridge.vehicle.critical {
+            return Err(InputError::Inconsistent {
+                arg: "--critical",
+                reason: "load-curve keeps the vehicle at --at (its critical position moves \
+                         with mu): give --at, or run load --critical at each mu"
+                    .into(),
+            });
+        }
+        prepare_parts(
+            (&self.arch, self.eta, f64::INFINITY),
+            Some(&self.live),
+            &self.bridge,
+            settings,
+        )
+    }
+
     /// The figure's title and the traced curve (the `plot load-curve` figure).
     pub(crate) fn trace(&self, settings: &Settings) -> Result<(String, LoadCurve), InputError> {
-        let arch = self.arch.build()?;
-        let load = self.live.build(&arch)?;
-        let eta = self.arch.eta(self.eta)?;
-        let grid = mu_samples(&arch, self.mu_min, self.mu_max, self.points, settings)?;
+        let Prepared {
+            arch, eta, load, ..
+        } = self.question(settings)?;
+        let grid = mu_samples(
+            (&arch, eta),
+            self.mu_min,
+            self.mu_max,
+            self.points,
+            settings,
+        )?;
         let samples = trace(&arch, eta, &load, &grid, settings, &|_, _| {})?;
         let what = match load {
             LiveLoad::Horizontal { .. } => "horizontal acceleration".to_string(),
@@ -429,8 +466,9 @@ impl LoadCurveArgs {
         };
         Ok((
             format!(
-                "{} — {what}, η = {}: λ against μ",
+                "{}{} — {what}, η = {}: λ against μ",
                 crate::render::plot::arch_label(&arch),
+                if arch.fill().is_some() { " with fill" } else { "" },
                 eta
             ),
             samples,

@@ -165,15 +165,15 @@ pub(crate) enum Figure {
         #[command(flatten)]
         output: Output,
     },
-    /// The load multiplier against friction at a fixed thickness: lambda_static and the collapse multiplier lambda (coloured by mode), the gap between them shaded.
+    /// The load multiplier against friction at a fixed thickness: lambda_static and the collapse multiplier lambda (coloured by mode), the gap between them shaded. A vehicle stays at --at; PNG width is --png-width (--width is the barrel).
     #[command(
         after_help = "Example:\n  arch-enum plot load-curve --alpha 0 --blocks 20 --eta 0.3 --horizontal --out lambda_mu.png"
     )]
     LoadCurve {
         #[command(flatten)]
-        curve: super::load::LoadCurveArgs,
+        curve: Box<super::load::LoadCurveArgs>,
         #[command(flatten)]
-        output: Output,
+        output: BridgeOutput,
     },
     /// The influence line of a vehicle: its collapse multiplier against its road position, the local minima and the critical position X* marked, and the arch with the mechanism at X*.
     #[command(
@@ -222,7 +222,10 @@ pub(crate) fn run(figure: Figure, settings: &Settings, io: &mut Io) -> Exit {
         Figure::Arch { output, .. } => ("arch", output),
         Figure::Eccentricity { output, .. } => ("eccentricity", output),
         Figure::Load { output, .. } => ("load", output),
-        Figure::LoadCurve { output, .. } => ("load_curve", output),
+        Figure::LoadCurve { output, .. } => {
+            bridge_output = output.output();
+            ("load_curve", &bridge_output)
+        }
         Figure::Influence { output, .. } => {
             bridge_output = output.output();
             ("influence", &bridge_output)

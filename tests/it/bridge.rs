@@ -941,3 +941,69 @@ fn plot_arch_draws_the_fill() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `load-curve` on a bridge (fill and a vehicle at `--at`): at each μ the λ of `load` with the
+/// same flags, and the bridge's keys (scope, fill, vehicle, geometry) in its document; the
+/// vehicle's critical position moves with μ, so `--critical` is refused by name.
+#[test]
+fn load_curve_takes_the_bridge_flags() {
+    use crate::cli::json_of;
+    let bridge = [
+        "--span",
+        "10",
+        "--rise",
+        "5",
+        "--ring",
+        "0.6",
+        "--width",
+        "1",
+        "--unit-weight",
+        "20",
+        "--fill-weight",
+        "18",
+        "--fill-depth",
+        "0.3",
+        "--axles",
+        "100,100",
+        "--spacing",
+        "1.2",
+    ];
+    let mut curve = vec![
+        "load-curve",
+        "--at",
+        "3.0",
+        "--points",
+        "2",
+        "--mu-min",
+        "0.45",
+    ];
+    curve.extend(["--mu-max", "0.6"]);
+    curve.extend(bridge);
+    let (v, code) = json_of(&curve);
+    assert_eq!(code, 0, "{v}");
+    assert_eq!(v["fill"]["weight_kn_m3"], 18.0);
+    assert_eq!(v["vehicle"]["axles_kn"][1], 100.0);
+    assert!(v["scope"].as_str().unwrap().contains("fill"));
+    assert!(v["geometry"]["radius_m"].as_f64().is_some());
+    let points = v["points"].as_array().unwrap();
+    assert_eq!(points.len(), 3);
+    for p in points {
+        let mu = p["mu"]
+            .as_f64()
+            .map_or("inf".to_string(), |m| m.to_string());
+        let mut load = vec!["load", "--at", "3.0", "--mu", &mu];
+        load.extend(bridge);
+        let (w, code) = json_of(&load);
+        assert_eq!(code, 0, "{w}");
+        let (a, b) = (p["lambda"].as_f64().unwrap(), w["lambda"].as_f64().unwrap());
+        assert!(
+            (a - b).abs() <= 1e-9 * b,
+            "mu {mu}: load-curve {a}, load {b}"
+        );
+    }
+    let mut critical = vec!["load-curve", "--critical"];
+    critical.extend(bridge);
+    let (v, code) = json_of(&critical);
+    assert_eq!(code, 2);
+    assert!(v["message"].as_str().unwrap().contains("--critical"), "{v}");
+}

@@ -47,7 +47,7 @@ pub struct AssessJson {
     message: Option<String>,
     /// The fill (absent without fill).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub fill: Option<super::FillJson>,
+    pub fill: Option<super::bridge::FillJson>,
 }
 
 fn finite(v: f64) -> Option<f64> {
