@@ -468,7 +468,11 @@ impl LoadCurveArgs {
             format!(
                 "{}{} — {what}, η = {}: λ against μ",
                 crate::render::plot::arch_label(&arch),
-                if arch.fill().is_some() { " with fill" } else { "" },
+                if arch.fill().is_some() {
+                    " with fill"
+                } else {
+                    ""
+                },
                 eta
             ),
             samples,
