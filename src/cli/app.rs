@@ -78,7 +78,7 @@ pub(super) enum Command {
     #[command(
         after_help = "Example:\n  arch-enum assess --alpha 0 --eta 0.2 --mu 0.35\n  arch-enum assess --alpha-deg 30 --eta 0.5 --mu 0.9 --radius 5 --depth 1 --density 2000"
     )]
-    Assess(assess::AssessArgs),
+    Assess(Box<assess::AssessArgs>),
     /// The collapse multiplier of a live load (horizontal acceleration or a point load) at a given thickness and friction: the static maximum, every limit state below it (non-associative friction can lower the collapse load), unique or not.
     #[command(
         after_help = "Example:\n  arch-enum load --alpha 0 --blocks 27 --weight centroid --eta 0.153361 --mu inf --point-load-deg 53.3333333333\n  arch-enum load --alpha 0 --blocks 20 --eta 0.3 --mu 0.8 --horizontal --json"
@@ -88,7 +88,7 @@ pub(super) enum Command {
     #[command(
         after_help = "Example:\n  arch-enum load-curve --alpha 0 --blocks 20 --eta 0.3 --horizontal\n  arch-enum load-curve --alpha 0 --eta 0.2 --point-load-deg 60 --mu-min 0.4 --mu-max 2 --json"
     )]
-    LoadCurve(load::LoadCurveArgs),
+    LoadCurve(Box<load::LoadCurveArgs>),
     /// eta*(mu) sampled at geometrically spaced mu, one row per mu, with the mode.
     #[command(
         after_help = "Example:\n  arch-enum curve --alpha 0 --points 10\n  arch-enum curve --alpha 1 --mu-min 1 --mu-max 100 --json"
@@ -155,9 +155,9 @@ where
         Command::Verify(a) => certify::run_verify(a, &mut io),
         Command::Plot { figure } => plot::run(figure, &settings, &mut io),
         Command::Curve(a) => curve::run(a, &settings, &mut io),
-        Command::Assess(a) => assess::run(a, &settings, &mut io),
+        Command::Assess(a) => assess::run(*a, &settings, &mut io),
         Command::Load(a) => load::run(*a, &settings, &mut io),
-        Command::LoadCurve(a) => load::run_curve(a, &settings, &mut io),
+        Command::LoadCurve(a) => load::run_curve(*a, &settings, &mut io),
         Command::Serve(a) => serve(a, &mut io),
     };
     exit.code()
