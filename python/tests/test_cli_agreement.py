@@ -132,6 +132,20 @@ def test_assess(cli, eta, mu):
         assert a.eta_min == pytest.approx(doc["eta_min"], rel=1e-12)
 
 
+@pytest.mark.parametrize("arch_kw,flags", FILLED)
+def test_assess_with_fill(cli, arch_kw, flags):
+    """`assess` of an arch with fill: the same verdict, factors and least friction as the
+    command line (whose JSON adds the fill, `fill`)."""
+    code, doc = cli("assess", *flags, "--eta", "0.15", "--mu", "0.6", "--json")
+    assert code == 0
+    assert doc.pop("fill")["weight_ratio"] == arch_kw["fill_ratio"]
+    arch = ae.Arch(**arch_kw)
+    agree(_native.assess(arch._spec(), 0.15, 0.6), doc)
+    a = ae.assess(arch, 0.15, 0.6)
+    assert a.stands == doc["stands"]
+    assert a.mu_min == pytest.approx(doc["mu_min"], rel=1e-12)
+
+
 @pytest.mark.parametrize("kw,flags", [
     (dict(horizontal="right"), ["--horizontal"]),
     (dict(horizontal="left"), ["--horizontal-left"]),
