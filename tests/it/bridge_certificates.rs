@@ -234,3 +234,65 @@ fn tampered_bridge_certificates_are_rejected() {
     let why = verify(&c).unwrap_err().0;
     assert!(why.contains("arch.fill"), "{why}");
 }
+
+/// The command line: `certify` with the bridge flags writes a certificate of the vehicle where
+/// it stands (`at_m`) on the arch with its fill, and `verify` holds it; without a load the
+/// fill flags are refused by name (no least-thickness certificate with fill).
+#[test]
+fn certify_takes_the_bridge_flags() {
+    use crate::cli::json_of;
+    let dir = std::env::temp_dir().join(format!("arch-enum-bridgecert-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("bridge.json");
+    let file = file.to_str().unwrap();
+    let bridge = [
+        "certify",
+        "--span",
+        "10",
+        "--rise",
+        "5",
+        "--ring",
+        "0.6",
+        "--width",
+        "1",
+        "--unit-weight",
+        "20",
+        "--mu",
+        "0.6",
+        "--fill-weight",
+        "18",
+        "--fill-depth",
+        "0.3",
+    ];
+    let mut args = bridge.to_vec();
+    args.extend([
+        "--axles",
+        "100,100",
+        "--spacing",
+        "1.2",
+        "--at",
+        "4.0",
+        "--blocks",
+        "16",
+    ]);
+    args.extend(["--gap", "1e-10", "--out", file]);
+    let (v, code) = json_of(&args);
+    assert_eq!(code, 0, "{v}");
+    assert_eq!(v["status"], "ok");
+    assert_eq!(v["at_m"], 4.0);
+    assert_eq!(v["load"]["kind"], "pressure");
+    assert_eq!(v["certificate"]["arch"]["fill"]["weight_ratio"], 0.9);
+    let (w, code) = crate::cli::json_of(&["verify", file]);
+    assert_eq!(code, 0, "{w}");
+    assert_eq!(w["status"], "ok");
+    let (e, code) = json_of(&bridge);
+    assert_eq!(code, 2, "{e}");
+    assert!(
+        e["message"]
+            .as_str()
+            .unwrap()
+            .contains("--fill-weight/--fill-ratio"),
+        "{e}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
