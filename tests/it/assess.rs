@@ -148,32 +148,16 @@ fn assessed_with_fill() {
 /// `assess` takes the fill flags: the fill's line and JSON key, the bridge's scope.
 #[test]
 fn assess_takes_the_fill_flags() {
-    let args = [
-        "assess",
-        "--span",
-        "10",
-        "--rise",
-        "5",
-        "--ring",
-        "0.6",
-        "--width",
-        "1",
-        "--unit-weight",
-        "20",
-        "--mu",
-        "0.6",
-        "--fill-weight",
-        "18",
-        "--fill-depth",
-        "0.3",
-    ];
+    let mut args = vec!["assess", "--mu", "0.6"];
+    args.extend(crate::bridge::DIMENSIONS);
+    args.extend(crate::bridge::FILL);
     let (v, code) = json_of(&args);
     assert_eq!(code, 0);
     assert_eq!(v["fill"]["weight_ratio"], 0.9);
     assert_eq!(v["stands"], true);
     let out = assert_cmd::Command::cargo_bin("arch-enum")
         .unwrap()
-        .args(args)
+        .args(&args)
         .output()
         .unwrap();
     let text = String::from_utf8(out.stdout).unwrap();

@@ -523,7 +523,8 @@ fn load_json(args: &[&str]) -> serde_json::Value {
     serde_json::from_slice(&out.stdout).unwrap()
 }
 
-const ENGINEER: [&str; 12] = [
+/// The README's bridge in metres: span, rise, ring, barrel and unit weight (no μ).
+pub const DIMENSIONS: [&str; 10] = [
     "--span",
     "10",
     "--rise",
@@ -534,6 +535,23 @@ const ENGINEER: [&str; 12] = [
     "1",
     "--unit-weight",
     "20",
+];
+
+/// Its fill (18 kN/m³, 0.3 m of it above the crown's extrados).
+pub const FILL: [&str; 4] = ["--fill-weight", "18", "--fill-depth", "0.3"];
+
+/// The README's bridge and μ = 0.6, without fill.
+const ENGINEER: [&str; 12] = [
+    DIMENSIONS[0],
+    DIMENSIONS[1],
+    DIMENSIONS[2],
+    DIMENSIONS[3],
+    DIMENSIONS[4],
+    DIMENSIONS[5],
+    DIMENSIONS[6],
+    DIMENSIONS[7],
+    DIMENSIONS[8],
+    DIMENSIONS[9],
     "--mu",
     "0.6",
 ];
@@ -948,26 +966,8 @@ fn plot_arch_draws_the_fill() {
 #[test]
 fn load_curve_takes_the_bridge_flags() {
     use crate::cli::json_of;
-    let bridge = [
-        "--span",
-        "10",
-        "--rise",
-        "5",
-        "--ring",
-        "0.6",
-        "--width",
-        "1",
-        "--unit-weight",
-        "20",
-        "--fill-weight",
-        "18",
-        "--fill-depth",
-        "0.3",
-        "--axles",
-        "100,100",
-        "--spacing",
-        "1.2",
-    ];
+    let mut bridge: Vec<&str> = DIMENSIONS.iter().chain(&FILL).copied().collect();
+    bridge.extend(["--axles", "100,100", "--spacing", "1.2"]);
     let mut curve = vec![
         "load-curve",
         "--at",
@@ -978,7 +978,7 @@ fn load_curve_takes_the_bridge_flags() {
         "0.45",
     ];
     curve.extend(["--mu-max", "0.6"]);
-    curve.extend(bridge);
+    curve.extend(&bridge);
     let (v, code) = json_of(&curve);
     assert_eq!(code, 0, "{v}");
     assert_eq!(v["fill"]["weight_kn_m3"], 18.0);
@@ -992,7 +992,7 @@ fn load_curve_takes_the_bridge_flags() {
             .as_f64()
             .map_or("inf".to_string(), |m| m.to_string());
         let mut load = vec!["load", "--at", "3.0", "--mu", &mu];
-        load.extend(bridge);
+        load.extend(&bridge);
         let (w, code) = json_of(&load);
         assert_eq!(code, 0, "{w}");
         let (a, b) = (p["lambda"].as_f64().unwrap(), w["lambda"].as_f64().unwrap());
@@ -1002,7 +1002,7 @@ fn load_curve_takes_the_bridge_flags() {
         );
     }
     let mut critical = vec!["load-curve", "--critical"];
-    critical.extend(bridge);
+    critical.extend(&bridge);
     let (v, code) = json_of(&critical);
     assert_eq!(code, 2);
     assert!(v["message"].as_str().unwrap().contains("--critical"), "{v}");

@@ -245,25 +245,9 @@ fn certify_takes_the_bridge_flags() {
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("bridge.json");
     let file = file.to_str().unwrap();
-    let bridge = [
-        "certify",
-        "--span",
-        "10",
-        "--rise",
-        "5",
-        "--ring",
-        "0.6",
-        "--width",
-        "1",
-        "--unit-weight",
-        "20",
-        "--mu",
-        "0.6",
-        "--fill-weight",
-        "18",
-        "--fill-depth",
-        "0.3",
-    ];
+    let mut bridge = vec!["certify", "--mu", "0.6"];
+    bridge.extend(crate::bridge::DIMENSIONS);
+    bridge.extend(crate::bridge::FILL);
     let mut args = bridge.to_vec();
     args.extend([
         "--axles",
