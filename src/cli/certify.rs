@@ -74,13 +74,21 @@ fn arch_json(a: &ArchSpec) -> serde_json::Value {
     v
 }
 
-pub(crate) fn run_certify(a: CertifyArgs, settings: &Settings, io: &mut Io) -> Exit {
-    let arch = match a.arch.build().and_then(|arch| check_mu(a.mu).map(|_| arch)) {
-        Ok(arch) => arch,
-        Err(e) => return io.bad_input(&e),
-    };
+/// What `certify` is asked: the arch (with its fill under a load), the load with its η,
+/// where a vehicle stands and whether that is its critical position.
+struct Asked {
+    arch: crate::arch::Arch,
+    load: Option<(f64, crate::load::LiveLoad)>,
+    at_m: Option<f64>,
+    critical: bool,
+}
+
+/// The question of `a`, every input checked.
+fn asked(a: &CertifyArgs, settings: &Settings) -> Result<Asked, InputError> {
+    let arch = a.arch.build()?;
+    check_mu(a.mu)?;
     if !(a.gap.is_finite() && (1e-15..=1e-4).contains(&a.gap)) {
-        return io.bad_input(&InputError::OutOfRange {
+        return Err(InputError::OutOfRange {
             arg: "--gap",
             value: fmt_value(a.gap),
             range: "1e-15 <= gap <= 1e-4".into(),
@@ -89,32 +97,46 @@ pub(crate) fn run_certify(a: CertifyArgs, settings: &Settings, io: &mut Io) -> E
     // a live load (or a vehicle, on the arch with its fill) and its thickness come together
     let loaded = a.live.is_some() || a.bridge.vehicle.given();
     if !loaded && a.bridge.fill.given() {
-        return io.bad_input(&InputError::Inconsistent {
+        return Err(InputError::Inconsistent {
             arg: "--fill-weight/--fill-ratio",
             reason:
-                "a certificate of the least thickness of an arch with fill is not written yet; \
-                     certify a load on it (--axles with --at or --critical, --point-load, ...)"
+                "a certificate of the least thickness of an arch with fill is not written \
+                     yet; certify a load on it (--axles with --at or --critical, --point-load, ...)"
                     .into(),
         });
     }
-    let question =
-        loaded.then(|| prepare_parts((&a.arch, a.eta, a.mu), a.live.as_ref(), &a.bridge, settings));
-    let question = match question.transpose() {
+    if !loaded && a.eta.or(a.arch.ring).is_some() {
+        return Err(InputError::Inconsistent {
+            arg: "--eta/--ring",
+            reason: "--eta (or --ring) is used only with a live load (--horizontal, --horizontal-left, --point-load, --point-load-deg or --point-load-joint); without one, certify finds eta* itself".into(),
+        });
+    }
+    if !loaded {
+        return Ok(Asked {
+            arch,
+            load: None,
+            at_m: None,
+            critical: false,
+        });
+    }
+    let q = prepare_parts((&a.arch, a.eta, a.mu), a.live.as_ref(), &a.bridge, settings)?;
+    Ok(Asked {
+        load: Some((q.eta, q.load)),
+        at_m: q.vehicle_at(),
+        critical: q.critical().is_some(),
+        arch: q.arch,
+    })
+}
+
+pub(crate) fn run_certify(a: CertifyArgs, settings: &Settings, io: &mut Io) -> Exit {
+    let Asked {
+        arch,
+        load,
+        at_m,
+        critical,
+    } = match asked(&a, settings) {
         Ok(q) => q,
         Err(e) => return io.bad_input(&e),
-    };
-    let arch = question.as_ref().map_or(arch, |q| q.arch.clone());
-    let at_m = question.as_ref().and_then(|q| q.vehicle_at());
-    let critical = question.as_ref().is_some_and(|q| q.critical().is_some());
-    let load = match (&question, a.eta.or(a.arch.ring)) {
-        (Some(q), _) => Some((q.eta, q.load)),
-        (None, Some(_)) => {
-            return io.bad_input(&InputError::Inconsistent {
-                arg: "--eta/--ring",
-                reason: "--eta (or --ring) is used only with a live load (--horizontal, --horizontal-left, --point-load, --point-load-deg or --point-load-joint); without one, certify finds eta* itself".into(),
-            })
-        }
-        (None, None) => None,
     };
     let made = match &load {
         Some((eta, live)) => certify_load(&arch, *eta, a.mu, live, a.gap, settings),
