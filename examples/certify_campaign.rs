@@ -12,21 +12,9 @@ use arch_enum::{least_friction, Arch, Settings, WeightModel};
 use arch_enum::{solve, Outcome};
 use std::collections::BTreeMap;
 
-/// A small deterministic generator (64-bit LCG), so that a run can be repeated.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn range(&mut self, a: f64, b: f64) -> f64 {
-        a + (b - a) * self.next()
-    }
-}
+#[path = "common/lcg.rs"]
+mod lcg;
+use lcg::Rng;
 
 /// A random arch and a description of it.
 fn random_arch(rng: &mut Rng) -> Option<(Arch, String)> {

@@ -16,17 +16,9 @@ use arch_enum::limit_states::survey;
 use arch_enum::{Arch, Settings, WeightModel};
 use std::time::Instant;
 
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
+#[path = "common/lcg.rs"]
+mod lcg;
+use lcg::Rng;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();

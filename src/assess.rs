@@ -108,13 +108,17 @@ pub fn assess(
         Outcome::Unresolved { eta_hi, .. } => (eta >= *eta_hi, None, None),
     };
     // with fill, whether this thickness stands is its own question (admissibility need not
-    // grow with η), and η/η* is a factor of safety only where every thicker ring stands
-    let (stands, geometric_factor) = match arch.fill() {
-        Some(_) => (
-            safest_state(arch, eta, mu, settings).is_some(),
-            geometric_factor.filter(|_| !gaps),
-        ),
-        None => (stands, geometric_factor),
+    // grow with η): the safest state decides it, found once; and η/η* is a factor of
+    // safety only where every thicker ring stands
+    let (stands, geometric_factor, safest) = match arch.fill() {
+        Some(_) => {
+            let safest = safest_state(arch, eta, mu, settings);
+            (safest.is_some(), geometric_factor.filter(|_| !gaps), safest)
+        }
+        None => {
+            let safest = stands.then(|| safest_state(arch, eta, mu, settings));
+            (stands, geometric_factor, safest.flatten())
+        }
     };
     let least_friction = least_friction_for(arch, eta, settings);
     let friction_factor = match &least_friction {
@@ -122,9 +126,6 @@ pub fn assess(
         LeastFriction::Finite { .. } => Some(f64::INFINITY),
         LeastFriction::Never => None,
     };
-    let safest = stands
-        .then(|| safest_state(arch, eta, mu, settings))
-        .flatten();
     Ok(Assessment {
         eta,
         mu,

@@ -85,7 +85,6 @@ struct Asked {
 
 /// The question of `a`, every input checked.
 fn asked(a: &CertifyArgs, settings: &Settings) -> Result<Asked, InputError> {
-    let arch = a.arch.build()?;
     check_mu(a.mu)?;
     if !(a.gap.is_finite() && (1e-15..=1e-4).contains(&a.gap)) {
         return Err(InputError::OutOfRange {
@@ -113,7 +112,7 @@ fn asked(a: &CertifyArgs, settings: &Settings) -> Result<Asked, InputError> {
     }
     if !loaded {
         return Ok(Asked {
-            arch,
+            arch: a.arch.build()?,
             load: None,
             at_m: None,
             critical: false,

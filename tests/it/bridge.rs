@@ -790,23 +790,11 @@ fn plot_influence_draws_the_crossing() {
 #[test]
 fn solve_takes_fill_in_kn_and_non_dimensionally() {
     use crate::cli::json_of;
-    let (a, _) = json_of(&[
-        "solve",
-        "--span",
-        "10",
-        "--rise",
-        "5",
-        "--ring",
-        "0.6",
-        "--unit-weight",
-        "20",
-        "--fill-weight",
-        "18",
-        "--fill-depth",
-        "0.3",
-        "--mu",
-        "0.6",
-    ]);
+    // the README's bridge without its barrel width (solve answers per unit width)
+    let mut args = vec!["solve", "--mu", "0.6", "--unit-weight", "20"];
+    args.extend(&DIMENSIONS[..6]);
+    args.extend(FILL);
+    let (a, _) = json_of(&args);
     let h = (0.3 / 5.3).to_string();
     let (b, _) = json_of(&[
         "solve",

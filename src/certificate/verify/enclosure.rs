@@ -9,13 +9,14 @@ use super::statics::{kinds, phi, Model, Ntm};
 use crate::certificate::format::ContactKind;
 use crate::certificate::interval::Interval as I;
 
-/// Upper bound of φ over [a, b] by the second-order Taylor form at the midpoint
-/// (`eval`: the actions over an interval of angles).
-fn taylor_upper(
+/// Upper bound of φ over [a, b], and a lower bound at the midpoint (`eval`: the actions over
+/// an interval of angles): by the second-order Taylor form at the midpoint where φ' is
+/// continuous (`smooth`), else by the enclosure of φ itself (the sliver around a patch's
+/// edge, where φ' jumps).
+fn upper_bound(
     eval: &dyn Fn(I) -> Ntm,
     kind: ContactKind,
-    a: f64,
-    b: f64,
+    (a, b, smooth): (f64, f64, bool),
     eta: f64,
     mu: Option<f64>,
 ) -> (f64, f64) {
@@ -24,6 +25,9 @@ fn taylor_upper(
     let at_m = eval(I::point(m));
     let over = eval(I::new(a, b));
     let f0 = phi(kind, 0, &at_m, eta, mu);
+    if !smooth {
+        return (phi(kind, 0, &over, eta, mu).hi, f0.lo);
+    }
     let f1 = phi(kind, 1, &at_m, eta, mu);
     let f2 = phi(kind, 2, &over, eta, mu);
     let p = f1.lo.abs().max(f1.hi.abs());
@@ -115,21 +119,6 @@ pub(super) struct Piece<'a> {
     pub(super) smooth: bool,
 }
 
-/// Upper bound of φ over [a, b] from its enclosure there, and a lower bound at the midpoint
-/// (for a piece where φ' jumps).
-fn direct_upper(
-    eval: &dyn Fn(I) -> Ntm,
-    kind: ContactKind,
-    a: f64,
-    b: f64,
-    eta: f64,
-    mu: Option<f64>,
-) -> (f64, f64) {
-    let over = phi(kind, 0, &eval(I::new(a, b)), eta, mu);
-    let at_m = phi(kind, 0, &eval(I::point(0.5 * (a + b))), eta, mu);
-    (over.hi, at_m.lo)
-}
-
 /// Proves φ ≤ 0 (φ < 0 with `strict`) for the activation functions `kinds` on every
 /// piece: at each listed joint inside it (discrete arch), else over its whole continuum of
 /// angles (Taylor enclosures, adaptive splitting). `what` starts the rejection messages.
@@ -180,11 +169,7 @@ pub(super) fn prove_pieces(
                         "{what}: enclosure work limit reached without a proof"
                     ));
                 }
-                let (upper, lower_mid) = if piece.smooth {
-                    taylor_upper(eval, kind, a, b, eta, mu)
-                } else {
-                    direct_upper(eval, kind, a, b, eta, mu)
-                };
+                let (upper, lower_mid) = upper_bound(eval, kind, (a, b, piece.smooth), eta, mu);
                 if upper < 0.0 || (!strict && upper <= 0.0) {
                     continue;
                 }
