@@ -71,6 +71,11 @@ impl Io<'_> {
     pub(crate) fn out(&mut self, text: &str) {
         emit(self.out, text);
     }
+    /// Writes a result that is not text (a PNG on standard output).
+    pub(crate) fn out_bytes(&mut self, bytes: &[u8]) {
+        let _ = self.out.write_all(bytes);
+        let _ = self.out.flush();
+    }
     /// Writes a diagnostic.
     pub(crate) fn err(&mut self, text: &str) {
         emit(self.err, text);

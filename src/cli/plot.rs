@@ -12,7 +12,8 @@ use clap::{Args, Subcommand};
 #[derive(Args, Debug)]
 pub(crate) struct Output {
     /// Output file; its extension picks the format: .svg or .png (default: <figure>.svg, or
-    /// <figure>.png with --png, in the current folder).
+    /// <figure>.png with --png, in the current folder); `-` writes to standard output (SVG,
+    /// or PNG with --png).
     #[arg(long)]
     out: Option<std::path::PathBuf>,
     /// PNG output (rendered in-process, fonts embedded); with --out the path must end in .png.
@@ -32,7 +33,8 @@ enum Format {
 
 impl Output {
     /// The path written and its format: from the extension of --out (.svg or .png, any
-    /// case), else `<name>.svg` or `<name>.png` with --png. Checked before any work.
+    /// case), else `<name>.svg` or `<name>.png` with --png; `-` is standard output. Checked
+    /// before any work.
     fn target(&self, name: &str) -> Result<(std::path::PathBuf, Format), InputError> {
         if !(100..=8000).contains(&self.width) {
             return Err(InputError::OutOfRange {
@@ -40,6 +42,10 @@ impl Output {
                 value: self.width.to_string(),
                 range: "100 to 8000 pixels".into(),
             });
+        }
+        if self.out.as_deref() == Some(std::path::Path::new("-")) {
+            let f = if self.png { Format::Png } else { Format::Svg };
+            return Ok(("-".into(), f));
         }
         let Some(path) = &self.out else {
             let (ext, f) = if self.png {
@@ -77,7 +83,8 @@ impl Output {
 #[derive(Args, Debug)]
 pub(crate) struct BridgeOutput {
     /// Output file; its extension picks the format: .svg or .png (default: <figure>.svg, or
-    /// <figure>.png with --png, in the current folder).
+    /// <figure>.png with --png, in the current folder); `-` writes to standard output (SVG,
+    /// or PNG with --png).
     #[arg(long)]
     out: Option<std::path::PathBuf>,
     /// PNG output (rendered in-process, fonts embedded); with --out the path must end in .png.
@@ -250,6 +257,10 @@ pub(crate) fn run(figure: Figure, settings: &Settings, io: &mut Io) -> Exit {
             }
         },
     };
+    if path.as_os_str() == "-" {
+        io.out_bytes(&bytes);
+        return Exit::Answered;
+    }
     if let Err(e) = std::fs::write(&path, bytes) {
         io.err(&format!(
             "error: cannot write --out {}: {e}\n",

@@ -3,19 +3,20 @@
 //! Nothing is printed for work that finishes within the first second.
 
 use std::io::{IsTerminal, Write};
-use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 /// Quiet period before the first report.
 const QUIET: Duration = Duration::from_secs(1);
 
-/// Set by `serve`: no progress is printed (the server answers many requests).
-static QUIET_ALL: AtomicBool = AtomicBool::new(false);
+/// The environment variable that silences progress: `ARCH_ENUM_PROGRESS=off` (set by
+/// `serve` for the commands it runs, whose standard error it reads).
+pub(crate) const PROGRESS_ENV: &str = "ARCH_ENUM_PROGRESS";
 
-/// Silences every progress reporter of this process from now on.
-pub(crate) fn quiet() {
-    QUIET_ALL.store(true, Ordering::Relaxed);
+/// Whether progress is silenced for this process.
+fn silenced() -> bool {
+    static OFF: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    *OFF.get_or_init(|| std::env::var_os(PROGRESS_ENV).is_some_and(|v| v == "off"))
 }
 
 /// A progress reporter, safe to call from several threads.
@@ -40,7 +41,7 @@ impl Progress {
 
     /// Reports that `done` of `total` units are finished.
     pub(crate) fn update(&self, done: usize, total: usize) {
-        if QUIET_ALL.load(Ordering::Relaxed) || (self.start.elapsed() < QUIET && done < total) {
+        if silenced() || (self.start.elapsed() < QUIET && done < total) {
             return;
         }
         let mut st = self.state.lock().unwrap_or_else(|e| e.into_inner());

@@ -18,8 +18,13 @@ struct Server {
 
 impl Server {
     fn start() -> Server {
+        Server::start_with(&[])
+    }
+
+    fn start_with(extra: &[&str]) -> Server {
         let mut child = Command::new(cargo_bin("arch-enum"))
             .args(["serve", "--port", "0"])
+            .args(extra)
             .stdout(Stdio::piped())
             .stderr(Stdio::null())
             .spawn()
@@ -48,6 +53,16 @@ impl Server {
         req.extend_from_slice(target);
         req.extend_from_slice(b" HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n");
         s.write_all(&req)?;
+        let mut buf = Vec::new();
+        s.read_to_end(&mut buf)?;
+        Reply::parse(&buf)
+    }
+
+    /// Sends `request` (a whole head, and a body if any) as it is and reads the reply.
+    fn send(&self, request: &[u8]) -> std::io::Result<Reply> {
+        let mut s = TcpStream::connect(&self.addr)?;
+        s.set_read_timeout(Some(Duration::from_secs(30)))?;
+        s.write_all(request)?;
         let mut buf = Vec::new();
         s.read_to_end(&mut buf)?;
         Reply::parse(&buf)
@@ -356,11 +371,16 @@ fn page_and_figures_are_served() {
 
 /// A 400 with the error document, whose message contains `needle`.
 fn refused(server: &Server, target: &str, needle: &str) {
+    refused_with(400, server, target, needle)
+}
+
+/// A `status` with the error document, whose message contains `needle`.
+fn refused_with(status: u16, server: &Server, target: &str, needle: &str) {
     let r = server.get(target);
     let shown: String = target.chars().take(120).collect();
     assert_eq!(
         r.status,
-        400,
+        status,
         "{shown}: {}",
         String::from_utf8_lossy(&r.body)
     );
@@ -473,8 +493,9 @@ fn malformed_requests_are_refused_with_the_argument_named() {
         "parameter name is not valid UTF-8",
     );
     refused(&server, "/api/solve?alpha=0&mu=%00", "--mu");
-    // a very long URL
-    refused(
+    // a very long URL: 414
+    refused_with(
+        414,
         &server,
         &format!("/api/solve?alpha=0&mu={}", "1".repeat(9000)),
         "at most 8192",
@@ -495,12 +516,18 @@ fn malformed_requests_are_refused_with_the_argument_named() {
     assert_eq!(r.status, 405);
     assert_eq!(r.header("allow"), Some("GET"));
     assert_eq!(r.json()["status"], "error");
-    // raw non-ASCII bytes in the request line: the HTTP layer drops the connection; the
-    // server goes on answering
-    let _ = server.raw(b"GET", b"/api/solve?alpha=0&mu=\xff\xfe");
-    // a request line that is not HTTP (a space in the target): the HTTP layer's own 400
-    if let Ok(r) = server.raw(b"GET", b"/api/solve?alpha=0 &mu=1") {
+    // raw non-ASCII bytes in the request line, and a request line that is not HTTP (a
+    // space in the target): 400 with the error document
+    for target in [
+        &b"/api/solve?alpha=0&mu=\xff\xfe"[..],
+        b"/api/solve?alpha=0 &mu=1",
+    ] {
+        let r = server.raw(b"GET", target).unwrap();
         assert_eq!(r.status, 400);
+        assert!(r.json()["message"]
+            .as_str()
+            .unwrap()
+            .contains("malformed request"));
     }
     assert_eq!(server.get("/api/solve?alpha=0&mu=1").status, 200);
 }
@@ -674,4 +701,174 @@ fn fuzzed_queries_never_crash_the_server() {
         r.body,
         cli(&["solve", "--alpha", "0", "--mu", "0.35", "--json"]).0
     );
+}
+
+/// The error document with `status`, whose message contains `needle`.
+fn error_reply(r: &Reply, status: u16, needle: &str) {
+    assert_eq!(r.status, status, "{}", String::from_utf8_lossy(&r.body));
+    assert_eq!(r.header("content-type"), Some("application/json"));
+    let v = r.json();
+    assert_eq!(v["status"], "error");
+    let message = v["message"].as_str().unwrap();
+    assert!(message.contains(needle), "{message:?} lacks {needle:?}");
+}
+
+#[test]
+fn heads_and_bodies_are_bounded_and_the_host_checked() {
+    let server = Server::start();
+    let port = server.addr.rsplit_once(':').unwrap().1.to_string();
+    let get = |headers: &str| {
+        let head = format!("GET /api/solve?alpha=0&mu=0.35 HTTP/1.1\r\n{headers}\r\n");
+        server.send(head.as_bytes()).unwrap()
+    };
+    // a body declared far beyond what is accepted: refused without reading or allocating it
+    let r = get("Host: localhost\r\nContent-Length: 100000000000\r\n");
+    error_reply(&r, 413, "100000000000 bytes");
+    error_reply(
+        &get("Host: localhost\r\nTransfer-Encoding: chunked\r\n"),
+        411,
+        "Content-Length",
+    );
+    error_reply(
+        &get("Host: localhost\r\nContent-Length: 1\r\nContent-Length: 2\r\n"),
+        400,
+        "Content-Length",
+    );
+    // a small body is read and dropped; the answer is the command's
+    let head = "GET /api/solve?alpha=0&mu=0.35 HTTP/1.1\r\nHost: localhost\r\nContent-Length: 5\r\n\r\nhello";
+    assert_eq!(server.send(head.as_bytes()).unwrap().status, 200);
+    // a head over 16 KiB
+    let long = format!("Host: localhost\r\nX-Pad: {}\r\n", "a".repeat(20_000));
+    error_reply(&get(&long), 431, "16384 bytes");
+    // DNS rebinding: a Host other than this server's
+    for host in [
+        "evil.example.com",
+        "evil.example.com:80",
+        "127.0.0.1:1",
+        "localhost.evil.com",
+    ] {
+        error_reply(&get(&format!("Host: {host}\r\n")), 421, host);
+    }
+    for host in [
+        "localhost",
+        "127.0.0.1",
+        &format!("127.0.0.1:{port}"),
+        &format!("LocalHost:{port}"),
+    ] {
+        assert_eq!(get(&format!("Host: {host}\r\n")).status, 200, "{host}");
+    }
+    error_reply(&get(""), 400, "no Host header");
+    // a head that never ends: 408 after the head deadline (5 s)
+    let mut s = TcpStream::connect(&server.addr).unwrap();
+    s.set_read_timeout(Some(Duration::from_secs(30))).unwrap();
+    s.write_all(b"GET / HTTP/1.1\r\nHost: localhost\r\n")
+        .unwrap();
+    let t = Instant::now();
+    let mut buf = Vec::new();
+    s.read_to_end(&mut buf).unwrap();
+    error_reply(
+        &Reply::parse(&buf).unwrap(),
+        408,
+        "did not arrive within 5 s",
+    );
+    assert!(t.elapsed() < Duration::from_secs(20));
+    assert_eq!(server.get("/").status, 200);
+}
+
+#[test]
+fn long_work_is_stopped_at_the_budget() {
+    let server = Server::start_with(&["--budget", "0.5"]);
+    // `modes` of an arch within a degree of vertical takes seconds on the command line
+    let r = server.get("/api/modes?alpha_deg=-89");
+    error_reply(&r, 503, "time budget of 0.5 s");
+    assert_eq!(server.get("/api/solve?alpha=0&mu=0.35").status, 200);
+    let (code, err) = {
+        let o = Command::new(cargo_bin("arch-enum"))
+            .args(["serve", "--budget", "0"])
+            .output()
+            .unwrap();
+        (
+            o.status.code(),
+            String::from_utf8_lossy(&o.stderr).to_string(),
+        )
+    };
+    assert_eq!(code, Some(2));
+    assert!(
+        err.contains("--budget") && err.contains("0.1 to 3600"),
+        "{err}"
+    );
+    let o = Command::new(cargo_bin("arch-enum"))
+        .args(["serve", "--port", "-1"])
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("'-1'") && err.contains("--port"), "{err}");
+}
+
+/// Every attack of the issue at once, on loopback, each bounded: slow heads, idle
+/// connections that declared a body, long computations; a probe of the page and one of a
+/// command are answered within 2 s while they run (the command's possibly with 503 when
+/// every computation is taken), and the server answers after.
+#[test]
+fn attacks_leave_the_server_answering() {
+    let server = Server::start_with(&["--budget", "4"]);
+    let addr = server.addr.clone();
+    // 300 slow heads: a byte now and then, never finished
+    let slow: Vec<TcpStream> = (0..300)
+        .filter_map(|_| {
+            let mut s = TcpStream::connect(&addr).ok()?;
+            s.write_all(b"GET / HTTP/1.1\r\nHost: localhost\r\nX-a: ")
+                .ok()?;
+            Some(s)
+        })
+        .collect();
+    assert!(slow.len() >= 250, "{} slow connections opened", slow.len());
+    // idle connections that declared a body and never send it
+    let idle: Vec<TcpStream> = (0..4)
+        .map(|_| {
+            let mut s = TcpStream::connect(&addr).unwrap();
+            s.write_all(
+                b"GET /api/solve?alpha=0&mu=0.35 HTTP/1.1\r\nHost: localhost\r\nContent-Length: 60000\r\n\r\n",
+            )
+            .unwrap();
+            s
+        })
+        .collect();
+    // long computations, more than run at once
+    let long: Vec<_> = (0..6)
+        .map(|_| {
+            let addr = addr.clone();
+            std::thread::spawn(move || {
+                let mut s = TcpStream::connect(&addr).unwrap();
+                s.set_read_timeout(Some(Duration::from_secs(30))).unwrap();
+                s.write_all(b"GET /api/modes?alpha_deg=-89 HTTP/1.1\r\nHost: localhost\r\n\r\n")
+                    .unwrap();
+                let mut buf = Vec::new();
+                let _ = s.read_to_end(&mut buf);
+                Reply::parse(&buf).map(|r| r.status).ok()
+            })
+        })
+        .collect();
+    std::thread::sleep(Duration::from_millis(300));
+    for target in ["/", "/api/solve?alpha=0&mu=0.35"] {
+        let t = Instant::now();
+        let r = server.get(target);
+        let took = t.elapsed();
+        assert!(took < Duration::from_secs(2), "{target} took {took:?}");
+        match r.status {
+            200 => {}
+            503 => assert_ne!(target, "/", "the page needs no computation"),
+            s => panic!("{target}: {s}"),
+        }
+        if target != "/" {
+            assert!(r.json().is_object());
+        }
+    }
+    for h in long {
+        let status = h.join().unwrap();
+        assert!(matches!(status, Some(503) | Some(200)), "{status:?}");
+    }
+    drop((slow, idle));
+    assert_eq!(server.get("/api/solve?alpha=0&mu=0.35").status, 200);
 }

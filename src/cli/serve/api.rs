@@ -1,40 +1,26 @@
-//! `arch-enum serve`: a local HTTP server with one page (the explorer, `assets/explorer/`)
-//! and a JSON API that is the command line itself.
+//! What a request asks for: a page, or a command line for the CLI to run, or an error.
 //!
 //! A request `/api/solve?alpha=0&mu=0.35` becomes the argument list
-//! `arch-enum solve --alpha=0 --mu=0.35 --json`, parsed by the same clap definitions and
-//! run by the same command function as the binary ([`super::run`]), writing into buffers:
-//! the body is byte for byte what the CLI prints on standard output. Exit 0 (answered) and
-//! exit 1 (no answer for these inputs: no equilibrium, unresolved, ...; the document says
-//! which) are `200`; exit 2 (bad input) is `400` with the CLI's error document
-//! `{"version", "status": "error", "message"}`. Errors of the server's own (an unknown
-//! parameter, a limit below, a malformed query) use the same document. Unknown path: `404`;
-//! a method other than GET: `405`; a panic (none is known; each request is caught as a
-//! last line of defence): `500`. Figures (`/api/plot/arch|load|eccentricity`) are the
-//! `plot` command's SVG, `200 image/svg+xml`; "no figure" (the plot command's exit 1) is
-//! `422` with the same error document.
+//! `solve --alpha=0 --mu=0.35 --json`, checked against the same clap definitions as the
+//! binary's (an unknown or refused parameter is named here, before anything runs), and
+//! a figure `/api/plot/arch?...` becomes `plot arch ... --out -` (SVG on standard output).
+//! Errors of the request itself (an unknown parameter, a limit below, a malformed query)
+//! use the CLI's error document `{"version", "status": "error", "message"}`. Unknown path:
+//! `404`; a method other than GET: `405`; a URL over [`MAX_URL`] bytes: `414`.
 //!
-//! Bounded time: the commands whose cost grows with the number of joints are refused above
-//! the limits in [`LIMITS`] (measured on the 2-core development machine, release build).
-//! Requests are answered by [`WORKERS`] threads taking turns on one listening socket; the
-//! server binds 127.0.0.1 only.
+//! Bounded work: the commands whose cost grows with the number of joints are refused above
+//! the limits in [`LIMITS`] (measured on the 2-core development machine, release build);
+//! what is left is bounded by the server's time budget.
 
-use super::app::{run_with, Cli, Command};
-use super::io::{to_json, Exit, Io};
-use super::serve_args::ServeArgs;
-use crate::render::json::ErrorJson;
-use clap::{CommandFactory, Parser};
+use super::http::Reply;
+use crate::cli::app::Cli;
+use clap::CommandFactory;
 use std::ffi::OsString;
-use std::io::Write;
-use std::sync::Arc;
 
 /// The explorer page, its script and its style sheet, embedded (no build step, no CDN).
-const INDEX_HTML: &str = include_str!("../../assets/explorer/index.html");
-const EXPLORER_JS: &str = include_str!("../../assets/explorer/explorer.js");
-const EXPLORER_CSS: &str = include_str!("../../assets/explorer/explorer.css");
-
-/// Threads answering requests (the development machine has 2 cores).
-pub const WORKERS: usize = 2;
+const INDEX_HTML: &str = include_str!("../../../assets/explorer/index.html");
+const EXPLORER_JS: &str = include_str!("../../../assets/explorer/explorer.js");
+const EXPLORER_CSS: &str = include_str!("../../../assets/explorer/explorer.css");
 
 /// The longest request target (path and query) answered, in bytes.
 pub const MAX_URL: usize = 8192;
@@ -108,54 +94,32 @@ pub const LIMITS: &[Limit] = &[
     Limit { endpoint: "curve", param: "points", max: 100 },
 ];
 
-/// One HTTP answer.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Reply {
-    /// HTTP status code.
-    pub status: u16,
-    /// The Content-Type header.
-    pub content_type: &'static str,
-    /// The body.
-    pub body: Vec<u8>,
+/// What a request asks for.
+#[derive(Debug)]
+pub(super) enum Route {
+    /// An answer at once: a page, or an error of the request.
+    Reply(Reply),
+    /// A command line to run (without the program's name), and whether it draws a figure.
+    Run { args: Vec<OsString>, figure: bool },
 }
 
-const JSON: &str = "application/json";
-
-impl Reply {
-    fn error(status: u16, message: String) -> Reply {
-        Reply {
-            status,
-            content_type: JSON,
-            body: to_json(&ErrorJson::new(message)).into_bytes(),
-        }
-    }
-    fn text(content_type: &'static str, body: &str) -> Reply {
-        Reply {
-            status: 200,
-            content_type,
-            body: body.as_bytes().to_vec(),
-        }
+/// The route of `method url` (url: the request target, path and query).
+pub(super) fn route(method: &str, url: &str) -> Route {
+    match answer(method, url) {
+        Ok(run) => run,
+        Err(reply) => Route::Reply(reply),
     }
 }
 
-/// The answer to `method url` (url: the request target, path and query). Never panics
-/// (a panic inside a command is caught and answered `500`).
-pub fn respond(method: &str, url: &str) -> Reply {
-    match std::panic::catch_unwind(|| answer(method, url)) {
-        Ok(r) => r,
-        Err(_) => Reply::error(500, "internal error: the request panicked".into()),
-    }
-}
-
-fn answer(method: &str, url: &str) -> Reply {
+fn answer(method: &str, url: &str) -> Result<Route, Reply> {
     if url.len() > MAX_URL {
-        return Reply::error(
-            400,
+        return Err(Reply::error(
+            414,
             format!(
                 "the request URL is {} bytes long; at most {MAX_URL} are served",
                 url.len()
             ),
-        );
+        ));
     }
     let (path, query) = url.split_once('?').unwrap_or((url, ""));
     let page = match path {
@@ -172,26 +136,42 @@ fn answer(method: &str, url: &str) -> Reply {
                     .is_some_and(|f| FIGURES.contains(&f))
         });
     if !known {
-        return Reply::error(404, format!("no such page or endpoint: {path}"));
+        return Err(Reply::error(
+            404,
+            format!("no such page or endpoint: {path}"),
+        ));
     }
     if method != "GET" {
-        return Reply::error(
+        return Err(Reply::error(
             405,
             format!("method {method} not allowed: only GET is served"),
-        );
+        ));
     }
     if let Some((content_type, body)) = page {
-        return Reply::text(content_type, body);
+        return Ok(Route::Reply(Reply::text(content_type, body)));
     }
     let endpoint = endpoint.expect("a known API path");
-    let params = match parse_query(query) {
-        Ok(p) => p,
-        Err(message) => return Reply::error(400, message),
+    let params = parse_query(query).map_err(|message| Reply::error(400, message))?;
+    let run = match endpoint.strip_prefix("plot/") {
+        Some(figure) => {
+            let mut args = arguments(&["plot", figure], FIGURE_NEVER, &params)?;
+            args.push("--out=-".into());
+            Route::Run { args, figure: true }
+        }
+        None => {
+            let refused = COMMANDS
+                .iter()
+                .find(|(c, _)| *c == endpoint)
+                .map_or(&[][..], |(_, r)| *r);
+            let mut args = arguments(&[endpoint], refused, &params)?;
+            args.push("--json".into());
+            Route::Run {
+                args,
+                figure: false,
+            }
+        }
     };
-    match endpoint.strip_prefix("plot/") {
-        Some(figure) => run_figure(figure, &params),
-        None => run_command(endpoint, &params),
-    }
+    Ok(run)
 }
 
 /// A query parameter, percent-decoded; `value` is `None` for a bare key (`?horizontal`).
@@ -267,7 +247,15 @@ fn command_of(path: &[&str]) -> clap::Command {
 /// The CLI argument list of `path` and `params`: `--key=value` for a value, `--key` for a
 /// flag; a key must be a long option of the command (underscores read as hyphens) and
 /// not refused.
-fn arguments(path: &[&str], refused: &[&str], params: &[Param]) -> Result<Vec<OsString>, String> {
+fn arguments(path: &[&str], refused: &[&str], params: &[Param]) -> Result<Vec<OsString>, Reply> {
+    arguments_of(path, refused, params).map_err(|message| Reply::error(400, message))
+}
+
+fn arguments_of(
+    path: &[&str],
+    refused: &[&str],
+    params: &[Param],
+) -> Result<Vec<OsString>, String> {
     let cmd = command_of(path);
     let endpoint = path.join("/");
     let accepted: Vec<(String, bool)> = cmd
@@ -290,8 +278,7 @@ fn arguments(path: &[&str], refused: &[&str], params: &[Param]) -> Result<Vec<Os
         "modes" if centroid => "modes/centroid".to_string(),
         _ => endpoint.clone(),
     };
-    let mut args: Vec<OsString> = vec!["arch-enum".into()];
-    args.extend(path.iter().map(OsString::from));
+    let mut args: Vec<OsString> = path.iter().map(OsString::from).collect();
     for p in params {
         let key = p.key.replace('_', "-");
         let Some((_, takes_value)) = accepted.iter().find(|(k, _)| *k == key) else {
@@ -302,6 +289,11 @@ fn arguments(path: &[&str], refused: &[&str], params: &[Param]) -> Result<Vec<Os
                 names.join(", ")
             ));
         };
+        if p.value.as_deref().is_some_and(|v| v.contains('\0')) {
+            return Err(format!(
+                "invalid value for --{key}: it contains a NUL character"
+            ));
+        }
         match (takes_value, p.value.as_deref()) {
             (true, Some(v)) => args.push(format!("--{key}={v}").into()),
             (true, None) => {
@@ -363,7 +355,7 @@ fn check_limit(endpoint: &str, key: &str, value: Option<&str>) -> Result<(), Str
 
 /// Bad input reported by a command on its standard error ("error: ..." lines, clap's
 /// first paragraph) as one message.
-fn message_of(err: &[u8]) -> String {
+pub(super) fn message_of(err: &[u8]) -> String {
     let text = String::from_utf8_lossy(err);
     let lines: Vec<&str> = text
         .lines()
@@ -371,132 +363,4 @@ fn message_of(err: &[u8]) -> String {
         .map(|l| l.trim().trim_start_matches("error: "))
         .collect();
     lines.join(" ")
-}
-
-fn run_command(command: &str, params: &[Param]) -> Reply {
-    let refused = COMMANDS
-        .iter()
-        .find(|(c, _)| *c == command)
-        .map_or(&[][..], |(_, r)| *r);
-    let mut args = match arguments(&[command], refused, params) {
-        Ok(a) => a,
-        Err(message) => return Reply::error(400, message),
-    };
-    args.push("--json".into());
-    let (mut out, mut err) = (Vec::new(), Vec::new());
-    let code = run_with(args, &mut out, &mut err, run);
-    if code == Exit::BadInput.code() {
-        if out.is_empty() {
-            return Reply::error(400, message_of(&err));
-        }
-        return Reply {
-            status: 400,
-            content_type: JSON,
-            body: out,
-        };
-    }
-    Reply {
-        status: 200,
-        content_type: JSON,
-        body: out,
-    }
-}
-
-fn run_figure(figure: &str, params: &[Param]) -> Reply {
-    let args = match arguments(&["plot", figure], FIGURE_NEVER, params) {
-        Ok(a) => a,
-        Err(message) => return Reply::error(400, message),
-    };
-    let (mut out, mut err) = (Vec::new(), Vec::new());
-    let parsed = match Cli::try_parse_from(&args) {
-        Ok(Cli {
-            command: Command::Plot { figure },
-        }) => figure,
-        Ok(_) => return Reply::error(500, "internal error: not a figure".into()),
-        Err(e) => return Reply::error(400, message_of(e.render().to_string().as_bytes())),
-    };
-    let mut io = Io {
-        out: &mut out,
-        err: &mut err,
-        json: false,
-    };
-    match super::plot::draw(parsed, &crate::settings::Settings::default(), &mut io) {
-        Ok(svg) => Reply {
-            status: 200,
-            content_type: "image/svg+xml",
-            body: svg.into_bytes(),
-        },
-        Err(Exit::BadInput) => Reply::error(400, message_of(&err)),
-        Err(_) => Reply::error(422, message_of(&err)),
-    }
-}
-
-pub(crate) fn run(a: ServeArgs, io: &mut Io) -> Exit {
-    let server = match tiny_http::Server::http(("127.0.0.1", a.port)) {
-        Ok(s) => Arc::new(s),
-        Err(e) => {
-            return io.bad(format!(
-                "--port {}: cannot listen on 127.0.0.1: {e}",
-                a.port
-            ))
-        }
-    };
-    let url = match server.server_addr().to_ip() {
-        Some(addr) => format!("http://{addr}/"),
-        None => return io.bad("--port: the server has no IP address".into()),
-    };
-    io.out(&format!("{url}\n"));
-    if a.open {
-        // harmless when there is no xdg-open
-        let _ = std::process::Command::new("xdg-open")
-            .arg(&url)
-            .stdout(std::process::Stdio::null())
-            .stderr(std::process::Stdio::null())
-            .spawn();
-    }
-    super::progress::quiet();
-    let workers: Vec<_> = (0..WORKERS)
-        .map(|_| {
-            let server = Arc::clone(&server);
-            let verbose = a.verbose;
-            std::thread::spawn(move || {
-                for request in server.incoming_requests() {
-                    serve_one(request, verbose);
-                }
-            })
-        })
-        .collect();
-    for w in workers {
-        let _ = w.join();
-    }
-    Exit::Answered
-}
-
-fn serve_one(request: tiny_http::Request, verbose: bool) {
-    let start = std::time::Instant::now();
-    let method = request.method().as_str().to_string();
-    let reply = respond(&method, request.url());
-    let status = reply.status;
-    let mut response = tiny_http::Response::from_data(reply.body)
-        .with_status_code(status)
-        .with_header(header("Content-Type", reply.content_type))
-        .with_header(header("Cache-Control", "no-store"));
-    if status == 405 {
-        response = response.with_header(header("Allow", "GET"));
-    }
-    if verbose {
-        let _ = writeln!(
-            std::io::stderr(),
-            "{method} {} {status} {:.1} ms",
-            request.url(),
-            start.elapsed().as_secs_f64() * 1e3
-        );
-    }
-    // a client that went away is not an error of ours
-    let _ = request.respond(response);
-}
-
-fn header(name: &str, value: &str) -> tiny_http::Header {
-    tiny_http::Header::from_bytes(name.as_bytes(), value.as_bytes())
-        .expect("ASCII header names and values")
 }
