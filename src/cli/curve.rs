@@ -3,9 +3,8 @@
 use super::arch_args::ArchArgs;
 use super::io::{to_json, Exit, Io};
 use super::threads_arg::ThreadsArg;
-use crate::arch::{fmt_value, InputError};
 use crate::friction::least_friction;
-use crate::limit_curve::{mu_grid, sample};
+use crate::limit_curve::{check_mu_range, mu_grid, sample};
 use crate::render::{json, table};
 use crate::settings::Settings;
 use clap::Args;
@@ -35,16 +34,8 @@ pub(crate) fn run(a: CurveArgs, settings: &Settings, io: &mut Io) -> Exit {
         Ok(a) => a,
         Err(e) => return io.bad_input(&e),
     };
-    for (name, v) in [("--mu-min", a.mu_min), ("--mu-max", a.mu_max)] {
-        if let Some(v) = v {
-            if !(v.is_finite() && v > 0.0) {
-                return io.bad_input(&InputError::OutOfRange {
-                    arg: name,
-                    value: fmt_value(v),
-                    range: "0 < mu < inf".into(),
-                });
-            }
-        }
+    if let Err(e) = check_mu_range(a.mu_min, a.mu_max) {
+        return io.bad_input(&e);
     }
     let mu_ms = least_friction(&arch, settings).ok().flatten();
     let lo = a

@@ -386,6 +386,7 @@ pub(crate) fn mu_samples(
     points: usize,
     settings: &Settings,
 ) -> Result<Vec<f64>, InputError> {
+    crate::limit_curve::check_mu_range(mu_min, mu_max)?;
     let mu_ms = match arch.fill() {
         Some(_) => match crate::assess::least_friction_for(arch, eta, settings) {
             crate::assess::LeastFriction::Finite { mu, .. } if mu.is_finite() => Some(mu),

@@ -71,6 +71,19 @@ pub(crate) fn run(a: SolveArgs, settings: &Settings, io: &mut Io) -> Exit {
             .map(|(g, e)| f.depth_ratio * g.intrados.ring_of(e).radius);
         f
     });
+    // the COMPAS file first: a path that cannot be written is bad input, reported alone
+    let mut no_scene = None;
+    if let Some(path) = &a.compas {
+        match survey_scene(&survey) {
+            Ok(scene) => {
+                let doc = compas::document(&scene, a.radius);
+                if let Err(e) = std::fs::write(path, to_json(&doc)) {
+                    return io.bad(format!("cannot write --compas {}: {e}", path.display()));
+                }
+            }
+            Err(why) => no_scene = Some(why),
+        }
+    }
     if a.json {
         let mut doc = json::solve(&survey, a.explain);
         doc.fill = fill;
@@ -83,19 +96,9 @@ pub(crate) fn run(a: SolveArgs, settings: &Settings, io: &mut Io) -> Exit {
         }
         io.out(&(head + &table::solve(&survey, a.explain)));
     }
-    if let Some(path) = &a.compas {
-        match survey_scene(&survey) {
-            Ok(scene) => {
-                let doc = compas::document(&scene, a.radius);
-                if let Err(e) = std::fs::write(path, to_json(&doc)) {
-                    return io.bad(format!("cannot write --compas {}: {e}", path.display()));
-                }
-            }
-            Err(why) => {
-                io.err(&format!("no COMPAS file written: {why}\n"));
-                return Exit::NoAnswer;
-            }
-        }
+    if let Some(why) = no_scene {
+        io.err(&format!("no COMPAS file written: {why}\n"));
+        return Exit::NoAnswer;
     }
     // decided: η_s exact and every limit state above it searched (an arch that stands at
     // every η > 0 has no least thickness: exit 1 with status no_collapse, as `modes` says)

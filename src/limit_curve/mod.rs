@@ -35,7 +35,7 @@ use crate::search::RootGuess;
 pub use crate::threads::available as available_threads;
 use boundary::{corner, Sample, Tracer};
 pub use boundary::{Corner, Shape, Side, ThicknessLimit};
-pub use sample::{mu_grid, sample, CurvePoint};
+pub use sample::{check_mu_range, mu_grid, sample, CurvePoint};
 use transition::Located;
 
 /// A branch of the limit curve: an interval of μ with one active pattern.

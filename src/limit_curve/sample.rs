@@ -14,23 +14,36 @@ pub struct CurvePoint {
     pub outcome: Outcome,
 }
 
-/// `points` friction coefficients from `mu_min` to `mu_max`, geometrically spaced
-/// (0 < mu_min ≤ mu_max < ∞, points ≥ 1; one point when mu_min = mu_max).
-pub fn mu_grid(mu_min: f64, mu_max: f64, points: usize) -> Result<Vec<f64>, InputError> {
-    if !(mu_min.is_finite() && mu_min > 0.0) {
+/// Checks the ends of a μ range, either of which may be left to a default: each in
+/// 0 < μ ≤ [`crate::arch::MU_MAX_FINITE`], and `mu_max ≥ mu_min` when both are given.
+pub fn check_mu_range(mu_min: Option<f64>, mu_max: Option<f64>) -> Result<(), InputError> {
+    let top = crate::arch::MU_MAX_FINITE;
+    if let Some(lo) = mu_min.filter(|&lo| !(lo > 0.0 && lo <= top)) {
         return Err(InputError::OutOfRange {
             arg: "--mu-min",
-            value: crate::arch::fmt_value(mu_min),
-            range: "0 < mu-min < inf".into(),
+            value: crate::arch::fmt_value(lo),
+            range: format!("0 < mu-min <= {top:e}"),
         });
     }
-    if !(mu_max.is_finite() && mu_max >= mu_min) {
+    let floor = mu_min.unwrap_or(0.0);
+    if let Some(hi) = mu_max.filter(|&hi| !(hi > 0.0 && hi >= floor && hi <= top)) {
+        let range = match mu_min {
+            Some(lo) => format!("mu-min ({lo}) <= mu-max <= {top:e}"),
+            None => format!("0 < mu-max <= {top:e}"),
+        };
         return Err(InputError::OutOfRange {
             arg: "--mu-max",
-            value: crate::arch::fmt_value(mu_max),
-            range: format!("mu-min ({mu_min}) <= mu-max < inf"),
+            value: crate::arch::fmt_value(hi),
+            range,
         });
     }
+    Ok(())
+}
+
+/// `points` friction coefficients from `mu_min` to `mu_max`, geometrically spaced
+/// (0 < mu_min ≤ mu_max ≤ 1e200, points ≥ 1; one point when mu_min = mu_max).
+pub fn mu_grid(mu_min: f64, mu_max: f64, points: usize) -> Result<Vec<f64>, InputError> {
+    check_mu_range(Some(mu_min), Some(mu_max))?;
     if points == 0 || points > 100_000 {
         return Err(InputError::OutOfRange {
             arg: "--points",

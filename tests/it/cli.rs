@@ -338,6 +338,25 @@ fn bad_input_table() {
         (&["certify", "--alpha", "0", "--mu", "nan"], "--mu"),
         (&["verify", "/nonexistent/certificate.json"], "FILE"),
         (&["modes", "--alpha", "1.6"], "--alpha"),
+        (&["curve", "--alpha", "0", "--mu-max", "1e201"], "--mu-max"),
+        (&["curve", "--alpha", "0", "--mu-min", "0"], "--mu-min"),
+        (
+            &[
+                "load-curve",
+                "--alpha",
+                "0",
+                "--eta",
+                "0.3",
+                "--horizontal",
+                "--mu-max",
+                "1e201",
+            ],
+            "--mu-max",
+        ),
+        (&["serve", "--port", "-1"], "--port"),
+        (&["serve", "--budget", "0"], "--budget"),
+        // a mistyped option gets clap's suggestion
+        (&["solve", "--alpha", "0", "--mu", "1", "--jsn"], "'--json'"),
     ];
     for (args, name) in cases {
         let out = arch_enum().args(*args).output().unwrap();
@@ -349,6 +368,20 @@ fn bad_input_table() {
         );
         assert!(!err.contains("panicked"), "{args:?}: {err}");
     }
+}
+
+/// A `--compas` path that cannot be written is bad input, and the only document printed.
+#[test]
+fn unwritable_compas_path_prints_one_document() {
+    let out = arch_enum()
+        .args(["solve", "--alpha", "0", "--mu", "0.35", "--json"])
+        .args(["--compas", "/nonexistent/folder/x.json"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("one JSON document");
+    assert_eq!(v["status"], "error");
+    assert!(v["message"].as_str().unwrap().contains("--compas"), "{v}");
 }
 
 /// Errors found while parsing the arguments also give a JSON document under `--json`.
