@@ -48,6 +48,8 @@ from ._results import (
     ThicknessLimit,
     VerifyResult,
     VerticalBranch,
+    _scalar,
+    _whole,
 )
 
 __version__: str = _native.__version__
@@ -95,16 +97,6 @@ def _arch(arch: Any) -> Arch:
     return arch
 
 
-def _scalar(name: str, v: Any) -> float:
-    """A real number (``math.inf`` allowed; the library checks the range)."""
-    if isinstance(v, (bool, np.bool_)):
-        raise TypeError(f"{name} must be a number, got {v!r}")
-    try:
-        return float(v)
-    except (TypeError, ValueError):
-        raise TypeError(f"{name} must be a number, got {v!r}") from None
-
-
 def _friction(a: Arch, mu: Any) -> float:
     """``mu`` as a number: ``"ms"`` is the arch's own mu_ms (the vertical branch)."""
     if isinstance(mu, str) and mu.strip().lower() == "ms":
@@ -150,13 +142,7 @@ def curve(arch: Arch, mu: Any, *, threads: Optional[int] = None) -> CurveResult:
             f"invalid value for mu: an array of shape {mus.shape} (valid: a number or a 1-D array)"
         )
     if threads is not None:
-        import operator
-
-        threads = operator.index(threads)
-        if threads < 1:
-            raise ValueError(
-                f"invalid value for threads: {threads} (valid range: 1 or more, or None for every core)"
-            )
+        threads = _whole("threads", threads, 1, 1024, ", or None for every core")
     d = _native.curve(a._spec(), [float(m) for m in mus.ravel()], threads)
     return CurveResult._of(a, d)
 
@@ -213,9 +199,8 @@ def load(
     elif point_load_deg is not None:
         beta_deg = _scalar("point_load_deg", point_load_deg)
     else:
-        import operator
-
-        joint = operator.index(point_load_joint)  # type: ignore[arg-type]
+        # the range (the arch's joints) is checked by the library, which names it
+        joint = _whole("point_load_joint", point_load_joint, 0, 2**32)
     call = (a._spec(), _scalar("eta", eta), _scalar("mu", mu), kind, towards_right, beta,
             beta_deg, joint)
     return LoadResult._of(a, _native.load(*call), call)
@@ -239,10 +224,16 @@ def verify(certificate: Union[CertifyResult, dict, str, "os.PathLike[str]"]) -> 
     elif isinstance(certificate, dict):
         text = json.dumps(certificate)
     elif isinstance(certificate, os.PathLike) or (
-        isinstance(certificate, str) and not certificate.lstrip().startswith("{")
+        isinstance(certificate, str) and not certificate.lstrip().startswith(("{", "["))
     ):
-        with open(certificate, encoding="utf-8") as f:
-            text = f.read()
+        try:
+            with open(certificate, encoding="utf-8") as f:
+                text = f.read()
+        except OSError as e:
+            raise ValueError(
+                f"invalid value for certificate: cannot read the file {os.fspath(certificate)!r} "
+                f"({e.strerror}); give a CertifyResult, a dict, JSON text or a path"
+            ) from None
     elif isinstance(certificate, str):
         text = certificate
     else:

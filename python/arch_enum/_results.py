@@ -25,6 +25,32 @@ def _inf(v: Optional[float]) -> float:
     return math.inf if v is None else float(v)
 
 
+def _scalar(name: str, v: Any, unit: str = "") -> float:
+    """A real number (``math.inf`` allowed; the library checks the range): an int, a float
+    or a NumPy real; not a bool, a string or bytes."""
+    if isinstance(v, (bool, np.bool_, str, bytes)):
+        raise TypeError(f"{name} must be a number{unit}, got {v!r}")
+    try:
+        return float(v)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must be a number{unit}, got {v!r}") from None
+
+
+def _whole(name: str, v: Any, lo: int, hi: int, hint: str = "") -> int:
+    """A whole number in [lo, hi] (a bool or a float is not one)."""
+    import operator
+
+    if isinstance(v, (bool, np.bool_)):
+        raise TypeError(f"{name} must be a whole number, got {v!r}")
+    try:
+        n = operator.index(v)
+    except TypeError:
+        raise TypeError(f"{name} must be a whole number, got {v!r}") from None
+    if not lo <= n <= hi:
+        raise ValueError(f"invalid value for {name}: {n} (valid range: {lo} to {hi}{hint})")
+    return n
+
+
 def _opt(v: Optional[float]) -> Optional[float]:
     return None if v is None else float(v)
 
@@ -88,12 +114,8 @@ class Arch(_Result):
 
     def __post_init__(self) -> None:
         def number(name: str, v: Any) -> Optional[float]:
-            if v is None:
-                return None
-            try:
-                return float(v)
-            except (TypeError, ValueError):
-                raise TypeError(f"{name} must be a number (radians), got {v!r}") from None
+            unit = "" if name.startswith("fill") else " (radians)"
+            return None if v is None else _scalar(name, v, unit)
 
         for name in ("alpha", "beta_right", "beta_left", "fill_ratio", "fill_height"):
             object.__setattr__(self, name, number(name, getattr(self, name)))
@@ -103,14 +125,17 @@ class Arch(_Result):
                 "and the road's height h >= 0 above the extrados, over r), or neither"
             )
         if self.blocks is not None:
-            import operator
-
-            try:
-                object.__setattr__(self, "blocks", operator.index(self.blocks))
-            except TypeError:
-                raise TypeError(f"blocks must be a whole number, got {self.blocks!r}") from None
+            # the library names the range (1 to 100000) of a whole number that fits
+            object.__setattr__(self, "blocks", _whole("blocks", self.blocks, -(2**62), 2**62))
         if self.joints is not None:
-            j = np.asarray(self.joints, dtype=float)
+            if isinstance(self.joints, (str, bytes)):
+                raise TypeError(f"joints must be a sequence of numbers, got {self.joints!r}")
+            try:
+                j = np.asarray(self.joints, dtype=float)
+            except (TypeError, ValueError):
+                raise TypeError(
+                    f"joints must be a sequence of numbers (angles in radians), got {self.joints!r}"
+                ) from None
             if j.ndim != 1:
                 raise ValueError(
                     f"invalid value for joints: an array of shape {j.shape} "
@@ -134,7 +159,7 @@ class Arch(_Result):
         """The symmetric arch of an intrados of clear ``span`` and ``rise`` (metres; rise =
         span/2 is the semicircle, above it a horseshoe), as ``--span --rise`` on the
         command line; ``geometry(span, rise, ring)`` gives eta for a ring."""
-        g = _native.geometry(float(span), float(rise), None)
+        g = _native.geometry(_scalar("span", span), _scalar("rise", rise), None)
         return cls(alpha=g["alpha"], blocks=blocks, joints=joints, weight=weight)
 
     def _spec(self) -> tuple:
@@ -529,14 +554,14 @@ class Corner(_Result):
     between: Tuple[str, str]
     mode: str
     exact: bool
-    residual: float
+    residual: Optional[float]
 
     @staticmethod
     def _of(d: Dict[str, Any]) -> "Corner":
         return Corner(_inf(d["mu"]), float(d["friction_angle_deg"]), float(d["eta"]),
                       bool(d["kink"]), _opt(d["slope_left"]), _opt(d["slope_right"]),
                       _pattern(d["pattern"]) or (), tuple(d["between"]),  # type: ignore[arg-type]
-                      d["mode"], bool(d["exact"]), float(d["residual"]))
+                      d["mode"], bool(d["exact"]), _opt(d["residual"]))
 
 
 @dataclass(frozen=True)
