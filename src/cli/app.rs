@@ -2,8 +2,9 @@
 //! dispatch from a command to its run function.
 
 use super::io::{emit, to_json, Exit, Io};
+use super::report::{ReportArgs, Runner};
 use super::serve_args::ServeArgs;
-use super::{assess, certify, curve, load, modes, plot, solve};
+use super::{assess, certify, curve, load, modes, plot, report, solve};
 use crate::render::json;
 use crate::settings::Settings;
 use clap::{Parser, Subcommand};
@@ -99,6 +100,11 @@ pub(super) enum Command {
         after_help = "Example:\n  arch-enum serve --open\n  arch-enum serve --port 0   (any free port; the URL is the first line printed)\n  curl 'http://127.0.0.1:8765/api/solve?alpha=0&mu=0.35'"
     )]
     Serve(ServeArgs),
+    /// An assessment report: one self-contained HTML page (inputs, answers, every limit state, the certificate and its verification, the figures, the scope) made by the commands themselves.
+    #[command(
+        after_help = "Example:\n  arch-enum report --out bridge.html --span 10 --rise 5 --ring 0.6 --width 1 --unit-weight 20 --mu 0.6 --fill-weight 18 --fill-depth 0.3 --axles 100\n  arch-enum report --out arch.html --alpha 0 --eta 0.2 --mu 0.6"
+    )]
+    Report(Box<ReportArgs>),
 }
 
 /// How `serve` runs: the server's own entry point, passed in so that the server (which runs
@@ -145,7 +151,7 @@ where
         Command::Assess(a) => a.json,
         Command::Load(a) => a.json,
         Command::LoadCurve(a) => a.json,
-        Command::Plot { .. } | Command::Serve(_) => false,
+        Command::Plot { .. } | Command::Serve(_) | Command::Report(_) => false,
     };
     let mut io = Io { out, err, json };
     let exit = match cli.command {
@@ -159,6 +165,18 @@ where
         Command::Load(a) => load::run(*a, &settings, &mut io),
         Command::LoadCurve(a) => load::run_curve(*a, &settings, &mut io),
         Command::Serve(a) => serve(a, &mut io),
+        Command::Report(a) => {
+            let run = |args: Vec<OsString>| {
+                let (mut out, mut err) = (Vec::new(), Vec::new());
+                let code = run_with(args, &mut out, &mut err, serve);
+                report::Ran { code, out, err }
+            };
+            let runner = Runner {
+                cli: <Cli as clap::CommandFactory>::command(),
+                run: &run,
+            };
+            report::run(*a, &mut io, &runner)
+        }
     };
     exit.code()
 }

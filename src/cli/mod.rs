@@ -21,6 +21,7 @@ mod modes;
 mod mu_arg;
 mod plot;
 mod progress;
+mod report;
 pub mod serve;
 mod serve_args;
 mod solve;

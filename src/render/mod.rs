@@ -20,4 +20,5 @@ pub mod plot_influence;
 pub mod plot_load_curve;
 #[cfg(feature = "svg")]
 pub mod plot_map;
+pub mod report;
 pub mod table;

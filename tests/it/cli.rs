@@ -355,6 +355,20 @@ fn bad_input_table() {
         ),
         (&["serve", "--port", "-1"], "--port"),
         (&["serve", "--budget", "0"], "--budget"),
+        (
+            &[
+                "report", "--alpha", "0", "--eta", "0.3", "--mu", "1", "--bogus", "2",
+            ],
+            "--bogus",
+        ),
+        (
+            &["report", "--alpha", "0", "--eta", "0.3", "--mu", "abc"],
+            "--mu",
+        ),
+        (
+            &["report", "--alpha", "0", "--eta", "3", "--mu", "1"],
+            "--eta",
+        ),
         // a mistyped option gets clap's suggestion
         (&["solve", "--alpha", "0", "--mu", "1", "--jsn"], "'--json'"),
     ];

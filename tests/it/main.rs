@@ -26,6 +26,7 @@ mod modes;
 mod plots;
 mod readme;
 mod reference;
+mod report;
 mod ridge;
 mod search_reference;
 mod serve;
