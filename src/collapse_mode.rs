@@ -36,6 +36,17 @@ pub enum CollapseMode {
 }
 
 impl CollapseMode {
+    /// Every mode, in the order of the declaration.
+    pub const ALL: [CollapseMode; 7] = [
+        CollapseMode::PurelyRotational,
+        CollapseMode::MixedSlidingRotational,
+        CollapseMode::MixedRotationalSliding,
+        CollapseMode::RotationalSlidingShoulders,
+        CollapseMode::PurelySliding,
+        CollapseMode::Overturning,
+        CollapseMode::MixedInterleaved,
+    ];
+
     /// The name used in JSON and tables.
     pub fn name(self) -> &'static str {
         match self {

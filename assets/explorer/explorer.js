@@ -14,15 +14,8 @@ const muOfSlider = (s) =>
 const sliderOfMu = (mu) =>
   Math.round((1000 * Math.log10(mu / MU_LO)) / Math.log10(MU_HI / MU_LO));
 
-const MODE_COLOURS = {
-  purely_rotational: "#1f77b4",
-  overturning: "#8c564b",
-  purely_sliding: "#d62728",
-  rotational_sliding_shoulders: "#ff7f0e",
-  mixed_sliding_rotational: "#2ca02c",
-  mixed_rotational_sliding: "#9467bd",
-  mixed_interleaved: "#e377c2",
-};
+// the figures' own mode colours (src/render/plot.rs), written in by the server
+const MODE_COLOURS = /*MODE_COLOURS*/{};
 const modeColour = (m) => MODE_COLOURS[m] || "#7f7f7f";
 const KIND = {
   hinge_extrados: "E",
@@ -56,12 +49,33 @@ const muValue = () => ($("mu-inf").checked ? "inf" : $("mu").value.trim());
 const inMetres = () => document.querySelector('input[name="shape"]:checked').value === "metres";
 // the thickness: eta, or in metres the ring (the server derives eta = t/r from it)
 const thickness = () => (inMetres() ? { ring: $("ring").value.trim() } : { eta: $("eta").value.trim() });
+// in metres: the masonry's unit weight and the barrel width (forces in kN)
+const dims = () => (inMetres() ? { "unit-weight": $("unit-weight").value.trim(), width: $("width").value.trim() } : {});
+// the fill: in metres its unit weight and the road's depth above the crown (with the
+// masonry's unit weight), else the ratios g_f and h
+function fillParams() {
+  if (!$("fill").checked) return {};
+  if (inMetres()) {
+    return { "fill-weight": $("fill-weight").value.trim(), "fill-depth": $("fill-depth").value.trim(), "unit-weight": $("unit-weight").value.trim() };
+  }
+  return { "fill-ratio": $("fill-ratio").value.trim(), "fill-height": $("fill-height").value.trim() };
+}
+const hasFill = () => $("fill").checked;
 function loadParams() {
   const kind = $("load").value;
   if (kind === "none") return null;
   if (kind === "point-load-deg") return { "point-load-deg": $("point-load-deg").value.trim() };
+  if (kind === "vehicle") {
+    const p = { axles: $("axles").value.trim() };
+    if (p.axles.includes(",")) p.spacing = $("spacing").value.trim();
+    // 21 samples of the influence line (the README's), each minimum then located exactly
+    if ($("critical").checked) Object.assign(p, { critical: "", samples: "21" });
+    else p.at = $("at").value.trim();
+    return p;
+  }
   return { [kind]: "" };
 }
+const isVehicle = () => $("load").value === "vehicle";
 function query(params) {
   return Object.entries(params)
     .map(([k, v]) => (v === "" ? encodeURIComponent(k) : `${encodeURIComponent(k)}=${encodeURIComponent(v)}`))
@@ -73,7 +87,9 @@ const url = (endpoint, params) => `/api/${endpoint}?${query(params)}`;
 const ERROR_TARGET = {
   "alpha-deg": "alpha-deg", alpha: "alpha-deg", "beta-right": "beta-right", "beta-left": "beta-right",
   blocks: "blocks", joints: "blocks", mu: "mu", eta: "eta", "point-load-deg": "point-load-deg",
-  span: "span", rise: "span", ring: "ring",
+  span: "span", rise: "span", ring: "ring", "unit-weight": "unit-weight", width: "unit-weight",
+  "fill-weight": "fill", "fill-depth": "fill", "fill-ratio": "fill", "fill-height": "fill",
+  axles: "axles", spacing: "axles", at: "axles", patch: "axles",
 };
 function clearErrors() {
   document.querySelectorAll(".err").forEach((e) => (e.textContent = ""));
@@ -117,7 +133,7 @@ async function getText(u, signal) {
 }
 
 // ---------------------------------------------------------------- state
-const state = { modes: null, curve: null, solve: null, assess: null, load: null, fig: "arch" };
+const state = { modes: null, curve: null, solve: null, assess: null, load: null, fig: "mine" };
 let curveCtl = null, stateCtl = null;
 
 function debounce(fn, ms) {
@@ -132,6 +148,13 @@ async function refreshCurve() {
   if (curveCtl) curveCtl.abort();
   const ctl = (curveCtl = new AbortController());
   const arch = archParams();
+  if (hasFill()) {
+    // with fill mu_ms depends on eta: the eta-mu diagram is not computed (modes refuses it)
+    state.modes = state.curve = null;
+    $("mu-ms").textContent = "–";
+    drawDiagram();
+    return;
+  }
   try {
     const modes = await getJson(url("modes", arch), ctl.signal);
     const corners = modes.corners.map((c) => c.mu);
@@ -162,24 +185,33 @@ async function refreshState() {
   const mu = muValue();
   const eta = thickness();
   const load = loadParams();
-  const solveUrl = url("solve", { ...arch, mu });
+  const fill = fillParams();
+  // with fill in metres the ring fixes r, and so the fill's depth ratio, for solve too
+  const solveUrl = url("solve", { ...arch, mu, ...(hasFill() && inMetres() ? eta : {}), ...fill });
+  const atEta = { ...arch, ...eta, mu, ...fill, ...dims() };
   $("dl-solve").href = solveUrl;
-  $("dl-cert").href = url("certify", { ...arch, mu });
-  $("dl-arch").href = url("plot/arch", { ...arch, mu });
+  $("dl-cert").href = load ? url("certify", { ...atEta, ...load }) : url("certify", { ...arch, mu });
+  $("dl-report").href = url("report", { ...atEta, ...(load || {}) });
+  $("dl-arch").href = url("plot/arch", { ...arch, ...eta, mu, ...fill });
   $("dl-ecc").href = url("plot/eccentricity", { ...arch, mu });
   document.querySelectorAll(".loadrow").forEach((r) => (r.hidden = !load));
-  $("dl-load").hidden = !load;
-  document.querySelector('.tab[data-fig="load"]').hidden = !load;
-  if (!load && state.fig === "load") selectFigure("arch");
+  document.querySelectorAll(".vehiclerow").forEach((r) => (r.hidden = !(load && isVehicle())));
+  const loadFigure = load && !isVehicle() && !hasFill();
+  $("dl-load").hidden = !loadFigure;
+  document.querySelector('.tab[data-fig="load"]').hidden = !loadFigure;
+  document.querySelector('.tab[data-fig="influence"]').hidden = !(load && isVehicle());
+  if (state.fig === "load" && !loadFigure) selectFigure("mine");
+  if (state.fig === "influence" && !(load && isVehicle())) selectFigure("mine");
+  const assessed = getJson(url("assess", { ...arch, ...eta, mu, ...fill, ...dims() }), ctl.signal).then((d) => (state.assess = d));
   const jobs = [
     getJson(solveUrl, ctl.signal).then((d) => (state.solve = d)),
-    getJson(url("assess", { ...arch, ...eta, mu }), ctl.signal).then((d) => (state.assess = d)),
+    assessed,
     load
-      ? getJson(url("load", { ...arch, ...eta, mu, ...load }), ctl.signal).then((d) => (state.load = d))
+      ? getJson(url("load", { ...atEta, ...load }), ctl.signal).then((d) => (state.load = d))
       : Promise.resolve((state.load = null)),
-    refreshFigure(ctl, arch, mu, eta, load),
+    refreshFigure(ctl, { arch, mu, eta, load, fill, atEta, assessed }),
   ];
-  if (load) $("dl-load").href = url("plot/load", { ...arch, ...eta, mu, ...load });
+  if (loadFigure) $("dl-load").href = url("plot/load", { ...arch, ...eta, mu, ...load });
   const results = await Promise.allSettled(jobs);
   if (ctl.signal.aborted) return;
   for (const r of results) {
@@ -192,13 +224,32 @@ async function refreshState() {
   drawDiagram();
 }
 
-async function refreshFigure(ctl, arch, mu, eta, load) {
+// The figure of the tab shown: the user's arch at eta (its safest line of thrust), the limit
+// state at eta*(mu), the live load at eta, or a vehicle's influence line.
+async function figureUrl({ arch, mu, eta, load, fill, atEta, assessed }) {
+  if (state.fig === "load" && load) return url("plot/load", { ...arch, ...eta, mu, ...load });
+  if (state.fig === "influence" && load) return url("plot/influence", { ...atEta, ...load });
+  if (state.fig === "mine") {
+    // an arch that does not stand has no state to draw: say so instead
+    const a = await assessed.catch(() => null);
+    if (a && a.stands === false) {
+      throw new BadInput(`The arch does not stand at η = ${fmt(a.eta, 5)} and μ = ${mu}: no admissible state (the least thickness at this μ is η* = ${fmt(a.eta_min, 5)}).`);
+    }
+    return url("plot/arch", { ...arch, ...eta, mu, ...fill });
+  }
+  if (hasFill() && inMetres()) {
+    // the limit state keeps the fill's ratios at the ring given (from assess)
+    const a = await assessed;
+    const f = a && a.fill ? { "fill-ratio": String(a.fill.weight_ratio), "fill-height": String(a.fill.depth_ratio) } : {};
+    return url("plot/arch", { ...arch, mu, ...f });
+  }
+  return url("plot/arch", { ...arch, mu, ...fill });
+}
+
+async function refreshFigure(ctl, inputs) {
   const fig = $("figure");
-  const u =
-    state.fig === "load" && load
-      ? url("plot/load", { ...arch, ...eta, mu, ...load })
-      : url("plot/arch", { ...arch, mu });
   try {
+    const u = await figureUrl(inputs);
     const svg = await getText(u, ctl.signal);
     if (ctl.signal.aborted) return;
     fig.innerHTML = svg; // the library's own figure, from this server
@@ -252,6 +303,10 @@ function showNumbers() {
     $("lambda-static").textContent = fmt(l.lambda_static);
     const first = l.limit_states && l.limit_states[0];
     $("load-mode").textContent = first ? `${first.mode.replaceAll("_", " ")}: ${patternText(first.pattern)}` : "–";
+    const kn = l.units && l.units.lambda_kn;
+    $("adequacy").textContent = l.lambda === undefined || l.lambda === null ? "–" : `${fmt(l.lambda, 4)}${kn ? ` (${fmt(kn, 4)} kN)` : ""}`;
+    const at = l.critical ? l.critical.at_m : l.vehicle ? l.vehicle.at_m : null;
+    $("critical-at").textContent = at === null || at === undefined ? "–" : `${fmt(at, 5)} m`;
     if (l.status !== "ok") msg.push(`load: ${l.status.replaceAll("_", " ")}${l.message ? " — " + l.message : ""}`);
   }
   // in metres: what the span, rise and ring give (the documents' `geometry`)
@@ -292,7 +347,9 @@ function drawDiagram() {
   const svg = el("svg", { viewBox: `0 0 ${W} ${H}`, class: "diagram" }, box);
   const { modes, curve, solve, assess } = state;
   if (!modes || !curve) {
-    el("text", { x: W / 2, y: H / 2, "text-anchor": "middle", class: "muted" }, svg, "no diagram for these inputs");
+    svg.setAttribute("viewBox", `0 0 ${W} 60`);
+    const why = hasFill() ? "with fill μ_ms depends on η: the η–μ diagram is not computed" : "no diagram for these inputs";
+    el("text", { x: W / 2, y: 34, "text-anchor": "middle", class: "muted" }, svg, why);
     return;
   }
   const pts = curve.points.filter((p) => p.status === "ok" && p.eta !== undefined && p.eta !== null);
@@ -456,13 +513,26 @@ function wire() {
   });
   for (const id of ["beta-right", "beta-left", "span", "rise", "blocks", "weight"]) $(id).addEventListener("input", allSoon);
   $("ring").addEventListener("input", stateSoon);
+  for (const id of ["unit-weight", "width", "fill-weight", "fill-depth", "fill-ratio", "fill-height", "axles", "spacing", "at"]) {
+    $(id).addEventListener("input", stateSoon);
+  }
+  $("fill").addEventListener("change", () => {
+    showShape();
+    allSoon();
+  });
+  $("critical").addEventListener("change", () => {
+    $("at-row").hidden = $("critical").checked;
+    stateSoon();
+  });
   document.querySelectorAll('input[name="shape"], input[name="joints"]').forEach((r) => r.addEventListener("change", () => {
     showShape();
     allSoon();
   }));
   $("load").addEventListener("change", () => {
     $("point-row").hidden = $("load").value !== "point-load-deg";
-    if ($("load").value !== "none") selectFigure("load");
+    $("vehicle-rows").hidden = !isVehicle();
+    if (isVehicle()) selectFigure("influence");
+    else if ($("load").value !== "none" && !hasFill()) selectFigure("load");
     stateSoon();
   });
   $("point-load-deg").addEventListener("input", stateSoon);
@@ -481,6 +551,15 @@ function showShape() {
   const which = shape === "metres" ? "ring" : "eta";
   document.querySelectorAll("[data-thickness]").forEach((r) => (r.hidden = r.dataset.thickness !== which));
   $("blocks").disabled = document.querySelector('input[name="joints"]:checked').value !== "blocks";
+  document.querySelectorAll("[data-fill]").forEach((r) => (r.hidden = !hasFill() || r.dataset.fill !== (shape === "metres" ? "metres" : "ratio")));
+  // a vehicle's axles are in kN: the arch in metres
+  const vehicle = document.querySelector('#load option[value="vehicle"]');
+  vehicle.disabled = shape !== "metres";
+  if (vehicle.disabled && isVehicle()) {
+    $("load").value = "none";
+    $("vehicle-rows").hidden = true;
+  }
+  $("at-row").hidden = $("critical").checked;
 }
 
 wire();

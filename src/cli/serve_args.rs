@@ -15,6 +15,6 @@ pub(crate) struct ServeArgs {
     pub(super) verbose: bool,
     /// Seconds a request's computation may take (0.1 to 3600); longer work is stopped and
     /// answered 503.
-    #[arg(long, default_value_t = 10.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 30.0, allow_negative_numbers = true)]
     pub(super) budget: f64,
 }

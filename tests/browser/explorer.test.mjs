@@ -153,6 +153,56 @@ test("the explorer follows the mu slider with the library's eta* and mode", { ti
       { timeout: 15_000 },
     );
     assert.deepEqual(errors, [], "no console error or page error in metres");
+
+    // their arch: the figure shown first is the arch at the ring given (eta = 0.6/5.3), not
+    // the thinner limit state (at mu = 0.6, where it stands)
+    await page.click('.tab[data-fig="mine"]');
+    await page.fill("#mu", "0.6");
+    await page.waitForFunction(
+      (eta) => (document.querySelector("#figure svg text") || {}).textContent?.includes(`η = ${eta}`),
+      Number(assessed.geometry.eta).toFixed(3),
+      { timeout: 15_000 },
+    );
+
+    // one colour table: the page's colour of the limit state's mode is the figure's
+    const mode = cli(["solve", "--span", "10", "--rise", "5", "--mu", "0.35"]).mode;
+    const colour = await page.evaluate((m) => MODE_COLOURS[m], mode);
+    const figure = await (await page.request.get(`${server.url}api/plot/arch?span=10&rise=5&mu=0.35`)).text();
+    assert.ok(colour && figure.toLowerCase().includes(colour.toLowerCase()), `${mode}: ${colour} in the figure`);
+
+    // fill and a vehicle at its critical position: the adequacy factor and X* are the CLI's
+    await page.check("#fill");
+    await page.fill("#fill-weight", "18");
+    await page.fill("#fill-depth", "0.3");
+    await page.selectOption("#load", "vehicle");
+    await page.fill("#axles", "100");
+    const bridge = ["--span", "10", "--rise", "5", "--ring", "0.6", "--unit-weight", "20", "--width", "1",
+      "--mu", "0.6", "--fill-weight", "18", "--fill-depth", "0.3", "--axles", "100", "--critical", "--samples", "21"];
+    const vehicle = cli(["load", ...bridge]);
+    assert.equal(vehicle.status, "ok");
+    await page.waitForFunction(
+      ([l, at]) => document.getElementById("adequacy").textContent.startsWith(l)
+        && document.getElementById("critical-at").textContent.startsWith(at),
+      [Number(vehicle.lambda).toPrecision(4), Number(vehicle.critical.at_m).toPrecision(5)],
+      { timeout: 60_000 },
+    );
+    await page.waitForSelector('#figure svg', { timeout: 60_000 });
+    assert.match(await page.getAttribute("#dl-report", "href"), /^\/api\/report\?.*axles=100/);
+    assert.deepEqual(errors, [], "no console error or page error with fill and a vehicle");
+
+    // usable at 1024 px and on a phone (420 px): nothing wider than the screen
+    for (const width of [1024, 420]) {
+      await page.setViewportSize({ width, height: 900 });
+      const scroll = await page.evaluate(() => document.documentElement.scrollWidth);
+      assert.ok(scroll <= width, `nothing wider than ${width} px (${scroll} px)`);
+      const wide = process.env.UPDATE_SCREENSHOT === "1"
+        ? path.join(ROOT, "docs", "gallery", `explorer_${width}.png`)
+        : path.join(shots, `explorer_${width}.png`);
+      await page.screenshot({ path: wide, fullPage: width === 420 });
+    }
+    await page.setViewportSize({ width: 1500, height: 940 });
+    await page.selectOption("#load", "none");
+    await page.uncheck("#fill");
     await page.check('input[name="shape"][value="alpha"]');
 
     // bad input: the server's 400 message next to the input (the browser logs the failed

@@ -3,7 +3,8 @@
 //! A request `/api/solve?alpha=0&mu=0.35` becomes the argument list
 //! `solve --alpha=0 --mu=0.35 --json`, checked against the same clap definitions as the
 //! binary's (an unknown or refused parameter is named here, before anything runs), and
-//! a figure `/api/plot/arch?...` becomes `plot arch ... --out -` (SVG on standard output).
+//! a figure `/api/plot/arch?...` becomes `plot arch ... --out -` (SVG on standard output),
+//! and `/api/report?...` becomes `report --out - ...` (the HTML page).
 //! Errors of the request itself (an unknown parameter, a limit below, a malformed query)
 //! use the CLI's error document `{"version", "status": "error", "message"}`. Unknown path:
 //! `404`; a method other than GET: `405`; a URL over [`MAX_URL`] bytes: `414`.
@@ -34,10 +35,17 @@ const COMMANDS: &[(&str, &[&str])] = &[
     ("load", &[]),
     ("certify", &["out"]),
     ("curve", &[]),
+    ("report", &[]),
 ];
 
-/// The figures the API draws (`plot <figure>`), as SVG.
-const FIGURES: &[&str] = &["arch", "load", "eccentricity"];
+/// The figures the API draws (`plot <figure>`), as SVG, with the parameters each refuses:
+/// `width` is the PNG's where the command takes no barrel width (the API draws SVG).
+const FIGURES: &[(&str, &[&str])] = &[
+    ("arch", &["width"]),
+    ("load", &["width"]),
+    ("eccentricity", &["width"]),
+    ("influence", &["png-width"]),
+];
 
 /// The parameters that name a live load.
 const LOAD_KEYS: &[&str] = &[
@@ -50,10 +58,6 @@ const LOAD_KEYS: &[&str] = &[
 
 /// Parameters no endpoint takes: `json` is implied, the rest pick files and formats.
 const NEVER: &[&str] = &["json", "help", "version", "out", "png"];
-
-/// Parameters the figures refuse: `width` is the PNG's there (the API draws SVG); the
-/// commands take it as the barrel width.
-const FIGURE_NEVER: &[&str] = &["width"];
 
 /// A limit on a count-valued parameter of one endpoint.
 pub struct Limit {
@@ -78,6 +82,9 @@ pub struct Limit {
 ///   (no ridge walk): N = 70: 0.7–1.3 s (N = 100: up to 3.0 s, N = 200: up to 18.5 s);
 ///   the continuous arch 0.2–3.0 s (no N to limit).
 /// - `curve` at N = 2000, 100 points: 0.8 s (centroid weight: 1.0 s).
+/// - `plot/influence` and `report` run the critical position (tens of multiplier searches):
+///   N ≤ 200; a continuous arch has no N, and the time budget bounds it (the README's
+///   bridge: 1–7 s).
 #[rustfmt::skip]
 pub const LIMITS: &[Limit] = &[
     Limit { endpoint: "solve", param: "blocks", max: 100_000 },
@@ -92,6 +99,8 @@ pub const LIMITS: &[Limit] = &[
     Limit { endpoint: "modes/centroid", param: "blocks", max: 70 },
     Limit { endpoint: "curve", param: "blocks", max: 2_000 },
     Limit { endpoint: "curve", param: "points", max: 100 },
+    Limit { endpoint: "plot/influence", param: "blocks", max: 200 },
+    Limit { endpoint: "report", param: "blocks", max: 200 },
 ];
 
 /// What a request asks for.
@@ -99,8 +108,19 @@ pub const LIMITS: &[Limit] = &[
 pub(super) enum Route {
     /// An answer at once: a page, or an error of the request.
     Reply(Reply),
-    /// A command line to run (without the program's name), and whether it draws a figure.
-    Run { args: Vec<OsString>, figure: bool },
+    /// A command line to run (without the program's name), and what it prints.
+    Run { args: Vec<OsString>, prints: Prints },
+}
+
+/// What a command run for the API prints on standard output.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Prints {
+    /// A `--json` document (also on bad input).
+    Json,
+    /// A figure (SVG).
+    Svg,
+    /// The report (HTML).
+    Html,
 }
 
 /// The route of `method url` (url: the request target, path and query).
@@ -133,7 +153,7 @@ fn answer(method: &str, url: &str) -> Result<Route, Reply> {
         || endpoint.is_some_and(|e| {
             COMMANDS.iter().any(|(c, _)| *c == e)
                 || e.strip_prefix("plot/")
-                    .is_some_and(|f| FIGURES.contains(&f))
+                    .is_some_and(|f| FIGURES.iter().any(|(g, _)| *g == f))
         });
     if !known {
         return Err(Reply::error(
@@ -148,15 +168,34 @@ fn answer(method: &str, url: &str) -> Result<Route, Reply> {
         ));
     }
     if let Some((content_type, body)) = page {
+        if path == "/explorer.js" {
+            let script = body.replacen("/*MODE_COLOURS*/{}", &mode_colours(), 1);
+            return Ok(Route::Reply(Reply::text(content_type, &script)));
+        }
         return Ok(Route::Reply(Reply::text(content_type, body)));
     }
     let endpoint = endpoint.expect("a known API path");
     let params = parse_query(query).map_err(|message| Reply::error(400, message))?;
     let run = match endpoint.strip_prefix("plot/") {
         Some(figure) => {
-            let mut args = arguments(&["plot", figure], FIGURE_NEVER, &params)?;
+            let refused = FIGURES
+                .iter()
+                .find(|(f, _)| *f == figure)
+                .map_or(&[][..], |(_, r)| *r);
+            let mut args = arguments(&["plot", figure], refused, &params)?;
             args.push("--out=-".into());
-            Route::Run { args, figure: true }
+            Route::Run {
+                args,
+                prints: Prints::Svg,
+            }
+        }
+        None if endpoint == "report" => {
+            let mut args = arguments(&["report"], &[], &params)?;
+            args.insert(1, "--out=-".into());
+            Route::Run {
+                args,
+                prints: Prints::Html,
+            }
         }
         None => {
             let refused = COMMANDS
@@ -167,11 +206,25 @@ fn answer(method: &str, url: &str) -> Result<Route, Reply> {
             args.push("--json".into());
             Route::Run {
                 args,
-                figure: false,
+                prints: Prints::Json,
             }
         }
     };
     Ok(run)
+}
+
+/// The figures' mode colours as a JavaScript object (`{"purely_rotational": "#1f77b4", ...}`),
+/// so that the page and the figures share one table.
+fn mode_colours() -> String {
+    use crate::collapse_mode::CollapseMode;
+    let entries: Vec<String> = CollapseMode::ALL
+        .iter()
+        .map(|&m| {
+            let c = crate::render::plot::mode_color(m);
+            format!("\"{}\": \"#{:02x}{:02x}{:02x}\"", m.name(), c.0, c.1, c.2)
+        })
+        .collect();
+    format!("{{{}}}", entries.join(", "))
 }
 
 /// A query parameter, percent-decoded; `value` is `None` for a bare key (`?horizontal`).
@@ -256,16 +309,21 @@ fn arguments_of(
     refused: &[&str],
     params: &[Param],
 ) -> Result<Vec<OsString>, String> {
-    let cmd = command_of(path);
     let endpoint = path.join("/");
-    let accepted: Vec<(String, bool)> = cmd
-        .get_arguments()
-        .filter_map(|a| {
-            let long = a.get_long()?;
-            let refused = NEVER.contains(&long) || refused.contains(&long);
-            (!refused).then(|| (long.to_string(), a.get_action().takes_values()))
-        })
-        .collect();
+    // the report takes the flags of assess and load (and its title)
+    let defined: Vec<clap::Command> = if path == ["report"] {
+        vec![command_of(&["assess"]), command_of(&["load"]), command_of(path)]
+    } else {
+        vec![command_of(path)]
+    };
+    let mut accepted: Vec<(String, bool)> = Vec::new();
+    for a in defined.iter().flat_map(|c| c.get_arguments()) {
+        let Some(long) = a.get_long() else { continue };
+        let refused = NEVER.contains(&long) || refused.contains(&long) || long == "flags";
+        if !refused && !accepted.iter().any(|(k, _)| k == long) {
+            accepted.push((long.to_string(), a.get_action().takes_values()));
+        }
+    }
     // certify with a live load costs what load does; modes with the centroid weight more
     let loaded = params
         .iter()

@@ -84,6 +84,7 @@ fn reason(status: u16) -> &'static str {
         421 => "Misdirected Request",
         422 => "Unprocessable Content",
         431 => "Request Header Fields Too Large",
+        499 => "Client Closed Request",
         503 => "Service Unavailable",
         _ => "Internal Server Error",
     }

@@ -7,7 +7,7 @@
 //! once. So pages and errors are answered while every computation is busy, and no
 //! computation outlives its budget.
 
-use super::api::{message_of, route, Route};
+use super::api::{message_of, route, Prints, Route};
 use super::http::{drain, send, Ready, Reply};
 use std::ffi::OsString;
 use std::io::Read;
@@ -19,16 +19,17 @@ use std::time::{Duration, Instant};
 
 /// Threads answering requests (more than the computations admitted, so that pages and
 /// errors are served while they all wait).
-pub const WORKERS: usize = 12;
-/// Computations running at once (the development machine has 2 cores).
-pub const RUNNING: usize = 2;
+pub const WORKERS: usize = 16;
+/// Computations running at once (more than the development machine's 2 cores, so that a
+/// quick request is not held behind two long ones: the system shares the cores).
+pub const RUNNING: usize = 4;
 /// Computations admitted at once, running or waiting for their turn.
-pub const ADMITTED: usize = 8;
+pub const ADMITTED: usize = 12;
 /// Complete request heads waiting for a worker.
 pub const QUEUE: usize = 64;
 /// The longest a computation waits for its turn (then `503`: a client is told at once
 /// that the server is busy, rather than after its whole budget).
-pub const TURN_WAIT: Duration = Duration::from_secs(1);
+pub const TURN_WAIT: Duration = Duration::from_millis(1500);
 
 /// What every worker shares.
 pub struct Shared {
@@ -72,8 +73,9 @@ impl Drop for Slot<'_> {
 }
 
 impl Slots {
-    /// A place to run before `deadline`, or the reply that refuses the request.
-    fn enter(&self, deadline: Instant) -> Result<Slot<'_>, Reply> {
+    /// A place to run before `deadline`, or the reply that refuses the request (also when
+    /// the client has gone meanwhile).
+    fn enter(&self, deadline: Instant, gone: &dyn Fn() -> bool) -> Result<Slot<'_>, Reply> {
         let mut c = self.count.lock().unwrap_or_else(|e| e.into_inner());
         if c.0 + c.1 >= ADMITTED {
             return Err(busy(format!(
@@ -83,6 +85,10 @@ impl Slots {
         c.1 += 1;
         while c.0 >= RUNNING {
             let now = Instant::now();
+            if gone() {
+                c.1 -= 1;
+                return Err(Reply::error(499, "the client closed the connection".into()));
+            }
             if now >= deadline {
                 c.1 -= 1;
                 return Err(busy(format!(
@@ -92,7 +98,7 @@ impl Slots {
             }
             c = self
                 .freed
-                .wait_timeout(c, deadline - now)
+                .wait_timeout(c, (deadline - now).min(GONE_POLL))
                 .unwrap_or_else(|e| e.into_inner())
                 .0;
         }
@@ -148,10 +154,11 @@ fn answer(ready: Ready, arrived: Instant, shared: &Shared) {
             drain(&mut stream, head.body_left);
             let reply = match route(&head.method, &head.target) {
                 Route::Reply(r) => r,
-                Route::Run { args, figure } => {
+                Route::Run { args, prints } => {
                     let deadline = arrived + shared.budget;
-                    match shared.slots.enter(deadline.min(arrived + TURN_WAIT)) {
-                        Ok(_slot) => run(shared, &args, figure, deadline),
+                    let gone = || client_gone(&stream);
+                    match shared.slots.enter(deadline.min(arrived + TURN_WAIT), &gone) {
+                        Ok(_slot) => run(shared, &args, prints, (deadline, &gone)),
                         Err(r) => r,
                     }
                 }
@@ -177,11 +184,20 @@ struct Finished {
 }
 
 /// Runs `args` as a child of `shared.exe`; the reply is its output: a command's JSON
-/// (exit 0 or 1: `200`; exit 2: `400`), a figure's SVG (exit 1, no figure: `422`).
-fn run(shared: &Shared, args: &[OsString], figure: bool, deadline: Instant) -> Reply {
-    let done = match child(&shared.exe, args, deadline) {
-        Ok(Some(done)) => done,
-        Ok(None) => {
+/// (exit 0 or 1: `200`; exit 2: `400`), a figure's SVG or the report's HTML (exit 1, no
+/// figure: `422`).
+fn run(
+    shared: &Shared,
+    args: &[OsString],
+    prints: Prints,
+    until: (Instant, &dyn Fn() -> bool),
+) -> Reply {
+    let done = match child(&shared.exe, args, until) {
+        Ok(Ended::Exited(done)) => done,
+        Ok(Ended::ClientGone) => {
+            return Reply::error(499, "the client closed the connection".into())
+        }
+        Ok(Ended::OverBudget) => {
             return busy(format!(
                 "the computation was stopped after the server's time budget of {} s (serve --budget); the command line has no such limit",
                 shared.budget.as_secs_f64()
@@ -189,15 +205,19 @@ fn run(shared: &Shared, args: &[OsString], figure: bool, deadline: Instant) -> R
         }
         Err(e) => return Reply::error(500, format!("internal error: cannot run the command: {e}")),
     };
-    match (done.code, figure) {
-        (Some(0), true) => Reply {
+    let content_type = match prints {
+        Prints::Json => "application/json",
+        Prints::Svg => "image/svg+xml",
+        Prints::Html => "text/html; charset=utf-8",
+    };
+    match (done.code, prints) {
+        (Some(0), _) | (Some(1), Prints::Json) => Reply {
             status: 200,
-            content_type: "image/svg+xml",
+            content_type,
             body: done.out,
         },
-        (Some(0 | 1), false) => Reply::json(200, done.out),
-        (Some(1), true) => Reply::error(422, message_of(&done.err)),
-        (Some(2), _) if !done.out.is_empty() && !figure => Reply::json(400, done.out),
+        (Some(1), _) => Reply::error(422, message_of(&done.err)),
+        (Some(2), Prints::Json) if !done.out.is_empty() => Reply::json(400, done.out),
         (Some(2), _) => Reply::error(400, message_of(&done.err)),
         _ => Reply::error(
             500,
@@ -206,12 +226,40 @@ fn run(shared: &Shared, args: &[OsString], figure: bool, deadline: Instant) -> R
     }
 }
 
-/// Runs `exe args` until it exits or `deadline` passes (`None`: killed then).
+/// How a child process ended.
+enum Ended {
+    /// By itself.
+    Exited(Finished),
+    /// Killed at the deadline.
+    OverBudget,
+    /// Killed because the client closed the connection (its answer is not wanted).
+    ClientGone,
+}
+
+/// How often a waiting request checks that its client is still there.
+const GONE_POLL: Duration = Duration::from_millis(20);
+
+/// Whether the client has closed its side of the connection (a read would see its end).
+fn client_gone(stream: &std::net::TcpStream) -> bool {
+    if stream.set_nonblocking(true).is_err() {
+        return true;
+    }
+    let mut b = [0u8; 1];
+    let gone = match stream.peek(&mut b) {
+        Ok(0) => true,
+        Ok(_) => false,
+        Err(e) => e.kind() != std::io::ErrorKind::WouldBlock,
+    };
+    let _ = stream.set_nonblocking(false);
+    gone
+}
+
+/// Runs `exe args` until it exits, the deadline passes or the client goes (killed then).
 fn child(
     exe: &std::path::Path,
     args: &[OsString],
-    deadline: Instant,
-) -> std::io::Result<Option<Finished>> {
+    (deadline, gone): (Instant, &dyn Fn() -> bool),
+) -> std::io::Result<Ended> {
     let mut c = Command::new(exe)
         .args(args)
         .env(crate::cli::progress::PROGRESS_ENV, "off")
@@ -229,14 +277,20 @@ fn child(
     let out = c.stdout.take().map(|o| collect(Box::new(o)));
     let err = c.stderr.take().map(|e| collect(Box::new(e)));
     let mut nap = Duration::from_micros(50);
+    let mut checked = Instant::now();
     let status = loop {
         if let Some(s) = c.try_wait()? {
-            break Some(s);
+            break Ok(s);
         }
-        if Instant::now() >= deadline {
+        let over = Instant::now() >= deadline;
+        let left = checked.elapsed() >= GONE_POLL && {
+            checked = Instant::now();
+            gone()
+        };
+        if over || left {
             let _ = c.kill();
             let _ = c.wait();
-            break None;
+            break Err(if over { Ended::OverBudget } else { Ended::ClientGone });
         }
         std::thread::sleep(nap.min(deadline.saturating_duration_since(Instant::now())));
         nap = (nap * 2).min(Duration::from_millis(5));
@@ -245,9 +299,12 @@ fn child(
         h.and_then(|h| h.join().ok()).unwrap_or_default()
     };
     let (out, err) = (join(out), join(err));
-    Ok(status.map(|s| Finished {
-        code: s.code(),
-        out,
-        err,
-    }))
+    Ok(match status {
+        Ok(s) => Ended::Exited(Finished {
+            code: s.code(),
+            out,
+            err,
+        }),
+        Err(why) => why,
+    })
 }
