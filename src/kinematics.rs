@@ -90,6 +90,9 @@ pub fn mirror_indices(contacts: &[Contact], tol: f64) -> Option<Vec<usize>> {
         .collect()
 }
 
+/// Active joints closer than this (radians) are one joint in [`block_motions`].
+pub const SAME_JOINT: f64 = 1e-9;
+
 /// The rigid motion (V_x(O), V_y(O), ψ) of each block of a mechanism: the pieces between
 /// consecutive distinct active joints, as (β_start, β_end, motion). Pieces before the first
 /// and after the last active joint are at rest and not listed.
@@ -100,13 +103,15 @@ pub fn block_motions(
 ) -> Vec<(Radians, Radians, [f64; 3])> {
     let mut joints: Vec<Radians> = contacts.iter().map(|c| c.beta).collect();
     joints.sort_by(f64::total_cmp);
-    joints.dedup();
+    // two contacts at one joint (E and I at a detached joint) bound no block between them,
+    // even when their angles differ in the last bits
+    joints.dedup_by(|b, a| *b - *a <= SAME_JOINT);
     joints
         .windows(2)
         .map(|w| {
             let mut v = [0.0; 3];
             for (c, &r) in contacts.iter().zip(rates) {
-                if c.beta <= w[0] {
+                if c.beta <= w[0] + SAME_JOINT {
                     let col = column(c.kind, c.beta, eta);
                     for i in 0..3 {
                         v[i] += r * col[i];

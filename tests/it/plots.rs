@@ -98,6 +98,20 @@ fn arch_figure_draws_the_mechanism_blocks() {
     assert!(!safe.contains("collapse mechanism"));
     // below eta*: nothing admissible to draw
     assert!(arch_svg(&semicircle(), 0.35, Some(0.1)).is_err());
+    // a detached crown (E and I at one joint, their angles apart in the last bits) bounds
+    // no block: two blocks, not a third of zero width drawn as a stray line across the crown
+    let horseshoe = Arch::symmetric(1.15, WeightModel::Centreline).unwrap();
+    let svg = arch_svg(&horseshoe, f64::INFINITY, None).unwrap();
+    let color = hex(mode_color(CollapseMode::Overturning));
+    let moving = parse(&svg)
+        .descendants()
+        .filter(|n| {
+            n.has_tag_name("polygon")
+                && n.attribute("opacity") == Some("0.45")
+                && n.attribute("fill") == Some(color.as_str())
+        })
+        .count();
+    assert_eq!(moving, 2, "two blocks turn about the springings");
 }
 
 #[test]

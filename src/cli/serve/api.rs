@@ -312,7 +312,11 @@ fn arguments_of(
     let endpoint = path.join("/");
     // the report takes the flags of assess and load (and its title)
     let defined: Vec<clap::Command> = if path == ["report"] {
-        vec![command_of(&["assess"]), command_of(&["load"]), command_of(path)]
+        vec![
+            command_of(&["assess"]),
+            command_of(&["load"]),
+            command_of(path),
+        ]
     } else {
         vec![command_of(path)]
     };

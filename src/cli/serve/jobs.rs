@@ -290,7 +290,11 @@ fn child(
         if over || left {
             let _ = c.kill();
             let _ = c.wait();
-            break Err(if over { Ended::OverBudget } else { Ended::ClientGone });
+            break Err(if over {
+                Ended::OverBudget
+            } else {
+                Ended::ClientGone
+            });
         }
         std::thread::sleep(nap.min(deadline.saturating_duration_since(Instant::now())));
         nap = (nap * 2).min(Duration::from_millis(5));
