@@ -83,10 +83,25 @@ def _plain(v: Any) -> Any:
 
 
 class _Result:
+    # the field whose items are the rows of ``to_pandas`` (None: one row of the fields)
+    _rows: Optional[str] = None
+
     def to_dict(self) -> Dict[str, Any]:
         """The fields as plain Python data (nested dicts and lists; arrays as lists;
         infinity stays ``math.inf``)."""
         return _plain(self)
+
+    def to_pandas(self) -> Any:
+        """A ``pandas.DataFrame`` (needs ``pandas``): one row per item of the list the
+        result holds (limit states, corners, ...), or one row of its fields; nested fields
+        are flattened into dotted columns (``reactions.h``)."""
+        try:
+            import pandas as pd
+        except ImportError as e:  # pragma: no cover - exercised without pandas
+            raise ImportError("to_pandas() needs the optional dependency pandas") from e
+        d = self.to_dict()
+        rows = d[self._rows] if self._rows is not None else [d]
+        return pd.json_normalize(rows)
 
 
 @dataclass(frozen=True)
@@ -373,6 +388,8 @@ class SolveResult(_Result):
     ``eta_from``, ``eta_to``, ``lowest_admissible``, ``interval``, ``gaps``).
     """
 
+    _rows = "limit_states"
+
     status: str
     arch: Arch
     mu: float
@@ -580,6 +597,8 @@ class ModesResult(_Result):
     modes, exact corners, smooth transitions and the limit states above the boundary.
     ``status`` is ``"ok"``, ``"no_equilibrium"``, ``"no_collapse"`` or ``"unresolved"``."""
 
+    _rows = "corners"
+
     status: str
     arch: Arch
     branches: Tuple[Branch, ...]
@@ -713,6 +732,8 @@ class LoadResult(_Result):
     ``lambda_`` (the least limit state: the collapse), ``lambda_static`` (the static
     maximum), every limit state below it, ``unique`` and ``reduction``. ``status`` is
     ``"ok"`` or a no-answer status with ``message``."""
+
+    _rows = "limit_states"
 
     status: str
     arch: Arch
