@@ -80,16 +80,7 @@ fn curve_figure_has_one_path_per_branch_and_a_marker_per_corner() {
 #[test]
 fn arch_figure_draws_the_mechanism_blocks() {
     let svg = arch_svg(&semicircle(), 0.35, None).unwrap();
-    let doc = parse(&svg);
-    let color = hex(mode_color(CollapseMode::MixedSlidingRotational));
-    let blocks = doc
-        .descendants()
-        .filter(|n| {
-            n.has_tag_name("polygon")
-                && n.attribute("opacity") == Some("0.45")
-                && n.attribute("fill") == Some(color.as_str())
-        })
-        .count();
+    let blocks = moving_blocks(&svg, CollapseMode::MixedSlidingRotational);
     assert_eq!(blocks, 4, "five active joints bound four moving blocks");
     assert!(svg.contains("mixed_sliding_rotational") && svg.contains("φ = 19.29°"));
     // above eta* the safe state of greatest margin, no mechanism
@@ -102,16 +93,21 @@ fn arch_figure_draws_the_mechanism_blocks() {
     // no block: two blocks, not a third of zero width drawn as a stray line across the crown
     let horseshoe = Arch::symmetric(1.15, WeightModel::Centreline).unwrap();
     let svg = arch_svg(&horseshoe, f64::INFINITY, None).unwrap();
-    let color = hex(mode_color(CollapseMode::Overturning));
-    let moving = parse(&svg)
+    let moving = moving_blocks(&svg, CollapseMode::Overturning);
+    assert_eq!(moving, 2, "two blocks turn about the springings");
+}
+
+/// The displaced blocks of the mechanism panel: polygons filled with the mode's colour.
+fn moving_blocks(svg: &str, mode: CollapseMode) -> usize {
+    let color = hex(mode_color(mode));
+    parse(svg)
         .descendants()
         .filter(|n| {
             n.has_tag_name("polygon")
                 && n.attribute("opacity") == Some("0.45")
                 && n.attribute("fill") == Some(color.as_str())
         })
-        .count();
-    assert_eq!(moving, 2, "two blocks turn about the springings");
+        .count()
 }
 
 #[test]
