@@ -1,7 +1,7 @@
 //! The command line itself: every command and its `--help`, parsed by clap, and the one
 //! dispatch from a command to its run function.
 
-use super::io::{emit, to_json, Exit, Io};
+use super::io::{emit, message_of, to_json, Exit, Io};
 use super::report::{ReportArgs, Runner};
 use super::serve_args::ServeArgs;
 use super::{assess, certify, curve, load, modes, plot, report, solve};
@@ -126,13 +126,8 @@ where
             return if e.use_stderr() {
                 emit(err, &text);
                 if args.iter().any(|a| a == "--json") {
-                    // clap's first paragraph: "error: ..." and any indented continuation
-                    let message: Vec<&str> = text
-                        .lines()
-                        .take_while(|l| !l.trim().is_empty())
-                        .map(|l| l.trim().trim_start_matches("error: "))
-                        .collect();
-                    emit(out, &to_json(&json::ErrorJson::new(message.join(" "))));
+                    let message = message_of(text.as_bytes());
+                    emit(out, &to_json(&json::ErrorJson::new(message)));
                 }
                 Exit::BadInput.code()
             } else {

@@ -60,6 +60,18 @@ pub(super) fn emit(w: &mut dyn Write, text: &str) {
     let _ = w.flush();
 }
 
+/// The message of an error report on standard error: its first paragraph (the "error: ..."
+/// line and any indented continuation, as clap and the commands write it), on one line.
+pub(crate) fn message_of(err: &[u8]) -> String {
+    let text = String::from_utf8_lossy(err);
+    let lines: Vec<&str> = text
+        .lines()
+        .take_while(|l| !l.trim().is_empty())
+        .map(|l| l.trim().trim_start_matches("error: "))
+        .collect();
+    lines.join(" ")
+}
+
 pub(crate) fn to_json<T: serde::Serialize>(value: &T) -> String {
     let mut s = serde_json::to_string_pretty(value).expect("results serialise to JSON");
     s.push('\n');

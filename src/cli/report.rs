@@ -3,7 +3,7 @@
 //! `verify`, and the `plot` figures, each run on the flags it accepts with `--json` (or
 //! `--out -` for a figure), so that the report's numbers are the command line's.
 
-use super::io::{Exit, Io};
+use super::io::{message_of, Exit, Io};
 use crate::render::report::{html, Certified, ReportInput};
 use serde_json::Value;
 use std::ffi::OsString;
@@ -201,14 +201,7 @@ fn command(runner: &Runner, path: &[&str], flags: &[Flag], extra: &[&str], drop:
 
 /// A command's JSON document (exit 0 or 1), or its error message (exit 2, or no document).
 fn document(ran: Ran) -> Result<Value, String> {
-    let first_error = || {
-        let text = String::from_utf8_lossy(&ran.err);
-        text.lines()
-            .take_while(|l| !l.trim().is_empty())
-            .map(|l| l.trim().trim_start_matches("error: "))
-            .collect::<Vec<_>>()
-            .join(" ")
-    };
+    let first_error = || message_of(&ran.err);
     if ran.code == 2 {
         return Err(first_error());
     }

@@ -414,15 +414,3 @@ fn check_limit(endpoint: &str, key: &str, value: Option<&str>) -> Result<(), Str
         _ => Ok(()),
     }
 }
-
-/// Bad input reported by a command on its standard error ("error: ..." lines, clap's
-/// first paragraph) as one message.
-pub(super) fn message_of(err: &[u8]) -> String {
-    let text = String::from_utf8_lossy(err);
-    let lines: Vec<&str> = text
-        .lines()
-        .take_while(|l| !l.trim().is_empty())
-        .map(|l| l.trim().trim_start_matches("error: "))
-        .collect();
-    lines.join(" ")
-}

@@ -7,8 +7,9 @@
 //! once. So pages and errors are answered while every computation is busy, and no
 //! computation outlives its budget.
 
-use super::api::{message_of, route, Prints, Route};
+use super::api::{route, Prints, Route};
 use super::http::{drain, send, Ready, Reply};
+use crate::cli::io::message_of;
 use std::ffi::OsString;
 use std::io::Read;
 use std::path::PathBuf;
