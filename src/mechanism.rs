@@ -4,7 +4,8 @@
 //! Mechanisms are not unique: the cone {λ ≥ 0 : B λ = 0} of a 5-joint pattern has
 //! dimension ≥ 2. We report its dimension, a representative in its relative interior
 //! (the mean of the extreme rays found), and, for a mirror-symmetric pattern of a
-//! symmetric arch, the symmetric representative.
+//! symmetric arch, the symmetric representative; [`extreme_mechanisms`] lists every
+//! extreme ray of the cone (the figures draw any one of them).
 
 use crate::contact::{Contact, ContactKind};
 use crate::kinematics::{column, compatibility_residual, mirror_indices, power};
@@ -13,7 +14,8 @@ use crate::lp::{self, LpOutcome};
 use crate::settings::Settings;
 use crate::state::State;
 use crate::statics::actions;
-use nalgebra::DMatrix;
+use itertools::Itertools;
+use nalgebra::{DMatrix, DVector};
 
 /// A kinematically admissible mechanism on a pattern.
 #[derive(Debug, Clone)]
@@ -272,4 +274,64 @@ pub fn find_under_load(
         }
     }
     Ok(best)
+}
+
+/// Supports of at most this many contacts are tried for a vertex: four equations
+/// (B λ = 0, Σ λ = 1), and a fifth (L_e = 0) on the face where the power vanishes.
+const VERTEX_SUPPORT: usize = 5;
+
+/// Every extreme mechanism on `m`'s contacts: the vertices of
+/// {λ ≥ 0 : B λ = 0, Σ λ = 1, L_e(λ) ≥ 0} (the kinematic LP's feasible set at thickness
+/// `eta`), each as rates on `m.contacts`, in the order of their supports. A vertex has a
+/// support of at most four contacts whose equations fix it, or five with L_e = 0; every
+/// such support is tried (a pattern has at most a few contacts).
+pub fn extreme_mechanisms(
+    arch: &crate::arch::Arch,
+    eta: f64,
+    m: &Mechanism,
+    settings: &Settings,
+) -> Vec<Vec<f64>> {
+    let cs = &m.contacts;
+    let n = cs.len();
+    let cols: Vec<[f64; 3]> = cs.iter().map(|c| column(c.kind, c.beta, eta)).collect();
+    let p = power(arch, eta, cs);
+    let scale = p.iter().fold(1.0_f64, |a, v| a.max(v.abs()));
+    let mut found: Vec<Vec<f64>> = Vec::new();
+    for size in 1..=n.min(VERTEX_SUPPORT) {
+        for support in (0..n).combinations(size) {
+            let rows = if size == VERTEX_SUPPORT { 5 } else { 4 };
+            let a = DMatrix::from_fn(rows, size, |r, c| match r {
+                0..=2 => cols[support[c]][r],
+                3 => 1.0,
+                _ => p[support[c]] / scale,
+            });
+            let mut rhs = DVector::zeros(rows);
+            rhs[3] = 1.0;
+            let svd = a.clone().svd(true, true);
+            if svd.rank(settings.rank_tol) < size {
+                continue;
+            }
+            let Ok(sol) = svd.solve(&rhs, settings.rank_tol) else {
+                continue;
+            };
+            let fits = (&a * &sol - &rhs).amax() <= settings.rate_tol;
+            if !fits || sol.iter().any(|&v| v <= settings.rate_tol) {
+                continue;
+            }
+            let mut rates = vec![0.0; n];
+            for (c, &i) in support.iter().enumerate() {
+                rates[i] = sol[c];
+            }
+            let power: f64 = p.iter().zip(&rates).map(|(a, b)| a * b).sum();
+            let same = |f: &Vec<f64>| {
+                f.iter()
+                    .zip(&rates)
+                    .all(|(a, b)| (a - b).abs() <= settings.rate_tol.sqrt())
+            };
+            if power >= -settings.rate_tol * scale && !found.iter().any(same) {
+                found.push(rates);
+            }
+        }
+    }
+    found
 }

@@ -151,6 +151,11 @@ pub(crate) enum Figure {
         /// at eta_s when it carries a mechanism, then each above it: non-unique cases).
         #[arg(long, conflicts_with = "eta")]
         limit_states: bool,
+        /// Draw extreme mechanism K (1, 2, ...) of the limit state's mechanism cone instead of
+        /// its representative (the mean of the extreme rays, made symmetric on a symmetric
+        /// pattern); the caption says "extreme K of N". An out-of-range K names the range.
+        #[arg(long, conflicts_with = "limit_states", value_name = "K")]
+        mechanism: Option<usize>,
         #[command(flatten)]
         output: Output,
     },
@@ -298,14 +303,9 @@ pub(crate) fn draw(figure: Figure, settings: &Settings, io: &mut Io) -> Result<S
         Figure::Arch {
             state: st,
             limit_states,
+            mechanism,
             ..
-        } => match plot_inputs(&st, settings) {
-            Ok((a, mu, _)) if limit_states => {
-                figures::limit_scenes(&a, mu, settings).map(|s| plot_arch::svg_panels(&s))
-            }
-            Ok((a, mu, eta)) => figures::scene(&a, mu, eta, settings).map(|s| plot_arch::svg(&s)),
-            Err(e) => return Err(io.bad_input(&e)),
-        },
+        } => arch_figure(&st, limit_states, mechanism, settings, io)?,
         Figure::Load {
             arch,
             eta,
@@ -442,4 +442,42 @@ fn influence(
 
 fn short(v: f64) -> String {
     crate::render::plot::short_num(v)
+}
+
+/// `plot arch`: the limit state at η*(μ) (with extreme mechanism `mechanism`, if given),
+/// the state of greatest margin at --eta, or every limit state (`limit_states`).
+fn arch_figure(
+    st: &StateArgs,
+    limit_states: bool,
+    mechanism: Option<usize>,
+    settings: &Settings,
+    io: &mut Io,
+) -> Result<Result<Result<String, String>, crate::figures::NoFigure>, Exit> {
+    use crate::figures;
+    use crate::render::plot_arch;
+    Ok(match plot_inputs(st, settings) {
+        Ok((a, mu, _)) if limit_states => {
+            figures::limit_scenes(&a, mu, settings).map(|s| plot_arch::svg_panels(&s))
+        }
+        Ok((a, mu, eta)) => match figures::scene(&a, mu, eta, settings) {
+            Ok(s) => match mechanism {
+                None => Ok(plot_arch::svg(&s)),
+                Some(k) => match figures::extreme_scene(s, k, settings) {
+                    Ok(s) => Ok(plot_arch::svg(&s)),
+                    Err(figures::ExtremeChoice::NoMechanism) => Err(figures::NoFigure(
+                        "--mechanism: the state drawn is safe and has no mechanism".into(),
+                    )),
+                    Err(figures::ExtremeChoice::OutOfRange(n)) => {
+                        return Err(io.bad_input(&InputError::OutOfRange {
+                            arg: "--mechanism",
+                            value: k.to_string(),
+                            range: format!("1 to {n} (the extreme mechanisms of this limit state)"),
+                        }))
+                    }
+                },
+            },
+            Err(e) => Err(e),
+        },
+        Err(e) => return Err(io.bad_input(&e)),
+    })
 }

@@ -218,6 +218,9 @@ pub struct ArchScene {
     pub mechanism: Option<Mechanism>,
     /// The moving blocks of the mechanism (empty for a safe state).
     pub blocks: Vec<Block>,
+    /// When the mechanism drawn is an extreme ray of its cone: its number (from 1) and the
+    /// number of extreme rays ([`extreme_scene`]); `None` for the representative.
+    pub ray: Option<(usize, usize)>,
     /// The lines of thrust and friction, sampled along the arch.
     pub lines: Vec<Eccentricity>,
     /// A live load and its multiplier at this state (load figures), drawn as arrows.
@@ -342,6 +345,7 @@ fn build_scene(
         mode: limit.as_ref().map(|l| l.0),
         mechanism: limit.map(|l| l.1),
         blocks,
+        ray: None,
         lines: eccentricities_under(
             &State { arch, eta, mu, x },
             load.as_ref().map(|(l, lambda)| (l, *lambda)),
@@ -349,6 +353,39 @@ fn build_scene(
         ),
         load,
     }
+}
+
+/// Why [`extreme_scene`] drew nothing.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum ExtremeChoice {
+    /// The scene is not a limit state: it has no mechanism.
+    NoMechanism,
+    /// The cone has this many extreme rays, and the one asked for is not among them.
+    OutOfRange(usize),
+}
+
+/// `scene` with extreme mechanism `k` (from 1) of its mechanism cone in place of the
+/// representative ([`crate::mechanism::extreme_mechanisms`]): the same limit state, other
+/// rates, other moving blocks.
+pub fn extreme_scene(
+    mut scene: ArchScene,
+    k: usize,
+    settings: &Settings,
+) -> Result<ArchScene, ExtremeChoice> {
+    let m = scene.mechanism.as_mut().ok_or(ExtremeChoice::NoMechanism)?;
+    let rays = crate::mechanism::extreme_mechanisms(&scene.arch, scene.eta, m, settings);
+    let rates = k
+        .checked_sub(1)
+        .and_then(|i| rays.get(i))
+        .ok_or(ExtremeChoice::OutOfRange(rays.len()))?;
+    m.rates.clone_from(rates);
+    m.symmetric = false;
+    scene.blocks = block_motions(scene.eta, &m.contacts, &m.rates)
+        .into_iter()
+        .map(|(from, to, motion)| Block { from, to, motion })
+        .collect();
+    scene.ray = Some((k, rays.len()));
+    Ok(scene)
 }
 
 /// Every limit state of a live load at (η, μ) (the least, the collapse, first), each as a

@@ -662,3 +662,78 @@ fn load_curve_figure_shades_the_reduction() {
     assert!(shaded >= 3, "{shaded} shaded intervals");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The extreme mechanisms of a 2-dof cone (the semicircle at μ = 0.35: five contacts, rank
+/// 3): two, each compatible (B λ = 0), of unit sum and non-negative power, mirror images of
+/// each other, and their mean is the symmetric representative; `plot arch --mechanism K`
+/// draws each and names an out-of-range K with the range.
+#[test]
+fn extreme_mechanisms_of_a_two_dof_cone() {
+    let settings = Settings::default();
+    let scene = figures::scene(&semicircle(), 0.35, None, &settings).unwrap();
+    let m = scene.mechanism.clone().unwrap();
+    assert_eq!(m.dof, 2);
+    let rays = arch_enum::mechanism::extreme_mechanisms(&scene.arch, scene.eta, &m, &settings);
+    assert_eq!(rays.len(), 2, "{rays:?}");
+    for r in &rays {
+        let res = arch_enum::kinematics::compatibility_residual(scene.eta, &m.contacts, r);
+        assert!(res.iter().all(|v| v.abs() < 1e-12), "{res:?}");
+        assert!((r.iter().sum::<f64>() - 1.0).abs() < 1e-12);
+        assert!(r.iter().all(|&v| v >= 0.0));
+        let p = arch_enum::kinematics::power(&scene.arch, scene.eta, &m.contacts);
+        assert!(p.iter().zip(r).map(|(a, b)| a * b).sum::<f64>() >= 0.0);
+    }
+    let n = m.rates.len();
+    for i in 0..n {
+        // mirror images (contacts are sorted by beta, the pattern is symmetric)
+        assert!((rays[0][i] - rays[1][n - 1 - i]).abs() < 1e-12, "{rays:?}");
+        let mean = 0.5 * (rays[0][i] + rays[1][i]);
+        assert!(
+            (mean - m.rates[i]).abs() < 1e-12,
+            "{mean} vs {}",
+            m.rates[i]
+        );
+    }
+    let two = figures::extreme_scene(scene.clone(), 2, &settings).unwrap();
+    assert_eq!(two.ray, Some((2, 2)));
+    assert_eq!(
+        figures::extreme_scene(scene, 3, &settings).unwrap_err(),
+        figures::ExtremeChoice::OutOfRange(2)
+    );
+    let out = Command::cargo_bin("arch-enum")
+        .unwrap()
+        .args([
+            "plot",
+            "arch",
+            "--alpha",
+            "0",
+            "--mu",
+            "0.35",
+            "--mechanism",
+            "1",
+            "--out",
+            "-",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("extreme 1 of 2"));
+    let out = Command::cargo_bin("arch-enum")
+        .unwrap()
+        .args([
+            "plot",
+            "arch",
+            "--alpha",
+            "0",
+            "--mu",
+            "0.35",
+            "--mechanism",
+            "3",
+            "--out",
+            "-",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--mechanism: 3 (valid range: 1 to 2"));
+}

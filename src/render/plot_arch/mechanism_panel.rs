@@ -88,7 +88,10 @@ pub(super) fn mechanism_panel(
         .y_label_area_size(Y_LABELS)
         .caption(
             format!(
-                "collapse mechanism: rigid blocks displaced by {} × the rates (linearised), {dof} dof",
+                "collapse mechanism{}: rigid blocks displaced by {} × the rates (linearised), {dof} dof",
+                scene
+                    .ray
+                    .map_or(String::new(), |(i, n)| format!(" (extreme {i} of {n})")),
                 short_num(k)
             ),
             (FAMILY, 14),
