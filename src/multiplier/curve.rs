@@ -304,7 +304,8 @@ impl tracer::Problem for Bisection<'_> {
 /// The λ–μ curve: the samples at `mus` (sorted by increasing μ, μ = ∞ allowed) and every
 /// corner between two samples on different branches, bisected to neighbouring floats. When
 /// the last finite sample and μ = ∞ differ, the μ above which the answer is the associative
-/// one is looked for up to μ = 1e12.
+/// one is looked for up to μ = 1e12. `progress(done, total)` counts the samples, then the
+/// brackets bisected.
 pub fn trace(
     arch: &Arch,
     eta: f64,
@@ -317,7 +318,10 @@ pub fn trace(
     let mut mus = mus.to_vec();
     mus.sort_by(f64::total_cmp);
     mus.dedup();
-    let samples = sample(arch, eta, load, &mus, settings, progress)?;
+    // the samples count against at most as many brackets as gaps between them; the total
+    // shrinks to the brackets there are once the samples are in
+    let most = 2 * mus.len().max(1) - 1;
+    let samples = sample(arch, eta, load, &mus, settings, &|d, _| progress(d, most))?;
     let mut p = Bisection {
         arch,
         eta,
@@ -327,11 +331,21 @@ pub fn trace(
         found: 0,
     };
     let mut corners = Vec::new();
-    for w in samples.windows(2) {
+    // progress goes on over the brackets to bisect: each is one more unit of work
+    let changes: Vec<bool> = samples
+        .windows(2)
+        .map(|w| p.key(&w[0]) != p.key(&w[1]))
+        .collect();
+    let total = samples.len() + changes.iter().filter(|&&c| c).count();
+    if total == samples.len() {
+        progress(total, total);
+    }
+    let brackets = samples.windows(2).zip(&changes).filter(|(_, &c)| c);
+    for (k, (w, _)) in brackets.enumerate() {
         let (lo, hi) = (&w[0], &w[1]);
-        if p.key(lo) == p.key(hi) {
-            continue;
-        }
+        let at = samples.len() + k + 1;
+        let report = move || progress(at, total);
+        let _finished = Finished(&report);
         let hi = if hi.0.is_finite() {
             hi.clone()
         } else {
@@ -375,6 +389,15 @@ pub fn trace(
     }
     corners.sort_by(|a, b| a.below().0.total_cmp(&b.below().0));
     Ok(LoadCurve { samples, corners })
+}
+
+/// Calls its function when dropped: a bracket's progress is reported however it ends.
+struct Finished<'a>(&'a dyn Fn());
+
+impl Drop for Finished<'_> {
+    fn drop(&mut self) {
+        (self.0)();
+    }
 }
 
 /// Across an exact corner the two sides' λ (at the ends of the survey's tolerance band,
