@@ -27,6 +27,9 @@ pub const HEAD_DEADLINE: Duration = Duration::from_secs(5);
 /// Time a reply may take to be written (a client that does not read is dropped).
 pub const WRITE_TIMEOUT: Duration = Duration::from_secs(5);
 
+/// How long the reader waits after a failed `accept` (no file descriptor left, ...).
+const ACCEPT_RETRY: Duration = Duration::from_millis(50);
+
 /// How long the reader sleeps when no connection made progress.
 const POLL: Duration = Duration::from_millis(2);
 
@@ -246,8 +249,10 @@ pub fn read_heads(listener: &TcpListener, port: u16, mut deliver: impl FnMut(Rea
         if pending.is_empty() {
             // nothing to poll: wait for a connection
             let _ = listener.set_nonblocking(false);
-            if let Ok((s, _)) = listener.accept() {
-                admit(&mut pending, s);
+            match listener.accept() {
+                Ok((s, _)) => admit(&mut pending, s),
+                // e.g. no file descriptor left: wait rather than spin
+                Err(_) => std::thread::sleep(ACCEPT_RETRY),
             }
             let _ = listener.set_nonblocking(true);
         }
