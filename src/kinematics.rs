@@ -90,28 +90,27 @@ pub fn mirror_indices(contacts: &[Contact], tol: f64) -> Option<Vec<usize>> {
         .collect()
 }
 
-/// Active joints closer than this (radians) are one joint in [`block_motions`].
-pub const SAME_JOINT: f64 = 1e-9;
-
 /// The rigid motion (V_x(O), V_y(O), ψ) of each block of a mechanism: the pieces between
-/// consecutive distinct active joints, as (β_start, β_end, motion). Pieces before the first
-/// and after the last active joint are at rest and not listed.
+/// consecutive distinct active joints, as (β_start, β_end, motion); active joints closer than
+/// `same_joint` (`Settings::same_joint`) are one. Pieces before the first and after the last
+/// active joint are at rest and not listed.
 pub fn block_motions(
     eta: f64,
     contacts: &[Contact],
     rates: &[f64],
+    same_joint: f64,
 ) -> Vec<(Radians, Radians, [f64; 3])> {
     let mut joints: Vec<Radians> = contacts.iter().map(|c| c.beta).collect();
     joints.sort_by(f64::total_cmp);
     // two contacts at one joint (E and I at a detached joint) bound no block between them,
     // even when their angles differ in the last bits
-    joints.dedup_by(|b, a| *b - *a <= SAME_JOINT);
+    joints.dedup_by(|b, a| *b - *a <= same_joint);
     joints
         .windows(2)
         .map(|w| {
             let mut v = [0.0; 3];
             for (c, &r) in contacts.iter().zip(rates) {
-                if c.beta <= w[0] + SAME_JOINT {
+                if c.beta <= w[0] + same_joint {
                     let col = column(c.kind, c.beta, eta);
                     for i in 0..3 {
                         v[i] += r * col[i];

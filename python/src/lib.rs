@@ -238,7 +238,8 @@ fn solve<'py>(py: Python<'py>, spec: ArchIn, mu: f64) -> PyResult<Bound<'py, PyA
         .detach(|| -> Result<(Value, Value), InputError> {
             let sv = survey(&arch, mu, &Settings::default())?;
             let d = serde_json::to_value(json::solve(&sv, false)).expect("serialisable");
-            let lines = figures::survey_scene(&sv).map_or(Value::Null, |s| lines_json(&s));
+            let lines = figures::survey_scene(&sv, &Settings::default())
+                .map_or(Value::Null, |s| lines_json(&s));
             Ok((d, lines))
         })
         .map_err(value_error)?;
@@ -261,7 +262,7 @@ fn solve_scene(spec: &ArchIn, mu: f64, py: Python<'_>) -> PyResult<ArchScene> {
     let arch = build_arch(spec)?;
     py.detach(|| {
         let sv = survey(&arch, mu, &Settings::default()).map_err(value_error)?;
-        figures::survey_scene(&sv).map_err(figure_error)
+        figures::survey_scene(&sv, &Settings::default()).map_err(figure_error)
     })
 }
 

@@ -74,7 +74,7 @@ pub(crate) fn run(a: SolveArgs, settings: &Settings, io: &mut Io) -> Exit {
     // the COMPAS file first: a path that cannot be written is bad input, reported alone
     let mut no_scene = None;
     if let Some(path) = &a.compas {
-        match survey_scene(&survey) {
+        match survey_scene(&survey, settings) {
             Ok(scene) => {
                 let doc = compas::document(&scene, a.radius);
                 if let Err(e) = std::fs::write(path, to_json(&doc)) {

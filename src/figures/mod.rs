@@ -260,21 +260,37 @@ pub fn scene(
                     },
                 )?;
             let limit = Some((CollapseMode::PurelySliding, mech));
-            return Ok(build_scene(arch, mu, (e, x), pattern, limit, None));
+            return Ok(build_scene(
+                arch,
+                mu,
+                (e, x),
+                pattern,
+                limit,
+                None,
+                settings,
+            ));
         }
         Some(e) if e > ls.eta * (1.0 + AT_LIMIT) => {
             let (x, pattern) = safe_state(arch, e, mu, settings)?;
             (e, x, pattern)
         }
-        _ => return Ok(limit_scene(arch, mu, &ls)),
+        _ => return Ok(limit_scene(arch, mu, &ls, settings)),
     };
-    Ok(build_scene(arch, mu, (eta, x), pattern, None, None))
+    Ok(build_scene(
+        arch,
+        mu,
+        (eta, x),
+        pattern,
+        None,
+        None,
+        settings,
+    ))
 }
 
 /// The least limit state of a survey, as `solve` reports it at the top level: the state at
 /// η_s when it carries a mechanism (or when the search above it could not be completed),
 /// else the least limit state above η_s.
-pub fn survey_scene(survey: &Survey) -> Result<ArchScene, NoFigure> {
+pub fn survey_scene(survey: &Survey, settings: &Settings) -> Result<ArchScene, NoFigure> {
     let sol = &survey.solution;
     let (arch, mu) = (&sol.arch, sol.mu);
     if let Ok(found) = &survey.states {
@@ -285,11 +301,11 @@ pub fn survey_scene(survey: &Survey) -> Result<ArchScene, NoFigure> {
                     found.eta_s
                 ))
             })?;
-            return Ok(swept_scene(arch, mu, st));
+            return Ok(swept_scene(arch, mu, st, settings));
         }
     }
     match &sol.outcome {
-        Outcome::Limit(ls) => Ok(limit_scene(arch, mu, ls)),
+        Outcome::Limit(ls) => Ok(limit_scene(arch, mu, ls, settings)),
         Outcome::NoEquilibrium { reason, .. }
         | Outcome::Unresolved { reason, .. }
         | Outcome::NoCollapse { reason } => Err(NoFigure(reason.clone())),
@@ -297,7 +313,7 @@ pub fn survey_scene(survey: &Survey) -> Result<ArchScene, NoFigure> {
 }
 
 /// The scene of a limit state `ls` found at friction `mu` (what [`scene`] draws at η*).
-pub fn limit_scene(arch: &Arch, mu: f64, ls: &LeastLimitState) -> ArchScene {
+pub fn limit_scene(arch: &Arch, mu: f64, ls: &LeastLimitState, settings: &Settings) -> ArchScene {
     build_scene(
         arch,
         mu,
@@ -305,11 +321,17 @@ pub fn limit_scene(arch: &Arch, mu: f64, ls: &LeastLimitState) -> ArchScene {
         ls.pattern.clone(),
         Some((ls.mode, ls.mechanism.clone())),
         None,
+        settings,
     )
 }
 
 /// The scene of a limit state found by the search above η_s.
-fn swept_scene(arch: &Arch, mu: f64, st: &crate::limit_states::LimitState) -> ArchScene {
+fn swept_scene(
+    arch: &Arch,
+    mu: f64,
+    st: &crate::limit_states::LimitState,
+    settings: &Settings,
+) -> ArchScene {
     build_scene(
         arch,
         mu,
@@ -317,7 +339,16 @@ fn swept_scene(arch: &Arch, mu: f64, st: &crate::limit_states::LimitState) -> Ar
         st.pattern.clone(),
         Some((st.mode, st.mechanism.clone())),
         None,
+        settings,
     )
+}
+
+/// The moving blocks of mechanism `m` at thickness `eta`.
+fn blocks_of(eta: f64, m: &Mechanism, settings: &Settings) -> Vec<Block> {
+    block_motions(eta, &m.contacts, &m.rates, settings.same_joint)
+        .into_iter()
+        .map(|(from, to, motion)| Block { from, to, motion })
+        .collect()
 }
 
 /// The scene of a state (η, x) with its contacts, and the mode and mechanism when it is
@@ -329,13 +360,11 @@ fn build_scene(
     pattern: Vec<Contact>,
     limit: Option<(CollapseMode, Mechanism)>,
     load: Option<(LiveLoad, f64)>,
+    settings: &Settings,
 ) -> ArchScene {
-    let blocks = limit.as_ref().map_or_else(Vec::new, |(_, m)| {
-        block_motions(eta, &m.contacts, &m.rates)
-            .into_iter()
-            .map(|(from, to, motion)| Block { from, to, motion })
-            .collect()
-    });
+    let blocks = limit
+        .as_ref()
+        .map_or_else(Vec::new, |(_, m)| blocks_of(eta, m, settings));
     ArchScene {
         arch: arch.clone(),
         mu,
@@ -380,10 +409,7 @@ pub fn extreme_scene(
         .ok_or(ExtremeChoice::OutOfRange(rays.len()))?;
     m.rates.clone_from(rates);
     m.symmetric = false;
-    scene.blocks = block_motions(scene.eta, &m.contacts, &m.rates)
-        .into_iter()
-        .map(|(from, to, motion)| Block { from, to, motion })
-        .collect();
+    scene.blocks = blocks_of(scene.eta, m, settings);
     scene.ray = Some((k, rays.len()));
     Ok(scene)
 }
@@ -447,6 +473,7 @@ pub fn load_scenes(
                     st.pattern.clone(),
                     Some((st.mode, st.mechanism.clone())),
                     Some((*load, st.t)),
+                    settings,
                 ),
             )
         })
@@ -470,7 +497,7 @@ pub fn limit_scenes(
     if let (true, Outcome::Limit(ls)) = (found.mechanism_at_eta_s, &sv.solution.outcome) {
         out.push((
             format!("at eta_s: eta = {:.9}", ls.eta),
-            limit_scene(arch, mu, ls),
+            limit_scene(arch, mu, ls, settings),
         ));
     }
     for st in &found.above {
@@ -481,7 +508,7 @@ pub fn limit_scenes(
                 st.t - found.eta_s,
                 st.t
             ),
-            swept_scene(arch, mu, st),
+            swept_scene(arch, mu, st, settings),
         ));
     }
     let n = out.len();

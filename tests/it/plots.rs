@@ -700,40 +700,18 @@ fn extreme_mechanisms_of_a_two_dof_cone() {
         figures::extreme_scene(scene, 3, &settings).unwrap_err(),
         figures::ExtremeChoice::OutOfRange(2)
     );
-    let out = Command::cargo_bin("arch-enum")
-        .unwrap()
-        .args([
-            "plot",
-            "arch",
-            "--alpha",
-            "0",
-            "--mu",
-            "0.35",
-            "--mechanism",
-            "1",
-            "--out",
-            "-",
-        ])
-        .output()
-        .unwrap();
+    let plot = |k: &str| {
+        Command::cargo_bin("arch-enum")
+            .unwrap()
+            .args(["plot", "arch", "--alpha", "0", "--mu", "0.35"])
+            .args(["--mechanism", k, "--out", "-"])
+            .output()
+            .unwrap()
+    };
+    let out = plot("1");
     assert_eq!(out.status.code(), Some(0));
     assert!(String::from_utf8_lossy(&out.stdout).contains("extreme 1 of 2"));
-    let out = Command::cargo_bin("arch-enum")
-        .unwrap()
-        .args([
-            "plot",
-            "arch",
-            "--alpha",
-            "0",
-            "--mu",
-            "0.35",
-            "--mechanism",
-            "3",
-            "--out",
-            "-",
-        ])
-        .output()
-        .unwrap();
+    let out = plot("3");
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--mechanism: 3 (valid range: 1 to 2"));
 }
