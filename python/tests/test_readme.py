@@ -1,6 +1,7 @@
-"""README.md's Python example stays true: the ```python block of the section
-"Python: `import arch_enum`" is run as a script and what it prints must equal the
-```text block after it (trailing blanks ignored); it must write its two figures."""
+"""The Python examples stay true: the ```python block of README.md's section
+"Python: `import arch_enum`" and of docs/python.md's "A worked example" are each run as a
+script, and what each prints must equal the ```text block after it (trailing blanks
+ignored); the worked example must write its two figures."""
 
 import os
 import subprocess
@@ -18,9 +19,10 @@ def blocks(text, start):
     return code, printed
 
 
-def test_readme_python_example(tmp_path):
-    text = (REPO / "README.md").read_text(encoding="utf-8")
-    code, printed = blocks(text, "## Python: `import arch_enum`")
+def run_block(page, start, tmp_path):
+    """Runs the ```python block after `start` on `page` and compares what it prints."""
+    text = (REPO / page).read_text(encoding="utf-8")
+    code, printed = blocks(text, start)
     script = tmp_path / "example.py"
     script.write_text(code, encoding="utf-8")
     env = dict(os.environ, MPLBACKEND="Agg")
@@ -30,5 +32,13 @@ def test_readme_python_example(tmp_path):
     got = [line.rstrip() for line in out.stdout.splitlines()]
     want = [line.rstrip() for line in printed.splitlines()]
     assert got == want
+
+
+def test_readme_python_example(tmp_path):
+    run_block("README.md", "## Python: `import arch_enum`", tmp_path)
+
+
+def test_docs_worked_example(tmp_path):
+    run_block("docs/python.md", "## A worked example", tmp_path)
     assert (tmp_path / "eta_mu.png").stat().st_size > 1000
     assert (tmp_path / "arch.svg").read_text(encoding="utf-8").count("<svg") >= 1

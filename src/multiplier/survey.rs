@@ -183,6 +183,49 @@ fn associative(
 /// columns are of size 1: exact cancellation leaves rounding only).
 const CANCEL_TOL: f64 = 1e-12;
 
+/// Two sliding columns whose sums are below `CANCEL_TOL` point opposite ways to within
+/// ~1.5 `CANCEL_TOL` in angle: only pairs whose directions agree modulo π to this are
+/// compared component by component (a window far wider than the test it guards).
+const DIRECTION_WINDOW: f64 = 1e-9;
+
+/// The pairs (i < j, in row order) of sliding rows whose compatibility columns cancel (see
+/// [`continua`]), excluding one joint's section sliding both ways. The rows are sorted by the
+/// direction of their sliding column modulo π and only neighbours within
+/// `DIRECTION_WINDOW` (with the wrap at π) are compared: N log N, not all N² pairs.
+fn cancelling_pairs(rows: &[LoadRow], eta: f64) -> Vec<(usize, usize)> {
+    let col = |r: &LoadRow| column(r.contact.kind, r.contact.beta, eta);
+    let mut dir: Vec<(f64, usize)> = (0..rows.len())
+        .filter(|&i| !rows[i].contact.kind.is_hinge())
+        .map(|i| {
+            let c = col(&rows[i]);
+            (c[1].atan2(c[0]).rem_euclid(std::f64::consts::PI), i)
+        })
+        .collect();
+    dir.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let near = |a: f64, b: f64| std::f64::consts::PI - (b - a) <= DIRECTION_WINDOW;
+    let mut out = Vec::new();
+    for (k, &(a, i)) in dir.iter().enumerate() {
+        // the rows just after this one, and (near 0) those just below π
+        let ahead = dir[k + 1..]
+            .iter()
+            .take_while(|&&(b, _)| b - a <= DIRECTION_WINDOW);
+        let wrap = dir[k + 1..].iter().rev().take_while(|&&(b, _)| near(a, b));
+        for &(_, j) in ahead.chain(wrap) {
+            let (p, q) = (&rows[i.min(j)], &rows[i.max(j)]);
+            if p.contact.beta == q.contact.beta && p.side == q.side {
+                continue; // one joint slides one way only
+            }
+            let (cp, cq) = (col(p), col(q));
+            if (0..3).all(|k| (cp[k] + cq[k]).abs() <= CANCEL_TOL) {
+                out.push((i.min(j), i.max(j)));
+            }
+        }
+    }
+    out.sort_unstable();
+    out.dedup();
+    out
+}
+
 /// Continua of limit states. Two active contacts whose compatibility columns cancel — the
 /// two sections of the point load's joint sliding opposite ways (the zero-width piece that
 /// carries the load slides along the joint between blocks at rest), or two joints half a
@@ -204,65 +247,50 @@ pub fn continua(
         return Ok(out); // hinge columns cancel only at η = 0
     }
     let ineq: Vec<([f64; 4], f64)> = rows.iter().map(LoadRow::pair).collect();
-    for i in 0..rows.len() {
-        for j in i + 1..rows.len() {
-            let (p, q) = (&rows[i], &rows[j]);
-            if p.contact.kind.is_hinge() || q.contact.kind.is_hinge() {
-                continue;
-            }
-            if p.contact.beta == q.contact.beta && p.side == q.side {
-                continue; // one joint slides one way only
-            }
-            let (cp, cq) = (
-                column(p.contact.kind, p.contact.beta, eta),
-                column(q.contact.kind, q.contact.beta, eta),
-            );
-            if (0..3).any(|k| (cp[k] + cq[k]).abs() > CANCEL_TOL) {
-                continue;
-            }
-            let pair = [(p.contact, p.side), (q.contact, q.side)];
-            let plain = [p.contact, q.contact];
-            let dead = power(arch, eta, &plain);
-            let live = load.power(arch, eta, &pair);
-            let (d, l) = (0.5 * (dead[0] + dead[1]), 0.5 * (live[0] + live[1]));
-            if l <= settings.rate_tol {
-                continue;
-            }
-            // total power d + λ l ≥ 0
-            let mut with_power = ineq.clone();
-            with_power.push(([0.0, 0.0, 0.0, -l], -d));
-            let equal = [p.pair(), q.pair()];
-            let from = match lp::multiplier_extreme(&with_power, &equal, false, settings) {
-                Ok(Some(z)) => z,
-                Ok(None) => continue,
-                Err(LpOutcome::Infeasible) => continue,
-                Err(LpOutcome::Failed(e)) => return Err(Undecided::back_end(e)),
-            };
-            let to = match lp::multiplier_extreme(&with_power, &equal, true, settings) {
-                Ok(Some(z)) => z[3],
-                Ok(None) => f64::INFINITY,
-                Err(LpOutcome::Infeasible) => from[3],
-                Err(LpOutcome::Failed(e)) => return Err(Undecided::back_end(e)),
-            };
-            let x = [from[0], from[1], from[2]];
-            let st = State { arch, eta, mu, x };
-            let Ok(Some((mechanism, live_power))) =
-                mechanism::find_under_load(&st, from[3], load, &pair, settings)
-            else {
-                continue;
-            };
-            let contacts = (plain.to_vec(), vec![p.side, q.side]);
-            out.push(LimitState {
-                continuum_to: Some(to),
-                ..LimitState::new(
-                    arch,
-                    (from[3], x),
-                    contacts,
-                    (mechanism, live_power),
-                    settings,
-                )
-            });
+    for (i, j) in cancelling_pairs(rows, eta) {
+        let (p, q) = (&rows[i], &rows[j]);
+        let pair = [(p.contact, p.side), (q.contact, q.side)];
+        let plain = [p.contact, q.contact];
+        let dead = power(arch, eta, &plain);
+        let live = load.power(arch, eta, &pair);
+        let (d, l) = (0.5 * (dead[0] + dead[1]), 0.5 * (live[0] + live[1]));
+        if l <= settings.rate_tol {
+            continue;
         }
+        // total power d + λ l ≥ 0
+        let mut with_power = ineq.clone();
+        with_power.push(([0.0, 0.0, 0.0, -l], -d));
+        let equal = [p.pair(), q.pair()];
+        let from = match lp::multiplier_extreme(&with_power, &equal, false, settings) {
+            Ok(Some(z)) => z,
+            Ok(None) => continue,
+            Err(LpOutcome::Infeasible) => continue,
+            Err(LpOutcome::Failed(e)) => return Err(Undecided::back_end(e)),
+        };
+        let to = match lp::multiplier_extreme(&with_power, &equal, true, settings) {
+            Ok(Some(z)) => z[3],
+            Ok(None) => f64::INFINITY,
+            Err(LpOutcome::Infeasible) => from[3],
+            Err(LpOutcome::Failed(e)) => return Err(Undecided::back_end(e)),
+        };
+        let x = [from[0], from[1], from[2]];
+        let st = State { arch, eta, mu, x };
+        let Ok(Some((mechanism, live_power))) =
+            mechanism::find_under_load(&st, from[3], load, &pair, settings)
+        else {
+            continue;
+        };
+        let contacts = (plain.to_vec(), vec![p.side, q.side]);
+        out.push(LimitState {
+            continuum_to: Some(to),
+            ..LimitState::new(
+                arch,
+                (from[3], x),
+                contacts,
+                (mechanism, live_power),
+                settings,
+            )
+        });
     }
     Ok(out)
 }

@@ -41,6 +41,12 @@ pub(super) fn may_carry_mechanism(
     let tol = settings.adm_tol;
     let mut active: [(usize, ContactKind); 4] = [(0, ContactKind::HingeExtrados); 4];
     let mut count = 0;
+    // the magnitudes depend on the kind only through hinge or sliding: two per candidate
+    let mag_of = |kind| crate::statics::magnitude(kind, c.eta, mu, &c.x, settings.magnitude_floor);
+    let (mag_hinge, mag_slide) = (
+        mag_of(ContactKind::HingeExtrados),
+        mag_of(ContactKind::SlidePlus),
+    );
     for (j, jr) in js.iter().enumerate() {
         let (n, t, m) = (ev(&jr.n, p), ev(&jr.t, p), ev(&jr.m, p) + c.x[2]);
         for (kind, phi) in [
@@ -49,8 +55,12 @@ pub(super) fn may_carry_mechanism(
             (ContactKind::SlidePlus, t - mu * n),
             (ContactKind::SlideMinus, -t - mu * n),
         ] {
-            let mag = crate::statics::magnitude(kind, c.eta, mu, &c.x, settings.magnitude_floor);
-            let r = phi / mag;
+            let r = phi
+                / if kind.is_hinge() {
+                    mag_hinge
+                } else {
+                    mag_slide
+                };
             if r > CLEAR_FACTOR * tol {
                 return false;
             }
