@@ -13,7 +13,7 @@ import dataclasses
 import json
 import math
 from dataclasses import dataclass
-from typing import Any, Dict, Optional, Tuple
+from typing import Any, Dict, List, Optional, Tuple
 
 import numpy as np
 
@@ -266,7 +266,9 @@ class Reactions(_Result):
 class Mechanism(_Result):
     """A mechanism on the active contacts: the rates (summing to 1) at each contact, the
     dimension of the mechanism cone, the external power and the frictional dissipation,
-    and the residuals of compatibility (|B lambda|) and complementarity."""
+    the residuals of compatibility (|B lambda|) and complementarity, and (``solve`` only)
+    ``rays``: the extreme rays of the cone as a (k, n) array, each row rates on the same
+    contacts summing to 1 (one row when ``dof`` is 1; ``None`` under a live load)."""
 
     beta: np.ndarray
     kind: Tuple[str, ...]
@@ -277,6 +279,7 @@ class Mechanism(_Result):
     symmetric: bool
     compatibility_residual: float
     complementarity_residual: float
+    rays: Optional[np.ndarray]
 
     @staticmethod
     def _of(d: Optional[Dict[str, Any]]) -> Optional["Mechanism"]:
@@ -293,7 +296,17 @@ class Mechanism(_Result):
             symmetric=bool(d["symmetric"]),
             compatibility_residual=float(d["compatibility_residual"]),
             complementarity_residual=float(d["complementarity_residual"]),
+            rays=_rays(d.get("rays"), len(rates)),
         )
+
+
+def _rays(rays: Optional[List[List[float]]], n: int) -> Optional[np.ndarray]:
+    """The extreme rays as a read-only (k, n) array, or None where none were given."""
+    if rays is None:
+        return None
+    a = np.array(rays, dtype=float).reshape(len(rays), n)
+    a.flags.writeable = False
+    return a
 
 
 @dataclass(frozen=True, eq=False)

@@ -237,7 +237,8 @@ fn solve<'py>(py: Python<'py>, spec: ArchIn, mu: f64) -> PyResult<Bound<'py, PyA
     let (d, lines) = py
         .detach(|| -> Result<(Value, Value), InputError> {
             let sv = survey(&arch, mu, &Settings::default())?;
-            let d = serde_json::to_value(json::solve(&sv, false)).expect("serialisable");
+            let d = serde_json::to_value(json::solve(&sv, false, &sv.rays(&Settings::default())))
+                .expect("serialisable");
             let lines = figures::survey_scene(&sv, &Settings::default())
                 .map_or(Value::Null, |s| lines_json(&s));
             Ok((d, lines))

@@ -68,6 +68,13 @@ def test_solve(cli, arch_kw, flags, mu):
         np.testing.assert_allclose(
             r.mechanism.rate, [x["rate"] for x in doc["mechanism"]["rates"]], rtol=1e-12,
             atol=1e-14)
+        # the extreme rays: as many as the CLI lists, each summing to 1, and the
+        # representative in their convex hull's span (one ray: the representative itself)
+        rays = r.mechanism.rays
+        assert rays.shape == (len(doc["mechanism"]["rays"]), len(r.mechanism.rate))
+        np.testing.assert_allclose(rays.sum(axis=1), 1.0, rtol=1e-9)
+        if r.mechanism.dof == 1:
+            np.testing.assert_allclose(rays[0], r.mechanism.rate, rtol=1e-9, atol=1e-12)
     assert [s.eta for s in r.limit_states] == pytest.approx(
         [s["eta"] for s in doc.get("limit_states") or []], rel=1e-12)
     assert (code == 0) == (r.status == "ok")

@@ -85,7 +85,7 @@ pub(crate) fn run(a: SolveArgs, settings: &Settings, io: &mut Io) -> Exit {
         }
     }
     if a.json {
-        let mut doc = json::solve(&survey, a.explain);
+        let mut doc = json::solve(&survey, a.explain, &survey.rays(settings));
         doc.fill = fill;
         io.out(&json_with_geometry(&doc, geometry, least));
     } else {
@@ -94,7 +94,7 @@ pub(crate) fn run(a: SolveArgs, settings: &Settings, io: &mut Io) -> Exit {
             head = head.replace(crate::render::geometry::RING_SCOPE, "")
                 + &table::bridge(Some(f), None, None, None);
         }
-        io.out(&(head + &table::solve(&survey, a.explain)));
+        io.out(&(head + &table::solve(&survey, a.explain, &survey.rays(settings))));
     }
     if let Some(why) = no_scene {
         io.err(&format!("no COMPAS file written: {why}\n"));

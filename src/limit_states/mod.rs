@@ -83,6 +83,41 @@ impl Survey {
     }
 }
 
+/// The extreme rays of the mechanism cones of a survey's limit states, each a list of
+/// rates on the mechanism's contacts summing to 1
+/// ([`crate::mechanism::extreme_mechanisms`]): one ray where the cone has dimension 1.
+#[derive(Debug, Clone, Default)]
+pub struct Rays {
+    /// The least limit state's (`Outcome::Limit`), when there is one.
+    pub least: Option<Vec<Vec<f64>>>,
+    /// Each limit state's above η_s, in the order of [`LimitStates::above`].
+    pub above: Vec<Vec<Vec<f64>>>,
+}
+
+impl Survey {
+    /// The extreme rays of every limit state's mechanism cone (for reports: not computed by
+    /// the solve itself, which needs one representative only).
+    pub fn rays(&self, settings: &Settings) -> Rays {
+        let arch = &self.solution.arch;
+        let least = match &self.solution.outcome {
+            Outcome::Limit(ls) => Some(mechanism::extreme_mechanisms(
+                arch,
+                ls.eta,
+                &ls.mechanism,
+                settings,
+            )),
+            _ => None,
+        };
+        let above = self.states.as_ref().map_or(Vec::new(), |s| {
+            s.above
+                .iter()
+                .map(|a| mechanism::extreme_mechanisms(arch, a.t, &a.mechanism, settings))
+                .collect()
+        });
+        Rays { least, above }
+    }
+}
+
 /// [`solve`] and [`search`] together.
 pub fn survey(arch: &Arch, mu: f64, settings: &Settings) -> Result<Survey, InputError> {
     let solution = solve(arch, mu, settings)?;

@@ -195,13 +195,114 @@ fn mechanism_cone(m: &mut Value, arch: &Arch, eta: f64) {
             json!({"rates": rates, "power": dot(ray)})
         })
         .collect();
+    check_listed_rays(m, &rays, &b, &p);
     let o = m.as_object_mut().unwrap();
-    for key in ["rates", "power", "dissipation"] {
+    for key in ["rates", "power", "dissipation", "rays"] {
         o.remove(key);
     }
     o.insert(
         "cone".into(),
         json!({"dimension": dimension, "extreme_rays": cone_rays}),
+    );
+}
+
+/// The document's `rays` (the solver's extreme mechanisms: the vertices of
+/// {λ ≥ 0 : B λ = 0, Σ λ = 1, L_e ≥ 0}) against the cone's circuits found above: where every
+/// circuit has L_e ≥ 0 the two lists are the same set; otherwise each listed ray is in the
+/// cone with L_e ≥ 0, and the circuits with L_e ≥ 0 are all listed. Every ray sums to 1.
+fn check_listed_rays(m: &Value, circuits: &[Vec<f64>], b: &DMatrix<f64>, p: &[f64]) {
+    let listed: Vec<Vec<f64>> = serde_json::from_value(m["rays"].clone()).expect("mechanism.rays");
+    let dot = |r: &[f64]| p.iter().zip(r).map(|(a, b)| a * b).sum::<f64>();
+    let same = |x: &[f64], y: &[f64]| x.iter().zip(y).all(|(a, b)| (a - b).abs() < 1e-9);
+    assert!(
+        listed.len() >= m["dof"].as_u64().unwrap() as usize,
+        "{listed:?}"
+    );
+    for r in &listed {
+        assert!((r.iter().sum::<f64>() - 1.0).abs() < 1e-12, "{r:?}");
+        assert!(r.iter().all(|&v| v >= 0.0), "{r:?}");
+        assert!((b * DVector::from_column_slice(r)).amax() < 1e-12, "{r:?}");
+        assert!(dot(r) >= -1e-12, "a listed ray of negative power: {r:?}");
+    }
+    let admissible: Vec<&Vec<f64>> = circuits.iter().filter(|c| dot(c) >= -1e-12).collect();
+    for c in &admissible {
+        assert!(
+            listed.iter().any(|r| same(r, c)),
+            "circuit {c:?} not listed in {listed:?}"
+        );
+    }
+    if admissible.len() == circuits.len() {
+        assert_eq!(
+            listed.len(),
+            circuits.len(),
+            "{listed:?} against {circuits:?}"
+        );
+    }
+}
+
+/// The arch a `solve --json` document describes (`arch`).
+fn arch_of(a: &Value) -> Arch {
+    let weight = match a["weight"].as_str().unwrap() {
+        "centroid" => WeightModel::Centroid,
+        _ => WeightModel::Centreline,
+    };
+    let arch = Arch::new(
+        a["beta_right"].as_f64().unwrap(),
+        a["beta_left"].as_f64().unwrap(),
+        weight,
+    )
+    .unwrap();
+    match a["joint_angles"].as_array() {
+        Some(j) => {
+            let angles: Vec<f64> = j.iter().map(|x| x.as_f64().unwrap()).collect();
+            arch.with_joints(&angles).unwrap()
+        }
+        None => arch,
+    }
+}
+
+/// `mechanism.rays` on arches whose cones have one to four dimensions: discrete symmetric
+/// arches (two mirror rays), the vertical branch at μ_ms (cone of dimension 4), a
+/// non-unique case, segmental and horseshoe openings at finite and infinite μ; each limit
+/// state's rays checked against the cone's circuits ([`check_listed_rays`]).
+#[test]
+fn solve_lists_the_extreme_rays_of_every_cone() {
+    let cases: &[&[&str]] = &[
+        &["--alpha", "0", "--blocks", "20", "--mu", "0.6"],
+        &["--alpha", "0", "--mu", "ms"],
+        &["--alpha", "0.8", "--mu", "1.1540692474221415"],
+        &["--alpha", "-0.6", "--blocks", "9", "--mu", "0.5"],
+        &["--alpha", "1", "--blocks", "30", "--mu", "inf"],
+        &[
+            "--alpha", "0.3", "--blocks", "15", "--weight", "centroid", "--mu", "0.9",
+        ],
+        &[
+            "--beta-right",
+            "-0.3",
+            "--beta-left",
+            "3.2",
+            "--blocks",
+            "12",
+            "--mu",
+            "0.7",
+        ],
+    ];
+    let mut dims = std::collections::BTreeSet::new();
+    for flags in cases {
+        let mut args = vec!["solve"];
+        args.extend_from_slice(flags);
+        let (mut v, code) = json_of(&args);
+        assert_eq!(code, 0, "{flags:?}");
+        let arch = arch_of(&v["arch"]);
+        for ls in v["limit_states"].as_array_mut().unwrap() {
+            let eta = ls["eta"].as_f64().unwrap();
+            dims.insert(ls["mechanism"]["dof"].as_u64().unwrap());
+            mechanism_cone(&mut ls["mechanism"], &arch, eta);
+        }
+    }
+    assert!(
+        dims.contains(&1) && dims.contains(&2) && dims.contains(&4),
+        "{dims:?}"
     );
 }
 

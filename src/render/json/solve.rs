@@ -1,10 +1,10 @@
 //! The `solve --json` document.
 
 use super::common::{status, ArchJson, JSON_VERSION};
-use super::state::{mechanism_json, reactions, MechanismJson, Reactions};
+use super::state::{mechanism_with_rays, reactions, MechanismJson, Reactions};
 use crate::contact::Contact;
 use crate::limit::{Candidate, LeastLimitState, Outcome};
-use crate::limit_states::{LimitStates, Survey};
+use crate::limit_states::{LimitStates, Rays, Survey};
 use serde::Serialize;
 
 #[derive(Debug, Serialize)]
@@ -131,12 +131,14 @@ struct SearchJson {
     reason: Option<String>,
 }
 
-fn limit_parts(ls: &LeastLimitState) -> (Vec<Contact>, Reactions, MechanismJson, Checks) {
-    let m = &ls.mechanism;
+fn limit_parts(
+    ls: &LeastLimitState,
+    rays: &[Vec<f64>],
+) -> (Vec<Contact>, Reactions, MechanismJson, Checks) {
     (
         ls.pattern.clone(),
         reactions(&ls.x),
-        mechanism_json(m),
+        mechanism_with_rays(&ls.mechanism, rays),
         Checks {
             eta_static: ls.eta_static,
             newton_residual: ls.newton_residual,
@@ -147,8 +149,9 @@ fn limit_parts(ls: &LeastLimitState) -> (Vec<Contact>, Reactions, MechanismJson,
 }
 
 /// Builds the `solve --json` document from the solution and the search for every limit
-/// state; `explain` adds the enumeration log.
-pub fn solve(survey: &Survey, explain: bool) -> SolveJson {
+/// state (`rays`: the extreme rays of each mechanism, [`Survey::rays`]); `explain` adds the
+/// enumeration log.
+pub fn solve(survey: &Survey, explain: bool, rays: &Rays) -> SolveJson {
     let sol = &survey.solution;
     let mut doc = SolveJson {
         version: JSON_VERSION,
@@ -176,9 +179,9 @@ pub fn solve(survey: &Survey, explain: bool) -> SolveJson {
         fill: None,
         thickness_scan: sol.scan.as_ref().map(scan_json),
     };
-    with_outcome(&mut doc, &sol.outcome);
+    with_outcome(&mut doc, &sol.outcome, rays);
     match &survey.states {
-        Ok(s) => with_limit_states(&mut doc, survey, s),
+        Ok(s) => with_limit_states(&mut doc, survey, s, rays),
         Err(reason) => {
             doc.search = Some(SearchJson {
                 complete: false,
@@ -214,10 +217,10 @@ pub fn solve(survey: &Survey, explain: bool) -> SolveJson {
 
 /// What the solver found at η_s: the limit state, or the message and the numbers that say
 /// why there is none.
-fn with_outcome(doc: &mut SolveJson, outcome: &Outcome) {
+fn with_outcome(doc: &mut SolveJson, outcome: &Outcome, rays: &Rays) {
     match outcome {
         Outcome::Limit(ls) => {
-            let (p, r, m, c) = limit_parts(ls);
+            let (p, r, m, c) = limit_parts(ls, rays.least.as_deref().unwrap_or_default());
             doc.eta = Some(ls.eta);
             doc.mode = Some(ls.mode.name());
             doc.mode_standard = Some(ls.mode.is_standard());
@@ -246,8 +249,10 @@ fn with_outcome(doc: &mut SolveJson, outcome: &Outcome) {
 }
 
 /// Every limit state with η in [η_s, 2), found by a completed search: the decided answer.
-fn with_limit_states(doc: &mut SolveJson, survey: &Survey, s: &LimitStates) {
+fn with_limit_states(doc: &mut SolveJson, survey: &Survey, s: &LimitStates, rays: &Rays) {
     let sol = &survey.solution;
+    let least_rays = rays.least.as_deref().unwrap_or_default();
+    let above_rays = |k: usize| rays.above.get(k).map_or(&[][..], Vec::as_slice);
     // η_s is known exactly and every limit state above it was searched: a decided
     // answer even when the least state carries no mechanism. An arch that stands at
     // every η > 0 keeps its status (there is no least thickness; η_s = 0 is an
@@ -268,15 +273,15 @@ fn with_limit_states(doc: &mut SolveJson, survey: &Survey, s: &LimitStates) {
             mode: ls.mode.name(),
             pattern: ls.pattern.clone(),
             reactions: reactions(&ls.x),
-            mechanism: mechanism_json(&ls.mechanism),
+            mechanism: mechanism_with_rays(&ls.mechanism, least_rays),
         });
     }
-    all.extend(s.above.iter().map(|a| LimitStateJson {
+    all.extend(s.above.iter().enumerate().map(|(k, a)| LimitStateJson {
         eta: a.t,
         mode: a.mode.name(),
         pattern: a.pattern.clone(),
         reactions: reactions(&a.x),
-        mechanism: mechanism_json(&a.mechanism),
+        mechanism: mechanism_with_rays(&a.mechanism, above_rays(k)),
     }));
     // the top-level mode, pattern, reactions and mechanism are the least limit
     // state's (none when there is none)
@@ -286,7 +291,7 @@ fn with_limit_states(doc: &mut SolveJson, survey: &Survey, s: &LimitStates) {
         doc.mode_standard = least.map(|a| a.mode.is_standard());
         doc.pattern = least.map(|a| a.pattern.clone());
         doc.reactions = least.map(|a| reactions(&a.x));
-        doc.mechanism = least.map(|a| mechanism_json(&a.mechanism));
+        doc.mechanism = least.map(|a| mechanism_with_rays(&a.mechanism, above_rays(0)));
         doc.checks = None;
     }
     doc.limit_states = Some(all);

@@ -25,6 +25,11 @@ pub(crate) struct MechanismJson {
     symmetric: bool,
     compatibility_residual: f64,
     complementarity_residual: f64,
+    /// The extreme rays of the mechanism cone (rates on the contacts of `rates`, in their
+    /// order, each summing to 1): one when `dof` is 1, every vertex of the cone's section
+    /// otherwise (`solve` only; absent elsewhere).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    rays: Option<Vec<Vec<f64>>>,
 }
 
 pub(crate) fn mechanism_json(m: &crate::mechanism::Mechanism) -> MechanismJson {
@@ -45,6 +50,19 @@ pub(crate) fn mechanism_json(m: &crate::mechanism::Mechanism) -> MechanismJson {
         symmetric: m.symmetric,
         compatibility_residual: m.compatibility,
         complementarity_residual: m.complementarity,
+        rays: None,
+    }
+}
+
+/// [`mechanism_json`] with the extreme rays of the mechanism's cone
+/// ([`crate::limit_states::Rays`]).
+pub(crate) fn mechanism_with_rays(
+    m: &crate::mechanism::Mechanism,
+    rays: &[Vec<f64>],
+) -> MechanismJson {
+    MechanismJson {
+        rays: Some(rays.to_vec()),
+        ..mechanism_json(m)
     }
 }
 

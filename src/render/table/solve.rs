@@ -3,13 +3,13 @@
 
 use super::format::{describe_arch, eta_digits, fmt_mu, pattern_table, short, sig};
 use crate::limit::{LeastLimitState, Outcome, Solution};
-use crate::limit_states::{LimitStates, Survey};
+use crate::limit_states::{LimitStates, Rays, Survey};
 use crate::undecided::Undecided;
 use std::fmt::Write;
 
 /// The human-readable answer of `solve`: η_s, the limit state at η_s in detail when there
 /// is one, and every limit state found above η_s.
-pub fn solve(survey: &Survey, explain: bool) -> String {
+pub fn solve(survey: &Survey, explain: bool, rays: &Rays) -> String {
     let sol = &survey.solution;
     let mut s = String::new();
     let _ = writeln!(s, "{}", describe_arch(&sol.arch));
@@ -22,7 +22,7 @@ pub fn solve(survey: &Survey, explain: bool) -> String {
     if let Some(scan) = &sol.scan {
         thickness_scan(&mut s, scan);
     }
-    least_thickness(&mut s, survey);
+    least_thickness(&mut s, survey, rays);
     s.push_str(&limit_states(survey));
     if explain {
         patterns_tried(&mut s, sol);
@@ -65,10 +65,10 @@ fn thickness_scan(s: &mut String, scan: &crate::limit::filled::ThicknessScan) {
 }
 
 /// η_s and the limit state there, or why there is none.
-fn least_thickness(s: &mut String, survey: &Survey) {
+fn least_thickness(s: &mut String, survey: &Survey, rays: &Rays) {
     let sol = &survey.solution;
     match (&sol.outcome, &survey.states) {
-        (Outcome::Limit(ls), states) => least_limit_state(s, sol, ls, states),
+        (Outcome::Limit(ls), states) => least_limit_state(s, sol, ls, states, rays),
         (
             Outcome::Unresolved {
                 least_static: Some((eta, _)),
@@ -114,6 +114,7 @@ fn least_limit_state(
     sol: &Solution,
     ls: &LeastLimitState,
     states: &Result<LimitStates, Undecided>,
+    rays: &Rays,
 ) {
     let _ = writeln!(
         s,
@@ -139,7 +140,7 @@ fn least_limit_state(
             "note                the least admissible state carries no mechanism without dilatancy\n                    (non-associative gap): the least limit state found lies above it"
         );
     } else {
-        s.push_str(&limit_detail(sol, ls));
+        s.push_str(&limit_detail(sol, ls, rays));
     }
 }
 
@@ -175,8 +176,23 @@ fn patterns_tried(s: &mut String, sol: &Solution) {
     }
 }
 
+/// The extreme rays of a mechanism cone of dimension > 1, one line each: the rates on the
+/// rows of the table above, in its order (each ray sums to 1).
+fn extreme_rays(s: &mut String, rays: &Rays) {
+    let rays = rays.least.as_deref().unwrap_or_default();
+    let _ = writeln!(
+        s,
+        "  extreme rays of the cone ({}; `plot arch --mechanism K` draws ray K), rates on the rows above:",
+        rays.len()
+    );
+    for (k, r) in rays.iter().enumerate() {
+        let rates: Vec<String> = r.iter().map(|v| format!("{v:.6}")).collect();
+        let _ = writeln!(s, "  {:>3}  {}", k + 1, rates.join("  "));
+    }
+}
+
 /// The limit state at η_s in detail: pattern, reactions, mechanism, checks.
-fn limit_detail(sol: &Solution, ls: &LeastLimitState) -> String {
+fn limit_detail(sol: &Solution, ls: &LeastLimitState, rays: &Rays) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
@@ -204,6 +220,9 @@ fn limit_detail(sol: &Solution, ls: &LeastLimitState) -> String {
         if m.symmetric { "symmetric" } else { "interior" }
     );
     s.push_str(&pattern_table(&sol.arch, &m.contacts, Some(&m.rates)));
+    if m.dof > 1 {
+        extreme_rays(&mut s, rays);
+    }
     let _ = writeln!(
         s,
         "  external power L_e = {:.3e}   frictional dissipation = {:.3e}",
