@@ -49,6 +49,7 @@
 pub mod admissibility;
 pub mod arch;
 pub mod assess;
+pub mod atlas;
 pub mod bridge;
 pub mod certificate;
 #[cfg(feature = "cli")]

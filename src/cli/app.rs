@@ -4,7 +4,7 @@
 use super::io::{emit, message_of, to_json, Exit, Io};
 use super::report::{ReportArgs, Runner};
 use super::serve_args::ServeArgs;
-use super::{assess, certify, curve, load, modes, plot, report, solve};
+use super::{assess, atlas, certify, curve, load, modes, plot, report, solve};
 use crate::render::json;
 use crate::settings::Settings;
 use clap::{Parser, Subcommand};
@@ -95,6 +95,11 @@ pub(super) enum Command {
         after_help = "Example:\n  arch-enum curve --alpha 0 --points 10\n  arch-enum curve --alpha 1 --mu-min 1 --mu-max 100 --json"
     )]
     Curve(curve::CurveArgs),
+    /// The atlas of uniqueness over symmetric arches: where the least thickness carries the only limit state, where others lie above it, where it carries none, and where no equilibrium exists, over openings alpha and friction mu from mu_ms(alpha).
+    #[command(after_help = "Example:
+  arch-enum atlas --alpha-min 0.5 --alpha-max 0.9 --mu-max-factor 1.5
+  arch-enum atlas --blocks 24 --json")]
+    Atlas(atlas::AtlasArgs),
     /// The explorer: a local web page (sliders, the eta-mu diagram, the arch at its limit state) and a JSON API giving the same documents as --json, on 127.0.0.1.
     #[command(
         after_help = "Example:\n  arch-enum serve --open\n  arch-enum serve --port 0   (any free port; the URL is the first line printed)\n  curl 'http://127.0.0.1:8765/api/solve?alpha=0&mu=0.35'"
@@ -143,6 +148,7 @@ where
         Command::Certify(a) => a.json,
         Command::Verify(a) => a.json,
         Command::Curve(a) => a.json,
+        Command::Atlas(a) => a.json,
         Command::Assess(a) => a.json,
         Command::Load(a) => a.json,
         Command::LoadCurve(a) => a.json,
@@ -156,6 +162,7 @@ where
         Command::Verify(a) => certify::run_verify(a, &mut io),
         Command::Plot { figure } => plot::run(figure, &settings, &mut io),
         Command::Curve(a) => curve::run(a, &settings, &mut io),
+        Command::Atlas(a) => atlas::run(a, &settings, &mut io),
         Command::Assess(a) => assess::run(*a, &settings, &mut io),
         Command::Load(a) => load::run(*a, &settings, &mut io),
         Command::LoadCurve(a) => load::run_curve(*a, &settings, &mut io),

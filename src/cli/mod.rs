@@ -11,6 +11,7 @@
 mod app;
 mod arch_args;
 mod assess;
+mod atlas;
 mod bridge_args;
 mod certify;
 mod curve;

@@ -1,6 +1,7 @@
 //! The one integration-test binary (one link on 2 cores); modules by subject.
 
 mod assess;
+mod atlas;
 mod bridge;
 mod bridge_certificates;
 mod certificates;

@@ -3,6 +3,7 @@
 //! Angles in radians; `null` stands for +∞.
 
 mod assess;
+mod atlas;
 mod bridge;
 mod common;
 mod curve;
@@ -13,6 +14,7 @@ mod solve;
 mod state;
 
 pub use assess::{assess, AssessJson};
+pub use atlas::{atlas, AtlasJson};
 pub use bridge::{bridge, status as influence_status, BridgeJson, FillJson, VehicleJson, SCOPE};
 pub use common::{status, ArchJson, ErrorJson, JSON_VERSION};
 pub use curve::{curve, CurveJson};

@@ -2,6 +2,7 @@
 //! formats of numbers and patterns they share (`format`).
 
 mod assess;
+mod atlas;
 mod bridge;
 mod corners;
 mod curve;
@@ -12,6 +13,7 @@ mod modes;
 mod solve;
 
 pub use assess::assess;
+pub use atlas::atlas;
 pub use bridge::bridge;
 pub use corners::{corner_rows, CORNER_HEADER};
 pub use curve::curve;

@@ -1,0 +1,66 @@
+//! The atlas of uniqueness: over openings α ∈ [α_min, α_max] of symmetric arches and
+//! friction coefficients μ ∈ [μ_ms(α), K μ_ms(α)], where the least thickness carries the only
+//! limit state, where other limit states lie above it, where it carries none, and (below
+//! μ_ms) where no equilibrium exists.
+//!
+//! Each α is a column: μ_ms(α) from [`friction_limit`], then samples at μ = μ_ms (1 + d) with
+//! d geometric from 10⁻⁶ to K − 1 (dense near μ_ms, where the non-unique band lies), each
+//! classified by the complete limit-state search ([`survey`]); between two samples of
+//! different kinds the change is located by bisection in μ down to neighbouring floats (a
+//! sample of a third kind in between splits the bracket). Between columns the regions are
+//! joined by their boundaries' straight segments where both columns hold the same kinds in
+//! the same order; elsewhere each column's runs hold up to the middle of the strip. The
+//! boundary points are located to the last float of μ at their α, not solved from their
+//! defining conditions (`exact: false`), and not certified.
+
+mod classify;
+mod column;
+mod regions;
+
+pub use classify::{classify, Classified, Kind};
+pub use column::{BoundaryPoint, Column, Rectangle, Sample, CURVE_STEPS, FIRST_OFFSET};
+
+use crate::arch::InputError;
+use crate::settings::Settings;
+use crate::threads;
+
+/// The whole atlas.
+#[derive(Debug, Clone)]
+pub struct Atlas {
+    /// What it covers.
+    pub rectangle: Rectangle,
+    /// One per opening, ascending.
+    pub columns: Vec<Column>,
+    /// The regions as polygons of (α, μ) vertices (closed: the last vertex joins the first).
+    pub regions: Vec<(Kind, Vec<[f64; 2]>)>,
+}
+
+/// The atlas over `rect` on `threads` threads (columns in parallel); `progress(done,
+/// total)` after each column.
+pub fn atlas(
+    rect: &Rectangle,
+    settings: &Settings,
+    threads: usize,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<Atlas, InputError> {
+    rect.check()?;
+    let alphas = rect.alphas();
+    for &a in &alphas {
+        rect.arch(a)?;
+    }
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    let columns = threads::map(&alphas, threads, |k, &alpha| {
+        let c = column::column(rect, (alpha, alphas.get(k + 1).copied()), settings);
+        let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+        progress(n, alphas.len());
+        c
+    })
+    .into_iter()
+    .collect::<Result<Vec<Column>, InputError>>()?;
+    let regions = regions::regions(&columns);
+    Ok(Atlas {
+        rectangle: *rect,
+        columns,
+        regions,
+    })
+}

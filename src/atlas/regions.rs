@@ -1,0 +1,100 @@
+//! The regions of the atlas as polygons of (α, μ): consecutive columns holding the same kinds
+//! in the same order are joined run by run (the runs' ends, the located boundaries, joined by
+//! straight segments); where the kinds of two neighbouring columns differ, each column's
+//! runs hold up to the middle of the strip between them. The lowest run starts on the μ_ms
+//! curve, which the polygons follow through its points between the columns; below it, down
+//! to μ = 0, lies the region without equilibrium.
+
+use super::classify::Kind;
+use super::column::Column;
+
+/// A polygon of (α, μ) vertices, closed (the last vertex joins the first).
+type Polygon = Vec<[f64; 2]>;
+
+/// Two openings closer than this are one (a strip's middle computed two ways).
+const SAME_ALPHA: f64 = 1e-12;
+
+/// Every region of `columns` (ascending in α; those without μ_ms left out).
+pub(super) fn regions(columns: &[Column]) -> Vec<(Kind, Polygon)> {
+    let cols: Vec<&Column> = columns.iter().filter(|c| c.mu_ms.is_some()).collect();
+    if cols.is_empty() {
+        return Vec::new();
+    }
+    let curve = mu_ms_curve(&cols);
+    let signature = |c: &Column| c.runs.iter().map(|r| r.0).collect::<Vec<_>>();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < cols.len() {
+        let mut j = i;
+        while j + 1 < cols.len() && signature(cols[j + 1]) == signature(cols[i]) {
+            j += 1;
+        }
+        let left = if i > 0 {
+            0.5 * (cols[i - 1].alpha + cols[i].alpha)
+        } else {
+            cols[i].alpha
+        };
+        let right = if j + 1 < cols.len() {
+            0.5 * (cols[j].alpha + cols[j + 1].alpha)
+        } else {
+            cols[j].alpha
+        };
+        for (r, run) in cols[i].runs.iter().enumerate() {
+            let Some(kind) = run.0 else {
+                continue; // not decided: left out of every region
+            };
+            let group = &cols[i..=j];
+            let lower = if r == 0 {
+                on_curve(&curve, left, right)
+            } else {
+                edge(group, left, right, |c| c.runs[r].1)
+            };
+            let mut p = lower;
+            p.extend(edge(group, left, right, |c| c.runs[r].2).into_iter().rev());
+            p.dedup();
+            out.push((kind, p));
+        }
+        i = j + 1;
+    }
+    let mut below = vec![[cols[0].alpha, 0.0], [cols[cols.len() - 1].alpha, 0.0]];
+    below.extend(curve.iter().rev());
+    below.dedup();
+    out.push((Kind::NoEquilibrium, below));
+    out
+}
+
+/// The μ_ms curve through the columns and the points between them, ascending in α.
+fn mu_ms_curve(cols: &[&Column]) -> Vec<[f64; 2]> {
+    cols.iter()
+        .flat_map(|c| {
+            std::iter::once([c.alpha, c.mu_ms.expect("columns with mu_ms")])
+                .chain(c.mu_ms_between.iter().copied())
+        })
+        .collect()
+}
+
+/// The curve's points from α = `left` to `right`, ends included (a strip's middle is one of
+/// them when the steps per strip are even; else the nearest point holds to it).
+fn on_curve(curve: &[[f64; 2]], left: f64, right: f64) -> Polygon {
+    let inner: Vec<[f64; 2]> = curve
+        .iter()
+        .filter(|q| q[0] >= left - SAME_ALPHA && q[0] <= right + SAME_ALPHA)
+        .copied()
+        .collect();
+    let (first, last) = (inner[0], inner[inner.len() - 1]);
+    let mut p = vec![[left, first[1]]];
+    p.extend(inner);
+    p.push([right, last[1]]);
+    p.dedup_by(|a, b| (a[0] - b[0]).abs() <= SAME_ALPHA && a[1] == b[1]);
+    p
+}
+
+/// One edge of a group's run, left to right: `mu` at each column, held flat to `left` and
+/// `right`.
+fn edge(group: &[&Column], left: f64, right: f64, mu: impl Fn(&Column) -> f64) -> Polygon {
+    let mut p = vec![[left, mu(group[0])]];
+    p.extend(group.iter().map(|c| [c.alpha, mu(c)]));
+    p.push([right, mu(group[group.len() - 1])]);
+    p.dedup();
+    p
+}

@@ -1,0 +1,69 @@
+//! `arch-enum atlas`: where the least thickness carries the only limit state, over a
+//! rectangle of openings and friction coefficients.
+
+use super::arch_args::WeightArg;
+use super::io::{to_json, Exit, Io};
+use super::threads_arg::ThreadsArg;
+use crate::atlas::{atlas, Rectangle};
+use crate::render::{json, table};
+use crate::settings::Settings;
+use clap::Args;
+
+#[derive(Args, Debug)]
+pub(crate) struct AtlasArgs {
+    /// The least opening alpha of the symmetric arches (radians, -pi/2 < alpha < pi/2).
+    #[arg(long, default_value_t = -1.4, allow_hyphen_values = true)]
+    alpha_min: f64,
+    /// The largest opening (radians, above --alpha-min).
+    #[arg(long, default_value_t = 1.2, allow_hyphen_values = true)]
+    alpha_max: f64,
+    /// mu runs from mu_ms(alpha) to this times mu_ms(alpha) (1.00001 to 1e6).
+    #[arg(long, default_value_t = 10.0, allow_hyphen_values = true)]
+    mu_max_factor: f64,
+    /// Where self-weight acts.
+    #[arg(long, value_enum, default_value = "centreline")]
+    weight: WeightArg,
+    /// N equal voussoirs (1 to 100000; default: continuous joints).
+    #[arg(long, allow_hyphen_values = true)]
+    blocks: Option<usize>,
+    /// Openings sampled, evenly spaced (2 to 2000).
+    #[arg(long, default_value_t = 53, allow_hyphen_values = true)]
+    columns: usize,
+    /// Friction coefficients sampled per opening, geometric in mu/mu_ms - 1 from 1e-6 (2 to 2000).
+    #[arg(long, default_value_t = 40, allow_hyphen_values = true)]
+    samples: usize,
+    #[command(flatten)]
+    threads: ThreadsArg,
+    /// Print one JSON document instead of tables.
+    #[arg(long)]
+    pub(crate) json: bool,
+}
+
+pub(crate) fn run(a: AtlasArgs, settings: &Settings, io: &mut Io) -> Exit {
+    let rect = Rectangle {
+        alpha_min: a.alpha_min,
+        alpha_max: a.alpha_max,
+        mu_max_factor: a.mu_max_factor,
+        weight: a.weight.into(),
+        blocks: a.blocks,
+        columns: a.columns,
+        samples: a.samples,
+    };
+    let threads = match a.threads.count() {
+        Ok(t) => t,
+        Err(e) => return io.bad_input(&e),
+    };
+    let bar = super::progress::Progress::new("atlas");
+    let at = match atlas(&rect, settings, threads, &|done, total| {
+        bar.update(done, total)
+    }) {
+        Ok(at) => at,
+        Err(e) => return io.bad_input(&e),
+    };
+    if a.json {
+        io.out(&to_json(&json::atlas(&at)));
+    } else {
+        io.out(&table::atlas(&at));
+    }
+    Exit::Answered
+}

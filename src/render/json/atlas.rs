@@ -1,0 +1,198 @@
+//! The `atlas --json` document.
+
+use super::common::JSON_VERSION;
+use crate::atlas::{Atlas, Column, Kind};
+use serde::Serialize;
+use std::collections::BTreeMap;
+
+#[derive(Debug, Serialize)]
+struct RectangleJson {
+    alpha_min: f64,
+    alpha_max: f64,
+    mu_max_factor: f64,
+    columns: usize,
+    samples: usize,
+}
+
+#[derive(Debug, Serialize)]
+struct RegionJson {
+    kind: &'static str,
+    polygon: Vec<[f64; 2]>,
+}
+
+#[derive(Debug, Serialize)]
+struct PointJson {
+    alpha: f64,
+    mu: f64,
+    /// The last μ of the lower kind and the first of the upper one.
+    bracket: [f64; 2],
+    /// Whether the bracket's ends are neighbouring floats.
+    tight: bool,
+    /// Why the bisection stopped short of neighbouring floats.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    stopped: Option<String>,
+    exact: bool,
+    certified: bool,
+}
+
+#[derive(Debug, Serialize)]
+struct BoundaryJson {
+    between: [&'static str; 2],
+    points: Vec<PointJson>,
+}
+
+#[derive(Debug, Serialize)]
+struct RunJson {
+    kind: &'static str,
+    mu_from: f64,
+    mu_to: f64,
+}
+
+#[derive(Debug, Serialize)]
+struct SampleJson {
+    mu: f64,
+    kind: &'static str,
+    /// The η of every limit state (η_s first where it carries one).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    etas: Option<Vec<f64>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    reason: Option<String>,
+}
+
+#[derive(Debug, Serialize)]
+struct ColumnJson {
+    alpha: f64,
+    mu_ms: Option<f64>,
+    mu_ms_exact: bool,
+    runs: Vec<RunJson>,
+    samples: Vec<SampleJson>,
+}
+
+/// The `atlas --json` document.
+#[derive(Debug, Serialize)]
+pub struct AtlasJson {
+    version: u32,
+    status: &'static str,
+    weight: &'static str,
+    blocks: Option<usize>,
+    rectangle: RectangleJson,
+    regions: Vec<RegionJson>,
+    boundaries: Vec<BoundaryJson>,
+    /// Samples the search did not decide (their runs are in no region).
+    undecided: usize,
+    columns: Vec<ColumnJson>,
+}
+
+/// The name of a run's or a sample's kind (`undecided` where the search did not decide).
+fn name(k: Option<Kind>) -> &'static str {
+    k.map_or("undecided", Kind::name)
+}
+
+/// The changes of kind of every column, grouped by the pair of kinds (in the order met,
+/// lower μ first), the μ_ms curve (no equilibrium below) first.
+fn boundaries(columns: &[Column]) -> Vec<BoundaryJson> {
+    let mut by_pair: BTreeMap<[Kind; 2], Vec<PointJson>> = BTreeMap::new();
+    for c in columns {
+        if let (Some(mu_ms), Some(first)) = (c.mu_ms, c.runs.first().and_then(|r| r.0)) {
+            by_pair
+                .entry([Kind::NoEquilibrium, first])
+                .or_default()
+                .push(PointJson {
+                    alpha: c.alpha,
+                    mu: mu_ms,
+                    bracket: [mu_ms, mu_ms],
+                    tight: true,
+                    stopped: None,
+                    exact: c.mu_ms_exact,
+                    certified: false,
+                });
+        }
+        for p in &c.boundaries {
+            by_pair.entry(p.between).or_default().push(PointJson {
+                alpha: p.alpha,
+                mu: p.mu(),
+                bracket: [p.bracket.0, p.bracket.1],
+                tight: p.tight,
+                stopped: p.stopped.clone(),
+                exact: false,
+                certified: false,
+            });
+        }
+    }
+    by_pair
+        .into_iter()
+        .map(|(k, points)| BoundaryJson {
+            between: [k[0].name(), k[1].name()],
+            points,
+        })
+        .collect()
+}
+
+fn column(c: &Column) -> ColumnJson {
+    ColumnJson {
+        alpha: c.alpha,
+        mu_ms: c.mu_ms,
+        mu_ms_exact: c.mu_ms_exact,
+        runs: c
+            .runs
+            .iter()
+            .map(|r| RunJson {
+                kind: name(r.0),
+                mu_from: r.1,
+                mu_to: r.2,
+            })
+            .collect(),
+        samples: c
+            .samples
+            .iter()
+            .map(|s| match &s.kind {
+                Ok((k, etas)) => SampleJson {
+                    mu: s.mu,
+                    kind: k.name(),
+                    etas: Some(etas.clone()),
+                    reason: None,
+                },
+                Err(e) => SampleJson {
+                    mu: s.mu,
+                    kind: "undecided",
+                    etas: None,
+                    reason: Some(e.to_string()),
+                },
+            })
+            .collect(),
+    }
+}
+
+/// Builds the `atlas --json` document.
+pub fn atlas(a: &Atlas) -> AtlasJson {
+    let r = &a.rectangle;
+    AtlasJson {
+        version: JSON_VERSION,
+        status: "ok",
+        weight: r.weight.name(),
+        blocks: r.blocks,
+        rectangle: RectangleJson {
+            alpha_min: r.alpha_min,
+            alpha_max: r.alpha_max,
+            mu_max_factor: r.mu_max_factor,
+            columns: r.columns,
+            samples: r.samples,
+        },
+        regions: a
+            .regions
+            .iter()
+            .map(|(k, p)| RegionJson {
+                kind: k.name(),
+                polygon: p.clone(),
+            })
+            .collect(),
+        boundaries: boundaries(&a.columns),
+        undecided: a
+            .columns
+            .iter()
+            .flat_map(|c| &c.samples)
+            .filter(|s| s.kind.is_err())
+            .count(),
+        columns: a.columns.iter().map(column).collect(),
+    }
+}

@@ -1,0 +1,260 @@
+//! `arch-enum atlas`: the JSON contract, and the regions against `solve` at random held-out
+//! points away from the boundaries (a point-in-polygon test on the document's polygons
+//! against the limit-state search run afresh at that point).
+
+use crate::cli::json_of;
+use crate::search_reference::Rng;
+use arch_enum::limit_states::survey;
+use arch_enum::{least_friction, Arch, Outcome, Settings, WeightModel};
+use serde_json::Value;
+
+/// Even-odd ray casting: whether (a, m) lies inside the closed polygon.
+fn inside(poly: &[[f64; 2]], a: f64, m: f64) -> bool {
+    let mut c = false;
+    let n = poly.len();
+    for i in 0..n {
+        let (p, q) = (poly[i], poly[(i + 1) % n]);
+        if (p[1] > m) != (q[1] > m) {
+            let x = p[0] + (m - p[1]) * (q[0] - p[0]) / (q[1] - p[1]);
+            if a < x {
+                c = !c;
+            }
+        }
+    }
+    c
+}
+
+/// The kinds of the regions holding (a, m) (one where the regions tile the plane).
+fn kinds_at(regions: &[(String, Vec<[f64; 2]>)], a: f64, m: f64) -> Vec<String> {
+    regions
+        .iter()
+        .filter(|(_, p)| inside(p, a, m))
+        .map(|(k, _)| k.clone())
+        .collect()
+}
+
+/// The kind `solve` gives at (arch, μ), read from the survey's own fields (`None`: the search
+/// did not decide).
+fn solve_kind(arch: &Arch, mu: f64) -> Option<&'static str> {
+    let sv = survey(arch, mu, &Settings::default()).unwrap();
+    if matches!(sv.solution.outcome, Outcome::NoEquilibrium { .. }) {
+        return Some("no_equilibrium");
+    }
+    let s = sv.states.as_ref().ok()?;
+    Some(if !s.mechanism_at_eta_s || !s.attained {
+        "no_mechanism_at_eta"
+    } else if sv.unique()? {
+        "unique"
+    } else {
+        "non_unique"
+    })
+}
+
+fn regions_of(doc: &Value) -> Vec<(String, Vec<[f64; 2]>)> {
+    doc["regions"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| {
+            let poly: Vec<[f64; 2]> = serde_json::from_value(r["polygon"].clone()).unwrap();
+            assert!(poly.len() >= 3, "a polygon of {} vertices", poly.len());
+            (r["kind"].as_str().unwrap().to_string(), poly)
+        })
+        .collect()
+}
+
+/// Random (α, μ) in the rectangle, μ = μ_ms (1 + d) with d log-uniform in [1e-5, K − 1] (and a
+/// fifth of them below μ_ms, d in [−0.5, −0.05]); a point is compared only where the regions
+/// give one kind at it and at its neighbours (± half a column in α, d scaled by 0.7 and
+/// 1.3): away from every boundary.
+fn agrees_with_solve(
+    flags: &[&str],
+    blocks: Option<usize>,
+    (a0, a1, k): (f64, f64, f64),
+    want: usize,
+) {
+    let mut args = vec!["atlas"];
+    args.extend_from_slice(flags);
+    let (doc, code) = json_of(&args);
+    assert_eq!(code, 0, "{doc}");
+    let regions = regions_of(&doc);
+    let columns = doc["rectangle"]["columns"].as_u64().unwrap() as f64;
+    let half = 0.5 * (a1 - a0) / (columns - 1.0);
+    let mut rng = Rng(0x9e37_79b9_7f4a_7c15 ^ blocks.unwrap_or(0) as u64);
+    let (mut compared, mut near, mut undecided) = (0, 0, 0);
+    let mut seen = std::collections::BTreeSet::new();
+    while compared < want {
+        assert!(
+            compared + near + undecided < 20 * want,
+            "too few points away from the boundaries"
+        );
+        let alpha = a0 + (a1 - a0) * rng.next();
+        let arch_at = |a: f64| {
+            let arch = Arch::symmetric(a, WeightModel::Centreline).unwrap();
+            blocks.map_or(arch.clone(), |n| arch.with_blocks(n).unwrap())
+        };
+        let ms_at = |a: f64| {
+            least_friction(&arch_at(a), &Settings::default())
+                .unwrap()
+                .unwrap()
+        };
+        let (arch, ms) = (arch_at(alpha), ms_at(alpha));
+        // d = mu/mu_ms - 1: negative below mu_ms
+        let d = if rng.next() < 0.2 {
+            -0.5 + 0.45 * rng.next()
+        } else {
+            1e-5 * ((k - 1.0) / 1e-5).powf(rng.next())
+        };
+        let mu = ms * (1.0 + d);
+        let here = kinds_at(&regions, alpha, mu);
+        // the neighbours: half a column either side, d scaled by 0.7 and 1.3 (the samples'
+        // spacing is geometric in d)
+        let around: Vec<Vec<String>> = [-half, half]
+            .iter()
+            .flat_map(|&da| {
+                let a = (alpha + da).clamp(a0, a1);
+                let m = ms_at(a);
+                [0.7, 1.3].map(|f| kinds_at(&regions, a, m * (1.0 + d * f)))
+            })
+            .collect();
+        if here.len() != 1 || around.iter().any(|k| *k != here) {
+            near += 1;
+            continue;
+        }
+        let Some(kind) = solve_kind(&arch, mu) else {
+            undecided += 1;
+            continue;
+        };
+        assert_eq!(
+            kind, here[0],
+            "alpha = {alpha}, mu = {mu} (mu_ms = {ms}), flags {flags:?}"
+        );
+        seen.insert(kind);
+        compared += 1;
+    }
+    assert!(
+        seen.contains("non_unique") && seen.contains("unique") && seen.contains("no_equilibrium"),
+        "{seen:?}"
+    );
+    eprintln!("atlas {flags:?}: {compared} compared, {near} near a boundary, {undecided} undecided by solve");
+}
+
+#[test]
+fn regions_agree_with_solve_away_from_boundaries() {
+    // the continuous arch, the horseshoes where the non-unique band lies
+    agrees_with_solve(
+        &[
+            "--alpha-min",
+            "0.4",
+            "--alpha-max",
+            "1.0",
+            "--columns",
+            "25",
+            "--mu-max-factor",
+            "1.5",
+            "--samples",
+            "24",
+        ],
+        None,
+        (0.4, 1.0, 1.5),
+        200,
+    );
+    // twelve voussoirs (the exact sweep), over a wider rectangle
+    agrees_with_solve(
+        &[
+            "--alpha-min",
+            "-0.4",
+            "--alpha-max",
+            "1.1",
+            "--columns",
+            "31",
+            "--mu-max-factor",
+            "3",
+            "--samples",
+            "24",
+            "--blocks",
+            "12",
+        ],
+        Some(12),
+        (-0.4, 1.1, 3.0),
+        150,
+    );
+}
+
+#[test]
+fn the_contract() {
+    let (doc, code) = json_of(&[
+        "atlas",
+        "--alpha-min",
+        "0.6",
+        "--alpha-max",
+        "0.8",
+        "--columns",
+        "5",
+        "--mu-max-factor",
+        "1.2",
+        "--samples",
+        "12",
+    ]);
+    assert_eq!(code, 0);
+    for key in [
+        "version",
+        "status",
+        "weight",
+        "blocks",
+        "rectangle",
+        "regions",
+        "boundaries",
+        "undecided",
+        "columns",
+    ] {
+        assert!(doc.get(key).is_some(), "missing {key}");
+    }
+    let kinds = [
+        "unique",
+        "non_unique",
+        "no_mechanism_at_eta",
+        "no_equilibrium",
+    ];
+    for r in doc["regions"].as_array().unwrap() {
+        assert!(kinds.contains(&r["kind"].as_str().unwrap()));
+    }
+    // the band: at α = 0.7 the first samples above μ_ms are non-unique, with three limit
+    // states (η_s and a mirror pair above it), and a boundary to unique lies above them
+    let col = &doc["columns"][2];
+    assert!((col["alpha"].as_f64().unwrap() - 0.7).abs() < 1e-12);
+    assert_eq!(col["samples"][0]["kind"], "non_unique");
+    assert_eq!(col["samples"][0]["etas"].as_array().unwrap().len(), 3);
+    let pairs: Vec<&Value> = doc["boundaries"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|b| &b["between"])
+        .collect();
+    assert!(
+        pairs
+            .iter()
+            .any(|p| p[0] == "non_unique" && p[1] == "unique"),
+        "{pairs:?}"
+    );
+    for b in doc["boundaries"].as_array().unwrap() {
+        for p in b["points"].as_array().unwrap() {
+            let br = p["bracket"].as_array().unwrap();
+            let (lo, hi) = (br[0].as_f64().unwrap(), br[1].as_f64().unwrap());
+            let mu = p["mu"].as_f64().unwrap();
+            assert!(lo <= mu && mu <= hi, "{p}");
+            assert_eq!(p["certified"], false);
+        }
+    }
+    // bad input names the argument
+    for (flag, value) in [
+        ("--alpha-min", "2"),
+        ("--mu-max-factor", "1"),
+        ("--columns", "1"),
+        ("--samples", "0"),
+    ] {
+        let (err, code) = json_of(&["atlas", flag, value]);
+        assert_eq!(code, 2, "{flag} {value}");
+        assert!(err["message"].as_str().unwrap().contains(flag), "{err}");
+    }
+}
