@@ -67,10 +67,17 @@ fn cell(alpha: f64, f: f64, mu: f64, s: &Settings) -> Result<Option<Cell>, Strin
 fn main() {
     let s = Settings::default();
     let (na, nf) = (arg("--alphas", 23), arg("--factors", 12));
-    let alphas: Vec<f64> = (0..na)
+    let mut alphas: Vec<f64> = (0..na)
         .map(|k| -1.0 + 2.2 * k as f64 / (na - 1).max(1) as f64)
-        .chain(std::iter::once(0.0))
         .collect();
+    if !alphas.iter().any(|&a| a.abs() < 1e-12) {
+        alphas.push(0.0); // the semicircle, always
+    }
+    // the semicircle exactly (not −1 + 2.2 k/(n − 1) rounded)
+    alphas
+        .iter_mut()
+        .filter(|a| a.abs() < 1e-12)
+        .for_each(|a| *a = 0.0);
     let factors: Vec<f64> = (0..nf)
         .map(|k| 1.02 * (4.0f64 / 1.02).powf(k as f64 / (nf - 1).max(1) as f64))
         .collect();

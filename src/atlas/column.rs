@@ -156,10 +156,10 @@ pub struct Column {
     pub mu_ms_between: Vec<[f64; 2]>,
 }
 
-/// The μ_ms curve is evaluated at this many steps per strip between columns (its chords
-/// are then within ~1e-6 of it at the default spacing; the other boundaries are joined by
-/// straight segments).
-pub const CURVE_STEPS: usize = 8;
+/// The μ_ms curve is evaluated at this many steps per strip between columns: at the default
+/// spacing (0.05 rad) its chords then lie within ~5e-6 of it, relative (the other boundaries
+/// are joined by straight segments). Even, so that a strip's middle is one of the points.
+pub const CURVE_STEPS: usize = 16;
 
 /// One column at `alpha` (`next`: the following column's opening): μ_ms, the samples, the
 /// located changes, the runs, and the μ_ms curve up to the next column.

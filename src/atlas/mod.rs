@@ -3,9 +3,9 @@
 //! limit state, where other limit states lie above it, where it carries none, and (below
 //! μ_ms) where no equilibrium exists.
 //!
-//! Each α is a column: μ_ms(α) from [`friction_limit`], then samples at μ = μ_ms (1 + d) with
+//! Each α is a column: μ_ms(α) from [`crate::friction::friction_limit`], then samples at μ = μ_ms (1 + d) with
 //! d geometric from 10⁻⁶ to K − 1 (dense near μ_ms, where the non-unique band lies), each
-//! classified by the complete limit-state search ([`survey`]); between two samples of
+//! classified by the complete limit-state search ([`crate::limit_states::survey`]); between two samples of
 //! different kinds the change is located by bisection in μ down to neighbouring floats (a
 //! sample of a third kind in between splits the bracket). Between columns the regions are
 //! joined by their boundaries' straight segments where both columns hold the same kinds in
@@ -33,6 +33,15 @@ pub struct Atlas {
     pub columns: Vec<Column>,
     /// The regions as polygons of (α, μ) vertices (closed: the last vertex joins the first).
     pub regions: Vec<(Kind, Vec<[f64; 2]>)>,
+    /// The μ_ms curve: (α, μ_ms) at the columns and between them, ascending in α.
+    pub curve: Vec<[f64; 2]>,
+}
+
+impl Atlas {
+    /// μ_ms at `alpha`, linear between the points of [`Atlas::curve`].
+    pub fn mu_ms_at(&self, alpha: f64) -> f64 {
+        regions::interpolate(&self.curve, alpha)
+    }
 }
 
 /// The atlas over `rect` on `threads` threads (columns in parallel); `progress(done,
@@ -58,9 +67,12 @@ pub fn atlas(
     .into_iter()
     .collect::<Result<Vec<Column>, InputError>>()?;
     let regions = regions::regions(&columns);
+    let with_ms: Vec<&Column> = columns.iter().filter(|c| c.mu_ms.is_some()).collect();
+    let curve = regions::mu_ms_curve(&with_ms);
     Ok(Atlas {
         rectangle: *rect,
         columns,
         regions,
+        curve,
     })
 }

@@ -47,10 +47,14 @@ pub(super) fn regions(columns: &[Column]) -> Vec<(Kind, Polygon)> {
             let lower = if r == 0 {
                 on_curve(&curve, left, right)
             } else {
-                edge(group, left, right, |c| c.runs[r].1)
+                edge(group, (left, right), &curve, |c| c.runs[r].1)
             };
             let mut p = lower;
-            p.extend(edge(group, left, right, |c| c.runs[r].2).into_iter().rev());
+            p.extend(
+                edge(group, (left, right), &curve, |c| c.runs[r].2)
+                    .into_iter()
+                    .rev(),
+            );
             p.dedup();
             out.push((kind, p));
         }
@@ -64,7 +68,7 @@ pub(super) fn regions(columns: &[Column]) -> Vec<(Kind, Polygon)> {
 }
 
 /// The μ_ms curve through the columns and the points between them, ascending in α.
-fn mu_ms_curve(cols: &[&Column]) -> Vec<[f64; 2]> {
+pub(super) fn mu_ms_curve(cols: &[&Column]) -> Vec<[f64; 2]> {
     cols.iter()
         .flat_map(|c| {
             std::iter::once([c.alpha, c.mu_ms.expect("columns with mu_ms")])
@@ -89,12 +93,36 @@ fn on_curve(curve: &[[f64; 2]], left: f64, right: f64) -> Polygon {
     p
 }
 
-/// One edge of a group's run, left to right: `mu` at each column, held flat to `left` and
-/// `right`.
-fn edge(group: &[&Column], left: f64, right: f64, mu: impl Fn(&Column) -> f64) -> Polygon {
-    let mut p = vec![[left, mu(group[0])]];
+/// One edge of a group's run, left to right: `mu` at each column, and out to `left` and
+/// `right` at the same μ/μ_ms as at the nearest column.
+fn edge(
+    group: &[&Column],
+    (left, right): (f64, f64),
+    curve: &[[f64; 2]],
+    mu: impl Fn(&Column) -> f64,
+) -> Polygon {
+    let held =
+        |c: &Column, a: f64| mu(c) / c.mu_ms.expect("columns with mu_ms") * interpolate(curve, a);
+    let (first, last) = (group[0], group[group.len() - 1]);
+    let mut p = vec![[left, held(first, left)]];
     p.extend(group.iter().map(|c| [c.alpha, mu(c)]));
-    p.push([right, mu(group[group.len() - 1])]);
+    p.push([right, held(last, right)]);
     p.dedup();
     p
+}
+
+/// The μ_ms curve's value at `alpha`, linear between its points (held at its ends).
+pub(super) fn interpolate(curve: &[[f64; 2]], alpha: f64) -> f64 {
+    if curve.len() == 1 {
+        return curve[0][1];
+    }
+    let k = curve
+        .partition_point(|p| p[0] < alpha)
+        .clamp(1, curve.len() - 1);
+    let (p, q) = (curve[k - 1], curve[k]);
+    if q[0] == p[0] {
+        return p[1];
+    }
+    let t = ((alpha - p[0]) / (q[0] - p[0])).clamp(0.0, 1.0);
+    p[1] + (q[1] - p[1]) * t
 }

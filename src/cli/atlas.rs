@@ -4,13 +4,15 @@
 use super::arch_args::WeightArg;
 use super::io::{to_json, Exit, Io};
 use super::threads_arg::ThreadsArg;
-use crate::atlas::{atlas, Rectangle};
+use crate::arch::InputError;
+use crate::atlas::{atlas, Atlas, Rectangle};
 use crate::render::{json, table};
 use crate::settings::Settings;
 use clap::Args;
 
+/// The rectangle of an atlas (shared with `plot atlas`).
 #[derive(Args, Debug)]
-pub(crate) struct AtlasArgs {
+pub(crate) struct RectArgs {
     /// The least opening alpha of the symmetric arches (radians, -pi/2 < alpha < pi/2).
     #[arg(long, default_value_t = -1.4, allow_hyphen_values = true)]
     alpha_min: f64,
@@ -34,29 +36,39 @@ pub(crate) struct AtlasArgs {
     samples: usize,
     #[command(flatten)]
     threads: ThreadsArg,
+}
+
+impl RectArgs {
+    /// The atlas these flags ask for (a bad range is named by its flag).
+    pub(crate) fn atlas(&self, settings: &Settings) -> Result<Atlas, InputError> {
+        let rect = Rectangle {
+            alpha_min: self.alpha_min,
+            alpha_max: self.alpha_max,
+            mu_max_factor: self.mu_max_factor,
+            weight: self.weight.into(),
+            blocks: self.blocks,
+            columns: self.columns,
+            samples: self.samples,
+        };
+        let threads = self.threads.count()?;
+        let bar = super::progress::Progress::new("atlas");
+        atlas(&rect, settings, threads, &|done, total| {
+            bar.update(done, total)
+        })
+    }
+}
+
+#[derive(Args, Debug)]
+pub(crate) struct AtlasArgs {
+    #[command(flatten)]
+    rect: RectArgs,
     /// Print one JSON document instead of tables.
     #[arg(long)]
     pub(crate) json: bool,
 }
 
 pub(crate) fn run(a: AtlasArgs, settings: &Settings, io: &mut Io) -> Exit {
-    let rect = Rectangle {
-        alpha_min: a.alpha_min,
-        alpha_max: a.alpha_max,
-        mu_max_factor: a.mu_max_factor,
-        weight: a.weight.into(),
-        blocks: a.blocks,
-        columns: a.columns,
-        samples: a.samples,
-    };
-    let threads = match a.threads.count() {
-        Ok(t) => t,
-        Err(e) => return io.bad_input(&e),
-    };
-    let bar = super::progress::Progress::new("atlas");
-    let at = match atlas(&rect, settings, threads, &|done, total| {
-        bar.update(done, total)
-    }) {
+    let at = match a.rect.atlas(settings) {
         Ok(at) => at,
         Err(e) => return io.bad_input(&e),
     };

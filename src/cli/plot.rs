@@ -204,6 +204,16 @@ pub(crate) enum Figure {
         #[command(flatten)]
         output: Output,
     },
+    /// The atlas of uniqueness: over openings alpha and mu/mu_ms - 1, where the least thickness carries the only limit state, where others lie above it, where it carries none.
+    #[command(
+        after_help = "Example:\n  arch-enum plot atlas --out atlas.png\n  arch-enum plot atlas --blocks 24 --alpha-min 0.4 --alpha-max 1.1 --mu-max-factor 1.5"
+    )]
+    Atlas {
+        #[command(flatten)]
+        rect: super::atlas::RectArgs,
+        #[command(flatten)]
+        output: Output,
+    },
     /// A margin map over the eta-mu plane with the exact limit curve (computed on all cores).
     #[command(
         after_help = "Example:\n  arch-enum plot map --alpha 0 --out map.png\n  arch-enum plot map --alpha -1.2 --log-eta --threads 4"
@@ -243,6 +253,7 @@ pub(crate) fn run(figure: Figure, settings: &Settings, io: &mut Io) -> Exit {
             ("influence", &bridge_output)
         }
         Figure::Map { output, .. } => ("map", output),
+        Figure::Atlas { output, .. } => ("atlas", output),
     };
     let (path, format, width) = match output.target(name) {
         Ok((p, f)) => (p, f, output.width),
@@ -338,6 +349,10 @@ pub(crate) fn draw(figure: Figure, settings: &Settings, io: &mut Io) -> Result<S
         },
         Figure::Eccentricity { state: st, .. } => match plot_inputs(&st, settings) {
             Ok((a, mu, eta)) => figures::scene(&a, mu, eta, settings).map(|s| plot_ecc::svg(&s)),
+            Err(e) => return Err(io.bad_input(&e)),
+        },
+        Figure::Atlas { rect, .. } => match rect.atlas(settings) {
+            Ok(a) => Ok(crate::render::plot_atlas::svg(&a)),
             Err(e) => return Err(io.bad_input(&e)),
         },
         Figure::Map {

@@ -11,6 +11,7 @@ pub mod load;
 pub mod plot;
 #[cfg(feature = "svg")]
 pub mod plot_arch;
+pub mod plot_atlas;
 #[cfg(feature = "svg")]
 pub mod plot_curve;
 #[cfg(feature = "svg")]
