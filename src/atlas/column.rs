@@ -1,6 +1,7 @@
 //! One column of the atlas: an opening α, its μ_ms, the samples in μ classified, the changes
 //! of kind located by bisection, and the runs of one kind they bound.
 
+use super::certified::certified_kind;
 use super::classify::{classify, Classified, Kind};
 use crate::arch::{Arch, InputError, WeightModel};
 use crate::friction::friction_limit;
@@ -23,6 +24,8 @@ pub struct Rectangle {
     pub columns: usize,
     /// Samples of μ per column, ≥ 2.
     pub samples: usize,
+    /// Certify (and verify) the ends of every located bracket and one sample per run.
+    pub certify: bool,
 }
 
 impl Rectangle {
@@ -99,6 +102,10 @@ impl Rectangle {
 /// thickness from η_s up is a limit state (the vertical branch).
 pub const FIRST_OFFSET: f64 = 1e-6;
 
+/// The relative half-width of the certified bracket of μ_ms (the sample just above μ_ms
+/// lies at [`FIRST_OFFSET`]).
+pub const MU_MS_BRACKET: f64 = 1e-6;
+
 /// Bisections of one bracket stop after this many steps (neighbouring floats come first:
 /// about 50 from the samples' spacing).
 const MAX_BISECTIONS: usize = 80;
@@ -117,6 +124,9 @@ pub struct BoundaryPoint {
     pub tight: bool,
     /// Why the bisection stopped short of neighbouring floats, if it did.
     pub stopped: Option<String>,
+    /// With [`Rectangle::certify`]: whether verified certificates at the bracket's two ends
+    /// state the two kinds (`Err`: why not).
+    pub certified: Option<Result<(), String>>,
 }
 
 impl BoundaryPoint {
@@ -151,6 +161,13 @@ pub struct Column {
     /// Maximal runs of one kind: (kind, μ from, μ to), from μ_ms to K μ_ms; `None` for a
     /// stretch the search did not decide.
     pub runs: Vec<(Option<Kind>, f64, f64)>,
+    /// With [`Rectangle::certify`], one per run: a sample inside it and whether a verified
+    /// certificate there states the run's kind (`Err`: why not).
+    pub runs_certified: Vec<(f64, Result<(), String>)>,
+    /// With [`Rectangle::certify`]: μ_ms in a bracket [μ_ms (1 − δ), μ_ms (1 + δ)] (δ =
+    /// [`MU_MS_BRACKET`]) whose ends verified certificates state as no equilibrium and as the
+    /// first run's kind (`Err`: why not).
+    pub mu_ms_certified: Option<Result<(f64, f64), String>>,
     /// (α, μ_ms(α)) at [`CURVE_STEPS`] − 1 openings between this column and the next (none
     /// after the last): the μ_ms curve between columns, which the regions follow.
     pub mu_ms_between: Vec<[f64; 2]>,
@@ -177,6 +194,8 @@ pub(super) fn column(
         samples: Vec::new(),
         boundaries: Vec::new(),
         runs: Vec::new(),
+        runs_certified: Vec::new(),
+        mu_ms_certified: None,
         mu_ms_between: Vec::new(),
     };
     if let Some(next) = next {
@@ -212,7 +231,44 @@ pub(super) fn column(
         }
     }
     col.runs = runs(&col, rect.mu_max_factor);
+    if rect.certify {
+        certify_column(&arch, &mut col, settings);
+    }
     Ok(col)
+}
+
+/// The certificates of a column: both ends of every located bracket, and the middle sample
+/// of every decided run.
+fn certify_column(arch: &Arch, col: &mut Column, settings: &Settings) {
+    let holds = |mu: f64, want: Kind| match certified_kind(arch, mu, settings) {
+        Ok(k) if k == want => Ok(()),
+        Ok(k) => Err(format!("the certificate at mu = {mu} states {}", k.name())),
+        Err(e) => Err(format!("at mu = {mu}: {e}")),
+    };
+    if let (Some(ms), Some((Some(first), _, _))) = (col.mu_ms, col.runs.first()) {
+        let (lo, hi) = (ms * (1.0 - MU_MS_BRACKET), ms * (1.0 + MU_MS_BRACKET));
+        col.mu_ms_certified = Some(
+            holds(lo, Kind::NoEquilibrium)
+                .and_then(|()| holds(hi, *first))
+                .map(|()| (lo, hi)),
+        );
+    }
+    for p in &mut col.boundaries {
+        let (lo, hi) = p.bracket;
+        p.certified = Some(holds(lo, p.between[0]).and_then(|()| holds(hi, p.between[1])));
+    }
+    for &(kind, from, to) in &col.runs {
+        let Some(kind) = kind else { continue };
+        let inside: Vec<f64> = col
+            .samples
+            .iter()
+            .filter(|s| s.mu > from && s.mu < to && s.kind.is_ok())
+            .map(|s| s.mu)
+            .collect();
+        if let Some(&mu) = inside.get(inside.len() / 2) {
+            col.runs_certified.push((mu, holds(mu, kind)));
+        }
+    }
 }
 
 /// Bisects [lo, hi] between kinds `ka` (at lo) and `kb` (at hi) down to neighbouring floats;
@@ -257,6 +313,7 @@ fn locate(
         bracket: (lo, hi),
         tight,
         stopped,
+        certified: None,
     });
     Ok(())
 }

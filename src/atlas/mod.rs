@@ -13,10 +13,12 @@
 //! boundary points are located to the last float of μ at their α, not solved from their
 //! defining conditions (`exact: false`), and not certified.
 
+mod certified;
 mod classify;
 mod column;
 mod regions;
 
+pub use certified::certified_kind;
 pub use classify::{classify, Classified, Kind};
 pub use column::{BoundaryPoint, Column, Rectangle, Sample, CURVE_STEPS, FIRST_OFFSET};
 

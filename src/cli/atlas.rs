@@ -34,6 +34,10 @@ pub(crate) struct RectArgs {
     /// Friction coefficients sampled per opening, geometric in mu/mu_ms - 1 from 1e-6 (2 to 2000).
     #[arg(long, default_value_t = 40, allow_hyphen_values = true)]
     samples: usize,
+    /// Certify the ends of every located bracket and one sample of every run (`certify`),
+    /// each re-proved by the verifier (`verify`).
+    #[arg(long)]
+    certify: bool,
     #[command(flatten)]
     threads: ThreadsArg,
 }
@@ -49,6 +53,7 @@ impl RectArgs {
             blocks: self.blocks,
             columns: self.columns,
             samples: self.samples,
+            certify: self.certify,
         };
         let threads = self.threads.count()?;
         let bar = super::progress::Progress::new("atlas");

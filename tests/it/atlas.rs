@@ -259,3 +259,49 @@ fn the_contract() {
         assert!(err["message"].as_str().unwrap().contains(flag), "{err}");
     }
 }
+
+/// `--certify` on twelve voussoirs across the band: every located bracket, every μ_ms
+/// bracket and one sample of every run is stated by a certificate that the verifier accepted
+/// (for voussoir arches its ridge evidence proves the list of limit states complete).
+#[test]
+fn certified_brackets() {
+    let (doc, code) = json_of(&[
+        "atlas",
+        "--certify",
+        "--blocks",
+        "12",
+        "--alpha-min",
+        "0.55",
+        "--alpha-max",
+        "1.0",
+        "--columns",
+        "10",
+        "--mu-max-factor",
+        "1.3",
+        "--samples",
+        "16",
+    ]);
+    assert_eq!(code, 0);
+    let mut pairs = std::collections::BTreeSet::new();
+    for b in doc["boundaries"].as_array().unwrap() {
+        for p in b["points"].as_array().unwrap() {
+            assert_eq!(p["certified"], true, "{p}");
+            let cb = p["certified_bracket"].as_array().unwrap();
+            assert!(cb[0].as_f64().unwrap() <= p["mu"].as_f64().unwrap() * (1.0 + 1e-12));
+            assert!(cb[1].as_f64().unwrap() >= p["mu"].as_f64().unwrap() * (1.0 - 1e-12));
+        }
+        pairs.insert(b["between"].to_string());
+    }
+    assert!(pairs.len() >= 3, "{pairs:?}");
+    let mut runs = 0;
+    for c in doc["columns"].as_array().unwrap() {
+        for r in c["runs"].as_array().unwrap() {
+            let cert = &r["certified"];
+            assert_eq!(cert["holds"], true, "{r}");
+            let mu = cert["mu"].as_f64().unwrap();
+            assert!(mu > r["mu_from"].as_f64().unwrap() && mu < r["mu_to"].as_f64().unwrap());
+            runs += 1;
+        }
+    }
+    assert!(runs >= 15, "{runs} runs");
+}

@@ -32,7 +32,15 @@ struct PointJson {
     #[serde(skip_serializing_if = "Option::is_none")]
     stopped: Option<String>,
     exact: bool,
+    /// Verified certificates at both ends of the bracket state its two kinds.
     certified: bool,
+    /// With `--certify`, why the bracket is not certified.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    not_certified: Option<String>,
+    /// The bracket whose two ends verified certificates state as the two kinds (for μ_ms:
+    /// μ_ms (1 ± 1e-6)).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    certified_bracket: Option<[f64; 2]>,
 }
 
 #[derive(Debug, Serialize)]
@@ -46,6 +54,18 @@ struct RunJson {
     kind: &'static str,
     mu_from: f64,
     mu_to: f64,
+    /// With `--certify`: the sample certified inside the run and whether its verified
+    /// certificate states the run's kind.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    certified: Option<RunCertificate>,
+}
+
+#[derive(Debug, Serialize)]
+struct RunCertificate {
+    mu: f64,
+    holds: bool,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    why_not: Option<String>,
 }
 
 #[derive(Debug, Serialize)]
@@ -104,7 +124,13 @@ fn boundaries(columns: &[Column]) -> Vec<BoundaryJson> {
                     tight: true,
                     stopped: None,
                     exact: c.mu_ms_exact,
-                    certified: false,
+                    certified: matches!(c.mu_ms_certified, Some(Ok(_))),
+                    not_certified: c.mu_ms_certified.clone().and_then(Result::err),
+                    certified_bracket: c
+                        .mu_ms_certified
+                        .clone()
+                        .and_then(Result::ok)
+                        .map(|b| [b.0, b.1]),
                 });
         }
         for p in &c.boundaries {
@@ -115,7 +141,10 @@ fn boundaries(columns: &[Column]) -> Vec<BoundaryJson> {
                 tight: p.tight,
                 stopped: p.stopped.clone(),
                 exact: false,
-                certified: false,
+                certified: matches!(p.certified, Some(Ok(()))),
+                not_certified: p.certified.clone().and_then(Result::err),
+                certified_bracket: matches!(p.certified, Some(Ok(())))
+                    .then_some([p.bracket.0, p.bracket.1]),
             });
         }
     }
@@ -140,6 +169,15 @@ fn column(c: &Column) -> ColumnJson {
                 kind: name(r.0),
                 mu_from: r.1,
                 mu_to: r.2,
+                certified: c
+                    .runs_certified
+                    .iter()
+                    .find(|(mu, _)| *mu > r.1 && *mu < r.2)
+                    .map(|(mu, res)| RunCertificate {
+                        mu: *mu,
+                        holds: res.is_ok(),
+                        why_not: res.clone().err(),
+                    }),
             })
             .collect(),
         samples: c
