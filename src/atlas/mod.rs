@@ -20,7 +20,9 @@ mod regions;
 
 pub use certified::certified_kind;
 pub use classify::{classify, Classified, Kind};
-pub use column::{BoundaryPoint, Column, Rectangle, Sample, CURVE_STEPS, FIRST_OFFSET};
+pub use column::{
+    BoundaryPoint, Column, Rectangle, Sample, CURVE_STEPS, FIRST_OFFSET, MU_MS_BRACKET,
+};
 
 use crate::arch::InputError;
 use crate::settings::Settings;
