@@ -17,12 +17,14 @@ mod certified;
 mod classify;
 mod column;
 mod regions;
+mod tips;
 
 pub use certified::certified_kind;
 pub use classify::{classify, Classified, Kind};
 pub use column::{
     BoundaryPoint, Column, Rectangle, Sample, CURVE_STEPS, FIRST_OFFSET, MU_MS_BRACKET,
 };
+pub use tips::Tip;
 
 use crate::arch::InputError;
 use crate::settings::Settings;
@@ -39,6 +41,8 @@ pub struct Atlas {
     pub regions: Vec<(Kind, Vec<[f64; 2]>)>,
     /// The μ_ms curve: (α, μ_ms) at the columns and between them, ascending in α.
     pub curve: Vec<[f64; 2]>,
+    /// Where a kind begins or ends along the μ_ms curve, located to neighbouring floats of α.
+    pub tips: Vec<Tip>,
 }
 
 impl Atlas {
@@ -73,10 +77,12 @@ pub fn atlas(
     let regions = regions::regions(&columns);
     let with_ms: Vec<&Column> = columns.iter().filter(|c| c.mu_ms.is_some()).collect();
     let curve = regions::mu_ms_curve(&with_ms);
+    let tips = tips::tips(rect, &columns, settings)?;
     Ok(Atlas {
         rectangle: *rect,
         columns,
         regions,
         curve,
+        tips,
     })
 }

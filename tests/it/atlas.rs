@@ -304,4 +304,24 @@ fn certified_brackets() {
         }
     }
     assert!(runs >= 15, "{runs} runs");
+    // the band's two tips on the μ_ms curve, to neighbouring floats of α, each side of the
+    // bracket classified afresh at its own μ_ms (1 + 1e-6)
+    let tips = doc["tips"].as_array().unwrap();
+    assert_eq!(tips.len(), 2, "{tips:?}");
+    for t in tips {
+        assert!(t.get("stopped").is_none(), "{t}");
+        let b = t["alpha_bracket"].as_array().unwrap();
+        let (lo, hi) = (b[0].as_f64().unwrap(), b[1].as_f64().unwrap());
+        assert_eq!(hi, lo.next_up(), "{t}");
+        for (alpha, want) in [(lo, &t["between"][0]), (hi, &t["between"][1])] {
+            let arch = Arch::symmetric(alpha, WeightModel::Centreline)
+                .and_then(|a| a.with_blocks(12))
+                .unwrap();
+            let ms = least_friction(&arch, &Settings::default())
+                .unwrap()
+                .unwrap();
+            let kind = solve_kind(&arch, ms * (1.0 + 1e-6)).expect("decided");
+            assert_eq!(kind, want.as_str().unwrap(), "alpha = {alpha}");
+        }
+    }
 }

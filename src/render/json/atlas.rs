@@ -88,6 +88,17 @@ struct ColumnJson {
     samples: Vec<SampleJson>,
 }
 
+#[derive(Debug, Serialize)]
+struct TipJson {
+    between: [&'static str; 2],
+    /// The last opening of the first kind and the first of the second, just above μ_ms.
+    alpha_bracket: [f64; 2],
+    alpha: f64,
+    mu_ms: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    stopped: Option<String>,
+}
+
 /// The `atlas --json` document.
 #[derive(Debug, Serialize)]
 pub struct AtlasJson {
@@ -98,6 +109,8 @@ pub struct AtlasJson {
     rectangle: RectangleJson,
     regions: Vec<RegionJson>,
     boundaries: Vec<BoundaryJson>,
+    /// Where a kind begins or ends along the μ_ms curve (at μ_ms (1 + 1e-6)).
+    tips: Vec<TipJson>,
     /// Samples the search did not decide (their runs are in no region).
     undecided: usize,
     columns: Vec<ColumnJson>,
@@ -225,6 +238,17 @@ pub fn atlas(a: &Atlas) -> AtlasJson {
             })
             .collect(),
         boundaries: boundaries(&a.columns),
+        tips: a
+            .tips
+            .iter()
+            .map(|t| TipJson {
+                between: [t.between[0].name(), t.between[1].name()],
+                alpha_bracket: [t.alpha.0, t.alpha.1],
+                alpha: 0.5 * (t.alpha.0 + t.alpha.1),
+                mu_ms: t.mu_ms,
+                stopped: t.stopped.clone(),
+            })
+            .collect(),
         undecided: a
             .columns
             .iter()

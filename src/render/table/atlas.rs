@@ -100,6 +100,21 @@ fn boundaries(s: &mut String, a: &Atlas) {
             }
         );
     }
+    for t in &a.tips {
+        let _ = writeln!(
+            s,
+            "  tip on mu_ms: {} / {} at alpha = {} (bracket [{}, {}]{}), mu_ms = {}",
+            t.between[0].name(),
+            t.between[1].name(),
+            sig(0.5 * (t.alpha.0 + t.alpha.1), 12),
+            t.alpha.0,
+            t.alpha.1,
+            t.stopped
+                .as_ref()
+                .map_or(String::new(), |w| format!("; stopped: {w}")),
+            sig(t.mu_ms, 12)
+        );
+    }
     let undecided = a
         .columns
         .iter()
