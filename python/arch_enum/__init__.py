@@ -58,6 +58,7 @@ LP_SOLVER: str = _native.LP_SOLVER
 
 __all__ = [
     "geometry",
+    "atlas",
     "Arch",
     "AssessResult",
     "Branch",
@@ -152,6 +153,36 @@ def modes(arch: Arch) -> ModesResult:
     exact corners and the limit states above the boundary (``arch-enum modes``)."""
     a = _arch(arch)
     return ModesResult._of(a, _native.modes(a._spec()))
+
+
+def atlas(
+    alpha_min: float = -1.4,
+    alpha_max: float = 1.2,
+    mu_max_factor: float = 10.0,
+    *,
+    weight: str = "centreline",
+    blocks: Optional[int] = None,
+    columns: int = 53,
+    samples: int = 40,
+    certify: bool = False,
+) -> dict:
+    """The atlas of uniqueness over symmetric arches of opening alpha in [``alpha_min``,
+    ``alpha_max``] and friction mu from mu_ms(alpha) to ``mu_max_factor`` mu_ms(alpha)
+    (``arch-enum atlas --json``), as its JSON document: ``regions`` (kind and polygon of
+    [alpha, mu] vertices), ``boundaries``, ``tips``, ``columns`` (every sample), ``undecided``.
+    ``certify=True`` certifies both ends of every located bracket (see docs/uniqueness.md)."""
+    if not isinstance(certify, (bool, np.bool_)):
+        raise TypeError(f"certify must be True or False, got {certify!r}")
+    return _native.atlas(
+        _scalar("alpha_min", alpha_min),
+        _scalar("alpha_max", alpha_max),
+        _scalar("mu_max_factor", mu_max_factor),
+        weight,
+        None if blocks is None else _whole("blocks", blocks, 1, 100_000),
+        _whole("columns", columns, 2, 2000),
+        _whole("samples", samples, 2, 2000),
+        bool(certify),
+    )
 
 
 def assess(arch: Arch, eta: float, mu: float) -> AssessResult:

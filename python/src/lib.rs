@@ -9,6 +9,7 @@
 //! The Python side (`arch_enum/*.py`) turns the dicts into frozen dataclasses.
 
 use arch_enum::arch::{check_eta, check_mu, fmt_value, InputError, JointLayout};
+use arch_enum::atlas::{atlas as atlas_of, Rectangle};
 use arch_enum::bridge::{Geometry, Intrados};
 use arch_enum::certificate::{certify as certify_eta, verify as verify_cert, Certificate};
 use arch_enum::figures::{self, ArchScene};
@@ -76,6 +77,17 @@ fn inconsistent(arg: &'static str, reason: &str) -> PyErr {
     })
 }
 
+/// The weight model named `weight` ("centreline" or "centroid").
+fn weight_of(weight: &str) -> PyResult<WeightModel> {
+    match weight {
+        "centreline" => Ok(WeightModel::Centreline),
+        "centroid" => Ok(WeightModel::Centroid),
+        other => Err(PyValueError::new_err(format!(
+            "invalid value for weight: {other:?} (valid values: \"centreline\", \"centroid\")"
+        ))),
+    }
+}
+
 /// Builds and validates the arch (as `ArchArgs::build` does for the command line).
 fn build_arch(a: &ArchIn) -> PyResult<Arch> {
     let (alpha, beta_right, beta_left, blocks, joints, weight, fill) = a;
@@ -94,15 +106,7 @@ fn build_arch(a: &ArchIn) -> PyResult<Arch> {
         Some(f) => a.with_fill(f),
         None => a,
     };
-    let weight = match weight.as_str() {
-        "centreline" => WeightModel::Centreline,
-        "centroid" => WeightModel::Centroid,
-        other => {
-            return Err(PyValueError::new_err(format!(
-                "invalid value for weight: {other:?} (valid values: \"centreline\", \"centroid\")"
-            )))
-        }
-    };
+    let weight = weight_of(weight)?;
     let arch = match (alpha, beta_right, beta_left) {
         (Some(a), None, None) => Arch::symmetric(*a, weight),
         (None, Some(r), Some(l)) => Arch::new(*r, *l, weight),
@@ -327,6 +331,40 @@ fn modes<'py>(py: Python<'py>, spec: ArchIn) -> PyResult<Bound<'py, PyAny>> {
         let c = trace_parallel(&arch, &Settings::default(), available_threads());
         serde_json::to_value(json::modes(&arch, &c)).expect("serialisable")
     });
+    to_py(py, &d)
+}
+
+/// `atlas --json`: the atlas of uniqueness over openings α and μ from μ_ms(α) (on every
+/// core, as the command line).
+#[pyfunction]
+#[allow(clippy::too_many_arguments)]
+fn atlas<'py>(
+    py: Python<'py>,
+    alpha_min: f64,
+    alpha_max: f64,
+    mu_max_factor: f64,
+    weight: &str,
+    blocks: Option<usize>,
+    columns: usize,
+    samples: usize,
+    certify: bool,
+) -> PyResult<Bound<'py, PyAny>> {
+    let rect = Rectangle {
+        alpha_min,
+        alpha_max,
+        mu_max_factor,
+        weight: weight_of(weight)?,
+        blocks,
+        columns,
+        samples,
+        certify,
+    };
+    let d = py
+        .detach(|| {
+            let a = atlas_of(&rect, &Settings::default(), available_threads(), &|_, _| {})?;
+            Ok::<_, InputError>(serde_json::to_value(json::atlas(&a)).expect("serialisable"))
+        })
+        .map_err(value_error)?;
     to_py(py, &d)
 }
 
@@ -589,6 +627,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(solve_compas, m)?)?;
     m.add_function(wrap_pyfunction!(curve, m)?)?;
     m.add_function(wrap_pyfunction!(modes, m)?)?;
+    m.add_function(wrap_pyfunction!(atlas, m)?)?;
     m.add_function(wrap_pyfunction!(modes_svg, m)?)?;
     m.add_function(wrap_pyfunction!(assess, m)?)?;
     m.add_function(wrap_pyfunction!(assess_svg, m)?)?;

@@ -192,3 +192,23 @@ def test_certify_and_verify_cross(cli, tmp_path):
     assert v.status == "ok" and v.eta_lo == cdoc["eta_lo"] and v.eta_hi == cdoc["eta_hi"]
     assert c.eta_lo == pytest.approx(cdoc["eta_lo"], rel=1e-12)
     assert c.eta_hi == pytest.approx(cdoc["eta_hi"], rel=1e-12)
+
+
+def test_atlas(cli):
+    """`ae.atlas` is `arch-enum atlas --json`, certified brackets included; bad ranges are a
+    ValueError naming the Python argument."""
+    flags = ["--alpha-min", "0.6", "--alpha-max", "0.9", "--columns", "4", "--mu-max-factor", "1.2",
+             "--samples", "12", "--blocks", "12", "--certify"]
+    code, doc = cli("atlas", *flags, "--json")
+    assert code == 0
+    raw = ae.atlas(0.6, 0.9, 1.2, blocks=12, columns=4, samples=12, certify=True)
+    agree(raw, doc)
+    kinds = {r["kind"] for r in raw["regions"]}
+    assert {"unique", "non_unique", "no_equilibrium"} <= kinds
+    assert all(p["certified"] for b in raw["boundaries"] for p in b["points"])
+    with pytest.raises(ValueError, match="alpha_min"):
+        ae.atlas(alpha_min=2.0)
+    with pytest.raises(ValueError, match="columns"):
+        ae.atlas(columns=1)
+    with pytest.raises(ValueError, match="weight"):
+        ae.atlas(weight="heavy")
