@@ -11,13 +11,19 @@ use crate::settings::Settings;
 /// does not depend on it).
 const ATLAS_GAP: f64 = 1e-9;
 
-/// The kind at (arch, μ) as a verified certificate states it, or why there is none.
-pub fn certified_kind(arch: &Arch, mu: f64, settings: &Settings) -> Result<Kind, String> {
+/// The kind at (arch, μ) as a verified certificate states it, and whether the verifier
+/// proved the certificate's list of limit states complete (the ridge evidence of a voussoir
+/// arch; a no-equilibrium claim has no list to complete) or only checked each listed state;
+/// or why there is no such certificate.
+pub fn certified_kind(arch: &Arch, mu: f64, settings: &Settings) -> Result<(Kind, bool), String> {
     let cert = certify(arch, mu, ATLAS_GAP, settings).map_err(|e| e.0)?;
     verify(&cert).map_err(|r| format!("the verifier rejected the certificate: {}", r.0))?;
     match cert.claim {
-        Claim::NoEquilibrium => return Ok(Kind::NoEquilibrium),
-        Claim::StandsAtEveryThickness => return Ok(Kind::NoMechanismAtEta),
+        Claim::NoEquilibrium => return Ok((Kind::NoEquilibrium, true)),
+        Claim::StandsAtEveryThickness => {
+            let complete = cert.search.as_ref().is_some_and(|s| s.ridge.is_some());
+            return Ok((Kind::NoMechanismAtEta, complete));
+        }
         Claim::LeastThickness => {}
         other => return Err(format!("a {} claim", other.name())),
     }
@@ -25,11 +31,12 @@ pub fn certified_kind(arch: &Arch, mu: f64, settings: &Settings) -> Result<Kind,
         .search
         .as_ref()
         .ok_or("the certificate lists no limit states")?;
-    Ok(if !search.mechanism_at_eta {
+    let kind = if !search.mechanism_at_eta {
         Kind::NoMechanismAtEta
     } else if search.unique {
         Kind::Unique
     } else {
         Kind::NonUnique
-    })
+    };
+    Ok((kind, search.ridge.is_some()))
 }

@@ -102,6 +102,15 @@ impl Rectangle {
 /// thickness from η_s up is a limit state (the vertical branch).
 pub const FIRST_OFFSET: f64 = 1e-6;
 
+/// μ_ms bracketed by two verified certificates (see [`Column::mu_ms_certified`]).
+#[derive(Debug, Clone, Copy)]
+pub struct MuMsCertified {
+    /// μ_ms (1 − δ) and μ_ms (1 + δ).
+    pub bracket: (f64, f64),
+    /// Whether the verifier proved the list of limit states at the upper end complete.
+    pub complete: bool,
+}
+
 /// The relative half-width of the certified bracket of μ_ms (the sample just above μ_ms
 /// lies at [`FIRST_OFFSET`]).
 pub const MU_MS_BRACKET: f64 = 1e-6;
@@ -124,9 +133,10 @@ pub struct BoundaryPoint {
     pub tight: bool,
     /// Why the bisection stopped short of neighbouring floats, if it did.
     pub stopped: Option<String>,
-    /// With [`Rectangle::certify`]: whether verified certificates at the bracket's two ends
-    /// state the two kinds (`Err`: why not).
-    pub certified: Option<Result<(), String>>,
+    /// With [`Rectangle::certify`]: verified certificates at the bracket's two ends state the
+    /// two kinds (`Ok`, true where the verifier proved both lists of limit states complete,
+    /// false where it only checked the listed states), or why not (`Err`).
+    pub certified: Option<Result<bool, String>>,
 }
 
 impl BoundaryPoint {
@@ -162,12 +172,13 @@ pub struct Column {
     /// stretch the search did not decide.
     pub runs: Vec<(Option<Kind>, f64, f64)>,
     /// With [`Rectangle::certify`], one per run: a sample inside it and whether a verified
-    /// certificate there states the run's kind (`Err`: why not).
-    pub runs_certified: Vec<(f64, Result<(), String>)>,
+    /// certificate there states the run's kind (`Ok(complete)` as for a bracket; `Err`: why
+    /// not).
+    pub runs_certified: Vec<(f64, Result<bool, String>)>,
     /// With [`Rectangle::certify`]: μ_ms in a bracket [μ_ms (1 − δ), μ_ms (1 + δ)] (δ =
     /// [`MU_MS_BRACKET`]) whose ends verified certificates state as no equilibrium and as the
-    /// first run's kind (`Err`: why not).
-    pub mu_ms_certified: Option<Result<(f64, f64), String>>,
+    /// first run's kind, with whether both lists were proved complete (`Err`: why not).
+    pub mu_ms_certified: Option<Result<MuMsCertified, String>>,
     /// (α, μ_ms(α)) at [`CURVE_STEPS`] − 1 openings between this column and the next (none
     /// after the last): the μ_ms curve between columns, which the regions follow.
     pub mu_ms_between: Vec<[f64; 2]>,
@@ -241,21 +252,23 @@ pub(super) fn column(
 /// of every decided run.
 fn certify_column(arch: &Arch, col: &mut Column, settings: &Settings) {
     let holds = |mu: f64, want: Kind| match certified_kind(arch, mu, settings) {
-        Ok(k) if k == want => Ok(()),
-        Ok(k) => Err(format!("the certificate at mu = {mu} states {}", k.name())),
+        Ok((k, complete)) if k == want => Ok(complete),
+        Ok((k, _)) => Err(format!("the certificate at mu = {mu} states {}", k.name())),
         Err(e) => Err(format!("at mu = {mu}: {e}")),
     };
+    let both = |a: Result<bool, String>, b: Result<bool, String>| Ok(a? && b?);
     if let (Some(ms), Some((Some(first), _, _))) = (col.mu_ms, col.runs.first()) {
         let (lo, hi) = (ms * (1.0 - MU_MS_BRACKET), ms * (1.0 + MU_MS_BRACKET));
-        col.mu_ms_certified = Some(
-            holds(lo, Kind::NoEquilibrium)
-                .and_then(|()| holds(hi, *first))
-                .map(|()| (lo, hi)),
-        );
+        col.mu_ms_certified = Some(both(holds(lo, Kind::NoEquilibrium), holds(hi, *first)).map(
+            |complete| MuMsCertified {
+                bracket: (lo, hi),
+                complete,
+            },
+        ));
     }
     for p in &mut col.boundaries {
         let (lo, hi) = p.bracket;
-        p.certified = Some(holds(lo, p.between[0]).and_then(|()| holds(hi, p.between[1])));
+        p.certified = Some(both(holds(lo, p.between[0]), holds(hi, p.between[1])));
     }
     for &(kind, from, to) in &col.runs {
         let Some(kind) = kind else { continue };

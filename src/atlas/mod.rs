@@ -22,7 +22,8 @@ mod tips;
 pub use certified::certified_kind;
 pub use classify::{classify, Classified, Kind};
 pub use column::{
-    BoundaryPoint, Column, Rectangle, Sample, CURVE_STEPS, FIRST_OFFSET, MU_MS_BRACKET,
+    BoundaryPoint, Column, MuMsCertified, Rectangle, Sample, CURVE_STEPS, FIRST_OFFSET,
+    MU_MS_BRACKET,
 };
 pub use tips::Tip;
 

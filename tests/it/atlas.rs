@@ -286,6 +286,8 @@ fn certified_brackets() {
     for b in doc["boundaries"].as_array().unwrap() {
         for p in b["points"].as_array().unwrap() {
             assert_eq!(p["certified"], true, "{p}");
+            // ridge evidence: the verifier proved each list of limit states complete
+            assert_eq!(p["list_proved_complete"], true, "{p}");
             let cb = p["certified_bracket"].as_array().unwrap();
             assert!(cb[0].as_f64().unwrap() <= p["mu"].as_f64().unwrap() * (1.0 + 1e-12));
             assert!(cb[1].as_f64().unwrap() >= p["mu"].as_f64().unwrap() * (1.0 - 1e-12));
@@ -298,6 +300,7 @@ fn certified_brackets() {
         for r in c["runs"].as_array().unwrap() {
             let cert = &r["certified"];
             assert_eq!(cert["holds"], true, "{r}");
+            assert_eq!(cert["list_proved_complete"], true, "{r}");
             let mu = cert["mu"].as_f64().unwrap();
             assert!(mu > r["mu_from"].as_f64().unwrap() && mu < r["mu_to"].as_f64().unwrap());
             runs += 1;

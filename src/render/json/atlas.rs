@@ -41,6 +41,11 @@ struct PointJson {
     /// μ_ms (1 ± 1e-6)).
     #[serde(skip_serializing_if = "Option::is_none")]
     certified_bracket: Option<[f64; 2]>,
+    /// With a certified bracket: whether the verifier proved both certificates' lists of
+    /// limit states complete (voussoir arches, ridge evidence), so that the kinds are proved;
+    /// false where it only checked each listed state (continuous arches).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    list_proved_complete: Option<bool>,
 }
 
 #[derive(Debug, Serialize)]
@@ -64,6 +69,8 @@ struct RunJson {
 struct RunCertificate {
     mu: f64,
     holds: bool,
+    /// Whether the verifier proved the certificate's list of limit states complete.
+    list_proved_complete: bool,
     #[serde(skip_serializing_if = "Option::is_none")]
     why_not: Option<String>,
 }
@@ -143,7 +150,12 @@ fn boundaries(columns: &[Column]) -> Vec<BoundaryJson> {
                         .mu_ms_certified
                         .clone()
                         .and_then(Result::ok)
-                        .map(|b| [b.0, b.1]),
+                        .map(|m| [m.bracket.0, m.bracket.1]),
+                    list_proved_complete: c
+                        .mu_ms_certified
+                        .clone()
+                        .and_then(Result::ok)
+                        .map(|m| m.complete),
                 });
         }
         for p in &c.boundaries {
@@ -154,10 +166,11 @@ fn boundaries(columns: &[Column]) -> Vec<BoundaryJson> {
                 tight: p.tight,
                 stopped: p.stopped.clone(),
                 exact: false,
-                certified: matches!(p.certified, Some(Ok(()))),
+                certified: matches!(p.certified, Some(Ok(_))),
                 not_certified: p.certified.clone().and_then(Result::err),
-                certified_bracket: matches!(p.certified, Some(Ok(())))
+                certified_bracket: matches!(p.certified, Some(Ok(_)))
                     .then_some([p.bracket.0, p.bracket.1]),
+                list_proved_complete: p.certified.clone().and_then(Result::ok),
             });
         }
     }
@@ -189,6 +202,7 @@ fn column(c: &Column) -> ColumnJson {
                     .map(|(mu, res)| RunCertificate {
                         mu: *mu,
                         holds: res.is_ok(),
+                        list_proved_complete: res.as_ref().is_ok_and(|c| *c),
                         why_not: res.clone().err(),
                     }),
             })
