@@ -6,11 +6,20 @@
 //! 1. no sliding contact: `overturning` if some joint is detached, else `purely_rotational`;
 //! 2. no hinge contact: `purely_sliding`;
 //! 3. a springing carries a hinge and a sliding contact: `rotational_sliding_shoulders`;
-//! 4. a hinge lies strictly closer to β_m than every sliding joint (rotation at the
-//!    crown, sliding further out): `mixed_sliding_rotational`;
-//! 5. every hinge lies farther from β_m than every sliding joint (rotation at the
-//!    shoulders, sliding near the crown): `mixed_rotational_sliding`;
-//! 6. otherwise `mixed_interleaved`, a descriptive name outside the contract's list.
+//! 4. the contact farthest from β_m is a sliding joint (sliding at the shoulders, every
+//!    hinge nearer the crown): `mixed_sliding_rotational`;
+//! 5. the contact farthest from β_m is a hinge (rotation at the shoulders, every sliding
+//!    joint nearer the crown, whether or not a hinge also lies inside them):
+//!    `mixed_rotational_sliding`;
+//! 6. when a hinge and a sliding contact are equally far out (e.g. one springing hinges,
+//!    the other slides), the innermost contact decides: a hinge (rotation at the crown)
+//!    gives `mixed_sliding_rotational`, a sliding joint `mixed_rotational_sliding`;
+//! 7. otherwise (a hinge and a sliding contact share the innermost joint as well)
+//!    `mixed_interleaved`, a descriptive name outside the contract's list.
+//!
+//! Rules 4 and 5 read a mixed mode from the shoulders inwards, as the founding paper
+//! names its branches: the upper branch of α_s = 1.15, with hinges at the springings, a
+//! hinge at the crown and sliding joints just beside it, is rotational–sliding there.
 
 use crate::contact::{Contact, Location};
 use serde::Serialize;
@@ -21,7 +30,7 @@ use serde::Serialize;
 pub enum CollapseMode {
     /// Hinges only (Couplet–Heyman).
     PurelyRotational,
-    /// Hinges and sliding, with rotation at the crown.
+    /// Hinges and sliding, with sliding at the shoulders and rotation nearer the crown.
     MixedSlidingRotational,
     /// Hinges and sliding, with rotation at the shoulders and sliding nearer the crown.
     MixedRotationalSliding,
@@ -95,13 +104,17 @@ pub fn classify(pattern: &[Contact], beta_mid: f64, same_joint: f64) -> Collapse
         return CollapseMode::RotationalSlidingShoulders;
     }
     let dist = |c: &&Contact| (c.beta - beta_mid).abs();
-    let hinge_in = hinges.iter().map(dist).fold(f64::INFINITY, f64::min);
     let hinge_out = hinges.iter().map(dist).fold(0.0, f64::max);
-    let slide_in = slides.iter().map(dist).fold(f64::INFINITY, f64::min);
     let slide_out = slides.iter().map(dist).fold(0.0, f64::max);
-    if hinge_in < slide_in - same_joint {
+    let hinge_in = hinges.iter().map(dist).fold(f64::INFINITY, f64::min);
+    let slide_in = slides.iter().map(dist).fold(f64::INFINITY, f64::min);
+    if slide_out > hinge_out + same_joint {
         CollapseMode::MixedSlidingRotational
-    } else if hinge_in > slide_out + same_joint || (hinge_out > slide_out && hinge_in > slide_in) {
+    } else if hinge_out > slide_out + same_joint {
+        CollapseMode::MixedRotationalSliding
+    } else if hinge_in < slide_in - same_joint {
+        CollapseMode::MixedSlidingRotational
+    } else if slide_in < hinge_in - same_joint {
         CollapseMode::MixedRotationalSliding
     } else {
         CollapseMode::MixedInterleaved

@@ -21,12 +21,14 @@ moving outwards/inwards):
   overturning                   hinges only, with a detached joint (N = 0: E and I both active)
   purely_sliding                sliding only (the vertical branch mu = mu_ms)
   rotational_sliding_shoulders  a springing hinges and slides at once
-  mixed_sliding_rotational      hinges and sliding, a hinge nearer the crown (the middle of the arch) \
-than every sliding joint: rotation at the crown, sliding further out
-  mixed_rotational_sliding      hinges and sliding, every hinge farther from the crown than every \
-sliding joint: rotation at the shoulders, sliding near the crown
-  mixed_interleaved             hinges and sliding interleaved otherwise (a descriptive name outside \
-the contract's list)"
+  mixed_sliding_rotational      hinges and sliding, the contact farthest from the crown (the middle \
+of the arch) a sliding joint: sliding at the shoulders, rotation nearer the crown
+  mixed_rotational_sliding      hinges and sliding, the contact farthest from the crown a hinge: \
+rotation at the shoulders, sliding nearer the crown (a crown hinge may lie inside)
+  (when a hinge and a sliding joint are equally far out, e.g. at the two springings, the innermost \
+contact decides: a hinge gives mixed_sliding_rotational, a sliding joint mixed_rotational_sliding)
+  mixed_interleaved             a hinge and a sliding joint share both the outermost and the \
+innermost place (a descriptive name outside the contract's list)"
     };
 }
 

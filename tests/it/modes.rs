@@ -197,6 +197,56 @@ fn alpha_1_15_overturning_asymptote() {
     assert_eq!(last.between()[1], CollapseMode::PurelySliding);
 }
 
+/// The branches of the five openings of the founding paper's Table 1 carry the paper's
+/// names: sliding at the shoulders with rotation at the crown below α = 1 ("mixed
+/// sliding–rotational"), rotation at the shoulders with sliding near the crown at α = 1,
+/// and at α = 1.15 (whose upper branch the paper's Fig. 21 calls "mixed
+/// rotational–sliding", although a crown hinge lies inside its sliding joints).
+#[test]
+fn branch_names_are_the_papers() {
+    use CollapseMode::*;
+    let expected: [(f64, &[CollapseMode]); 5] = [
+        (
+            -PI / 6.0,
+            &[PurelyRotational, MixedSlidingRotational, PurelySliding],
+        ),
+        (
+            0.0,
+            &[PurelyRotational, MixedSlidingRotational, PurelySliding],
+        ),
+        (
+            PI / 6.0,
+            &[PurelyRotational, MixedSlidingRotational, PurelySliding],
+        ),
+        (
+            1.0,
+            &[PurelyRotational, MixedRotationalSliding, PurelySliding],
+        ),
+        (1.15, &[MixedRotationalSliding, PurelySliding]),
+    ];
+    for (alpha, modes) in expected {
+        let c = curve(alpha);
+        let got: Vec<CollapseMode> = c.branches.iter().map(|b| b.mode).collect();
+        assert_eq!(got, modes, "alpha = {alpha}");
+    }
+    // the 1.15 branch: hinges at the springings and at the crown, sliding just beside it
+    let ls = limit_at(1.15, 5.0);
+    let slides: Vec<f64> = ls
+        .pattern
+        .iter()
+        .filter(|c| !c.kind.is_hinge())
+        .map(|c| (c.beta - PI / 2.0).abs())
+        .collect();
+    assert!(
+        slides.len() == 2 && slides.iter().all(|d| *d < 0.2),
+        "{slides:?}"
+    );
+    assert!(ls
+        .pattern
+        .iter()
+        .any(|c| c.kind.is_hinge() && (c.beta - PI / 2.0).abs() < 1e-9));
+}
+
 fn snapshot(name: &str, args: &[&str]) {
     let mut a = vec!["modes"];
     a.extend_from_slice(args);

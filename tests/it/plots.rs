@@ -55,9 +55,11 @@ fn curve_figure_has_one_path_per_branch_and_a_marker_per_corner() {
         .descendants()
         .filter(|n| n.has_tag_name("polyline") && n.attribute("stroke-width") == Some("3"))
         .collect();
+    // alpha = 0: rotational and sliding-rotational; alpha = 1.15: rotational-sliding
     for (mode, expected) in [
         (CollapseMode::PurelyRotational, 1),
-        (CollapseMode::MixedSlidingRotational, 2),
+        (CollapseMode::MixedSlidingRotational, 1),
+        (CollapseMode::MixedRotationalSliding, 1),
     ] {
         let n = thick
             .iter()
