@@ -24,6 +24,7 @@ mod load_reference;
 mod loads;
 mod model;
 mod modes;
+mod paper;
 mod plots;
 mod readme;
 mod reference;
