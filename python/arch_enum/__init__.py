@@ -25,6 +25,7 @@ from typing import Any, Optional, Union
 import numpy as np
 
 from . import _native
+from ._commands import JSON_COMMANDS, certify_load, critical, load_curve, plot, report, run
 from ._results import (
     Arch,
     AssessResult,
@@ -84,9 +85,16 @@ __all__ = [
     "VerticalBranch",
     "assess",
     "certify",
+    "certify_load",
+    "critical",
     "curve",
+    "JSON_COMMANDS",
     "load",
+    "load_curve",
     "modes",
+    "plot",
+    "report",
+    "run",
     "solve",
     "verify",
 ]

@@ -613,6 +613,19 @@ fn verify<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyAny>> {
     to_py(py, &d)
 }
 
+/// Runs one command line of the `arch-enum` binary in-process (`args` without the program
+/// name) with the GIL released: (exit code, standard output, standard error). The Python
+/// side (`arch_enum/_commands.py`) builds the flags and reads the answer.
+#[pyfunction]
+fn run_command(py: Python<'_>, args: Vec<String>) -> (i32, Vec<u8>, String) {
+    py.detach(|| {
+        let (mut out, mut err) = (Vec::new(), Vec::new());
+        let argv = std::iter::once("arch-enum".to_string()).chain(args);
+        let code = arch_enum::cli::run(argv, &mut out, &mut err);
+        (code, out, String::from_utf8_lossy(&err).into_owned())
+    })
+}
+
 /// The Rust side of the Python package `arch_enum`.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -635,5 +648,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(load_svg, m)?)?;
     m.add_function(wrap_pyfunction!(certify, m)?)?;
     m.add_function(wrap_pyfunction!(verify, m)?)?;
+    m.add_function(wrap_pyfunction!(run_command, m)?)?;
     Ok(())
 }

@@ -1,5 +1,6 @@
 """The Python examples stay true: the ```python block of README.md's section
-"Python: `import arch_enum`" and of docs/python.md's "A worked example" are each run as a
+"Python: `import arch_enum`" and of docs/python.md's "A worked example" and "Every
+command" are each run as a
 script, and what each prints must equal the ```text block after it (trailing blanks
 ignored); the worked example must write its two figures."""
 
@@ -42,3 +43,7 @@ def test_docs_worked_example(tmp_path):
     run_block("docs/python.md", "## A worked example", tmp_path)
     assert (tmp_path / "eta_mu.png").stat().st_size > 1000
     assert (tmp_path / "arch.svg").read_text(encoding="utf-8").count("<svg") >= 1
+
+
+def test_docs_every_command_example(tmp_path):
+    run_block("docs/python.md", "## Every command: `run`", tmp_path)
