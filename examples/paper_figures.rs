@@ -189,7 +189,7 @@ fn agrees(value: f64, printed: &str) -> (bool, f64) {
 
 fn table(values: &[Value], paper: &[(String, String, String)]) -> String {
     let mut t = String::from(
-        "| α_s | quantity | paper | arch-enum | agrees to the printed digits |\n\
+        "| opening α_s | quantity | paper | arch-enum | agrees to the printed digits |\n\
          |:---|:---|---:|---:|:---|\n",
     );
     for v in values {
