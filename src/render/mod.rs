@@ -3,6 +3,8 @@
 
 pub mod compas;
 pub mod dimensions;
+#[cfg(feature = "svg")]
+pub mod fine;
 pub mod geometry;
 pub mod json;
 mod live_load;

@@ -4,6 +4,7 @@
 //! did not decide left grey. Below the axis (μ < μ_ms) no thickness stands.
 
 use crate::atlas::{Atlas, Kind, FIRST_OFFSET};
+use crate::render::fine::Fine;
 use crate::render::plot::{Axis, FAMILY};
 use plotters::prelude::*;
 
@@ -50,6 +51,7 @@ pub fn svg(a: &Atlas) -> Result<String, String> {
         (x.to(p[0]), y.to(d))
     };
     let mut buf = String::new();
+    let fine = Fine::default();
     {
         let root = SVGBackend::with_string(&mut buf, (W, H)).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
@@ -71,11 +73,10 @@ pub fn svg(a: &Atlas) -> Result<String, String> {
         for (k, poly) in a.regions.iter().filter(|(k, _)| *k != Kind::NoEquilibrium) {
             let pts: Vec<(f64, f64)> = poly.iter().map(|&p| at(p)).collect();
             let c = kind_color(*k);
-            ch.draw_series([
-                Polygon::new(pts.clone(), c.filled()),
-                Polygon::new(pts, c.stroke_width(1)),
-            ])
-            .map_err(err)?;
+            fine.polygon(&ch, &pts, c.filled())?;
+            let mut edge = pts.clone();
+            edge.extend(pts.first());
+            fine.polyline(&ch, &edge, c.stroke_width(1), None)?;
         }
         // one legend entry per kind drawn (and grey where the search did not decide)
         let mut kinds: Vec<Kind> = a
@@ -131,5 +132,5 @@ pub fn svg(a: &Atlas) -> Result<String, String> {
             .map_err(err)?;
         root.present().map_err(err)?;
     }
-    Ok(buf)
+    Ok(fine.finish(&buf))
 }

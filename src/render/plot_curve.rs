@@ -7,6 +7,7 @@
 
 use crate::collapse_mode::CollapseMode;
 use crate::figures::CurveData;
+use crate::render::fine::Fine;
 use crate::render::plot::AxisCoord;
 use crate::render::plot::{
     arch_label, boxed_text, mode_color, short_num, text_width, Axis, FAMILY,
@@ -89,6 +90,7 @@ pub fn svg(data: &[CurveData], log_eta: bool) -> Result<String, String> {
     }
     let f = Frame::new(data, log_eta);
     let mut buf = String::new();
+    let fine = Fine::default();
     {
         let root = SVGBackend::with_string(&mut buf, (W, H)).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
@@ -122,10 +124,10 @@ pub fn svg(data: &[CurveData], log_eta: bool) -> Result<String, String> {
             .axis_desc_style((FAMILY, 15))
             .draw()
             .map_err(err)?;
-        draw_tints(&mut chart, &f, data)?;
+        draw_tints(&chart, &f, data, &fine)?;
         let mut modes: Vec<CollapseMode> = Vec::new();
         for d in data {
-            draw_curve(&mut chart, &f, d, &mut modes)?;
+            draw_curve(&mut chart, &f, d, &mut modes, &fine)?;
         }
         draw_labels(&root, &chart, &f, data)?;
         let marks = (
@@ -135,12 +137,12 @@ pub fn svg(data: &[CurveData], log_eta: bool) -> Result<String, String> {
         draw_legend(&root, &modes, data.len(), marks)?;
         root.present().map_err(err)?;
     }
-    Ok(buf)
+    Ok(fine.finish(&buf))
 }
 
 /// The safe domain of each arch (one translucent layer each), and for a single arch its
 /// collapse domain. Both are bounded by the arch's own curve, so nothing is painted over.
-fn draw_tints(chart: &mut Chart, f: &Frame, data: &[CurveData]) -> Result<(), String> {
+fn draw_tints(chart: &Chart, f: &Frame, data: &[CurveData], fine: &Fine) -> Result<(), String> {
     let (mu_lo, mu_hi, eta_lo, eta_hi) = (f.mu.lo, f.mu.hi, f.eta.lo, f.eta.hi);
     for d in data {
         let outline = d.outline();
@@ -152,23 +154,13 @@ fn draw_tints(chart: &mut Chart, f: &Frame, data: &[CurveData]) -> Result<(), St
         let mut safe = vec![(d.mu_ms, eta_hi), (d.mu_ms, left.1)];
         safe.extend(rising.iter().copied());
         safe.extend([(mu_hi, right.1), (mu_hi, eta_hi)]);
-        chart
-            .draw_series(std::iter::once(Polygon::new(
-                f.all(safe),
-                SAFE_TINT.mix(SAFE_OPACITY),
-            )))
-            .map_err(err)?;
+        fine.polygon(chart, &f.all(safe), SAFE_TINT.mix(SAFE_OPACITY).filled())?;
         if data.len() == 1 {
             let mut collapse = vec![(mu_lo, eta_lo), (mu_lo, eta_hi), (d.mu_ms, eta_hi)];
             collapse.push((d.mu_ms, left.1));
             collapse.extend(rising);
             collapse.extend([(mu_hi, right.1), (mu_hi, eta_lo)]);
-            chart
-                .draw_series(std::iter::once(Polygon::new(
-                    f.all(collapse),
-                    COLLAPSE_TINT.mix(0.08),
-                )))
-                .map_err(err)?;
+            fine.polygon(chart, &f.all(collapse), COLLAPSE_TINT.mix(0.08).filled())?;
         }
     }
     Ok(())
@@ -180,6 +172,7 @@ fn draw_curve(
     f: &Frame,
     d: &CurveData,
     modes: &mut Vec<CollapseMode>,
+    fine: &Fine,
 ) -> Result<(), String> {
     let mut add = |m: CollapseMode| {
         if !modes.contains(&m) {
@@ -187,12 +180,8 @@ fn draw_curve(
         }
     };
     for (mode, pts) in &d.branches {
-        chart
-            .draw_series(LineSeries::new(
-                f.all(pts.iter().copied()),
-                mode_color(*mode).stroke_width(3),
-            ))
-            .map_err(err)?;
+        let style = mode_color(*mode).stroke_width(3);
+        fine.polyline(chart, &f.all(pts.iter().copied()), style, None)?;
         add(*mode);
     }
     let outline = d.outline();

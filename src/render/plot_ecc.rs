@@ -4,6 +4,7 @@
 
 use crate::contact::ContactKind;
 use crate::figures::ArchScene;
+use crate::render::fine::Fine;
 use crate::render::plot::{mode_color, short_num, Axis, AxisCoord, FAMILY};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -35,12 +36,13 @@ pub fn svg(scene: &ArchScene) -> Result<String, String> {
         log: false,
     };
     let mut buf = String::new();
+    let fine = Fine::default();
     {
         let root = SVGBackend::with_string(&mut buf, (900, 520)).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
         let mut ch = chart(&root, scene, &b_ax, &e_ax)?;
         draw_bounds(&root, &mut ch, &b_ax, eta)?;
-        draw_lines(&mut ch, scene, lim)?;
+        draw_lines(&mut ch, scene, lim, &fine)?;
         draw_contacts(&mut ch, scene)?;
         ch.configure_series_labels()
             .position(SeriesLabelPosition::UpperRight)
@@ -51,7 +53,7 @@ pub fn svg(scene: &ArchScene) -> Result<String, String> {
             .map_err(err)?;
         root.present().map_err(err)?;
     }
-    Ok(buf)
+    Ok(fine.finish(&buf))
 }
 
 /// The chart under its title (η, μ and the state), with its labelled axes.
@@ -140,8 +142,8 @@ fn draw_bounds(
 }
 
 /// The line of thrust e_M and, at finite friction, the line of friction e_T, clamped to
-/// the plot where they leave it.
-fn draw_lines(ch: &mut Chart, scene: &ArchScene, lim: f64) -> Result<(), String> {
+/// the plot where they leave it; each labelled for the legend by an empty series.
+fn draw_lines(ch: &mut Chart, scene: &ArchScene, lim: f64, fine: &Fine) -> Result<(), String> {
     let line = |f: &dyn Fn(&crate::figures::thrust_line::Eccentricity) -> f64| {
         scene
             .lines
@@ -150,22 +152,21 @@ fn draw_lines(ch: &mut Chart, scene: &ArchScene, lim: f64) -> Result<(), String>
             .map(|e| (e.beta.to_degrees(), f(e).clamp(-lim, lim)))
             .collect::<Vec<_>>()
     };
-    ch.draw_series(LineSeries::new(line(&|e| e.e_m), BLACK.stroke_width(2)))
+    let none = || LineSeries::new(Vec::<(f64, f64)>::new(), BLACK);
+    fine.polyline(ch, &line(&|e| e.e_m), BLACK.stroke_width(2), None)?;
+    ch.draw_series(none())
         .map_err(err)?
         .label("e_M = M/N (line of thrust)")
         .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], BLACK.stroke_width(2)));
     if scene.mu.is_finite() {
-        ch.draw_series(DashedLineSeries::new(
-            line(&|e| e.e_t),
-            6,
-            4,
-            FRICTION_COLOR.stroke_width(2),
-        ))
-        .map_err(err)?
-        .label("e_T = (T/N)/μ · η/2 (line of friction)")
-        .legend(|(x, y)| {
-            PathElement::new(vec![(x, y), (x + 22, y)], FRICTION_COLOR.stroke_width(2))
-        });
+        let style = FRICTION_COLOR.stroke_width(2);
+        fine.polyline(ch, &line(&|e| e.e_t), style, Some((6.0, 4.0)))?;
+        ch.draw_series(none())
+            .map_err(err)?
+            .label("e_T = (T/N)/μ · η/2 (line of friction)")
+            .legend(|(x, y)| {
+                PathElement::new(vec![(x, y), (x + 22, y)], FRICTION_COLOR.stroke_width(2))
+            });
     }
     Ok(())
 }

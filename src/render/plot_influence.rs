@@ -6,6 +6,7 @@
 
 use crate::bridge::critical::Critical;
 use crate::figures::ArchScene;
+use crate::render::fine::Fine;
 use crate::render::plot::{short_num, Axis, AxisCoord, FAMILY};
 use plotters::prelude::*;
 
@@ -72,6 +73,7 @@ fn chart_svg(title: &str, c: &Critical, vehicle_kn: Option<f64>) -> Result<Strin
         log: false,
     };
     let mut buf = String::new();
+    let fine = Fine::default();
     {
         let root = SVGBackend::with_string(&mut buf, (W, H)).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
@@ -93,16 +95,16 @@ fn chart_svg(title: &str, c: &Critical, vehicle_kn: Option<f64>) -> Result<Strin
             .axis_desc_style((FAMILY, 15))
             .draw()
             .map_err(err)?;
-        draw_line(&mut chart, c, top * 1.1)?;
+        draw_line(&mut chart, c, top * 1.1, &fine)?;
         draw_minima(&mut chart, c, vehicle_kn, top)?;
         root.present().map_err(err)?;
     }
-    Ok(buf)
+    Ok(fine.finish(&buf))
 }
 
 /// The sampled line: joined where consecutive samples are on the chart (a sample above it,
 /// with no collapse or undecided breaks the line), dots at each.
-fn draw_line(chart: &mut Chart, c: &Critical, top: f64) -> Result<(), String> {
+fn draw_line(chart: &mut Chart, c: &Critical, top: f64, fine: &Fine) -> Result<(), String> {
     let mut pieces: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
     for p in &c.influence {
         let v = p.collapse.value();
@@ -113,12 +115,7 @@ fn draw_line(chart: &mut Chart, c: &Critical, top: f64) -> Result<(), String> {
         }
     }
     for piece in pieces.iter().filter(|p| p.len() > 1) {
-        chart
-            .draw_series(std::iter::once(PathElement::new(
-                piece.clone(),
-                BLACK.stroke_width(2),
-            )))
-            .map_err(err)?;
+        fine.polyline(chart, piece, BLACK.stroke_width(2), None)?;
     }
     chart
         .draw_series(

@@ -6,6 +6,7 @@
 
 use crate::collapse_mode::CollapseMode;
 use crate::multiplier::{LoadCurve, LoadOutcome};
+use crate::render::fine::Fine;
 use crate::render::plot::{mode_color, short_num, Axis, AxisCoord, FAMILY};
 use crate::undecided::Undecided;
 use plotters::coord::Shift;
@@ -53,13 +54,14 @@ pub fn svg(title: &str, curve: &LoadCurve) -> Result<String, String> {
     }
     let (mu_ax, lam_ax) = axes(&finite, &pts);
     let mut buf = String::new();
+    let fine = Fine::default();
     {
         let root = SVGBackend::with_string(&mut buf, (W, H)).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
         let mut chart = chart(&root, title, &mu_ax, &lam_ax)?;
-        draw_gap(&mut chart, &mu_ax, &finite)?;
-        draw_static(&mut chart, &mu_ax, &finite)?;
-        draw_lambda(&mut chart, &mu_ax, &seq)?;
+        draw_gap(&chart, &mu_ax, &finite, &fine)?;
+        draw_static(&mut chart, &mu_ax, &finite, &fine)?;
+        draw_lambda(&mut chart, &mu_ax, &seq, &fine)?;
         draw_corners(&mut chart, &mu_ax, curve)?;
         draw_modes(&mut chart, &mu_ax, curve)?;
         if let Some((_, Some(s), _)) = at_inf {
@@ -76,7 +78,7 @@ pub fn svg(title: &str, curve: &LoadCurve) -> Result<String, String> {
             .map_err(err)?;
         root.present().map_err(err)?;
     }
-    Ok(buf)
+    Ok(fine.finish(&buf))
 }
 
 /// The samples and both sides of every corner, by μ; `true` after a corner's below side
@@ -144,17 +146,13 @@ fn chart<'a, 'b>(
 }
 
 /// The gap between λ and λ_static, shaded where λ lies below.
-fn draw_gap(chart: &mut Chart, mu_ax: &Axis, finite: &[&Sample]) -> Result<(), String> {
+fn draw_gap(chart: &Chart, mu_ax: &Axis, finite: &[&Sample], fine: &Fine) -> Result<(), String> {
     for w in finite.windows(2) {
         if let ((m0, Some(s0), Some((l0, _))), (m1, Some(s1), Some((l1, _)))) = (*w[0], *w[1]) {
             if l0 < s0 * (1.0 - 1e-9) || l1 < s1 * (1.0 - 1e-9) {
                 let (u0, u1) = (mu_ax.to(m0), mu_ax.to(m1));
-                chart
-                    .draw_series(std::iter::once(Polygon::new(
-                        vec![(u0, l0), (u1, l1), (u1, s1), (u0, s0)],
-                        RGBColor(214, 39, 40).mix(0.25),
-                    )))
-                    .map_err(err)?;
+                let gap = [(u0, l0), (u1, l1), (u1, s1), (u0, s0)];
+                fine.polygon(chart, &gap, RGBColor(214, 39, 40).mix(0.25).filled())?;
             }
         }
     }
@@ -162,18 +160,19 @@ fn draw_gap(chart: &mut Chart, mu_ax: &Axis, finite: &[&Sample]) -> Result<(), S
 }
 
 /// λ_static, dashed.
-fn draw_static(chart: &mut Chart, mu_ax: &Axis, finite: &[&Sample]) -> Result<(), String> {
+fn draw_static(
+    chart: &mut Chart,
+    mu_ax: &Axis,
+    finite: &[&Sample],
+    fine: &Fine,
+) -> Result<(), String> {
     let stat: Vec<(f64, f64)> = finite
         .iter()
         .filter_map(|p| p.1.map(|s| (mu_ax.to(p.0), s)))
         .collect();
+    fine.polyline(chart, &stat, STATIC_COLOR.stroke_width(2), Some((8.0, 5.0)))?;
     chart
-        .draw_series(DashedLineSeries::new(
-            stat,
-            8,
-            5,
-            STATIC_COLOR.stroke_width(2),
-        ))
+        .draw_series(LineSeries::new(Vec::<(f64, f64)>::new(), STATIC_COLOR))
         .map_err(err)?
         .label("λ_static (largest admissible)")
         .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], STATIC_COLOR.stroke_width(2)));
@@ -181,7 +180,12 @@ fn draw_static(chart: &mut Chart, mu_ax: &Axis, finite: &[&Sample]) -> Result<()
 }
 
 /// λ: one polyline per stretch without a jump.
-fn draw_lambda(chart: &mut Chart, mu_ax: &Axis, seq: &[(Sample, bool)]) -> Result<(), String> {
+fn draw_lambda(
+    chart: &mut Chart,
+    mu_ax: &Axis,
+    seq: &[(Sample, bool)],
+    fine: &Fine,
+) -> Result<(), String> {
     let mut pieces: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
     for (p, breaks) in seq.iter().filter(|p| p.0 .0.is_finite()) {
         if let Some((l, _)) = p.2 {
@@ -194,14 +198,11 @@ fn draw_lambda(chart: &mut Chart, mu_ax: &Axis, seq: &[(Sample, bool)]) -> Resul
         }
     }
     for (i, piece) in pieces.into_iter().enumerate() {
-        let drawn = chart
-            .draw_series(std::iter::once(PathElement::new(
-                piece,
-                BLACK.stroke_width(2),
-            )))
-            .map_err(err)?;
+        fine.polyline(chart, &piece, BLACK.stroke_width(2), None)?;
         if i == 0 {
-            drawn
+            chart
+                .draw_series(LineSeries::new(Vec::<(f64, f64)>::new(), BLACK))
+                .map_err(err)?
                 .label("λ (least limit state: collapse)")
                 .legend(|(x, y)| {
                     PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(2))

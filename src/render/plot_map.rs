@@ -3,6 +3,7 @@
 //! curve overlaid in black and a colour bar that gives the value of each band.
 
 use crate::figures::MapData;
+use crate::render::fine::Fine;
 use crate::render::plot::{arch_label, Axis, AxisCoord, FAMILY};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -112,6 +113,7 @@ pub fn svg(map: &MapData, log_eta: bool) -> Result<String, String> {
         .max(f64::MIN_POSITIVE);
     let f = Frame::new(map, log_eta);
     let mut buf = String::new();
+    let fine = Fine::default();
     {
         let root = SVGBackend::with_string(&mut buf, (W, H)).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
@@ -144,7 +146,7 @@ pub fn svg(map: &MapData, log_eta: bool) -> Result<String, String> {
             .axis_desc_style((FAMILY, 14))
             .draw()
             .map_err(err)?;
-        draw_curve(&mut ch, &f, map)?;
+        draw_curve(&mut ch, &f, map, &fine)?;
         ch.configure_series_labels()
             .position(SeriesLabelPosition::LowerRight)
             .background_style(WHITE.mix(0.9))
@@ -156,7 +158,7 @@ pub fn svg(map: &MapData, log_eta: bool) -> Result<String, String> {
         colour_bar(&root, xr.end + 30, yr, vmax_pos, vmax_neg)?;
         root.present().map_err(err)?;
     }
-    Ok(buf)
+    Ok(fine.finish(&buf))
 }
 
 /// Every cell filled with the colour of its band.
@@ -186,7 +188,7 @@ fn draw_cells(
 }
 
 /// The exact limit curve over the map (with its vertical sliding branch) and its corners.
-fn draw_curve(ch: &mut Chart, f: &Frame, map: &MapData) -> Result<(), String> {
+fn draw_curve(ch: &mut Chart, f: &Frame, map: &MapData, fine: &Fine) -> Result<(), String> {
     let d = &map.curve;
     let mut pts: Vec<(f64, f64)> = d
         .outline()
@@ -197,13 +199,12 @@ fn draw_curve(ch: &mut Chart, f: &Frame, map: &MapData) -> Result<(), String> {
         pts.push((d.mu_ms, eta_ms));
         pts.push((d.mu_ms, f.eta.hi));
     }
-    ch.draw_series(std::iter::once(PathElement::new(
-        pts.into_iter().map(|p| f.at(p.0, p.1)).collect::<Vec<_>>(),
-        BLACK.stroke_width(3),
-    )))
-    .map_err(err)?
-    .label("exact limit curve η*(μ)")
-    .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], BLACK.stroke_width(3)));
+    let line: Vec<(f64, f64)> = pts.into_iter().map(|p| f.at(p.0, p.1)).collect();
+    fine.polyline(ch, &line, BLACK.stroke_width(3), None)?;
+    ch.draw_series(LineSeries::new(Vec::<(f64, f64)>::new(), BLACK))
+        .map_err(err)?
+        .label("exact limit curve η*(μ)")
+        .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], BLACK.stroke_width(3)));
     for &(mu, eta) in &d.corners {
         ch.draw_series(std::iter::once(Circle::new(
             f.at(mu, eta),

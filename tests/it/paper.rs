@@ -8,11 +8,20 @@ use std::process::Command;
 /// but not `cargo test --test it`: build it here too (nothing to do when it is current).
 fn example() -> PathBuf {
     let built = Command::new(env!("CARGO"))
-        .args(["build", "--release", "--quiet", "--example", "paper_figures"])
+        .args([
+            "build",
+            "--release",
+            "--quiet",
+            "--example",
+            "paper_figures",
+        ])
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .status()
         .expect("run cargo");
-    assert!(built.success(), "cargo build --example paper_figures failed");
+    assert!(
+        built.success(),
+        "cargo build --example paper_figures failed"
+    );
     let exe = std::env::current_exe().expect("the test binary");
     let dir = exe
         .parent()

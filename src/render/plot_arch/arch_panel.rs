@@ -10,6 +10,7 @@ use crate::figures::thrust_line::Eccentricity;
 use crate::figures::ArchScene;
 use crate::load::LiveLoad;
 use crate::pressure::Pressure;
+use crate::render::fine::Fine;
 use crate::render::plot::{short_num, FAMILY};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -21,6 +22,7 @@ pub(super) fn arch_panel(
     view: &View,
     outline: &[(f64, f64)],
     color: RGBColor,
+    fine: &Fine,
 ) -> Result<(), String> {
     let mut ch = ChartBuilder::on(area)
         .margin(MARGIN)
@@ -31,8 +33,7 @@ pub(super) fn arch_panel(
     axes(&mut ch)?;
     let fill = fill_region(scene);
     if !fill.is_empty() {
-        ch.draw_series(std::iter::once(Polygon::new(fill.clone(), FILL_COLOR)))
-            .map_err(err)?;
+        fine.polygon(&ch, &fill, FILL_COLOR.filled())?;
         // the road: the fill's level top
         let road = vec![fill[0], fill[fill.len() - 1]];
         ch.draw_series(std::iter::once(PathElement::new(
@@ -56,22 +57,14 @@ pub(super) fn arch_panel(
             .map_err(err)?;
         }
     }
-    ch.draw_series(std::iter::once(Polygon::new(
-        outline.to_vec(),
-        RGBColor(225, 215, 195),
-    )))
-    .map_err(err)?;
-    ch.draw_series(std::iter::once(PathElement::new(
-        closed(outline),
-        BLACK.stroke_width(1),
-    )))
-    .map_err(err)?;
+    fine.polygon(&ch, outline, RGBColor(225, 215, 195).filled())?;
+    fine.polyline(&ch, &closed(outline), BLACK.stroke_width(1), None)?;
     if joints_visible(scene, view) {
         if let JointLayout::Discrete(js) = scene.arch.layout() {
             joint_lines(&mut ch, scene.eta, js)?;
         }
     }
-    lines_of_thrust_and_friction(&mut ch, scene)?;
+    lines_of_thrust_and_friction(&ch, scene, fine)?;
     for c in &scene.pattern {
         contact(&mut ch, scene, view, c, color)?;
     }
@@ -235,7 +228,7 @@ fn joint_lines(ch: &mut Chart, eta: f64, joints: &[f64]) -> Result<(), String> {
 
 /// The line of thrust (solid black) and, at finite friction, of friction (dashed orange),
 /// drawn at radius 1 + e.
-fn lines_of_thrust_and_friction(ch: &mut Chart, scene: &ArchScene) -> Result<(), String> {
+fn lines_of_thrust_and_friction(ch: &Chart, scene: &ArchScene, fine: &Fine) -> Result<(), String> {
     let eta = scene.eta;
     let line = |f: &dyn Fn(&Eccentricity) -> f64| -> Vec<(f64, f64)> {
         scene
@@ -248,19 +241,10 @@ fn lines_of_thrust_and_friction(ch: &mut Chart, scene: &ArchScene) -> Result<(),
             })
             .collect()
     };
-    ch.draw_series(std::iter::once(PathElement::new(
-        line(&|e| e.e_m),
-        BLACK.stroke_width(2),
-    )))
-    .map_err(err)?;
+    fine.polyline(ch, &line(&|e| e.e_m), BLACK.stroke_width(2), None)?;
     if scene.mu.is_finite() {
-        ch.draw_series(DashedLineSeries::new(
-            line(&|e| e.e_t),
-            6,
-            4,
-            RGBColor(255, 127, 14).stroke_width(2),
-        ))
-        .map_err(err)?;
+        let orange = RGBColor(255, 127, 14).stroke_width(2);
+        fine.polyline(ch, &line(&|e| e.e_t), orange, Some((6.0, 4.0)))?;
     }
     Ok(())
 }

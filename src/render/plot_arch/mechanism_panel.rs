@@ -3,6 +3,7 @@
 
 use super::canvas::{axes, block_outline, closed, err, View, MARGIN, X_LABELS, Y_LABELS};
 use crate::figures::ArchScene;
+use crate::render::fine::Fine;
 use crate::render::plot::{short_num, FAMILY};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -75,6 +76,7 @@ pub(super) fn mechanism_panel(
     view: &View,
     outline: &[(f64, f64)],
     color: RGBColor,
+    fine: &Fine,
 ) -> Result<(), String> {
     let eta = scene.eta;
     let (br, bl) = (scene.arch.beta_right(), scene.arch.beta_left());
@@ -99,33 +101,20 @@ pub(super) fn mechanism_panel(
         .build_cartesian_2d(u0..u1, w0..w1)
         .map_err(err)?;
     axes(&mut ch)?;
-    ch.draw_series(DashedLineSeries::new(
-        closed(outline),
-        4,
-        4,
-        RGBColor(150, 150, 150).stroke_width(1),
-    ))
-    .map_err(err)?;
+    let grey = RGBColor(150, 150, 150).stroke_width(1);
+    fine.polyline(&ch, &closed(outline), grey, Some((4.0, 4.0)))?;
     let first = scene.blocks.first().map_or(bl, |b| b.from);
     let last = scene.blocks.last().map_or(br, |b| b.to);
     for (a, b) in [(br, first), (last, bl)] {
         if b > a {
-            ch.draw_series(std::iter::once(Polygon::new(
-                block_outline(eta, a, b),
-                RGBColor(200, 200, 200),
-            )))
-            .map_err(err)?;
+            let still = RGBColor(200, 200, 200).filled();
+            fine.polygon(&ch, &block_outline(eta, a, b), still)?;
         }
     }
     for poly in moved {
         let edge = closed(&poly);
-        ch.draw_series(std::iter::once(Polygon::new(poly, color.mix(0.45))))
-            .map_err(err)?;
-        ch.draw_series(std::iter::once(PathElement::new(
-            edge,
-            color.stroke_width(2),
-        )))
-        .map_err(err)?;
+        fine.polygon(&ch, &poly, color.mix(0.45).filled())?;
+        fine.polyline(&ch, &edge, color.stroke_width(2), None)?;
     }
     Ok(())
 }

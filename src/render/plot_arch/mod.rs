@@ -11,6 +11,7 @@ mod mechanism_panel;
 pub use canvas::MIN_JOINT_PX;
 
 use crate::figures::ArchScene;
+use crate::render::fine::Fine;
 use crate::render::plot::{mode_color, FAMILY};
 use arch_panel::arch_panel;
 use canvas::{block_outline, err, joints_visible, View, CAPTION_H, SAFE_COLOR, W};
@@ -77,17 +78,18 @@ pub fn svg(scene: &ArchScene) -> Result<String, String> {
     let total_h = CAPTION_H + panels * view.panel_h;
     let color = scene.mode.map_or(SAFE_COLOR, mode_color);
     let mut buf = String::new();
+    let fine = Fine::default();
     {
         let root = SVGBackend::with_string(&mut buf, (W, total_h)).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
         let (cap, rest) = root.split_vertically(CAPTION_H);
         caption(&cap, scene, joints_visible(scene, &view))?;
         let (top, bottom) = rest.split_vertically(view.panel_h);
-        arch_panel(&top, scene, &view, &outline, color)?;
+        arch_panel(&top, scene, &view, &outline, color, &fine)?;
         if scene.mechanism.is_some() {
-            mechanism_panel(&bottom, scene, &view, &outline, color)?;
+            mechanism_panel(&bottom, scene, &view, &outline, color, &fine)?;
         }
         root.present().map_err(err)?;
     }
-    Ok(buf)
+    Ok(fine.finish(&buf))
 }
