@@ -1,7 +1,8 @@
 //! η*(μ) sampled over a range of friction coefficients (the `curve` command).
 
 use crate::arch::{Arch, InputError};
-use crate::limit::{solve, Outcome};
+use crate::limit::{solve_near, Outcome};
+use crate::search::RootGuess;
 use crate::settings::Settings;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -66,10 +67,19 @@ pub fn mu_grid(mu_min: f64, mu_max: f64, points: usize) -> Result<Vec<f64>, Inpu
         .collect())
 }
 
-/// Solves η*(μ) at every μ of `mus` on `threads` threads (each solve is independent and
-/// deterministic, so the answer does not depend on the count; 0 is taken as 1);
-/// `progress(done, total)` is called after each, from whichever thread finished it. A bad μ
-/// is reported as the first one in `mus` order.
+/// Consecutive friction coefficients of [`sample`] solved in one chain, each bracket of η_s
+/// started from the previous answer (a fixed length, so the answers do not depend on the
+/// number of threads).
+const CHAIN: usize = 16;
+/// The expected relative distance of the first guess of a chain from its root; later
+/// guesses expect twice the last step of η_s.
+const CHAIN_GUESS_REL: (f64, f64, f64) = (1e-2, 1e-9, 0.25);
+
+/// Solves η*(μ) at every μ of `mus` on `threads` threads (0 is taken as 1), in chains of
+/// [`CHAIN`] consecutive values, each started from the previous answer ([`solve_near`]: the
+/// same algorithm and root as [`crate::solve`], fewer margin LPs); `progress(done, total)`
+/// is called after each, from whichever thread finished it. A bad μ is reported as the
+/// first one in `mus` order.
 pub fn sample(
     arch: &Arch,
     mus: &[f64],
@@ -78,14 +88,38 @@ pub fn sample(
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<Vec<CurvePoint>, InputError> {
     let done = AtomicUsize::new(0);
-    crate::threads::map(mus, threads, |_, &mu| {
-        let point = solve(arch, mu, settings).map(|s| CurvePoint {
-            mu,
-            outcome: s.outcome,
-        });
-        progress(done.fetch_add(1, Ordering::Relaxed) + 1, mus.len());
-        point
-    })
-    .into_iter()
-    .collect()
+    let chains: Vec<&[f64]> = mus.chunks(CHAIN).collect();
+    let (first, least, most) = CHAIN_GUESS_REL;
+    let solved = crate::threads::map(&chains, threads, |_, chain| {
+        let (mut guess, mut last) = (None, None::<f64>);
+        let mut points = Vec::with_capacity(chain.len());
+        for &mu in chain.iter() {
+            let point = solve_near(arch, mu, guess, settings).map(|s| CurvePoint {
+                mu,
+                outcome: s.outcome,
+            });
+            let eta = point.as_ref().ok().and_then(|p| least_static(&p.outcome));
+            guess = eta.map(|e| RootGuess {
+                eta: e,
+                rel: last.map_or(first, |l| (2.0 * (e - l).abs() / e).clamp(least, most)),
+            });
+            last = eta;
+            progress(done.fetch_add(1, Ordering::Relaxed) + 1, mus.len());
+            points.push(point);
+        }
+        points
+    });
+    solved.into_iter().flatten().collect()
+}
+
+/// The least statically admissible η of an outcome, where it has one.
+fn least_static(o: &Outcome) -> Option<f64> {
+    match o {
+        Outcome::Limit(ls) => Some(ls.eta_static),
+        Outcome::Unresolved {
+            least_static: Some((eta, _)),
+            ..
+        } => Some(*eta),
+        _ => None,
+    }
 }
