@@ -297,6 +297,35 @@ struct WithBridge<'a, T> {
     keys: &'a crate::render::json::BridgeJson,
 }
 
+/// The last critical-position search of this process, with its inputs written out in
+/// full: `report` runs `load --critical` and `plot influence` on the same flags in one
+/// process, and the second takes the first's answer (a pure function of these inputs)
+/// instead of searching again.
+static LAST_CRITICAL: std::sync::Mutex<Option<(String, Critical)>> = std::sync::Mutex::new(None);
+
+/// [`critical`], or the last answer of this process for the very same inputs.
+#[allow(clippy::too_many_arguments)]
+fn critical_once(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    deck: &crate::bridge::Deck,
+    vehicle: &crate::bridge::Vehicle,
+    search: crate::bridge::Search,
+    settings: &Settings,
+) -> Result<Critical, InputError> {
+    let key = format!("{arch:?} {eta:?} {mu:?} {deck:?} {vehicle:?} {search:?} {settings:?}");
+    let last = LAST_CRITICAL.lock().ok().and_then(|g| g.clone());
+    if let Some((_, c)) = last.filter(|(k, _)| *k == key) {
+        return Ok(c);
+    }
+    let c = critical(arch, eta, mu, deck, vehicle, search, settings)?;
+    if let Ok(mut g) = LAST_CRITICAL.lock() {
+        *g = Some((key, c.clone()));
+    }
+    Ok(c)
+}
+
 /// A vehicle placed at `--at`, or at its critical position with `--critical`.
 struct Bridge {
     placed: Placed,
@@ -321,7 +350,7 @@ impl Bridge {
         let (at_m, critical) = match vehicle.at() {
             Some(at) => (at, None),
             None => {
-                let c = critical(
+                let c = critical_once(
                     arch,
                     eta,
                     mu,
