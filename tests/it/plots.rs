@@ -52,15 +52,7 @@ fn lines_keep_sub_pixel_coordinates() {
                 && n.attribute("stroke-width") == Some("2")
         })
         .expect("the line of thrust");
-    let pts: Vec<(f64, f64)> = thrust
-        .attribute("points")
-        .unwrap()
-        .split_whitespace()
-        .map(|p| {
-            let (x, y) = p.split_once(',').unwrap();
-            (x.parse().unwrap(), y.parse().unwrap())
-        })
-        .collect();
+    let pts = points_of(&thrust);
     assert!(pts.len() > 500, "{} points", pts.len());
     let fractional = pts.iter().filter(|p| p.0.fract() != 0.0).count();
     assert!(
@@ -370,20 +362,24 @@ fn output_format_follows_the_out_extension() {
 /// A polygon's fill, opacity and points.
 type Poly<'a> = (&'a str, f64, Vec<(f64, f64)>);
 
+/// The `points` of a polyline or polygon.
+fn points_of(n: &roxmltree::Node) -> Vec<(f64, f64)> {
+    n.attribute("points")
+        .unwrap()
+        .split_whitespace()
+        .map(|p| {
+            let (x, y) = p.split_once(',').unwrap();
+            (x.parse().unwrap(), y.parse().unwrap())
+        })
+        .collect()
+}
+
 /// Every polygon of the document.
 fn polygons<'a>(doc: &'a roxmltree::Document) -> Vec<Poly<'a>> {
     doc.descendants()
         .filter(|n| n.has_tag_name("polygon"))
         .map(|n| {
-            let pts = n
-                .attribute("points")
-                .unwrap()
-                .split_whitespace()
-                .map(|p| {
-                    let (x, y) = p.split_once(',').unwrap();
-                    (x.parse().unwrap(), y.parse().unwrap())
-                })
-                .collect();
+            let pts = points_of(&n);
             let opacity = n.attribute("opacity").map_or(1.0, |o| o.parse().unwrap());
             (n.attribute("fill").unwrap_or(""), opacity, pts)
         })
