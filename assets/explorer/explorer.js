@@ -540,6 +540,13 @@ function wire() {
     selectFigure(t.dataset.fig);
     stateSoon();
   }));
+  // the figures are drawn 960 px wide: beside the diagram their text is small, enlarged it
+  // spans the diagram's column too (three-column layout only; below it spans the page)
+  $("enlarge").addEventListener("click", () => {
+    const wide = document.querySelector("main").classList.toggle("wide-figure");
+    $("enlarge").setAttribute("aria-pressed", String(wide));
+    $("enlarge").textContent = wide ? "beside the diagram" : "enlarge";
+  });
   showShape();
   refreshCurve();
   refreshState();

@@ -138,6 +138,17 @@ test("the explorer follows the mu slider with the library's eta* and mode", { ti
     await page.screenshot({ path: shot, fullPage: false });
     assert.deepEqual(errors, [], "no console error or page error");
 
+    // "enlarge": the figure spans the diagram's column too, its text at least 1.8 times as
+    // large on the screen; pressed again it goes back beside the diagram
+    const figureWidth = () => page.evaluate(() => document.querySelector("#figure svg").getBoundingClientRect().width);
+    const narrow = await figureWidth();
+    await page.click("#enlarge");
+    const wide = await figureWidth();
+    assert.ok(wide >= 1.8 * narrow, `enlarged ${wide} px from ${narrow} px`);
+    assert.equal(await page.getAttribute("#enlarge", "aria-pressed"), "true");
+    await page.click("#enlarge");
+    assert.ok(Math.abs((await figureWidth()) - narrow) < 1, "back beside the diagram");
+
     // in metres: a 10 m semicircle with a 0.6 m ring is the arch alpha = 0 (the same eta*),
     // and the page shows what the ring gives (eta = 0.6/5.3) and the least ring
     await page.check('input[name="shape"][value="metres"]');
