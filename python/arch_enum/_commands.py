@@ -31,6 +31,10 @@ JSON_COMMANDS = ("solve", "curve", "modes", "assess", "load", "load-curve", "cer
 
 _FLAG = re.compile(r"--([a-z][a-z0-9-]*)")
 
+#: Flags given once per value (``plot curve --alpha 0 --alpha 1``): a sequence repeats them.
+#: Every other sequence is one comma-separated value (``--axles 100,100``).
+REPEATED = ("alpha",)
+
 
 def _python_name(flag: str) -> str:
     return flag.replace("-", "_")
@@ -94,6 +98,8 @@ def _option_flags(options: dict) -> List[str]:
         flag = "--" + key.replace("_", "-")
         if v is True or isinstance(v, np.bool_):
             out.append(flag)
+        elif key in REPEATED and isinstance(v, (list, tuple, np.ndarray)):
+            out += [f"{flag}={_number(f'{key}[{i}]', x)}" for i, x in enumerate(v)]
         elif isinstance(v, (dict, set, bytes)) or callable(v):
             raise TypeError(f"{key} must be a number, a string, True or a sequence, "
                             f"got {type(v).__name__}")

@@ -66,6 +66,8 @@ def test_report_and_plot():
     assert "<script" not in html.lower()
     svg = ae.plot("arch", SEMI, mu=0.35)
     assert svg.lstrip().startswith("<svg") and "mixed_sliding_rotational" in svg
+    curves = ae.plot("curve", alpha=[0, 1.15])  # a repeated flag: --alpha 0 --alpha 1.15
+    assert "α = 1.15" in curves and "α = 0" in curves
     influence = ae.plot("influence", **BRIDGE, axles=[100], critical=True, samples=9)
     assert influence.lstrip().startswith("<svg")
 
