@@ -81,6 +81,11 @@ pub(crate) struct ArchFillArgs {
 }
 
 impl ArchFillArgs {
+    /// Whether a fill was given.
+    pub(crate) fn given(&self) -> bool {
+        self.fill.given()
+    }
+
     /// The arch of `arch` with its fill, and the fill's description (`None` without fill).
     pub(crate) fn build(
         &self,

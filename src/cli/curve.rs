@@ -1,8 +1,10 @@
 //! `arch-enum curve`: η*(μ) sampled over a range of friction coefficients.
 
 use super::arch_args::ArchArgs;
+use super::bridge_args::ArchFillArgs;
 use super::io::{to_json, Exit, Io};
 use super::threads_arg::ThreadsArg;
+use crate::arch::InputError;
 use crate::friction::least_friction;
 use crate::limit_curve::{check_mu_range, mu_grid, sample};
 use crate::render::{json, table};
@@ -13,7 +15,10 @@ use clap::Args;
 pub(crate) struct CurveArgs {
     #[command(flatten)]
     arch: ArchArgs,
-    /// Smallest mu (default: mu_ms (1 + 1e-6), just above the least friction admitting equilibrium).
+    #[command(flatten)]
+    fill: ArchFillArgs,
+    /// Smallest mu (default: mu_ms (1 + 1e-6), just above the least friction admitting
+    /// equilibrium; with fill, where mu_ms depends on eta, it must be given).
     #[arg(long, allow_hyphen_values = true)]
     mu_min: Option<f64>,
     /// Largest mu (default: 10 * mu_min).
@@ -30,12 +35,23 @@ pub(crate) struct CurveArgs {
 }
 
 pub(crate) fn run(a: CurveArgs, settings: &Settings, io: &mut Io) -> Exit {
-    let arch = match a.arch.build_without_ring() {
-        Ok(a) => a,
+    let built = if a.fill.given() {
+        a.fill.build(&a.arch)
+    } else {
+        a.arch.build_without_ring().map(|arch| (arch, None))
+    };
+    let (arch, fill) = match built {
+        Ok(b) => b,
         Err(e) => return io.bad_input(&e),
     };
     if let Err(e) = check_mu_range(a.mu_min, a.mu_max) {
         return io.bad_input(&e);
+    }
+    if fill.is_some() && a.mu_min.is_none() {
+        return io.bad_input(&InputError::Inconsistent {
+            arg: "--mu-min",
+            reason: "with fill the least friction is a curve mu_ms(eta), not one number: give the range's --mu-min".into(),
+        });
     }
     let mu_ms = least_friction(&arch, settings).ok().flatten();
     let lo = a
@@ -58,9 +74,11 @@ pub(crate) fn run(a: CurveArgs, settings: &Settings, io: &mut Io) -> Exit {
         Err(e) => return io.bad_input(&e),
     };
     if a.json {
-        io.out(&to_json(&json::curve(&arch, mu_ms, &pts)));
+        let mut doc = json::curve(&arch, mu_ms, &pts);
+        doc.fill = fill;
+        io.out(&to_json(&doc));
     } else {
-        io.out(&table::curve(&arch, mu_ms, &pts));
+        io.out(&table::curve(&arch, mu_ms, fill.as_ref(), &pts));
     }
     Exit::Answered
 }

@@ -292,3 +292,43 @@ fn admissible_thicknesses_need_not_be_an_interval() {
         "the last limit state {top} is not where P closes, {lo}"
     );
 }
+
+/// `curve` with fill samples the least thickness of the arch with its fill: each point is
+/// `solve`'s η* with the same fill, to the last bit; the document carries the fill and no
+/// μ_ms (a curve μ_ms(η) with fill), so the range's --mu-min must be given, by name; without
+/// fill the document has no `fill` key, as before.
+#[test]
+fn curve_with_fill_samples_the_least_thickness_with_fill() {
+    let fill = ["--fill-ratio", "0.9", "--fill-height", "0.1"];
+    let range = ["--mu-min", "0.3", "--mu-max", "2", "--points", "5"];
+    let args = [&["curve", "--alpha", "0.3"][..], &fill, &range].concat();
+    let (doc, code) = crate::cli::json_of(&args);
+    assert_eq!(code, 0, "{doc}");
+    assert_eq!(doc["fill"]["weight_ratio"], 0.9);
+    assert!(doc["mu_ms"].is_null());
+    let arch = Arch::symmetric(0.3, WeightModel::Centreline)
+        .unwrap()
+        .with_fill(Fill::new(0.9, 0.1).unwrap());
+    let points = doc["points"].as_array().unwrap();
+    assert_eq!(points.len(), 5);
+    let mut limits = 0;
+    for p in points {
+        let mu = p["mu"].as_f64().unwrap();
+        match solve(&arch, mu, &Settings::default()).unwrap().outcome {
+            Outcome::Limit(ls) => {
+                assert_eq!(p["eta"].as_f64(), Some(ls.eta), "mu = {mu}");
+                limits += 1;
+            }
+            o => assert!(p["eta"].is_null(), "mu = {mu}: {o:?} but {p}"),
+        }
+    }
+    assert!(limits >= 3, "{limits} limit states");
+    let (err, code) = crate::cli::json_of(&[&["curve", "--alpha", "0.3"][..], &fill].concat());
+    assert_eq!(code, 2);
+    assert!(
+        err["message"].as_str().unwrap().contains("--mu-min"),
+        "{err}"
+    );
+    let (bare, _) = crate::cli::json_of(&[&["curve", "--alpha", "0.3"][..], &range].concat());
+    assert!(bare.get("fill").is_none());
+}

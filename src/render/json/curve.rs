@@ -1,5 +1,6 @@
 //! The `curve --json` document.
 
+use super::bridge::FillJson;
 use super::common::{status, ArchJson, JSON_VERSION};
 use crate::arch::Arch;
 use crate::contact::Contact;
@@ -27,6 +28,9 @@ pub struct CurveJson {
     arch: ArchJson,
     /// μ_ms, the least friction at which some thickness stands.
     mu_ms: Option<f64>,
+    /// The fill, as given (absent without fill).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fill: Option<FillJson>,
     points: Vec<CurveRow>,
 }
 
@@ -38,6 +42,7 @@ pub fn curve(arch: &Arch, mu_ms: Option<f64>, points: &[CurvePoint]) -> CurveJso
         status: "ok",
         arch: ArchJson::new(arch),
         mu_ms,
+        fill: None,
         points: points
             .iter()
             .map(|p| {

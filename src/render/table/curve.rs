@@ -4,18 +4,31 @@ use super::format::{describe_arch, eta_digits, fmt_mu, short, sig};
 use crate::arch::Arch;
 use crate::limit::Outcome;
 use crate::limit_curve::CurvePoint;
+use crate::render::json::FillJson;
 use std::f64::consts::PI;
 use std::fmt::Write;
 
 /// The human-readable table of `curve`.
-pub fn curve(arch: &Arch, mu_ms: Option<f64>, points: &[CurvePoint]) -> String {
+pub fn curve(
+    arch: &Arch,
+    mu_ms: Option<f64>,
+    fill: Option<&FillJson>,
+    points: &[CurvePoint],
+) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "{}", describe_arch(arch));
-    match mu_ms {
-        Some(m) => {
+    match (mu_ms, fill) {
+        (Some(m), _) => {
             let _ = writeln!(s, "least friction for equilibrium mu_ms = {}", sig(m, 12));
         }
-        None => {
+        (None, Some(f)) => {
+            s.push_str(&super::bridge::bridge(Some(f), None, None, None));
+            let _ = writeln!(
+                s,
+                "least friction      with fill a curve mu_ms(eta), not one number: where no thickness stands the sample says so"
+            );
+        }
+        (None, None) => {
             let _ = writeln!(s, "no finite friction coefficient admits equilibrium");
         }
     }
