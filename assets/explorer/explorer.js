@@ -149,9 +149,22 @@ async function refreshCurve() {
   const ctl = (curveCtl = new AbortController());
   const arch = archParams();
   if (hasFill()) {
-    // with fill mu_ms depends on eta: the eta-mu diagram is not computed (modes refuses it)
-    state.modes = state.curve = null;
-    $("mu-ms").textContent = "–";
+    // with fill mu_ms depends on eta and modes refuses it: eta*(mu) sampled by curve (the
+    // ring fixes r, and so the fill's depth ratio, in metres), without exact corners
+    try {
+      const withFill = { ...arch, ...fillParams(), ...(inMetres() ? thickness() : {}) };
+      const range = { "mu-min": String(MU_LO), "mu-max": String(MU_HI), points: "100" };
+      const curve = await getJson(url("curve", { ...withFill, ...range }), ctl.signal);
+      if (ctl.signal.aborted) return;
+      state.modes = { mu_ms: null, corners: [], branches: [], sampled: true };
+      state.curve = curve;
+      $("mu-ms").textContent = "– (with fill a curve μ_ms(η))";
+    } catch (e) {
+      if (e.name === "AbortError") return;
+      state.modes = state.curve = null;
+      if (e instanceof BadInput) showError(e.message);
+      else showError(String(e));
+    }
     drawDiagram();
     return;
   }
@@ -348,7 +361,7 @@ function drawDiagram() {
   const { modes, curve, solve, assess } = state;
   if (!modes || !curve) {
     svg.setAttribute("viewBox", `0 0 ${W} 60`);
-    const why = hasFill() ? "with fill μ_ms depends on η: the η–μ diagram is not computed" : "no diagram for these inputs";
+    const why = "no diagram for these inputs";
     el("text", { x: W / 2, y: 34, "text-anchor": "middle", class: "muted" }, svg, why);
     return;
   }
@@ -453,7 +466,7 @@ function drawDiagram() {
 
   // legend: the modes on this curve
   const legend = $("legend");
-  const seen = new Set(modes.branches.map((b) => b.mode));
+  const seen = new Set(modes.sampled ? pts.map((p) => p.mode).filter(Boolean) : modes.branches.map((b) => b.mode));
   for (const m of seen) {
     const item = document.createElement("span");
     item.className = "item";
@@ -464,7 +477,8 @@ function drawDiagram() {
   }
   const c = document.createElement("span");
   c.className = "item";
-  c.innerHTML = '<b class="cornerkey"></b>corner (exact)';
+  if (modes.sampled) c.textContent = "with fill: η*(μ) sampled at 100 μ (no exact corners; μ_ms depends on η)";
+  else c.innerHTML = '<b class="cornerkey"></b>corner (exact)';
   legend.appendChild(c);
 }
 
