@@ -560,6 +560,19 @@ fn verify(
     Ok(pattern)
 }
 
+/// Whether (x, λ) is admissible over the whole continuous arch at friction `mu`: the worst
+/// activation relative to its magnitude at most `settings.adm_tol`, as every refined state
+/// here is checked.
+pub(crate) fn admissible(
+    (arch, eta, load): (&Arch, f64, &LiveLoad),
+    mu: f64,
+    x: &Reactions,
+    lambda: f64,
+    settings: &Settings,
+) -> bool {
+    verify(&Loaded::new(arch, eta, mu, load), x, lambda, settings).is_ok()
+}
+
 /// How a pattern is solved: the least or largest multiplier (an underdetermined pattern is
 /// completed by the KKT conditions of that optimum), or a limit state of a discretisation
 /// carried over (no objective); and how far from its start the root may lie (relative).

@@ -15,11 +15,12 @@
 //! standing). A branch shorter than the sampling step between two samples on one branch is
 //! not seen: sample densely where that matters.
 
+use super::continuum;
 use super::outcome::LoadOutcome;
 use super::survey::{below, survey};
 use crate::arch::{Arch, InputError, JointLayout};
 use crate::contact::{Contact, ContactKind, Location};
-use crate::family;
+use crate::family::{self, Family};
 use crate::load::{rows, LiveLoad, LoadRow, Side};
 use crate::refine::{self, Objective, Start, Unknowns};
 use crate::settings::Settings;
@@ -479,8 +480,9 @@ fn least(answer: &Result<LoadOutcome, Undecided>) -> Option<LeastState> {
 /// at every joint.
 fn exact_corner(p: &Bisection, answers: &[&CurveSample], bracket: &Corner) -> Option<Corner> {
     let (arch, eta, load, settings) = (p.arch, p.eta, p.load, p.settings);
-    let JointLayout::Discrete(joints) = arch.layout() else {
-        return None;
+    let joints = match arch.layout() {
+        JointLayout::Discrete(joints) => Some(joints),
+        JointLayout::Continuous => None,
     };
     let (mu_lo, mu_hi) = (answers.first()?.0, answers.last()?.0);
     if !mu_hi.is_finite() {
@@ -491,27 +493,42 @@ fn exact_corner(p: &Bisection, answers: &[&CurveSample], bracket: &Corner) -> Op
         .filter_map(|(mu, a)| least(a).map(|(l, x, p)| (*mu, l, x, p)))
         .collect();
     let start = states.iter().max_by_key(|s| s.3.len())?;
+    let family = family::Load { arch, eta, load };
     // a contact's row in a list of the arch's rows at one μ
     let row_in = |list: &[LoadRow], c: &Contact, side: Side| -> Option<LoadRow> {
         list.iter()
             .copied()
             .find(|r| r.contact.beta == c.beta && r.contact.kind == c.kind && r.side == side)
     };
-    let at_start = rows(arch, joints, eta, start.0, load);
+    let at_start = joints.map(|js| rows(arch, js, eta, start.0, load));
+    // a contact's activation function at the start's μ, as (h, v, w, λ) coefficients and a
+    // constant: a joint's row, or on the continuous arch the function at its angle
+    let row_of = |c: &Contact, side: Side| -> Option<([f64; 4], f64)> {
+        match &at_start {
+            Some(list) => row_in(list, c, side).map(|r| (r.a, r.c)),
+            None => Some(
+                family
+                    .local(c.kind, c.beta, side, start.1, start.0)
+                    .coefficients(0),
+            ),
+        }
+    };
     // distinct activation functions (the extrados hinge on both sides of a loaded
     // section is one)
     let distinct = |pats: &[&Vec<(Contact, Side)>]| -> Option<Vec<(Contact, Side)>> {
         let mut union: Vec<(Contact, Side)> = Vec::new();
         for p in pats {
             for &(c, side) in p.iter() {
-                let r = row_in(&at_start, &c, side)?;
+                let (ra, rc) = row_of(&c, side)?;
                 // one function to rounding (the extrados hinge rows on both sides of a
                 // loaded section differ in the last bits only)
                 let close =
                     |p: f64, q: f64| (p - q).abs() <= TWIN_REL * (1.0 + p.abs().max(q.abs()));
                 let same = union.iter().any(|&(d, t)| {
-                    row_in(&at_start, &d, t)
-                        .is_some_and(|q| (0..4).all(|k| close(q.a[k], r.a[k])) && close(q.c, r.c))
+                    d.kind == c.kind
+                        && row_of(&d, t).is_some_and(|(qa, qc)| {
+                            (0..4).all(|k| close(qa[k], ra[k])) && close(qc, rc)
+                        })
                 });
                 if !same {
                     union.push((c, side));
@@ -529,8 +546,9 @@ fn exact_corner(p: &Bisection, answers: &[&CurveSample], bracket: &Corner) -> Op
     // (h, v, λ, μ); w is held at the start's (inside the face) and then centred in the band
     // the other rows leave it
     let w_free = |u: &[(Contact, Side)]| {
-        u.iter()
-            .all(|(c, side)| row_in(&at_start, c, *side).is_some_and(|r| r.a[2] == 0.0))
+        joints.is_some()
+            && u.iter()
+                .all(|(c, side)| row_of(c, *side).is_some_and(|r| r.0[2] == 0.0))
     };
     let union = candidates
         .into_iter()
@@ -541,9 +559,9 @@ fn exact_corner(p: &Bisection, answers: &[&CurveSample], bracket: &Corner) -> Op
     let continuous_at = |s: &(f64, f64, Reactions, Pattern), lambda: f64| {
         on_union(&s.3) || (s.1 - lambda).abs() <= SAME_LAMBDA * (1.0 + lambda.abs())
     };
-    // the one Newton in (h, v, w, λ, μ); with four sliding rows (no w in any) its
-    // minimum-norm steps leave w at the start's
-    let family = family::Load { arch, eta, load };
+    // the one Newton in (h, v, w, λ, μ) and the free angles of a continuous arch's
+    // tangencies; with four sliding rows (no w in any) its minimum-norm steps leave w at
+    // the start's
     let from = Start {
         x: start.2,
         t: start.1,
@@ -563,16 +581,22 @@ fn exact_corner(p: &Bisection, answers: &[&CurveSample], bracket: &Corner) -> Op
     if mu < mu_lo - widen || mu > mu_hi + widen {
         return None;
     }
-    let at_mu = rows(arch, joints, eta, mu, load);
-    if size == 4 {
-        centre_w(&at_mu, &mut x, lambda);
-    }
-    // admissible at every joint (to the survey's event tolerance)
-    let admissible = at_mu.iter().all(|r| {
-        let size =
-            magnitude(r.contact.kind, eta, mu, &x, settings.magnitude_floor) * (1.0 + lambda.abs());
-        r.at(&x, lambda) <= settings.event_tol * size
-    });
+    // admissible at every joint (to the survey's event tolerance), or over the whole
+    // continuous arch (as its refined states are checked)
+    let admissible = match joints {
+        Some(js) => {
+            let at_mu = rows(arch, js, eta, mu, load);
+            if size == 4 {
+                centre_w(&at_mu, &mut x, lambda);
+            }
+            at_mu.iter().all(|r| {
+                let size = magnitude(r.contact.kind, eta, mu, &x, settings.magnitude_floor)
+                    * (1.0 + lambda.abs());
+                r.at(&x, lambda) <= settings.event_tol * size
+            })
+        }
+        None => continuum::admissible((arch, eta, load), mu, &x, lambda, settings),
+    };
     let continuous =
         continuous_at(states.first()?, lambda) && continuous_at(states.last()?, lambda);
     admissible.then(|| Corner {
