@@ -1219,3 +1219,67 @@ fn continuous_lambda_static_matches_the_reference() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+
+/// An exact corner of `load-curve` on a continuous arch, checked with this file's own
+/// statics: the semicircle at η = 0.3 under a point load at 60°, between μ = 0.88 and 0.90
+/// (purely rotational above, rotation at the shoulders with sliding at the loaded section
+/// below). At the corner's (x, λ, μ) every contact of its pattern is active (|φ| ≤ 1e-9 of
+/// its scale), and no activation function exceeds that anywhere on a grid of 20 001 sections
+/// on both sides of the load; `load` at that μ has the corner's λ.
+#[test]
+fn continuous_load_curve_corner_is_exact() {
+    use arch_enum::load::Side;
+    use arch_enum::multiplier::trace;
+    let s = Settings::default();
+    let arch = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();
+    let (eta, bp) = (0.3, PI / 3.0);
+    let load = LiveLoad::Point { beta: bp };
+    let curve = trace(&arch, eta, &load, &[0.88, 0.90], &s, &|_, _| {}).unwrap();
+    let finite: Vec<_> = curve.corners.iter().filter(|c| c.mu < 0.9).collect();
+    assert_eq!(finite.len(), 1, "{:?}", curve.corners);
+    let c = finite[0];
+    assert!(c.exact && c.mu > 0.88 && c.mu < 0.90, "{c:?}");
+    let (x, lambda, mu) = (c.x, c.t, c.mu);
+    let phi = |k: usize, beta: f64, loaded: bool| {
+        let (n, t, m) = model::ntm(0.0, 1.0, x, beta);
+        let l = live_ntm(&load, 0.0, eta, 1.0, beta, beta.sin(), beta.cos(), loaded);
+        let scale = 1.0 + x.iter().map(|v| v.abs()).sum::<f64>() + lambda;
+        combine(
+            k,
+            eta,
+            mu,
+            [n + lambda * l[0], t + lambda * l[1], m + lambda * l[2]],
+        ) / scale
+    };
+    let family = |kind: arch_enum::ContactKind| {
+        arch_enum::ContactKind::active_at(mu)
+            .iter()
+            .position(|&k| k == kind)
+            .unwrap()
+    };
+    for (contact, side) in &c.pattern {
+        let loaded = if contact.beta == bp {
+            *side == Side::After
+        } else {
+            contact.beta > bp
+        };
+        let v = phi(family(contact.kind), contact.beta, loaded);
+        assert!(v.abs() <= 1e-9, "{contact:?} {side:?}: phi = {v:e}");
+    }
+    let worst = (0..=20_000)
+        .map(|i| PI * i as f64 / 20_000.0)
+        .flat_map(|b| [(b, b > bp), (b, b >= bp)])
+        .flat_map(|(b, loaded)| (0..4).map(move |k| (b, loaded, k)))
+        .map(|(b, loaded, k)| phi(k, b, loaded))
+        .fold(f64::NEG_INFINITY, f64::max);
+    assert!(worst <= 1e-9, "worst activation {worst:e}");
+    let at = arch_enum::multiplier::survey(&arch, eta, mu, &load, &s).unwrap();
+    let Ok(arch_enum::multiplier::LoadOutcome::Limits(sv)) = at else {
+        panic!("load at the corner: {at:?}");
+    };
+    let l = sv.lambda().unwrap();
+    assert!(
+        (l - lambda).abs() <= 1e-12 * lambda,
+        "load at the corner: {l} vs {lambda}"
+    );
+}
