@@ -581,22 +581,7 @@ fn exact_corner(p: &Bisection, answers: &[&CurveSample], bracket: &Corner) -> Op
     if mu < mu_lo - widen || mu > mu_hi + widen {
         return None;
     }
-    // admissible at every joint (to the survey's event tolerance), or over the whole
-    // continuous arch (as its refined states are checked)
-    let admissible = match joints {
-        Some(js) => {
-            let at_mu = rows(arch, js, eta, mu, load);
-            if size == 4 {
-                centre_w(&at_mu, &mut x, lambda);
-            }
-            at_mu.iter().all(|r| {
-                let size = magnitude(r.contact.kind, eta, mu, &x, settings.magnitude_floor)
-                    * (1.0 + lambda.abs());
-                r.at(&x, lambda) <= settings.event_tol * size
-            })
-        }
-        None => continuum::admissible((arch, eta, load), mu, &x, lambda, settings),
-    };
+    let admissible = corner_admissible(p, joints, size == 4, (mu, lambda), &mut x);
     let continuous =
         continuous_at(states.first()?, lambda) && continuous_at(states.last()?, lambda);
     admissible.then(|| Corner {
@@ -611,6 +596,31 @@ fn exact_corner(p: &Bisection, answers: &[&CurveSample], bracket: &Corner) -> Op
             continuous,
             ..bracket.detail
         },
+    })
+}
+
+/// Whether a corner's state (x at (μ, λ)) is admissible: at every joint to the survey's
+/// event tolerance (w first centred in its band when `w_free`: four sliding rows), or over
+/// the whole continuous arch, as its refined states are checked.
+fn corner_admissible(
+    p: &Bisection,
+    joints: Option<&Vec<f64>>,
+    w_free: bool,
+    (mu, lambda): (f64, f64),
+    x: &mut Reactions,
+) -> bool {
+    let (arch, eta, load, settings) = (p.arch, p.eta, p.load, p.settings);
+    let Some(js) = joints else {
+        return continuum::admissible((arch, eta, load), mu, x, lambda, settings);
+    };
+    let at_mu = rows(arch, js, eta, mu, load);
+    if w_free {
+        centre_w(&at_mu, x, lambda);
+    }
+    at_mu.iter().all(|r| {
+        let size =
+            magnitude(r.contact.kind, eta, mu, x, settings.magnitude_floor) * (1.0 + lambda.abs());
+        r.at(x, lambda) <= settings.event_tol * size
     })
 }
 
