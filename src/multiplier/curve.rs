@@ -257,6 +257,20 @@ impl Bisection<'_> {
     }
 }
 
+/// On a continuous arch (where each survey is costly) a bracket this narrow (relative) is
+/// not bisected further when its two ends already solve the corner exactly.
+const EARLY_REL: f64 = 1e-9;
+
+impl Bisection<'_> {
+    /// Whether the bracket (`lo`, `hi`) of a continuous arch is narrow and its ends give an
+    /// exact corner (which the clustering then solves again, with every change found).
+    fn solved_early(&self, lo: &CurveSample, hi: &CurveSample) -> bool {
+        matches!(self.arch.layout(), JointLayout::Continuous)
+            && hi.0 - lo.0 <= EARLY_REL * hi.0
+            && exact_corner(self, &[lo, hi], &bracket(lo.clone(), hi.clone(), false, 1)).is_some()
+    }
+}
+
 impl tracer::Problem for Bisection<'_> {
     type Sample = CurveSample;
     type Key = BranchKey;
@@ -278,6 +292,9 @@ impl tracer::Problem for Bisection<'_> {
         let tight = mid <= lo.0 || mid >= hi.0;
         if tight || self.budget == 0 || self.found >= MAX_CORNERS {
             return Split::Stop { tight };
+        }
+        if self.solved_early(lo, hi) {
+            return Split::Stop { tight: false };
         }
         self.budget -= 1;
         Split::At(mid)
