@@ -129,9 +129,10 @@ fn corner_values(opening: &'static str, arch: &Arch, c: &Corner) -> Vec<Value> {
     } else {
         format!("{}/{}", a.name(), b.name())
     };
-    let at = if tag == "rm" { "eta_rm" } else { "mu_ms" };
-    let at = if tag == "rm" || tag == "ms" {
-        at.to_string()
+    // where the paper's table gives the angles: at η_rm for the rotational corner, at the
+    // corner's μ otherwise
+    let at = if tag == "rm" {
+        "eta_rm".to_string()
     } else {
         format!("mu_{tag}")
     };

@@ -76,7 +76,7 @@ const CHAIN: usize = 16;
 const CHAIN_GUESS_REL: (f64, f64, f64) = (1e-2, 1e-9, 0.25);
 
 /// Solves η*(μ) at every μ of `mus` on `threads` threads (0 is taken as 1), in chains of
-/// 16 consecutive values, each started from the previous answer ([`solve_near`]: the
+/// `CHAIN` consecutive values, each started from the previous answer ([`solve_near`]: the
 /// same algorithm and root as [`crate::solve`], fewer margin LPs); `progress(done, total)`
 /// is called after each, from whichever thread finished it. A bad μ is reported as the
 /// first one in `mus` order.
