@@ -59,10 +59,10 @@ pub(super) enum Command {
         after_long_help = concat!("Example:\n  arch-enum solve --alpha 0 --mu 0.35\n  arch-enum solve --alpha 0.5 --blocks 12 --mu inf --json\n\n", mode_names!())
     )]
     Solve(solve::SolveArgs),
-    /// The whole eta-mu limit curve: branches with their collapse modes and exact corners.
+    /// The whole eta-mu limit curve: branches with their collapse modes and exact corners. With fill, the least friction mu_min(eta) of every thickness, traced in eta, and the least friction at which the arch stands at all.
     #[command(
-        after_help = "Example:\n  arch-enum modes --alpha 1.0\n  arch-enum modes --alpha-deg 30 --json\n  arch-enum modes --alpha 0 --blocks 20",
-        after_long_help = concat!("Example:\n  arch-enum modes --alpha 1.0\n  arch-enum modes --alpha-deg 30 --json\n  arch-enum modes --alpha 0 --blocks 20\n\n", mode_names!())
+        after_help = "Example:\n  arch-enum modes --alpha 1.0\n  arch-enum modes --alpha-deg 30 --json\n  arch-enum modes --alpha 0 --blocks 20\n  arch-enum modes --span 10 --rise 5 --ring 0.6 --unit-weight 20 --fill-weight 18 --fill-depth 0.3",
+        after_long_help = concat!("Example:\n  arch-enum modes --alpha 1.0\n  arch-enum modes --alpha-deg 30 --json\n  arch-enum modes --alpha 0 --blocks 20\n  arch-enum modes --span 10 --rise 5 --ring 0.6 --unit-weight 20 --fill-weight 18 --fill-depth 0.3\n\n", mode_names!())
     )]
     Modes(modes::ModesArgs),
     /// A certificate for eta*(mu): an admissible state at eta_hi (upper bound), a Farkas certificate at eta_lo (lower bound), the limit state; with --eta and a live load, for lambda_static and the limit states under the load.

@@ -9,7 +9,9 @@
 //! the scan says whether the admissible nodes form an interval (every node above the lowest
 //! admissible one admissible too). Between two nodes the margin is taken as monotone: an
 //! admissible island narrower than the spacing of the nodes (a ratio of about 1.26) is not
-//! seen, and the answer says so.
+//! seen, and the answer says so. Where no node is admissible, the margin's maximum near
+//! the best node is searched for such an island (just above the least friction at which
+//! the arch stands, the thicknesses that stand are one narrow island).
 
 use crate::admissibility::{Margin, WorkingSet};
 use crate::arch::{Arch, ETA_TOP};
@@ -76,10 +78,18 @@ pub(super) fn scan(
     ws: &mut WorkingSet,
     settings: &Settings,
 ) -> Result<(ThicknessScan, Option<Bracket<Margin>>), Undecided> {
-    let etas = nodes();
+    let mut etas = nodes();
     let mut margins = Vec::with_capacity(etas.len());
     for &eta in &etas {
         margins.push(margin_at(arch, eta, mu, modes, ws, settings)?);
+    }
+    if margins.iter().all(|m| m.margin < 0.0) {
+        let mut at = |eta: f64| margin_at(arch, eta, mu, modes, ws, settings);
+        if let Some((eta, m)) = island(&etas, &margins, &mut at)? {
+            let k = etas.partition_point(|&e| e < eta);
+            etas.insert(k, eta);
+            margins.insert(k, m);
+        }
     }
     let admissible: Vec<bool> = margins.iter().map(|m| m.margin >= 0.0).collect();
     let scan = ThicknessScan { etas, admissible };
@@ -92,4 +102,44 @@ pub(super) fn scan(
         _ => None,
     };
     Ok((scan, bracket))
+}
+
+/// The golden-section search for an admissible island between the nodes stops when its
+/// bracket is narrower than this, relative to η.
+const ISLAND_REL: f64 = 1e-12;
+
+/// When no node is admissible: an admissible thickness near the node of greatest margin,
+/// found by golden-section search for the margin's maximum between that node's neighbours
+/// (the margin taken as unimodal there). Just above the least friction at which the arch
+/// with its fill stands, the thicknesses that stand are a narrow island around one
+/// thickness, narrower than the spacing of the nodes.
+fn island(
+    etas: &[f64],
+    margins: &[Margin],
+    at: &mut impl FnMut(f64) -> Result<Margin, Undecided>,
+) -> Result<Option<(f64, Margin)>, Undecided> {
+    let k = (0..margins.len())
+        .max_by(|&i, &j| margins[i].margin.total_cmp(&margins[j].margin))
+        .expect("nodes");
+    let (mut lo, mut hi) = (etas[k.saturating_sub(1)], etas[(k + 1).min(etas.len() - 1)]);
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    let (mut c, mut d) = (hi - g * (hi - lo), lo + g * (hi - lo));
+    let (mut mc, mut md) = (at(c)?, at(d)?);
+    while hi - lo > ISLAND_REL * hi {
+        for (eta, m) in [(c, &mc), (d, &md)] {
+            if m.margin >= 0.0 {
+                return Ok(Some((eta, m.clone())));
+            }
+        }
+        if mc.margin >= md.margin {
+            (hi, d, md) = (d, c, mc);
+            c = hi - g * (hi - lo);
+            mc = at(c)?;
+        } else {
+            (lo, c, mc) = (c, d, md);
+            d = lo + g * (hi - lo);
+            md = at(d)?;
+        }
+    }
+    Ok(None)
 }

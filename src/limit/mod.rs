@@ -54,16 +54,16 @@ pub fn solve(arch: &Arch, mu: f64, settings: &Settings) -> Result<Solution, Inpu
 
 /// The questions whose method still assumes that the sliding rows do not depend on η (the
 /// friction limit μ_ms and the vertical branch of the limit curve) refuse an arch with fill
-/// by name: with fill every row depends on η, and μ_ms becomes a curve. Its least thickness
-/// at one μ (`solve`) and its live loads are solved.
+/// by name: with fill every row depends on η, and μ_ms becomes a curve; the limit curve is
+/// then traced in η ([`crate::limit_curve::filled`]).
 pub(crate) fn refuse_fill(arch: &Arch, what: &str) -> Result<(), InputError> {
     match arch.fill() {
         Some(_) => Err(InputError::Inconsistent {
             arg: "--fill-weight",
             reason: format!(
-                "{what} of an arch with fill is not solved yet (with fill the friction \
-                 limit depends on eta); its least thickness at one mu (solve) and its live \
-                 loads (load, load-curve) are"
+                "{what} of an arch with fill is not traced in mu (with fill the friction \
+                 limit depends on eta): it is traced in eta, as mu_min(eta) \
+                 (limit_curve::filled::trace, `modes` with the fill flags)"
             ),
         }),
         None => Ok(()),
@@ -196,7 +196,7 @@ fn solve_filled(
         (None, _) => Outcome::NoEquilibrium {
             mu_ms: None,
             reason: format!(
-                "with fill, no state is admissible at any of the {} thicknesses scanned from eta = {} to {} at mu = {} (between them the margin is taken as monotone)",
+                "with fill, no state is admissible at any of the {} thicknesses scanned from eta = {} to {} at mu = {} (between them the margin is taken as monotone, and its maximum near the best one is negative)",
                 scan.etas.len(),
                 filled::SCAN_FLOOR,
                 crate::arch::ETA_TOP,

@@ -27,6 +27,7 @@ use crate::statics::{internal_forces, Reactions};
 use crate::undecided::Undecided;
 
 mod boundary;
+pub mod filled;
 mod onset;
 mod sample;
 mod transition;

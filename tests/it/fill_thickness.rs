@@ -332,3 +332,90 @@ fn curve_with_fill_samples_the_least_thickness_with_fill() {
     let (bare, _) = crate::cli::json_of(&[&["curve", "--alpha", "0.3"][..], &range].concat());
     assert!(bare.get("fill").is_none());
 }
+
+impl Case {
+    /// The same arch and fill at friction `mu`.
+    fn at_mu(&self, mu: f64) -> Case {
+        Case {
+            br: self.br,
+            bl: self.bl,
+            joints: self.joints.clone(),
+            centroid: self.centroid,
+            gf: self.gf,
+            h: self.h,
+            mu,
+        }
+    }
+}
+
+/// `modes` with fill traces μ_min(η), the least friction at which each thickness stands,
+/// in η. On discrete arches with fill, checked by the reference's own LP at every exact
+/// sample: the thickness stands at μ_min (1 + 1e-7) and not at μ_min (1 − 1e-7). The
+/// least friction μ_f at which the arch stands at all: its thickness η_f stands at
+/// μ_f (1 + 1e-7), and at μ_f (1 − 1e-6) no thickness stands on 400 thicknesses spread
+/// over the whole range and 200 around η_f (below 1.99). The semicircle's μ_min(η) is not monotone (a
+/// thicker ring carries relatively less fill): μ_f lies inside the range, and `solve`
+/// just above μ_f finds the narrow island of thicknesses that stand (its η_s within 1e-3
+/// of η_f), which its scan of 64 thicknesses alone would miss.
+#[test]
+fn modes_with_fill_traces_the_least_friction_of_each_thickness() {
+    use arch_enum::limit_curve::filled;
+    let settings = Settings::default();
+    let cases = [
+        (0.0, PI, 12, false, 0.9, 0.0566),
+        (-0.5, PI + 0.5, 10, true, 0.6, 0.15),
+    ];
+    for (k, &(br, bl, n, centroid, gf, h)) in cases.iter().enumerate() {
+        let case = Case {
+            joints: equal_joints(br, bl, n),
+            br,
+            bl,
+            centroid,
+            gf,
+            h,
+            mu: f64::INFINITY,
+        };
+        let curve = filled::trace(&case.arch(), &settings, 2);
+        let exact: Vec<_> = curve.samples.iter().filter(|p| p.exact).collect();
+        assert!(exact.len() >= 12, "case {k}: {} exact samples", exact.len());
+        for p in exact {
+            assert!(
+                case.at_mu(p.mu * (1.0 + 1e-7)).feasible(p.eta),
+                "case {k}: {p:?}"
+            );
+            assert!(
+                !case.at_mu(p.mu * (1.0 - 1e-7)).feasible(p.eta),
+                "case {k}: {p:?}"
+            );
+        }
+        let least = curve.least.expect("a least friction");
+        assert!(case.at_mu(least.mu * (1.0 + 1e-7)).feasible(least.eta));
+        let below = case.at_mu(least.mu * (1.0 - 1e-6));
+        let wide = (0..400).map(|i| 1e-3 * (1.99f64 / 1e-3).powf(i as f64 / 399.0));
+        let near = (0..200).map(|i| least.eta * (0.99 + 0.02 * i as f64 / 199.0));
+        for eta in wide.chain(near.filter(|&e| e <= 1.99)) {
+            assert!(
+                !below.feasible(eta),
+                "case {k}: stands at eta = {eta} below mu_f"
+            );
+        }
+        let eta_inf = curve.eta_inf.expect("eta*(inf)");
+        assert!(least.eta > eta_inf, "case {k}: {least:?}");
+        if k == 0 {
+            assert!(
+                least.eta < 0.5,
+                "the semicircle's mu_min(eta) has an inner minimum"
+            );
+            let sol = solve(&case.arch(), least.mu * (1.0 + 1e-9), &settings).unwrap();
+            let Outcome::Limit(ls) = sol.outcome else {
+                panic!("just above mu_f: {:?}", sol.outcome)
+            };
+            assert!(
+                (ls.eta - least.eta).abs() < 1e-3 * least.eta,
+                "{} vs {}",
+                ls.eta,
+                least.eta
+            );
+        }
+    }
+}

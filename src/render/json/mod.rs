@@ -10,6 +10,7 @@ mod curve;
 mod load;
 mod load_curve;
 mod modes;
+mod modes_fill;
 mod solve;
 mod state;
 
@@ -22,4 +23,5 @@ pub use load::{load, LoadDoc};
 pub(crate) use load_curve::curve_row;
 pub use load_curve::{load_curve, LoadCurveDoc, LoadCurveRow};
 pub use modes::{modes, ModesJson};
+pub use modes_fill::{modes_fill, FillModesJson};
 pub use solve::{solve, SolveJson};

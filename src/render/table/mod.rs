@@ -10,6 +10,7 @@ mod format;
 mod load;
 mod load_curve;
 mod modes;
+mod modes_fill;
 mod solve;
 
 pub use assess::assess;
@@ -21,4 +22,5 @@ pub use format::{describe_arch, fmt_mu, pattern_table, right_half_angle, sig, Di
 pub use load::load;
 pub use load_curve::load_curve;
 pub use modes::modes;
+pub use modes_fill::modes_fill;
 pub use solve::solve;
