@@ -419,3 +419,75 @@ fn modes_with_fill_traces_the_least_friction_of_each_thickness() {
         }
     }
 }
+
+/// `modes --json` with fill in metres: the curve traced in η, its least friction with the
+/// ring in metres (span and rise held), every sample's μ_min equal to `assess`'s μ_min at
+/// that thickness to the last bit, and branches joining at the changes; the fill flags
+/// without the masonry's unit weight are bad input by name.
+#[test]
+fn modes_with_fill_in_metres() {
+    let args = [
+        "modes",
+        "--span",
+        "10",
+        "--rise",
+        "5",
+        "--ring",
+        "0.6",
+        "--unit-weight",
+        "20",
+        "--fill-weight",
+        "18",
+        "--fill-depth",
+        "0.3",
+    ];
+    let (doc, code) = crate::cli::json_of(&args);
+    assert_eq!(code, 0, "{doc}");
+    assert_eq!(doc["status"], "ok");
+    assert_eq!(doc["traced_in"], "eta");
+    assert_eq!(doc["fill"]["weight_kn_m3"], 18.0);
+    assert_eq!(doc["geometry"]["span_m"], 10.0);
+    let least = &doc["least_friction"];
+    let (mu_f, eta_f) = (
+        least["mu"].as_f64().unwrap(),
+        least["eta"].as_f64().unwrap(),
+    );
+    let ring_f = least["ring_m"].as_f64().unwrap();
+    assert!((ring_f - eta_f * 5.0 / (1.0 - eta_f / 2.0)).abs() < 1e-12);
+    let samples = doc["samples"].as_array().unwrap();
+    assert!(samples.len() >= 12);
+    let fill = Fill::new(0.9, 0.3 / 5.3).unwrap();
+    let arch = Arch::symmetric(0.0, WeightModel::Centreline)
+        .unwrap()
+        .with_fill(fill);
+    for p in samples {
+        let (eta, mu) = (p["eta"].as_f64().unwrap(), p["mu"].as_f64().unwrap());
+        assert!(mu >= mu_f, "{p}");
+        match arch_enum::assess::least_friction_for(&arch, eta, &Settings::default()) {
+            arch_enum::assess::LeastFriction::Finite { mu: m, .. } => assert_eq!(m, mu),
+            other => panic!("{other:?}"),
+        }
+    }
+    let branches = doc["branches"].as_array().unwrap();
+    let changes = doc["changes"].as_array().unwrap();
+    assert_eq!(branches.len(), changes.len() + 1);
+    for (b, c) in branches.windows(2).zip(changes) {
+        assert_eq!(b[0]["ends"][1]["eta"], c["ends"][0]["eta"]);
+        assert_eq!(b[1]["ends"][0]["eta"], c["ends"][1]["eta"]);
+    }
+    assert!(eta_f > doc["eta_inf"].as_f64().unwrap());
+    let (err, code) = crate::cli::json_of(&[
+        "modes",
+        "--alpha",
+        "0",
+        "--fill-weight",
+        "18",
+        "--fill-depth",
+        "0.3",
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err["message"].as_str().unwrap().contains("--fill-weight"),
+        "{err}"
+    );
+}
