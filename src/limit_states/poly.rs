@@ -174,6 +174,20 @@ impl Poly {
         if n == 0 {
             return (0.0, 0.0);
         }
+        let b = self.bernstein(lo, hi, n - 1);
+        b[..n]
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &v| {
+                (l.min(v), h.max(v))
+            })
+    }
+
+    /// The Bernstein coefficients of degree `deg` (at least the polynomial's degree, less
+    /// than [`MAX_COEFFS`]) over [lo, hi], the first `deg + 1` entries: a linear function of
+    /// the coefficients.
+    pub fn bernstein(&self, lo: f64, hi: f64, deg: usize) -> [f64; MAX_COEFFS] {
+        let n = deg + 1;
+        assert!(n >= self.n && n <= MAX_COEFFS, "Bernstein degree {deg}");
         // coefficients in t ∈ [0, 1] with η = lo + (hi − lo) t (Horner-like shift)
         let w = hi - lo;
         let mut c = self.c;
@@ -189,7 +203,6 @@ impl Poly {
         }
         // power basis in t → Bernstein: b_i = Σ_{k≤i} C(i,k) a_k / C(deg,k), with the rows
         // C(i, ·) of Pascal's triangle built by addition
-        let deg = n - 1;
         let mut cdeg = 1.0;
         for (k, ck) in c[..n].iter_mut().enumerate() {
             *ck /= cdeg;
@@ -197,19 +210,27 @@ impl Poly {
         }
         let mut row = [0.0; MAX_COEFFS];
         row[0] = 1.0;
-        let mut lo_b = f64::INFINITY;
-        let mut hi_b = f64::NEG_INFINITY;
-        for i in 0..=deg {
+        let mut out = [0.0; MAX_COEFFS];
+        for (i, o) in out[..n].iter_mut().enumerate() {
             if i > 0 {
                 for k in (1..=i).rev() {
                     row[k] += row[k - 1];
                 }
             }
-            let b: f64 = (0..=i).map(|k| row[k] * c[k]).sum();
-            lo_b = lo_b.min(b);
-            hi_b = hi_b.max(b);
+            *o = (0..=i).map(|k| row[k] * c[k]).sum();
         }
-        (lo_b, hi_b)
+        out
+    }
+
+    /// The polynomial times t^k (its degree stays below [`MAX_COEFFS`]).
+    pub fn shifted_up(&self, k: usize) -> Poly {
+        assert!(self.n + k <= MAX_COEFFS, "degree too large");
+        let mut r = Poly {
+            c: [0.0; MAX_COEFFS],
+            n: if self.n == 0 { 0 } else { self.n + k },
+        };
+        r.c[k..k + self.n].copy_from_slice(&self.c[..self.n]);
+        r
     }
 
     /// Every real root in the closed interval [lo, hi], ascending, each once; roots of even

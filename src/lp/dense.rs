@@ -205,7 +205,7 @@ fn dual_simplex(
 /// The kinematic LP of [`super::highs::kinematic`] (maximise `objective · λ` subject to
 /// Σ λ_j c_j = 0, `power · λ ≥ 0`, Σ λ = 1, λ ≥ 0) for small patterns, by enumerating the
 /// basic solutions of its five equality rows (power with a slack): where
-/// [`kinematic_applies`], [`kinematic_vertices`] once per pattern, then [`kinematic_best`]
+/// [`kinematic_rows`] is [`KinematicRows::Full`], [`kinematic_vertices`] once per pattern, then [`kinematic_best`]
 /// for each objective (`Infeasible` when there is no vertex). Elsewhere HiGHS solves it.
 /// The equality rows of the kinematic LP with the power slack: λ_j → (c_j, p_j, 1), the
 /// slack → (0, 0, 0, −1, 0).
@@ -217,16 +217,42 @@ fn kinematic_column(columns: &[[f64; 3]], power: &[f64], j: usize) -> [f64; 5] {
     }
 }
 
-/// Whether the enumeration of bases applies to these rates: 1 to 12 of them, and equality
-/// rows of full rank (independent of the objective: decided once for several solves).
-pub fn kinematic_applies(columns: &[[f64; 3]], power: &[f64]) -> bool {
+/// What the dense path makes of a kinematic LP's equality rows (independent of the
+/// objective: decided once for several solves).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum KinematicRows {
+    /// 1 to 12 rates and rows of full rank: the enumeration of bases applies.
+    Full,
+    /// 1 to 12 rates and rows that contradict each other whatever the signs of the rates
+    /// (the right-hand side outside their span, e.g. hinges whose rotations must sum to
+    /// zero and to one): the LP is infeasible.
+    Inconsistent,
+    /// Anything else (HiGHS solves it).
+    Other,
+}
+
+/// Classifies the equality rows of the kinematic LP of these rates ([`KinematicRows`]).
+pub fn kinematic_rows(columns: &[[f64; 3]], power: &[f64]) -> KinematicRows {
     use nalgebra::DMatrix;
     let n = columns.len();
     if n == 0 || n > 12 {
-        return false;
+        return KinematicRows::Other;
     }
-    let full = DMatrix::from_fn(5, n + 1, |r, c| kinematic_column(columns, power, c)[r]);
-    full.rank(1e2 * BASIS_TOL) >= 5
+    let rows = DMatrix::from_fn(5, n + 1, |r, c| kinematic_column(columns, power, c)[r]);
+    let rank = rows.rank(1e2 * BASIS_TOL);
+    if rank >= 5 {
+        return KinematicRows::Full;
+    }
+    // the right-hand side (0, 0, 0, 0, 1) appended as a column: a greater rank puts it
+    // outside the rows' span
+    let with_rhs = rows.insert_column(n + 1, 0.0);
+    let mut with_rhs = with_rhs;
+    with_rhs[(4, n + 1)] = 1.0;
+    if with_rhs.rank(1e2 * BASIS_TOL) > rank {
+        KinematicRows::Inconsistent
+    } else {
+        KinematicRows::Other
+    }
 }
 
 /// Every basic feasible solution of the kinematic LP's equality rows (the rates λ, in the

@@ -67,20 +67,30 @@ pub struct Kinematic<'a> {
     columns: &'a [[f64; 3]],
     power: &'a [f64],
     settings: &'a Settings,
-    /// The dense path's vertices; `None`: HiGHS solves it.
+    /// The dense path's vertices (none: infeasible, its equality rows inconsistent);
+    /// `None`: HiGHS solves it.
     vertices: Option<Vec<Vec<f64>>>,
 }
 
 impl<'a> Kinematic<'a> {
     /// The LP of these compatibility columns and powers.
     pub fn new(columns: &'a [[f64; 3]], power: &'a [f64], settings: &'a Settings) -> Self {
-        let dense =
-            settings.lp_backend == LpBackend::Dense && dense::kinematic_applies(columns, power);
+        let rows = match settings.lp_backend {
+            LpBackend::Dense => dense::kinematic_rows(columns, power),
+            LpBackend::Highs => dense::KinematicRows::Other,
+        };
+        let vertices = match rows {
+            dense::KinematicRows::Full => {
+                Some(dense::kinematic_vertices(columns, power, settings.rate_tol))
+            }
+            dense::KinematicRows::Inconsistent => Some(Vec::new()),
+            dense::KinematicRows::Other => None,
+        };
         Kinematic {
             columns,
             power,
             settings,
-            vertices: dense.then(|| dense::kinematic_vertices(columns, power, settings.rate_tol)),
+            vertices,
         }
     }
 

@@ -4,7 +4,7 @@
 
 use crate::arch::Arch;
 use crate::contact::{Contact, ContactKind, Location};
-use crate::limit_states::poly::Poly;
+use crate::limit_states::poly::{Poly, MAX_COEFFS};
 use crate::load::{rows, LiveLoad, Side};
 use crate::statics::{actions, Affine, Reactions};
 
@@ -243,6 +243,54 @@ fn deflated(p: Poly) -> Poly {
     p.shifted_down(p.zero_order())
 }
 
+/// A screen of the planes along a vertex's path over an interval where det keeps its sign:
+/// the crossing polynomial φ_l·det ([`Vertex::along`]) is linear in the plane's
+/// coefficients, and so are its Bernstein coefficients there. `basis` holds, for each
+/// coefficient of a plane (its constant term's powers of η, then each gradient
+/// component's), the Bernstein coefficients of what that coefficient multiplies (η^i det,
+/// η^i num_k), all of one degree.
+pub(super) struct Screen {
+    basis: Vec<[f64; MAX_COEFFS]>,
+    c_len: usize,
+    g_len: usize,
+    /// The number of Bernstein coefficients (degree + 1).
+    n: usize,
+    det_sign: f64,
+}
+
+/// A Bernstein coefficient clears the screen when its sign is det's opposite by more than
+/// this fraction of the sum of its terms' sizes (their rounding is far below).
+const SCREEN_REL: f64 = 1e-12;
+
+impl Screen {
+    /// Whether the plane stays strictly inside along the path over the whole interval:
+    /// every Bernstein coefficient of φ_l·det has det's opposite sign (beyond rounding), so
+    /// φ_l < 0 there and the plane crosses nowhere in it.
+    pub(super) fn inside(&self, l: &Plane) -> bool {
+        let (c, g) = (l.c.coeffs(), [0, 1, 2].map(|k| l.g[k].coeffs()));
+        if c.len() > self.c_len || g.iter().any(|q| q.len() > self.g_len) {
+            return false;
+        }
+        (0..self.n).all(|j| {
+            let (mut b, mut size) = (0.0, 0.0);
+            let mut add = |slot: usize, w: f64| {
+                let t = self.basis[slot][j] * w;
+                b += t;
+                size += t.abs();
+            };
+            for (i, &w) in c.iter().enumerate() {
+                add(i, w);
+            }
+            for (k, q) in g.iter().enumerate() {
+                for (i, &w) in q.iter().enumerate() {
+                    add(self.c_len + k * self.g_len + i, w);
+                }
+            }
+            self.det_sign * b < -SCREEN_REL * size
+        })
+    }
+}
+
 /// A vertex of P(η): three planes and its path x(η) = num(η)/det(η) (Cramer's rule).
 #[derive(Debug, Clone)]
 pub(super) struct Vertex {
@@ -292,6 +340,33 @@ impl Vertex {
         let d = self.det.eval(eta);
         [0, 1, 2].map(|k| self.num[k].eval(eta) / d)
     }
+    /// The screen of [`Screen`] over [lo, hi] for planes of at most `c_len` constant and
+    /// `g_len` gradient coefficients (`None` where their crossing polynomials would have
+    /// too high a degree, or det vanishes inside).
+    pub(super) fn screen(&self, c_len: usize, g_len: usize, lo: f64, hi: f64) -> Option<Screen> {
+        let degree = |p: &Poly| p.coeffs().len().saturating_sub(1);
+        let top_num = self.num.iter().map(degree).max().unwrap_or(0);
+        let n = (c_len.saturating_sub(1) + degree(&self.det))
+            .max(g_len.saturating_sub(1) + top_num)
+            + 1;
+        let det_sign = self.det.eval(0.5 * (lo + hi)).signum();
+        if n > MAX_COEFFS || det_sign == 0.0 {
+            return None;
+        }
+        let slot = |p: &Poly, i: usize| p.shifted_up(i).bernstein(lo, hi, n - 1);
+        let mut basis: Vec<[f64; MAX_COEFFS]> = (0..c_len).map(|i| slot(&self.det, i)).collect();
+        for num in &self.num {
+            basis.extend((0..g_len).map(|i| slot(num, i)));
+        }
+        Some(Screen {
+            basis,
+            c_len,
+            g_len,
+            n,
+            det_sign,
+        })
+    }
+
     /// φ_l(x(η), η) · det(η), a polynomial.
     #[inline]
     pub(super) fn along(&self, l: &Plane) -> Poly {

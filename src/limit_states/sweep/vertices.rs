@@ -74,10 +74,17 @@ impl Sweeper<'_> {
             .and_then(|r| r.first().copied())
             .unwrap_or(top);
         let mut first: Option<(f64, usize)> = None;
+        // the screen clears most planes at once; what it cannot clear is tested as before
+        let (c_len, g_len) = self.planes.iter().fold((0, 0), |(c, g), p| {
+            let gl = p.g.iter().map(|q| q.coeffs().len()).max().unwrap_or(0);
+            (c.max(p.c.coeffs().len()), g.max(gl))
+        });
+        let mut screen = v.screen(c_len, g_len, lo, hi);
         for (l, plane) in self.planes.iter().enumerate() {
-            if v.planes.contains(&l) {
+            if v.planes.contains(&l) || screen.as_ref().is_some_and(|s| s.inside(plane)) {
                 continue;
             }
+            let before = first;
             let p = v.along(plane);
             // φ_l = p / det stays negative on [lo, bound] when the Bernstein coefficients of
             // p there all have the sign opposite to det's (det keeps its sign before `hi`)
@@ -102,6 +109,10 @@ impl Sweeper<'_> {
                     first = Some((r, l));
                     break;
                 }
+            }
+            if first != before {
+                let bound = first.map_or(hi, |f| f.0);
+                screen = v.screen(c_len, g_len, lo, bound);
             }
         }
         first
