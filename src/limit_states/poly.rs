@@ -174,21 +174,51 @@ impl Poly {
         if n == 0 {
             return (0.0, 0.0);
         }
-        let b = self.bernstein(lo, hi, n - 1);
-        b[..n]
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &v| {
-                (l.min(v), h.max(v))
-            })
+        let c = self.unit_scaled(lo, hi, n - 1);
+        let mut row = [0.0; MAX_COEFFS];
+        row[0] = 1.0;
+        let mut lo_b = f64::INFINITY;
+        let mut hi_b = f64::NEG_INFINITY;
+        for i in 0..n {
+            if i > 0 {
+                for k in (1..=i).rev() {
+                    row[k] += row[k - 1];
+                }
+            }
+            let b: f64 = (0..=i).map(|k| row[k] * c[k]).sum();
+            lo_b = lo_b.min(b);
+            hi_b = hi_b.max(b);
+        }
+        (lo_b, hi_b)
     }
 
     /// The Bernstein coefficients of degree `deg` (at least the polynomial's degree, less
     /// than [`MAX_COEFFS`]) over [lo, hi], the first `deg + 1` entries: a linear function of
     /// the coefficients.
     pub fn bernstein(&self, lo: f64, hi: f64, deg: usize) -> [f64; MAX_COEFFS] {
+        let c = self.unit_scaled(lo, hi, deg);
+        let mut row = [0.0; MAX_COEFFS];
+        row[0] = 1.0;
+        let mut out = [0.0; MAX_COEFFS];
+        for (i, o) in out[..=deg].iter_mut().enumerate() {
+            if i > 0 {
+                for k in (1..=i).rev() {
+                    row[k] += row[k - 1];
+                }
+            }
+            *o = (0..=i).map(|k| row[k] * c[k]).sum();
+        }
+        out
+    }
+
+    /// The coefficients a_k / C(deg, k) in t ∈ [0, 1], η = lo + (hi − lo) t, from which the
+    /// Bernstein coefficients of degree `deg` over [lo, hi] are b_i = Σ_{k≤i} C(i,k) a_k /
+    /// C(deg,k) (the rows C(i, ·) of Pascal's triangle built by addition by the callers).
+    #[inline]
+    fn unit_scaled(&self, lo: f64, hi: f64, deg: usize) -> [f64; MAX_COEFFS] {
         let n = deg + 1;
         assert!(n >= self.n && n <= MAX_COEFFS, "Bernstein degree {deg}");
-        // coefficients in t ∈ [0, 1] with η = lo + (hi − lo) t (Horner-like shift)
+        // Horner-like shift to t, then the powers of the width
         let w = hi - lo;
         let mut c = self.c;
         for k in 0..n {
@@ -201,25 +231,12 @@ impl Poly {
             *ck *= scale;
             scale *= w;
         }
-        // power basis in t → Bernstein: b_i = Σ_{k≤i} C(i,k) a_k / C(deg,k), with the rows
-        // C(i, ·) of Pascal's triangle built by addition
         let mut cdeg = 1.0;
         for (k, ck) in c[..n].iter_mut().enumerate() {
             *ck /= cdeg;
             cdeg = cdeg * (deg - k) as f64 / (k + 1) as f64;
         }
-        let mut row = [0.0; MAX_COEFFS];
-        row[0] = 1.0;
-        let mut out = [0.0; MAX_COEFFS];
-        for (i, o) in out[..n].iter_mut().enumerate() {
-            if i > 0 {
-                for k in (1..=i).rev() {
-                    row[k] += row[k - 1];
-                }
-            }
-            *o = (0..=i).map(|k| row[k] * c[k]).sum();
-        }
-        out
+        c
     }
 
     /// The polynomial times t^k (its degree stays below [`MAX_COEFFS`]).

@@ -245,16 +245,15 @@ fn deflated(p: Poly) -> Poly {
 
 /// A screen of the planes along a vertex's path over an interval where det keeps its sign:
 /// the crossing polynomial φ_l·det ([`Vertex::along`]) is linear in the plane's
-/// coefficients, and so are its Bernstein coefficients there. `basis` holds, for each
-/// coefficient of a plane (its constant term's powers of η, then each gradient
-/// component's), the Bernstein coefficients of what that coefficient multiplies (η^i det,
-/// η^i num_k), all of one degree.
+/// coefficients, and so are its Bernstein coefficients there. A plane's coefficients fill
+/// slots (its constant term's powers of η, then each gradient component's); each slot
+/// multiplies a polynomial (η^i det, η^i num_k) whose Bernstein coefficients, all of one
+/// degree, are held by coefficient, then slot.
 pub(super) struct Screen {
-    basis: Vec<[f64; MAX_COEFFS]>,
+    /// For each Bernstein coefficient in turn, its value for each slot.
+    by_degree: Vec<f64>,
     c_len: usize,
     g_len: usize,
-    /// The number of Bernstein coefficients (degree + 1).
-    n: usize,
     det_sign: f64,
 }
 
@@ -271,20 +270,20 @@ impl Screen {
         if c.len() > self.c_len || g.iter().any(|q| q.len() > self.g_len) {
             return false;
         }
-        (0..self.n).all(|j| {
+        let slots = self.c_len + 3 * self.g_len;
+        self.by_degree.chunks_exact(slots).all(|row| {
+            let (rc, rg) = row.split_at(self.c_len);
             let (mut b, mut size) = (0.0, 0.0);
-            let mut add = |slot: usize, w: f64| {
-                let t = self.basis[slot][j] * w;
-                b += t;
-                size += t.abs();
-            };
-            for (i, &w) in c.iter().enumerate() {
-                add(i, w);
-            }
-            for (k, q) in g.iter().enumerate() {
-                for (i, &w) in q.iter().enumerate() {
-                    add(self.c_len + k * self.g_len + i, w);
+            let mut dot = |r: &[f64], w: &[f64]| {
+                for (x, y) in r.iter().zip(w) {
+                    let t = x * y;
+                    b += t;
+                    size += t.abs();
                 }
+            };
+            dot(rc, c);
+            for (k, q) in g.iter().enumerate() {
+                dot(&rg[k * self.g_len..], q);
             }
             self.det_sign * b < -SCREEN_REL * size
         })
@@ -353,16 +352,23 @@ impl Vertex {
         if n > MAX_COEFFS || det_sign == 0.0 {
             return None;
         }
-        let slot = |p: &Poly, i: usize| p.shifted_up(i).bernstein(lo, hi, n - 1);
-        let mut basis: Vec<[f64; MAX_COEFFS]> = (0..c_len).map(|i| slot(&self.det, i)).collect();
-        for num in &self.num {
-            basis.extend((0..g_len).map(|i| slot(num, i)));
+        let slots = c_len + 3 * g_len;
+        let mut by_degree = vec![0.0; n * slots];
+        let polys = (0..c_len).map(|i| (&self.det, i)).chain(
+            self.num
+                .iter()
+                .flat_map(|num| (0..g_len).map(move |i| (num, i))),
+        );
+        for (s, (p, i)) in polys.enumerate() {
+            let b = p.shifted_up(i).bernstein(lo, hi, n - 1);
+            for j in 0..n {
+                by_degree[j * slots + s] = b[j];
+            }
         }
         Some(Screen {
-            basis,
+            by_degree,
             c_len,
             g_len,
-            n,
             det_sign,
         })
     }

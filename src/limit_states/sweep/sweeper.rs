@@ -25,6 +25,9 @@ pub(super) struct Sweeper<'a> {
     /// The end of the sweep: η's thickness limit, or λ_static.
     pub(super) top: f64,
     pub(super) planes: Vec<Plane>,
+    /// The most coefficients of any plane's constant term and of any gradient component
+    /// (the slots of a vertex's screen), when the planes are many enough to screen.
+    pub(super) screen_slots: Option<(usize, usize)>,
     pub(super) settings: &'a Settings,
     /// The vertices alive, each with its death (the parameter and the plane that crosses
     /// it), `None` when it survives to the top.
@@ -36,6 +39,15 @@ pub(super) struct Sweeper<'a> {
     pub(super) lp_failure: Option<Undecided>,
 }
 
+/// Below this many planes a vertex's death tests each plane on its own: building the
+/// screen costs about as much as testing some dozens of planes.
+const SCREEN_MIN_PLANES: usize = 200;
+
+/// The screen is used only where its products per plane (Bernstein coefficients × slots,
+/// at most) are at most this: beyond (the true centroid's higher degrees), a plane's own
+/// crossing polynomial is as cheap to bound.
+const SCREEN_MAX_WORK: usize = 60;
+
 impl<'a> Sweeper<'a> {
     /// A sweep over `planes` up to `top`, with nothing alive or found yet.
     pub(super) fn new(
@@ -46,12 +58,23 @@ impl<'a> Sweeper<'a> {
         planes: Vec<Plane>,
         settings: &'a Settings,
     ) -> Sweeper<'a> {
+        let (c_len, g_len) = planes.iter().fold((0, 0), |(c, g), p| {
+            let gl = p.g.iter().map(|q| q.coeffs().len()).max().unwrap_or(0);
+            (c.max(p.c.coeffs().len()), g.max(gl))
+        });
+        // a vertex's det has degree ≤ 3 (g_len − 1), its numerators ≤ 2 (g_len − 1) +
+        // c_len − 1: the crossing polynomials' coefficients are at most c_len + 3 g_len − 3
+        let slots = c_len + 3 * g_len;
+        let work = slots * (slots.saturating_sub(3)).max(1);
+        let screen_slots = (planes.len() >= SCREEN_MIN_PLANES && work <= SCREEN_MAX_WORK)
+            .then_some((c_len, g_len));
         Sweeper {
             arch,
             mu,
             param,
             top,
             planes,
+            screen_slots,
             settings,
             alive: Vec::new(),
             states: Vec::new(),

@@ -75,11 +75,11 @@ impl Sweeper<'_> {
             .unwrap_or(top);
         let mut first: Option<(f64, usize)> = None;
         // the screen clears most planes at once; what it cannot clear is tested as before
-        let (c_len, g_len) = self.planes.iter().fold((0, 0), |(c, g), p| {
-            let gl = p.g.iter().map(|q| q.coeffs().len()).max().unwrap_or(0);
-            (c.max(p.c.coeffs().len()), g.max(gl))
-        });
-        let mut screen = v.screen(c_len, g_len, lo, hi);
+        let build = |bound: f64| {
+            self.screen_slots
+                .and_then(|(c_len, g_len)| v.screen(c_len, g_len, lo, bound))
+        };
+        let mut screen = build(hi);
         for (l, plane) in self.planes.iter().enumerate() {
             if v.planes.contains(&l) || screen.as_ref().is_some_and(|s| s.inside(plane)) {
                 continue;
@@ -111,8 +111,7 @@ impl Sweeper<'_> {
                 }
             }
             if first != before {
-                let bound = first.map_or(hi, |f| f.0);
-                screen = v.screen(c_len, g_len, lo, bound);
+                screen = build(first.map_or(hi, |f| f.0));
             }
         }
         first
