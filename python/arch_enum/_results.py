@@ -376,14 +376,20 @@ class Lines(_Result):
     e_t: np.ndarray
 
 
+def _f64(b: bytes) -> np.ndarray:
+    """A read-only 1-D float array from the bytes of little-endian f64 (the native module
+    hands the lines over so, without a Python float per number)."""
+    return np.frombuffer(b, dtype="<f8")
+
+
 def _lines(d: Optional[Dict[str, Any]]) -> Tuple[Optional[Lines], np.ndarray, Optional[np.ndarray],
                                                   np.ndarray]:
     if d is None:
         empty = _points([])
         return None, empty, None, empty
-    lines = Lines(_array(d["beta"]), _array(d["n"]), _array(d["e_m"]), _array(d["e_t"]))
-    friction = _points(d["friction_line"]) if d["friction_line"] else None
-    return lines, _points(d["thrust_line"]), friction, _points(d["outline"])
+    lines = Lines(_f64(d["beta"]), _f64(d["n"]), _f64(d["e_m"]), _f64(d["e_t"]))
+    friction = _f64(d["friction_line"]).reshape(-1, 2) if d["friction_line"] else None
+    return lines, _f64(d["thrust_line"]).reshape(-1, 2), friction, _f64(d["outline"]).reshape(-1, 2)
 
 
 @dataclass(frozen=True, eq=False)

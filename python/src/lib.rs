@@ -26,7 +26,7 @@ use arch_enum::render::{compas, json, plot_arch, plot_curve};
 use arch_enum::{Arch, Settings, WeightModel};
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList};
+use pyo3::types::{PyBytes, PyDict, PyList};
 use serde_json::Value;
 
 /// The arch as Python describes it: (alpha, beta_right, beta_left, blocks, joints, weight,
@@ -183,24 +183,30 @@ fn figure_error(e: impl std::fmt::Display) -> PyErr {
     PyRuntimeError::new_err(format!("no figure: {e}"))
 }
 
-/// The lines of a scene as plain numbers: the samples (β, N, e_M, e_T) and the lines of
-/// thrust and friction as (x, y) points in units of r.
-fn lines_json(scene: &ArchScene) -> Value {
-    let col = |f: fn(&figures::thrust_line::Eccentricity) -> f64| -> Vec<f64> {
-        scene.lines.iter().map(f).collect()
+/// Numbers as the bytes of little-endian f64 (NumPy reads them without a Python float each).
+fn f64_bytes<'py>(py: Python<'py>, v: impl Iterator<Item = f64>) -> Bound<'py, PyBytes> {
+    let bytes: Vec<u8> = v.flat_map(f64::to_le_bytes).collect();
+    PyBytes::new(py, &bytes)
+}
+
+/// The lines of a scene: the samples (β, N, e_M, e_T) and the lines of thrust and friction
+/// as (x, y) points in units of r, each as the bytes of little-endian f64 ([`f64_bytes`];
+/// points interleaved x, y), and the η drawn.
+fn lines_py<'py>(py: Python<'py>, scene: &ArchScene) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    let col = |f: fn(&figures::thrust_line::Eccentricity) -> f64| {
+        f64_bytes(py, scene.lines.iter().map(f))
     };
-    let pts =
-        |p: Vec<(f64, f64)>| -> Vec<[f64; 2]> { p.into_iter().map(|(x, y)| [x, y]).collect() };
-    serde_json::json!({
-        "beta": col(|e| e.beta),
-        "n": col(|e| e.n),
-        "e_m": col(|e| e.e_m),
-        "e_t": col(|e| e.e_t),
-        "eta": scene.eta,
-        "thrust_line": pts(scene.thrust_line()),
-        "friction_line": pts(scene.friction_line()),
-        "outline": pts(scene.outline()),
-    })
+    let pts = |p: Vec<(f64, f64)>| f64_bytes(py, p.into_iter().flat_map(|(x, y)| [x, y]));
+    d.set_item("beta", col(|e| e.beta))?;
+    d.set_item("n", col(|e| e.n))?;
+    d.set_item("e_m", col(|e| e.e_m))?;
+    d.set_item("e_t", col(|e| e.e_t))?;
+    d.set_item("eta", scene.eta)?;
+    d.set_item("thrust_line", pts(scene.thrust_line()))?;
+    d.set_item("friction_line", pts(scene.friction_line()))?;
+    d.set_item("outline", pts(scene.outline()))?;
+    Ok(d)
 }
 
 /// The engineer's description (bridge spec §1): clear span and rise of the intrados and,
@@ -238,18 +244,19 @@ fn arch<'py>(py: Python<'py>, spec: ArchIn) -> PyResult<Bound<'py, PyAny>> {
 #[pyfunction]
 fn solve<'py>(py: Python<'py>, spec: ArchIn, mu: f64) -> PyResult<Bound<'py, PyAny>> {
     let arch = build_arch(&spec)?;
-    let (d, lines) = py
-        .detach(|| -> Result<(Value, Value), InputError> {
+    let (d, scene) = py
+        .detach(|| -> Result<(Value, Option<ArchScene>), InputError> {
             let sv = survey(&arch, mu, &Settings::default())?;
             let d = serde_json::to_value(json::solve(&sv, false, &sv.rays(&Settings::default())))
                 .expect("serialisable");
-            let lines = figures::survey_scene(&sv, &Settings::default())
-                .map_or(Value::Null, |s| lines_json(&s));
-            Ok((d, lines))
+            Ok((d, figures::survey_scene(&sv, &Settings::default()).ok()))
         })
         .map_err(value_error)?;
     let out = to_py(py, &d)?;
-    out.set_item("lines", to_py(py, &lines)?)?;
+    match scene {
+        Some(s) => out.set_item("lines", lines_py(py, &s)?)?,
+        None => out.set_item("lines", py.None())?,
+    }
     Ok(out)
 }
 
