@@ -158,8 +158,15 @@ def curve(arch: Arch, mu: Any, *, threads: Optional[int] = None) -> CurveResult:
 
 def modes(arch: Arch) -> ModesResult:
     """The whole eta-mu limit curve of ``arch``: branches with their collapse modes,
-    exact corners and the limit states above the boundary (``arch-enum modes``)."""
+    exact corners and the limit states above the boundary (``arch-enum modes``). With fill
+    the curve is traced in eta as mu_min(eta), a document of another shape: ``run("modes",
+    arch)`` returns it (a ``ValueError`` naming ``fill_ratio`` here)."""
     a = _arch(arch)
+    if a.fill_ratio is not None:
+        raise ValueError(
+            "invalid fill_ratio: with fill the limit curve is traced in eta as mu_min(eta), "
+            "a document of its own: ae.run('modes', arch) returns it"
+        )
     return ModesResult._of(a, _native.modes(a._spec()))
 
 

@@ -28,6 +28,19 @@ def test_run_is_the_command_line(cli):
     assert ae.run("solve", SEMI, mu=0.35)["eta"] == ae.solve(SEMI, 0.35).eta
 
 
+def test_modes_with_fill_is_traced_in_eta(cli):
+    filled = ae.Arch(alpha=0, fill_ratio=0.9, fill_height=0.0566)
+    code, doc = cli("modes", "--alpha", "0", "--fill-ratio", "0.9", "--fill-height", "0.0566",
+                    "--json")
+    assert code == 0
+    mine = ae.run("modes", filled)
+    assert mine["traced_in"] == "eta" and mine["status"] == "ok"
+    agree(mine, doc, "modes")
+    with pytest.raises(ValueError) as e:
+        ae.modes(filled)
+    assert "fill_ratio" in str(e.value) and "--" not in str(e.value)
+
+
 def test_load_curve_and_critical_match_the_cli(cli):
     # twelve voussoirs: the corners are exact in a few seconds (the continuous arch's
     # corner bisection takes about a minute here)
