@@ -137,6 +137,9 @@ pub(crate) enum Figure {
         /// Log-scale eta axis (for shallow arches, e.g. --alpha -1.2).
         #[arg(long)]
         log_eta: bool,
+        /// With fill (one opening): the curve mu_min(eta), traced in eta, as `modes` gives it.
+        #[command(flatten)]
+        fill: super::bridge_args::FillArgs,
         #[command(flatten)]
         output: Output,
     },
@@ -296,6 +299,16 @@ pub(crate) fn draw(figure: Figure, settings: &Settings, io: &mut Io) -> Result<S
     let bar = super::progress::Progress::new("map");
     let progress = |done: usize, total: usize| bar.update(done, total);
     let drawn: Result<Result<String, String>, figures::NoFigure> = match figure {
+        Figure::Curve {
+            alpha,
+            weight,
+            fill,
+            ..
+        } if fill.given() => match fill_arch(&alpha, weight.into(), &fill) {
+            Ok(a) => figures::fill_curve::fill_curve(&a, settings, crate::threads::available())
+                .map(|d| crate::render::plot_fill_curve::svg(&d)),
+            Err(e) => return Err(io.bad_input(&e)),
+        },
         Figure::Curve {
             alpha,
             weight,
@@ -495,4 +508,23 @@ fn arch_figure(
         },
         Err(e) => return Err(io.bad_input(&e)),
     })
+}
+
+/// The one arch of `plot curve` with fill (the fill in ratios: `--fill-ratio --fill-height`).
+fn fill_arch(
+    alpha: &[f64],
+    weight: crate::arch::WeightModel,
+    fill: &super::bridge_args::FillArgs,
+) -> Result<Arch, InputError> {
+    let [a] = alpha else {
+        return Err(InputError::Inconsistent {
+            arg: "--alpha",
+            reason: "with fill, plot curve draws one opening (give --alpha once)".into(),
+        });
+    };
+    let arch = Arch::symmetric(*a, weight)?;
+    match fill.build(None)? {
+        Some((f, _)) => Ok(arch.with_fill(f)),
+        None => Ok(arch),
+    }
 }

@@ -5,6 +5,7 @@
 //!
 //! Lengths are divided by r and angles are in radians, as everywhere in the crate.
 
+pub mod fill_curve;
 pub mod margin_map;
 pub mod polylines;
 pub mod thrust_line;

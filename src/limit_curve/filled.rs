@@ -98,7 +98,7 @@ pub struct FillCurve {
 }
 
 /// μ_min at `eta`, with its mode (`None` where no friction suffices).
-fn point(arch: &Arch, eta: f64, settings: &Settings) -> Option<FrictionPoint> {
+pub fn point(arch: &Arch, eta: f64, settings: &Settings) -> Option<FrictionPoint> {
     match least_friction_for(arch, eta, settings) {
         LeastFriction::Finite { mu, pattern, exact } if mu.is_finite() => {
             let mid = 0.5 * (arch.beta_right() + arch.beta_left());

@@ -18,6 +18,8 @@ pub mod plot_atlas;
 pub mod plot_curve;
 #[cfg(feature = "svg")]
 pub mod plot_ecc;
+#[cfg(feature = "svg")]
+pub mod plot_fill_curve;
 pub mod plot_influence;
 #[cfg(feature = "svg")]
 pub mod plot_load_curve;

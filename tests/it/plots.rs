@@ -761,3 +761,85 @@ fn extreme_mechanisms_of_a_two_dof_cone() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--mechanism: 3 (valid range: 1 to 2"));
 }
+
+/// `plot curve` with fill draws μ_min(η) (traced in η): thick polylines in the modes'
+/// colours through many points, the least friction μ_f marked where the curve turns (no
+/// point of the curve lies left of it), the safe domain tinted right of the curve, and
+/// the labels of μ_f and η*(∞). With fill the figure takes one opening, by name.
+#[test]
+fn fill_curve_figure_turns_at_the_least_friction() {
+    use arch_enum::bridge::Fill;
+    use arch_enum::figures::fill_curve::fill_curve;
+    use arch_enum::render::plot_curve::SAFE_TINT;
+    let arch = semicircle().with_fill(Fill::new(0.9, 0.0566).unwrap());
+    let data = fill_curve(&arch, &Settings::default(), 2).unwrap();
+    let svg = arch_enum::render::plot_fill_curve::svg(&data).unwrap();
+    let doc = parse(&svg);
+    let curve: Vec<(f64, f64)> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("polyline") && n.attribute("stroke-width") == Some("3"))
+        .filter(|n| n.attribute("points").unwrap().split_whitespace().count() > 2)
+        .flat_map(|n| points_of(&n))
+        .collect();
+    assert!(curve.len() > 100, "{} points", curve.len());
+    let marks: Vec<(f64, f64)> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("circle") && n.attribute("r") == Some("6"))
+        .map(|n| {
+            let at = |a: &str| n.attribute(a).unwrap().parse::<f64>().unwrap();
+            (at("cx"), at("cy"))
+        })
+        .collect();
+    assert_eq!(marks.len(), 2, "the least friction and the legend's marker");
+    let least = marks
+        .iter()
+        .copied()
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .unwrap();
+    let left = curve.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
+    assert!(
+        (left - least.0).abs() < 1.0,
+        "curve's left end {left} vs mu_f at {}",
+        least.0
+    );
+    // the turn is inside: points of the curve lie above and below the mark
+    assert!(
+        curve.iter().any(|p| p.1 < least.1 - 50.0) && curve.iter().any(|p| p.1 > least.1 + 50.0)
+    );
+    assert!(polygons(&doc).iter().any(|p| p.0 == hex(SAFE_TINT)));
+    assert!(
+        svg.contains("μ_f = 0.260") && svg.contains("η*(∞) = 0.0646"),
+        "labels"
+    );
+    let dir = std::env::temp_dir().join(format!("fill_curve_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("c.svg");
+    let two = [
+        "curve",
+        "--alpha",
+        "0",
+        "--alpha",
+        "1",
+        "--fill-ratio",
+        "0.9",
+        "--fill-height",
+        "0.05",
+    ];
+    let o = plot(&two, &out);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--alpha"));
+    let one = [
+        "curve",
+        "--alpha",
+        "0",
+        "--fill-ratio",
+        "0.9",
+        "--fill-height",
+        "0.05",
+    ];
+    assert_eq!(plot(&one, &out).status.code(), Some(0));
+    assert!(std::fs::read_to_string(&out)
+        .unwrap()
+        .contains("least friction"));
+    std::fs::remove_dir_all(&dir).ok();
+}
