@@ -1,7 +1,8 @@
 //! Regenerates the gallery into a folder: for α_s ∈ {−π/6, 0, π/6, 1, 1.15} one arch
 //! figure per collapse mode present on its limit curve (at the middle of each branch; on
 //! the vertical branch at μ_ms, a purely sliding limit state at 1.25 η_ms),
-//! the limit curves of all five in one figure, and one margin map; SVG and PNG of each.
+//! the limit curves of all five in one figure, the semicircle's curve with fill, and one
+//! margin map; SVG and PNG of each.
 //!
 //! ```sh
 //! cargo run --release --example gallery -- docs/gallery
@@ -66,6 +67,17 @@ fn main() {
         "curves",
         &plot_curve::svg(&figures::curves(&arches, &s).expect("curves"), false)
             .expect("curve figure"),
+    );
+    // the semicircle with fill: μ_min(η), the least friction where the curve turns
+    let filled = arches[1]
+        .clone()
+        .with_fill(arch_enum::bridge::Fill::new(0.9, 0.0566).expect("fill"));
+    let fill_curve = figures::fill_curve::fill_curve(&filled, &s, available_threads());
+    save(
+        dir,
+        "fill_curve_alpha_0",
+        &arch_enum::render::plot_fill_curve::svg(&fill_curve.expect("fill curve"))
+            .expect("fill curve figure"),
     );
     save(
         dir,
