@@ -25,7 +25,16 @@ from typing import Any, Optional, Union
 import numpy as np
 
 from . import _native
-from ._commands import JSON_COMMANDS, certify_load, critical, load_curve, plot, report, run
+from ._commands import (
+    JSON_COMMANDS,
+    Document,
+    certify_load,
+    critical,
+    load_curve,
+    plot,
+    report,
+    run,
+)
 from ._results import (
     Arch,
     AssessResult,
@@ -58,6 +67,7 @@ __version__: str = _native.__version__
 LP_SOLVER: str = _native.LP_SOLVER
 
 __all__ = [
+    "Document",
     "geometry",
     "atlas",
     "Arch",

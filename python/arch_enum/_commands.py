@@ -132,10 +132,52 @@ def _call(function: str, argv: List[str]) -> tuple:
     return code, bytes(out), err
 
 
-def run(command: str, arch: Optional[Arch] = None, **options: Any) -> dict:
+#: The list whose items are the rows of :meth:`Document.to_pandas`, by command (the first
+#: present in the document; none: one row of the whole document).
+ROWS = {
+    "solve": ("limit_states",),
+    "curve": ("points",),
+    "modes": ("corners", "samples"),
+    "load": ("limit_states",),
+    "load-curve": ("points",),
+    "atlas": ("boundaries",),
+}
+
+
+class Document(dict):
+    """A command's JSON document: a ``dict`` (the CLI's schema, key for key) that also
+    converts to a ``pandas.DataFrame`` like the typed results do."""
+
+    def __init__(self, doc: dict, command: str) -> None:
+        super().__init__(doc)
+        self.command = command
+
+    def to_dict(self) -> dict:
+        """The document as a plain ``dict``."""
+        return dict(self)
+
+    def to_pandas(self, rows: Optional[str] = None) -> Any:
+        """A ``pandas.DataFrame`` (needs ``pandas``): one row per item of the list
+        ``rows`` (default: the command's natural list: limit states, points, corners, the
+        samples of ``modes`` with fill, the atlas's boundaries), else one row of the
+        document; nested fields become dotted columns (``reactions.h``)."""
+        try:
+            import pandas as pd
+        except ImportError as e:  # pragma: no cover - exercised without pandas
+            raise ImportError("to_pandas() needs the optional dependency pandas") from e
+        if rows is None:
+            rows = next((k for k in ROWS.get(self.command, ()) if self.get(k)), None)
+        elif not isinstance(self.get(rows), list):
+            lists = sorted(k for k, v in self.items() if isinstance(v, list))
+            raise ValueError(f"invalid value for rows: {rows!r} (valid values: {', '.join(lists)})")
+        return pd.json_normalize(self[rows] if rows is not None else [dict(self)])
+
+
+def run(command: str, arch: Optional[Arch] = None, **options: Any) -> "Document":
     """Runs ``arch-enum COMMAND --json`` with ``arch`` and ``options`` as its flags and
-    returns its JSON document (``status`` says when the question has no answer, e.g.
-    ``"no_equilibrium"``). ``command`` is one of :data:`JSON_COMMANDS`."""
+    returns its JSON document as a :class:`Document` (a ``dict`` with ``to_pandas``;
+    ``status`` says when the question has no answer, e.g. ``"no_equilibrium"``).
+    ``command`` is one of :data:`JSON_COMMANDS`."""
     if command not in JSON_COMMANDS:
         raise ValueError(f"invalid value for command: {command!r} (valid values: "
                          f"{', '.join(JSON_COMMANDS)}; plot() and report() draw)")
@@ -147,10 +189,10 @@ def run(command: str, arch: Optional[Arch] = None, **options: Any) -> dict:
         raise _error("run", code, out, err) from None
     if code == 2 or (isinstance(doc, dict) and doc.get("status") == "error"):
         raise _error("run", 2, out, err)
-    return doc
+    return Document(doc, command)
 
 
-def load_curve(arch: Optional[Arch] = None, **options: Any) -> dict:
+def load_curve(arch: Optional[Arch] = None, **options: Any) -> Document:
     """The load multiplier against friction at a fixed thickness (``arch-enum load-curve
     --json``): ``eta``, one live load (``horizontal``, ``point_load``/``point_load_deg``/
     ``point_load_joint``, or a vehicle ``axles`` with ``at``) and ``mu_min``, ``mu_max``,
@@ -158,7 +200,7 @@ def load_curve(arch: Optional[Arch] = None, **options: Any) -> dict:
     return run("load-curve", arch, **options)
 
 
-def critical(arch: Optional[Arch] = None, **options: Any) -> dict:
+def critical(arch: Optional[Arch] = None, **options: Any) -> Document:
     """A vehicle crossing the arch (``arch-enum load --critical --json``): the critical
     position X* of least collapse multiplier, located exactly, the adequacy factor
     ``lambda`` there (and in kN: ``units.lambda_kn``), the second local minimum, and the
@@ -168,7 +210,7 @@ def critical(arch: Optional[Arch] = None, **options: Any) -> dict:
     return run("load", arch, critical=True, **options)
 
 
-def certify_load(arch: Optional[Arch] = None, **options: Any) -> dict:
+def certify_load(arch: Optional[Arch] = None, **options: Any) -> Document:
     """A certificate of a live load's largest admissible multiplier lambda_static and of its
     limit states (``arch-enum certify`` with a load, ``--json``): the document, whose
     ``certificate`` :func:`arch_enum.verify` re-checks independently."""

@@ -31,3 +31,26 @@ def test_every_result_has_a_frame():
     assert len(c.to_pandas()) == 1
     assert len(ae.verify(c).to_pandas()) == 1
     assert len(ae.curve(SEMI, [0.4, 0.5, math.inf]).to_pandas()) == 3
+
+
+def test_every_document_has_a_frame():
+    """``run`` documents (and load_curve, critical) convert too: one row per item of the
+    command's natural list, the same numbers; ``rows`` picks another list, by name."""
+    doc = ae.run("solve", SEMI, mu=0.35)
+    assert isinstance(doc, dict) and doc == ae.run("solve", SEMI, mu=0.35).to_dict()
+    f = doc.to_pandas()
+    assert len(f) == len(doc["limit_states"]) >= 1
+    assert f["eta"].iloc[0] == doc["limit_states"][0]["eta"]
+    assert len(ae.run("curve", SEMI, mu_min=0.4, mu_max=1, points=4).to_pandas()) == 4
+    modes = ae.run("modes", SEMI)
+    assert len(modes.to_pandas()) == len(modes["corners"]) >= 1
+    filled = ae.run("modes", ae.Arch(alpha=0, fill_ratio=0.9, fill_height=0.0566))
+    assert len(filled.to_pandas()) == len(filled["samples"]) >= 12
+    assert len(ae.run("assess", SEMI, eta=0.2, mu=0.6).to_pandas()) == 1
+    crossing = ae.critical(span=10, rise=5, ring=0.6, width=1, unit_weight=20, mu=0.6,
+                           axles=[100], samples=5)
+    influence = crossing.to_pandas("influence")
+    assert len(influence) == len(crossing["influence"]) and "at_m" in influence.columns
+    with pytest.raises(ValueError) as e:
+        crossing.to_pandas("nothing")
+    assert "rows" in str(e.value) and "influence" in str(e.value)
