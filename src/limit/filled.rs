@@ -16,7 +16,7 @@
 use crate::admissibility::{Margin, WorkingSet};
 use crate::arch::{Arch, ETA_TOP};
 use crate::contact::ContactKind;
-use crate::search::{margin_at, Bracket};
+use crate::search::{golden_min, margin_at, Bracket};
 use crate::settings::Settings;
 use crate::undecided::Undecided;
 
@@ -121,25 +121,8 @@ fn island(
     let k = (0..margins.len())
         .max_by(|&i, &j| margins[i].margin.total_cmp(&margins[j].margin))
         .expect("nodes");
-    let (mut lo, mut hi) = (etas[k.saturating_sub(1)], etas[(k + 1).min(etas.len() - 1)]);
-    let g = 0.5 * (5f64.sqrt() - 1.0);
-    let (mut c, mut d) = (hi - g * (hi - lo), lo + g * (hi - lo));
-    let (mut mc, mut md) = (at(c)?, at(d)?);
-    while hi - lo > ISLAND_REL * hi {
-        for (eta, m) in [(c, &mc), (d, &md)] {
-            if m.margin >= 0.0 {
-                return Ok(Some((eta, m.clone())));
-            }
-        }
-        if mc.margin >= md.margin {
-            (hi, d, md) = (d, c, mc);
-            c = hi - g * (hi - lo);
-            mc = at(c)?;
-        } else {
-            (lo, c, mc) = (c, d, md);
-            d = lo + g * (hi - lo);
-            md = at(d)?;
-        }
-    }
-    Ok(None)
+    let bracket = (etas[k.saturating_sub(1)], etas[(k + 1).min(etas.len() - 1)]);
+    let stands = |m: &Margin| m.margin >= 0.0;
+    let found = golden_min(bracket, ISLAND_REL, at, |m| -m.margin, stands)?;
+    Ok(found.filter(|(_, m)| stands(m)))
 }

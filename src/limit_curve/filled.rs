@@ -27,6 +27,7 @@ use crate::assess::{least_friction_for, LeastFriction};
 use crate::collapse_mode::{classify, CollapseMode};
 use crate::contact::Contact;
 use crate::limit::{solve, Outcome};
+use crate::search::golden_min;
 use crate::settings::Settings;
 use crate::tracer::{self, Split};
 use std::convert::Infallible;
@@ -201,33 +202,17 @@ fn least_friction(arch: &Arch, samples: &[FrictionPoint], settings: &Settings) -
     let k = (0..samples.len())
         .min_by(|&i, &j| samples[i].mu.total_cmp(&samples[j].mu))
         .expect("samples");
-    let (mut lo, mut hi) = (
+    let bracket = (
         samples[k.saturating_sub(1)].eta,
         samples[(k + 1).min(samples.len() - 1)].eta,
     );
-    let mut best = samples[k].clone();
-    let g = 0.5 * (5f64.sqrt() - 1.0);
-    let at = |eta: f64| point(arch, eta, settings);
-    let (mut c, mut d) = (hi - g * (hi - lo), lo + g * (hi - lo));
-    let (mut fc, mut fd) = (at(c), at(d));
-    while hi - lo > LEAST_ETA_REL * hi {
-        let mu = |p: &Option<FrictionPoint>| p.as_ref().map_or(f64::INFINITY, |p| p.mu);
-        if mu(&fc) <= mu(&fd) {
-            (hi, d, fd) = (d, c, fc);
-            c = hi - g * (hi - lo);
-            fc = at(c);
-        } else {
-            (lo, c, fc) = (c, d, fd);
-            d = lo + g * (hi - lo);
-            fd = at(d);
-        }
-        for p in [&fc, &fd].into_iter().flatten() {
-            if p.mu < best.mu {
-                best = p.clone();
-            }
-        }
+    let at = |eta: f64| Ok::<_, Infallible>(point(arch, eta, settings));
+    let mu = |p: &Option<FrictionPoint>| p.as_ref().map_or(f64::INFINITY, |p| p.mu);
+    let Ok(found) = golden_min(bracket, LEAST_ETA_REL, at, mu, |_| false);
+    match found {
+        Some((_, Some(p))) if p.mu < samples[k].mu => p,
+        _ => samples[k].clone(),
     }
-    best
 }
 
 /// The changes (by increasing η) with each sliver between two of them removed: the two

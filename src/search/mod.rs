@@ -4,6 +4,8 @@
 
 pub mod bracket;
 pub mod candidates;
+pub mod golden;
 
 pub use bracket::{bracket_near, bracket_root, margin_at, Bracket, RootGuess};
 pub use candidates::candidates_at;
+pub use golden::golden_min;
