@@ -209,6 +209,48 @@ pub fn text_width(text: &str, size: u32) -> i32 {
     (0.47 * size as f64 * text.chars().count() as f64).ceil() as i32
 }
 
+/// A legend's column of collapse modes: `title` at `(lx, ly)`, then a line in each mode's
+/// colour and its name, 24 px apart. Returns the y of the last row.
+pub fn legend_modes<DB: plotters::prelude::DrawingBackend>(
+    area: &plotters::prelude::DrawingArea<DB, plotters::coord::Shift>,
+    title: &str,
+    modes: &[CollapseMode],
+    (lx, mut ly): (i32, i32),
+) -> Result<i32, String> {
+    use plotters::prelude::*;
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    area.draw(&Text::new(title, (lx, ly), (FAMILY, 14)))
+        .map_err(e)?;
+    for mode in modes {
+        ly += 24;
+        area.draw(&PathElement::new(
+            vec![(lx, ly + 7), (lx + 26, ly + 7)],
+            mode_color(*mode).stroke_width(3),
+        ))
+        .map_err(e)?;
+        area.draw(&Text::new(mode.name(), (lx + 34, ly), (FAMILY, 13)))
+            .map_err(e)?;
+    }
+    Ok(ly)
+}
+
+/// A legend row at `(lx, ly)`: a swatch of `color` at `opacity` and its `text`.
+pub fn legend_swatch<DB: plotters::prelude::DrawingBackend>(
+    area: &plotters::prelude::DrawingArea<DB, plotters::coord::Shift>,
+    (lx, ly): (i32, i32),
+    color: RGBColor,
+    opacity: f64,
+    text: &str,
+) -> Result<(), String> {
+    use plotters::prelude::*;
+    area.draw(&Rectangle::new(
+        [(lx + 2, ly + 1), (lx + 24, ly + 14)],
+        color.mix(opacity).filled(),
+    ))
+    .and_then(|_| area.draw(&Text::new(text.to_string(), (lx + 34, ly), (FAMILY, 13))))
+    .map_err(|e| e.to_string())
+}
+
 /// Draws `text` on a white backing box (so a line behind it does not strike it through),
 /// anchored at the pixel `at` of `area` by `pos`.
 pub fn boxed_text<DB: plotters::prelude::DrawingBackend>(

@@ -10,7 +10,8 @@ use crate::figures::CurveData;
 use crate::render::fine::Fine;
 use crate::render::plot::AxisCoord;
 use crate::render::plot::{
-    arch_label, boxed_text, mode_color, short_num, text_width, Axis, FAMILY,
+    arch_label, boxed_text, legend_modes, legend_swatch, mode_color, short_num, text_width, Axis,
+    FAMILY,
 };
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -372,19 +373,8 @@ fn draw_legend(
     arches: usize,
     marks: (bool, bool),
 ) -> Result<(), String> {
-    let (lx, mut ly) = (W as i32 - RIGHT as i32 + 100, 70);
-    root.draw(&Text::new("collapse mode", (lx, ly), (FAMILY, 14)))
-        .map_err(err)?;
-    for mode in modes {
-        ly += 24;
-        root.draw(&PathElement::new(
-            vec![(lx, ly + 7), (lx + 26, ly + 7)],
-            mode_color(*mode).stroke_width(3),
-        ))
-        .map_err(err)?;
-        root.draw(&Text::new(mode.name(), (lx + 34, ly), (FAMILY, 13)))
-            .map_err(err)?;
-    }
+    let lx = W as i32 - RIGHT as i32 + 100;
+    let mut ly = legend_modes(root, "collapse mode", modes, (lx, 70))?;
     ly += 30;
     root.draw(&Circle::new((lx + 13, ly + 7), 5, BLACK.filled()))
         .map_err(err)?;
@@ -417,12 +407,7 @@ fn draw_legend(
         .map_err(err)?;
     }
     let swatch = |ly: i32, color: RGBColor, opacity: f64, text: &str| {
-        root.draw(&Rectangle::new(
-            [(lx + 2, ly + 1), (lx + 24, ly + 14)],
-            color.mix(opacity).filled(),
-        ))
-        .and_then(|_| root.draw(&Text::new(text.to_string(), (lx + 34, ly), (FAMILY, 13))))
-        .map_err(err)
+        legend_swatch(root, (lx, ly), color, opacity, text)
     };
     ly += 30;
     if arches == 1 {

@@ -6,7 +6,10 @@
 use crate::collapse_mode::CollapseMode;
 use crate::figures::fill_curve::FillCurveData;
 use crate::render::fine::Fine;
-use crate::render::plot::{arch_label, boxed_text, mode_color, short_num, Axis, AxisCoord, FAMILY};
+use crate::render::plot::{
+    arch_label, boxed_text, legend_modes, legend_swatch, mode_color, short_num, Axis, AxisCoord,
+    FAMILY,
+};
 use crate::render::plot_curve::{COLLAPSE_TINT, SAFE_OPACITY, SAFE_TINT};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -173,19 +176,8 @@ fn draw_legend(
     root: &DrawingArea<SVGBackend, plotters::coord::Shift>,
     modes: &[CollapseMode],
 ) -> Result<(), String> {
-    let (lx, mut ly) = (W as i32 - RIGHT as i32 + 60, 70);
-    root.draw(&Text::new("collapse mode at μ_min", (lx, ly), (FAMILY, 14)))
-        .map_err(err)?;
-    for mode in modes {
-        ly += 24;
-        root.draw(&PathElement::new(
-            vec![(lx, ly + 7), (lx + 26, ly + 7)],
-            mode_color(*mode).stroke_width(3),
-        ))
-        .map_err(err)?;
-        root.draw(&Text::new(mode.name(), (lx + 34, ly), (FAMILY, 13)))
-            .map_err(err)?;
-    }
+    let lx = W as i32 - RIGHT as i32 + 60;
+    let mut ly = legend_modes(root, "collapse mode at μ_min", modes, (lx, 70))?;
     ly += 30;
     root.draw(&Circle::new((lx + 13, ly + 7), 6, BLACK.filled()))
         .map_err(err)?;
@@ -200,18 +192,13 @@ fn draw_legend(
         .map_err(err)?;
     root.draw(&Text::new("pattern change", (lx + 34, ly), (FAMILY, 13)))
         .map_err(err)?;
-    for (color, opacity, text) in [
-        (SAFE_TINT, SAFE_OPACITY, "stands (right of the curve)"),
-        (COLLAPSE_TINT, 0.08, "collapses (left)"),
-    ] {
-        ly += 24;
-        root.draw(&Rectangle::new(
-            [(lx + 2, ly + 1), (lx + 24, ly + 14)],
-            color.mix(opacity).filled(),
-        ))
-        .map_err(err)?;
-        root.draw(&Text::new(text, (lx + 34, ly), (FAMILY, 13)))
-            .map_err(err)?;
-    }
+    legend_swatch(
+        root,
+        (lx, ly + 24),
+        SAFE_TINT,
+        SAFE_OPACITY,
+        "stands (right of the curve)",
+    )?;
+    legend_swatch(root, (lx, ly + 48), COLLAPSE_TINT, 0.08, "collapses (left)")?;
     Ok(())
 }
