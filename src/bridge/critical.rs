@@ -11,7 +11,7 @@
 use super::vehicle::{Deck, Vehicle};
 use crate::arch::{Arch, InputError};
 use crate::load::LiveLoad;
-use crate::multiplier::{survey, LoadOutcome, LoadSurvey};
+use crate::multiplier::{static_range, survey, LoadOutcome, LoadSurvey, StaticRange};
 use crate::settings::Settings;
 
 /// λ_c at one road position: the collapse multiplier, or why there is none.
@@ -70,8 +70,10 @@ pub struct Critical {
     pub at_critical: Option<(LiveLoad, LoadSurvey)>,
     /// The mirror position of X* on a symmetric arch under a symmetric vehicle (a tie).
     pub mirror_m: Option<f64>,
-    /// Surveys run in all.
+    /// Complete searches (surveys) run in all.
     pub surveys: usize,
+    /// Static maxima (λ_static alone) evaluated in locating the minima.
+    pub statics: usize,
 }
 
 /// How finely to look.
@@ -85,6 +87,9 @@ pub struct Search {
     pub threads: usize,
 }
 
+/// λ_c at one road position, with the load placed and its survey (neither off the ring).
+pub type Evaluated = (Collapse, Option<LiveLoad>, Option<LoadSurvey>);
+
 /// λ_c of `vehicle` with its first axle at `at_m`, with the load and its survey (neither
 /// when the vehicle is off the ring).
 pub fn collapse_at(
@@ -95,7 +100,7 @@ pub fn collapse_at(
     vehicle: &Vehicle,
     at_m: f64,
     settings: &Settings,
-) -> Result<(Collapse, Option<LiveLoad>, Option<LoadSurvey>), InputError> {
+) -> Result<Evaluated, InputError> {
     if !deck.on_arch(arch, eta, vehicle, at_m) {
         return Ok((Collapse::Never, None, None));
     }
@@ -116,6 +121,7 @@ pub fn collapse_at(
 /// the influence line on `search.samples` positions, then each sampled local minimum
 /// refined by Brent's method (parabolic steps where λ_c is smooth, golden sections at a
 /// kink) to a bracket of `search.bracket_m`. On a symmetric arch under a symmetric vehicle
+/// the samples past the axis are the mirror images of those before it (the same λ_c), and
 /// only the minima up to the axis are refined (their mirror images tie).
 pub fn critical(
     arch: &Arch,
@@ -134,26 +140,20 @@ pub fn critical(
         });
     }
     crate::input::check_positive("--bracket", search.bracket_m)?;
-    let (from, to) = deck.crossing(arch, eta, vehicle);
-    let n = search.samples;
-    let value = |at: f64| -> Result<f64, InputError> {
-        Ok(collapse_at(arch, eta, mu, deck, vehicle, at, settings)?
-            .0
-            .value())
+    let crossing = Crossing {
+        arch,
+        eta,
+        mu,
+        deck,
+        vehicle,
+        settings,
     };
-    let positions: Vec<f64> = (0..n)
-        .map(|i| crate::arch::grid_angle(from, to, n, i))
-        .collect();
-    let influence = crate::threads::map(&positions, search.threads, |_, &at_m| {
-        collapse_at(arch, eta, mu, deck, vehicle, at_m, settings)
-            .map(|(collapse, _, _)| InfluencePoint { at_m, collapse })
-    })
-    .into_iter()
-    .collect::<Result<Vec<_>, _>>()?;
+    let (influence, surveys) = crossing.influence(search)?;
     let values: Vec<f64> = influence.iter().map(|p| p.collapse.value()).collect();
+    let n = influence.len();
     // the axis of a mirror-symmetric crossing: minima beyond it are mirror images
     let axis = mirror(arch, eta, deck, vehicle, 0.0).map(|m| 0.5 * m);
-    let spacing = (to - from) / (n - 1) as f64;
+    let spacing = (influence[n - 1].at_m - influence[0].at_m) / (n - 1) as f64;
     let starts: Vec<usize> = (0..n)
         .filter(|&i| {
             let v = values[i];
@@ -169,36 +169,24 @@ pub fn critical(
         .filter(|&i| axis.is_none_or(|a| influence[i].at_m <= a + 0.5 * spacing))
         .collect();
     let refined = crate::threads::map(&starts, search.threads, |_, &i| {
-        let lo = influence[i.saturating_sub(1)].at_m;
-        let hi = influence[(i + 1).min(n - 1)].at_m;
-        let mut evals = 0;
-        let mut f = |x: f64| {
-            evals += 1;
-            value(x)
-        };
-        brent(
-            &mut f,
-            (lo, hi),
-            (influence[i].at_m, values[i]),
-            search.bracket_m,
-        )
-        .map(|m| (m, evals))
+        let lo = i.saturating_sub(1);
+        let hi = (i + 1).min(n - 1);
+        crossing.minimum(&influence[lo..=hi], i - lo, search.bracket_m)
     });
     let mut minima = Vec::new();
-    let mut surveys = n + 1;
+    let mut statics = 0;
+    let mut at_critical = None;
+    let mut counted = surveys;
     for r in refined {
-        let (m, evals) = r?;
-        surveys += evals;
-        minima.push(m);
+        let found = r?;
+        counted += found.surveys;
+        statics += found.statics;
+        if minima.is_empty() || found.minimum.lambda < minima_least(&minima) {
+            at_critical = found.at;
+        }
+        minima.push(found.minimum);
     }
     minima.sort_by(|a, b| a.lambda.total_cmp(&b.lambda));
-    let at_critical = match minima.first() {
-        Some(m) => {
-            let (_, load, sv) = collapse_at(arch, eta, mu, deck, vehicle, m.at_m, settings)?;
-            load.zip(sv)
-        }
-        None => None,
-    };
     let mirror_m = minima
         .first()
         .and_then(|m| mirror(arch, eta, deck, vehicle, m.at_m));
@@ -207,9 +195,168 @@ pub fn critical(
         minima,
         at_critical,
         mirror_m,
-        surveys,
+        surveys: counted,
+        statics,
     })
 }
+
+/// The least λ of the minima found so far.
+fn minima_least(minima: &[Minimum]) -> f64 {
+    minima
+        .iter()
+        .map(|m| m.lambda)
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// One vehicle crossing one arch: what every road position is evaluated with.
+struct Crossing<'a> {
+    arch: &'a Arch,
+    eta: f64,
+    mu: f64,
+    deck: &'a Deck,
+    vehicle: &'a Vehicle,
+    settings: &'a Settings,
+}
+
+/// A refined local minimum, with the load and survey at its position and what it cost.
+struct Found {
+    minimum: Minimum,
+    at: Option<(LiveLoad, LoadSurvey)>,
+    surveys: usize,
+    statics: usize,
+}
+
+impl Crossing<'_> {
+    fn collapse(&self, at_m: f64) -> Result<Evaluated, InputError> {
+        collapse_at(
+            self.arch,
+            self.eta,
+            self.mu,
+            self.deck,
+            self.vehicle,
+            at_m,
+            self.settings,
+        )
+    }
+
+    /// The influence line on `search.samples` positions over the crossing, and the surveys
+    /// it took: on a mirror-symmetric crossing the positions past the axis take the λ_c of
+    /// their mirror images (the same load mirrored, so the same limit states mirrored).
+    fn influence(&self, search: Search) -> Result<(Vec<InfluencePoint>, usize), InputError> {
+        let (from, to) = self.deck.crossing(self.arch, self.eta, self.vehicle);
+        let n = search.samples;
+        let positions: Vec<f64> = (0..n)
+            .map(|i| crate::arch::grid_angle(from, to, n, i))
+            .collect();
+        // the sample whose λ_c each sample takes (itself unless it mirrors an earlier one)
+        let mirrors = |i: usize| {
+            mirror(self.arch, self.eta, self.deck, self.vehicle, positions[i])
+                .is_some_and(|m| (m - positions[n - 1 - i]).abs() <= MIRROR_TOL * (1.0 + m.abs()))
+        };
+        let source: Vec<usize> = (0..n)
+            .map(|i| {
+                if n - 1 - i < i && mirrors(i) {
+                    n - 1 - i
+                } else {
+                    i
+                }
+            })
+            .collect();
+        let own: Vec<usize> = (0..n).filter(|&i| source[i] == i).collect();
+        let computed = crate::threads::map(&own, search.threads, |_, &i| {
+            self.collapse(positions[i]).map(|(collapse, _, _)| collapse)
+        })
+        .into_iter()
+        .collect::<Result<Vec<_>, _>>()?;
+        let mut of = vec![None; n];
+        for (&i, c) in own.iter().zip(computed) {
+            of[i] = Some(c);
+        }
+        let influence = (0..n)
+            .map(|i| InfluencePoint {
+                at_m: positions[i],
+                collapse: of[source[i]].clone().expect("every source sample computed"),
+            })
+            .collect();
+        Ok((influence, own.len()))
+    }
+
+    /// The local minimum of λ_c bracketed by `samples` (three, or two at an end, the
+    /// `best`-th the least), refined by Brent's method to `width`. Where the least limit
+    /// state is the static maximum (λ_c = λ_static to `same_state_eta`) at every sample of
+    /// the bracket, Brent runs on λ_static (one static maximum per step, not a complete
+    /// search), and the complete search at the position found must confirm that λ_c =
+    /// λ_static there; λ_c is reported. Where it does not confirm, or the bracket is not of
+    /// that kind, Brent runs on λ_c.
+    fn minimum(
+        &self,
+        samples: &[InfluencePoint],
+        best: usize,
+        width: f64,
+    ) -> Result<Found, InputError> {
+        let bracket = (samples[0].at_m, samples[samples.len() - 1].at_m);
+        let start = (samples[best].at_m, samples[best].collapse.value());
+        let mut statics = 0;
+        let mut static_value = |x: f64| {
+            statics += 1;
+            self.static_value(x)
+        };
+        // λ_c is the static maximum to the resolution of a limit state
+        let same_eta = self.settings.same_state_eta;
+        let at_static = |c: f64, s: f64| (c - s).abs() <= same_eta * (1.0 + s.abs());
+        let mut agree = true;
+        for p in samples {
+            agree = agree && at_static(p.collapse.value(), static_value(p.at_m)?);
+        }
+        if agree {
+            let m = brent(&mut static_value, bracket, start, width)?;
+            let (collapse, load, sv) = self.collapse(m.at_m)?;
+            if at_static(collapse.value(), m.lambda) {
+                return Ok(Found {
+                    minimum: Minimum {
+                        lambda: collapse.value(),
+                        ..m
+                    },
+                    at: load.zip(sv),
+                    surveys: 1,
+                    statics,
+                });
+            }
+        }
+        let mut surveys = 0;
+        let mut f = |x: f64| {
+            surveys += 1;
+            Ok(self.collapse(x)?.0.value())
+        };
+        let m = brent(&mut f, bracket, start, width)?;
+        let (_, load, sv) = self.collapse(m.at_m)?;
+        Ok(Found {
+            minimum: m,
+            at: load.zip(sv),
+            surveys: surveys + 1,
+            statics,
+        })
+    }
+
+    /// λ_static at a road position as a number to minimise: ∞ off the ring or where it is
+    /// unbounded, NaN where there is no equilibrium or no decision.
+    fn static_value(&self, at_m: f64) -> Result<f64, InputError> {
+        let (arch, eta) = (self.arch, self.eta);
+        if !self.deck.on_arch(arch, eta, self.vehicle, at_m) {
+            return Ok(f64::INFINITY);
+        }
+        let load = self.deck.place(arch, eta, self.vehicle, at_m)?;
+        Ok(
+            match static_range(arch, eta, self.mu, &load, self.settings)? {
+                Ok(StaticRange::Interval { max, .. }) => max.map_or(f64::INFINITY, |m| m.0),
+                Ok(StaticRange::NoEquilibrium) | Err(_) => f64::NAN,
+            },
+        )
+    }
+}
+
+/// Two road positions are mirror images when they agree to this relative to their size.
+const MIRROR_TOL: f64 = 1e-12;
 
 /// Brent's minimisation of λ_c in `bracket` from the sample `best` inside it, until the
 /// bracket is narrower than `width` (R. P. Brent, Algorithms for Minimization without

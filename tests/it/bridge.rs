@@ -484,6 +484,68 @@ fn the_critical_position_beats_a_fine_grid_of_point_loads() {
     assert!(best.bracket_m.1 - best.bracket_m.0 <= 1e-6 && 1e-6 < 1e-4 * spacing);
 }
 
+/// The critical position with fill, against complete surveys run one by one: on the
+/// continuous arch under a symmetric pair, every sample of the influence line (those past
+/// the axis taken from their mirror images) equals the survey at its own position; on 40
+/// voussoirs under an unsymmetric pair, located by static maxima where the least limit
+/// state is the static one, no survey on a grid around X* (four sample spacings, 41
+/// points) finds a smaller λ_c, and the bracket is as narrow as asked.
+#[test]
+fn the_critical_position_with_fill_agrees_with_surveys_one_by_one() {
+    use arch_enum::bridge::{critical, Fill, Search, Vehicle};
+    let (bare, eta, deck) = ten_metre_deck(0.5);
+    let settings = arch_enum::Settings::default();
+    let fill = Fill::new(0.9, 0.3 / 5.3).unwrap();
+    let search = |samples| Search {
+        samples,
+        bracket_m: 1e-6,
+        threads: 2,
+    };
+    let arch = bare.clone().with_fill(fill);
+    let pair = Vehicle::new(&[100.0, 100.0], &[1.2]).unwrap();
+    let c = critical(&arch, eta, 0.6, &deck, &pair, search(9), &settings).unwrap();
+    for p in &c.influence {
+        let direct = deck
+            .place(&arch, eta, &pair, p.at_m)
+            .ok()
+            .and_then(|load| least_lambda(&arch, eta, &load));
+        let sampled = p.collapse.value();
+        match direct {
+            Some(l) => assert!(
+                (sampled - l).abs() <= 1e-9 * l,
+                "at {}: {sampled} vs {l}",
+                p.at_m
+            ),
+            None => assert!(sampled.is_infinite(), "at {}: {sampled}", p.at_m),
+        }
+    }
+    assert!(
+        c.surveys < c.influence.len(),
+        "the mirrored half was surveyed: {}",
+        c.surveys
+    );
+    let blocks = bare.with_blocks(40).unwrap().with_fill(fill);
+    let uneven = Vehicle::new(&[100.0, 60.0], &[1.5]).unwrap();
+    let c = critical(&blocks, eta, 0.6, &deck, &uneven, search(21), &settings).unwrap();
+    let best = &c.minima[0];
+    assert!(
+        c.statics > 0 && c.mirror_m.is_none(),
+        "{} static maxima",
+        c.statics
+    );
+    assert!(best.bracket_m.1 - best.bracket_m.0 <= 1e-6, "{best:?}");
+    let spacing = (c.influence[1].at_m - c.influence[0].at_m).abs();
+    for k in 0..=40 {
+        let at = best.at_m + spacing * (k as f64 / 10.0 - 2.0);
+        let load = deck.place(&blocks, eta, &uneven, at).unwrap();
+        let l = least_lambda(&blocks, eta, &load).unwrap();
+        assert!(
+            l >= best.lambda * (1.0 - 1e-12),
+            "at {at}: {l} below {best:?}"
+        );
+    }
+}
+
 /// A continuous arch with fill under a two-axle vehicle spread through it: fine equal
 /// discretisations (the angles of the patches' edges not among their joints) converge to
 /// the continuous arch's collapse multiplier from above, the error falling with the

@@ -69,6 +69,8 @@ struct CriticalJson {
     mirror_at_m: Option<f64>,
     second: Option<Second>,
     surveys: usize,
+    /// Static maxima alone (λ_static, no search below it) evaluated in locating minima.
+    static_maxima: usize,
 }
 
 #[derive(Debug, Serialize)]
@@ -157,5 +159,6 @@ fn critical_json(c: &Critical, vehicle_kn: Option<f64>) -> Option<CriticalJson> 
         mirror_at_m: c.mirror_m,
         second,
         surveys: c.surveys,
+        static_maxima: c.statics,
     })
 }

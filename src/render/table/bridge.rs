@@ -107,9 +107,10 @@ fn critical_lines(s: &mut String, c: &Critical, vehicle_kn: Option<f64>) {
     }
     let _ = writeln!(
         s,
-        "influence line      {} samples, {} surveys in all",
+        "influence line      {} samples; {} complete searches and {} static maxima in all",
         c.influence.len(),
-        c.surveys
+        c.surveys,
+        c.statics
     );
     let _ = writeln!(s, "{:>16}  {:>16}", "X (m)", "lambda_c");
     for p in &c.influence {
