@@ -95,24 +95,21 @@ fn asked(a: &CertifyArgs, settings: &Settings) -> Result<Asked, InputError> {
     }
     // a live load (or a vehicle, on the arch with its fill) and its thickness come together
     let loaded = a.live.is_some() || a.bridge.vehicle.given();
-    if !loaded && a.bridge.fill.given() {
-        return Err(InputError::Inconsistent {
-            arg: "--fill-weight/--fill-ratio",
-            reason:
-                "a certificate of the least thickness of an arch with fill is not written \
-                     yet; certify a load on it (--axles with --at or --critical, --point-load, ...)"
-                    .into(),
-        });
-    }
-    if !loaded && a.eta.or(a.arch.ring).is_some() {
+    // with fill, --ring fixes r and so the fill's depth ratio, as for `solve`
+    let ring_used = a.bridge.fill.given() && a.eta.is_none();
+    if !loaded && a.eta.or(a.arch.ring).is_some() && !ring_used {
         return Err(InputError::Inconsistent {
             arg: "--eta/--ring",
-            reason: "--eta (or --ring) is used only with a live load (--horizontal, --horizontal-left, --point-load, --point-load-deg or --point-load-joint); without one, certify finds eta* itself".into(),
+            reason: "--eta (or --ring) is used only with a live load (--horizontal, --horizontal-left, --point-load, --point-load-deg or --point-load-joint) or, --ring, with fill; without one, certify finds eta* itself".into(),
         });
     }
     if !loaded {
+        let arch = a.arch.build()?;
         return Ok(Asked {
-            arch: a.arch.build()?,
+            arch: match a.bridge.fill_on(&a.arch)? {
+                Some(fill) => arch.with_fill(fill),
+                None => arch,
+            },
             load: None,
             at_m: None,
             critical: false,
@@ -282,6 +279,9 @@ fn limit_states_text(cert: &Certificate) -> String {
                 )
             },
         );
+    }
+    if cert.arch.fill.is_some() {
+        return "  limit states: not certified with fill (the proofs of the search rest on the ring's weight alone; the limit state at eta*, where one is there, is checked)\n".to_string();
     }
     cert.search.as_ref().map_or(
         "  limit states: not certified (the search could not be completed)\n".to_string(),

@@ -129,6 +129,22 @@ pub(crate) struct BridgeFlags {
     pub(crate) fill: FillArgs,
 }
 
+impl BridgeFlags {
+    /// The fill of these flags on the arch of `arch_args`, without a thickness (`None`
+    /// without fill flags): the ring's radius (with `--ring`) and the masonry's unit weight
+    /// convert `--fill-weight --fill-depth`.
+    pub(crate) fn fill_on(
+        &self,
+        arch_args: &ArchArgs,
+    ) -> Result<Option<crate::bridge::Fill>, InputError> {
+        let dims = self.dims.build(arch_args.geometry()?)?;
+        let fill = self
+            .fill
+            .build(dims.as_ref().map(super::bridge_args::masonry))?;
+        Ok(fill.map(|(f, _)| f))
+    }
+}
+
 /// A load question as the flags give it: the engineer's geometry and dimensions, η, the
 /// arch with its fill, the vehicle placed (at `--at` or its critical position) and the load.
 pub(crate) struct Prepared {

@@ -269,14 +269,23 @@ fn certify_takes_the_bridge_flags() {
     let (w, code) = crate::cli::json_of(&["verify", file]);
     assert_eq!(code, 0, "{w}");
     assert_eq!(w["status"], "ok");
+    // without a vehicle: the least thickness of the arch with its fill, the ring fixing r
+    // and so the fill's depth ratio (as for `solve`)
+    bridge.extend(["--blocks", "16", "--gap", "1e-10", "--out", file]);
     let (e, code) = json_of(&bridge);
-    assert_eq!(code, 2, "{e}");
+    assert_eq!(code, 0, "{e}");
+    assert_eq!(e["claim"], "least_thickness");
+    let fill = &e["certificate"]["arch"]["fill"];
+    assert_eq!(fill["weight_ratio"], 0.9);
     assert!(
-        e["message"]
-            .as_str()
-            .unwrap()
-            .contains("--fill-weight/--fill-ratio"),
-        "{e}"
+        (fill["depth"].as_f64().unwrap() - 0.3 / 5.3).abs() < 1e-15,
+        "{fill}"
     );
+    assert!(!e["certificate"]["collapse_cells"]
+        .as_array()
+        .unwrap()
+        .is_empty());
+    let (w, code) = crate::cli::json_of(&["verify", file]);
+    assert_eq!(code, 0, "{w}");
     std::fs::remove_dir_all(&dir).unwrap();
 }

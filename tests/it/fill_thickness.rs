@@ -491,3 +491,79 @@ fn modes_with_fill_in_metres() {
         "{err}"
     );
 }
+
+/// The least thickness of random small discrete arches with fill, certified and re-proved
+/// by `verify`, against the reference: its η_s lies in the certificate's bracket, it finds
+/// no admissible state at the lower ends of 30 cells below η_lo nor at 30 thicknesses spread
+/// geometrically over (0, η_lo] (to its LP's resolution: not within 1e-8 of η_lo), and one
+/// at η_hi; a certificate whose fill is changed by
+/// 1 % is rejected. A continuous semicircle below its least friction is certified to stand
+/// at no thickness (cells over [0, 2], some of friction alone); the same cells at a friction
+/// where an island of rings stands are rejected.
+#[test]
+fn certificates_with_fill_prove_every_thinner_ring() {
+    use arch_enum::certificate::{certify, verify, Claim};
+    let settings = Settings::default();
+    let mut rng = Rng(0xce27_f111_0000_0031);
+    let mut certified = 0;
+    for case in 0..6 {
+        let c = random_case(&mut rng);
+        let Some((eta_s, _)) = c.eta_s() else {
+            continue;
+        };
+        let cert = certify(&c.arch(), c.mu, 1e-10, &settings).unwrap();
+        verify(&cert).unwrap_or_else(|r| panic!("case {case}: {}", r.0));
+        assert_eq!(cert.claim, Claim::LeastThickness, "case {case}");
+        let (lo, hi) = cert.bracket().unwrap();
+        assert!(
+            lo <= eta_s * (1.0 + 1e-9) && eta_s <= hi * (1.0 + 1e-9),
+            "case {case}: {eta_s} vs [{lo}, {hi}]"
+        );
+        assert!(
+            c.feasible(hi),
+            "case {case}: the reference finds no state at eta_hi = {hi}"
+        );
+        let cells = cert.collapse_cells.as_ref().unwrap();
+        let step = cells.len().div_ceil(30);
+        let ends = cells.iter().step_by(step).map(|cell| cell.eta_lo);
+        let spread = (0..30).map(|k| lo * 1e-4f64.powf(k as f64 / 29.0));
+        // the reference's LP decides to its tolerance 1e-10: not within 1e-8 of η_lo
+        for eta in ends
+            .chain(spread)
+            .filter(|&e| e > 0.0 && e < lo * (1.0 - 1e-8))
+        {
+            assert!(
+                !c.feasible(eta),
+                "case {case}: the reference stands at eta = {eta} below eta_lo = {lo}"
+            );
+        }
+        let mut tampered = cert.clone();
+        tampered.arch.fill.as_mut().unwrap().weight_ratio *= 1.01;
+        assert!(
+            verify(&tampered).is_err(),
+            "case {case}: a changed fill is accepted"
+        );
+        certified += 1;
+    }
+    assert!(
+        certified >= 4,
+        "only {certified} cases with a least thickness"
+    );
+    // the README's bridge below its least friction (0.2603), and at 0.3 (rings from
+    // eta_s up to an upper end stand)
+    let semicircle = Arch::symmetric(0.0, WeightModel::Centreline)
+        .unwrap()
+        .with_fill(Fill::new(0.9, 0.0566).unwrap());
+    let none = certify(&semicircle, 0.25, 1e-10, &settings).unwrap();
+    assert_eq!(none.claim, Claim::NoEquilibrium);
+    let cells = none.collapse_cells.as_ref().unwrap();
+    assert!(
+        cells.iter().any(|c| c.joints.len() == 3),
+        "no cell of friction alone"
+    );
+    verify(&none).unwrap();
+    let mut moved = none.clone();
+    moved.mu = Some(0.3);
+    let err = verify(&moved).unwrap_err().0;
+    assert!(err.contains("collapse_cells"), "{err}");
+}

@@ -22,11 +22,13 @@
 //!   `load_search`).
 //!
 //! This file holds the two entry points; each file below it imports only files further
-//! down: `thickness.rs` (with `search.rs`) and the load files `load_bracket.rs`,
+//! down: `filled.rs` (the cells below η_lo of an arch with fill) on `thickness.rs` (with
+//! `search.rs`), and the load files `load_bracket.rs`,
 //! `load_ends.rs`, `load_search.rs` build on the toolboxes `loaded.rs`, `sides.rs`,
 //! `kinematic.rs` and `blank.rs`, and on the verifier.
 
 mod blank;
+mod filled;
 mod infimum;
 mod kinematic;
 mod load_bracket;
@@ -67,17 +69,11 @@ pub fn certify(
     gap: f64,
     settings: &Settings,
 ) -> Result<Certificate, NotCertified> {
-    if arch.fill().is_some() {
-        return Err(NotCertified(
-            "a certificate of the least thickness of an arch with fill is not written yet (its \
-             proofs over eta assume the ring's weight alone); certify a load on it instead"
-                .into(),
-        ));
-    }
     // a discrete arch's certificate carries the ridge's pieces as evidence where the ridge
-    // can be traced (a bounded Q, ...), else the sweep's checked points
+    // can be traced (a bounded Q, ...), else the sweep's checked points; with fill neither
+    // (its certificate lists no search)
     let traced = match arch.layout() {
-        JointLayout::Discrete(_) if mu.is_finite() => trace(arch, mu).ok(),
+        JointLayout::Discrete(_) if mu.is_finite() && arch.fill().is_none() => trace(arch, mu).ok(),
         _ => None,
     };
     let settings = &match arch.layout() {
@@ -90,9 +86,18 @@ pub fn certify(
     let survey = survey(arch, mu, settings).map_err(|e| NotCertified(e.to_string()))?;
     let limit = |least| {
         let found = (&survey, traced.as_deref());
-        certify_limit((arch, mu), found, least, gap, settings)
+        let cert = certify_limit((arch, mu), found, least, gap, settings)?;
+        match arch.fill() {
+            Some(_) => filled::below_with_fill(cert, (arch, mu), settings),
+            None => Ok(cert),
+        }
     };
     match survey.solution.outcome.clone() {
+        Outcome::Limit(ls) if !ls.attained && arch.fill().is_some() => Err(NotCertified(format!(
+            "eta_s = {} of this arch with fill is an infimum (not attained): its certificate \
+             is not written with fill",
+            ls.eta_static
+        ))),
         Outcome::Limit(ls) if !ls.attained => certify_infimum(arch, mu, &ls, gap, settings),
         Outcome::Limit(ls) => {
             let at_eta_s = (ls.eta == ls.eta_static).then_some(&ls);
@@ -100,6 +105,9 @@ pub fn certify(
         }
         Outcome::NoEquilibrium { mu_ms: Some(m), .. } if mu < m => {
             certify_no_equilibrium(arch, mu, settings)
+        }
+        Outcome::NoEquilibrium { .. } if arch.fill().is_some() => {
+            filled::no_equilibrium(arch, mu, settings)
         }
         Outcome::NoEquilibrium { .. } => certify_no_equilibrium_at_top(arch, mu, settings),
         // the least admissible state carries no mechanism and the solve found none above:

@@ -74,20 +74,38 @@ impl From<Affine> for Row {
 }
 
 /// Float cofactor multipliers of d + 1 affine functions (gradients in the first d
-/// components), normalised to sum 1 when they share a sign, with the Farkas constant.
-fn farkas_float(rows: &[Row], d: usize) -> Option<(Vec<f64>, f64)> {
-    let y: Vec<f64> = (0..=d)
-        .map(|i| {
-            let cols: Vec<usize> = (0..=d).filter(|&k| k != i).collect();
-            let sign = if i % 2 == 0 { 1.0 } else { -1.0 };
-            let g = |k: usize, r: usize| rows[cols[k]].g[r];
-            sign * match d {
-                4 => nalgebra::Matrix4::from_fn(|r, k| g(k, r)).determinant(),
-                3 => nalgebra::Matrix3::from_fn(|r, k| g(k, r)).determinant(),
-                _ => nalgebra::Matrix2::from_fn(|r, k| g(k, r)).determinant(),
-            }
-        })
-        .collect();
+/// components, d ≤ 4), normalised to sum 1 when they share a sign, with the Farkas
+/// constant. Allocates only for an answer: it runs on every (d+1)-subset of a pool.
+fn farkas_float(rows: &[&Row], d: usize) -> Option<(Vec<f64>, f64)> {
+    let mut y = [0.0; 5];
+    for (i, yi) in y.iter_mut().enumerate().take(d + 1) {
+        // the rows other than i
+        let col = |k: usize| if k < i { k } else { k + 1 };
+        let sign = if i % 2 == 0 { 1.0 } else { -1.0 };
+        *yi = sign
+            * match d {
+                4 => {
+                    let g = |k: usize, r: usize| rows[col(k)].g[r];
+                    nalgebra::Matrix4::from_fn(|r, k| g(k, r)).determinant()
+                }
+                3 => minor3([rows[col(0)], rows[col(1)], rows[col(2)]]),
+                _ => {
+                    let g = |k: usize, r: usize| rows[col(k)].g[r];
+                    nalgebra::Matrix2::from_fn(|r, k| g(k, r)).determinant()
+                }
+            };
+    }
+    normalised(&y[..=d], rows)
+}
+
+/// The determinant of three gradients (as columns, in their order).
+fn minor3(rows: [&Row; 3]) -> f64 {
+    nalgebra::Matrix3::from_fn(|r, k| rows[k].g[r]).determinant()
+}
+
+/// The Farkas combination of `rows` with the cofactors `y`, normalised to sum 1, when they
+/// share a sign and its constant is positive.
+fn normalised(y: &[f64], rows: &[&Row]) -> Option<(Vec<f64>, f64)> {
     let total: f64 = y.iter().sum();
     if total == 0.0 || !y.iter().all(|v| v * total > 0.0) {
         return None;
@@ -106,16 +124,26 @@ pub(super) fn find_farkas<T: Clone>(
     check: impl Fn(&[(T, f64)]) -> bool,
 ) -> Option<Vec<(T, f64)>> {
     let mut found: Vec<(f64, Vec<usize>, Vec<f64>)> = Vec::new();
-    for sub in (0..pool.len()).combinations(d + 1) {
-        let rows: Vec<Row> = sub.iter().map(|&i| pool[i].1.clone()).collect();
-        if let Some((y, c)) = farkas_float(&rows, d) {
-            let norm: f64 = y
-                .iter()
-                .zip(&rows)
-                .map(|(a, r)| a * r.c.abs())
-                .sum::<f64>()
-                .max(f64::MIN_POSITIVE);
-            found.push((c / norm, sub, y));
+    let mut keep = |sub: &[usize], (y, c): (Vec<f64>, f64)| {
+        let norm: f64 = y
+            .iter()
+            .zip(sub)
+            .map(|(a, &i)| a * pool[i].1.c.abs())
+            .sum::<f64>()
+            .max(f64::MIN_POSITIVE);
+        found.push((c / norm, sub.to_vec(), y));
+    };
+    if d == 3 && pool.len() <= MINOR_TABLE_MOST {
+        quadruples(pool, &mut keep);
+    } else {
+        for sub in (0..pool.len()).combinations(d + 1) {
+            let mut buf = [&pool[0].1; 5];
+            for (slot, &i) in buf.iter_mut().zip(&sub) {
+                *slot = &pool[i].1;
+            }
+            if let Some(f) = farkas_float(&buf[..=d], d) {
+                keep(&sub, f);
+            }
         }
     }
     found.sort_by(|a, b| b.0.total_cmp(&a.0));
@@ -127,6 +155,35 @@ pub(super) fn find_farkas<T: Clone>(
             .collect();
         check(&labelled).then_some(labelled)
     })
+}
+
+/// Pools of at most this many rows in three unknowns tabulate their 3 × 3 minors (n³
+/// numbers) once, instead of four per 4-subset.
+const MINOR_TABLE_MOST: usize = 160;
+
+/// Every 4-subset (ascending, in the order of `combinations`) of a pool of rows in three
+/// unknowns with a valid float Farkas combination, handed to `keep`: the cofactors are
+/// looked up in a table of the pool's 3 × 3 minors, each computed once (the same numbers
+/// as [`farkas_float`]'s).
+fn quadruples<T>(pool: &[(T, Row)], keep: &mut impl FnMut(&[usize], (Vec<f64>, f64))) {
+    let n = pool.len();
+    let mut minors = vec![0.0; n * n * n];
+    let at = |a: usize, b: usize, c: usize| (a * n + b) * n + c;
+    for (a, b, c) in (0..n).tuple_combinations() {
+        minors[at(a, b, c)] = minor3([&pool[a].1, &pool[b].1, &pool[c].1]);
+    }
+    for (a, b, c, e) in (0..n).tuple_combinations() {
+        let y = [
+            minors[at(b, c, e)],
+            -minors[at(a, c, e)],
+            minors[at(a, b, e)],
+            -minors[at(a, b, c)],
+        ];
+        let rows = [&pool[a].1, &pool[b].1, &pool[c].1, &pool[e].1];
+        if let Some(f) = normalised(&y, &rows) {
+            keep(&[a, b, c, e], f);
+        }
+    }
 }
 
 /// The rows of `pool` that `keep` accepts, with the coordinates `drop` left out: they do

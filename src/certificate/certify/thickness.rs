@@ -24,7 +24,7 @@ use crate::state::State;
 use crate::statics::{actions, Affine, Reactions};
 
 /// The thickness problem's Farkas search over contacts at (η, μ).
-fn find_contact_farkas(
+pub(super) fn find_contact_farkas(
     arch: &Arch,
     pool: &[Loaded],
     eta: f64,
@@ -91,9 +91,9 @@ const SPREAD: usize = 48;
 
 /// As many spread angles for the Farkas cells over η, each tried with the whole pool (a
 /// pool of n rows costs C(n, 4) float certificates).
-const CELL_SPREAD: usize = 12;
+pub(super) const CELL_SPREAD: usize = 12;
 
-fn spread_slides(arch: &Arch, spread: usize) -> Vec<Contact> {
+pub(super) fn spread_slides(arch: &Arch, spread: usize) -> Vec<Contact> {
     let all = arch.angles(spread);
     let angles: Vec<f64> = all
         .iter()
@@ -207,7 +207,7 @@ fn cover(
 /// The contacts for a Farkas certificate that no state stands at `eta`: the local maxima
 /// at the margin LP's best state there, every row at both springings (a Farkas row need not
 /// be a local maximum of its function at the LP's state), and their chords.
-fn pool_at(
+pub(super) fn pool_at(
     arch: &Arch,
     eta: f64,
     mu: f64,
@@ -286,13 +286,15 @@ pub(super) fn certify_limit(
     // complete: otherwise the widened state is not known to be the least)
     cert.limit_state = match (at_eta_s, &survey.states) {
         (Some(ls), _) => Some(limit_state_cert(ls.eta, ls.x, &ls.mechanism)),
-        (None, Ok(found)) => found
+        (None, Ok(found)) if arch.fill().is_none() => found
             .above
             .first()
             .map(|s| limit_state_cert(s.t, s.x, &s.mechanism)),
-        (None, Err(_)) => None,
+        (None, _) => None,
     };
-    if let (Ok(found), Some(unique)) = (&survey.states, survey.unique()) {
+    // with fill no search section: its evidence rests on the ring's weight alone
+    let searched = (&survey.states, survey.unique(), arch.fill());
+    if let (Ok(found), Some(unique), None) = searched {
         cert.search = Some(evidence(
             (arch, traced),
             found,
@@ -335,10 +337,23 @@ pub(super) fn bracket_around(
         c.collapse = Some(find_contact_farkas(arch, pool, eta_lo, mu, 3, |f| {
             let mut full = c.clone();
             full.collapse = Some(f.clone());
-            verify(&full).is_ok()
+            match arch.fill() {
+                // the cells below η_lo come after the bracket: here the Farkas side alone
+                Some(_) => prove_farkas_cell(&full, &point_cell(eta_lo, f)).is_ok(),
+                None => verify(&full).is_ok(),
+            }
         })?);
         Some(c)
     })
+}
+
+/// A Farkas certificate at one thickness as a cell of width zero.
+fn point_cell(eta: f64, f: &Farkas) -> FarkasCell {
+    FarkasCell {
+        eta_lo: eta,
+        eta_hi: eta,
+        joints: f.joints.clone(),
+    }
 }
 
 /// The limit state moved into the interior of the admissible set at η_hi: a small LP in

@@ -6,7 +6,7 @@
 use super::joints::check_farkas_joint;
 use super::live::{section, side_text, Live};
 use super::report::{reject, Rejection};
-use super::statics::{affine, phi, Model};
+use super::statics::{affine, affine_times_eta, phi, Model};
 use crate::certificate::format::{CertJoint, LoadFarkas};
 use crate::certificate::interval::{det2, det3, det4, Interval as I};
 
@@ -66,7 +66,8 @@ fn stored_of(joints: &[CertJoint], lambda_row: Option<f64>) -> Vec<(f64, String)
 }
 
 /// Proves that the Farkas joints rule out every state at every η in `eta` (a point, or a
-/// cell; with `friction_only`, every (h, v) for the sliding conditions alone, w left out).
+/// cell; with `friction_only`, every (h, v) for the sliding conditions alone, w left out:
+/// without fill T and N do not involve η, and `eta` is any point).
 pub(super) fn prove_farkas(
     model: &Model,
     joints: &[CertJoint],
@@ -91,17 +92,26 @@ pub(super) fn prove_farkas(
             ));
         }
     }
+    let cell = eta.lo < eta.hi;
+    // over a cell with fill, the rows times η: the fill's 1/η leaves them, so the
+    // enclosures stay tight and a cell may reach η = 0
+    let row = match cell && model.fill.is_some() {
+        true => affine_times_eta,
+        false => affine,
+    };
     // `exists` (checked above) guarantees a finite μ for sliding rows
     let at = |e: I| -> Vec<(Vec<I>, I)> {
         joints
             .iter()
             .map(|j| {
-                let (g, c) = affine(model, j.kind, j.beta, e, mu.unwrap_or(0.0));
+                let (g, c) = row(model, j.kind, j.beta, e, mu.unwrap_or(0.0));
                 (g.to_vec(), c)
             })
             .collect()
     };
-    if eta.lo < eta.hi && !friction_only {
+    // the sliding rows' gradients do not depend on η: over a cell, only their constants
+    // are enclosed over it
+    if cell && !friction_only {
         return prove_over_cell(joints, eta, at);
     }
     prove_rows(

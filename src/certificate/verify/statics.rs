@@ -4,7 +4,7 @@
 //! affine form in x.
 
 use super::report::{reject, Rejection};
-use super::vertical::{actions, fill_jets, FillModel};
+use super::vertical::{actions, fill_jets, fill_jets_times_eta, FillModel};
 use crate::certificate::format::ContactKind;
 use crate::certificate::interval::Interval as I;
 
@@ -141,6 +141,14 @@ impl Model {
         let [n, t, m] = actions(f, s, b);
         Some(Ntm { n, t, m })
     }
+
+    /// η times the fill's N, T, M (bounded as η → 0; see [`ntm_rows_times_eta`]).
+    fn fill_actions_times_eta(&self, b: I, eta: I) -> Option<Ntm> {
+        let fill = self.fill.as_ref()?;
+        let (f, s) = fill_jets_times_eta(fill, (self.beta_r, self.beta_l), b, eta);
+        let [n, t, m] = actions(f, s, b);
+        Some(Ntm { n, t, m })
+    }
 }
 
 /// Whether the activation function `kind` exists at friction `mu` (`None` = ∞: hinges only).
@@ -178,6 +186,35 @@ pub(super) const ETA_LIMIT: f64 = 2.0;
 /// N, T and M at β as affine functions of x over the thicknesses `eta`: each (gradient,
 /// constant), in interval arithmetic.
 pub(super) fn ntm_rows(model: &Model, beta: f64, eta: I) -> [([I; 3], I); 3] {
+    let ring = ring_rows(model, beta, eta);
+    // the fill adds to the constant terms (without fill nothing is added: the same bounds)
+    match model.fill_actions(I::point(beta), eta) {
+        Some(f) => add_constants(ring, &f),
+        None => ring,
+    }
+}
+
+/// [`ntm_rows`] times η, in the reactions x̃ = η x (units of γ r² d): the gradients are the
+/// same, the constants η times the ring's plus η times the fill's. Every row is multiplied
+/// by the same η > 0, so a state admissible at η is one here and a Farkas proof over a cell
+/// of these rows holds for the rows themselves; the fill's load, 1/η times the ring's weight,
+/// stays bounded, so a cell may reach down to η = 0.
+pub(super) fn ntm_rows_times_eta(model: &Model, beta: f64, eta: I) -> [([I; 3], I); 3] {
+    let ring = ring_rows(model, beta, eta).map(|(g, c)| (g, c * eta));
+    match model.fill_actions_times_eta(I::point(beta), eta) {
+        Some(f) => add_constants(ring, &f),
+        None => ring,
+    }
+}
+
+/// The rows with N, T and M of `f` added to their constants.
+fn add_constants(rows: [([I; 3], I); 3], f: &Ntm) -> [([I; 3], I); 3] {
+    let [(gn, n), (gt, t), (gm, m)] = rows;
+    [(gn, n + f.n[0]), (gt, t + f.t[0]), (gm, m + f.m[0])]
+}
+
+/// N, T and M at β of the ring's weight and the reactions alone.
+fn ring_rows(model: &Model, beta: f64, eta: I) -> [([I; 3], I); 3] {
     let b = I::point(beta);
     let (s, c) = (b.sin(), b.cos());
     let br = I::point(model.beta_r);
@@ -185,25 +222,33 @@ pub(super) fn ntm_rows(model: &Model, beta: f64, eta: I) -> [([I; 3], I); 3] {
     let d = b - br;
     let rho = model.rho_over(eta);
     let z = I::point(0.0);
-    let ring = [
+    [
         ([s, c, z], -(d * c)),
         ([c, -s, z], d * s),
         ([-(s - sr), cr - c, I::point(1.0)], d * c - rho * (s - sr)),
-    ];
-    // the fill adds to the constant terms (without fill nothing is added: the same bounds)
-    match model.fill_actions(b, eta) {
-        Some(f) => {
-            let [(gn, n), (gt, t), (gm, m)] = ring;
-            [(gn, n + f.n[0]), (gt, t + f.t[0]), (gm, m + f.m[0])]
-        }
-        None => ring,
-    }
+    ]
 }
 
 /// Interval gradient (w.r.t. x) and constant term of an activation function at β, over
 /// the thicknesses `eta` (a point, or a cell of a proof over η).
 pub(super) fn affine(model: &Model, kind: ContactKind, beta: f64, eta: I, mu: f64) -> ([I; 3], I) {
-    let [(gn, n0), (gt, t0), (gm, m0)] = ntm_rows(model, beta, eta);
+    combine(ntm_rows(model, beta, eta), kind, eta, mu)
+}
+
+/// [`affine`] times η, from [`ntm_rows_times_eta`] (the rows of a Farkas cell with fill).
+pub(super) fn affine_times_eta(
+    model: &Model,
+    kind: ContactKind,
+    beta: f64,
+    eta: I,
+    mu: f64,
+) -> ([I; 3], I) {
+    combine(ntm_rows_times_eta(model, beta, eta), kind, eta, mu)
+}
+
+/// The activation function `kind` from the rows of N, T and M.
+fn combine(rows: [([I; 3], I); 3], kind: ContactKind, eta: I, mu: f64) -> ([I; 3], I) {
+    let [(gn, n0), (gt, t0), (gm, m0)] = rows;
     let he = I::point(0.5) * eta;
     let m = I::point(mu);
     let comb = |a: I, g1: [I; 3], c1: I, k: I, g2: [I; 3], c2: I| {

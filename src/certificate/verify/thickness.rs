@@ -23,14 +23,13 @@ pub(super) fn verify_thickness(cert: &Certificate, model: &Model) -> Result<Repo
     let mut checks = Vec::new();
     let mut limit_states = None;
     if model.fill.is_some() {
-        return reject(
-            "arch.fill: a thickness certificate of an arch with fill is not verified (only a \
-             load's, at its own eta)",
-        );
+        filled_sections(cert)?;
     }
-    if cert.collapse_cells.is_some() && cert.claim != Claim::NoEquilibrium {
+    let least_with_fill = cert.claim == Claim::LeastThickness && model.fill.is_some();
+    if cert.collapse_cells.is_some() && cert.claim != Claim::NoEquilibrium && !least_with_fill {
         return reject(format!(
-            "collapse_cells belong to a no_equilibrium claim, not to {}",
+            "collapse_cells belong to a no_equilibrium claim or to the least thickness of an \
+             arch with fill, not to {}",
             cert.claim.name()
         ));
     }
@@ -62,6 +61,34 @@ pub(super) fn verify_thickness(cert: &Certificate, model: &Model) -> Result<Repo
         load: None,
         lambda_bracket: None,
     })
+}
+
+/// What a thickness certificate of an arch with fill may carry. The fill's load is 1/η
+/// times the ring's weight, so the arguments that rest on the ring's weight alone do not
+/// hold: that the admissible set grows with η (a Farkas certificate at η = 2, the
+/// hinges-only search), that friction alone decides at one η, the ridge's rows linear in
+/// η, and the centred line of thrust over [0, 2]. Its `least_thickness` proves "no state
+/// below η_lo" by cells over [0, η_lo] instead, and lists no `search` (the limit states
+/// above η_s are not certified with fill); its `no_equilibrium`, by cells over [0, 2].
+fn filled_sections(cert: &Certificate) -> Result<(), Rejection> {
+    let why = match cert.claim {
+        Claim::StandsAtEveryThickness => Some("a stands_at_every_thickness claim"),
+        Claim::NoEquilibrium if cert.collapse_cells.is_none() => {
+            Some("a no_equilibrium claim without collapse_cells")
+        }
+        Claim::LeastThickness if cert.collapse_cells.is_none() => {
+            Some("a least_thickness claim without collapse_cells")
+        }
+        Claim::LeastThickness if cert.search.is_some() => Some("a search section"),
+        _ => None,
+    };
+    match why {
+        Some(what) => reject(format!(
+            "arch.fill: {what} is not verified with fill (the fill's load grows as 1/eta \
+             against the ring's weight, so the admissible set need not grow with eta)"
+        )),
+        None => Ok(()),
+    }
 }
 
 /// `no_equilibrium`: the friction-only Farkas certificate (`eta` null), or the Farkas
@@ -129,10 +156,35 @@ fn no_equilibrium_over_cells(
     model: &Model,
     cells: &[FarkasCell],
 ) -> Result<String, Rejection> {
-    check_cover(cells)?;
+    let least = prove_cover(model, cells, ETA_LIMIT, cert.mu)?;
+    Ok(format!(
+        "proved (interval arithmetic): no state is admissible at any thickness eta in [0, 2] ({} cell(s), each a Farkas certificate on 4 joints{} proved over its whole eta interval; least margin {least:.3e}), so no thickness stands at mu = {}",
+        cells.len(),
+        cells_with_fill(model),
+        mu_text(cert.mu)
+    ))
+}
+
+/// What the cells of an arch with fill are besides four joints.
+fn cells_with_fill(model: &Model) -> &'static str {
+    match model.fill {
+        Some(_) => " (or 3 sliding joints: friction alone), the rows times eta so that the fill's load stays bounded,",
+        None => "",
+    }
+}
+
+/// Every cell proved over its whole η interval, the cells covering [0, `top`]; returns the
+/// least margin.
+fn prove_cover(
+    model: &Model,
+    cells: &[FarkasCell],
+    top: f64,
+    mu: Option<f64>,
+) -> Result<f64, Rejection> {
+    check_cover(cells, top)?;
     let mut least = f64::INFINITY;
     for (i, cell) in cells.iter().enumerate() {
-        let margin = prove_cell(model, cell, cert.mu).map_err(|r| {
+        let margin = prove_cell(model, cell, mu).map_err(|r| {
             Rejection(format!(
                 "collapse_cells[{i}] (eta in [{}, {}]): {}",
                 cell.eta_lo, cell.eta_hi, r.0
@@ -140,21 +192,17 @@ fn no_equilibrium_over_cells(
         })?;
         least = least.min(margin);
     }
-    Ok(format!(
-        "proved (interval arithmetic): no state is admissible at any thickness eta in [0, 2] ({} cell(s), each a Farkas certificate on 4 joints proved over its whole eta interval; least margin {least:.3e}), so no thickness stands at mu = {}",
-        cells.len(),
-        mu_text(cert.mu)
-    ))
+    Ok(least)
 }
 
-/// The cells must cover [0, 2] in order, each ending exactly where the next begins.
-fn check_cover(cells: &[FarkasCell]) -> Result<(), Rejection> {
+/// The cells must cover [0, `top`] in order, each ending exactly where the next begins.
+fn check_cover(cells: &[FarkasCell], top: f64) -> Result<(), Rejection> {
     let (Some(first), Some(last)) = (cells.first(), cells.last()) else {
         return reject("collapse_cells is empty");
     };
-    if first.eta_lo != 0.0 || last.eta_hi != ETA_LIMIT {
+    if first.eta_lo != 0.0 || last.eta_hi != top {
         return reject(format!(
-            "collapse_cells must cover the thicknesses [0, 2]; they cover [{}, {}]",
+            "collapse_cells must cover the thicknesses [0, {top}]; they cover [{}, {}]",
             first.eta_lo, last.eta_hi
         ));
     }
@@ -175,14 +223,17 @@ fn check_cover(cells: &[FarkasCell]) -> Result<(), Rejection> {
     Ok(())
 }
 
-/// One Farkas cell proved over its whole η interval; returns its margin.
+/// One Farkas cell proved over its whole η interval; returns its margin. Three sliding
+/// joints are a certificate of friction alone (no (h, v) satisfies their |T| ≤ μN), four
+/// joints one of the whole statics.
 pub(super) fn prove_cell(
     model: &Model,
     cell: &FarkasCell,
     mu: Option<f64>,
 ) -> Result<f64, Rejection> {
     let eta = I::new(cell.eta_lo, cell.eta_hi);
-    prove_farkas(model, &cell.joints, eta, mu, false)
+    let friction_only = cell.joints.len() == 3 && cell.joints.iter().all(|j| !j.kind.is_hinge());
+    prove_farkas(model, &cell.joints, eta, mu, friction_only)
 }
 
 /// `stands_at_every_thickness`: no other section; the centred line of thrust proved.
@@ -245,6 +296,14 @@ fn least_thickness(
         "proved (interval arithmetic): no state is admissible at eta_lo = {eta_lo} (Farkas on {} joints, margin {margin:.3e})",
         col.joints.len()
     ));
+    if let Some(cells) = &cert.collapse_cells {
+        let least = prove_cover(model, cells, eta_lo, cert.mu)?;
+        checks.push(format!(
+            "proved (interval arithmetic): no state is admissible at any thickness eta in (0, eta_lo] ({} cell(s), each a Farkas certificate on 4 joints{} proved over its whole eta interval; least margin {least:.3e}): with fill the admissible set need not grow with eta, so every thinner ring is ruled out",
+            cells.len(),
+            cells_with_fill(model)
+        ));
+    }
     check_gap(cert, eta_lo, safe.eta, "eta")?;
     if let Some(ls) = &cert.limit_state {
         // the least limit state lies above η_s where η_s carries no mechanism

@@ -104,20 +104,36 @@ fn placed(mut jet: Jet, place: Option<bool>) -> Jet {
     jet
 }
 
-/// F and S of the fill over the angles `b` at the thicknesses `eta` (η > 0).
-pub(super) fn fill_jets(
+/// F and S of the fill over the angles `b` at the thicknesses `eta` (η > 0; zero where
+/// the cell reaches η ≤ 0, so callers keep η > 0).
+pub(super) fn fill_jets(fill: &FillModel, ends: (f64, f64), b: I, eta: I) -> (Jet, Jet) {
+    match eta.recip() {
+        Some(per) if eta.lo > 0.0 => fill_jets_per(fill, ends, b, eta, per),
+        _ => ([zero(); 3], [zero(); 3]),
+    }
+}
+
+/// η F and η S of the fill: in units of γ r² d rather than of the ring's weight γ t d r,
+/// so bounded as η → 0 (η ≥ 0).
+pub(super) fn fill_jets_times_eta(fill: &FillModel, ends: (f64, f64), b: I, eta: I) -> (Jet, Jet) {
+    fill_jets_per(fill, ends, b, eta, I::point(1.0))
+}
+
+/// F and S of the fill times η `per` (`per` = 1/η gives F and S themselves).
+fn fill_jets_per(
     fill: &FillModel,
     (beta_r, beta_l): (f64, f64),
     b: I,
     eta: I,
+    per: I,
 ) -> (Jet, Jet) {
     let start = beta_r.max(0.0);
-    if fill.weight_ratio == 0.0 || start >= PI || b.hi < start || eta.lo <= 0.0 {
+    if fill.weight_ratio == 0.0 || start >= PI || b.hi < start {
         return ([zero(); 3], [zero(); 3]);
     }
     let (half, two) = (I::point(0.5), I::point(2.0));
     let kappa = I::point(1.0) + half * eta;
-    let a = I::point(fill.weight_ratio) * kappa * eta.recip().expect("eta > 0");
+    let a = I::point(fill.weight_ratio) * kappa * per;
     let ys = kappa * top(beta_r, beta_l) + I::point(fill.depth);
     let (u, place) = limit(b, start);
     let (su, cu) = (u.sin(), u.cos());
