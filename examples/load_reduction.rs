@@ -1,24 +1,20 @@
 //! Where non-associative friction lowers the collapse acceleration below the static maximum:
-//! the ratio λ_c/λ_static of a horizontal body force (towards the right springing) on
-//! continuous symmetric arches, centreline weight, over a grid of openings α and
-//! thicknesses η = f η*(α, μ) (f the thickness factor over the arch's own least
-//! thickness), at a few friction coefficients. Each cell is `multiplier::survey` (λ_static
-//! exact; the limit states below it from two discretisations refined on the continuum).
+//! the load map of the atlas (`arch-enum atlas --horizontal`, [`arch_enum::atlas::loads`])
+//! on continuous symmetric arches, centreline weight, openings α in [−1, 1.2] (the
+//! semicircle among them), thicknesses η = f η*(α, μ) with f from 1.02 to 4, at five
+//! friction coefficients.
 //!
 //! Prints, per μ, the cells answered, those with a reduction (λ_c < λ_static by more than
 //! 10⁻⁹ relative), the largest reduction and where, and the semicircle's largest; then the
-//! largest reductions with their patterns. A sampled map, not a proof: a reduction window
-//! narrower than the grid's spacing is not seen.
+//! largest reductions. A sampled map, not a proof: a reduction window narrower than the
+//! grid's spacing is not seen.
 //!
 //! Run: `cargo run --release --example load_reduction [-- --alphas N --factors M]`.
 
-use arch_enum::load::LiveLoad;
-use arch_enum::multiplier::{survey, LoadOutcome};
-use arch_enum::{solve, threads, Arch, Outcome, Settings, WeightModel};
+use arch_enum::atlas::loads::{load_map, CellAnswer, LoadGrid};
+use arch_enum::atlas::Rectangle;
+use arch_enum::{threads, Settings, WeightModel};
 use std::time::Instant;
-
-/// One answered cell: (α, η, λ_static, λ_c, the least limit state's mode and pattern).
-type Cell = (f64, f64, f64, f64, String);
 
 /// The argument after `name`, or `default`.
 fn arg(name: &str, default: usize) -> usize {
@@ -30,96 +26,67 @@ fn arg(name: &str, default: usize) -> usize {
         .unwrap_or(default)
 }
 
-/// The cell at (α, f) and μ: `None` where the arch does not stand or the survey gives no
-/// decided λ_c (counted apart).
-fn cell(alpha: f64, f: f64, mu: f64, s: &Settings) -> Result<Option<Cell>, String> {
-    let arch = Arch::symmetric(alpha, WeightModel::Centreline).map_err(|e| e.to_string())?;
-    let eta_star = match solve(&arch, mu, s).map_err(|e| e.to_string())?.outcome {
-        Outcome::Limit(ls) => ls.eta_static,
-        _ => return Ok(None),
-    };
-    let eta = f * eta_star;
-    if eta >= 1.9 {
-        return Ok(None);
-    }
-    let load = LiveLoad::Horizontal {
-        towards_right: true,
-    };
-    match survey(&arch, eta, mu, &load, s).map_err(|e| e.to_string())? {
-        Ok(LoadOutcome::Limits(sv)) => {
-            let (Some((ls, _)), Some(lc)) = (sv.lambda_static, sv.lambda()) else {
-                return Ok(None);
-            };
-            let least = &sv.limit_states[0];
-            let pattern: Vec<String> = least
-                .pattern
-                .iter()
-                .map(|c| format!("{}@{:.4}", c.kind.name(), c.beta))
-                .collect();
-            let what = format!("{} {}", least.mode.name(), pattern.join(" "));
-            Ok(Some((alpha, eta, ls, lc, what)))
-        }
-        Ok(_) => Ok(None),
-        Err(e) => Err(format!("alpha = {alpha}, eta = {eta}, mu = {mu}: {e}")),
-    }
-}
-
 fn main() {
-    let s = Settings::default();
-    let (na, nf) = (arg("--alphas", 23), arg("--factors", 12));
-    let mut alphas: Vec<f64> = (0..na)
-        .map(|k| -1.0 + 2.2 * k as f64 / (na - 1).max(1) as f64)
-        .collect();
-    if !alphas.iter().any(|&a| a.abs() < 1e-12) {
-        alphas.push(0.0); // the semicircle, always
-    }
-    // the semicircle exactly (not −1 + 2.2 k/(n − 1) rounded)
-    alphas
-        .iter_mut()
-        .filter(|a| a.abs() < 1e-12)
-        .for_each(|a| *a = 0.0);
-    let factors: Vec<f64> = (0..nf)
-        .map(|k| 1.02 * (4.0f64 / 1.02).powf(k as f64 / (nf - 1).max(1) as f64))
-        .collect();
+    let grid = LoadGrid {
+        rect: Rectangle {
+            alpha_min: -1.0,
+            alpha_max: 1.2,
+            mu_max_factor: 10.0,
+            weight: WeightModel::Centreline,
+            blocks: None,
+            columns: arg("--alphas", 23),
+            samples: 2,
+            certify: false,
+        },
+        mus: vec![0.4, 0.6, 0.8, 1.0, 1.5],
+        factors: arg("--factors", 12),
+        factor_max: 4.0,
+    };
     let cores = threads::available();
+    let start = Instant::now();
+    let map = load_map(&grid, &Settings::default(), cores, &|_, _| {}).unwrap();
     println!("| mu | cells answered | undecided | with a reduction | largest reduction | at alpha, eta | semicircle's largest |");
     println!("|---:|---:|---:|---:|---:|---|---:|");
-    let mut top: Vec<(f64, f64, Cell)> = Vec::new();
-    let start = Instant::now();
-    for mu in [0.4, 0.6, 0.8, 1.0, 1.5] {
-        let grid: Vec<(f64, f64)> = alphas
-            .iter()
-            .flat_map(|&a| factors.iter().map(move |&f| (a, f)))
-            .collect();
-        let out = threads::map(&grid, cores, |_, &(a, f)| cell(a, f, mu, &s));
-        let undecided = out.iter().filter(|c| c.is_err()).count();
-        let cells: Vec<Cell> = out.into_iter().filter_map(|c| c.ok().flatten()).collect();
-        let red = |c: &Cell| 1.0 - c.3 / c.2;
-        let reducing: Vec<&Cell> = cells.iter().filter(|c| red(c) > 1e-9).collect();
-        let best = reducing.iter().max_by(|a, b| red(a).total_cmp(&red(b)));
-        let semi = cells
-            .iter()
-            .filter(|c| c.0 == 0.0)
-            .map(red)
-            .fold(0.0f64, f64::max);
+    for &mu in &grid.mus {
+        let answered = map.at(mu).filter(|c| c.reduction().is_some()).count();
+        let undecided = map
+            .at(mu)
+            .filter(|c| matches!(c.answer, CellAnswer::Undecided(_)))
+            .count();
+        let best = map.largest(mu);
         println!(
-            "| {mu} | {} | {undecided} | {} | {} | {} | {:.3e} |",
-            cells.len(),
-            reducing.len(),
-            best.map_or("-".into(), |c| format!("{:.4}", red(c))),
-            best.map_or("-".into(), |c| format!("{:.3}, {:.4}", c.0, c.1)),
-            semi
+            "| {mu} | {answered} | {undecided} | {} | {} | {} | {:.3e} |",
+            map.at(mu).filter(|c| c.reduced()).count(),
+            best.map_or("-".into(), |c| format!("{:.4}", c.reduction().unwrap())),
+            best.map_or("-".into(), |c| format!(
+                "{:.3}, {:.4}",
+                c.alpha,
+                c.eta.unwrap()
+            )),
+            map.semicircle(mu).unwrap_or(f64::NAN)
         );
-        top.extend(reducing.iter().map(|c| (mu, red(c), (*c).clone())));
     }
-    top.sort_by(|a, b| b.1.total_cmp(&a.1));
+    let mut top: Vec<_> = map.cells.iter().filter(|c| c.reduced()).collect();
+    top.sort_by(|a, b| b.reduction().unwrap().total_cmp(&a.reduction().unwrap()));
     println!("\nthe largest reductions:\n");
     println!("| mu | alpha | eta | lambda_static | lambda_c | reduction | least limit state |");
     println!("|---:|---:|---:|---:|---:|---:|---|");
-    for (mu, r, c) in top.iter().take(12) {
+    for c in top.iter().take(12) {
+        let CellAnswer::Ratio {
+            lambda_static,
+            lambda_c,
+            mode,
+        } = &c.answer
+        else {
+            continue;
+        };
         println!(
-            "| {mu} | {:.4} | {:.5} | {:.6} | {:.6} | {r:.4} | {} |",
-            c.0, c.1, c.2, c.3, c.4
+            "| {} | {:.4} | {:.5} | {lambda_static:.6} | {lambda_c:.6} | {:.4} | {} |",
+            c.mu,
+            c.alpha,
+            c.eta.unwrap(),
+            c.reduction().unwrap(),
+            mode.name()
         );
     }
     eprintln!("{:.1} s on {cores} threads", start.elapsed().as_secs_f64());

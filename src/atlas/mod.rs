@@ -16,6 +16,7 @@
 mod certified;
 mod classify;
 mod column;
+pub mod loads;
 mod regions;
 mod tips;
 

@@ -5,6 +5,7 @@ use super::arch_args::WeightArg;
 use super::io::{to_json, Exit, Io};
 use super::threads_arg::ThreadsArg;
 use crate::arch::InputError;
+use crate::atlas::loads::{load_map, LoadGrid};
 use crate::atlas::{atlas, Atlas, Rectangle};
 use crate::render::{json, table};
 use crate::settings::Settings;
@@ -43,9 +44,9 @@ pub(crate) struct RectArgs {
 }
 
 impl RectArgs {
-    /// The atlas these flags ask for (a bad range is named by its flag).
-    pub(crate) fn atlas(&self, settings: &Settings) -> Result<Atlas, InputError> {
-        let rect = Rectangle {
+    /// The rectangle of these flags.
+    fn rectangle(&self) -> Rectangle {
+        Rectangle {
             alpha_min: self.alpha_min,
             alpha_max: self.alpha_max,
             mu_max_factor: self.mu_max_factor,
@@ -54,7 +55,12 @@ impl RectArgs {
             columns: self.columns,
             samples: self.samples,
             certify: self.certify,
-        };
+        }
+    }
+
+    /// The atlas these flags ask for (a bad range is named by its flag).
+    pub(crate) fn atlas(&self, settings: &Settings) -> Result<Atlas, InputError> {
+        let rect = self.rectangle();
         let threads = self.threads.count()?;
         let bar = super::progress::Progress::new("atlas");
         atlas(&rect, settings, threads, &|done, total| {
@@ -63,16 +69,72 @@ impl RectArgs {
     }
 }
 
+/// The load map's flags.
+#[derive(Args, Debug)]
+struct LoadMapArgs {
+    /// Map the collapse multiplier of a horizontal acceleration (towards the right
+    /// springing) instead: lambda_c/lambda_static over the openings and the thicknesses
+    /// eta = f eta*(alpha, mu), at each --mu. Each cell is a complete load search (tens of
+    /// ms on a continuous arch): mind --columns.
+    #[arg(long, requires = "mu", conflicts_with_all = ["certify", "samples", "mu_max_factor"])]
+    horizontal: bool,
+    /// With --horizontal: the friction coefficients, comma-separated (0 < mu < inf).
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        requires = "horizontal"
+    )]
+    mu: Vec<f64>,
+    /// With --horizontal: thicknesses per opening, f geometric from 1.02 to --factor-max
+    /// (2 to 200; default 12).
+    #[arg(long, allow_hyphen_values = true, requires = "horizontal")]
+    factors: Option<usize>,
+    /// With --horizontal: the thickest ring as a factor over eta* (1.02 < F <= 100; default 4).
+    #[arg(long, allow_hyphen_values = true, requires = "horizontal")]
+    factor_max: Option<f64>,
+}
+
 #[derive(Args, Debug)]
 pub(crate) struct AtlasArgs {
     #[command(flatten)]
     rect: RectArgs,
+    #[command(flatten)]
+    loads: LoadMapArgs,
     /// Print one JSON document instead of tables.
     #[arg(long)]
     pub(crate) json: bool,
 }
 
+/// `atlas --horizontal`: the load map.
+fn run_load_map(a: &AtlasArgs, settings: &Settings, io: &mut Io) -> Exit {
+    let grid = LoadGrid {
+        rect: a.rect.rectangle(),
+        mus: a.loads.mu.clone(),
+        factors: a.loads.factors.unwrap_or(12),
+        factor_max: a.loads.factor_max.unwrap_or(4.0),
+    };
+    let bar = super::progress::Progress::new("atlas");
+    let map = match a.rect.threads.count().and_then(|threads| {
+        load_map(&grid, settings, threads, &|done, total| {
+            bar.update(done, total)
+        })
+    }) {
+        Ok(m) => m,
+        Err(e) => return io.bad_input(&e),
+    };
+    if a.json {
+        io.out(&to_json(&json::load_map(&map)));
+    } else {
+        io.out(&table::load_map(&map));
+    }
+    Exit::Answered
+}
+
 pub(crate) fn run(a: AtlasArgs, settings: &Settings, io: &mut Io) -> Exit {
+    if a.loads.horizontal {
+        return run_load_map(&a, settings, io);
+    }
     let at = match a.rect.atlas(settings) {
         Ok(at) => at,
         Err(e) => return io.bad_input(&e),

@@ -328,3 +328,96 @@ fn certified_brackets() {
         }
     }
 }
+
+/// The load map (`atlas --horizontal`): on the continuous arches around α = 0.5 at μ = 1,
+/// the largest reduction of the collapse acceleration below the static maximum, 8.9 % at
+/// α = 0.5 (η = 0.5925, a mixed mode), is the largest over the cells, and every answered
+/// cell is the load survey run on its own; on five voussoirs each cell's collapse multiplier
+/// is the least limit state of the brute force (`load_reference`: every pattern of contacts,
+/// an LP each), and "no collapse" where it finds none. Bad flags are refused by name.
+#[test]
+fn the_load_map_finds_the_reduction_and_agrees_with_the_brute_force() {
+    use arch_enum::atlas::loads::{load_map, CellAnswer, LoadGrid};
+    use arch_enum::atlas::Rectangle;
+    use arch_enum::load::LiveLoad;
+    use arch_enum::multiplier::{survey as load_survey, LoadOutcome};
+    let settings = Settings::default();
+    let rect = |alpha_min, alpha_max, blocks| Rectangle {
+        alpha_min,
+        alpha_max,
+        mu_max_factor: 10.0,
+        weight: WeightModel::Centreline,
+        blocks,
+        columns: 3,
+        samples: 40,
+        certify: false,
+    };
+    let grid = LoadGrid {
+        rect: rect(0.45, 0.55, None),
+        mus: vec![1.0],
+        factors: 12,
+        factor_max: 4.0,
+    };
+    let map = load_map(&grid, &settings, 2, &|_, _| {}).unwrap();
+    let best = map.largest(1.0).unwrap();
+    assert_eq!(best.alpha, 0.5);
+    let r = best.reduction().unwrap();
+    assert!(
+        (r - 0.0889).abs() < 5e-4 && (best.eta.unwrap() - 0.5925).abs() < 1e-3,
+        "{best:?}"
+    );
+    let most = map
+        .cells
+        .iter()
+        .filter_map(|c| c.reduction())
+        .fold(0.0, f64::max);
+    assert_eq!(r, most);
+    let horizontal = LiveLoad::Horizontal {
+        towards_right: true,
+    };
+    for c in map.cells.iter().filter(|c| c.eta.is_some()).step_by(5) {
+        let arch = Arch::symmetric(c.alpha, WeightModel::Centreline).unwrap();
+        let alone = load_survey(&arch, c.eta.unwrap(), c.mu, &horizontal, &settings).unwrap();
+        if let (CellAnswer::Ratio { lambda_c, .. }, Ok(LoadOutcome::Limits(sv))) =
+            (&c.answer, &alone)
+        {
+            assert_eq!(Some(*lambda_c), sv.lambda(), "{c:?}");
+        }
+    }
+    let grid = LoadGrid {
+        rect: rect(-0.2, 0.6, Some(5)),
+        mus: vec![0.6, 1.0],
+        factors: 3,
+        factor_max: 2.5,
+    };
+    let map = load_map(&grid, &settings, 2, &|_, _| {}).unwrap();
+    let mut compared = 0;
+    for c in &map.cells {
+        let Some(eta) = c.eta else { continue };
+        let arch = Arch::symmetric(c.alpha, WeightModel::Centreline)
+            .unwrap()
+            .with_blocks(5)
+            .unwrap();
+        let arch_enum::JointLayout::Discrete(joints) = arch.layout() else {
+            unreachable!("five voussoirs")
+        };
+        let reference =
+            crate::load_reference::Case::new(joints, false, eta, c.mu, horizontal).brute_force();
+        match &c.answer {
+            CellAnswer::Ratio { lambda_c, .. } => {
+                let least = reference.first().copied().unwrap_or(f64::NAN);
+                assert!(
+                    (lambda_c - least).abs() <= 1e-8 * least.abs().max(1.0),
+                    "{c:?} vs {reference:?}"
+                );
+            }
+            CellAnswer::NoCollapse => assert!(reference.is_empty(), "{c:?} vs {reference:?}"),
+            other => panic!("{c:?}: {other:?}"),
+        }
+        compared += 1;
+    }
+    assert!(compared >= 12, "only {compared} cells compared");
+    let (v, code) = json_of(&["atlas", "--horizontal", "--mu", "1", "--factors", "1"]);
+    assert_eq!(code, 2, "{v}");
+    assert!(v["message"].as_str().unwrap().contains("--factors"), "{v}");
+}

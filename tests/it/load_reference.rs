@@ -37,7 +37,7 @@ struct Section {
     loaded_side: bool,
 }
 
-struct Case {
+pub(crate) struct Case {
     joints: Vec<f64>,
     centroid: bool,
     eta: f64,
@@ -52,7 +52,7 @@ struct Case {
 }
 
 impl Case {
-    fn new(joints: &[f64], centroid: bool, eta: f64, mu: f64, load: LiveLoad) -> Case {
+    pub(crate) fn new(joints: &[f64], centroid: bool, eta: f64, mu: f64, load: LiveLoad) -> Case {
         let mut sections = Vec::new();
         for &b in joints {
             match load {
@@ -369,7 +369,7 @@ impl Case {
 
     /// Every limit state's λ (distinct to 1e-9 relative), ascending; a continuum by its
     /// least λ.
-    fn brute_force(&self) -> Vec<f64> {
+    pub(crate) fn brute_force(&self) -> Vec<f64> {
         let rows: Vec<([f64; 4], f64)> = self.contacts.iter().map(|&c| self.row(c)).collect();
         let scale = |z: &[f64; 4]| 1.0 + z.iter().map(|v| v.abs()).sum::<f64>();
         let continua = self.continua(&rows);

@@ -1,0 +1,261 @@
+//! The load map of the atlas: where non-associative friction lowers the collapse multiplier
+//! of a horizontal body force (an acceleration towards the right springing) below its static
+//! maximum, over openings α of symmetric arches and thicknesses η = f η\*(α, μ) (f the
+//! thickness factor over the arch's own least thickness), at a few friction coefficients.
+//!
+//! Each cell is the complete load survey ([`crate::multiplier::survey`]: λ_static exact,
+//! every limit state below it), and its answer is λ_c/λ_static. A sampled map: a reduction
+//! narrower than the grid's spacing is not seen, and a cell without a reduction proves
+//! nothing about its neighbours.
+
+use super::column::Rectangle;
+use crate::arch::InputError;
+use crate::collapse_mode::CollapseMode;
+use crate::limit::{solve, Outcome};
+use crate::load::LiveLoad;
+use crate::multiplier::{survey, LoadOutcome};
+use crate::settings::Settings;
+use crate::threads;
+
+/// A reduction is counted where λ_c is below λ_static by more than this (relative): the
+/// resolution at which two limit states are told apart.
+pub const REDUCTION_TOL: f64 = 1e-9;
+
+/// The thinnest ring of the map, as a factor over η\*.
+pub const FACTOR_MIN: f64 = 1.02;
+
+/// Rings at least this thick (η) are left out: the thickness limit is 2.
+pub const ETA_MAX: f64 = 1.9;
+
+/// What the load map covers.
+#[derive(Debug, Clone)]
+pub struct LoadGrid {
+    /// The openings (its α range, columns, weight and joints; its μ samples are not used).
+    pub rect: Rectangle,
+    /// The friction coefficients, each a map of its own.
+    pub mus: Vec<f64>,
+    /// Thickness factors per opening, geometric from [`FACTOR_MIN`] to `factor_max`.
+    pub factors: usize,
+    /// The thickest ring, as a factor over η\*.
+    pub factor_max: f64,
+}
+
+/// What one cell answers.
+#[derive(Debug, Clone, PartialEq)]
+pub enum CellAnswer {
+    /// The collapse multiplier and the static maximum, with the least limit state's mode.
+    Ratio {
+        /// λ_static.
+        lambda_static: f64,
+        /// λ_c, the least limit state's λ.
+        lambda_c: f64,
+        /// The least limit state's mode.
+        mode: CollapseMode,
+    },
+    /// The load drives no mechanism (λ unbounded, or no limit state).
+    NoCollapse,
+    /// No ring of the map: no thickness stands at this μ, or the arch stands at every
+    /// thickness (no η\* to scale), or the ring would be at least [`ETA_MAX`].
+    NoRing,
+    /// The survey reached no decision (why).
+    Undecided(String),
+}
+
+/// One cell of the map.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LoadCell {
+    /// Opening.
+    pub alpha: f64,
+    /// Thickness factor over η\*(α, μ).
+    pub factor: f64,
+    /// Friction coefficient.
+    pub mu: f64,
+    /// The thickness (`None` where there is no ring).
+    pub eta: Option<f64>,
+    /// Its answer.
+    pub answer: CellAnswer,
+}
+
+impl LoadCell {
+    /// 1 − λ_c/λ_static, where both exist.
+    pub fn reduction(&self) -> Option<f64> {
+        match self.answer {
+            CellAnswer::Ratio {
+                lambda_static,
+                lambda_c,
+                ..
+            } => Some(1.0 - lambda_c / lambda_static),
+            _ => None,
+        }
+    }
+
+    /// Whether non-associative friction lowers λ_c below λ_static here.
+    pub fn reduced(&self) -> bool {
+        self.reduction().is_some_and(|r| r > REDUCTION_TOL)
+    }
+}
+
+/// The whole load map.
+#[derive(Debug, Clone)]
+pub struct LoadMap {
+    /// What it covers.
+    pub grid: LoadGrid,
+    /// The openings (the semicircle among them where the range holds it).
+    pub alphas: Vec<f64>,
+    /// The thickness factors.
+    pub factors: Vec<f64>,
+    /// Every cell: by μ, then α, then factor.
+    pub cells: Vec<LoadCell>,
+}
+
+impl LoadMap {
+    /// The cells at friction `mu`.
+    pub fn at(&self, mu: f64) -> impl Iterator<Item = &LoadCell> {
+        self.cells.iter().filter(move |c| c.mu == mu)
+    }
+
+    /// The cell of the largest reduction at `mu`, if any cell has one.
+    pub fn largest(&self, mu: f64) -> Option<&LoadCell> {
+        self.at(mu)
+            .filter(|c| c.reduced())
+            .max_by(|a, b| a.reduction().unwrap().total_cmp(&b.reduction().unwrap()))
+    }
+
+    /// The semicircle's largest reduction at `mu` (0 where it has none; `None` where the
+    /// map holds no semicircle).
+    pub fn semicircle(&self, mu: f64) -> Option<f64> {
+        let cells: Vec<&LoadCell> = self.at(mu).filter(|c| c.alpha == 0.0).collect();
+        (!cells.is_empty()).then(|| {
+            let r = cells.iter().filter_map(|c| c.reduction());
+            r.fold(0.0, f64::max)
+        })
+    }
+}
+
+/// The load map over `grid` on `threads` threads; `progress(done, total)` after each cell.
+pub fn load_map(
+    grid: &LoadGrid,
+    settings: &Settings,
+    threads: usize,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<LoadMap, InputError> {
+    check(grid)?;
+    let alphas = openings(&grid.rect);
+    let n = grid.factors;
+    let factors: Vec<f64> = (0..n)
+        .map(|k| FACTOR_MIN * (grid.factor_max / FACTOR_MIN).powf(k as f64 / (n - 1) as f64))
+        .collect();
+    let cells: Vec<(f64, f64, f64)> = grid
+        .mus
+        .iter()
+        .flat_map(|&mu| {
+            let factors = &factors;
+            alphas
+                .iter()
+                .flat_map(move |&a| factors.iter().map(move |&f| (mu, a, f)))
+        })
+        .collect();
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    let cells = threads::map(&cells, threads, |_, &(mu, alpha, factor)| {
+        let c = cell(&grid.rect, (alpha, factor, mu), settings);
+        let k = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+        progress(k, cells.len());
+        c
+    })
+    .into_iter()
+    .collect::<Result<Vec<_>, _>>()?;
+    Ok(LoadMap {
+        grid: grid.clone(),
+        alphas,
+        factors,
+        cells,
+    })
+}
+
+/// The ranges, each named by its flag.
+fn check(grid: &LoadGrid) -> Result<(), InputError> {
+    grid.rect.check()?;
+    let bad = |arg: &'static str, value: String, range: &str| InputError::OutOfRange {
+        arg,
+        value,
+        range: range.into(),
+    };
+    if grid.mus.is_empty() {
+        return Err(bad("--mu", "none".into(), "one or more of 0 < mu < inf"));
+    }
+    for &mu in &grid.mus {
+        crate::arch::check_mu(mu)?;
+        if !mu.is_finite() {
+            return Err(bad("--mu", crate::arch::fmt_value(mu), "0 < mu < inf"));
+        }
+    }
+    if !(2..=200).contains(&grid.factors) {
+        return Err(bad(
+            "--factors",
+            grid.factors.to_string(),
+            "whole numbers 2 to 200",
+        ));
+    }
+    if !(grid.factor_max > FACTOR_MIN && grid.factor_max <= 100.0) {
+        let v = crate::arch::fmt_value(grid.factor_max);
+        return Err(bad("--factor-max", v, "1.02 < F <= 100"));
+    }
+    Ok(())
+}
+
+/// The openings of the columns, with the semicircle put exactly where a column rounds to
+/// it, and added where the range holds it but no column lies on it.
+fn openings(rect: &Rectangle) -> Vec<f64> {
+    let mut alphas = rect.alphas();
+    let step = (rect.alpha_max - rect.alpha_min) / (alphas.len() - 1) as f64;
+    for a in alphas.iter_mut().filter(|a| a.abs() < 1e-9 * step) {
+        *a = 0.0;
+    }
+    if rect.alpha_min < 0.0 && rect.alpha_max > 0.0 && !alphas.contains(&0.0) {
+        alphas.push(0.0);
+        alphas.sort_by(f64::total_cmp);
+    }
+    alphas
+}
+
+/// One cell: η\*(α, μ), the ring f η\*, and its load survey.
+fn cell(
+    rect: &Rectangle,
+    (alpha, factor, mu): (f64, f64, f64),
+    settings: &Settings,
+) -> Result<LoadCell, InputError> {
+    let arch = rect.arch(alpha)?;
+    let at = |eta, answer| LoadCell {
+        alpha,
+        factor,
+        mu,
+        eta,
+        answer,
+    };
+    let eta_star = match solve(&arch, mu, settings)?.outcome {
+        Outcome::Limit(ls) => ls.eta_static,
+        Outcome::Unresolved { reason, .. } => return Ok(at(None, CellAnswer::Undecided(reason))),
+        _ => return Ok(at(None, CellAnswer::NoRing)),
+    };
+    let eta = factor * eta_star;
+    if eta >= ETA_MAX {
+        return Ok(at(None, CellAnswer::NoRing));
+    }
+    let load = LiveLoad::Horizontal {
+        towards_right: true,
+    };
+    let answer = match survey(&arch, eta, mu, &load, settings)? {
+        Ok(LoadOutcome::Limits(sv)) => match (sv.lambda_static, sv.limit_states.first()) {
+            (Some((lambda_static, _)), Some(least)) => CellAnswer::Ratio {
+                lambda_static,
+                lambda_c: least.t,
+                mode: least.mode,
+            },
+            _ => CellAnswer::NoCollapse,
+        },
+        Ok(LoadOutcome::NoCollapse { .. }) => CellAnswer::NoCollapse,
+        Ok(LoadOutcome::NoEquilibrium) => CellAnswer::NoRing,
+        Err(e) => CellAnswer::Undecided(e.to_string()),
+    };
+    Ok(at(Some(eta), answer))
+}

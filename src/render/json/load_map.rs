@@ -1,0 +1,126 @@
+//! The `atlas --horizontal --json` document: the load map.
+
+use super::common::JSON_VERSION;
+use crate::atlas::loads::{CellAnswer, LoadCell, LoadMap};
+use serde::Serialize;
+
+#[derive(Debug, Serialize)]
+struct LargestJson {
+    alpha: f64,
+    eta: Option<f64>,
+    factor: f64,
+    reduction: Option<f64>,
+}
+
+#[derive(Debug, Serialize)]
+struct SummaryJson {
+    mu: f64,
+    cells: usize,
+    answered: usize,
+    undecided: usize,
+    reduced: usize,
+    largest: Option<LargestJson>,
+    /// The semicircle's largest reduction (null: the map holds no semicircle).
+    semicircle_largest: Option<f64>,
+}
+
+#[derive(Debug, Serialize)]
+struct CellJson {
+    alpha: f64,
+    factor: f64,
+    mu: f64,
+    eta: Option<f64>,
+    /// `ratio`, `no_collapse`, `no_ring` or `undecided`.
+    status: &'static str,
+    lambda_static: Option<f64>,
+    lambda_c: Option<f64>,
+    reduction: Option<f64>,
+    mode: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    message: Option<String>,
+}
+
+/// The load map as JSON.
+#[derive(Debug, Serialize)]
+pub struct LoadMapJson {
+    version: u32,
+    status: &'static str,
+    load: &'static str,
+    weight: &'static str,
+    blocks: Option<usize>,
+    alphas: Vec<f64>,
+    factors: Vec<f64>,
+    mus: Vec<f64>,
+    reduction_tol: f64,
+    summary: Vec<SummaryJson>,
+    cells: Vec<CellJson>,
+}
+
+fn cell_json(c: &LoadCell) -> CellJson {
+    let (status, lambdas, mode, message) = match &c.answer {
+        CellAnswer::Ratio {
+            lambda_static,
+            lambda_c,
+            mode,
+        } => (
+            "ratio",
+            Some((*lambda_static, *lambda_c)),
+            Some(mode.name()),
+            None,
+        ),
+        CellAnswer::NoCollapse => ("no_collapse", None, None, None),
+        CellAnswer::NoRing => ("no_ring", None, None, None),
+        CellAnswer::Undecided(why) => ("undecided", None, None, Some(why.clone())),
+    };
+    CellJson {
+        alpha: c.alpha,
+        factor: c.factor,
+        mu: c.mu,
+        eta: c.eta,
+        status,
+        lambda_static: lambdas.map(|l| l.0),
+        lambda_c: lambdas.map(|l| l.1),
+        reduction: c.reduction(),
+        mode,
+        message,
+    }
+}
+
+/// The summary of the cells at one μ.
+fn summary(map: &LoadMap, mu: f64) -> SummaryJson {
+    let undecided = map
+        .at(mu)
+        .filter(|c| matches!(c.answer, CellAnswer::Undecided(_)))
+        .count();
+    SummaryJson {
+        mu,
+        cells: map.at(mu).count(),
+        answered: map.at(mu).filter(|c| c.reduction().is_some()).count(),
+        undecided,
+        reduced: map.at(mu).filter(|c| c.reduced()).count(),
+        largest: map.largest(mu).map(|c| LargestJson {
+            alpha: c.alpha,
+            eta: c.eta,
+            factor: c.factor,
+            reduction: c.reduction(),
+        }),
+        semicircle_largest: map.semicircle(mu),
+    }
+}
+
+/// `atlas --horizontal --json`.
+pub fn load_map(map: &LoadMap) -> LoadMapJson {
+    LoadMapJson {
+        version: JSON_VERSION,
+        status: "ok",
+        load: "horizontal",
+        weight: map.grid.rect.weight.name(),
+        blocks: map.grid.rect.blocks,
+        alphas: map.alphas.clone(),
+        factors: map.factors.clone(),
+        mus: map.grid.mus.clone(),
+        reduction_tol: crate::atlas::loads::REDUCTION_TOL,
+        summary: map.grid.mus.iter().map(|&mu| summary(map, mu)).collect(),
+        cells: map.cells.iter().map(cell_json).collect(),
+    }
+}

@@ -1,0 +1,95 @@
+//! `arch-enum atlas --horizontal` as text: per friction coefficient, how many cells show a
+//! reduction of the collapse multiplier below the static maximum, the largest and where,
+//! the semicircle's; then every cell with a reduction.
+
+use super::format::sig;
+use crate::atlas::loads::{CellAnswer, LoadMap, FACTOR_MIN};
+use std::fmt::Write;
+
+/// The load map as text.
+pub fn load_map(map: &LoadMap) -> String {
+    let r = &map.grid.rect;
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "load map: a horizontal acceleration (towards the right springing) on symmetric arches, alpha in [{}, {}] ({} openings), eta = f eta*(alpha, mu) with f from {FACTOR_MIN} to {} ({} thicknesses, geometric); {}; weight along the {}",
+        r.alpha_min,
+        r.alpha_max,
+        map.alphas.len(),
+        map.grid.factor_max,
+        map.factors.len(),
+        r.blocks.map_or("continuous joints".into(), |n| format!("{n} voussoirs")),
+        r.weight.name()
+    );
+    let _ = writeln!(
+        s,
+        "each cell is the complete load survey: lambda_static and every limit state below it; a reduction is lambda_c < lambda_static (a sampled map: a reduction narrower than the grid is not seen)"
+    );
+    let _ = writeln!(
+        s,
+        "          mu   cells  answered  undecided  reduced  largest reduction (alpha, eta)   semicircle's largest"
+    );
+    for &mu in &map.grid.mus {
+        let count = |f: &dyn Fn(&CellAnswer) -> bool| map.at(mu).filter(|c| f(&c.answer)).count();
+        let largest = map.largest(mu).map_or("none".to_string(), |c| {
+            format!(
+                "{} ({}, {})",
+                sig(c.reduction().unwrap_or(0.0), 4),
+                sig(c.alpha, 5),
+                c.eta.map_or("-".into(), |e| sig(e, 5))
+            )
+        });
+        let _ = writeln!(
+            s,
+            "  {:>10}  {:>6}  {:>8}  {:>9}  {:>7}  {largest:<32}  {}",
+            sig(mu, 6),
+            map.at(mu).count(),
+            count(&|a| matches!(a, CellAnswer::Ratio { .. })),
+            count(&|a| matches!(a, CellAnswer::Undecided(_))),
+            map.at(mu).filter(|c| c.reduced()).count(),
+            map.semicircle(mu)
+                .map_or("not in the map".into(), |r| sig(r, 4)),
+        );
+    }
+    for c in &map.cells {
+        if let CellAnswer::Undecided(why) = &c.answer {
+            let _ = writeln!(
+                s,
+                "undecided at mu = {}, alpha = {}, eta = {}: {why}",
+                sig(c.mu, 6),
+                sig(c.alpha, 6),
+                c.eta.map_or("-".into(), |e| sig(e, 6))
+            );
+        }
+    }
+    let reduced: Vec<_> = map.cells.iter().filter(|c| c.reduced()).collect();
+    if !reduced.is_empty() {
+        let _ = writeln!(s, "cells with a reduction:");
+        let _ = writeln!(
+            s,
+            "          mu       alpha         eta  lambda_static      lambda_c  reduction  least limit state"
+        );
+    }
+    for c in reduced {
+        let CellAnswer::Ratio {
+            lambda_static,
+            lambda_c,
+            mode,
+        } = &c.answer
+        else {
+            continue;
+        };
+        let _ = writeln!(
+            s,
+            "  {:>10}  {:>10}  {:>10}  {:>13}  {:>12}  {:>9}  {}",
+            sig(c.mu, 6),
+            sig(c.alpha, 6),
+            c.eta.map_or("-".into(), |e| sig(e, 6)),
+            sig(*lambda_static, 8),
+            sig(*lambda_c, 8),
+            sig(c.reduction().unwrap_or(0.0), 4),
+            mode.name()
+        );
+    }
+    s
+}
