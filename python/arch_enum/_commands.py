@@ -140,7 +140,7 @@ ROWS = {
     "modes": ("corners", "samples"),
     "load": ("limit_states",),
     "load-curve": ("points",),
-    "atlas": ("boundaries",),
+    "atlas": ("boundaries", "cells"),
 }
 
 
@@ -159,7 +159,7 @@ class Document(dict):
     def to_pandas(self, rows: Optional[str] = None) -> Any:
         """A ``pandas.DataFrame`` (needs ``pandas``): one row per item of the list
         ``rows`` (default: the command's natural list: limit states, points, corners, the
-        samples of ``modes`` with fill, the atlas's boundaries), else one row of the
+        samples of ``modes`` with fill, the atlas's boundaries or its load map's cells), else one row of the
         document; nested fields become dotted columns (``reactions.h``)."""
         try:
             import pandas as pd

@@ -47,6 +47,9 @@ def test_every_document_has_a_frame():
     filled = ae.run("modes", ae.Arch(alpha=0, fill_ratio=0.9, fill_height=0.0566))
     assert len(filled.to_pandas()) == len(filled["samples"]) >= 12
     assert len(ae.run("assess", SEMI, eta=0.2, mu=0.6).to_pandas()) == 1
+    loads = ae.run("atlas", horizontal="right", mu=[1.0], alpha_min=0.45, alpha_max=0.55,
+                   columns=3, factors=3)
+    assert len(loads.to_pandas()) == len(loads["cells"]) == 9
     crossing = ae.critical(span=10, rise=5, ring=0.6, width=1, unit_weight=20, mu=0.6,
                            axles=[100], samples=5)
     influence = crossing.to_pandas("influence")

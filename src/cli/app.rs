@@ -97,10 +97,11 @@ pub(super) enum Command {
         after_help = "Example:\n  arch-enum curve --alpha 0 --points 10\n  arch-enum curve --alpha 1 --mu-min 1 --mu-max 100 --json"
     )]
     Curve(curve::CurveArgs),
-    /// The atlas of uniqueness over symmetric arches: where the least thickness carries the only limit state, where others lie above it, where it carries none, and where no equilibrium exists, over openings alpha and friction mu from mu_ms(alpha).
+    /// The atlas of uniqueness over symmetric arches: where the least thickness carries the only limit state, where others lie above it, where it carries none, and where no equilibrium exists, over openings alpha and friction mu from mu_ms(alpha); with --horizontal, the load map: where friction lowers the collapse acceleration below its static maximum.
     #[command(after_help = "Example:
   arch-enum atlas --alpha-min 0.5 --alpha-max 0.9 --mu-max-factor 1.5
-  arch-enum atlas --blocks 24 --json")]
+  arch-enum atlas --blocks 24 --json
+  arch-enum atlas --horizontal --mu 1 --alpha-min 0.45 --alpha-max 0.55 --columns 3")]
     Atlas(atlas::AtlasArgs),
     /// The explorer: a local web page (sliders, the eta-mu diagram, the arch at its limit state) and a JSON API giving the same documents as --json, on 127.0.0.1.
     #[command(
