@@ -145,19 +145,25 @@ pub fn load_map(
     let factors: Vec<f64> = (0..n)
         .map(|k| FACTOR_MIN * (grid.factor_max / FACTOR_MIN).powf(k as f64 / (n - 1) as f64))
         .collect();
-    let cells: Vec<(f64, f64, f64)> = grid
+    // η*(α, μ) once per opening and friction, then every thickness of it
+    let columns: Vec<(f64, f64)> = grid
         .mus
         .iter()
-        .flat_map(|&mu| {
-            let factors = &factors;
-            alphas
-                .iter()
-                .flat_map(move |&a| factors.iter().map(move |&f| (mu, a, f)))
-        })
+        .flat_map(|&mu| alphas.iter().map(move |&a| (mu, a)))
+        .collect();
+    let stars = threads::map(&columns, threads, |_, &(mu, alpha)| {
+        least(&grid.rect, alpha, mu, settings)
+    })
+    .into_iter()
+    .collect::<Result<Vec<_>, _>>()?;
+    let cells: Vec<(f64, f64, f64, &Least)> = columns
+        .iter()
+        .zip(&stars)
+        .flat_map(|(&(mu, a), star)| factors.iter().map(move |&f| (mu, a, f, star)))
         .collect();
     let done = std::sync::atomic::AtomicUsize::new(0);
-    let cells = threads::map(&cells, threads, |_, &(mu, alpha, factor)| {
-        let c = cell(&grid.rect, (alpha, factor, mu), settings);
+    let cells = threads::map(&cells, threads, |_, &(mu, alpha, factor, star)| {
+        let c = cell(&grid.rect, (alpha, factor, mu), star, settings);
         let k = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
         progress(k, cells.len());
         c
@@ -218,10 +224,23 @@ fn openings(rect: &Rectangle) -> Vec<f64> {
     alphas
 }
 
-/// One cell: η\*(α, μ), the ring f η\*, and its load survey.
+/// η\*(α, μ), or the answer of every cell of that opening and friction without it.
+type Least = Result<f64, CellAnswer>;
+
+/// η\*(α, μ) of the opening `alpha` at friction `mu`.
+fn least(rect: &Rectangle, alpha: f64, mu: f64, settings: &Settings) -> Result<Least, InputError> {
+    Ok(match solve(&rect.arch(alpha)?, mu, settings)?.outcome {
+        Outcome::Limit(ls) => Ok(ls.eta_static),
+        Outcome::Unresolved { reason, .. } => Err(CellAnswer::Undecided(reason)),
+        _ => Err(CellAnswer::NoRing),
+    })
+}
+
+/// One cell: the ring f η\* and its load survey.
 fn cell(
     rect: &Rectangle,
     (alpha, factor, mu): (f64, f64, f64),
+    least: &Least,
     settings: &Settings,
 ) -> Result<LoadCell, InputError> {
     let arch = rect.arch(alpha)?;
@@ -232,10 +251,9 @@ fn cell(
         eta,
         answer,
     };
-    let eta_star = match solve(&arch, mu, settings)?.outcome {
-        Outcome::Limit(ls) => ls.eta_static,
-        Outcome::Unresolved { reason, .. } => return Ok(at(None, CellAnswer::Undecided(reason))),
-        _ => return Ok(at(None, CellAnswer::NoRing)),
+    let eta_star = match least {
+        Ok(e) => *e,
+        Err(answer) => return Ok(at(None, answer.clone())),
     };
     let eta = factor * eta_star;
     if eta >= ETA_MAX {
