@@ -323,17 +323,27 @@ impl Crossing<'_> {
                 });
             }
         }
-        let mut surveys = 0;
+        // the surveys Brent ran, kept: the position it ends at is one of them (or the sample)
+        let mut seen: Vec<(f64, Evaluated)> = Vec::new();
         let mut f = |x: f64| {
-            surveys += 1;
-            Ok(self.collapse(x)?.0.value())
+            let e = self.collapse(x)?;
+            let v = e.0.value();
+            seen.push((x, e));
+            Ok(v)
         };
         let m = brent(&mut f, bracket, start, width)?;
-        let (_, load, sv) = self.collapse(m.at_m)?;
+        let mut surveys = seen.len();
+        let found = match seen.into_iter().find(|(x, _)| *x == m.at_m) {
+            Some((_, e)) => e,
+            None => {
+                surveys += 1;
+                self.collapse(m.at_m)?
+            }
+        };
         Ok(Found {
             minimum: m,
-            at: load.zip(sv),
-            surveys: surveys + 1,
+            at: found.1.zip(found.2),
+            surveys,
             statics,
         })
     }

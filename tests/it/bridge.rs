@@ -350,8 +350,17 @@ fn ten_metre_deck(dispersal: f64) -> (arch_enum::Arch, f64, arch_enum::bridge::D
 }
 
 fn least_lambda(arch: &arch_enum::Arch, eta: f64, load: &arch_enum::load::LiveLoad) -> Option<f64> {
+    least_lambda_at(arch, eta, 0.6, load)
+}
+
+fn least_lambda_at(
+    arch: &arch_enum::Arch,
+    eta: f64,
+    mu: f64,
+    load: &arch_enum::load::LiveLoad,
+) -> Option<f64> {
     use arch_enum::multiplier::{survey, LoadOutcome};
-    match survey(arch, eta, 0.6, load, &arch_enum::Settings::default()).unwrap() {
+    match survey(arch, eta, mu, load, &arch_enum::Settings::default()).unwrap() {
         Ok(LoadOutcome::Limits(s)) => s.lambda(),
         _ => None,
     }
@@ -543,6 +552,50 @@ fn the_critical_position_with_fill_agrees_with_surveys_one_by_one() {
             l >= best.lambda * (1.0 - 1e-12),
             "at {at}: {l} below {best:?}"
         );
+    }
+}
+
+/// A minimum whose bracketing samples are not all at their static maximum (the 10 m
+/// segment of rise 6 m with a 1.5 m ring, μ = 1: next to the first sample the axle drives no
+/// mechanism) is located on λ_c itself, one complete search a step: more searches than
+/// the samples and the other minimum take, and no survey on a grid over its bracket of
+/// samples finds less.
+#[test]
+fn a_minimum_beside_a_sample_without_collapse_is_located_on_lambda_c() {
+    use arch_enum::bridge::{critical, Deck, Search, Vehicle};
+    let intrados = Intrados::new(10.0, 6.0).unwrap();
+    let (alpha, ring) = (intrados.alpha(), intrados.ring(1.5).unwrap());
+    let arch = arch_enum::Arch::symmetric(alpha, arch_enum::WeightModel::Centreline).unwrap();
+    let deck = Deck::new(ring.radius, 20.0, 1.0, 0.5).unwrap();
+    let axle = Vehicle::new(&[100.0], &[]).unwrap();
+    let search = Search {
+        samples: 11,
+        bracket_m: 1e-6,
+        threads: 2,
+    };
+    let settings = arch_enum::Settings::default();
+    let c = critical(&arch, ring.eta, 1.0, &deck, &axle, search, &settings).unwrap();
+    assert!(
+        c.surveys > 6 + 2,
+        "{} searches: not located on lambda_c",
+        c.surveys
+    );
+    let first = &c.influence[0];
+    let end = c
+        .minima
+        .iter()
+        .find(|m| m.bracket_m.0 <= first.at_m + 1e-9)
+        .expect("a minimum at the start of the crossing");
+    let spacing = c.influence[1].at_m - first.at_m;
+    for k in 0..=20 {
+        let at = first.at_m + spacing * k as f64 / 20.0;
+        let load = deck.place(&arch, ring.eta, &axle, at).unwrap();
+        if let Some(l) = least_lambda_at(&arch, ring.eta, 1.0, &load) {
+            assert!(
+                l >= end.lambda * (1.0 - 1e-12),
+                "at {at}: {l} below {end:?}"
+            );
+        }
     }
 }
 
