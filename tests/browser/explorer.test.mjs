@@ -199,7 +199,13 @@ test("the explorer follows the mu slider with the library's eta* and mode", { ti
     );
     await page.waitForSelector('#figure svg', { timeout: 60_000 });
     assert.match(await page.getAttribute("#dl-report", "href"), /^\/api\/report\?.*axles=100/);
-    // with fill the diagram is curve's sampled eta*(mu) of the arch with its fill
+    // with fill the diagram is curve's sampled eta*(mu) of the arch with its fill (the
+    // diagram without fill is on the page until that curve arrives: wait for its legend)
+    await page.waitForFunction(
+      () => /with fill: η\*\(μ\) sampled/.test(document.getElementById("legend").textContent),
+      null,
+      { timeout: 60_000 },
+    );
     await page.waitForSelector("#diagram svg .curve", { timeout: 60_000 });
     assert.match(await page.textContent("#legend"), /with fill: η\*\(μ\) sampled/);
     assert.deepEqual(errors, [], "no console error or page error with fill and a vehicle");
