@@ -72,12 +72,7 @@ fn main() {
     println!("| mu | alpha | eta | lambda_static | lambda_c | reduction | least limit state |");
     println!("|---:|---:|---:|---:|---:|---:|---|");
     for c in top.iter().take(12) {
-        let CellAnswer::Ratio {
-            lambda_static,
-            lambda_c,
-            mode,
-        } = &c.answer
-        else {
+        let Some((lambda_static, lambda_c, mode)) = c.ratio() else {
             continue;
         };
         println!(

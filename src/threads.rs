@@ -39,6 +39,22 @@ pub fn map<T: Sync, R: Send>(
         .collect()
 }
 
+/// [`map`], with `progress(done, total)` called after each item (from the thread that
+/// finished it; `done` counts the items finished so far).
+pub fn map_with_progress<T: Sync, R: Send>(
+    items: &[T],
+    threads: usize,
+    progress: &(dyn Fn(usize, usize) + Sync),
+    f: impl Fn(usize, &T) -> R + Sync,
+) -> Vec<R> {
+    let done = AtomicUsize::new(0);
+    map(items, threads, |i, t| {
+        let r = f(i, t);
+        progress(done.fetch_add(1, Ordering::Relaxed) + 1, items.len());
+        r
+    })
+}
+
 /// The number of threads the machine offers (at least 1): the default thread count of the
 /// commands that sample independent points.
 pub fn available() -> usize {

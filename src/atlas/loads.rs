@@ -79,12 +79,17 @@ pub struct LoadCell {
 impl LoadCell {
     /// 1 − λ_c/λ_static, where both exist.
     pub fn reduction(&self) -> Option<f64> {
+        self.ratio().map(|(s, c, _)| 1.0 - c / s)
+    }
+
+    /// (λ_static, λ_c, the least limit state's mode), where the cell has both.
+    pub fn ratio(&self) -> Option<(f64, f64, CollapseMode)> {
         match self.answer {
             CellAnswer::Ratio {
                 lambda_static,
                 lambda_c,
-                ..
-            } => Some(1.0 - lambda_c / lambda_static),
+                mode,
+            } => Some((lambda_static, lambda_c, mode)),
             _ => None,
         }
     }
@@ -161,13 +166,12 @@ pub fn load_map(
         .zip(&stars)
         .flat_map(|(&(mu, a), star)| factors.iter().map(move |&f| (mu, a, f, star)))
         .collect();
-    let done = std::sync::atomic::AtomicUsize::new(0);
-    let cells = threads::map(&cells, threads, |_, &(mu, alpha, factor, star)| {
-        let c = cell(&grid.rect, (alpha, factor, mu), star, settings);
-        let k = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
-        progress(k, cells.len());
-        c
-    })
+    let cells = threads::map_with_progress(
+        &cells,
+        threads,
+        progress,
+        |_, &(mu, alpha, factor, star)| cell(&grid.rect, (alpha, factor, mu), star, settings),
+    )
     .into_iter()
     .collect::<Result<Vec<_>, _>>()?;
     Ok(LoadMap {

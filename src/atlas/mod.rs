@@ -67,12 +67,8 @@ pub fn atlas(
     for &a in &alphas {
         rect.arch(a)?;
     }
-    let done = std::sync::atomic::AtomicUsize::new(0);
-    let columns = threads::map(&alphas, threads, |k, &alpha| {
-        let c = column::column(rect, (alpha, alphas.get(k + 1).copied()), settings);
-        let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
-        progress(n, alphas.len());
-        c
+    let columns = threads::map_with_progress(&alphas, threads, progress, |k, &alpha| {
+        column::column(rect, (alpha, alphas.get(k + 1).copied()), settings)
     })
     .into_iter()
     .collect::<Result<Vec<Column>, InputError>>()?;

@@ -71,12 +71,7 @@ pub fn load_map(map: &LoadMap) -> String {
         );
     }
     for c in reduced {
-        let CellAnswer::Ratio {
-            lambda_static,
-            lambda_c,
-            mode,
-        } = &c.answer
-        else {
+        let Some((lambda_static, lambda_c, mode)) = c.ratio() else {
             continue;
         };
         let _ = writeln!(
@@ -85,8 +80,8 @@ pub fn load_map(map: &LoadMap) -> String {
             sig(c.mu, 6),
             sig(c.alpha, 6),
             c.eta.map_or("-".into(), |e| sig(e, 6)),
-            sig(*lambda_static, 8),
-            sig(*lambda_c, 8),
+            sig(lambda_static, 8),
+            sig(lambda_c, 8),
             sig(c.reduction().unwrap_or(0.0), 4),
             mode.name()
         );
