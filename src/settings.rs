@@ -137,9 +137,9 @@ pub struct Settings {
     /// is reported as not done (η_s and λ_static stay exact). Default 256 (a 255-voussoir
     /// arch takes about a second at finite friction).
     pub sweep_max_joints: usize,
-    /// The ridge walk over the friction polygon (work about n² for n joints: a piece per
-    /// joint the thrust line moves across, each scanning every row) is run up to this many
-    /// joints; beyond, the sweep's budget decides. Default 2048 (about 0.3 s).
+    /// The ridge walk over the friction polygon (in chunks, each with the joints proved
+    /// near it: work about linear in the number of joints) is run up to this many joints;
+    /// beyond, the sweep's budget decides. Default 16384 (10⁴ joints take about 0.3 s).
     pub ridge_max_joints: usize,
     /// A contact is active at an event of the limit-state sweep when |φ| is below
     /// `event_tol` × its natural magnitude; a point of the sweep lies on a plane, or
@@ -229,7 +229,7 @@ impl Default for Settings {
             event_tol: 1e-9,
             sweep_pieces: 48,
             sweep_max_joints: 256,
-            ridge_max_joints: 2048,
+            ridge_max_joints: 16384,
             unbounded_reactions: 1e6,
             sweep_min_eta: 1e-6,
             curve_samples: 16,

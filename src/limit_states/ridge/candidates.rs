@@ -2,9 +2,10 @@
 //! the points the walk along each sliding edge returns (V, E1, E2), once Q is known to
 //! have no three sliding lines through a vertex (G1).
 
+use super::near::{verify, Bounds, EdgeView, JointTree, Verdict};
 use super::polygon::{lines, on_box, q_polygon, Line};
-use super::rows::{ev, hinge_rows, in_band, Candidate, JointRows, TOL};
-use super::walk::walk_edge;
+use super::rows::{ev, hinge_rows, hinge_rows_of, in_band, Candidate, HingeRow, JointRows, TOL};
+use super::walk::{walk_edge, Walked};
 use crate::arch::ETA_TOP;
 use crate::kinematics::column;
 use crate::undecided::Undecided;
@@ -20,12 +21,23 @@ fn scale(p: [f64; 2]) -> f64 {
     1.0 + p[0].abs() + p[1].abs()
 }
 
-/// Every candidate on the ridge with η in (eta_lo, ETA_TOP).
+/// Every candidate on the ridge with η in (eta_lo, ETA_TOP), and the subsets of joints
+/// their `near` indices name.
 pub(super) fn candidates(
     js: &[JointRows],
     mu: f64,
     eta_lo: f64,
-) -> Result<Vec<Candidate>, Undecided> {
+) -> Result<(Vec<Candidate>, Vec<Vec<usize>>), Undecided> {
+    candidates_walked(js, mu, eta_lo, js.len() <= WHOLE_ARCH_JOINTS)
+}
+
+/// [`candidates`], the arch walked whole (one chunk with every joint) or in chunks.
+fn candidates_walked(
+    js: &[JointRows],
+    mu: f64,
+    eta_lo: f64,
+    whole: bool,
+) -> Result<(Vec<Candidate>, Vec<Vec<usize>>), Undecided> {
     let lines = lines(js, mu);
     let poly = q_polygon(&lines);
     if poly.len() < 3 {
@@ -33,11 +45,18 @@ pub(super) fn candidates(
             "the friction polygon Q has no interior".into(),
         ));
     }
-    no_third_line(&lines, &poly)?;
     let in_range = |eta: f64| eta > eta_lo && eta < ETA_TOP;
-    let mut out = apexes(js, &lines, &poly, &in_range);
-    along_edges(js, &lines, &poly, &in_range, &mut out)?;
-    Ok(out)
+    let mut out = Vec::new();
+    let subsets = along_edges(js, (&lines, &poly), (&in_range, whole), mu, &mut out)?;
+    let mut all = apexes(js, &lines, &poly, &in_range);
+    all.append(&mut out);
+    Ok((all, subsets))
+}
+
+/// Whether the sliding line passes through q (to the walk's tolerance).
+fn through(l: &Line, q: [f64; 2]) -> bool {
+    let na = l.a[0].abs() + l.a[1].abs();
+    l.slide.is_some() && (l.a[0] * q[0] + l.a[1] * q[1] + l.b).abs() <= TOL * na * scale(q)
 }
 
 /// G1: no third sliding line through a vertex of Q (a pure-sliding mechanism may then
@@ -47,17 +66,10 @@ pub(super) fn no_third_line(lines: &[Line], poly: &[QVertex]) -> Result<(), Unde
         if on_box(q) {
             continue;
         }
-        let through = lines
-            .iter()
-            .filter(|l| l.slide.is_some())
-            .filter(|l| {
-                let na = l.a[0].abs() + l.a[1].abs();
-                (l.a[0] * q[0] + l.a[1] * q[1] + l.b).abs() <= TOL * na * scale(q)
-            })
-            .count();
-        if through > 2 {
+        let count = lines.iter().filter(|l| through(l, q)).count();
+        if count > 2 {
             return Err(Undecided::NotCovered(format!(
-                "{through} sliding lines meet at the vertex ({}, {}) of Q",
+                "{count} sliding lines meet at the vertex ({}, {}) of Q",
                 q[0], q[1]
             )));
         }
@@ -92,6 +104,7 @@ fn apexes(
                 out.push(Candidate {
                     x: [q[0], q[1], w],
                     eta,
+                    near: None,
                 });
             }
         }
@@ -110,38 +123,337 @@ pub(super) fn edge_frame(line: &Line) -> ([f64; 2], [f64; 2]) {
     (p0, d)
 }
 
-/// The walk along each sliding edge of Q: the points it returns inside the box, added to
-/// `out`.
+/// A chunk of the walk along ∂Q ends after this many pieces (or at the last edge): the
+/// joints near a chunk grow with the stretch of the arch its pieces sweep.
+const CHUNK_PIECES: usize = 24;
+
+/// An arch of at most this many joints is walked in one chunk with every joint (the chunks'
+/// bookkeeping costs more than it saves there).
+const WHOLE_ARCH_JOINTS: usize = 768;
+
+/// The sliding edges of Q long enough to walk, by the index of their first vertex.
+fn walkable(lines: &[Line], poly: &[QVertex]) -> Vec<usize> {
+    (0..poly.len())
+        .filter(|&k| {
+            let (q0, ri) = poly[k];
+            let q1 = poly[(k + 1) % poly.len()].0;
+            let len = (q1[0] - q0[0]).abs() + (q1[1] - q0[1]).abs();
+            lines[ri].slide.is_some() && len > SHORT_EDGE_REL * scale(q0)
+        })
+        .collect()
+}
+
+/// A hinge row by its joint and side (upper: extrados), whatever the rows walked.
+type RowId = (usize, bool);
+
+/// Where the walk along ∂Q stands: the edge (a position in the walkable edges) and, inside
+/// it, the point and the pair of rows the next piece starts with.
+#[derive(Clone, Copy)]
+struct Cursor {
+    edge: usize,
+    inside: Option<(f64, RowId, RowId)>,
+}
+
+/// The walk along each sliding edge of Q, in chunks of [`CHUNK_PIECES`] pieces, each with
+/// the joints that may be active over it ([`super::near`]): the points it returns inside
+/// the box are added to `out`, and the chunks' subsets of joints returned. G1 (no third
+/// sliding line through a vertex of Q, [`no_third_line`]) is tested at each vertex among
+/// the lines of the joints of the chunk that reaches it (the others are further than the
+/// test's tolerance); where it fails, or a walk fails, the answer is the one
+/// [`no_third_line`] over every line gives first.
 fn along_edges(
     js: &[JointRows],
-    lines: &[Line],
-    poly: &[QVertex],
-    in_range: &impl Fn(f64) -> bool,
+    (lines, poly): (&[Line], &[QVertex]),
+    (in_range, whole): (&impl Fn(f64) -> bool, bool),
+    mu: f64,
     out: &mut Vec<Candidate>,
-) -> Result<(), Undecided> {
-    for k in 0..poly.len() {
-        let (q0, ri) = poly[k];
-        let q1 = poly[(k + 1) % poly.len()].0;
-        let Some(sl) = lines[ri].slide else {
-            continue; // a side of the box
-        };
-        let len = (q1[0] - q0[0]).abs() + (q1[1] - q0[1]).abs();
-        if len <= SHORT_EDGE_REL * scale(q0) {
-            continue;
-        }
-        let (p0, d) = edge_frame(&lines[ri]);
-        let tof = |q: [f64; 2]| (q[0] - p0[0]) * d[0] + (q[1] - p0[1]) * d[1];
-        let hr = hinge_rows(js, p0, d);
-        let cs = column(sl.1, js[sl.0].beta, 0.0);
-        for (t, eta, w) in walk_edge(&hr, (tof(q0), tof(q1)), cs, js)?.points {
-            let p = [p0[0] + t * d[0], p0[1] + t * d[1]];
-            if in_range(eta) && !on_box(p) {
-                out.push(Candidate {
-                    x: [p[0], p[1], w],
-                    eta,
-                });
+) -> Result<Vec<Vec<usize>>, Undecided> {
+    let edges = walkable(lines, poly);
+    // (an arch walked whole needs no tree)
+    let tree = JointTree::new(js, mu, !whole);
+    let mut in_walk = vec![false; js.len()];
+    let mut tested = vec![false; poly.len()];
+    let mut subsets: Vec<Vec<usize>> = Vec::new();
+    let mut guess: Vec<usize> = (0..js.len()).collect();
+    let mut at = Cursor {
+        edge: 0,
+        inside: None,
+    };
+    while at.edge < edges.len() {
+        let geometry = (lines, poly, edges.as_slice());
+        let (walked, next_at) =
+            match walk_chunk(js, geometry, (at, whole), (mu, &tree), &guess, &mut in_walk) {
+                Ok(w) => w,
+                Err(e) => {
+                    no_third_line(lines, poly)?;
+                    return Err(e);
+                }
+            };
+        for &v in walked.vertices.iter().flatten() {
+            let q = poly[v].0;
+            let lines_of = walked.subset.iter().flat_map(|&j| [2 * j, 2 * j + 1]);
+            if !std::mem::replace(&mut tested[v], true)
+                && !on_box(q)
+                && lines_of.filter(|&l| through(&lines[l], q)).count() > 2
+            {
+                no_third_line(lines, poly)?;
             }
         }
+        for (_, p0, d, wk) in &walked.walks {
+            for &(t, eta, w) in &wk.points {
+                let p = [p0[0] + t * d[0], p0[1] + t * d[1]];
+                if in_range(eta) && !on_box(p) {
+                    out.push(Candidate {
+                        x: [p[0], p[1], w],
+                        eta,
+                        near: Some(subsets.len()),
+                    });
+                }
+            }
+        }
+        at = next_at;
+        guess = walked.next;
+        subsets.push(walked.subset);
     }
-    Ok(())
+    // vertices of Q on no walked edge (between sides of the box or short edges)
+    let untested_third = |v: usize| {
+        !tested[v]
+            && !on_box(poly[v].0)
+            && lines.iter().filter(|l| through(l, poly[v].0)).count() > 2
+    };
+    if (0..poly.len()).any(untested_third) {
+        no_third_line(lines, poly)?;
+    }
+    Ok(subsets)
+}
+
+/// A chunk walked: each walk's ends, frame and walk, the vertices of Q each walk reached
+/// (its edge's start, its end), the joints whose rows may be near active over the chunk
+/// (ascending) and the joints predicted near in the next chunk.
+struct ChunkWalk {
+    walks: Vec<WalkedEdge>,
+    vertices: Vec<Vec<usize>>,
+    subset: Vec<usize>,
+    next: Vec<usize>,
+}
+
+/// The walk of one chunk from `at` with the hinge rows of the joints `guess`, grown by the
+/// joints whose hinge rows [`verify`] cannot show inactive until it shows every other one
+/// is (or with every joint, where a walk with fewer fails). An arch walked `whole` is one
+/// chunk with every joint, unverified.
+/// Returns the chunk and where the next one starts. `in_walk` is all false on entry and on
+/// return.
+fn walk_chunk(
+    js: &[JointRows],
+    geometry: (&[Line], &[QVertex], &[usize]),
+    (at, whole): (Cursor, bool),
+    (mu, tree): (f64, &JointTree),
+    guess: &[usize],
+    in_walk: &mut [bool],
+) -> Result<(ChunkWalk, Cursor), Undecided> {
+    let budget = if whole { usize::MAX } else { CHUNK_PIECES };
+    let mut set: Vec<usize> = guess.to_vec();
+    set.extend(at.inside.iter().flat_map(|(_, e, i)| [e.0, i.0]));
+    set.sort_unstable();
+    set.dedup();
+    set.iter().for_each(|&j| in_walk[j] = true);
+    let (walks, next_at, subset, next) = loop {
+        let (walks, next_at) = match walk_from(js, geometry, at, &set, budget) {
+            Ok(w) => w,
+            Err(e) if set.len() == js.len() => {
+                set.iter().for_each(|&j| in_walk[j] = false);
+                return Err(e);
+            }
+            Err(_) => {
+                set = (0..js.len()).collect();
+                set.iter().for_each(|&j| in_walk[j] = true);
+                continue;
+            }
+        };
+        if whole && set.len() == js.len() {
+            break (walks, next_at, set.clone(), set.clone());
+        }
+        let verdict = verified(js, (mu, tree), &walks, in_walk);
+        if verdict.failing.is_empty() {
+            // `on` comes out ascending (the tree is walked left to right)
+            break (walks, next_at, verdict.on, verdict.next);
+        }
+        verdict.failing.iter().for_each(|&j| in_walk[j] = true);
+        set.extend(verdict.failing);
+        set.sort_unstable();
+    };
+    set.iter().for_each(|&j| in_walk[j] = false);
+    let (_, poly, edges) = geometry;
+    let vertices = walks
+        .iter()
+        .enumerate()
+        .map(|(n, w)| {
+            let k = edges[at.edge + n];
+            let starts = (n > 0 || at.inside.is_none()).then_some(k);
+            let ends = w.4.stopped.is_none().then_some((k + 1) % poly.len());
+            starts.into_iter().chain(ends).collect()
+        })
+        .collect();
+    let walks = walks
+        .into_iter()
+        .map(|(q, p0, d, _, wk)| (q, p0, d, wk))
+        .collect();
+    let chunk = ChunkWalk {
+        walks,
+        vertices,
+        subset,
+        next,
+    };
+    Ok((chunk, next_at))
+}
+
+/// [`verify`] over the bounds of a chunk's walks, with the two rows of its first piece as
+/// the reference rows.
+fn verified(
+    js: &[JointRows],
+    (mu, tree): (f64, &JointTree),
+    walks: &[EdgeWalk],
+    in_walk: &[bool],
+) -> Verdict {
+    let first = &walks[0];
+    let pc = first.4.pieces[0];
+    let views: Vec<EdgeView> = walks
+        .iter()
+        .map(|(q, p0, d, hr, wk)| (*q, *p0, *d, hr.as_slice(), wk))
+        .collect();
+    let bounds = Bounds::new(js, [first.3[pc.2].j, first.3[pc.3].j], &views);
+    verify(js, tree, mu, &bounds, in_walk)
+}
+
+/// One walk as a chunk keeps it: its ends, its frame p = p0 + t d and the walk.
+type WalkedEdge = (([f64; 2], [f64; 2]), [f64; 2], [f64; 2], Walked);
+
+/// One walk: its ends, its frame p = p0 + t d, its hinge rows and the walk.
+type EdgeWalk = (
+    ([f64; 2], [f64; 2]),
+    [f64; 2],
+    [f64; 2],
+    Vec<HingeRow>,
+    Walked,
+);
+
+/// The walks of one chunk from `at` with the hinge rows of the joints `set` (ascending):
+/// edge after edge until `budget` pieces, and where the next chunk starts.
+fn walk_from(
+    js: &[JointRows],
+    (lines, poly, edges): (&[Line], &[QVertex], &[usize]),
+    mut at: Cursor,
+    set: &[usize],
+    budget: usize,
+) -> Result<(Vec<EdgeWalk>, Cursor), Undecided> {
+    let mut walks = Vec::new();
+    let mut pieces = 0;
+    let row_of = |(j, upper): RowId| {
+        let k = set
+            .binary_search(&j)
+            .expect("the cursor's joints are in the set");
+        2 * k + usize::from(!upper)
+    };
+    while at.edge < edges.len() && pieces < budget {
+        let (q0, ri) = poly[edges[at.edge]];
+        let q1 = poly[(edges[at.edge] + 1) % poly.len()].0;
+        let sl = lines[ri]
+            .slide
+            .expect("a walkable edge lies on a sliding line");
+        let (p0, d) = edge_frame(&lines[ri]);
+        let tof = |q: [f64; 2]| (q[0] - p0[0]) * d[0] + (q[1] - p0[1]) * d[1];
+        let hr = hinge_rows_of(js, set.iter().copied(), p0, d);
+        let cs = column(sl.1, js[sl.0].beta, 0.0);
+        let from = at.inside.map(|(t, e, i)| (t, row_of(e), row_of(i)));
+        let wk = walk_edge(&hr, (tof(q0), tof(q1)), (from, budget - pieces), cs, js)?;
+        pieces += wk.pieces.len();
+        at = match wk.stopped {
+            Some((t, e, i)) => Cursor {
+                edge: at.edge,
+                inside: Some((t, (hr[e].j, hr[e].upper), (hr[i].j, hr[i].upper))),
+            },
+            None => Cursor {
+                edge: at.edge + 1,
+                inside: None,
+            },
+        };
+        let (ts, te) = (wk.pieces[0].0, wk.pieces[wk.pieces.len() - 1].1);
+        let ends = [ts, te].map(|t| [p0[0] + t * d[0], p0[1] + t * d[1]]);
+        walks.push(((ends[0], ends[1]), p0, d, hr, wk));
+    }
+    Ok((walks, at))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::arch::{Arch, JointLayout, WeightModel};
+
+    /// The chunked walk finds the same candidates as the whole one, to the bit, and the
+    /// joints it leaves out of a candidate's subset are clearly away from it: on symmetric
+    /// and unsymmetric voussoir arches of 100 to 400 joints and a range of friction.
+    #[test]
+    fn the_chunked_walk_finds_what_the_whole_walk_finds() {
+        let mut compared = 0;
+        for (k, &(a, b, n, mu)) in [
+            (-0.5, 0.5, 100, 0.6),
+            (-1.0, 1.0, 160, 0.4),
+            (-0.3, 1.2, 240, 0.9),
+            (-1.2, 0.2, 300, 1.3),
+            (-0.8, 0.8, 400, 0.7),
+            (-0.2, 0.9, 120, 2.0),
+            (-0.9, 0.9, 200, 3.0),
+            (0.1, 1.3, 150, 1.1),
+        ]
+        .iter()
+        .enumerate()
+        {
+            let arch = Arch::new(a, b, WeightModel::Centreline)
+                .and_then(|x| x.with_blocks(n))
+                .unwrap_or_else(|e| panic!("case {k}: {e:?}"));
+            let JointLayout::Discrete(joints) = arch.layout() else {
+                unreachable!()
+            };
+            let js: Vec<JointRows> = joints.iter().map(|&b| JointRows::at(&arch, b)).collect();
+            let (Ok(whole), Ok(chunked)) = (
+                candidates_walked(&js, mu, 0.0, true),
+                candidates_walked(&js, mu, 0.0, false),
+            ) else {
+                continue;
+            };
+            let bits = |c: &[Candidate]| {
+                c.iter()
+                    .map(|c| (c.eta.to_bits(), c.x.map(f64::to_bits)))
+                    .collect::<Vec<_>>()
+            };
+            assert_eq!(bits(&whole.0), bits(&chunked.0), "case {k}");
+            assert!(chunked.1.len() > 1, "case {k}: walked in one chunk");
+            for c in &chunked.0 {
+                let Some(near) = c.near else { continue };
+                let near = &chunked.1[near];
+                let size = (1.0 + c.x.iter().map(|v| v.abs()).sum::<f64>()) * c.eta.max(1.0);
+                for (j, jr) in js.iter().enumerate() {
+                    if near.binary_search(&j).is_ok() {
+                        continue;
+                    }
+                    let p = [c.x[0], c.x[1]];
+                    let (n, t, m) = (ev(&jr.n, p), ev(&jr.t, p), ev(&jr.m, p) + c.x[2]);
+                    let most = [
+                        m - 0.5 * c.eta * n,
+                        -m - 0.5 * c.eta * n,
+                        t - mu * n,
+                        -t - mu * n,
+                    ]
+                    .into_iter()
+                    .fold(f64::NEG_INFINITY, f64::max);
+                    assert!(
+                        most < -1e-8 * size,
+                        "case {k}: joint {j} left out at {most}"
+                    );
+                }
+            }
+            compared += 1;
+        }
+        assert!(compared >= 6, "only {compared} arches compared");
+    }
 }

@@ -30,11 +30,12 @@ const ZERO_COFACTOR: f64 = 1e-9;
 /// clearly active or clearly not (|φ| below `adm_tol`, or φ below −[`CLEAR_FACTOR`]
 /// `adm_tol`, in units of its magnitude), exactly four are active, one sliding sense per
 /// joint, and the cofactors of their columns have mixed signs. Everything in between is
-/// left to `check`.
+/// left to `check`. Only the joints of the candidate's subset are looked at.
 pub(super) fn may_carry_mechanism(
     js: &[JointRows],
     mu: f64,
     c: &Candidate,
+    subsets: &[Vec<usize>],
     settings: &Settings,
 ) -> bool {
     let p = [c.x[0], c.x[1]];
@@ -47,7 +48,17 @@ pub(super) fn may_carry_mechanism(
         mag_of(ContactKind::HingeExtrados),
         mag_of(ContactKind::SlidePlus),
     );
-    for (j, jr) in js.iter().enumerate() {
+    // the joints outside the candidate's subset are clearly inactive (`super::near`)
+    let every: Vec<usize>;
+    let joints: &[usize] = match c.near {
+        Some(k) => &subsets[k],
+        None => {
+            every = (0..js.len()).collect();
+            &every
+        }
+    };
+    for &j in joints {
+        let jr = &js[j];
         let (n, t, m) = (ev(&jr.n, p), ev(&jr.t, p), ev(&jr.m, p) + c.x[2]);
         for (kind, phi) in [
             (ContactKind::HingeExtrados, m - 0.5 * c.eta * n),

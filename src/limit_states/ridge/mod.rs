@@ -28,6 +28,7 @@
 
 mod candidates;
 mod check;
+mod near;
 mod polygon;
 mod rows;
 mod trace;
@@ -77,21 +78,32 @@ pub fn search(arch: &Arch, mu: f64, eta_lo: f64, settings: &Settings) -> Result<
         )));
     }
     let js: Vec<JointRows> = joints.iter().map(|&b| JointRows::at(arch, b)).collect();
-    let cands = candidates(&js, mu, eta_lo)?;
+    let (cands, subsets) = candidates(&js, mu, eta_lo)?;
     let mut states: Vec<LimitState> = Vec::new();
     for c in &cands {
-        if !may_carry_mechanism(&js, mu, c, settings) {
+        if !may_carry_mechanism(&js, mu, c, &subsets, settings) {
             continue;
         }
         if let Some(s) = check(arch, mu, c, settings)? {
-            let dup = states.iter().any(|p| {
+            // a state found twice (an end of two edges of Q, say) is kept as the least of its
+            // finds, so that the answer does not depend on the order of the walk
+            let dup = states.iter_mut().find(|p| {
                 (p.t - s.t).abs() <= settings.same_state_eta * s.t
                     && (0..3).all(|k| {
                         (p.x[k] - s.x[k]).abs() <= settings.same_state_x * reaction_scale(&s.x)
                     })
             });
-            if !dup {
-                states.push(s);
+            let key = |s: &LimitState| [s.t, s.x[0], s.x[1], s.x[2]];
+            match dup {
+                None => states.push(s),
+                Some(p) => {
+                    let (a, b) = (key(&s), key(p));
+                    if (0..4).map(|k| a[k].total_cmp(&b[k])).find(|o| o.is_ne())
+                        == Some(std::cmp::Ordering::Less)
+                    {
+                        *p = s;
+                    }
+                }
             }
         }
     }

@@ -49,75 +49,119 @@ pub(super) fn lines(js: &[JointRows], mu: f64) -> Vec<Line> {
     lines
 }
 
+/// The angle of a half-plane's boundary direction, its interior on the left: d = (−a₁, a₀).
+fn angle(l: &Line) -> f64 {
+    l.a[0].atan2(-l.a[1])
+}
+
 /// Whether p lies on the box (not inside it).
 pub(super) fn on_box(p: [f64; 2]) -> bool {
     p[0].abs() >= BOX * (1.0 - BOX_EDGE_REL) || p[1].abs() >= BOX * (1.0 - BOX_EDGE_REL)
 }
 
-/// Q ∩ box as a convex polygon: its vertices in order, each with the index (in `lines`) of
-/// the line that carries the edge from it to the next vertex. Sutherland–Hodgman clipping
-/// of the box by each sliding half-plane, then each vertex again from its two lines
-/// (clipping from the box's corners leaves absolute errors of order BOX · 1e-16).
+/// Q ∩ box as a convex polygon: its vertices counter-clockwise from the edge whose boundary
+/// direction has the least angle, each with the index (in `lines`) of the line that carries
+/// the edge from it to the next vertex. The half-planes in order of angle, kept on a deque
+/// (each new one drops from either end the lines whose corner it cuts off: O(n log n));
+/// then vertices repeated within rounding dropped, and each vertex computed again from
+/// its two lines.
 pub(super) fn q_polygon(lines: &[Line]) -> Vec<([f64; 2], usize)> {
-    let boxes: Vec<usize> = (0..lines.len())
-        .filter(|&k| lines[k].slide.is_none())
-        .collect();
-    // box lines in the order h ≤ B, −h ≤ B, v ≤ B, −v ≤ B; counter-clockwise from (B, −B)
-    let (hp, hm, vp, vm) = (boxes[0], boxes[1], boxes[2], boxes[3]);
-    let mut poly = vec![
-        ([BOX, -BOX], hp),
-        ([BOX, BOX], vp),
-        ([-BOX, BOX], hm),
-        ([-BOX, -BOX], vm),
-    ];
-    for (li, l) in lines.iter().enumerate().filter(|(_, l)| l.slide.is_some()) {
-        if poly.is_empty() {
-            break;
-        }
-        let f = |p: [f64; 2]| l.a[0] * p[0] + l.a[1] * p[1] + l.b;
-        let mut next = Vec::with_capacity(poly.len() + 1);
-        for k in 0..poly.len() {
-            let (p, e) = poly[k];
-            let q = poly[(k + 1) % poly.len()].0;
-            let (fp, fq) = (f(p), f(q));
-            let cut = |s: f64| [p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])];
-            if fp <= 0.0 {
-                next.push((p, e));
-                if fq > 0.0 {
-                    next.push((cut(fp / (fp - fq)), li));
-                }
-            } else if fq <= 0.0 {
-                next.push((cut(fp / (fp - fq)), e));
-            }
-        }
-        // drop zero-length edges (a vertex repeated)
-        let mut clean: Vec<([f64; 2], usize)> = Vec::with_capacity(next.len());
-        for k in 0..next.len() {
-            let (p, _) = next[k];
-            let q = next[(k + 1) % next.len()].0;
-            let sc = 1.0 + p[0].abs() + p[1].abs();
-            if (p[0] - q[0]).abs() + (p[1] - q[1]).abs() > REPEATED_VERTEX_REL * sc
-                || next.len() == 1
-            {
-                clean.push(next[k]);
-            }
-        }
-        poly = clean;
+    let mut poly = intersect(lines);
+    poly = drop_repeated(poly);
+    if let Some(k) = (0..poly.len())
+        .min_by(|&x, &y| angle(&lines[poly[x].1]).total_cmp(&angle(&lines[poly[y].1])))
+    {
+        poly.rotate_left(k);
     }
     let m = poly.len();
     (0..m)
         .map(|k| {
             let (p, e) = poly[k];
-            let (r, s) = (&lines[poly[(k + m - 1) % m].1], &lines[e]);
-            let det = r.a[0] * s.a[1] - r.a[1] * s.a[0];
-            if det == 0.0 {
-                return (p, e);
+            match meet(&lines[poly[(k + m - 1) % m].1], &lines[e]) {
+                Some(q) => (q, e),
+                None => (p, e),
             }
-            let q = [
-                (-r.b * s.a[1] + s.b * r.a[1]) / det,
-                (-r.a[0] * s.b + s.a[0] * r.b) / det,
-            ];
-            (q, e)
         })
+        .collect()
+}
+
+/// The point where two lines meet (None: parallel).
+fn meet(r: &Line, s: &Line) -> Option<[f64; 2]> {
+    let det = r.a[0] * s.a[1] - r.a[1] * s.a[0];
+    (det != 0.0).then(|| {
+        [
+            (-r.b * s.a[1] + s.b * r.a[1]) / det,
+            (-r.a[0] * s.b + s.a[0] * r.b) / det,
+        ]
+    })
+}
+
+/// The intersection of the half-planes: its vertices in order, each with the line of the
+/// edge that leaves it (empty where it has no interior). The box's four sides keep every
+/// angular gap below π, so consecutive lines always meet.
+fn intersect(lines: &[Line]) -> Vec<([f64; 2], usize)> {
+    let outside = |l: usize, p: [f64; 2]| {
+        let l = &lines[l];
+        l.a[0] * p[0] + l.a[1] * p[1] + l.b > 0.0
+    };
+    // by angle; of parallel lines the most restrictive (the largest b / |a|) first
+    let mut order: Vec<(f64, f64, usize)> = lines
+        .iter()
+        .enumerate()
+        .map(|(k, l)| (angle(l), l.b / l.a[0].hypot(l.a[1]), k))
+        .collect();
+    order.sort_by(|x, y| x.0.total_cmp(&y.0).then(y.1.total_cmp(&x.1)));
+    order.dedup_by(|y, x| y.0 == x.0);
+    let order: Vec<usize> = order.into_iter().map(|o| o.2).collect();
+    let mut dq: std::collections::VecDeque<usize> = std::collections::VecDeque::new();
+    // pts[k]: where dq[k] and dq[k + 1] meet
+    let mut pts: std::collections::VecDeque<[f64; 2]> = std::collections::VecDeque::new();
+    for &l in &order {
+        while pts.back().is_some_and(|&p| outside(l, p)) {
+            dq.pop_back();
+            pts.pop_back();
+        }
+        while pts.front().is_some_and(|&p| outside(l, p)) {
+            dq.pop_front();
+            pts.pop_front();
+        }
+        if let Some(&last) = dq.back() {
+            let Some(p) = meet(&lines[last], &lines[l]) else {
+                return Vec::new();
+            };
+            pts.push_back(p);
+        }
+        dq.push_back(l);
+    }
+    while dq.len() >= 3 && pts.back().is_some_and(|&p| outside(dq[0], p)) {
+        dq.pop_back();
+        pts.pop_back();
+    }
+    while dq.len() >= 3 && pts.front().is_some_and(|&p| outside(dq[dq.len() - 1], p)) {
+        dq.pop_front();
+        pts.pop_front();
+    }
+    if dq.len() < 3 {
+        return Vec::new();
+    }
+    let Some(close) = meet(&lines[dq[dq.len() - 1]], &lines[dq[0]]) else {
+        return Vec::new();
+    };
+    // vertex k starts the edge on dq[k]: it is where dq[k − 1] and dq[k] meet
+    (0..dq.len())
+        .map(|k| (if k == 0 { close } else { pts[k - 1] }, dq[k]))
+        .collect()
+}
+
+/// The polygon without its zero-length edges (a vertex repeated within rounding).
+fn drop_repeated(poly: Vec<([f64; 2], usize)>) -> Vec<([f64; 2], usize)> {
+    let n = poly.len();
+    (0..n)
+        .filter(|&k| {
+            let (p, q) = (poly[k].0, poly[(k + 1) % n].0);
+            let sc = 1.0 + p[0].abs() + p[1].abs();
+            (p[0] - q[0]).abs() + (p[1] - q[1]).abs() > REPEATED_VERTEX_REL * sc || n == 1
+        })
+        .map(|k| poly[k])
         .collect()
 }

@@ -69,8 +69,20 @@ impl HingeRow {
 
 /// The hinge rows of every joint along the line p = p0 + t d.
 pub(super) fn hinge_rows(js: &[JointRows], p0: [f64; 2], d: [f64; 2]) -> Vec<HingeRow> {
-    let mut out = Vec::with_capacity(2 * js.len());
-    for (j, jr) in js.iter().enumerate() {
+    hinge_rows_of(js, 0..js.len(), p0, d)
+}
+
+/// The hinge rows of the joints `joints` (indices into `js`, ascending) along the line
+/// p = p0 + t d.
+pub(super) fn hinge_rows_of(
+    js: &[JointRows],
+    joints: impl ExactSizeIterator<Item = usize>,
+    p0: [f64; 2],
+    d: [f64; 2],
+) -> Vec<HingeRow> {
+    let mut out = Vec::with_capacity(2 * joints.len());
+    for j in joints {
+        let jr = &js[j];
         let (m0, m1) = (ev(&jr.m, p0), jr.m[0] * d[0] + jr.m[1] * d[1]);
         let (n0, n1) = (ev(&jr.n, p0), jr.n[0] * d[0] + jr.n[1] * d[1]);
         for (upper, sg) in [(true, 0.5), (false, -0.5)] {
@@ -101,6 +113,9 @@ pub(super) fn in_band(rows: &[HingeRow], t: f64, eta: f64, w: f64, tol: f64) -> 
 pub(super) struct Candidate {
     pub(super) x: Reactions,
     pub(super) eta: f64,
+    /// The joints that may be near active there (an index into the walk's subsets), or
+    /// `None`: every joint.
+    pub(super) near: Option<usize>,
 }
 
 /// The determinant of the 3 × 3 matrix of columns a, b, c.

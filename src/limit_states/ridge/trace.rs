@@ -97,7 +97,7 @@ fn trace_edge(
     let (t0, t1) = (tof(q0), tof(q1));
     let hr = hinge_rows(js, p0, d);
     let cs = column(slide.1, js[slide.0].beta, 0.0);
-    let walked = walk_edge(&hr, (t0, t1), cs, js)?;
+    let walked = walk_edge(&hr, (t0, t1), (None, usize::MAX), cs, js)?;
     let s_of = |t: f64| (t - t0) / (t1 - t0);
     let mut points: Vec<(f64, f64, f64)> = walked
         .points

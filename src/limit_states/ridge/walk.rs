@@ -90,10 +90,12 @@ fn diff(hr: &[HingeRow], e: usize, i: usize) -> [f64; 4] {
 }
 
 /// The ridge over one edge of Q as walked: the points to check (t, η, w) and the pieces
-/// (t_start, t_end, E row, I row), in order.
+/// (t_start, t_end, E row, I row), in order; where the walk stopped before the edge's end
+/// (after its most pieces), the point and the pair of rows the next piece starts with.
 pub(super) struct Walked {
     pub(super) points: Vec<(f64, f64, f64)>,
     pub(super) pieces: Vec<(f64, f64, usize, usize)>,
+    pub(super) stopped: Option<(f64, usize, usize)>,
 }
 
 /// The ridge over one edge of Q, followed from t0 to t1. On each piece one E row and one I
@@ -101,10 +103,13 @@ pub(super) struct Walked {
 /// ends where a third row reaches w (a quadratic per row); there the pair changes to the one
 /// with the larger dη/dt. Returns the points (t, η, w): the two ends of the edge (V), the
 /// breakpoints (E1) and the points of each piece where the sliding column `cs` and the
-/// pair's columns are dependent (E2, det = 0, a quadratic in η).
+/// pair's columns are dependent (E2, det = 0, a quadratic in η). `from`: the walk goes on
+/// from a point where an earlier walk stopped, with its pair of rows (that point is not
+/// returned again); it stops after `most_pieces` pieces.
 pub(super) fn walk_edge(
     hr: &[HingeRow],
     (t0, t1): (f64, f64),
+    (from, most_pieces): (Option<(f64, usize, usize)>, usize),
     cs: [f64; 3],
     js: &[JointRows],
 ) -> Result<Walked, Undecided> {
@@ -115,15 +120,20 @@ pub(super) fn walk_edge(
     };
     let mut out = Vec::new();
     let mut pieces = Vec::new();
-    let Some((mut e, mut i)) = ridge_pair(hr, t0) else {
-        return Err(Undecided::Resolution(format!(
-            "no ridge over the edge of Q at t = {t0}"
-        )));
-    };
     let w_at = |e: usize, d: &[f64; 4], t: f64| hr[e].at(t, eta_of(d, t));
-    let d = diff(hr, e, i);
-    out.push((t0, eta_of(&d, t0), w_at(e, &d, t0)));
-    let mut t = t0;
+    let (mut t, mut e, mut i) = match from {
+        Some(f) => f,
+        None => {
+            let Some((e, i)) = ridge_pair(hr, t0) else {
+                return Err(Undecided::Resolution(format!(
+                    "no ridge over the edge of Q at t = {t0}"
+                )));
+            };
+            let d = diff(hr, e, i);
+            out.push((t0, eta_of(&d, t0), w_at(e, &d, t0)));
+            (t0, e, i)
+        }
+    };
     for _ in 0..4 * hr.len() + 4 {
         let d = diff(hr, e, i);
         let q = |t: f64| d[2] + d[3] * t;
@@ -201,6 +211,7 @@ pub(super) fn walk_edge(
             return Ok(Walked {
                 points: out,
                 pieces,
+                stopped: None,
             });
         };
         out.push((tn, eta_of(&d, tn), w_at(e, &d, tn)));
@@ -214,6 +225,13 @@ pub(super) fn walk_edge(
             }
         }
         t = tn;
+        if pieces.len() >= most_pieces {
+            return Ok(Walked {
+                points: out,
+                pieces,
+                stopped: Some((t, e, i)),
+            });
+        }
     }
     Err(Undecided::Resolution(
         "the walk along an edge of Q did not reach its end".into(),
