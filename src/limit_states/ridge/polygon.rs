@@ -8,6 +8,10 @@ use crate::contact::ContactKind;
 /// sweep's box, |x_k| ≤ 1e7, is larger).
 pub(super) const BOX: f64 = 1e6;
 
+/// Two lines of consecutive angles that meet beyond this many times [`BOX`] are taken as
+/// parallel (their meeting point is rounding, and the box cuts it off).
+const FAR: f64 = 4.0;
+
 /// A point is on the box when |h| or |v| ≥ [`BOX`] (1 − this).
 const BOX_EDGE_REL: f64 = 1e-9;
 
@@ -98,25 +102,36 @@ fn meet(r: &Line, s: &Line) -> Option<[f64; 2]> {
 
 /// The intersection of the half-planes: its vertices in order, each with the line of the
 /// edge that leaves it (empty where it has no interior). The box's four sides keep every
-/// angular gap below π, so consecutive lines always meet.
+/// angular gap below π, so consecutive lines meet unless parallel (angles equal to
+/// rounding, or meeting far beyond the box), and of two parallel ones the more restrictive
+/// stays.
 fn intersect(lines: &[Line]) -> Vec<([f64; 2], usize)> {
     let outside = |l: usize, p: [f64; 2]| {
         let l = &lines[l];
         l.a[0] * p[0] + l.a[1] * p[1] + l.b > 0.0
     };
     // by angle; of parallel lines the most restrictive (the largest b / |a|) first
-    let mut order: Vec<(f64, f64, usize)> = lines
-        .iter()
-        .enumerate()
-        .map(|(k, l)| (angle(l), l.b / l.a[0].hypot(l.a[1]), k))
+    let offset = |l: usize| lines[l].b / lines[l].a[0].hypot(lines[l].a[1]);
+    let mut order: Vec<(f64, f64, usize)> = (0..lines.len())
+        .map(|k| (angle(&lines[k]), offset(k), k))
         .collect();
     order.sort_by(|x, y| x.0.total_cmp(&y.0).then(y.1.total_cmp(&x.1)));
-    order.dedup_by(|y, x| y.0 == x.0);
-    let order: Vec<usize> = order.into_iter().map(|o| o.2).collect();
     let mut dq: std::collections::VecDeque<usize> = std::collections::VecDeque::new();
     // pts[k]: where dq[k] and dq[k + 1] meet
     let mut pts: std::collections::VecDeque<[f64; 2]> = std::collections::VecDeque::new();
-    for &l in &order {
+    for &(_, _, l) in &order {
+        // a line parallel to the last one (their angles equal to rounding, or meeting far
+        // beyond the box): the more restrictive stays
+        if let Some(&last) = dq.back() {
+            let far = |p: [f64; 2]| !(p[0].abs() <= FAR * BOX && p[1].abs() <= FAR * BOX);
+            if meet(&lines[last], &lines[l]).is_none_or(far) {
+                if offset(l) <= offset(last) {
+                    continue;
+                }
+                dq.pop_back();
+                pts.pop_back();
+            }
+        }
         while pts.back().is_some_and(|&p| outside(l, p)) {
             dq.pop_back();
             pts.pop_back();
@@ -164,4 +179,49 @@ fn drop_repeated(poly: Vec<([f64; 2], usize)>) -> Vec<([f64; 2], usize)> {
         })
         .map(|k| poly[k])
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn slide(a: [f64; 2], b: f64) -> Line {
+        Line {
+            a,
+            b,
+            slide: Some((0, ContactKind::SlidePlus)),
+        }
+    }
+
+    /// The square |h|, |v| ≤ 1 cut by parallel copies of its sides (one of them with its
+    /// normal scaled, so that its angle differs in the last bit): the most restrictive of
+    /// each pair stays, and the vertices are the square's corners, counter-clockwise from
+    /// the edge of least angle.
+    #[test]
+    fn parallel_half_planes_keep_the_most_restrictive() {
+        let s = 1.0 + 3.0 * f64::EPSILON;
+        let mut ls = vec![
+            slide([1.0, 0.0], -1.0),
+            slide([0.0, 1.0], -1.0),
+            slide([-1.0, 0.0], -1.0),
+            slide([0.0, -1.0], -1.0),
+            // h ≤ 2, meeting h ≤ 1 at v = 10³⁰⁰: parallel to rounding
+            slide([1.0, 1e-300], -2.0),
+            slide([0.0 * s, s], -1.5 * s),
+            slide([-s, 0.0], -0.5 * s),
+        ];
+        ls.extend(lines(&[], 1.0));
+        let poly = q_polygon(&ls);
+        let corners: Vec<[f64; 2]> = poly.iter().map(|v| v.0).collect();
+        assert_eq!(
+            corners,
+            vec![[-0.5, 1.0], [-0.5, -1.0], [1.0, -1.0], [1.0, 1.0]],
+            "{poly:?}"
+        );
+        // the edge of least angle first: h ≥ −0.5 (line 6), going down
+        assert_eq!(
+            poly.iter().map(|v| v.1).collect::<Vec<_>>(),
+            vec![6, 3, 0, 1]
+        );
+    }
 }
