@@ -25,18 +25,9 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
 
-/// Median of `reps` timings of `f`, in seconds.
-fn median<F: FnMut()>(mut f: F, reps: usize) -> f64 {
-    let mut t: Vec<f64> = (0..reps.max(1))
-        .map(|_| {
-            let s = Instant::now();
-            f();
-            s.elapsed().as_secs_f64()
-        })
-        .collect();
-    t.sort_by(f64::total_cmp);
-    t[t.len() / 2]
-}
+#[path = "common/timing.rs"]
+mod timing;
+use timing::median;
 
 /// CPU time (user + system) of the finished children of this process, in seconds, from
 /// /proc/self/stat (cutime, cstime: fields 16 and 17, in clock ticks of 1/100 s).

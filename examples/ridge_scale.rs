@@ -8,17 +8,12 @@ use arch_enum::limit_states::survey;
 use arch_enum::{Arch, Settings, WeightModel};
 use std::time::Instant;
 
-fn median<F: FnMut()>(mut f: F, reps: usize) -> f64 {
-    let mut t: Vec<f64> = (0..reps)
-        .map(|_| {
-            let s = Instant::now();
-            f();
-            s.elapsed().as_secs_f64()
-        })
-        .collect();
-    t.sort_by(f64::total_cmp);
-    t[reps / 2]
-}
+#[path = "common/lcg.rs"]
+mod lcg;
+#[path = "common/timing.rs"]
+mod timing;
+use lcg::Rng;
+use timing::median;
 
 /// The limit states of one survey, one line, every float as its bits.
 fn dump_line(arch: &Arch, mu: f64, s: &Settings) -> String {
@@ -45,13 +40,8 @@ fn dump_line(arch: &Arch, mu: f64, s: &Settings) -> String {
 
 fn dump() {
     let s = Settings::default();
-    let mut seed: u64 = 12345;
-    let mut next = move || {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rng = Rng(12345);
+    let mut next = move || rng.next();
     for k in 0..400 {
         let (a, b) = (-1.2 + 2.6 * next(), -1.2 + 2.6 * next());
         let symmetric = k % 2 == 0;

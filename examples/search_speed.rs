@@ -5,19 +5,10 @@
 
 use arch_enum::limit_states::survey;
 use arch_enum::{solve, Arch, Settings, WeightModel};
-use std::time::Instant;
 
-fn median<F: FnMut()>(mut f: F, reps: usize) -> f64 {
-    let mut t: Vec<f64> = (0..reps)
-        .map(|_| {
-            let s = Instant::now();
-            f();
-            s.elapsed().as_secs_f64()
-        })
-        .collect();
-    t.sort_by(f64::total_cmp);
-    t[reps / 2]
-}
+#[path = "common/timing.rs"]
+mod timing;
+use timing::median;
 
 fn main() {
     let s = Settings::default();
