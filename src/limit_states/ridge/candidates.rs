@@ -53,10 +53,18 @@ fn candidates_walked(
     Ok((all, subsets))
 }
 
-/// Whether the sliding line passes through q (to the walk's tolerance).
+/// G1 counts a sliding line through a vertex q of Q when |a · q + b| is below this times
+/// |a|₁ (1 + |h| + |v|): about 100 times the candidates' own activity tolerance (`adm_tol`,
+/// 10⁻¹² of the row's magnitude (1 + |h| + |v| + |w|) max(min(μ, 1), 10⁻³); the two scales
+/// differ by a factor of order one), so that a line G1 lets pass is inactive at q in the
+/// check. (It was the walk's 10⁻⁹, which the lines of neighbouring joints of arches of some
+/// thousands of voussoirs come within without meeting.)
+const G1_TOL: f64 = 1e-10;
+
+/// Whether the sliding line passes through q (to G1's tolerance).
 fn through(l: &Line, q: [f64; 2]) -> bool {
     let na = l.a[0].abs() + l.a[1].abs();
-    l.slide.is_some() && (l.a[0] * q[0] + l.a[1] * q[1] + l.b).abs() <= TOL * na * scale(q)
+    l.slide.is_some() && (l.a[0] * q[0] + l.a[1] * q[1] + l.b).abs() <= G1_TOL * na * scale(q)
 }
 
 /// G1: no third sliding line through a vertex of Q (a pure-sliding mechanism may then
