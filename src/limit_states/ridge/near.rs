@@ -4,11 +4,13 @@
 //! walk found there. Then that ridge is the ridge of all the rows: at each of its points
 //! (p, η_S, w_S) every row outside S holds strictly, so the band of all the rows at η_S
 //! contains w_S (g ≤ η_S), and fewer rows never close the band later (g ≥ η_S); its
-//! breakpoints are where a row of S reaches w, since no other row comes near it. Bounds
-//! over the chunk make this a walk down a tree of groups of joints (a group's rows with
-//! ranged coefficients): the (h, v) box of its edges, the range of η and of w over its
-//! pieces, and each row bilinear in (p, η), so its extremes over box × range lie at the
-//! eight corners.
+//! breakpoints are where a row of S reaches w, since no other row comes near it. The
+//! bounds over the chunk ([`Bounds`]): the (h, v) box of its edges, the range of η over its
+//! pieces, and the ranges of w less a reference row of each side; each row's difference
+//! with its reference is bilinear in (p, η), so its extremes over box × range lie at the
+//! eight corners. The proof walks down a tree of groups of joints ([`JointTree`]: a group's
+//! rows as the interpolation between its end joints plus the range of the residual), so a
+//! chunk costs about |S| log n.
 //!
 //! The same margins let the candidates' pre-filter and the test for a third sliding line
 //! through a vertex of Q look at the joints of S alone: the joints outside are further from
