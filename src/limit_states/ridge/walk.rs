@@ -23,6 +23,10 @@ const ROW_ZERO_REL: f64 = 1e-13;
 /// below this times the sum of its values at η = 0, 1, 2.
 const DET_ZERO_REL: f64 = 1e-14;
 
+/// Pairs of hinge rows whose η at a point agree to this (relative) both reach the ridge
+/// there (rounding of η = −(d0 + d1 t)/(d2 + d3 t)).
+const PAIR_TIE_REL: f64 = 1e-13;
+
 /// A quadratic has no real root when its discriminant is below −this times q1² (a double
 /// root within rounding otherwise).
 const NEGATIVE_DISC_REL: f64 = 1e-12;
@@ -67,7 +71,8 @@ fn ridge_pair(hr: &[HingeRow], t: f64) -> Option<(usize, usize)> {
         .fold(f64::INFINITY, f64::min);
     let tol = TOL * (scale + w.abs());
     let near = |r: &HingeRow| (r.at(t, eta) - w).abs() <= tol;
-    let mut best: Option<(usize, usize, f64)> = None;
+    // the pairs of rows near w: their η at t, and dη/dt
+    let mut pairs: Vec<(usize, usize, f64, f64)> = Vec::new();
     for e in (0..hr.len()).filter(|&e| hr[e].upper && near(&hr[e])) {
         for i in (0..hr.len()).filter(|&i| !hr[i].upper && hr[i].j != hr[e].j && near(&hr[i])) {
             let d = diff(hr, e, i);
@@ -76,12 +81,23 @@ fn ridge_pair(hr: &[HingeRow], t: f64) -> Option<(usize, usize)> {
                 continue;
             }
             let slope = (d[0] * d[3] - d[1] * d[2]) / (q * q);
-            if best.is_none_or(|b| slope > b.2) {
-                best = Some((e, i, slope));
-            }
+            pairs.push((e, i, -(d[0] + d[1] * t) / q, slope));
         }
     }
-    best.map(|b| (b.0, b.1))
+    // the ridge is the largest pair's η: of the pairs that reach it (to rounding), the one
+    // with the largest dη/dt dominates just after t (a pair near w by `TOL` but below the
+    // ridge by more than rounding does not close the band there: at 1 000 voussoirs the
+    // rows of neighbouring joints differ by 10⁻⁹ and cross a little way along the edge)
+    let top = pairs.iter().fold(f64::NEG_INFINITY, |m, p| m.max(p.2));
+    let tie = PAIR_TIE_REL * (1.0 + top.abs());
+    pairs
+        .iter()
+        .filter(|p| p.2 >= top - tie)
+        .fold(None, |b: Option<&(usize, usize, f64, f64)>, p| match b {
+            Some(b) if b.3 >= p.3 => Some(b),
+            _ => Some(p),
+        })
+        .map(|b| (b.0, b.1))
 }
 
 /// row_e − row_i: on the piece of the pair (e, i), η(t) = −(d0 + d1 t)/(d2 + d3 t).
