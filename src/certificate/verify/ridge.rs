@@ -39,6 +39,11 @@ use crate::certificate::interval::{det3, Interval as I};
 /// first.
 const CELL_RADII: [f64; 5] = [1e-5, 1e-7, 1e-9, 1e-11, 1e-13];
 
+/// Two junctions of an edge closer than this (in s) may be proved as one cell: the walk
+/// locates a crossing of two nearly parallel rows (neighbouring joints of a fine arch) only
+/// to about 10⁻¹¹, so a breakpoint may stand that far from a point of dependent columns.
+const CLUSTER_GAP: f64 = 1e-9;
+
 /// A piece's interior is split down to this fraction of its end cells' half-width before
 /// a part of it counts as not proved.
 const SPLIT_FLOOR: f64 = 1.0 / 4096.0;
@@ -476,54 +481,95 @@ impl Proof<'_> {
             .ok_or("an edge without pieces")?;
         let next_pair = edge_pairs(self.joints, next)?[0];
         // the junctions: 0..pieces (junction i starts piece i), then the last vertex
-        let mut radius = vec![0.0; ends.len()];
-        for i in 0..ends.len() {
-            let last = i + 1 == ends.len();
-            let jn = if last {
+        let last = ends.len() - 1;
+        let jn_at = |i: usize| {
+            if i == last {
                 &next.junctions[0]
             } else {
                 &edge.junctions[i]
-            };
+            }
+        };
+        let slides_at = |i: usize| {
             let mut slides = vec![e.row];
             if i == 0 {
                 slides.push(prev_row);
             }
-            if last {
+            if i == last {
                 slides.push(next_row);
             }
-            // the pieces on either side (at a vertex, the neighbouring edge's)
-            let mut around: Vec<[Row; 2]> = vec![
-                if i == 0 { prev_pair } else { pairs[i - 1] },
-                if last { next_pair } else { pairs[i] },
-            ];
-            around.dedup();
-            let gap = |a: usize, b: usize| (ends[b] - ends[a]).abs() / 2.0;
-            let room = match (i.checked_sub(1), (!last).then_some(i + 1)) {
-                (Some(a), Some(b)) => gap(a, i).min(gap(i, b)),
-                (Some(a), None) => gap(a, i),
-                (None, Some(b)) => gap(i, b),
-                (None, None) => 1.0,
-            };
-            let ctx = (e, jn, &slides[..], &around[..]);
-            // this edge's pieces before and after the junction
-            let beside = [
+            slides
+        };
+        // the pieces before and after a junction (at a vertex, the neighbouring edge's), and
+        // this edge's own
+        let before = |i: usize| if i == 0 { prev_pair } else { pairs[i - 1] };
+        let after = |i: usize| if i == last { next_pair } else { pairs[i] };
+        let beside = |i: usize, j: usize| {
+            [
                 i.checked_sub(1).map(|p| pairs[p]),
-                (!last).then(|| pairs[i]),
-            ];
-            let (r, how) = self
-                .junction(ctx, (ends[i], room, beside), (listed, least))
-                .map_err(|why| format!("edge {k}, junction at s = {}: {why}", ends[i]))?;
-            radius[i] = r;
+                (j < last).then(|| pairs[j]),
+            ]
+        };
+        // a cell around junctions i..=j stays within half the distance to the others
+        let room = |i: usize, j: usize| {
+            let half = |a: usize, b: usize| (ends[b] - ends[a]).abs() / 2.0;
+            let r = if i > 0 { half(i - 1, i) } else { 1.0 };
+            if j < last {
+                r.min(half(j, j + 1))
+            } else {
+                r
+            }
+        };
+        // how far each junction's cell reaches before and after it
+        let mut reach = vec![(0.0, 0.0); ends.len()];
+        let mut i = 0;
+        while i <= last {
+            // two junctions closer than a shallow crossing is located: one cell, if it proves
+            let j = i + 1;
+            let cluster = (j <= last && ends[j] - ends[i] <= CLUSTER_GAP)
+                .then(|| {
+                    let mut slides = slides_at(i);
+                    slides.extend(slides_at(j));
+                    slides.dedup();
+                    let mut around = vec![before(i), pairs[i], after(j)];
+                    around.dedup();
+                    self.cluster(
+                        (e, [jn_at(i), jn_at(j)], &slides[..], &around[..]),
+                        ((ends[i], ends[j]), room(i, j), beside(i, j)),
+                    )
+                })
+                .flatten();
+            let (j, r, how) = match cluster {
+                Some(r) => (j, r, Settled::NoMechanism),
+                None => {
+                    let mut around = vec![before(i), after(i)];
+                    around.dedup();
+                    let slides = slides_at(i);
+                    let (r, how) = self
+                        .junction(
+                            (e, jn_at(i), &slides[..], &around[..]),
+                            (ends[i], room(i, i), beside(i, i)),
+                            (listed, least),
+                        )
+                        .map_err(|why| format!("edge {k}, junction at s = {}: {why}", ends[i]))?;
+                    (i, r, how)
+                }
+            };
+            reach[i].0 = r;
+            reach[j].1 = r;
+            if j > i {
+                (reach[i].1, reach[j].0) = (f64::INFINITY, f64::INFINITY);
+            }
             t.cells += 1;
             match how {
                 Settled::NoMechanism => t.by_farkas += 1,
                 Settled::Listed => t.matched += 1,
                 Settled::NearLeast(top) => t.floor = t.floor.max(top),
             }
+            i = j + 1;
         }
         for (i, pair) in pairs.iter().enumerate() {
-            let span = (ends[i] + radius[i], ends[i + 1] - radius[i + 1]);
-            let floor = radius[i].min(radius[i + 1]) * SPLIT_FLOOR;
+            let span = (ends[i] + reach[i].1, ends[i + 1] - reach[i + 1].0);
+            let floor = reach[i].1.min(reach[i + 1].0) * SPLIT_FLOOR;
             t.cells += self
                 .piece(e, span, *pair, floor)
                 .map_err(|s| format!("edge {k}, piece {i}: not proved near s = {s}"))?;
@@ -600,6 +646,39 @@ impl Proof<'_> {
             .find(|&(r, _)| beside_ok(r))
             .map(|(r, top)| (r, Settled::NearLeast(top)))
             .ok_or(last)
+    }
+
+    /// Two junctions closer than [`CLUSTER_GAP`] (s in `span`) as one cell, widened by a
+    /// half-width at most `room`: the rows of the pieces around and between them listed, and
+    /// no mechanism on them over the cell's η, proved by either junction's Farkas
+    /// certificates (a limit state inside is not matched here). The half-width used.
+    fn cluster(
+        &self,
+        (e, jns, slides, pairs): (&EdgeCtx, [&NoMechanism; 2], &[Row], &[[Row; 2]]),
+        (span, room, beside): ((f64, f64), f64, [Option<[Row; 2]>; 2]),
+    ) -> Option<f64> {
+        let mut hinges: Vec<Row> = pairs.iter().flatten().copied().collect();
+        hinges.sort();
+        hinges.dedup();
+        let widest = CELL_RADII[0].min(room);
+        let beside_ok = |r: f64| {
+            let floor = r * SPLIT_FLOOR;
+            let piece = |p: [Row; 2], span| self.piece(e, span, p, floor).is_ok();
+            beside[0].is_none_or(|p| piece(p, (span.0 - widest, span.0 - r)))
+                && beside[1].is_none_or(|p| piece(p, (span.1 + r, span.1 + widest)))
+        };
+        CELL_RADII.iter().map(|&r| r.min(room)).find(|&r| {
+            let s = I::new((span.0 - r).max(0.0), (span.1 + r).min(1.0));
+            let proved = match self.cell(e, s, slides, &hinges) {
+                Cell::Outside => true,
+                Cell::Listed(h) => jns.iter().any(|jn| {
+                    self.farkas_covers(jn, slides.iter().chain(&hinges), h)
+                        .unwrap_or(false)
+                }),
+                Cell::Open => false,
+            };
+            proved && beside_ok(r)
+        })
     }
 
     /// Whether the junction's Farkas certificates cover every one-sense choice of its
