@@ -136,8 +136,9 @@ fn meet(a: &[I; 3], b: &[I; 3]) -> Option<[I; 2]> {
 /// A contact of the ridge: (joint index, kind).
 type Row = (usize, ContactKind);
 
-/// One edge, ready for cells: every joint's N, m and both sliding rows at its two
-/// vertices (each f along the edge is f₀ + s (f₁ − f₀)), its sliding row; the joints' rows
+/// One edge, ready for cells: every joint's N and m at its two vertices (each f along the
+/// edge is f₀ + s (f₁ − f₀)), the sliding rows not proved below 0 at both (the others are
+/// below 0 all along it), its sliding row; the joints' rows
 /// and the two vertices themselves, for sums and differences of rows ([`EdgeCtx::combo`]).
 struct EdgeCtx<'a> {
     n: Vec<[I; 2]>,
@@ -146,9 +147,22 @@ struct EdgeCtx<'a> {
     row: Row,
     rows: &'a [Rows],
     vertices: [[I; 2]; 2],
+    /// The [`PairRows`] built so far on this edge (a few pairs, each asked for by many
+    /// cells).
+    pairs: std::cell::RefCell<Vec<([Row; 2], std::rc::Rc<PairRows>)>>,
 }
 
 impl EdgeCtx<'_> {
+    /// The pair's [`PairRows`], built once per edge.
+    fn pair(&self, pair: [Row; 2]) -> std::rc::Rc<PairRows> {
+        if let Some((_, pr)) = self.pairs.borrow().iter().find(|(p, _)| *p == pair) {
+            return pr.clone();
+        }
+        let pr = std::rc::Rc::new(pair_rows(self, pair));
+        self.pairs.borrow_mut().push((pair, pr.clone()));
+        pr
+    }
+
     /// f_x + sg f_y at the two vertices (f: a joint's N or m), the rows' coefficients
     /// combined first: the rows of nearby joints nearly cancel, and their difference taken
     /// after each is enclosed at the vertices would be as wide as the vertices' enclosures
@@ -187,6 +201,34 @@ enum Cell {
     Open,
 }
 
+/// One pair of hinge rows (E_k, I_j) along an edge, for [`Proof::one_pair`]: a = m_k − m_j
+/// and b = N_k + N_j at the vertices (η = 2a/b on the pair's piece), and for every other
+/// hinge row the (p, t) of its slack times b, p b + a t, each against the pair's row of its
+/// own side (u_k − u_r, l_j − l_r: the rows of nearby joints nearly cancel there):
+/// E_r: p = m_k − m_r, t = N_r − N_k; I_r: p = m_r − m_j, t = N_r − N_j.
+struct PairRows {
+    a: [I; 2],
+    b: [I; 2],
+    slacks: Vec<([I; 2], [I; 2])>,
+}
+
+fn pair_rows(e: &EdgeCtx, [(k, _), (j, _)]: [Row; 2]) -> PairRows {
+    let mut slacks = Vec::with_capacity(2 * e.rows.len());
+    for r in 0..e.rows.len() {
+        if r != k {
+            slacks.push((e.combo(m_row, (k, r), -1.0), e.combo(n_row, (r, k), -1.0)));
+        }
+        if r != j {
+            slacks.push((e.combo(m_row, (r, j), -1.0), e.combo(n_row, (r, j), -1.0)));
+        }
+    }
+    PairRows {
+        a: e.combo(m_row, (k, j), -1.0),
+        b: e.combo(n_row, (k, j), 1.0),
+        slacks,
+    }
+}
+
 /// The setting of the proof: the model, μ and η_hi.
 struct Proof<'a> {
     model: &'a Model,
@@ -204,7 +246,7 @@ impl Proof<'_> {
                 } else {
                     [*b, *a]
                 };
-                return self.one_pair(e, s, slides, pair);
+                return self.one_pair(e, s, slides, &e.pair(pair));
             }
         }
         let n = |j: usize| along(e.n[j], s);
@@ -268,18 +310,32 @@ impl Proof<'_> {
         self.finish(e, s, slides, h)
     }
 
-    /// [`Proof::cell`] with one pair of hinge rows (E_k, I_j): η = 2a/b, a = m_k − m_j,
-    /// b = N_k + N_j, is monotone over the cell (linear-fractional, b > 0), and each other
-    /// hinge row's slack times b is a quadratic in s, enclosed in centred form about the
-    /// cell's middle (tight near a junction, where the slack vanishes linearly).
-    fn one_pair(&self, e: &EdgeCtx, s: I, slides: &[Row], [(k, _), (j, _)]: [Row; 2]) -> Cell {
+    /// [`Proof::cell`] with one pair of hinge rows (E_k, I_j) ([`PairRows`]): η = 2a/b is
+    /// monotone over the cell (linear-fractional, b > 0), and each other hinge row's slack
+    /// times b is a quadratic in s, enclosed in centred form about the cell's middle (tight
+    /// near a junction, where the slack vanishes linearly).
+    fn one_pair(&self, e: &EdgeCtx, s: I, slides: &[Row], pr: &PairRows) -> Cell {
+        self.one_pair_over(e, s, slides, (pr, None)).0
+    }
+
+    /// [`Proof::one_pair`] over the slacks `only` (indices into `pr.slacks`; `None`: all),
+    /// with the indices of the slacks not proved positive (every one checked where some
+    /// fails: a sub-cell of this one needs to check only those).
+    fn one_pair_over(
+        &self,
+        e: &EdgeCtx,
+        s: I,
+        slides: &[Row],
+        (pr, only): (&PairRows, Option<&[usize]>),
+    ) -> (Cell, Vec<usize>) {
         let (c, rad) = (I::point(s.mid()), I::new(-0.5 * s.width(), 0.5 * s.width()));
         let sq = I::new(0.0, 0.25 * s.width() * s.width());
         // an affine f along the edge: its value at the middle and its slope
-        let at = |f: [I; 2]| (along(f, c), f[1] - f[0]);
-        let (a, b) = (e.combo(m_row, (k, j), -1.0), e.combo(n_row, (k, j), 1.0));
+        let at = |f: [I; 2]| (f[0] + c * (f[1] - f[0]), f[1] - f[0]);
+        let (a, b) = (pr.a, pr.b);
+        let every = || only.map_or_else(|| (0..pr.slacks.len()).collect(), <[usize]>::to_vec);
         if along(b, s).lo <= 0.0 {
-            return Cell::Open;
+            return (Cell::Open, every());
         }
         let eta_at = |x: f64| {
             let x = I::point(x);
@@ -288,47 +344,36 @@ impl Proof<'_> {
                 .map(|inv| I::point(2.0) * along(a, x) * inv)
         };
         let (Some(e0), Some(e1)) = (eta_at(s.lo), eta_at(s.hi)) else {
-            return Cell::Open;
+            return (Cell::Open, every());
         };
         let h = e0.hull(e1);
         if h.lo >= 2.0 {
-            return Cell::Outside;
+            return (Cell::Outside, Vec::new());
         }
-        // slack · b = p q + r t (p, q, r, t affine in s), enclosed about the middle
-        let positive = |p: [I; 2], q: [I; 2], r: [I; 2], t: [I; 2]| {
-            let ((p0, p1), (q0, q1), (r0, r1), (t0, t1)) = (at(p), at(q), at(r), at(t));
+        // slack · b = p b + a t (p, b, a, t affine in s), enclosed about the middle
+        let ((q0, q1), (r0, r1)) = (at(b), at(a));
+        let positive = |&(p, t): &([I; 2], [I; 2])| {
+            let ((p0, p1), (t0, t1)) = (at(p), at(t));
             let g = p0 * q0
                 + r0 * t0
                 + (p0 * q1 + p1 * q0 + r0 * t1 + r1 * t0) * rad
                 + (p1 * q1 + r1 * t1) * sq;
             g.lo > 0.0
         };
-        for r in 0..self.joints.len() {
-            // each slack against the pair's row of its own side (u_k − u_r, l_j − l_r: the
-            // rows of nearby joints nearly cancel there): E_r: (m_k − m_r) b + a (N_r − N_k)
-            // > 0; I_r: (m_r − m_j) b + a (N_r − N_j) > 0
-            if r != k
-                && !positive(
-                    e.combo(m_row, (k, r), -1.0),
-                    b,
-                    a,
-                    e.combo(n_row, (r, k), -1.0),
-                )
-            {
-                return Cell::Open;
-            }
-            if r != j
-                && !positive(
-                    e.combo(m_row, (r, j), -1.0),
-                    b,
-                    a,
-                    e.combo(n_row, (r, j), -1.0),
-                )
-            {
-                return Cell::Open;
-            }
+        let open: Vec<usize> = match only {
+            Some(only) => only
+                .iter()
+                .copied()
+                .filter(|&i| !positive(&pr.slacks[i]))
+                .collect(),
+            None => (0..pr.slacks.len())
+                .filter(|&i| !positive(&pr.slacks[i]))
+                .collect(),
+        };
+        if !open.is_empty() {
+            return (Cell::Open, open);
         }
-        self.finish(e, s, slides, h)
+        (self.finish(e, s, slides, h), open)
     }
 
     /// The end of a cell's proof, once its hinge rows are settled: every sliding row not
@@ -371,14 +416,23 @@ impl Proof<'_> {
         pair: [Row; 2],
         floor: f64,
     ) -> Result<usize, f64> {
-        let mut stack = vec![span];
+        // each part with the slacks its parent did not prove (`None`: all)
+        let mut stack: Vec<(f64, f64, Option<Vec<usize>>)> = vec![(span.0, span.1, None)];
         let mut cells = 0;
-        while let Some((a, b)) = stack.pop() {
+        // a piece's pair joins rows of distinct joints (`cell` takes the general path else)
+        let rows = (pair[0].0 != pair[1].0).then(|| e.pair(pair));
+        while let Some((a, b, only)) = stack.pop() {
             if b <= a {
                 continue;
             }
             cells += 1;
-            let proved = match self.cell(e, I::new(a, b), &[e.row], &pair) {
+            let s = I::new(a, b);
+            let (cell, open) = match &rows {
+                Some(pr) => self.one_pair_over(e, s, &[e.row], (pr, only.as_deref())),
+                None => (self.cell(e, s, &[e.row], &pair), Vec::new()),
+            };
+            let open = (rows.is_some() && !open.is_empty()).then_some(open);
+            let proved = match cell {
                 Cell::Outside => true,
                 Cell::Listed(h) => self.independent(e.row, pair, h),
                 Cell::Open => false,
@@ -388,8 +442,8 @@ impl Proof<'_> {
                     return Err(0.5 * (a + b));
                 }
                 let mid = 0.5 * (a + b);
-                stack.push((mid, b));
-                stack.push((a, mid));
+                stack.push((mid, b, open.clone()));
+                stack.push((a, mid, open));
             }
         }
         Ok(cells)
@@ -658,12 +712,16 @@ impl Proof<'_> {
                 }
                 Cell::Listed(h) => h,
             };
-            if self.farkas_covers(jn, slides.iter().chain(&hinges), h)? && beside_ok(r) {
+            let no_mechanism = self.farkas_covers(jn, slides.iter().chain(&hinges), h)?;
+            if no_mechanism && beside_ok(r) {
                 return Ok((r, Settled::NoMechanism));
             }
             match self.one_point((e, jn), s, slides, pairs, h) {
                 Ok(()) if listed.iter().any(|ls| matches(jn, ls)) && beside_ok(r) => {
                     return Ok((r, Settled::Listed))
+                }
+                _ if no_mechanism => {
+                    last = "the pieces beside its cell are not proved up to it".into()
                 }
                 Ok(()) => {
                     last = format!(
@@ -967,7 +1025,10 @@ fn edge_ctx<'a>(
             if (j, kind) == next {
                 f[1] = I::point(0.0);
             }
-            slides.push(((j, kind), f));
+            // a row below 0 at both vertices is below 0 all along the edge (affine in s)
+            if f[0].hi >= 0.0 || f[1].hi >= 0.0 {
+                slides.push(((j, kind), f));
+            }
         }
     }
     Ok(EdgeCtx {
@@ -977,6 +1038,7 @@ fn edge_ctx<'a>(
         row: edge_row(joints, &ridge.edges[k])?,
         rows,
         vertices: [v0, v1],
+        pairs: Default::default(),
     })
 }
 
