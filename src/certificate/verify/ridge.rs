@@ -113,6 +113,7 @@ fn meet(a: &[I; 3], b: &[I; 3]) -> Option<[I; 2]> {
     let pt = p.map(I::point);
     let r = [ev(a, pt), ev(b, pt)];
     let (rows_a, one) = ([[a[0], a[1]], [b[0], b[1]]], I::point(1.0));
+    let mag = |x: I| x.lo.abs().max(x.hi.abs());
     let mut rho = 0.0f64;
     let mut m = [[I::point(0.0); 2]; 2];
     let mut e = [I::point(0.0); 2];
@@ -123,10 +124,14 @@ fn meet(a: &[I; 3], b: &[I; 3]) -> Option<[I; 2]> {
             let ya = yi[0] * rows_a[0][j] + yi[1] * rows_a[1][j];
             m[i][j] = if i == j { one - ya } else { -ya };
         }
-        rho = rho.max(m[i].iter().map(|x| x.lo.abs().max(x.hi.abs())).sum::<f64>());
+        // the row sum of |M| rounded up (an interval sum), so that 1 − ρ is not overstated
+        let row = m[i]
+            .iter()
+            .map(|&x| I::point(mag(x)))
+            .fold(I::point(0.0), |acc, x| acc + x);
+        rho = rho.max(row.hi);
     }
     let rest = (one - I::point(rho)).recip().filter(|x| x.lo > 0.0)?;
-    let mag = |x: I| x.lo.abs().max(x.hi.abs());
     let delta = (I::point(mag(e[0]).max(mag(e[1]))) * rest).hi;
     let d = I::new(-delta, delta);
     Some(std::array::from_fn(|i| {
@@ -1116,4 +1121,44 @@ fn polygon(
     Ok(format!(
         "proved (interval arithmetic): the friction polygon Q is the listed polygon of {m} edges (each vertex enclosed where two lines meet satisfies every other sliding row strictly, the point inside satisfies all, and the edges turn once around it)"
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Lines through a dyadic point p with exact coefficients meet exactly at p: the
+    /// enclosure holds p, and is narrow even where the lines are nearly parallel (angle
+    /// 2⁻²⁰); widened coefficients widen it; parallel lines give none.
+    #[test]
+    fn meet_encloses_the_point_where_lines_cross() {
+        let p = [0.5, -1.25];
+        let line = |a0: f64, a1: f64| {
+            [
+                I::point(a0),
+                I::point(a1),
+                I::point(-(a0 * p[0] + a1 * p[1])),
+            ]
+        };
+        let eps = 2f64.powi(-20);
+        // (lines, the width allowed: rounding times about the norm of A⁻¹)
+        for (a, b, most) in [
+            (line(1.0, 3.0), line(2.0, -1.0), 1e-14),
+            (line(1.0, 1.0), line(1.0, 1.0 + eps), 1e-8),
+            (line(-0.75, 0.5), line(-0.75 - eps, 0.5), 1e-8),
+        ] {
+            let v = meet(&a, &b).expect("lines that cross");
+            for k in 0..2 {
+                assert!(v[k].lo <= p[k] && p[k] <= v[k].hi, "{v:?}");
+                assert!(v[k].width() < most, "{v:?}");
+            }
+            // each coefficient widened by 1e-15: still holds p, wider
+            let wide = |l: [I; 3]| l.map(|x| I::new(x.lo - 1e-15, x.hi + 1e-15));
+            let w = meet(&wide(a), &wide(b)).expect("lines that cross");
+            for k in 0..2 {
+                assert!(w[k].lo <= p[k] && p[k] <= w[k].hi && w[k].width() >= v[k].width());
+            }
+        }
+        assert!(meet(&line(1.0, 2.0), &line(2.0, 4.0)).is_none());
+    }
 }
