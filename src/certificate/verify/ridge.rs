@@ -169,13 +169,13 @@ impl EdgeCtx<'_> {
         pr
     }
 
-    /// f_x + sg f_y at the two vertices (f: a joint's N or m), the rows' coefficients
+    /// f_x ± f_y (the sign of `sg`) at the two vertices (f: a joint's N or m), the rows' coefficients
     /// combined first: the rows of nearby joints nearly cancel, and their difference taken
     /// after each is enclosed at the vertices would be as wide as the vertices' enclosures
     /// (about 10⁻¹² at 400 voussoirs, where a slack near a breakpoint is 10⁻¹¹).
     fn combo(&self, f: fn(&Rows) -> &[I; 3], (x, y): (usize, usize), sg: f64) -> [I; 2] {
         let (a, b) = (f(&self.rows[x]), f(&self.rows[y]));
-        let c: [I; 3] = std::array::from_fn(|k| a[k] + I::point(sg) * b[k]);
+        let c: [I; 3] = std::array::from_fn(|k| if sg > 0.0 { a[k] + b[k] } else { a[k] - b[k] });
         self.vertices.map(|v| ev(&c, v))
     }
 }
