@@ -139,6 +139,41 @@ fn meet(a: &[I; 3], b: &[I; 3]) -> Option<[I; 2]> {
     }))
 }
 
+/// The joints in groups, a segment tree over their indices: node 1 holds every joint, node i
+/// its children 2i and 2i + 1, and each node the hull of its joints' N and m coefficients (an
+/// enclosure of every member's, so a slack enclosed with them holds for each member).
+struct Groups {
+    /// (first joint, one past the last, hull of N, hull of m) per node; node 0 unused.
+    nodes: Vec<(usize, usize, [I; 3], [I; 3])>,
+}
+
+impl Groups {
+    fn new(rows: &[Rows]) -> Groups {
+        let mut nodes = vec![(0, 0, [I::point(0.0); 3], [I::point(0.0); 3]); 4 * rows.len().max(1)];
+        fn build(
+            nodes: &mut [(usize, usize, [I; 3], [I; 3])],
+            rows: &[Rows],
+            i: usize,
+            (lo, hi): (usize, usize),
+        ) {
+            if hi - lo == 1 {
+                nodes[i] = (lo, hi, rows[lo].n, rows[lo].m);
+                return;
+            }
+            let mid = (lo + hi) / 2;
+            build(nodes, rows, 2 * i, (lo, mid));
+            build(nodes, rows, 2 * i + 1, (mid, hi));
+            let hull = |a: [I; 3], b: [I; 3]| std::array::from_fn(|k| a[k].hull(b[k]));
+            let (l, r) = (nodes[2 * i], nodes[2 * i + 1]);
+            nodes[i] = (lo, hi, hull(l.2, r.2), hull(l.3, r.3));
+        }
+        if !rows.is_empty() {
+            build(&mut nodes, rows, 1, (0, rows.len()));
+        }
+        Groups { nodes }
+    }
+}
+
 /// A contact of the ridge: (joint index, kind).
 type Row = (usize, ContactKind);
 
@@ -152,6 +187,7 @@ struct EdgeCtx<'a> {
     slides: Vec<(Row, [I; 2])>,
     row: Row,
     rows: &'a [Rows],
+    groups: &'a Groups,
     vertices: [[I; 2]; 2],
     /// The [`PairRows`] built so far on this edge (a few pairs, each asked for by many
     /// cells).
@@ -159,6 +195,35 @@ struct EdgeCtx<'a> {
 }
 
 impl EdgeCtx<'_> {
+    /// An affine row (coefficients) at the two vertices.
+    fn at_vertices(&self, c: [I; 3]) -> [I; 2] {
+        self.vertices.map(|v| ev(&c, v))
+    }
+
+    /// The (p, t) of slack `i` of the pair ([`PairRows`]) for the N and m rows `(n, m)` of
+    /// its row (a joint's, or a group's hull: then an enclosure of every member's).
+    fn slack_of(&self, pr: &PairRows, i: usize, (n, m): (&[I; 3], &[I; 3])) -> ([I; 2], [I; 2]) {
+        let diff = |a: &[I; 3], b: &[I; 3]| std::array::from_fn(|q| a[q] - b[q]);
+        let (nk, mk, nj, mj) = (
+            &self.rows[pr.k].n,
+            &self.rows[pr.k].m,
+            &self.rows[pr.j].n,
+            &self.rows[pr.j].m,
+        );
+        let (p, t) = if i.is_multiple_of(2) {
+            (diff(mk, m), diff(n, nk))
+        } else {
+            (diff(m, mj), diff(n, nj))
+        };
+        (self.at_vertices(p), self.at_vertices(t))
+    }
+
+    /// Slack `i` of the pair: 2r is E_r, 2r + 1 is I_r.
+    fn slack(&self, pr: &PairRows, i: usize) -> ([I; 2], [I; 2]) {
+        let r = &self.rows[i / 2];
+        self.slack_of(pr, i, (&r.n, &r.m))
+    }
+
     /// The pair's [`PairRows`], built once per edge.
     fn pair(&self, pair: [Row; 2]) -> std::rc::Rc<PairRows> {
         if let Some((_, pr)) = self.pairs.borrow().iter().find(|(p, _)| *p == pair) {
@@ -208,30 +273,23 @@ enum Cell {
 }
 
 /// One pair of hinge rows (E_k, I_j) along an edge, for [`Proof::one_pair`]: a = m_k − m_j
-/// and b = N_k + N_j at the vertices (η = 2a/b on the pair's piece), and for every other
-/// hinge row the (p, t) of its slack times b, p b + a t, each against the pair's row of its
-/// own side (u_k − u_r, l_j − l_r: the rows of nearby joints nearly cancel there):
-/// E_r: p = m_k − m_r, t = N_r − N_k; I_r: p = m_r − m_j, t = N_r − N_j.
+/// and b = N_k + N_j at the vertices (η = 2a/b on the pair's piece). Every other hinge row's
+/// slack times b is p b + a t, against the pair's row of its own side (u_k − u_r, l_j − l_r:
+/// the rows of nearby joints nearly cancel there): slack 2r is E_r, p = m_k − m_r,
+/// t = N_r − N_k; slack 2r + 1 is I_r, p = m_r − m_j, t = N_r − N_j ([`EdgeCtx::slack`]).
 struct PairRows {
+    k: usize,
+    j: usize,
     a: [I; 2],
     b: [I; 2],
-    slacks: Vec<([I; 2], [I; 2])>,
 }
 
 fn pair_rows(e: &EdgeCtx, [(k, _), (j, _)]: [Row; 2]) -> PairRows {
-    let mut slacks = Vec::with_capacity(2 * e.rows.len());
-    for r in 0..e.rows.len() {
-        if r != k {
-            slacks.push((e.combo(m_row, (k, r), -1.0), e.combo(n_row, (r, k), -1.0)));
-        }
-        if r != j {
-            slacks.push((e.combo(m_row, (r, j), -1.0), e.combo(n_row, (r, j), -1.0)));
-        }
-    }
     PairRows {
+        k,
+        j,
         a: e.combo(m_row, (k, j), -1.0),
         b: e.combo(n_row, (k, j), 1.0),
-        slacks,
     }
 }
 
@@ -339,7 +397,16 @@ impl Proof<'_> {
         // an affine f along the edge: its value at the middle and its slope
         let at = |f: [I; 2]| (f[0] + c * (f[1] - f[0]), f[1] - f[0]);
         let (a, b) = (pr.a, pr.b);
-        let every = || only.map_or_else(|| (0..pr.slacks.len()).collect(), <[usize]>::to_vec);
+        let every = || {
+            only.map_or_else(
+                || {
+                    (0..2 * e.rows.len())
+                        .filter(|&i| i != 2 * pr.k && i != 2 * pr.j + 1)
+                        .collect()
+                },
+                <[usize]>::to_vec,
+            )
+        };
         if along(b, s).lo <= 0.0 {
             return (Cell::Open, every());
         }
@@ -358,7 +425,7 @@ impl Proof<'_> {
         }
         // slack · b = p b + a t (p, b, a, t affine in s), enclosed about the middle
         let ((q0, q1), (r0, r1)) = (at(b), at(a));
-        let positive = |&(p, t): &([I; 2], [I; 2])| {
+        let positive = |(p, t): ([I; 2], [I; 2])| {
             let ((p0, p1), (t0, t1)) = (at(p), at(t));
             let g = p0 * q0
                 + r0 * t0
@@ -370,16 +437,47 @@ impl Proof<'_> {
             Some(only) => only
                 .iter()
                 .copied()
-                .filter(|&i| !positive(&pr.slacks[i]))
+                .filter(|&i| !positive(e.slack(pr, i)))
                 .collect(),
-            None => (0..pr.slacks.len())
-                .filter(|&i| !positive(&pr.slacks[i]))
-                .collect(),
+            None => self.open_slacks(e, pr, &positive),
         };
         if !open.is_empty() {
             return (Cell::Open, open);
         }
         (self.finish(e, s, slides, h), open)
+    }
+
+    /// The slacks of the pair that `positive` does not prove, found by descending the groups
+    /// of joints ([`Groups`]): a group whose hull slack is proved positive is proved for
+    /// every member; a single joint's is its own slack.
+    fn open_slacks(
+        &self,
+        e: &EdgeCtx,
+        pr: &PairRows,
+        positive: &dyn Fn(([I; 2], [I; 2])) -> bool,
+    ) -> Vec<usize> {
+        let mut open = Vec::new();
+        if e.rows.is_empty() {
+            return open;
+        }
+        let mut stack: Vec<(usize, usize)> = vec![(1, 0), (1, 1)];
+        while let Some((node, side)) = stack.pop() {
+            let (lo, hi, n, m) = &e.groups.nodes[node];
+            let skip = if side == 0 { pr.k } else { pr.j };
+            let holds_skip = (*lo..*hi).contains(&skip);
+            if !holds_skip && positive(e.slack_of(pr, side, (n, m))) {
+                continue;
+            }
+            if hi - lo == 1 {
+                if !holds_skip {
+                    open.push(2 * lo + side);
+                }
+                continue;
+            }
+            stack.push((2 * node, side));
+            stack.push((2 * node + 1, side));
+        }
+        open
     }
 
     /// The end of a cell's proof, once its hinge rows are settled: every sliding row not
@@ -491,6 +589,7 @@ pub(super) fn prove_ridge(
         return Err("the ridge needs the centreline weight".into());
     }
     let rows: Vec<Rows> = joints.iter().map(|&b| rows_at(model, b)).collect();
+    let groups = Groups::new(&rows);
     let mut lines = vec![polygon(mu, joints, &rows, ridge)?];
     // P(η) has an interior point at every η > η_hi
     let p = [I::point(x_hi[0]), I::point(x_hi[1])];
@@ -510,7 +609,7 @@ pub(super) fn prove_ridge(
         ..Tally::default()
     };
     for k in 0..ridge.edges.len() {
-        let e = edge_ctx(joints, &rows, mu, ridge, k)?;
+        let e = edge_ctx(joints, (&rows, &groups), mu, ridge, k)?;
         proof.edge(&e, (ridge, k), (listed, least), &mut t)?;
     }
     let Tally {
@@ -989,7 +1088,7 @@ fn ends(edge: &RidgeEdge) -> Result<Vec<f64>, String> {
 /// The vertices of edge k (enclosed) and every joint's N, m and sliding rows at them.
 fn edge_ctx<'a>(
     joints: &[f64],
-    rows: &'a [Rows],
+    (rows, groups): (&'a [Rows], &'a Groups),
     mu: f64,
     ridge: &RidgeEvidence,
     k: usize,
@@ -1043,6 +1142,7 @@ fn edge_ctx<'a>(
         slides,
         row: edge_row(joints, &ridge.edges[k])?,
         rows,
+        groups,
         vertices: [v0, v1],
         pairs: Default::default(),
     })
