@@ -10,6 +10,8 @@ use std::time::Instant;
 
 #[path = "common/lcg.rs"]
 mod lcg;
+#[path = "common/found.rs"]
+mod summary;
 #[path = "common/timing.rs"]
 mod timing;
 use lcg::Rng;
@@ -108,13 +110,7 @@ fn main() {
             let reps = if n >= 3000 { 1 } else { 3 };
             let t = median(|| drop(survey(&arch, mu, &s).unwrap()), reps);
             let sv = survey(&arch, mu, &s).unwrap();
-            let (found, how) = match &sv.states {
-                Ok(ls) => (
-                    format!("{}", usize::from(ls.mechanism_at_eta_s) + ls.above.len()),
-                    format!("{}, {}", ls.method, ls.events),
-                ),
-                Err(e) => ("-".into(), format!("undecided: {e}")),
-            };
+            let (found, how) = summary::found(&sv);
             println!("| {name} | {mu} | {n} | {:.1} | {found} | {how} |", 1e3 * t);
         }
     }

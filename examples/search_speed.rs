@@ -6,6 +6,8 @@
 use arch_enum::limit_states::survey;
 use arch_enum::{solve, Arch, Settings, WeightModel};
 
+#[path = "common/found.rs"]
+mod summary;
 #[path = "common/timing.rs"]
 mod timing;
 use timing::median;
@@ -44,13 +46,7 @@ fn main() {
         let t_solve = median(|| drop(solve(&arch, mu, &s).unwrap()), reps);
         let t_all = median(|| drop(survey(&arch, mu, &s).unwrap()), reps);
         let sv = survey(&arch, mu, &s).unwrap();
-        let (found, how) = match &sv.states {
-            Ok(ls) => (
-                format!("{}", usize::from(ls.mechanism_at_eta_s) + ls.above.len()),
-                format!("{}, {}", ls.method, ls.events),
-            ),
-            Err(e) => ("-".into(), format!("incomplete: {e}")),
-        };
+        let (found, how) = summary::found(&sv);
         println!(
             "| {name} | {:.3} | {:.3} | {:.0} | {found} | {how} |",
             1e3 * t_solve,

@@ -382,9 +382,10 @@ impl Proof<'_> {
         self.one_pair_over(e, s, slides, (pr, None)).0
     }
 
-    /// [`Proof::one_pair`] over the slacks `only` (indices into `pr.slacks`; `None`: all),
-    /// with the indices of the slacks not proved positive (every one checked where some
-    /// fails: a sub-cell of this one needs to check only those).
+    /// [`Proof::one_pair`] over the slacks `only` (indices as in [`PairRows`]; `None`: all,
+    /// through [`Proof::open_slacks`]), with the slacks not proved positive (every one
+    /// checked where some fails: a sub-cell of this one needs to check only those; empty
+    /// where the cell fails otherwise, or proves).
     fn one_pair_over(
         &self,
         e: &EdgeCtx,
@@ -397,18 +398,11 @@ impl Proof<'_> {
         // an affine f along the edge: its value at the middle and its slope
         let at = |f: [I; 2]| (f[0] + c * (f[1] - f[0]), f[1] - f[0]);
         let (a, b) = (pr.a, pr.b);
-        let every = || {
-            only.map_or_else(
-                || {
-                    (0..2 * e.rows.len())
-                        .filter(|&i| i != 2 * pr.k && i != 2 * pr.j + 1)
-                        .collect()
-                },
-                <[usize]>::to_vec,
-            )
-        };
+        // where the cell fails before any slack is tried, its parts keep the parent's list
+        // (an empty one: every slack, through the groups)
+        let keep = || only.map_or_else(Vec::new, <[usize]>::to_vec);
         if along(b, s).lo <= 0.0 {
-            return (Cell::Open, every());
+            return (Cell::Open, keep());
         }
         let eta_at = |x: f64| {
             let x = I::point(x);
@@ -417,7 +411,7 @@ impl Proof<'_> {
                 .map(|inv| I::point(2.0) * along(a, x) * inv)
         };
         let (Some(e0), Some(e1)) = (eta_at(s.lo), eta_at(s.hi)) else {
-            return (Cell::Open, every());
+            return (Cell::Open, keep());
         };
         let h = e0.hull(e1);
         if h.lo >= 2.0 {
@@ -726,6 +720,7 @@ impl Proof<'_> {
                 .then(|| {
                     let mut slides = slides_at(i);
                     slides.extend(slides_at(j));
+                    slides.sort();
                     slides.dedup();
                     let mut around = vec![before(i), pairs[i], after(j)];
                     around.dedup();
