@@ -6,18 +6,23 @@
 //! `valgrind --tool=callgrind --callgrind-out-file=/dev/null target/release/examples/profile_loop solve 0 0.35 20`
 //! (and again with 40), then the difference of the two "Collected" counts over 20.
 //!
-//! Usage: `profile_loop solve|modes ALPHA MU N [BLOCKS]`: N times `survey` (solve with the
-//! limit-state search) at friction MU (`inf` allowed), or `trace` (modes, one thread), of
-//! the symmetric arch of opening ALPHA (radians, centreline weight), continuous or of
+//! Usage: `profile_loop solve|limit|curve|modes ALPHA MU N [BLOCKS]`: N times `survey`
+//! (solve with the limit-state search) at friction MU (`inf` allowed), `limit::solve`
+//! (η_s and the least limit state, no search), `sample` (`curve`: 400 friction
+//! coefficients from MU to MU + 0.2 on one thread, as `curve` samples them) or `trace`
+//! (modes, one thread), of the symmetric arch of opening ALPHA (radians, centreline weight), continuous or of
 //! BLOCKS equal voussoirs. Prints the mean time per call on standard error.
 
-use arch_enum::limit_curve::trace;
+use arch_enum::limit::solve;
+use arch_enum::limit_curve::{sample, trace};
 use arch_enum::limit_states::survey;
 use arch_enum::{Arch, Settings, WeightModel};
 
+const CURVE_POINTS: usize = 400;
+
 fn main() {
     let a: Vec<String> = std::env::args().collect();
-    let usage = "usage: profile_loop solve|modes ALPHA MU N [BLOCKS]";
+    let usage = "usage: profile_loop solve|limit|curve|modes ALPHA MU N [BLOCKS]";
     let arg = |i: usize| a.get(i).expect(usage).as_str();
     let what = arg(1);
     let alpha: f64 = arg(2).parse().expect(usage);
@@ -31,11 +36,17 @@ fn main() {
     } else {
         arch
     };
+    // `curve`: one curve of CURVE_POINTS friction coefficients from MU to MU + 0.2
+    let mus: Vec<f64> = (0..CURVE_POINTS)
+        .map(|i| mu + 0.2 * i as f64 / (CURVE_POINTS - 1) as f64)
+        .collect();
     let t = std::time::Instant::now();
     for _ in 0..n {
         match what {
             "solve" => drop(survey(&arch, mu, &s).expect("valid input")),
             "modes" => drop(trace(&arch, &s)),
+            "limit" => drop(solve(&arch, mu, &s).expect("valid input")),
+            "curve" => drop(sample(&arch, &mus, &s, 1, &|_, _| {}).expect("valid input")),
             _ => panic!("{usage}"),
         }
     }

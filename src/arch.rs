@@ -8,6 +8,7 @@
 use crate::fill::Fill;
 use crate::input::check_finite;
 pub use crate::input::{check_non_negative, check_positive, fmt_value, InputError};
+use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -15,7 +16,7 @@ use std::f64::consts::PI;
 pub type Radians = f64;
 
 /// How the self-weight of a piece of arch is applied (formulation §3).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum WeightModel {
     /// Uniformly along the centreline (Heyman's assumption; the default).

@@ -22,10 +22,11 @@
 //! hinge at the crown and sliding joints just beside it, is rotational–sliding there.
 
 use crate::contact::{Contact, Location};
+use schemars::JsonSchema;
 use serde::Serialize;
 
 /// The collapse mode of a pattern.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum CollapseMode {
     /// Hinges only (Couplet–Heyman).

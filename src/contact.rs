@@ -1,10 +1,13 @@
 //! A contact: one activation function active at one joint. The vocabulary of patterns.
 
 use crate::arch::Radians;
+use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
 /// Where a joint of a pattern sits.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize, JsonSchema,
+)]
 #[serde(rename_all = "snake_case")]
 pub enum Location {
     /// At the right or left springing (shoulder joint).
@@ -26,7 +29,7 @@ impl Location {
 }
 
 /// One active activation function at one joint.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, JsonSchema)]
 pub struct Contact {
     /// Joint angle (radians from the horizontal).
     pub beta: Radians,
@@ -54,7 +57,9 @@ pub struct Peak {
 }
 
 /// The four activation functions of a joint (formulation §3), each ≤ 0 when admissible.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize, JsonSchema,
+)]
 #[serde(rename_all = "snake_case")]
 pub enum ContactKind {
     /// φ_E = M − ηN/2: hinge at the extrados (rate ϑ⁺).

@@ -45,7 +45,9 @@ pub enum LiveLoad {
 /// Which side of a section at the point load's own angle: the free body [β_R, β] of a
 /// section just before β_P does not contain the load, just after it does. Elsewhere the
 /// side makes no difference. In JSON and certificates: `before`, `after`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Serialize, Deserialize)]
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Serialize, Deserialize, schemars::JsonSchema,
+)]
 #[serde(rename_all = "snake_case")]
 pub enum Side {
     /// The section just before (smaller β) the loaded point.

@@ -37,16 +37,19 @@ from ._commands import (
 )
 from ._results import (
     Arch,
+    ArchInfo,
     AssessResult,
     Branch,
     CertifyResult,
     Checks,
     Contact,
     Corner,
+    CurvePoint,
     CurveResult,
     LimitState,
     Lines,
     LiveLoad,
+    LoadContact,
     LoadLimitState,
     LoadResult,
     Mechanism,
@@ -71,17 +74,20 @@ __all__ = [
     "geometry",
     "atlas",
     "Arch",
+    "ArchInfo",
     "AssessResult",
     "Branch",
     "CertifyResult",
     "Checks",
     "Contact",
     "Corner",
+    "CurvePoint",
     "CurveResult",
     "LP_SOLVER",
     "LimitState",
     "Lines",
     "LiveLoad",
+    "LoadContact",
     "LoadLimitState",
     "LoadResult",
     "Mechanism",
@@ -108,6 +114,14 @@ __all__ = [
     "solve",
     "verify",
 ]
+
+
+def _made(result: Any, **private: Any) -> Any:
+    """``result`` knowing what it was made from (its input arch, the call): the figures of
+    ``_extras`` need them."""
+    for k, v in private.items():
+        object.__setattr__(result, k, v)
+    return result
 
 
 def _arch(arch: Any) -> Arch:
@@ -142,7 +156,8 @@ def solve(arch: Arch, mu: Union[float, str]) -> SolveResult:
     sliding limit states), its collapse mode, pattern, reactions and mechanism, and every
     limit state with eta in [eta_s, 2) (``arch-enum solve``)."""
     a = _arch(arch)
-    return SolveResult._of(a, _native.solve(a._spec(), _friction(a, mu)))
+    d = _native.solve(a._spec(), _friction(a, mu))
+    return _made(SolveResult._of(d), _input=a, _lines=d.get("lines"))
 
 
 def curve(arch: Arch, mu: Any, *, threads: Optional[int] = None) -> CurveResult:
@@ -163,7 +178,7 @@ def curve(arch: Arch, mu: Any, *, threads: Optional[int] = None) -> CurveResult:
     if threads is not None:
         threads = _whole("threads", threads, 1, 1024, ", or None for every core")
     d = _native.curve(a._spec(), [float(m) for m in mus.ravel()], threads)
-    return CurveResult._of(a, d)
+    return _made(CurveResult._of(d), _input=a)
 
 
 def modes(arch: Arch) -> ModesResult:
@@ -177,7 +192,7 @@ def modes(arch: Arch) -> ModesResult:
             "invalid fill_ratio: with fill the limit curve is traced in eta as mu_min(eta), "
             "a document of its own: ae.run('modes', arch) returns it"
         )
-    return ModesResult._of(a, _native.modes(a._spec()))
+    return _made(ModesResult._of(_native.modes(a._spec())), _input=a)
 
 
 def atlas(
@@ -215,7 +230,8 @@ def assess(arch: Arch, eta: float, mu: float) -> AssessResult:
     with what geometric and friction factors of safety, and the safest state
     (``arch-enum assess``)."""
     a = _arch(arch)
-    return AssessResult._of(a, _native.assess(a._spec(), _scalar("eta", eta), _scalar("mu", mu)))
+    d = _native.assess(a._spec(), _scalar("eta", eta), _scalar("mu", mu))
+    return _made(AssessResult._of(d), _input=a)
 
 
 def load(
@@ -259,7 +275,7 @@ def load(
         joint = _whole("point_load_joint", point_load_joint, 0, 2**32)
     call = (a._spec(), _scalar("eta", eta), _scalar("mu", mu), kind, towards_right, beta,
             beta_deg, joint)
-    return LoadResult._of(a, _native.load(*call), call)
+    return _made(LoadResult._of(_native.load(*call)), _input=a, _call=call)
 
 
 def certify(arch: Arch, mu: float, gap: float = 1e-12) -> CertifyResult:
@@ -268,7 +284,7 @@ def certify(arch: Arch, mu: float, gap: float = 1e-12) -> CertifyResult:
     states (``arch-enum certify``). Check it with :func:`verify`."""
     a = _arch(arch)
     m = _scalar("mu", mu)
-    return CertifyResult._of(_native.certify(a._spec(), m, _scalar("gap", gap)), m)
+    return _made(CertifyResult._of(_native.certify(a._spec(), m, _scalar("gap", gap))), _input=a)
 
 
 def verify(certificate: Union[CertifyResult, dict, str, "os.PathLike[str]"]) -> VerifyResult:

@@ -542,7 +542,7 @@ fn load_svg(
     })
 }
 
-/// `certify --json` (without `file`): the certificate of η*(μ), or `not_certified`.
+/// `certify --json` (`file` null): the certificate of η*(μ), or `not_certified`.
 #[pyfunction]
 fn certify<'py>(py: Python<'py>, spec: ArchIn, mu: f64, gap: f64) -> PyResult<Bound<'py, PyAny>> {
     let arch = build_arch(&spec)?;
@@ -555,27 +555,12 @@ fn certify<'py>(py: Python<'py>, spec: ArchIn, mu: f64, gap: f64) -> PyResult<Bo
             range: "1e-15 <= gap <= 1e-4".into(),
         }));
     }
-    let d = py.detach(|| match certify_eta(&arch, mu, gap, &Settings::default()) {
-        Err(why) => serde_json::json!({
-            "version": JSON_VERSION,
-            "status": "not_certified",
-            "message": why.0,
-        }),
-        Ok(cert) => {
-            let delivered = cert.delivers_gap(gap);
-            let bracket = cert.bracket();
-            serde_json::json!({
-                "version": JSON_VERSION,
-                "status": if delivered { "ok" } else { "gap_not_reached" },
-                "claim": cert.claim,
-                "mu": cert.mu,
-                "eta_lo": bracket.map(|b| b.0),
-                "eta_hi": bracket.map(|b| b.1),
-                "gap_requested": gap,
-                "gap_relative": bracket.map(|(lo, hi)| (hi - lo) / hi),
-                "certificate": cert,
-            })
-        }
+    let d = py.detach(|| {
+        let doc = match certify_eta(&arch, mu, gap, &Settings::default()) {
+            Err(why) => json::CertifyJson::not_certified(why.0),
+            Ok(cert) => json::CertifyJson::made(&cert, gap, None, None),
+        };
+        serde_json::to_value(doc).expect("serialisable")
     });
     to_py(py, &d)
 }
@@ -588,34 +573,8 @@ fn verify<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyAny>> {
         PyValueError::new_err(format!("invalid certificate: not a certificate: {e}"))
     })?;
     let d = py.detach(|| {
-        let outcome = verify_cert(&cert);
-        let bracket = cert.bracket();
-        let mut d = serde_json::json!({
-            "version": JSON_VERSION,
-            "status": if outcome.is_ok() { "ok" } else { "rejected" },
-            "claim": cert.claim,
-            "mu": cert.mu,
-            "eta_lo": bracket.map(|b| b.0),
-            "eta_hi": bracket.map(|b| b.1),
-            "arch": {
-                "beta_right": cert.arch.beta_right,
-                "beta_left": cert.arch.beta_left,
-                "weight": cert.arch.weight,
-                "joints": if cert.arch.joint_angles.is_some() { "discrete" } else { "continuous" },
-            },
-            "checks": outcome.as_ref().map_or(Vec::new(), |r| r.checks.clone()),
-        });
-        if let Some(j) = &cert.arch.joint_angles {
-            d["arch"]["joint_angles"] = serde_json::json!(j);
-        }
-        match &outcome {
-            Ok(r) => {
-                d["statement"] = serde_json::json!(r.statement());
-                d["limit_states"] = serde_json::json!(r.limit_states);
-            }
-            Err(why) => d["reason"] = serde_json::json!(why.0),
-        }
-        d
+        let doc = json::VerifyJson::new(&cert, &verify_cert(&cert));
+        serde_json::to_value(doc).expect("serialisable")
     });
     to_py(py, &d)
 }

@@ -33,6 +33,24 @@ def agree(mine, cli, path="doc", skip=()):
         assert mine == cli, f"{path}: {mine!r} vs {cli!r}"
 
 
+def document(x):
+    """Data as the JSON document says it: +infinity is null, and a key whose value is null
+    is left out (the typed results hold None where a key is absent)."""
+    if isinstance(x, dict):
+        return {k: document(v) for k, v in x.items() if document(v) is not None}
+    if isinstance(x, list):
+        return [document(v) for v in x]
+    if isinstance(x, float) and x == math.inf:
+        return None
+    return x
+
+
+def typed_agrees(result, cli, skip=()):
+    """The typed result is the command's document, key for key (one schema): its
+    ``to_dict()`` agrees with the command line's JSON."""
+    agree(document(result.to_dict()), document(cli), skip=skip)
+
+
 # (Arch keyword arguments, the same as command-line flags)
 ARCHES = [
     (dict(alpha=0), ["--alpha", "0"]),
@@ -53,6 +71,7 @@ def test_solve(cli, arch_kw, flags, mu):
     raw = _native.solve(arch._spec(), float(mu))
     raw.pop("lines")
     agree(raw, doc)
+    typed_agrees(ae.solve(arch, float(mu)), doc)
     # and the dataclass carries the same answer
     r = ae.solve(arch, float(mu))
     assert r.status == doc["status"] and r.mode == doc.get("mode")
@@ -75,7 +94,7 @@ def test_solve(cli, arch_kw, flags, mu):
         np.testing.assert_allclose(rays.sum(axis=1), 1.0, rtol=1e-9)
         if r.mechanism.dof == 1:
             np.testing.assert_allclose(rays[0], r.mechanism.rate, rtol=1e-9, atol=1e-12)
-    assert [s.eta for s in r.limit_states] == pytest.approx(
+    assert [s.eta for s in r.limit_states or ()] == pytest.approx(
         [s["eta"] for s in doc.get("limit_states") or []], rel=1e-12)
     assert (code == 0) == (r.status == "ok")
 
@@ -98,7 +117,7 @@ def test_solve_with_fill(cli, arch_kw, flags):
     assert doc.pop("fill")["weight_ratio"] == arch_kw["fill_ratio"]
     agree(raw, doc)
     r = ae.solve(arch, 0.6)
-    assert r.thickness_scan["interval"] is True
+    assert r.thickness_scan.interval is True
     assert r.eta == pytest.approx(doc["eta"], rel=1e-12)
     bare = ae.solve(ae.Arch(**{k: v for k, v in arch_kw.items() if not k.startswith("fill")}), 0.6)
     assert bare.thickness_scan is None and bare.eta != r.eta
@@ -113,7 +132,8 @@ def test_curve(cli, arch_kw, flags):
     arch = ae.Arch(**arch_kw)
     agree(_native.curve(arch._spec(), mus, None), doc)
     c = ae.curve(arch, mus)
-    assert list(c.status) == [p["status"] for p in doc["points"]]
+    typed_agrees(c, doc)
+    assert list(c.column("status")) == [p["status"] for p in doc["points"]]
     np.testing.assert_allclose(
         c.eta, [math.nan if p["eta"] is None else p["eta"] for p in doc["points"]], rtol=1e-12)
 
@@ -124,6 +144,7 @@ def test_modes(cli, arch_kw, flags):
     arch = ae.Arch(**arch_kw)
     agree(_native.modes(arch._spec()), doc)
     m = ae.modes(arch)
+    typed_agrees(m, doc)
     assert m.status == doc["status"] and len(m.corners) == len(doc["corners"])
     assert [b.mode for b in m.branches] == [b["mode"] for b in doc["branches"]]
 
@@ -134,6 +155,7 @@ def test_assess(cli, eta, mu):
     arch = ae.Arch(alpha=0)
     agree(_native.assess(arch._spec(), float(eta), float(mu)), doc)
     a = ae.assess(arch, float(eta), float(mu))
+    typed_agrees(a, doc)
     assert a.stands == doc["stands"] and (a.eta_min is None) == (doc["eta_min"] is None)
     if a.eta_min is not None:
         assert a.eta_min == pytest.approx(doc["eta_min"], rel=1e-12)
@@ -166,6 +188,7 @@ def test_load(cli, kw, flags):
     arch = ae.Arch(alpha=0, blocks=20)
     r = ae.load(arch, 0.3, 0.8, **kw)
     agree(_native.load(*r._call), doc, skip={"doc.search.events"})
+    typed_agrees(r, doc, skip={"doc.search.events"})
     assert r.status == doc["status"]
     assert r.lambda_ == pytest.approx(doc["lambda"], rel=1e-12)
     assert r.lambda_static == pytest.approx(doc["lambda_static"], rel=1e-12)
@@ -189,6 +212,9 @@ def test_certify_and_verify_cross(cli, tmp_path):
     code, cdoc = cli("certify", "--alpha", "0", "--mu", "0.35", "--out", str(cli_path), "--json")
     assert code == 0
     v = ae.verify(cli_path)
+    typed_agrees(v, cli("verify", str(cli_path), "--json")[1])
+    # certify's document, but for where the certificate was written (not from Python)
+    typed_agrees(c, {**cdoc, "file": None}, skip={"doc.certificate"})
     assert v.status == "ok" and v.eta_lo == cdoc["eta_lo"] and v.eta_hi == cdoc["eta_hi"]
     assert c.eta_lo == pytest.approx(cdoc["eta_lo"], rel=1e-12)
     assert c.eta_hi == pytest.approx(cdoc["eta_hi"], rel=1e-12)

@@ -26,7 +26,7 @@ def test_every_result_has_a_frame():
     ld = ae.load(ae.Arch(alpha=0, blocks=20), 0.3, 0.8, horizontal="right")
     fl = ld.to_pandas()
     assert len(fl) == len(ld.limit_states) >= 1
-    assert fl["lambda_"].iloc[0] == ld.limit_states[0].lambda_
+    assert fl["lambda"].iloc[0] == ld.limit_states[0].lambda_
     c = ae.certify(SEMI, 0.35)
     assert len(c.to_pandas()) == 1
     assert len(ae.verify(c).to_pandas()) == 1

@@ -9,11 +9,12 @@
 //! β_R = π/2 − θ, β_L = π/2 + θ, α = θ − π/2. With a ring t, r = R_i + t/2 and η = t/r.
 
 use crate::arch::{check_positive as positive, InputError};
+use schemars::JsonSchema;
 use serde::Serialize;
 use std::f64::consts::FRAC_PI_2;
 
 /// The intrados of a symmetric circular arch, from its clear span and rise (metres).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, JsonSchema)]
 pub struct Intrados {
     /// Clear span L between the intrados springings (m).
     pub span: f64,
@@ -26,7 +27,7 @@ pub struct Intrados {
 }
 
 /// A ring of thickness t on an intrados: its mean radius and thickness ratio.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, JsonSchema)]
 pub struct Ring {
     /// Ring thickness t (m).
     pub thickness: f64,
@@ -93,7 +94,7 @@ impl Intrados {
 }
 
 /// An arch as an engineer gave it: the intrados and, when given, the ring.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, JsonSchema)]
 pub struct Geometry {
     /// The intrados (span, rise).
     pub intrados: Intrados,

@@ -3,6 +3,7 @@
 pub use crate::arch::WeightModel;
 pub use crate::contact::{ContactKind, Location};
 pub use crate::load::Side;
+use schemars::JsonSchema;
 use serde::{de::Error as _, Deserialize, Deserializer, Serialize};
 
 /// The `format` field of every certificate.
@@ -11,7 +12,7 @@ pub const FORMAT: &str = "arch-enum-certificate";
 pub const VERSION: u32 = 1;
 
 /// What the certificate claims.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum Claim {
     /// η*(μ) ∈ [η_lo, η_hi].

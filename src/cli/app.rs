@@ -113,6 +113,9 @@ pub(super) enum Command {
         after_help = "Example:\n  arch-enum report --out bridge.html --span 10 --rise 5 --ring 0.6 --width 1 --unit-weight 20 --mu 0.6 --fill-weight 18 --fill-depth 0.3 --axles 100\n  arch-enum report --out arch.html --alpha 0 --eta 0.2 --mu 0.6"
     )]
     Report(Box<ReportArgs>),
+    /// The JSON Schema (draft 2020-12) of every --json document, derived from the types that print them; `x-documents` names each command's document type.
+    #[command(after_help = "Example:\n  arch-enum schema > arch-enum.schema.json")]
+    Schema,
 }
 
 /// How `serve` runs: the server's own entry point, passed in so that the server (which runs
@@ -155,7 +158,7 @@ where
         Command::Assess(a) => a.json,
         Command::Load(a) => a.json,
         Command::LoadCurve(a) => a.json,
-        Command::Plot { .. } | Command::Serve(_) | Command::Report(_) => false,
+        Command::Plot { .. } | Command::Serve(_) | Command::Report(_) | Command::Schema => false,
     };
     let mut io = Io { out, err, json };
     let exit = match cli.command {
@@ -170,6 +173,10 @@ where
         Command::Load(a) => load::run(*a, &settings, &mut io),
         Command::LoadCurve(a) => load::run_curve(*a, &settings, &mut io),
         Command::Serve(a) => serve(a, &mut io),
+        Command::Schema => {
+            io.out(&to_json(&json::schema()));
+            Exit::Answered
+        }
         Command::Report(a) => {
             let run = |args: Vec<OsString>| {
                 let (mut out, mut err) = (Vec::new(), Vec::new());

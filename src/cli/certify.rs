@@ -6,10 +6,9 @@ use super::io::{to_json, Exit, Io};
 use super::load::{prepare_parts, BridgeFlags, LiveLoadArgs};
 use crate::arch::{check_mu, fmt_value, InputError};
 use crate::certificate::{
-    certify, certify_load, verify, ArchSpec, Certificate, Claim, LoadSearchMethod, NotCertified,
-    Rejection,
+    certify, certify_load, verify, Certificate, Claim, LoadSearchMethod, NotCertified, Rejection,
 };
-use crate::render::json::JSON_VERSION;
+use crate::render::json;
 use crate::settings::Settings;
 use clap::Args;
 use std::path::PathBuf;
@@ -55,23 +54,6 @@ pub(crate) struct VerifyArgs {
 /// "inf" for `None`, else the number.
 fn mu_text(mu: Option<f64>) -> String {
     mu.map_or("inf".into(), |m| m.to_string())
-}
-
-/// The arch of a certificate as in every JSON document (`render::json::ArchJson` keys).
-fn arch_json(a: &ArchSpec) -> serde_json::Value {
-    let mut v = serde_json::json!({
-        "beta_right": a.beta_right,
-        "beta_left": a.beta_left,
-        "weight": a.weight,
-        "joints": if a.joint_angles.is_some() { "discrete" } else { "continuous" },
-    });
-    if let Some(j) = &a.joint_angles {
-        v["joint_angles"] = serde_json::json!(j);
-    }
-    if let Some(f) = &a.fill {
-        v["fill"] = serde_json::json!(f);
-    }
-    v
 }
 
 /// What `certify` is asked: the arch (with its fill under a load), the load with its η,
@@ -142,11 +124,7 @@ pub(crate) fn run_certify(a: CertifyArgs, settings: &Settings, io: &mut Io) -> E
         Ok(cert) => cert,
         Err(NotCertified(reason)) => {
             if a.json {
-                io.out(&to_json(&serde_json::json!({
-                    "version": JSON_VERSION,
-                    "status": "not_certified",
-                    "message": reason,
-                })));
+                io.out(&to_json(&json::CertifyJson::not_certified(reason.clone())));
             }
             io.err(&format!("not certified: {reason}\n"));
             return Exit::NoAnswer;
@@ -168,28 +146,8 @@ pub(crate) fn run_certify(a: CertifyArgs, settings: &Settings, io: &mut Io) -> E
         ));
     }
     if a.json {
-        let mut doc = serde_json::json!({
-            "version": JSON_VERSION,
-            "status": if delivered { "ok" } else { "gap_not_reached" },
-            "file": a.out.as_ref().map(|p| p.display().to_string()),
-            "claim": cert.claim,
-            "mu": cert.mu,
-            "eta_lo": cert.bracket().map(|b| b.0),
-            "eta_hi": cert.bracket().map(|b| b.1),
-            "gap_requested": a.gap,
-            "gap_relative": gap_relative,
-        });
-        if let Some(spec) = &cert.load {
-            doc["eta"] = serde_json::json!(spec.eta);
-            doc["load"] = serde_json::json!(spec);
-            doc["lambda_lo"] = serde_json::json!(cert.lambda_bracket().map(|b| b.0));
-            doc["lambda_hi"] = serde_json::json!(cert.lambda_bracket().map(|b| b.1));
-        }
-        if let Some(at) = at_m {
-            doc["at_m"] = serde_json::json!(at);
-        }
-        doc["certificate"] = serde_json::json!(cert);
-        io.out(&to_json(&doc));
+        let file = a.out.as_ref().map(|p| p.display().to_string());
+        io.out(&to_json(&json::CertifyJson::made(&cert, a.gap, file, at_m)));
     } else if let Some(path) = &a.out {
         let vehicle = at_m.map_or(String::new(), |at| {
             let which = if critical {
@@ -320,39 +278,7 @@ pub(crate) fn run_verify(a: VerifyArgs, io: &mut Io) -> Exit {
     };
     let outcome = verify(&cert);
     if a.json {
-        let (status, checks, reason) = match &outcome {
-            Ok(r) => ("ok", r.checks.clone(), None),
-            Err(Rejection(why)) => ("rejected", Vec::new(), Some(why.clone())),
-        };
-        let bracket = cert.bracket();
-        let mut doc = serde_json::json!({
-            "version": JSON_VERSION,
-            "status": status,
-            "claim": cert.claim,
-            "mu": cert.mu,
-            "eta_lo": bracket.map(|b| b.0),
-            "eta_hi": bracket.map(|b| b.1),
-            "arch": arch_json(&cert.arch),
-            "checks": checks,
-        });
-        if let Some(spec) = &cert.load {
-            doc["eta"] = serde_json::json!(spec.eta);
-            doc["load"] = serde_json::json!(spec);
-            doc["lambda_lo"] = serde_json::json!(cert
-                .multiplier
-                .as_ref()
-                .and_then(|m| m.admissible.as_ref())
-                .map(|s| s.lambda));
-            doc["lambda_hi"] = serde_json::json!(cert.lambda_bracket().map(|b| b.1));
-        }
-        if let Ok(r) = &outcome {
-            doc["statement"] = serde_json::json!(r.statement());
-            doc["limit_states"] = serde_json::json!(r.limit_states);
-        }
-        if let Some(reason) = reason {
-            doc["reason"] = serde_json::json!(reason);
-        }
-        io.out(&to_json(&doc));
+        io.out(&to_json(&json::VerifyJson::new(&cert, &outcome)));
     } else {
         match &outcome {
             Ok(r) => io.out(&format!(

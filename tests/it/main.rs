@@ -26,6 +26,7 @@ mod model;
 mod modes;
 mod paper;
 mod plots;
+mod python_types;
 mod readme;
 mod reference;
 mod report;

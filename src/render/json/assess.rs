@@ -4,9 +4,11 @@ use super::common::{ArchJson, JSON_VERSION};
 use crate::arch::Arch;
 use crate::contact::Contact;
 use crate::limit::Outcome;
+use schemars::JsonSchema;
 use serde::Serialize;
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "SafestState")]
 struct SafestJson {
     h: f64,
     v: f64,
@@ -15,7 +17,8 @@ struct SafestJson {
 }
 
 /// The `assess --json` document (`null` stands for +∞ where noted).
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "AssessResult")]
 pub struct AssessJson {
     version: u32,
     status: &'static str,

@@ -2,10 +2,11 @@
 
 use super::common::JSON_VERSION;
 use crate::atlas::{Atlas, Column, Kind};
+use schemars::JsonSchema;
 use serde::Serialize;
 use std::collections::BTreeMap;
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct RectangleJson {
     alpha_min: f64,
     alpha_max: f64,
@@ -14,13 +15,13 @@ struct RectangleJson {
     samples: usize,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct RegionJson {
     kind: &'static str,
     polygon: Vec<[f64; 2]>,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct PointJson {
     alpha: f64,
     mu: f64,
@@ -48,13 +49,13 @@ struct PointJson {
     list_proved_complete: Option<bool>,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct BoundaryJson {
     between: [&'static str; 2],
     points: Vec<PointJson>,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct RunJson {
     kind: &'static str,
     mu_from: f64,
@@ -65,7 +66,7 @@ struct RunJson {
     certified: Option<RunCertificate>,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct RunCertificate {
     mu: f64,
     holds: bool,
@@ -75,7 +76,7 @@ struct RunCertificate {
     why_not: Option<String>,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct SampleJson {
     mu: f64,
     kind: &'static str,
@@ -86,7 +87,7 @@ struct SampleJson {
     reason: Option<String>,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct ColumnJson {
     alpha: f64,
     mu_ms: Option<f64>,
@@ -95,7 +96,7 @@ struct ColumnJson {
     samples: Vec<SampleJson>,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct TipJson {
     between: [&'static str; 2],
     /// The last opening of the first kind and the first of the second, just above μ_ms.
@@ -107,7 +108,7 @@ struct TipJson {
 }
 
 /// The `atlas --json` document.
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 pub struct AtlasJson {
     version: u32,
     status: &'static str,

@@ -5,6 +5,7 @@
 
 use super::load::{pattern_json, PatternContact};
 use crate::bridge::critical::{Collapse, Critical};
+use schemars::JsonSchema;
 use serde::Serialize;
 
 /// What the results leave out, printed wherever a bridge answer is shown.
@@ -12,7 +13,8 @@ pub const SCOPE: &str = "rigid blocks without crushing; one ring, one span; radi
 the fill a vertical dead load on the extrados (no lateral pressure, no strength of its own)";
 
 /// The fill as given.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, JsonSchema)]
+#[schemars(rename = "Fill")]
 pub struct FillJson {
     /// Unit weight of the fill (kN/m³), when given in kN.
     pub weight_kn_m3: Option<f64>,
@@ -29,7 +31,7 @@ pub struct FillJson {
 }
 
 /// The vehicle as placed.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, JsonSchema)]
 pub struct VehicleJson {
     /// Axle loads (kN).
     pub axles_kn: Vec<f64>,
@@ -51,13 +53,13 @@ pub struct VehicleJson {
     pub abutments_kn: f64,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct Second {
     at_m: f64,
     lambda: f64,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct CriticalJson {
     at_m: f64,
     lambda: f64,
@@ -73,7 +75,7 @@ struct CriticalJson {
     static_maxima: usize,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct InfluenceJson {
     at_m: f64,
     /// λ_c; null where the vehicle never breaks the arch or nothing was decided (`status`).
@@ -82,7 +84,7 @@ struct InfluenceJson {
 }
 
 /// The bridge keys.
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 pub struct BridgeJson {
     scope: &'static str,
     fill: Option<FillJson>,

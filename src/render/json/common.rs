@@ -3,6 +3,7 @@
 
 use crate::arch::{Arch, JointLayout};
 use crate::limit::Outcome;
+use schemars::JsonSchema;
 use serde::Serialize;
 
 /// The `version` of every JSON document the command line prints: bumped on a breaking
@@ -10,7 +11,8 @@ use serde::Serialize;
 pub const JSON_VERSION: u32 = 2;
 
 /// The arch as described in every JSON document.
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "ArchInfo")]
 pub struct ArchJson {
     beta_right: f64,
     beta_left: f64,
@@ -40,7 +42,8 @@ impl ArchJson {
 }
 
 /// The document printed for bad input under `--json`.
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "ErrorDocument")]
 pub struct ErrorJson {
     version: u32,
     /// Always `"error"`.

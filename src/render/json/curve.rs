@@ -6,9 +6,11 @@ use crate::arch::Arch;
 use crate::contact::Contact;
 use crate::limit::Outcome;
 use crate::limit_curve::CurvePoint;
+use schemars::JsonSchema;
 use serde::Serialize;
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "CurvePoint")]
 struct CurveRow {
     mu: f64,
     friction_angle_deg: f64,
@@ -21,7 +23,8 @@ struct CurveRow {
 }
 
 /// The `curve --json` document.
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "CurveResult")]
 pub struct CurveJson {
     version: u32,
     status: &'static str,

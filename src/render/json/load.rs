@@ -9,9 +9,11 @@ use crate::load::LiveLoad;
 use crate::multiplier::LoadOutcome;
 use crate::render::live_load::{at_joint, force_unit_kn, merged, LoadQuestion};
 use crate::undecided::Undecided;
+use schemars::JsonSchema;
 use serde::Serialize;
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "LiveLoad")]
 pub(super) struct LoadJson {
     kind: &'static str,
     /// Angle of the loaded extrados point (radians); null for the horizontal load.
@@ -24,7 +26,8 @@ pub(super) struct LoadJson {
     at_joint: Option<bool>,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "LoadContact")]
 pub struct PatternContact {
     #[serde(flatten)]
     contact: Contact,
@@ -33,7 +36,8 @@ pub struct PatternContact {
     side: Option<&'static str>,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "LoadLimitState")]
 struct StateJson {
     lambda: f64,
     mode: &'static str,
@@ -45,7 +49,8 @@ struct StateJson {
     continuum_to: Option<f64>,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "Units")]
 struct UnitsJson {
     /// γ t d r in kN (the unit of a point load, and of the horizontal force per unit λ).
     force_unit_kn: f64,
@@ -60,7 +65,8 @@ struct UnitsJson {
 }
 
 /// The `load --json` document.
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "LoadResult")]
 pub struct LoadDoc {
     version: u32,
     status: &'static str,
@@ -82,7 +88,8 @@ pub struct LoadDoc {
     message: Option<String>,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "LoadSearch")]
 struct SearchJson {
     method: &'static str,
     events: usize,

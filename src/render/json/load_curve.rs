@@ -6,10 +6,11 @@ use crate::load::LiveLoad;
 use crate::multiplier::{LoadCurve, LoadOutcome};
 use crate::render::live_load::{LoadQuestion, CONTINUOUS_TOL};
 use crate::undecided::Undecided;
+use schemars::JsonSchema;
 use serde::Serialize;
 
 /// One sample of the λ–μ curve at fixed η.
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 pub struct LoadCurveRow {
     pub(crate) mu: Option<f64>,
     pub(crate) status: &'static str,
@@ -24,7 +25,7 @@ pub struct LoadCurveRow {
 }
 
 /// The `load-curve --json` document.
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 pub struct LoadCurveDoc {
     version: u32,
     status: &'static str,
@@ -68,7 +69,7 @@ pub(crate) fn curve_row(mu: f64, outcome: &Result<LoadOutcome, Undecided>) -> Lo
 
 /// One side of a corner of the λ–μ curve: the sample's row, and the least limit state's
 /// pattern.
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct CornerSide {
     #[serde(flatten)]
     row: LoadCurveRow,
@@ -76,7 +77,7 @@ struct CornerSide {
 }
 
 /// A corner of the λ–μ curve in `load-curve --json`.
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct CornerJson {
     /// The corner's friction coefficient: exact (five activation functions vanish at one
     /// state, Newton in (h, v, w, λ, μ)) when `exact`, else null (see the bracket).

@@ -2,9 +2,10 @@
 
 use super::common::JSON_VERSION;
 use crate::atlas::loads::{CellAnswer, LoadCell, LoadMap};
+use schemars::JsonSchema;
 use serde::Serialize;
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct LargestJson {
     alpha: f64,
     eta: Option<f64>,
@@ -12,7 +13,7 @@ struct LargestJson {
     reduction: Option<f64>,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct SummaryJson {
     mu: f64,
     cells: usize,
@@ -24,7 +25,7 @@ struct SummaryJson {
     semicircle_largest: Option<f64>,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct CellJson {
     alpha: f64,
     factor: f64,
@@ -41,7 +42,7 @@ struct CellJson {
 }
 
 /// The load map as JSON.
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 pub struct LoadMapJson {
     version: u32,
     status: &'static str,

@@ -4,9 +4,11 @@ use super::common::{ArchJson, JSON_VERSION};
 use crate::arch::Arch;
 use crate::contact::Contact;
 use crate::limit_curve::CurveStatus;
+use schemars::JsonSchema;
 use serde::Serialize;
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "Branch")]
 struct BranchJson {
     mode: &'static str,
     mode_standard: bool,
@@ -17,7 +19,8 @@ struct BranchJson {
     pattern: Vec<Contact>,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "Corner")]
 struct CornerJson {
     mu: f64,
     friction_angle_deg: f64,
@@ -36,7 +39,8 @@ struct CornerJson {
     residual: f64,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "LimitBranch")]
 struct LimitBranchJson {
     #[serde(flatten)]
     branch: BranchJson,
@@ -55,7 +59,8 @@ fn branch(b: &crate::limit_curve::Branch) -> BranchJson {
     }
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "ThicknessLimit")]
 struct ThicknessLimitJson {
     mu: f64,
     eta: f64,
@@ -63,14 +68,16 @@ struct ThicknessLimitJson {
     exact: bool,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "Unresolved")]
 struct UnresolvedJson {
     mu: f64,
     message: String,
 }
 
 /// The `modes --json` document (`null` stands for +∞).
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "ModesResult")]
 pub struct ModesJson {
     version: u32,
     status: &'static str,

@@ -7,9 +7,10 @@ use crate::arch::Arch;
 use crate::bridge::Intrados;
 use crate::contact::Contact;
 use crate::limit_curve::filled::{FillCurve, FrictionPoint};
+use schemars::JsonSchema;
 use serde::Serialize;
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct PointJson {
     eta: f64,
     mu: f64,
@@ -34,14 +35,14 @@ fn point(p: &FrictionPoint, intrados: Option<&Intrados>) -> PointJson {
     }
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct BranchJson {
     mode: &'static str,
     /// The thinnest and the thickest point of the branch.
     ends: [PointJson; 2],
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct ChangeJson {
     /// The bracket's thinner and thicker end.
     ends: [PointJson; 2],
@@ -50,14 +51,14 @@ struct ChangeJson {
     tight: bool,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 struct UnresolvedJson {
     eta: f64,
     message: String,
 }
 
 /// The `modes --json` document with fill.
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
 pub struct FillModesJson {
     version: u32,
     status: &'static str,

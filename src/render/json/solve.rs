@@ -5,9 +5,11 @@ use super::state::{mechanism_with_rays, reactions, MechanismJson, Reactions};
 use crate::contact::Contact;
 use crate::limit::{Candidate, LeastLimitState, Outcome};
 use crate::limit_states::{LimitStates, Rays, Survey};
+use schemars::JsonSchema;
 use serde::Serialize;
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "Checks")]
 struct Checks {
     eta_static: f64,
     newton_residual: f64,
@@ -15,7 +17,8 @@ struct Checks {
     eta_bracket: [f64; 2],
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "Candidate")]
 struct CandidateJson {
     pattern: Vec<Contact>,
     tried: bool,
@@ -24,7 +27,8 @@ struct CandidateJson {
 }
 
 /// The `solve --json` document.
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "SolveResult")]
 pub struct SolveJson {
     version: u32,
     status: &'static str,
@@ -82,7 +86,8 @@ pub struct SolveJson {
 
 /// The scan of the thickness range of an arch with fill: `interval` when every scanned η
 /// above the lowest admissible one is admissible too, else the inadmissible ones (`gaps`).
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "ThicknessScan")]
 struct ScanJson {
     nodes: usize,
     eta_from: f64,
@@ -106,14 +111,16 @@ fn scan_json(s: &crate::limit::filled::ThicknessScan) -> ScanJson {
 
 /// The vertical branch at μ = μ_ms: from `eta_min` up, every admissible state is a limit
 /// state with the purely sliding mechanism on `pattern`.
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "VerticalBranch")]
 struct VerticalJson {
     eta_min: f64,
     mode: &'static str,
     pattern: Vec<Contact>,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "LimitState")]
 struct LimitStateJson {
     eta: f64,
     mode: &'static str,
@@ -122,7 +129,8 @@ struct LimitStateJson {
     mechanism: MechanismJson,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "Search")]
 struct SearchJson {
     complete: bool,
     method: Option<String>,

@@ -1,22 +1,26 @@
 //! The parts of a limit state in every document: its reactions and its mechanism.
 
+use schemars::JsonSchema;
 use serde::Serialize;
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "Reactions")]
 pub(crate) struct Reactions {
     h: f64,
     v: f64,
     w: f64,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "Rate")]
 struct Rate {
     beta: f64,
     kind: &'static str,
     rate: f64,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug, Serialize, JsonSchema)]
+#[schemars(rename = "Mechanism")]
 pub(crate) struct MechanismJson {
     rates: Vec<Rate>,
     dof: usize,
