@@ -13,6 +13,10 @@ from typing import Any, Dict, Optional
 import numpy as np
 
 
+#: What ``dict.get`` gives for a key a document leaves out (where ``null`` means +infinity).
+ABSENT = object()
+
+
 def number(v: Optional[float]) -> float:
     """A JSON number where ``null`` stands for +infinity."""
     return math.inf if v is None else float(v)

@@ -18,15 +18,16 @@ from . import _extras as _x
 
 @dataclass(frozen=True, eq=False)
 class ArchInfo(_x.ArchInfoExtras, _c.Result):
-    """The arch as described in every JSON document.
+    """The arch a document answers for.
 
     Attributes:
-        beta_right:
-        beta_left:
-        weight:
-        joints:
-        symmetric:
-        joint_angles:
+        beta_right: The right springing β_R (radians).
+        beta_left: The left springing β_L (radians).
+        weight: `centreline` (Heyman's weight) or `centroid` (the true centroid).
+        joints: `continuous` (a joint at every section) or `discrete` (voussoirs).
+        symmetric: Whether the arch (springings and joints) is mirror-symmetric.
+        joint_angles: The joint angles of a discrete arch, springings included (absent
+            when continuous).
     """
 
     beta_right: float
@@ -50,12 +51,15 @@ class ArchInfo(_x.ArchInfoExtras, _c.Result):
 
 @dataclass(frozen=True, eq=False)
 class AssessResult(_x.AssessExtras, _c.Result):
-    """The `assess --json` document (`null` stands for +∞ where noted).
+    """A given thickness η at a given friction μ (`assess`): whether it stands, η*(μ)
+    (`eta_min`), the geometric factor η / η*, the least friction μ_min(η) at which it stands
+    and the friction factor μ / μ_min, the collapse mode of η*(μ) and the safest state.
+    Factors are `null` when they do not exist or are infinite.
 
     Attributes:
-        version:
-        status:
-        arch:
+        version: The document format's version (2).
+        status: `ok`, or why η*(μ) is missing (`no_equilibrium`, `unresolved`, ...).
+        arch: The arch.
         eta: The thickness ratio assessed.
         stands: Whether the arch stands at (η, μ).
         mu_min_pattern: The active pattern of the state at μ_min.
@@ -106,7 +110,7 @@ class AssessResult(_x.AssessExtras, _c.Result):
             geometric_factor=None if (v := d.get("geometric_factor")) is None else float(v),
             message=d.get("message"),
             mode=d.get("mode"),
-            mu=None if (v := d.get("mu")) is None else float(v),
+            mu=None if (v := d.get("mu", _c.ABSENT)) is _c.ABSENT else _c.number(v),
             mu_min=None if (v := d.get("mu_min")) is None else float(v),
             mu_min_exact=None if (v := d.get("mu_min_exact")) is None else bool(v),
             safest_state=None if (v := d.get("safest_state")) is None else SafestState._of(v),
@@ -115,16 +119,18 @@ class AssessResult(_x.AssessExtras, _c.Result):
 
 @dataclass(frozen=True, eq=False)
 class Branch(_c.Result):
-    """The `Branch` of a document.
+    """A branch of the η–μ limit curve: one collapse mode for μ in [mu_min, mu_max] (`null`:
+    unbounded), η between eta_min and eta_max.
 
     Attributes:
-        mode:
-        mode_standard:
-        mu_min:
-        mu_max:
-        eta_min:
-        eta_max:
-        pattern:
+        mode: The collapse mode.
+        mode_standard: Whether the mode's name is one of the contract's list (else a
+            descriptive one).
+        mu_min: Where the branch starts.
+        mu_max: Where it ends (`null`: ∞).
+        eta_min: Its least η.
+        eta_max: Its largest η.
+        pattern: The active contacts along it.
     """
 
     mode: str
@@ -150,13 +156,13 @@ class Branch(_c.Result):
 
 @dataclass(frozen=True, eq=False)
 class Candidate(_c.Result):
-    """The `Candidate` of a document.
+    """A pattern the enumeration tried (`--explain`).
 
     Attributes:
-        pattern:
-        tried:
-        verdict:
-        eta:
+        pattern: Its active contacts.
+        tried: Whether its equations were solved.
+        verdict: What became of it.
+        eta: Its thickness, when solved.
     """
 
     pattern: Tuple[Contact, ...]
@@ -179,8 +185,8 @@ class CertifiedArch(_c.Result):
     """The arch of a certificate as `verify` describes it.
 
     Attributes:
-        beta_left:
-        beta_right:
+        beta_left: The left springing β_L (radians).
+        beta_right: The right springing β_R (radians).
         joints: `continuous` or `discrete`.
         weight: `centreline` or `centroid`.
         fill: The fill (absent without fill).
@@ -213,8 +219,8 @@ class CertifyResult(_x.CertifyExtras, _c.Result):
     (`message` says why; no certificate).
 
     Attributes:
-        status:
-        version:
+        status: `ok`, `gap_not_reached` or `not_certified`.
+        version: The document format's version (2).
         at_m: Where the vehicle stands, metres from the left springing (a vehicle's
             certificate).
         certificate: The certificate document, as `certify --out` writes it (what
@@ -249,7 +255,7 @@ class CertifyResult(_x.CertifyExtras, _c.Result):
     lambda_lo: Optional[float] = None
     load: Optional[Dict[str, Any]] = None
     message: Optional[str] = None
-    mu: float = None
+    mu: Optional[float] = None
 
     @classmethod
     def _of(cls, d: Dict[str, Any]) -> "CertifyResult":
@@ -269,19 +275,21 @@ class CertifyResult(_x.CertifyExtras, _c.Result):
             lambda_lo=None if (v := d.get("lambda_lo")) is None else float(v),
             load=None if (v := d.get("load")) is None else dict(v),
             message=d.get("message"),
-            mu=_c.number(d.get("mu")),
+            mu=None if (v := d.get("mu", _c.ABSENT)) is _c.ABSENT else _c.number(v),
         )
 
 
 @dataclass(frozen=True, eq=False)
 class Checks(_c.Result):
-    """The `Checks` of a document.
+    """The checks of the limit state at η_s: the static η of the LP, Newton's residual, the
+    largest activation over the arch, the LP's bracket of η_s.
 
     Attributes:
-        eta_static:
-        newton_residual:
-        max_phi:
-        eta_bracket:
+        eta_static: η_s of the static LPs (before Newton).
+        newton_residual: The residual of the pattern's equations after Newton.
+        max_phi: The largest activation φ over the arch (≤ 0 up to rounding:
+            admissible).
+        eta_bracket: The LPs' bracket of η_s.
     """
 
     eta_static: float
@@ -324,34 +332,35 @@ class Contact(_c.Result):
 
 @dataclass(frozen=True, eq=False)
 class Corner(_c.Result):
-    """The `Corner` of a document.
+    """A corner (`kink`) or smooth transition of η_s(μ), located exactly (`mu` `null`: an
+    asymptote at μ = ∞).
 
     Attributes:
-        mu:
-        friction_angle_deg:
-        eta:
+        mu: Where it is.
+        friction_angle_deg: atan μ in degrees.
+        eta: η_s there.
         kink: True for a corner (the slopes differ), false for a smooth transition.
         slope_left: dη_s/dμ on the side of smaller μ (`null`: the vertical
             purely-sliding branch at μ_ms, or undefined at μ = ∞).
         slope_right: dη_s/dμ on the side of larger μ (`null` at μ = ∞).
-        pattern:
-        between:
-        mode:
-        exact:
-        residual:
+        pattern: The active contacts there (both branches' together).
+        between: The modes on the side of smaller and of larger μ.
+        mode: The mode of the state at the corner.
+        exact: Whether Newton located it to rounding (else a bracket's midpoint).
+        residual: Newton's residual there (`null`: not located by Newton).
     """
 
     mu: float
     friction_angle_deg: float
     eta: float
     kink: bool
-    slope_left: float
-    slope_right: float
+    slope_left: Optional[float]
+    slope_right: Optional[float]
     pattern: Tuple[Contact, ...]
     between: Tuple[str, ...]
     mode: str
     exact: bool
-    residual: float
+    residual: Optional[float]
 
     @classmethod
     def _of(cls, d: Dict[str, Any]) -> "Corner":
@@ -360,28 +369,28 @@ class Corner(_c.Result):
             friction_angle_deg=_c.number(d["friction_angle_deg"]),
             eta=_c.number(d["eta"]),
             kink=bool(d["kink"]),
-            slope_left=_c.number(d["slope_left"]),
-            slope_right=_c.number(d["slope_right"]),
+            slope_left=None if (v := d["slope_left"]) is None else float(v),
+            slope_right=None if (v := d["slope_right"]) is None else float(v),
             pattern=tuple(Contact._of(y) for y in d["pattern"]),
             between=tuple(d["between"]),
             mode=d["mode"],
             exact=bool(d["exact"]),
-            residual=_c.number(d["residual"]),
+            residual=None if (v := d["residual"]) is None else float(v),
         )
 
 
 @dataclass(frozen=True, eq=False)
 class CurvePoint(_c.Result):
-    """The `CurvePoint` of a document.
+    """η*(μ) at one friction coefficient.
 
     Attributes:
-        mu:
-        friction_angle_deg:
-        status:
-        eta:
-        message:
-        mode:
-        pattern:
+        mu: The friction coefficient (`null`: ∞).
+        friction_angle_deg: atan μ in degrees.
+        status: `ok`, `no_equilibrium`, `unresolved` or `no_collapse`.
+        eta: η*(μ) (absent unless `ok`).
+        message: Why there is no answer.
+        mode: The collapse mode.
+        pattern: The active contacts of the least limit state.
     """
 
     mu: float
@@ -407,13 +416,14 @@ class CurvePoint(_c.Result):
 
 @dataclass(frozen=True, eq=False)
 class CurveResult(_x.CurveExtras, _c.Result):
-    """The `curve --json` document.
+    """η*(μ) sampled at the given friction coefficients (`curve`): one point per μ, in the
+    order given.
 
     Attributes:
-        version:
-        status:
-        arch:
-        points:
+        version: The document format's version (2).
+        status: `ok`.
+        arch: The arch.
+        points: One point per μ, in the order given.
         fill: The fill, as given (absent without fill).
         mu_ms: μ_ms, the least friction at which some thickness stands.
     """
@@ -471,17 +481,18 @@ class Fill(_c.Result):
 
 @dataclass(frozen=True, eq=False)
 class LimitBranch(_c.Result):
-    """The `LimitBranch` of a document.
+    """A branch of limit states above the boundary η_s(μ), traced by samples.
 
     Attributes:
-        mode:
-        mode_standard:
-        mu_min:
-        mu_max:
-        eta_min:
-        eta_max:
-        pattern:
-        samples:
+        mode: The collapse mode.
+        mode_standard: Whether the mode's name is one of the contract's list (else a
+            descriptive one).
+        mu_min: Where the branch starts.
+        mu_max: Where it ends (`null`: ∞).
+        eta_min: Its least η.
+        eta_max: Its largest η.
+        pattern: The active contacts along it.
+        samples: The samples that trace it.
     """
 
     mode: str
@@ -509,14 +520,14 @@ class LimitBranch(_c.Result):
 
 @dataclass(frozen=True, eq=False)
 class LimitState(_c.Result):
-    """The `LimitState` of a document.
+    """A limit state: an admissible state whose active contacts carry a mechanism.
 
     Attributes:
-        eta:
-        mode:
-        pattern:
-        reactions:
-        mechanism:
+        eta: Its thickness ratio η.
+        mode: Its collapse mode.
+        pattern: Its active contacts.
+        reactions: Its reactions.
+        mechanism: Its mechanism.
     """
 
     eta: float
@@ -538,10 +549,11 @@ class LimitState(_c.Result):
 
 @dataclass(frozen=True, eq=False)
 class LiveLoad(_c.Result):
-    """The `LiveLoad` of a document.
+    """The live load: `kind` `horizontal` (towards `right` or `left`) or `point` (at the
+    extrados angle `beta`; `at_joint` on a discrete arch).
 
     Attributes:
-        kind:
+        kind: `horizontal` or `point`.
         at_joint: Point load: whether it sits at a joint (both sides of its section are
             checked).
         beta: Angle of the loaded extrados point (radians); null for the horizontal
@@ -566,7 +578,8 @@ class LiveLoad(_c.Result):
 
 @dataclass(frozen=True, eq=False)
 class LoadContact(_c.Result):
-    """One active activation function at one joint.
+    """An active contact of a limit state under a live load: a contact, and at the point load's
+    joint the side of the loaded section it is on.
 
     Attributes:
         beta: Joint angle (radians from the horizontal).
@@ -592,15 +605,16 @@ class LoadContact(_c.Result):
 
 @dataclass(frozen=True, eq=False)
 class LoadLimitState(_c.Result):
-    """The `LoadLimitState` of a document.
+    """A limit state of the live load: its multiplier, mode, pattern, reactions, mechanism and
+    the live load's power; for the least of a continuum of limit states, `continuum_to`.
 
     Attributes:
-        lambda_: (JSON `lambda`)
-        mode:
-        pattern:
-        reactions:
-        mechanism:
-        live_power:
+        lambda_: (JSON `lambda`) Its multiplier λ.
+        mode: Its collapse mode.
+        pattern: Its active contacts.
+        reactions: Its reactions.
+        mechanism: Its mechanism.
+        live_power: The live load's power on the mechanism.
         continuum_to: The largest λ of a continuum of limit states this one is the least
             of.
     """
@@ -628,25 +642,29 @@ class LoadLimitState(_c.Result):
 
 @dataclass(frozen=True, eq=False)
 class LoadResult(_x.LoadExtras, _c.Result):
-    """The `load --json` document.
+    """The collapse multiplier of a live load at (η, μ) (`load`): `lambda` (the least limit
+    state: the collapse), `lambda_static` (the static maximum), every limit state below it,
+    `unique` and `reduction`. `status` is `ok` or a no-answer status with `message`.
 
     Attributes:
-        version:
-        status:
-        arch:
-        eta:
-        load:
-        limit_states:
-        lambda_: (JSON `lambda`)
-        lambda_min:
-        lambda_static:
-        mechanism_at_static:
-        message:
-        mu:
-        reduction:
-        search:
-        unique:
-        units:
+        version: The document format's version (2).
+        status: `ok`, or why there is no answer.
+        arch: The arch.
+        eta: The thickness ratio η.
+        load: The live load.
+        limit_states: Every limit state with λ in [0, λ_static], ascending.
+        lambda_: (JSON `lambda`) The collapse multiplier λ_c: the least limit state's.
+        lambda_min: The least admissible multiplier (negative loads allowed).
+        lambda_static: The largest admissible multiplier (the static maximum).
+        mechanism_at_static: Whether the state at λ_static carries a mechanism.
+        message: Why there is no answer.
+        mu: μ (`null` = ∞).
+        reduction: 1 − λ_c / λ_static: how much non-associative friction lowers the
+            collapse load.
+        search: How the limit states were searched.
+        unique: Whether exactly one limit state lies in [0, λ_static] (`null`: not
+            decided).
+        units: The answer in units (given the dimensions).
     """
 
     _rows = "limit_states"
@@ -682,7 +700,7 @@ class LoadResult(_x.LoadExtras, _c.Result):
             lambda_static=None if (v := d.get("lambda_static")) is None else float(v),
             mechanism_at_static=None if (v := d.get("mechanism_at_static")) is None else bool(v),
             message=d.get("message"),
-            mu=None if (v := d.get("mu")) is None else float(v),
+            mu=None if (v := d.get("mu", _c.ABSENT)) is _c.ABSENT else _c.number(v),
             reduction=None if (v := d.get("reduction")) is None else float(v),
             search=None if (v := d.get("search")) is None else LoadSearch._of(v),
             unique=None if (v := d.get("unique")) is None else bool(v),
@@ -692,11 +710,11 @@ class LoadResult(_x.LoadExtras, _c.Result):
 
 @dataclass(frozen=True, eq=False)
 class LoadSearch(_c.Result):
-    """The `LoadSearch` of a document.
+    """How the limit states under the load were searched.
 
     Attributes:
-        method:
-        events:
+        method: The method.
+        events: The points it checked.
     """
 
     method: str
@@ -712,16 +730,19 @@ class LoadSearch(_c.Result):
 
 @dataclass(frozen=True, eq=False)
 class Mechanism(_x.MechanismExtras, _c.Result):
-    """The `Mechanism` of a document.
+    """A mechanism on the active contacts: the rates, the dimension of the mechanism cone, the
+    external power and the frictional dissipation, the residuals of compatibility and
+    complementarity, and (`solve` only) the cone's extreme rays.
 
     Attributes:
-        rates:
-        dof:
-        power:
-        dissipation:
-        symmetric:
-        compatibility_residual:
-        complementarity_residual:
+        rates: The rate at each active contact (summing to 1).
+        dof: The dimension of the mechanism cone (1: a unique mechanism up to scale).
+        power: The power of the weight (and of the live load) on the mechanism.
+        dissipation: The power dissipated by friction.
+        symmetric: Whether the mechanism is its own mirror image.
+        compatibility_residual: |B λ|: how far the rates are from compatible.
+        complementarity_residual: How far the rates are from complementary to the active
+            contacts.
         rays: The extreme rays of the mechanism cone (rates on the contacts of `rates`,
             in their order, each summing to 1): one when `dof` is 1, every vertex of the
             cone's section otherwise (`solve` only; absent elsewhere).
@@ -752,17 +773,19 @@ class Mechanism(_x.MechanismExtras, _c.Result):
 
 @dataclass(frozen=True, eq=False)
 class ModesResult(_x.ModesExtras, _c.Result):
-    """The `modes --json` document (`null` stands for +∞).
+    """The whole η–μ limit curve (`modes`): branches with their collapse modes, exact corners,
+    smooth transitions and the limit states above the boundary. `status` is `ok`,
+    `no_equilibrium`, `no_collapse` or `unresolved`.
 
     Attributes:
-        version:
-        status:
-        arch:
-        branches:
+        version: The document format's version (2).
+        status: `ok`, `no_equilibrium`, `no_collapse` or `unresolved`.
+        arch: The arch.
+        branches: The branches of η_s(μ), in order of μ.
         corners: Kinks of η_s(μ).
         transitions: Smooth pattern changes of η_s(μ).
         limit_branches: Limit states above the boundary, by samples.
-        unresolved:
+        unresolved: Where the curve is not decided.
         no_collapse: Sampled μ at which the arch stands at every thickness (no
             collapse).
         no_equilibrium: Sampled μ at which no thickness stands.
@@ -810,12 +833,13 @@ class ModesResult(_x.ModesExtras, _c.Result):
 
 @dataclass(frozen=True, eq=False)
 class Rate(_c.Result):
-    """The `Rate` of a document.
+    """One contact's rate in a mechanism.
 
     Attributes:
-        beta:
-        kind:
-        rate:
+        beta: The joint angle (radians).
+        kind: The contact (`hinge_extrados`, `hinge_intrados`, `slide_plus`,
+            `slide_minus`).
+        rate: Its rate (the rates of a mechanism sum to 1).
     """
 
     beta: float
@@ -833,12 +857,13 @@ class Rate(_c.Result):
 
 @dataclass(frozen=True, eq=False)
 class Reactions(_c.Result):
-    """The `Reactions` of a document.
+    """The redundant reactions at the right springing: h, v (forces) and w (moment), in units
+    of γ t d r (and r).
 
     Attributes:
-        h:
-        v:
-        w:
+        h: Horizontal force.
+        v: Vertical force.
+        w: Moment.
     """
 
     h: float
@@ -856,13 +881,13 @@ class Reactions(_c.Result):
 
 @dataclass(frozen=True, eq=False)
 class SafestState(_c.Result):
-    """The `SafestState` of a document.
+    """The admissible state of largest margin: the reactions h, v, w and the margin.
 
     Attributes:
-        h:
-        v:
-        w:
-        margin:
+        h: Horizontal reaction.
+        v: Vertical reaction.
+        w: Moment reaction.
+        margin: Its margin: the least distance of any contact from activation, relative.
     """
 
     h: float
@@ -882,13 +907,14 @@ class SafestState(_c.Result):
 
 @dataclass(frozen=True, eq=False)
 class Search(_c.Result):
-    """The `Search` of a document.
+    """How every limit state above η_s was searched (`complete`: all were found).
 
     Attributes:
-        complete:
-        events:
-        method:
-        reason:
+        complete: Whether the search is complete: every limit state in [η_s, 2) is
+            listed.
+        events: The points the search checked.
+        method: `ridge`, `sweep` or the like.
+        reason: Why the search could not be completed.
     """
 
     complete: bool
@@ -908,31 +934,36 @@ class Search(_c.Result):
 
 @dataclass(frozen=True, eq=False)
 class SolveResult(_x.SolveExtras, _c.Result):
-    """The `solve --json` document.
+    """The least thickness η*(μ) and every limit state with η in [η_s, 2) (`solve`). `status`
+    is `ok` (answered), `no_equilibrium` (no thickness stands at this μ), `unresolved`
+    (`eta_bracket` holds what is known) or `no_collapse`; `message` says why when not ok.
+    `mode`, `pattern`, `reactions` and `mechanism` describe the least limit state.
 
     Attributes:
-        version:
-        status:
-        arch:
-        mu:
-        friction_angle_deg:
+        version: The document format's version (2).
+        status: `ok`, `no_equilibrium`, `unresolved` or `no_collapse`.
+        arch: The arch.
+        mu: The friction coefficient μ (`null`: ∞, no sliding).
+        friction_angle_deg: atan μ in degrees.
         attained: Whether η_s is attained by a bounded state.
-        candidates:
-        checks:
-        eta:
-        eta_bracket:
+        candidates: With `--explain`: the patterns the enumeration tried.
+        checks: The checks of the least limit state.
+        eta: η*(μ) = η_s, the least thickness ratio t/r at which the arch stands.
+        eta_bracket: What is known of η_s when it is `unresolved`: [lower, upper].
         fill: The fill (an arch with fill only).
         limit_states: Every limit state with η in [η_s, 2), ascending.
-        mechanism:
+        mechanism: The mechanism of the least limit state, with the extreme rays of its
+            cone.
         mechanism_at_eta: Whether the least admissible state carries a non-associative
             mechanism.
-        message:
-        mode:
+        message: Why there is no answer (status not `ok`).
+        mode: The collapse mode of the least limit state.
         mode_standard: false when the mode name is a descriptive one outside the
             contract's list
-        mu_ms:
-        pattern:
-        reactions:
+        mu_ms: μ_ms, the least friction at which some thickness stands (with
+            `no_equilibrium`).
+        pattern: The active contacts of the least limit state.
+        reactions: The reactions of the least limit state.
         search: How the limit states were searched.
         thickness_scan: With fill: the scan of the thickness range
             (`crate::limit::filled`).
@@ -1000,13 +1031,13 @@ class SolveResult(_x.SolveExtras, _c.Result):
 
 @dataclass(frozen=True, eq=False)
 class ThicknessLimit(_c.Result):
-    """The `ThicknessLimit` of a document.
+    """Where the boundary reaches the thickness limit η → 2 above μ_ms.
 
     Attributes:
-        mu:
-        eta:
-        pattern:
-        exact:
+        mu: Where.
+        eta: η there.
+        pattern: The active contacts there.
+        exact: Whether located by Newton.
     """
 
     mu: float
@@ -1030,12 +1061,13 @@ class ThicknessScan(_c.Result):
     above the lowest admissible one is admissible too, else the inadmissible ones (`gaps`).
 
     Attributes:
-        nodes:
-        eta_from:
-        eta_to:
-        interval:
-        gaps:
-        lowest_admissible:
+        nodes: The thicknesses scanned.
+        eta_from: The least η scanned.
+        eta_to: The largest η scanned.
+        interval: Whether every scanned η above the lowest admissible one is admissible
+            too.
+        gaps: The inadmissible η above the lowest admissible one.
+        lowest_admissible: The least admissible η scanned (absent: none).
     """
 
     nodes: int
@@ -1059,15 +1091,15 @@ class ThicknessScan(_c.Result):
 
 @dataclass(frozen=True, eq=False)
 class Units(_c.Result):
-    """The `Units` of a document.
+    """The answer in units (given the arch's dimensions).
 
     Attributes:
         force_unit_kn: γ t d r in kN (the unit of a point load, and of the horizontal
             force per unit λ).
-        acceleration_ms2:
-        acceleration_static_ms2:
-        lambda_kn:
-        lambda_static_kn:
+        acceleration_ms2: λ g in m/s² (a horizontal load).
+        acceleration_static_ms2: λ_static g in m/s².
+        lambda_kn: λ in kN.
+        lambda_static_kn: λ_static in kN.
     """
 
     force_unit_kn: float
@@ -1089,11 +1121,11 @@ class Units(_c.Result):
 
 @dataclass(frozen=True, eq=False)
 class Unresolved(_c.Result):
-    """The `Unresolved` of a document.
+    """A friction coefficient at which the curve is not decided, and why.
 
     Attributes:
-        mu:
-        message:
+        mu: Where.
+        message: Why.
     """
 
     mu: float
@@ -1113,12 +1145,12 @@ class VerifyResult(_c.Result):
     what is proved) or `rejected` (`reason`; nothing is proved).
 
     Attributes:
-        arch:
+        arch: The certificate's arch.
         checks: One line per check that passed, each saying whether it was proved
             (interval arithmetic) or checked (floating point, evidence only).
         claim: What is claimed.
-        status:
-        version:
+        status: `ok` or `rejected`.
+        version: The document format's version (2).
         eta: The load certificate's thickness ratio.
         eta_hi: The upper end of the bracket of η*.
         eta_lo: The lower end of the bracket of η*.
@@ -1144,7 +1176,7 @@ class VerifyResult(_c.Result):
     lambda_lo: Optional[float] = None
     limit_states: Optional[str] = None
     load: Optional[Dict[str, Any]] = None
-    mu: float = None
+    mu: Optional[float] = None
     reason: Optional[str] = None
     statement: Optional[str] = None
 
@@ -1163,7 +1195,7 @@ class VerifyResult(_c.Result):
             lambda_lo=None if (v := d.get("lambda_lo")) is None else float(v),
             limit_states=d.get("limit_states"),
             load=None if (v := d.get("load")) is None else dict(v),
-            mu=_c.number(d.get("mu")),
+            mu=None if (v := d.get("mu", _c.ABSENT)) is _c.ABSENT else _c.number(v),
             reason=d.get("reason"),
             statement=d.get("statement"),
         )
@@ -1175,9 +1207,9 @@ class VerticalBranch(_c.Result):
     state with the purely sliding mechanism on `pattern`.
 
     Attributes:
-        eta_min:
-        mode:
-        pattern:
+        eta_min: The least thickness of the branch (η_s).
+        mode: Its mode (purely sliding).
+        pattern: The sliding contacts.
     """
 
     eta_min: float

@@ -231,6 +231,10 @@ fn fields(s: &Value, def: &Value) -> Vec<Field> {
             let optional = may_be_none && !(nullable && null_inf);
             let convert = if conv == "@" {
                 access
+            } else if !req && nullable && null_inf {
+                // absent: None; null: +∞
+                let v = format!("(v := d.get({key:?}, _c.ABSENT))");
+                format!("None if {v} is _c.ABSENT else {}", conv.replace('@', "v"))
             } else if optional {
                 format!(
                     "None if (v := {access}) is None else {}",
@@ -239,7 +243,7 @@ fn fields(s: &Value, def: &Value) -> Vec<Field> {
             } else {
                 conv.replace('@', &access)
             };
-            let annotation = if optional {
+            let annotation = if optional || (!req && nullable && null_inf) {
                 format!("Optional[{ann}]")
             } else {
                 ann

@@ -7,21 +7,32 @@ use crate::limit::Outcome;
 use schemars::JsonSchema;
 use serde::Serialize;
 
+/// The admissible state of largest margin: the reactions h, v, w and the margin.
 #[derive(Debug, Serialize, JsonSchema)]
 #[schemars(rename = "SafestState")]
 struct SafestJson {
+    /// Horizontal reaction.
     h: f64,
+    /// Vertical reaction.
     v: f64,
+    /// Moment reaction.
     w: f64,
+    /// Its margin: the least distance of any contact from activation, relative.
     margin: f64,
 }
 
-/// The `assess --json` document (`null` stands for +∞ where noted).
+/// A given thickness η at a given friction μ (`assess`): whether it stands, η*(μ) (`eta_min`),
+/// the geometric factor η / η*, the least friction μ_min(η) at which it stands and the friction
+/// factor μ / μ_min, the collapse mode of η*(μ) and the safest state. Factors are `null` when
+/// they do not exist or are infinite.
 #[derive(Debug, Serialize, JsonSchema)]
 #[schemars(rename = "AssessResult")]
 pub struct AssessJson {
+    /// The document format's version (2).
     version: u32,
+    /// `ok`, or why η*(μ) is missing (`no_equilibrium`, `unresolved`, ...).
     status: &'static str,
+    /// The arch.
     arch: ArchJson,
     /// The thickness ratio assessed.
     eta: f64,
@@ -32,6 +43,7 @@ pub struct AssessJson {
     /// η / η*(μ) (`null`: none, or infinite when every η stands).
     geometric_factor: Option<f64>,
     /// μ (`null` = ∞).
+    #[schemars(extend("x-null" = "infinity"))]
     mu: Option<f64>,
     /// μ_min(η), the least friction at which η stands (`null` when none does).
     mu_min: Option<f64>,

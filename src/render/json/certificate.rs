@@ -65,7 +65,9 @@ pub struct CertifyJson {
     #[serde(skip_serializing_if = "Option::is_none")]
     #[schemars(extend("x-null" = "infinity"))]
     mu: Option<Option<f64>>,
+    /// `ok`, `gap_not_reached` or `not_certified`.
     status: &'static str,
+    /// The document format's version (2).
     version: u32,
 }
 
@@ -134,7 +136,9 @@ fn keys_sorted<T: Serialize, S: serde::Serializer>(v: &T, s: S) -> Result<S::Ok,
 #[derive(Debug, Serialize, JsonSchema)]
 #[schemars(rename = "CertifiedArch")]
 pub struct CertifiedArchJson {
+    /// The left springing β_L (radians).
     beta_left: f64,
+    /// The right springing β_R (radians).
     beta_right: f64,
     /// The fill (absent without fill).
     #[serde(
@@ -174,6 +178,7 @@ impl CertifiedArchJson {
 #[derive(Debug, Serialize, JsonSchema)]
 #[schemars(rename = "VerifyResult")]
 pub struct VerifyJson {
+    /// The certificate's arch.
     arch: CertifiedArchJson,
     /// One line per check that passed, each saying whether it was proved (interval
     /// arithmetic) or checked (floating point, evidence only).
@@ -212,7 +217,9 @@ pub struct VerifyJson {
     /// The proved statement, in one line.
     #[serde(skip_serializing_if = "Option::is_none")]
     statement: Option<String>,
+    /// `ok` or `rejected`.
     status: &'static str,
+    /// The document format's version (2).
     version: u32,
 }
 

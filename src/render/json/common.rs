@@ -10,16 +10,22 @@ use serde::Serialize;
 /// change of any shape (2: `version`/`status` everywhere, `pattern` for every joint list).
 pub const JSON_VERSION: u32 = 2;
 
-/// The arch as described in every JSON document.
+/// The arch a document answers for.
 #[derive(Debug, Serialize, JsonSchema)]
 #[schemars(rename = "ArchInfo")]
 pub struct ArchJson {
+    /// The right springing β_R (radians).
     beta_right: f64,
+    /// The left springing β_L (radians).
     beta_left: f64,
+    /// `centreline` (Heyman's weight) or `centroid` (the true centroid).
     weight: &'static str,
+    /// `continuous` (a joint at every section) or `discrete` (voussoirs).
     joints: &'static str,
+    /// The joint angles of a discrete arch, springings included (absent when continuous).
     #[serde(skip_serializing_if = "Option::is_none")]
     joint_angles: Option<Vec<f64>>,
+    /// Whether the arch (springings and joints) is mirror-symmetric.
     symmetric: bool,
 }
 

@@ -12,9 +12,12 @@ use crate::undecided::Undecided;
 use schemars::JsonSchema;
 use serde::Serialize;
 
+/// The live load: `kind` `horizontal` (towards `right` or `left`) or `point` (at the extrados
+/// angle `beta`; `at_joint` on a discrete arch).
 #[derive(Debug, Serialize, JsonSchema)]
 #[schemars(rename = "LiveLoad")]
 pub(super) struct LoadJson {
+    /// `horizontal` or `point`.
     kind: &'static str,
     /// Angle of the loaded extrados point (radians); null for the horizontal load.
     beta: Option<f64>,
@@ -26,6 +29,8 @@ pub(super) struct LoadJson {
     at_joint: Option<bool>,
 }
 
+/// An active contact of a limit state under a live load: a contact, and at the point load's
+/// joint the side of the loaded section it is on.
 #[derive(Debug, Serialize, JsonSchema)]
 #[schemars(rename = "LoadContact")]
 pub struct PatternContact {
@@ -36,62 +41,97 @@ pub struct PatternContact {
     side: Option<&'static str>,
 }
 
+/// A limit state of the live load: its multiplier, mode, pattern, reactions, mechanism and the
+/// live load's power; for the least of a continuum of limit states, `continuum_to`.
 #[derive(Debug, Serialize, JsonSchema)]
 #[schemars(rename = "LoadLimitState")]
 struct StateJson {
+    /// Its multiplier λ.
     lambda: f64,
+    /// Its collapse mode.
     mode: &'static str,
+    /// Its active contacts.
     pattern: Vec<PatternContact>,
+    /// Its reactions.
     reactions: Reactions,
+    /// Its mechanism.
     mechanism: MechanismJson,
+    /// The live load's power on the mechanism.
     live_power: f64,
     /// The largest λ of a continuum of limit states this one is the least of.
     continuum_to: Option<f64>,
 }
 
+/// The answer in units (given the arch's dimensions).
 #[derive(Debug, Serialize, JsonSchema)]
 #[schemars(rename = "Units")]
 struct UnitsJson {
     /// γ t d r in kN (the unit of a point load, and of the horizontal force per unit λ).
     force_unit_kn: f64,
+    /// λ in kN.
     #[serde(skip_serializing_if = "Option::is_none")]
     lambda_kn: Option<f64>,
+    /// λ_static in kN.
     #[serde(skip_serializing_if = "Option::is_none")]
     lambda_static_kn: Option<f64>,
+    /// λ g in m/s² (a horizontal load).
     #[serde(skip_serializing_if = "Option::is_none")]
     acceleration_ms2: Option<f64>,
+    /// λ_static g in m/s².
     #[serde(skip_serializing_if = "Option::is_none")]
     acceleration_static_ms2: Option<f64>,
 }
 
-/// The `load --json` document.
+/// The collapse multiplier of a live load at (η, μ) (`load`): `lambda` (the least limit state:
+/// the collapse), `lambda_static` (the static maximum), every limit state below it, `unique`
+/// and `reduction`. `status` is `ok` or a no-answer status with `message`.
 #[derive(Debug, Serialize, JsonSchema)]
 #[schemars(rename = "LoadResult")]
 pub struct LoadDoc {
+    /// The document format's version (2).
     version: u32,
+    /// `ok`, or why there is no answer.
     status: &'static str,
+    /// The arch.
     arch: ArchJson,
+    /// The thickness ratio η.
     eta: f64,
+    /// μ (`null` = ∞).
+    #[schemars(extend("x-null" = "infinity"))]
     mu: Option<f64>,
+    /// The live load.
     load: LoadJson,
+    /// The collapse multiplier λ_c: the least limit state's.
     lambda: Option<f64>,
+    /// The largest admissible multiplier (the static maximum).
     lambda_static: Option<f64>,
+    /// The least admissible multiplier (negative loads allowed).
     lambda_min: Option<f64>,
+    /// Whether exactly one limit state lies in [0, λ_static] (`null`: not decided).
     unique: Option<bool>,
+    /// Whether the state at λ_static carries a mechanism.
     mechanism_at_static: Option<bool>,
+    /// 1 − λ_c / λ_static: how much non-associative friction lowers the collapse load.
     reduction: Option<f64>,
+    /// Every limit state with λ in [0, λ_static], ascending.
     limit_states: Vec<StateJson>,
+    /// How the limit states were searched.
     search: Option<SearchJson>,
+    /// The answer in units (given the dimensions).
     #[serde(skip_serializing_if = "Option::is_none")]
     units: Option<UnitsJson>,
+    /// Why there is no answer.
     #[serde(skip_serializing_if = "Option::is_none")]
     message: Option<String>,
 }
 
+/// How the limit states under the load were searched.
 #[derive(Debug, Serialize, JsonSchema)]
 #[schemars(rename = "LoadSearch")]
 struct SearchJson {
+    /// The method.
     method: &'static str,
+    /// The points it checked.
     events: usize,
 }
 

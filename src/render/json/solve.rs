@@ -8,54 +8,83 @@ use crate::limit_states::{LimitStates, Rays, Survey};
 use schemars::JsonSchema;
 use serde::Serialize;
 
+/// The checks of the limit state at η_s: the static η of the LP, Newton's residual, the largest
+/// activation over the arch, the LP's bracket of η_s.
 #[derive(Debug, Serialize, JsonSchema)]
 #[schemars(rename = "Checks")]
 struct Checks {
+    /// η_s of the static LPs (before Newton).
     eta_static: f64,
+    /// The residual of the pattern's equations after Newton.
     newton_residual: f64,
+    /// The largest activation φ over the arch (≤ 0 up to rounding: admissible).
     max_phi: f64,
+    /// The LPs' bracket of η_s.
     eta_bracket: [f64; 2],
 }
 
+/// A pattern the enumeration tried (`--explain`).
 #[derive(Debug, Serialize, JsonSchema)]
 #[schemars(rename = "Candidate")]
 struct CandidateJson {
+    /// Its active contacts.
     pattern: Vec<Contact>,
+    /// Whether its equations were solved.
     tried: bool,
+    /// Its thickness, when solved.
     eta: Option<f64>,
+    /// What became of it.
     verdict: String,
 }
 
-/// The `solve --json` document.
+/// The least thickness η*(μ) and every limit state with η in [η_s, 2) (`solve`). `status` is
+/// `ok` (answered), `no_equilibrium` (no thickness stands at this μ), `unresolved`
+/// (`eta_bracket` holds what is known) or `no_collapse`; `message` says why when not ok.
+/// `mode`, `pattern`, `reactions` and `mechanism` describe the least limit state.
 #[derive(Debug, Serialize, JsonSchema)]
 #[schemars(rename = "SolveResult")]
 pub struct SolveJson {
+    /// The document format's version (2).
     version: u32,
+    /// `ok`, `no_equilibrium`, `unresolved` or `no_collapse`.
     status: &'static str,
+    /// The arch.
     arch: ArchJson,
+    /// The friction coefficient μ (`null`: ∞, no sliding).
     mu: f64,
+    /// atan μ in degrees.
     friction_angle_deg: f64,
+    /// η*(μ) = η_s, the least thickness ratio t/r at which the arch stands.
     #[serde(skip_serializing_if = "Option::is_none")]
     eta: Option<f64>,
+    /// The collapse mode of the least limit state.
     #[serde(skip_serializing_if = "Option::is_none")]
     mode: Option<&'static str>,
     /// false when the mode name is a descriptive one outside the contract's list
     #[serde(skip_serializing_if = "Option::is_none")]
     mode_standard: Option<bool>,
+    /// The active contacts of the least limit state.
     #[serde(skip_serializing_if = "Option::is_none")]
     pattern: Option<Vec<Contact>>,
+    /// The reactions of the least limit state.
     #[serde(skip_serializing_if = "Option::is_none")]
     reactions: Option<Reactions>,
+    /// The mechanism of the least limit state, with the extreme rays of its cone.
     #[serde(skip_serializing_if = "Option::is_none")]
     mechanism: Option<MechanismJson>,
+    /// The checks of the least limit state.
     #[serde(skip_serializing_if = "Option::is_none")]
     checks: Option<Checks>,
+    /// μ_ms, the least friction at which some thickness stands (with `no_equilibrium`).
     #[serde(skip_serializing_if = "Option::is_none")]
     mu_ms: Option<f64>,
+    /// What is known of η_s when it is `unresolved`: [lower, upper].
     #[serde(skip_serializing_if = "Option::is_none")]
     eta_bracket: Option<[f64; 2]>,
+    /// Why there is no answer (status not `ok`).
     #[serde(skip_serializing_if = "Option::is_none")]
     message: Option<String>,
+    /// With `--explain`: the patterns the enumeration tried.
     #[serde(skip_serializing_if = "Option::is_none")]
     candidates: Option<Vec<CandidateJson>>,
     /// Whether η_s is attained by a bounded state.
@@ -89,11 +118,17 @@ pub struct SolveJson {
 #[derive(Debug, Serialize, JsonSchema)]
 #[schemars(rename = "ThicknessScan")]
 struct ScanJson {
+    /// The thicknesses scanned.
     nodes: usize,
+    /// The least η scanned.
     eta_from: f64,
+    /// The largest η scanned.
     eta_to: f64,
+    /// The least admissible η scanned (absent: none).
     lowest_admissible: Option<f64>,
+    /// Whether every scanned η above the lowest admissible one is admissible too.
     interval: bool,
+    /// The inadmissible η above the lowest admissible one.
     gaps: Vec<f64>,
 }
 
@@ -114,27 +149,41 @@ fn scan_json(s: &crate::limit::filled::ThicknessScan) -> ScanJson {
 #[derive(Debug, Serialize, JsonSchema)]
 #[schemars(rename = "VerticalBranch")]
 struct VerticalJson {
+    /// The least thickness of the branch (η_s).
     eta_min: f64,
+    /// Its mode (purely sliding).
     mode: &'static str,
+    /// The sliding contacts.
     pattern: Vec<Contact>,
 }
 
+/// A limit state: an admissible state whose active contacts carry a mechanism.
 #[derive(Debug, Serialize, JsonSchema)]
 #[schemars(rename = "LimitState")]
 struct LimitStateJson {
+    /// Its thickness ratio η.
     eta: f64,
+    /// Its collapse mode.
     mode: &'static str,
+    /// Its active contacts.
     pattern: Vec<Contact>,
+    /// Its reactions.
     reactions: Reactions,
+    /// Its mechanism.
     mechanism: MechanismJson,
 }
 
+/// How every limit state above η_s was searched (`complete`: all were found).
 #[derive(Debug, Serialize, JsonSchema)]
 #[schemars(rename = "Search")]
 struct SearchJson {
+    /// Whether the search is complete: every limit state in [η_s, 2) is listed.
     complete: bool,
+    /// `ridge`, `sweep` or the like.
     method: Option<String>,
+    /// The points the search checked.
     events: Option<usize>,
+    /// Why the search could not be completed.
     #[serde(skip_serializing_if = "Option::is_none")]
     reason: Option<String>,
 }
