@@ -35,8 +35,9 @@ from ._commands import (
     report,
     run,
 )
-from ._results import (
-    Arch,
+from ._extras import Lines
+from ._results import Arch, _scalar, _whole
+from ._types import (
     ArchInfo,
     AssessResult,
     Branch,
@@ -47,7 +48,6 @@ from ._results import (
     CurvePoint,
     CurveResult,
     LimitState,
-    Lines,
     LiveLoad,
     LoadContact,
     LoadLimitState,
@@ -61,8 +61,6 @@ from ._results import (
     ThicknessLimit,
     VerifyResult,
     VerticalBranch,
-    _scalar,
-    _whole,
 )
 
 __version__: str = _native.__version__

@@ -1,5 +1,5 @@
-"""The input type ``Arch`` and the checks of arguments; the result types are generated
-from the command line's JSON Schema (``_types.py``) and re-exported here.
+"""The input type ``Arch`` and the checks of arguments (the result types are generated
+from the command line's JSON Schema: ``_types.py``).
 
 No numerics here: every number comes from the Rust library (``arch_enum._native``).
 Conventions as in the library: lengths divided by the mean radius r (eta = t/r), angles
@@ -17,32 +17,6 @@ import numpy as np
 
 from . import _convert as _c
 from . import _native
-from ._types import (  # noqa: F401 (re-exported)
-    ArchInfo,
-    AssessResult,
-    Branch,
-    CertifyResult,
-    Checks,
-    Contact,
-    Corner,
-    CurvePoint,
-    CurveResult,
-    LimitState,
-    LiveLoad,
-    LoadContact,
-    LoadLimitState,
-    LoadResult,
-    Mechanism,
-    ModesResult,
-    Reactions,
-    SafestState,
-    Search,
-    SolveResult,
-    ThicknessLimit,
-    VerifyResult,
-    VerticalBranch,
-)
-from ._extras import Lines  # noqa: F401 (re-exported)
 
 
 def _scalar(name: str, v: Any, unit: str = "") -> float:
