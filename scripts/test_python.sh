@@ -3,8 +3,8 @@
 # (release profile, so the library's dependencies compiled by `cargo test --release` are
 # reused), installs it in a fresh virtual environment and runs python/tests with pytest.
 # First with only the wheel, numpy and pytest (the import test: no optional dependency
-# present), then with compas, pandas and matplotlib (everything else). Fails if pytest
-# fails. PYTHON picks the interpreter (default python3, >= 3.9).
+# present), then with compas, pandas, matplotlib and jsonschema (everything else). Fails if
+# pytest fails. PYTHON picks the interpreter (default python3, >= 3.9).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$SECONDS
@@ -24,7 +24,7 @@ echo "python: wheel: $((SECONDS - t)) s" >&2
 "${pip[@]}" "$work"/dist/arch_enum-*.whl
 ARCH_ENUM_NO_OPTIONAL=1 "$bin/python" -m pytest -q -p no:cacheprovider python/tests/test_import.py
 t=$SECONDS
-"${pip[@]}" compas pandas matplotlib
-echo "python: compas pandas matplotlib: $((SECONDS - t)) s" >&2
+"${pip[@]}" compas pandas matplotlib jsonschema
+echo "python: compas pandas matplotlib jsonschema: $((SECONDS - t)) s" >&2
 ARCH_ENUM_BIN="$target_dir/release/arch-enum" "$bin/python" -m pytest -q -p no:cacheprovider python/tests
 echo "python: all steps: $((SECONDS - start)) s" >&2

@@ -4,10 +4,9 @@
 //! when the file in the tree differs; `PYTHON_TYPES_UPDATE=1 cargo test --release --test it
 //! python_types` rewrites it.
 //!
-//! Rules (the converters are `python/arch_enum/_convert.py`): a number is a `float` (JSON
-//! `null` is +∞ for a number that is always there, `None` for one that may be absent or
-//! `null`; a field marked `x-null: infinity` in the schema reads `null` as +∞, one marked
-//! `x-null: none` as `None`); a list of numbers is a read-only NumPy array (a list of lists
+//! Rules (the converters are `python/arch_enum/_convert.py`): a number is a `float` (a field
+//! marked `x-null: infinity` in the schema, as every float the Rust type always has, reads
+//! JSON `null` as +∞; any other reads it as `None`, and a field left out is `None`); a list of numbers is a read-only NumPy array (a list of lists
 //! a 2-D one), a list of two numbers a tuple; any other list a tuple; an object of a named
 //! type its dataclass; a map without a named type a `dict`. A field that is a Python
 //! keyword gets a trailing `_` (`lambda_`). Behaviour beyond the data (figures, columns,
@@ -219,8 +218,9 @@ fn fields(s: &Value, def: &Value) -> Vec<Field> {
             let (_, nullable) = types(v);
             let req = required.contains(&key);
             let mark = v.get("x-null").and_then(Value::as_str);
-            // a number always there reads null as +∞; one that may be null, as None
-            let null_inf = mark.map_or(!nullable, |m| m == "infinity");
+            // a number marked so reads null as +∞ (every float the Rust type always has);
+            // one that may be null (an `Option`), as None
+            let null_inf = mark == Some("infinity");
             let (ann, conv) = value(s, v, null_inf);
             let access = if req {
                 format!("d[{key:?}]")

@@ -57,25 +57,39 @@ pub(super) fn may_carry_mechanism(
             &every
         }
     };
+    let clear = -CLEAR_FACTOR * tol;
+    // φ below these is clearly inactive whatever the rounding of φ / magnitude (a margin of
+    // 4 ε on a test whose quotient rounds by at most ε)
+    let (clear_hinge, clear_slide) = (
+        clear * mag_hinge * (1.0 + 4.0 * f64::EPSILON),
+        clear * mag_slide * (1.0 + 4.0 * f64::EPSILON),
+    );
     for &j in joints {
         let jr = &js[j];
         let (n, t, m) = (ev(&jr.n, p), ev(&jr.t, p), ev(&jr.m, p) + c.x[2]);
-        for (kind, phi) in [
-            (ContactKind::HingeExtrados, m - 0.5 * c.eta * n),
-            (ContactKind::HingeIntrados, -m - 0.5 * c.eta * n),
-            (ContactKind::SlidePlus, t - mu * n),
-            (ContactKind::SlideMinus, -t - mu * n),
-        ] {
-            let r = phi
-                / if kind.is_hinge() {
-                    mag_hinge
-                } else {
-                    mag_slide
-                };
+        // φ of the joint's four rows, in the order of `ContactKind::ALL`
+        let phis = [
+            m - 0.5 * c.eta * n,
+            -m - 0.5 * c.eta * n,
+            t - mu * n,
+            -t - mu * n,
+        ];
+        // most joints: all four rows clearly inactive (one test, no division, no branch per
+        // row); the others are classified exactly as `check`'s tolerances say
+        if (phis[0] < clear_hinge)
+            & (phis[1] < clear_hinge)
+            & (phis[2] < clear_slide)
+            & (phis[3] < clear_slide)
+        {
+            continue;
+        }
+        let mags = [mag_hinge, mag_hinge, mag_slide, mag_slide];
+        for (k, kind) in ContactKind::ALL.into_iter().enumerate() {
+            let r = phis[k] / mags[k];
             if r > CLEAR_FACTOR * tol {
                 return false;
             }
-            if r < -CLEAR_FACTOR * tol {
+            if r < clear {
                 continue;
             }
             if r.abs() > tol || count == 4 {

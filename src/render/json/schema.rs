@@ -50,11 +50,30 @@ pub fn schema() -> Value {
         .iter()
         .map(|(_, s)| s.clone().to_value())
         .collect();
+    let mut defs = Value::Object(g.take_definitions(false));
+    numbers_may_be_null(&mut defs);
     json!({
         "$schema": "https://json-schema.org/draft/2020-12/schema",
         "title": "arch-enum --json documents",
         "anyOf": any,
         "x-documents": names,
-        "$defs": g.take_definitions(false),
+        "$defs": defs,
     })
+}
+
+/// A float that is not finite prints as `null` (+∞ where the documents say so, as μ = ∞):
+/// every `number` of the schema may be `null`, and one that the Rust type always has
+/// (not an `Option`) is marked `x-null: infinity` unless its field says otherwise.
+fn numbers_may_be_null(v: &mut Value) {
+    match v {
+        Value::Object(m) => {
+            if m.get("type") == Some(&Value::from("number")) {
+                m.insert("type".into(), json!(["number", "null"]));
+                m.entry("x-null").or_insert_with(|| Value::from("infinity"));
+            }
+            m.values_mut().for_each(numbers_may_be_null);
+        }
+        Value::Array(a) => a.iter_mut().for_each(numbers_may_be_null),
+        _ => {}
+    }
 }
