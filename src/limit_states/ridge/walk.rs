@@ -38,12 +38,16 @@ const NEGATIVE_DISC_REL: f64 = 1e-12;
 /// the pieces are finitely many.
 fn ridge_pair(hr: &[HingeRow], t: f64) -> Option<(usize, usize)> {
     let mut eta = 0.0;
-    let scale = 1.0 + hr.iter().fold(0.0f64, |m, r| m.max(r.at(t, 0.0).abs()));
+    // 1 + the largest |row| at η = 0 (found by Newton's first pass, which starts there)
+    let mut scale = 1.0;
     let mut closed = false;
-    for _ in 0..2 * hr.len() + 8 {
+    for step in 0..2 * hr.len() + 8 {
         let (mut lo, mut up) = ((f64::NEG_INFINITY, 0), (f64::INFINITY, 0));
         for (k, r) in hr.iter().enumerate() {
             let v = r.at(t, eta);
+            if step == 0 {
+                scale = f64::max(scale, 1.0 + v.abs());
+            }
             if r.upper && v < up.0 {
                 up = (v, k);
             } else if !r.upper && v > lo.0 {
@@ -70,11 +74,21 @@ fn ridge_pair(hr: &[HingeRow], t: f64) -> Option<(usize, usize)> {
         .map(|r| r.at(t, eta))
         .fold(f64::INFINITY, f64::min);
     let tol = TOL * (scale + w.abs());
-    let near = |r: &HingeRow| (r.at(t, eta) - w).abs() <= tol;
+    // the rows near w (E and I, each ascending), in one pass
+    let (mut es, mut is) = (Vec::new(), Vec::new());
+    for (k, r) in hr.iter().enumerate() {
+        if (r.at(t, eta) - w).abs() <= tol {
+            if r.upper {
+                es.push(k);
+            } else {
+                is.push(k);
+            }
+        }
+    }
     // the pairs of rows near w: their η at t, and dη/dt
     let mut pairs: Vec<(usize, usize, f64, f64)> = Vec::new();
-    for e in (0..hr.len()).filter(|&e| hr[e].upper && near(&hr[e])) {
-        for i in (0..hr.len()).filter(|&i| !hr[i].upper && hr[i].j != hr[e].j && near(&hr[i])) {
+    for &e in &es {
+        for &i in is.iter().filter(|&&i| hr[i].j != hr[e].j) {
             let d = diff(hr, e, i);
             let q = d[2] + d[3] * t;
             if q <= 0.0 {
@@ -156,9 +170,10 @@ pub(super) fn walk_edge(
         // the next row to reach w along the pair's curve
         let eps = STEP_REL * (1.0 + t.abs() + (t1 - t0).abs());
         let mut next: Option<(f64, usize)> = None;
-        for r in (0..hr.len()).filter(|&r| r != e && r != i) {
+        let ce = hr[e].c;
+        for (r, row) in hr.iter().enumerate().filter(|&(r, _)| r != e && r != i) {
             // (row_r − row_e)(t, η(t)) · q(t) = 0
-            let g = diff(hr, r, e);
+            let g: [f64; 4] = std::array::from_fn(|k| row.c[k] - ce[k]);
             let q2 = g[1] * d[3] - g[3] * d[1];
             let q1 = g[0] * d[3] + g[1] * d[2] - g[2] * d[1] - g[3] * d[0];
             let q0 = g[0] * d[2] - g[2] * d[0];
