@@ -59,6 +59,13 @@ class MechanismExtras:
         return _column([r.rate for r in self.rates])  # type: ignore[attr-defined]
 
 
+def _no_points() -> np.ndarray:
+    """A read-only (0, 2) array: no line drawn."""
+    a = np.zeros((0, 2))
+    a.flags.writeable = False
+    return a
+
+
 def _column(values: Any) -> np.ndarray:
     a = np.array([math.nan if v is None else v for v in values], dtype=float)
     a.flags.writeable = False
@@ -95,7 +102,7 @@ class SolveExtras:
     def thrust_line(self) -> np.ndarray:
         """The line of thrust, (n, 2) (empty when no state is drawn)."""
         line = self._line("thrust_line")
-        return np.zeros((0, 2)) if line is None else line
+        return _no_points() if line is None else line
 
     @property
     def friction_line(self) -> Optional[np.ndarray]:
@@ -106,7 +113,7 @@ class SolveExtras:
     def outline(self) -> np.ndarray:
         """The arch's outline, (n, 2) (empty when no state is drawn)."""
         line = self._line("outline")
-        return np.zeros((0, 2)) if line is None else line
+        return _no_points() if line is None else line
 
     def _repr_svg_(self) -> Optional[str]:
         """The arch to scale at the least limit state with its lines of thrust and
