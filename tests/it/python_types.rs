@@ -25,14 +25,13 @@ const TYPED: [&str; 7] = [
 
 /// Types with hand-written behaviour: (type, mixin in `_extras`, the list field whose items
 /// are the rows of `to_pandas`).
-const EXTRAS: [(&str, &str, Option<&str>); 9] = [
+const EXTRAS: [(&str, &str, Option<&str>); 8] = [
     ("SolveResult", "SolveExtras", Some("limit_states")),
     ("CurveResult", "CurveExtras", Some("points")),
     ("ModesResult", "ModesExtras", Some("corners")),
     ("AssessResult", "AssessExtras", None),
     ("LoadResult", "LoadExtras", Some("limit_states")),
     ("CertifyResult", "CertifyExtras", None),
-    ("VerifyResult", "", None),
     ("Mechanism", "MechanismExtras", None),
     ("ArchInfo", "ArchInfoExtras", None),
 ];
@@ -268,10 +267,9 @@ fn fields(s: &Value, def: &Value) -> Vec<Field> {
 fn class(s: &Value, name: &str, out: &mut String) {
     let def = &defs(s)[name];
     let extras = EXTRAS.iter().find(|e| e.0 == name);
-    let bases = match extras {
-        Some(e) if !e.1.is_empty() => format!("_x.{}, _c.Result", e.1),
-        _ => "_c.Result".to_string(),
-    };
+    let bases = extras.map_or("_c.Result".to_string(), |e| {
+        format!("_x.{}, _c.Result", e.1)
+    });
     let fs = fields(s, def);
     writeln!(
         out,
