@@ -2,7 +2,7 @@
 //! which some state satisfies |T| ≤ μN at every joint. Neither T nor N involves w or
 //! η, so this is a problem in (h, v) alone; below μ_ms no thickness can stand.
 //!
-//! The LP bracket (constraint generation over the continuum, Illinois in μ) gives the
+//! The LP bracket (constraint generation over the continuum, [`crate::search::bracket_root`] in μ) gives the
 //! candidate sliding contacts; the pattern's system with μ unknown (and the KKT
 //! conditions of min μ when it has fewer than three contacts) is solved by Newton and
 //! verified over the whole arch, as for the thickness problem.

@@ -1,12 +1,12 @@
 //! Step 1 of the solve: a bracket [η_lo, η_hi] of η_s, the root of the continuum margin
 //! s(η) (increasing in η), with the margin LP's state at its upper end. From a guess when
-//! one is given, else from the whole range (where the answer may instead be "no
-//! equilibrium" or "no collapse"); narrowed by Illinois regula falsi with geometric
-//! bisection, with two predictions of η_s on the way.
+//! one is given (or from a neighbouring solution's pattern, [`continued`]), else from the
+//! whole range (where the answer may instead be "no equilibrium" or "no collapse");
+//! narrowed by [`bracket_root`], with two predictions of η_s on the way.
 
 use super::diagnosis::{no_equilibrium, unresolved};
 use super::recession::{margin, MARGIN_TOL};
-use super::solution::Outcome;
+use super::solution::{LeastLimitState, Outcome};
 use super::vanishing::{vanishing_thickness_state, NO_COLLAPSE};
 use crate::admissibility::{Margin, WorkingSet};
 use crate::arch::{Arch, JointLayout, ETA_TOP};
@@ -44,6 +44,15 @@ pub(super) fn bracket_eta_s(
     // equilibrium". Without a guess (or when it brackets nothing) the whole range.
     let (near, from_whole_range) = match start {
         Start::Scanned(b) => (Some(b), true),
+        Start::Continued(guess, prior) => {
+            let mut eval = |eta: f64| margin_or_far(arch, eta, mu, modes, ws, settings);
+            let near = match continued(arch, mu, modes, prior, &mut eval, settings) {
+                Ok(Some(b)) => Some(b),
+                _ => bracket_near(guess, ETA_TOP, eval).ok().flatten(),
+            };
+            let whole = near.is_none();
+            (near, whole)
+        }
         Start::Near(guess) => {
             let near = guess.and_then(|g| {
                 bracket_near(g, ETA_TOP, |eta| {
@@ -120,9 +129,11 @@ fn whole_range(
 }
 
 /// Where the bracket of η_s starts.
-pub(super) enum Start {
+pub(super) enum Start<'a> {
     /// Near a guess (a neighbouring solution), or the whole range without one.
     Near(Option<RootGuess>),
+    /// From a neighbouring solution's least state ([`continued`]), else near the guess.
+    Continued(RootGuess, &'a LeastLimitState),
     /// The bracket of a scan of the whole range (an arch with fill, [`super::filled`]):
     /// narrowed as a bracket of the whole range is.
     Scanned(Bracket<Margin>),
@@ -211,6 +222,49 @@ const PREDICT_AT: [f64; 2] = [1e-1, 1e-3];
 /// the margin's sign on ordinary arches (the margin changes by about η N/2 per unit of
 /// relative η).
 const PREDICT_STEP: f64 = 0.05;
+
+/// A bracket of η_s a tenth of `bracket_rel` wide from a neighbouring solution's least
+/// state `prior` (the previous μ of a curve, where that state carries the limit state):
+/// Newton on its pattern at this μ, from its state, gives a state admissible over the arch
+/// at η_p when the pattern still holds here, and the margins at η_p (1 ± [`PREDICT_STEP`]
+/// `bracket_rel`) then bracket η_s, as for a prediction ([`predicted`]). `None` when the
+/// pattern does not hold (Newton fails, its state is not admissible, or the two margins do
+/// not bracket): the caller then brackets from its guess, having spent at most two LPs.
+fn continued(
+    arch: &Arch,
+    mu: f64,
+    modes: &[ContactKind],
+    prior: &LeastLimitState,
+    eval: &mut impl FnMut(f64) -> Result<(f64, Margin), Undecided>,
+    settings: &Settings,
+) -> Result<Option<Bracket<Margin>>, Undecided> {
+    let from = State {
+        arch,
+        eta: prior.eta_static,
+        mu,
+        x: prior.x_static,
+    };
+    let Ok(r) = solve_pattern(&from, &prior.pattern, settings) else {
+        return Ok(None);
+    };
+    let refined = State {
+        arch,
+        eta: r.t,
+        mu,
+        x: r.x,
+    };
+    if !(r.t > 0.0 && r.t < ETA_TOP) || refined.admissible_verdict(modes, settings).is_err() {
+        return Ok(None);
+    }
+    let k = PREDICT_STEP * settings.bracket_rel;
+    let (t_hi, t_lo) = (r.t * (1.0 + k), r.t * (1.0 - k));
+    let (f_hi, m_hi) = eval(t_hi)?;
+    if f_hi < 0.0 {
+        return Ok(None);
+    }
+    let (f_lo, _) = eval(t_lo)?;
+    Ok((f_lo < 0.0).then_some(((t_lo, f_lo), (t_hi, f_hi, m_hi))))
+}
 
 /// A narrowed bracket of η_s from a prediction: Newton on the candidates at the upper end
 /// of a coarse bracket (the whole set, as the solve's enumeration starts) gives an

@@ -2,8 +2,9 @@
 //!
 //! 1. **Bracket.** The continuum margin s(η) of the best state (constraint-generation
 //!    LP, [`crate::admissibility`]) is increasing in η; η* is its root, bracketed by
-//!    Illinois regula falsi safeguarded by (geometric) bisection (`bracket`; the test for
-//!    an arch that stands at every thickness is `vanishing`).
+//!    inverse quadratic interpolation and regula falsi safeguarded by (geometric)
+//!    bisection (`bracket`; the test for an arch that stands at every thickness is
+//!    `vanishing`). Along a curve the bracket starts from the previous μ's pattern.
 //! 2. **Candidates.** At the upper end of the bracket, the local maxima of every φ whose
 //!    normalised slack is within `candidate_rel` of the LP margin are the candidate
 //!    active contacts.
@@ -50,6 +51,25 @@ use std::ops::ControlFlow::{self, Break, Continue};
 /// equilibrium, or an unresolved bracket) is inside the `Solution`.
 pub fn solve(arch: &Arch, mu: f64, settings: &Settings) -> Result<Solution, InputError> {
     solve_near(arch, mu, continuum_guess(arch, mu, settings), settings)
+}
+
+/// [`solve_near`] from a neighbouring solution's least limit state `prior` (the previous
+/// μ of a curve): where `prior` carries its limit state at its η_s, the bracket of η_s
+/// starts with Newton on its pattern at `mu` (two margin LPs when the pattern still holds,
+/// instead of a bracket narrowed from `guess`); otherwise, or when the pattern does not
+/// hold here, as [`solve_near`] from `guess`. The same algorithm after the bracket.
+pub fn solve_continued(
+    arch: &Arch,
+    mu: f64,
+    guess: RootGuess,
+    prior: &LeastLimitState,
+    settings: &Settings,
+) -> Result<Solution, InputError> {
+    let usable = prior.eta == prior.eta_static && prior.attained && arch.fill().is_none();
+    if !usable {
+        return solve_near(arch, mu, Some(guess), settings);
+    }
+    solve_from(arch, mu, bracket::Start::Continued(guess, prior), settings)
 }
 
 /// The questions whose method still assumes that the sliding rows do not depend on η (the
@@ -120,6 +140,16 @@ pub fn solve_near(
     guess: Option<RootGuess>,
     settings: &Settings,
 ) -> Result<Solution, InputError> {
+    solve_from(arch, mu, bracket::Start::Near(guess), settings)
+}
+
+/// The solve with the bracket of η_s started from `start` (the input checks first).
+fn solve_from(
+    arch: &Arch,
+    mu: f64,
+    start: bracket::Start,
+    settings: &Settings,
+) -> Result<Solution, InputError> {
     let mu = check_mu(mu)?;
     settings.validate()?;
     let mut candidates = Vec::new();
@@ -145,13 +175,7 @@ pub fn solve_near(
             exact_infimum(
                 arch,
                 mu,
-                solve_inner(
-                    arch,
-                    mu,
-                    settings,
-                    &mut candidates,
-                    bracket::Start::Near(guess),
-                ),
+                solve_inner(arch, mu, settings, &mut candidates, start),
                 settings,
             ),
             None,

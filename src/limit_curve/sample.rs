@@ -1,7 +1,7 @@
 //! η*(μ) sampled over a range of friction coefficients (the `curve` command).
 
 use crate::arch::{Arch, InputError};
-use crate::limit::{solve_near, Outcome};
+use crate::limit::{solve_continued, solve_near, Outcome};
 use crate::search::RootGuess;
 use crate::settings::Settings;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -92,9 +92,18 @@ pub fn sample(
     let (first, least, most) = CHAIN_GUESS_REL;
     let solved = crate::threads::map(&chains, threads, |_, chain| {
         let (mut guess, mut last) = (None, None::<f64>);
+        let mut prior = None;
         let mut points = Vec::with_capacity(chain.len());
         for &mu in chain.iter() {
-            let point = solve_near(arch, mu, guess, settings).map(|s| CurvePoint {
+            let solved = match (guess, &prior) {
+                (Some(g), Some(p)) => solve_continued(arch, mu, g, p, settings),
+                _ => solve_near(arch, mu, guess, settings),
+            };
+            prior = solved.as_ref().ok().and_then(|s| match &s.outcome {
+                Outcome::Limit(ls) => Some(ls.clone()),
+                _ => None,
+            });
+            let point = solved.map(|s| CurvePoint {
                 mu,
                 outcome: s.outcome,
             });

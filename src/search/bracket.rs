@@ -1,6 +1,7 @@
 //! Bracketing the root of an increasing function (the continuum margin s(η) in the
-//! thickness problem, s(μ) in the friction-only problem): Illinois regula falsi with a
-//! geometric-bisection safeguard, and the LP evaluation it calls.
+//! thickness problem, s(μ) in the friction-only problem): inverse quadratic interpolation
+//! and Illinois regula falsi with a geometric-bisection safeguard, and the LP evaluation
+//! it calls.
 
 use crate::admissibility::{margin_over_arch, Goal, Margin, WorkingSet};
 use crate::arch::Arch;
@@ -32,8 +33,9 @@ const SECANT_GUARD: f64 = 1e-3;
 /// The ends of a bracket: (η, f) below the root, (η, f, payload) at or above it.
 pub type Bracket<T> = ((f64, f64), (f64, f64, T));
 
-/// Root of an increasing function f on [lo, hi] with f(lo) < 0 ≤ f(hi): Illinois
-/// regula falsi with geometric bisection as a safeguard. `eval` returns f and the
+/// Root of an increasing function f on [lo, hi] with f(lo) < 0 ≤ f(hi): inverse quadratic
+/// interpolation through the two ends and the end last replaced (Illinois regula falsi
+/// until there is one), with geometric bisection as a safeguard. `eval` returns f and the
 /// payload kept for the upper end. Stops when hi − lo ≤ rel · hi.
 pub fn bracket_root<T: Clone, E>(
     mut lo: (f64, f64),
@@ -45,12 +47,17 @@ pub fn bracket_root<T: Clone, E>(
     let mut side = 0i32;
     let (mut flo, mut fhi) = (lo.1, hi.1);
     let mut widths = [f64::INFINITY; 3];
+    let mut prev: Option<(f64, f64)> = None;
     for _ in 0..max_iter {
         if hi.0 - lo.0 <= rel * hi.0 {
             break;
         }
         let width = hi.0 - lo.0;
-        let secant = hi.0 - fhi * (hi.0 - lo.0) / (fhi - flo);
+        let secant = match prev {
+            Some(p) => inverse_quadratic((lo.0, lo.1), (hi.0, hi.1), p),
+            None => None,
+        }
+        .unwrap_or(hi.0 - fhi * (hi.0 - lo.0) / (fhi - flo));
         let bisect = if lo.0 > 0.0 && hi.0 / lo.0 > 4.0 {
             (lo.0 * hi.0).sqrt()
         } else if lo.0 <= 0.0 {
@@ -71,6 +78,7 @@ pub fn bracket_root<T: Clone, E>(
             widths = [f64::INFINITY; 3];
         }
         if f >= 0.0 {
+            prev = Some((hi.0, hi.1));
             hi = (t, f, payload);
             fhi = f;
             if side == 1 {
@@ -78,6 +86,7 @@ pub fn bracket_root<T: Clone, E>(
             }
             side = 1;
         } else {
+            prev = Some(lo);
             lo = (t, f);
             flo = f;
             if side == -1 {
@@ -87,6 +96,16 @@ pub fn bracket_root<T: Clone, E>(
         }
     }
     Ok((lo, hi))
+}
+
+/// The root of the quadratic in f through three points (t, f) (inverse quadratic
+/// interpolation, as in Brent's method); `None` unless the three values of f differ.
+fn inverse_quadratic((a, fa): (f64, f64), (b, fb): (f64, f64), (c, fc): (f64, f64)) -> Option<f64> {
+    (fa != fb && fa != fc && fb != fc).then(|| {
+        a * fb * fc / ((fa - fb) * (fa - fc))
+            + b * fa * fc / ((fb - fa) * (fb - fc))
+            + c * fa * fb / ((fc - fa) * (fc - fb))
+    })
 }
 
 /// Where the root of an increasing f is expected: near `eta`, within about `rel` of it

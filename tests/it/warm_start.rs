@@ -89,3 +89,66 @@ fn a_guess_changes_the_work_not_the_answer() {
     }
     assert!(compared >= 400, "only {compared} comparisons had an eta_s");
 }
+
+/// η*(μ) continued from the previous μ's least limit state (`limit::solve_continued`, as
+/// `curve` samples) gives the answer of `solve` from the whole range: along chains of μ on
+/// random arches, including chains that cross a change of pattern (the previous pattern
+/// then fails here and the bracket starts from the guess), and from a neighbour at a far μ.
+#[test]
+fn a_neighbouring_pattern_changes_the_work_not_the_answer() {
+    let s = Settings::default();
+    let mut rng = Rng(0xc0_47_1e_d0);
+    let (mut compared, mut limits) = (0, 0);
+    for k in 0..40 {
+        let arch = random_arch(&mut rng, k);
+        let mu0 = 0.3 + 1.5 * rng.next();
+        let mus: Vec<f64> = (0..12).map(|i| mu0 * (1.0 + 0.04 * i as f64)).collect();
+        let mut prior: Option<arch_enum::LeastLimitState> = None;
+        for (i, &mu) in mus.iter().enumerate() {
+            let reference = solve(&arch, mu, &s).expect("solve").outcome;
+            let got = match &prior {
+                Some(p) => {
+                    let guess = RootGuess {
+                        eta: p.eta_static,
+                        rel: if i % 5 == 4 { 0.5 } else { 1e-2 },
+                    };
+                    arch_enum::limit::solve_continued(&arch, mu, guess, p, &s)
+                        .expect("solve_continued")
+                        .outcome
+                }
+                None => reference.clone(),
+            };
+            match (&reference, &got) {
+                (Outcome::Limit(a), Outcome::Limit(b)) => {
+                    assert!(
+                        (a.eta - b.eta).abs() <= 1e-9 * a.eta
+                            && (a.eta_static - b.eta_static).abs() <= 1e-9 * a.eta_static,
+                        "{arch:?} mu = {mu}: eta* {} / eta_s {} from the whole range, {} / {} continued",
+                        a.eta,
+                        a.eta_static,
+                        b.eta,
+                        b.eta_static
+                    );
+                    assert_eq!(a.pattern.len(), b.pattern.len(), "{arch:?} mu = {mu}");
+                    compared += usize::from(prior.is_some());
+                }
+                (a, b) => assert_eq!(
+                    eta_s(a).err(),
+                    eta_s(b).err(),
+                    "{arch:?} mu = {mu}: the outcomes differ"
+                ),
+            }
+            if let Outcome::Limit(ls) = got {
+                limits += 1;
+                // every fourth chain continues from a far neighbour (the first μ's state)
+                if k % 4 != 3 || prior.is_none() {
+                    prior = Some(ls);
+                }
+            }
+        }
+    }
+    assert!(
+        compared >= 250,
+        "only {compared} continued solves compared ({limits} limit states)"
+    );
+}
