@@ -7,11 +7,11 @@
 
 use super::transition::Located;
 use super::{onset, transition};
-use crate::arch::Arch;
+use crate::arch::{Arch, InputError};
 use crate::collapse_mode::{classify, CollapseMode};
 use crate::contact::ContactKind;
 use crate::contact::{Contact, Location};
-use crate::limit::{solve_near, Outcome};
+use crate::limit::{solve_continued, solve_near, LeastLimitState, Outcome, Solution};
 use crate::refine::{solve_system, Unknowns};
 use crate::search::RootGuess;
 use crate::settings::Settings;
@@ -150,6 +150,9 @@ pub(super) struct Tracer<'a> {
     pub(super) unresolved: Vec<(f64, String)>,
     pub(super) no_collapse: Vec<f64>,
     pub(super) no_equilibrium: Vec<f64>,
+    /// The least limit state of the last solve that found one: the next solve near a guess
+    /// starts from its pattern ([`crate::limit::solve_continued`]).
+    last: Option<LeastLimitState>,
 }
 
 impl<'a> Tracer<'a> {
@@ -162,6 +165,7 @@ impl<'a> Tracer<'a> {
             unresolved: Vec::new(),
             no_collapse: Vec::new(),
             no_equilibrium: Vec::new(),
+            last: None,
         }
     }
 
@@ -173,10 +177,27 @@ impl<'a> Tracer<'a> {
         self.no_collapse.extend(other.no_collapse);
         self.no_equilibrium.extend(other.no_equilibrium);
     }
+    /// The solution at μ near `guess`, continued from the last least limit state found
+    /// when there is a guess (the same answer, fewer margin LPs where the pattern holds).
+    fn solve(&mut self, mu: f64, guess: Option<RootGuess>) -> Result<Solution, InputError> {
+        self.solves += 1;
+        let solved = match (guess, &self.last) {
+            (Some(g), Some(p)) => solve_continued(self.arch, mu, g, p, self.settings),
+            _ => solve_near(self.arch, mu, guess, self.settings),
+        };
+        if let Ok(Solution {
+            outcome: Outcome::Limit(ls),
+            ..
+        }) = &solved
+        {
+            self.last = Some(ls.clone());
+        }
+        solved
+    }
+
     /// The boundary at μ, without recording anything.
     fn boundary(&mut self, mu: f64, guess: Option<RootGuess>) -> Result<Sample, Box<Outcome>> {
-        self.solves += 1;
-        let solution = match solve_near(self.arch, mu, guess, self.settings) {
+        let solution = match self.solve(mu, guess) {
             Ok(s) => s,
             Err(e) => {
                 return Err(Box::new(Outcome::Unresolved {
@@ -306,8 +327,7 @@ impl<'a> Tracer<'a> {
 
     /// η_s at μ (expected near `guess`), or NaN: the boundary's η without its pattern.
     fn eta_s(&mut self, mu: f64, guess: RootGuess) -> f64 {
-        self.solves += 1;
-        match solve_near(self.arch, mu, Some(guess), self.settings).map(|s| s.outcome) {
+        match self.solve(mu, Some(guess)).map(|s| s.outcome) {
             Ok(Outcome::Limit(ls)) => ls.eta_static,
             Ok(Outcome::Unresolved {
                 least_static: Some((eta, _)),
