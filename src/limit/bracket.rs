@@ -223,13 +223,13 @@ const PREDICT_AT: [f64; 2] = [1e-1, 1e-3];
 /// relative η).
 const PREDICT_STEP: f64 = 0.05;
 
-/// A bracket of η_s a tenth of `bracket_rel` wide from a neighbouring solution's least
+/// A bracket of η_s a twentieth of `bracket_rel` wide from a neighbouring solution's least
 /// state `prior` (the previous μ of a curve, where that state carries the limit state):
 /// Newton on its pattern at this μ, from its state, gives a state admissible over the arch
-/// at η_p when the pattern still holds here, and the margins at η_p (1 ± [`PREDICT_STEP`]
-/// `bracket_rel`) then bracket η_s, as for a prediction ([`predicted`]). `None` when the
-/// pattern does not hold (Newton fails, its state is not admissible, or the two margins do
-/// not bracket): the caller then brackets from its guess, having spent at most two LPs.
+/// at η_p when the pattern still holds here, so η_s ≤ η_p; a negative margin at η_p (1 −
+/// [`PREDICT_STEP`] `bracket_rel`) then brackets η_s. `None` when the pattern does not
+/// hold (Newton fails, its state is not admissible, or the margin below is not negative):
+/// the caller then brackets from its guess, having spent at most one LP.
 fn continued(
     arch: &Arch,
     mu: f64,
@@ -256,14 +256,17 @@ fn continued(
     if !(r.t > 0.0 && r.t < ETA_TOP) || refined.admissible_verdict(modes, settings).is_err() {
         return Ok(None);
     }
-    let k = PREDICT_STEP * settings.bracket_rel;
-    let (t_hi, t_lo) = (r.t * (1.0 + k), r.t * (1.0 - k));
-    let (f_hi, m_hi) = eval(t_hi)?;
-    if f_hi < 0.0 {
-        return Ok(None);
-    }
+    // the upper end is η_p itself, its state the refined one (admissible over the arch by
+    // the scan, as a limit state is verified); the lower end needs the margin LP
+    let t_lo = r.t * (1.0 - PREDICT_STEP * settings.bracket_rel);
     let (f_lo, _) = eval(t_lo)?;
-    Ok((f_lo < 0.0).then_some(((t_lo, f_lo), (t_hi, f_hi, m_hi))))
+    let top = Margin {
+        x: r.x,
+        margin: 0.0,
+        lp_margin: 0.0,
+        rounds: 0,
+    };
+    Ok((f_lo < 0.0).then_some(((t_lo, f_lo), (r.t, 0.0, top))))
 }
 
 /// A narrowed bracket of η_s from a prediction: Newton on the candidates at the upper end

@@ -55,7 +55,7 @@ pub fn solve(arch: &Arch, mu: f64, settings: &Settings) -> Result<Solution, Inpu
 
 /// [`solve_near`] from a neighbouring solution's least limit state `prior` (the previous
 /// μ of a curve): where `prior` carries its limit state at its η_s, the bracket of η_s
-/// starts with Newton on its pattern at `mu` (two margin LPs when the pattern still holds,
+/// starts with Newton on its pattern at `mu` (one margin LP when the pattern still holds,
 /// instead of a bracket narrowed from `guess`); otherwise, or when the pattern does not
 /// hold here, as [`solve_near`] from `guess`. The same algorithm after the bracket.
 pub fn solve_continued(
