@@ -10,7 +10,7 @@ use super::solution::{LeastLimitState, Outcome};
 use super::vanishing::{vanishing_thickness_state, NO_COLLAPSE};
 use crate::admissibility::{Margin, WorkingSet};
 use crate::arch::{Arch, JointLayout, ETA_TOP};
-use crate::contact::ContactKind;
+use crate::contact::{Contact, ContactKind};
 use crate::refine::solve_pattern;
 use crate::search::{bracket_near, bracket_root, candidates_at, margin_at, Bracket, RootGuess};
 use crate::settings::Settings;
@@ -27,10 +27,11 @@ const BRACKET_MAX_STEPS: usize = 200;
 /// distance at which the worst row turns negative, so that every row is clearly so.
 const FAR_FACTOR: f64 = 2.0;
 
-/// The bracket of η_s with the margin LP's state at its upper end; `Break` with the
-/// outcome when the solve ends before a bracket: no equilibrium (negative margin at the
-/// thickness limit), no collapse (a state without tension at vanishing thickness), or an
-/// LP the back end could not solve.
+/// The bracket of η_s with the margin LP's state at its upper end (and, for a bracket
+/// continued from a neighbour's pattern, the active contacts of the refined state at its
+/// upper end: [`continued`]); `Break` with the outcome when the solve ends before a
+/// bracket: no equilibrium (negative margin at the thickness limit), no collapse (a state
+/// without tension at vanishing thickness), or an LP the back end could not solve.
 pub(super) fn bracket_eta_s(
     arch: &Arch,
     mu: f64,
@@ -38,7 +39,8 @@ pub(super) fn bracket_eta_s(
     ws: &mut WorkingSet,
     start: Start,
     settings: &Settings,
-) -> ControlFlow<Outcome, Bracket<Margin>> {
+) -> ControlFlow<Outcome, (Bracket<Margin>, Option<Vec<Contact>>)> {
+    let mut active = None;
     // A bracket found from the guess has a negative margin at a positive η and an
     // admissible state below the thickness limit: neither "no collapse" nor "no
     // equilibrium". Without a guess (or when it brackets nothing) the whole range.
@@ -47,7 +49,10 @@ pub(super) fn bracket_eta_s(
         Start::Continued(guess, prior) => {
             let mut eval = |eta: f64| margin_or_far(arch, eta, mu, modes, ws, settings);
             let near = match continued(arch, mu, modes, prior, &mut eval, settings) {
-                Ok(Some(b)) => Some(b),
+                Ok(Some((b, at_top))) => {
+                    active = Some(at_top);
+                    Some(b)
+                }
                 _ => bracket_near(guess, ETA_TOP, eval).ok().flatten(),
             };
             let whole = near.is_none();
@@ -86,7 +91,7 @@ pub(super) fn bracket_eta_s(
         bracket_root(lo, hi, settings.bracket_rel, BRACKET_MAX_STEPS, &mut eval)
     });
     match bracket {
-        Ok(b) => Continue(b),
+        Ok(b) => Continue((b, active)),
         Err(e) => Break(lp_failed("while bracketing eta_s", e)),
     }
 }
@@ -223,13 +228,17 @@ const PREDICT_AT: [f64; 2] = [1e-1, 1e-3];
 /// relative η).
 const PREDICT_STEP: f64 = 0.05;
 
+/// A bracket of η_s with the active contacts of the state at its upper end.
+type AtTop = (Bracket<Margin>, Vec<Contact>);
+
 /// A bracket of η_s a twentieth of `bracket_rel` wide from a neighbouring solution's least
 /// state `prior` (the previous μ of a curve, where that state carries the limit state):
 /// Newton on its pattern at this μ, from its state, gives a state admissible over the arch
 /// at η_p when the pattern still holds here, so η_s ≤ η_p; a negative margin at η_p (1 −
 /// [`PREDICT_STEP`] `bracket_rel`) then brackets η_s. `None` when the pattern does not
 /// hold (Newton fails, its state is not admissible, or the margin below is not negative):
-/// the caller then brackets from its guess, having spent at most one LP.
+/// the caller then brackets from its guess, having spent at most one LP. With the bracket,
+/// the active contacts of the refined state (the scan's).
 fn continued(
     arch: &Arch,
     mu: f64,
@@ -237,7 +246,7 @@ fn continued(
     prior: &LeastLimitState,
     eval: &mut impl FnMut(f64) -> Result<(f64, Margin), Undecided>,
     settings: &Settings,
-) -> Result<Option<Bracket<Margin>>, Undecided> {
+) -> Result<Option<AtTop>, Undecided> {
     let from = State {
         arch,
         eta: prior.eta_static,
@@ -253,9 +262,12 @@ fn continued(
         mu,
         x: r.x,
     };
-    if !(r.t > 0.0 && r.t < ETA_TOP) || refined.admissible_verdict(modes, settings).is_err() {
+    if !(r.t > 0.0 && r.t < ETA_TOP) {
         return Ok(None);
     }
+    let Ok(verdict) = refined.admissible_verdict(modes, settings) else {
+        return Ok(None);
+    };
     // the upper end is η_p itself, its state the refined one (admissible over the arch by
     // the scan, as a limit state is verified); the lower end needs the margin LP
     let t_lo = r.t * (1.0 - PREDICT_STEP * settings.bracket_rel);
@@ -266,7 +278,7 @@ fn continued(
         lp_margin: 0.0,
         rounds: 0,
     };
-    Ok((f_lo < 0.0).then_some(((t_lo, f_lo), (r.t, 0.0, top))))
+    Ok((f_lo < 0.0).then_some((((t_lo, f_lo), (r.t, 0.0, top)), verdict.active)))
 }
 
 /// A narrowed bracket of η_s from a prediction: Newton on the candidates at the upper end

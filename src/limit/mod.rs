@@ -34,7 +34,7 @@ pub use vertical::{mu_ms_of, MU_MS_ROUNDING, MU_MS_ZERO};
 
 use crate::admissibility::{Margin, WorkingSet};
 use crate::arch::{check_mu, Arch, InputError, JointLayout};
-use crate::contact::ContactKind;
+use crate::contact::{Contact, ContactKind};
 use crate::refine::Refined;
 use crate::search::{candidates_at, RootGuess};
 use crate::settings::Settings;
@@ -328,15 +328,48 @@ fn solve_inner(
 ) -> Outcome {
     let modes = ContactKind::active_at(mu);
     let mut ws = WorkingSet::initial(arch);
-    let (lo, hi) = match bracket_eta_s(arch, mu, modes, &mut ws, start, settings) {
+    let ((lo, hi), active) = match bracket_eta_s(arch, mu, modes, &mut ws, start, settings) {
         Continue(b) => b,
         Break(outcome) => return outcome,
     };
     let (eta_lo, eta_hi, m_hi) = (lo.0, hi.0, hi.2);
+    if let Some(ls) =
+        active.and_then(|a| at_top(arch, mu, &a, (eta_lo, eta_hi, m_hi.x), settings, log))
+    {
+        return Outcome::Limit(ls);
+    }
     match at_bracket(arch, mu, modes, (eta_lo, eta_hi, m_hi), settings, log) {
         Continue(least) => across_gap(arch, mu, modes, least, (eta_lo, eta_hi), settings, log),
         Break(outcome) => outcome,
     }
+}
+
+/// The limit state at the upper end of a continued bracket, where the state there is the
+/// refined one of a neighbour's pattern and `active` its active contacts: the enumeration's
+/// whole-set step on them alone (Newton from that state, admissibility, a mechanism). `None`
+/// when they carry no mechanism: the caller then enumerates the candidates as usual.
+fn at_top(
+    arch: &Arch,
+    mu: f64,
+    active: &[Contact],
+    (eta_lo, eta_hi, x): (f64, f64, Reactions),
+    settings: &Settings,
+    log: &mut Vec<Candidate>,
+) -> Option<LeastLimitState> {
+    let top_slack = eta_hi * (1.0 + settings.root_slack);
+    let found = enumerate(
+        arch,
+        mu,
+        active,
+        &[],
+        x,
+        eta_hi,
+        (eta_lo, eta_hi),
+        top_slack,
+        settings,
+        log,
+    );
+    found.limit.filter(|ls| ls.eta <= top_slack)
 }
 
 /// Steps 2–4 at the upper end of the bracket [η_lo, η_hi] (the margin LP's state `m_hi`

@@ -327,7 +327,8 @@ impl<'a> Tracer<'a> {
 
     /// η_s at μ (expected near `guess`), or NaN: the boundary's η without its pattern.
     fn eta_s(&mut self, mu: f64, guess: RootGuess) -> f64 {
-        match self.solve(mu, Some(guess)).map(|s| s.outcome) {
+        self.solves += 1;
+        match solve_near(self.arch, mu, Some(guess), self.settings).map(|s| s.outcome) {
             Ok(Outcome::Limit(ls)) => ls.eta_static,
             Ok(Outcome::Unresolved {
                 least_static: Some((eta, _)),
