@@ -164,7 +164,15 @@ fn solve_from(
             scan,
         });
     }
-    let (outcome, vertical) = match vertical::band(arch, mu, settings) {
+    // a neighbour's limit state at μ_p ≥ μ_ms with μ ≥ μ_p (1 + resolution) is clearly
+    // above the band: no friction-only LP needed
+    let band = match &start {
+        bracket::Start::Continued(_, p) if p.mu * (1.0 + settings.mu_ms_resolution) <= mu => {
+            vertical::Band::Above
+        }
+        _ => vertical::band(arch, mu, settings),
+    };
+    let (outcome, vertical) = match band {
         vertical::Band::Near(fl) => {
             let above = |mu1: f64| solve_at(arch, mu1, settings, &mut Vec::new());
             let outcome = vertical::near_mu_ms(arch, mu, &fl, settings, &mut candidates, above);
