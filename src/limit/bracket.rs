@@ -11,7 +11,8 @@ use super::vanishing::{vanishing_thickness_state, NO_COLLAPSE};
 use crate::admissibility::{Margin, WorkingSet};
 use crate::arch::{Arch, JointLayout, ETA_TOP};
 use crate::contact::{Contact, ContactKind};
-use crate::refine::solve_pattern;
+use crate::refine::{solve_pattern, Refined};
+use crate::scan::Verdict;
 use crate::search::{bracket_near, bracket_root, candidates_at, margin_at, Bracket, RootGuess};
 use crate::settings::Settings;
 use crate::state::State;
@@ -228,6 +229,27 @@ const PREDICT_AT: [f64; 2] = [1e-1, 1e-3];
 /// relative η).
 const PREDICT_STEP: f64 = 0.05;
 
+/// Newton on `pattern` from `from` (η unknown), and the refined state's verdict when it
+/// lies inside (0, thickness limit) and is admissible over the whole arch.
+fn admissible_refined(
+    from: &State,
+    pattern: &[Contact],
+    modes: &[ContactKind],
+    settings: &Settings,
+) -> Option<(Refined, Verdict)> {
+    let r = solve_pattern(from, pattern, settings).ok()?;
+    let refined = State {
+        eta: r.t,
+        x: r.x,
+        ..*from
+    };
+    if !(r.t > 0.0 && r.t < ETA_TOP) {
+        return None;
+    }
+    let verdict = refined.admissible_verdict(modes, settings).ok()?;
+    Some((r, verdict))
+}
+
 /// A bracket of η_s with the active contacts of the state at its upper end.
 type AtTop = (Bracket<Margin>, Vec<Contact>);
 
@@ -253,19 +275,7 @@ fn continued(
         mu,
         x: prior.x_static,
     };
-    let Ok(r) = solve_pattern(&from, &prior.pattern, settings) else {
-        return Ok(None);
-    };
-    let refined = State {
-        arch,
-        eta: r.t,
-        mu,
-        x: r.x,
-    };
-    if !(r.t > 0.0 && r.t < ETA_TOP) {
-        return Ok(None);
-    }
-    let Ok(verdict) = refined.admissible_verdict(modes, settings) else {
+    let Some((r, verdict)) = admissible_refined(&from, &prior.pattern, modes, settings) else {
         return Ok(None);
     };
     // the upper end is η_p itself, its state the refined one (admissible over the arch by
@@ -304,18 +314,9 @@ fn predicted(
     let cand = candidates_at(&top, Some(hi.2.margin.max(0.0)), modes, settings);
     // Newton on the whole candidate set, and its state admissible over the arch (the least
     // admissible state the enumeration's first group would give; no mechanism needed here)
-    let Ok(r) = solve_pattern(&top, &cand, settings) else {
+    let Some((r, _)) = admissible_refined(&top, &cand, modes, settings) else {
         return Ok((lo, hi));
     };
-    let refined = State {
-        arch,
-        eta: r.t,
-        mu,
-        x: r.x,
-    };
-    if refined.admissible_verdict(modes, settings).is_err() {
-        return Ok((lo, hi));
-    }
     let eta_p = r.t;
     let k = PREDICT_STEP * settings.bracket_rel;
     for t in [eta_p * (1.0 + k), eta_p * (1.0 - k)] {
