@@ -67,7 +67,8 @@ pub fn bracket_root<T: Clone, E>(
         };
         widths = [widths[1], widths[2], width];
         let stalled = widths[2] > 0.5 * widths[0];
-        let t = if stalled || !(secant > lo.0 && secant < hi.0) {
+        // (a secant point on an end, where f is 0 there, is moved inside like any other)
+        let t = if stalled || !(secant >= lo.0 && secant <= hi.0) {
             bisect
         } else {
             // keep the secant point away from the ends
