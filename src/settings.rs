@@ -132,6 +132,12 @@ pub struct Settings {
     /// A continuous arch's limit states are searched on discretisations of this many and
     /// twice as many equal pieces (then refined on the continuum). Default 48.
     pub sweep_pieces: usize,
+    /// The pieces are doubled at most this many times: where two consecutive
+    /// discretisations' refined limit states differ (a branch of limit states that the
+    /// coarser one misses, near where the branch is born or dies), the next is tried until
+    /// two agree. 1: `sweep_pieces` and twice as many only. Default 3 (up to 8 ×
+    /// `sweep_pieces`).
+    pub sweep_doublings: usize,
     /// The complete limit-state sweep of a discrete arch (work growing faster than the
     /// square of the number of joints) is run up to this many joints; beyond, the search
     /// is reported as not done (η_s and λ_static stay exact). Default 256 (a 255-voussoir
@@ -228,6 +234,7 @@ impl Default for Settings {
             boundary_match: 1e-9,
             event_tol: 1e-9,
             sweep_pieces: 48,
+            sweep_doublings: 3,
             sweep_max_joints: 256,
             ridge_max_joints: 16384,
             unbounded_reactions: 1e6,
@@ -331,6 +338,7 @@ impl Settings {
         count("settings.max_rounds", self.max_rounds, 1, 10_000)?;
         count("settings.curve_samples", self.curve_samples, 2, 10_000)?;
         count("settings.sweep_pieces", self.sweep_pieces, 4, 10_000)?;
+        count("settings.sweep_doublings", self.sweep_doublings, 1, 8)?;
         count(
             "settings.sweep_max_joints",
             self.sweep_max_joints,

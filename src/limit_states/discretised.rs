@@ -2,7 +2,7 @@
 //! thickness η, a load multiplier λ): each discretisation's limit states are carried over
 //! to the continuum (adjacent contacts merged into tangencies, Newton, verified over the
 //! whole arch), and the list stands when the discretisations of J and 2J pieces give the
-//! same set.
+//! same set (where they differ, 2J and 4J, and so on up to a limit).
 
 use super::sweep::LimitState;
 use crate::settings::Settings;
@@ -15,44 +15,72 @@ pub(crate) struct Carried {
     pub(crate) events: Option<usize>,
 }
 
-/// Runs `carry` on `settings.sweep_pieces` and twice as many pieces, removes repeats from
-/// each list (`same`) and sorts it (`sort`); the finer list is the answer when both agree
-/// (the events of the finer search, or the coarser's where the finer ran none). `Err` says
-/// why not: a discretisation failed, or the lists differ.
+/// Runs `carry` on `settings.sweep_pieces` pieces and on twice as many, removes repeats
+/// from each list (`same`) and sorts it (`sort`); the finer list is the answer when both
+/// agree. Where they differ, the pieces are doubled again (at most
+/// `settings.sweep_doublings` doublings in all) until two consecutive lists agree and
+/// hold every state any list held (each carried state is a limit state of the continuum,
+/// so a list without one of them is incomplete, whatever its neighbour says). Returns the
+/// answer, the events of the finer search (or of the coarser where the finer ran none)
+/// and the finer discretisation's pieces. `Err` says why not: a discretisation failed, or
+/// no two consecutive lists agree on every state found.
 pub(crate) fn agreed(
     settings: &Settings,
     mut carry: impl FnMut(usize) -> Result<Carried, Undecided>,
     same: impl Fn(&LimitState, &LimitState) -> bool,
     sort: impl Fn(&mut Vec<LimitState>),
-) -> Result<(Vec<LimitState>, Option<usize>), Undecided> {
-    let (coarse_pieces, fine_pieces) = (settings.sweep_pieces, 2 * settings.sweep_pieces);
-    let mut lists: Vec<Vec<LimitState>> = Vec::new();
-    let mut events = None;
-    for pieces in [coarse_pieces, fine_pieces] {
+) -> Result<(Vec<LimitState>, Option<usize>, usize), Undecided> {
+    let holds = |l: &[LimitState], p: &LimitState| l.iter().any(|q| same(p, q));
+    let mut list = |pieces: usize| {
         let c = carry(pieces)?;
-        events = c.events.or(events);
         let mut found: Vec<LimitState> = Vec::new();
         for s in c.states {
-            if !found.iter().any(|f| same(f, &s)) {
+            if !holds(&found, &s) {
                 found.push(s);
             }
         }
         sort(&mut found);
-        lists.push(found);
+        Ok::<_, Undecided>((found, c.events))
+    };
+    let ts = |l: &[LimitState]| l.iter().map(|s| s.t).collect::<Vec<f64>>();
+    let mut pieces = settings.sweep_pieces;
+    let (mut coarse, mut events) = list(pieces)?;
+    let mut seen = coarse.clone();
+    // each discretisation's pieces and the η (or λ) of its states, for the message
+    let mut tried = vec![(pieces, ts(&coarse))];
+    let unsettled = |tried: &[(usize, Vec<f64>)]| {
+        let (mut ps, ls): (Vec<String>, Vec<String>) = tried
+            .iter()
+            .map(|(p, l)| (p.to_string(), format!("{l:?}")))
+            .unzip();
+        let last = ps.pop().unwrap_or_default();
+        format!(
+            "the refined limit states of {} and {last} pieces do not settle: {}",
+            ps.join(", "),
+            ls.join(" vs ")
+        )
+    };
+    for _ in 0..settings.sweep_doublings {
+        let (fine, fine_events) = match list(2 * pieces) {
+            Ok(l) => l,
+            Err(e) if tried.len() == 1 => return Err(e),
+            Err(e) => return Err(e.map_text(|e| format!("{}; then {e}", unsettled(&tried)))),
+        };
+        events = fine_events.or(events);
+        pieces *= 2;
+        tried.push((pieces, ts(&fine)));
+        for s in &fine {
+            if !holds(&seen, s) {
+                seen.push(s.clone());
+            }
+        }
+        let agree = fine.len() == coarse.len() && fine.iter().all(|p| holds(&coarse, p));
+        if agree && seen.iter().all(|p| holds(&fine, p)) {
+            return Ok((fine, events, pieces));
+        }
+        coarse = fine;
     }
-    let fine = lists.pop().expect("two discretisations");
-    let coarse = lists.pop().expect("two discretisations");
-    let agree =
-        fine.len() == coarse.len() && fine.iter().all(|p| coarse.iter().any(|q| same(p, q)));
-    if !agree {
-        let ts = |l: &[LimitState]| l.iter().map(|s| s.t).collect::<Vec<f64>>();
-        return Err(Undecided::Discretisation(format!(
-            "the refined limit states of {coarse_pieces} and {fine_pieces} pieces differ: {:?} vs {:?}",
-            ts(&coarse),
-            ts(&fine)
-        )));
-    }
-    Ok((fine, events))
+    Err(Undecided::Discretisation(unsettled(&tried)))
 }
 
 /// Two carried states are the same: their parameters within `t_tol` and the same contacts

@@ -52,8 +52,8 @@ pub struct LimitStates {
     /// (empty for the other methods): the evidence a certificate carries.
     pub no_mechanism: Vec<CheckedPoint>,
     /// How the set was established: `"sweep"` (discrete arch: complete by the sweep's
-    /// argument) or `"refined J/2J"` (continuous arch: the refined limit states of two
-    /// discretisations agree).
+    /// argument) or `"refined J/2J"` (continuous arch: the refined limit states of the
+    /// discretisations of J and 2J pieces agree).
     pub method: String,
     /// At μ = μ_ms: the sliding contacts whose purely sliding mechanism makes every
     /// admissible state at every η ≥ η_s a limit state (the vertical branch; `above` is
@@ -351,7 +351,8 @@ fn hinges_only(
 /// A continuous arch: sweep two discretisations (J and 2J equal pieces), carry each discrete
 /// limit state over to the continuum (adjacent contacts of one kind merged into one
 /// tangency contact), refine it by Newton, verify it over the whole arch, and accept the set
-/// when both discretisations give the same one.
+/// when both discretisations give the same one (where they differ, finer ones:
+/// [`discretised::agreed`]).
 fn continuous(
     arch: &Arch,
     mu: f64,
@@ -361,8 +362,9 @@ fn continuous(
     ridge: bool,
     settings: &Settings,
 ) -> Result<LimitStates, Undecided> {
-    let mut walked = 0;
+    let (mut walked, mut tried) = (0, 0);
     let carry = |pieces: usize| -> Result<Carried, Undecided> {
+        tried += 1;
         let discrete = arch
             .clone()
             .with_blocks(pieces)
@@ -395,7 +397,7 @@ fn continuous(
         discretised::same_state(p, q, settings.same_state_eta * p.t, settings)
     };
     let sort = |l: &mut Vec<LimitState>| ridge::sort_states(l, settings);
-    let (fine, events) = agreed(settings, carry, same, sort)?;
+    let (fine, events, fine_pieces) = agreed(settings, carry, same, sort)?;
     Ok(LimitStates {
         eta_s,
         attained,
@@ -405,12 +407,12 @@ fn continuous(
         no_mechanism: Vec::new(),
         method: format!(
             "refined {}/{}{}",
-            settings.sweep_pieces,
-            2 * settings.sweep_pieces,
+            fine_pieces / 2,
+            fine_pieces,
             match walked {
-                2 => " (ridge)",
-                1 => " (ridge and sweep)",
-                _ => "",
+                0 => "",
+                w if w == tried => " (ridge)",
+                _ => " (ridge and sweep)",
             }
         ),
         vertical: None,

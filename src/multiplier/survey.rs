@@ -347,8 +347,8 @@ fn continuous_survey(
 /// discretisations (J and 2J equal pieces, the point load's angle a joint of both), each
 /// discrete limit state carried over to the continuum ([`continuum::carry_over`]) and kept
 /// when it is one there too (a mechanism with positive live power); the answer stands when
-/// both discretisations give the same set, as for the thickness search. λ_static itself is
-/// the exact continuum's. A continuum of limit states in a discretisation (the loaded
+/// both discretisations give the same set (or, where they differ, two finer ones), as for the
+/// thickness search. λ_static itself is the exact continuum's. A continuum of limit states in a discretisation (the loaded
 /// point sliding along its section) is not carried over yet: no decision then.
 fn continuous_finite_friction(
     arch: &Arch,
@@ -367,7 +367,7 @@ fn continuous_finite_friction(
         discretised::same_state(p, q, settings.same_state_eta * (1.0 + p.t.abs()), settings)
     };
     let sort = |l: &mut Vec<LimitState>| l.sort_by(|p, q| p.t.total_cmp(&q.t));
-    let (fine, events) = agreed(settings, carry, same, sort)?;
+    let (fine, events, _) = agreed(settings, carry, same, sort)?;
     let Some((lambda_s, x_s, pattern_s)) = max else {
         if fine.is_empty() {
             return Ok(LoadOutcome::NoCollapse {

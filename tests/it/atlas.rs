@@ -330,9 +330,10 @@ fn certified_brackets() {
 }
 
 /// The load map (`atlas --horizontal`): on the continuous arches around α = 0.5 at μ = 1,
-/// the largest reduction of the collapse acceleration below the static maximum, 8.9 % at
-/// α = 0.5 (η = 0.5925, a mixed mode), is the largest over the cells, and every answered
-/// cell is the load survey run on its own; on five voussoirs each cell's collapse multiplier
+/// the largest reduction of the collapse acceleration below the static maximum, 12.5 % at
+/// α = 0.45 (η = 0.6090, a mixed mode; the limit state λ = 0.23659 is found by 96 and 192
+/// pieces, missed by 48), is the largest over the cells, and every answered cell is the
+/// load survey run on its own; on five voussoirs each cell's collapse multiplier
 /// is the least limit state of the brute force (`load_reference`: every pattern of contacts,
 /// an LP each), and "no collapse" where it finds none. Bad flags are refused by name.
 #[test]
@@ -360,10 +361,10 @@ fn the_load_map_finds_the_reduction_and_agrees_with_the_brute_force() {
     };
     let map = load_map(&grid, &settings, 2, &|_, _| {}).unwrap();
     let best = map.largest(1.0).unwrap();
-    assert_eq!(best.alpha, 0.5);
+    assert_eq!(best.alpha, 0.45);
     let r = best.reduction().unwrap();
     assert!(
-        (r - 0.0889).abs() < 5e-4 && (best.eta.unwrap() - 0.5925).abs() < 1e-3,
+        (r - 0.1251).abs() < 5e-4 && (best.eta.unwrap() - 0.6090).abs() < 1e-3,
         "{best:?}"
     );
     let most = map
