@@ -951,7 +951,8 @@ class SolveResult(_x.SolveExtras, _c.Result):
         eta: η*(μ) = η_s, the least thickness ratio t/r at which the arch stands.
         eta_bracket: What is known of η_s when it is `unresolved`: [lower, upper].
         fill: The fill (an arch with fill only).
-        limit_states: Every limit state with η in [η_s, 2), ascending.
+        limit_states: Every limit state with η in [η_s, 2), ascending (with
+            `search.complete` false: the ones found, each verified; others may exist).
         mechanism: The mechanism of the least limit state, with the extreme rays of its
             cone.
         mechanism_at_eta: Whether the least admissible state carries a non-associative
@@ -968,7 +969,8 @@ class SolveResult(_x.SolveExtras, _c.Result):
         thickness_scan: With fill: the scan of the thickness range
             (`crate::limit::filled`).
         unique: Whether exactly one limit state has η in [η_s, 2) (`null`: search not
-            completed).
+            completed; `false` also when it was not completed but two limit states were
+            found).
         vertical_branch: At μ = μ_ms: the purely sliding limit states of every η ≥ η_s.
     """
 

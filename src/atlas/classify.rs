@@ -44,7 +44,19 @@ pub fn classify(arch: &Arch, mu: f64, settings: &Settings) -> Result<Classified,
     }
     let states = match &sv.states {
         Ok(s) => s,
-        Err(e) => return Ok(Err(e.clone())),
+        Err(e) => {
+            // not searched to the end, but η_s carries a limit state and another was found
+            // above it (verified on the continuum): non-unique all the same
+            return Ok(match &sv.solution.outcome {
+                crate::Outcome::Limit(ls)
+                    if ls.eta == ls.eta_static && ls.attained && !sv.found.is_empty() =>
+                {
+                    let above = sv.found.iter().map(|s| s.t);
+                    Ok((Kind::NonUnique, std::iter::once(ls.eta).chain(above).collect()))
+                }
+                _ => Err(e.clone()),
+            });
+        }
     };
     let mut etas: Vec<f64> = states.above.iter().map(|s| s.t).collect();
     if states.mechanism_at_eta_s {

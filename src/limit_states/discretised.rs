@@ -15,6 +15,26 @@ pub(crate) struct Carried {
     pub(crate) events: Option<usize>,
 }
 
+/// A continuous arch's search that did not settle: why, and the limit states its
+/// discretisations found (each carried over to the continuum, refined and verified there,
+/// so each is a limit state; the list may miss others).
+#[derive(Debug, Clone)]
+pub struct Unsettled {
+    /// Why the list is not complete.
+    pub why: Undecided,
+    /// The limit states found all the same, ascending.
+    pub found: Vec<LimitState>,
+}
+
+impl From<Undecided> for Unsettled {
+    fn from(why: Undecided) -> Unsettled {
+        Unsettled {
+            why,
+            found: Vec::new(),
+        }
+    }
+}
+
 /// Runs `carry` on `settings.sweep_pieces` pieces and on twice as many, removes repeats
 /// from each list (`same`) and sorts it (`sort`); the finer list is the answer when both
 /// agree. Where they differ, the pieces are doubled again (at most
@@ -22,14 +42,14 @@ pub(crate) struct Carried {
 /// hold every state any list held (each carried state is a limit state of the continuum,
 /// so a list without one of them is incomplete, whatever its neighbour says). Returns the
 /// answer, the events of the finer search (or of the coarser where the finer ran none)
-/// and the finer discretisation's pieces. `Err` says why not: a discretisation failed, or
-/// no two consecutive lists agree on every state found.
+/// and the finer discretisation's pieces. `Err` says why not (a discretisation failed, or
+/// no two consecutive lists agree on every state found) with every state found.
 pub(crate) fn agreed(
     settings: &Settings,
     mut carry: impl FnMut(usize) -> Result<Carried, Undecided>,
     same: impl Fn(&LimitState, &LimitState) -> bool,
     sort: impl Fn(&mut Vec<LimitState>),
-) -> Result<(Vec<LimitState>, Option<usize>, usize), Undecided> {
+) -> Result<(Vec<LimitState>, Option<usize>, usize), Unsettled> {
     let holds = |l: &[LimitState], p: &LimitState| l.iter().any(|q| same(p, q));
     let mut list = |pieces: usize| {
         let c = carry(pieces)?;
@@ -63,8 +83,14 @@ pub(crate) fn agreed(
     for _ in 0..settings.sweep_doublings {
         let (fine, fine_events) = match list(2 * pieces) {
             Ok(l) => l,
-            Err(e) if tried.len() == 1 => return Err(e),
-            Err(e) => return Err(e.map_text(|e| format!("{}; then {e}", unsettled(&tried)))),
+            Err(e) if tried.len() == 1 => return Err(e.into()),
+            Err(e) => {
+                sort(&mut seen);
+                return Err(Unsettled {
+                    why: e.map_text(|e| format!("{}; then {e}", unsettled(&tried))),
+                    found: seen,
+                });
+            }
         };
         events = fine_events.or(events);
         pieces *= 2;
@@ -80,7 +106,11 @@ pub(crate) fn agreed(
         }
         coarse = fine;
     }
-    Err(Undecided::Discretisation(unsettled(&tried)))
+    sort(&mut seen);
+    Err(Unsettled {
+        why: Undecided::Discretisation(unsettled(&tried)),
+        found: seen,
+    })
 }
 
 /// Two carried states are the same: their parameters within `t_tol` and the same contacts

@@ -28,7 +28,7 @@ use crate::settings::{LimitStateSearch, Settings};
 use crate::state::State;
 use crate::statics::Reactions;
 use crate::undecided::Undecided;
-use discretised::{agreed, Carried};
+use discretised::{agreed, Carried, Unsettled};
 pub use sweep::{CheckedPoint, LimitState};
 
 /// Every limit state of a discrete arch at friction μ, above the least admissible state.
@@ -69,13 +69,26 @@ pub struct Survey {
     pub solution: Solution,
     /// Every limit state above η_s, or why the search could not be completed.
     pub states: Result<LimitStates, Undecided>,
+    /// Where the search is not completed because a continuous arch's discretisations do
+    /// not settle: the limit states above η_s that some of them found, each refined and
+    /// verified on the continuum (each is a limit state; others may exist), ascending.
+    /// Empty otherwise.
+    pub found: Vec<LimitState>,
 }
 
 impl Survey {
     /// Whether exactly one limit state exists with η in [η_s, 2) (`None`: the search was
-    /// not completed).
+    /// not completed, and the limit states it found are not two: a least state carrying a
+    /// mechanism and one found above it, or two above, decide `false` all the same).
     pub fn unique(&self) -> Option<bool> {
-        let s = self.states.as_ref().ok()?;
+        let s = match &self.states {
+            Ok(s) => s,
+            Err(_) => {
+                let at_eta_s = matches!(&self.solution.outcome,
+                    Outcome::Limit(ls) if ls.eta == ls.eta_static && ls.attained);
+                return (usize::from(at_eta_s) + self.found.len() >= 2).then_some(false);
+            }
+        };
         if s.vertical.is_some() {
             return Some(false);
         }
@@ -90,7 +103,8 @@ impl Survey {
 pub struct Rays {
     /// The least limit state's (`Outcome::Limit`), when there is one.
     pub least: Option<Vec<Vec<f64>>>,
-    /// Each limit state's above η_s, in the order of [`LimitStates::above`].
+    /// Each limit state's above η_s, in the order of [`LimitStates::above`] (or of
+    /// [`Survey::found`] where the search is not complete).
     pub above: Vec<Vec<Vec<f64>>>,
 }
 
@@ -108,12 +122,13 @@ impl Survey {
             )),
             _ => None,
         };
-        let above = self.states.as_ref().map_or(Vec::new(), |s| {
-            s.above
-                .iter()
-                .map(|a| mechanism::extreme_mechanisms(arch, a.t, &a.mechanism, settings))
-                .collect()
-        });
+        let above = self
+            .states
+            .as_ref()
+            .map_or(&self.found, |s| &s.above)
+            .iter()
+            .map(|a| mechanism::extreme_mechanisms(arch, a.t, &a.mechanism, settings))
+            .collect();
         Rays { least, above }
     }
 }
@@ -121,8 +136,15 @@ impl Survey {
 /// [`solve`] and [`search`] together.
 pub fn survey(arch: &Arch, mu: f64, settings: &Settings) -> Result<Survey, InputError> {
     let solution = solve(arch, mu, settings)?;
-    let states = search_from(&solution, settings);
-    Ok(Survey { solution, states })
+    let (states, found) = match search_found(&solution, settings) {
+        Ok(s) => (Ok(s), Vec::new()),
+        Err(u) => (Err(u.why), u.found),
+    };
+    Ok(Survey {
+        solution,
+        states,
+        found,
+    })
 }
 
 /// Searches every limit state of `arch` at friction `mu` with η above the least admissible
@@ -148,9 +170,15 @@ pub fn search_after(sol: &Solution, settings: &Settings) -> Result<LimitStates, 
 const FILL_SWEEP_MIN_ETA: f64 = 1e-4;
 
 fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Undecided> {
+    search_found(sol, settings).map_err(|u| u.why)
+}
+
+/// [`search_from`], with the limit states found where a continuous arch's discretisations
+/// do not settle.
+fn search_found(sol: &Solution, settings: &Settings) -> Result<LimitStates, Unsettled> {
     let (arch, mu) = (&sol.arch, sol.mu);
     if let (Some(sliding), Outcome::Limit(ls)) = (&sol.vertical, &sol.outcome) {
-        return vertical_branch(sol, ls, sliding, settings);
+        return Ok(vertical_branch(sol, ls, sliding, settings)?);
     }
     // whether η_s is attained: the solve's word for a limit state (a large finite state
     // below every weightless direction is attained), else by the size of the reactions
@@ -166,12 +194,10 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Undec
             ..
         } => (*eta, *x, false, bounded(arch, x, settings)),
         Outcome::NoCollapse { .. } if matches!(arch.layout(), JointLayout::Discrete(_)) => {
-            return from_vanishing_thickness(arch, mu, settings);
+            return Ok(from_vanishing_thickness(arch, mu, settings)?);
         }
         _ => {
-            return Err(Undecided::Resolution(
-                "no least admissible state to start from".into(),
-            ))
+            return Err(Undecided::Resolution("no least admissible state to start from".into()).into())
         }
     };
     // an infimum approached only with reactions growing without bound is not a state: no
@@ -183,18 +209,18 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Undec
         // paths grow like 1/η; one such arch of 234 compared lost two limit states
         return Err(Undecided::NotCovered(
             "with fill, eta_s is an infimum (the least states' reactions grow without bound): the limit-state search above it is not covered yet".into(),
-        ));
+        ).into());
     }
     if arch.fill().is_some() && eta_s < FILL_SWEEP_MIN_ETA {
         return Err(Undecided::Resolution(format!(
             "with fill, eta_s = {eta_s:e} is below {FILL_SWEEP_MIN_ETA:e}: there the fill's 1/eta spreads the sweep's polynomials over that many orders of magnitude, and their roots are not resolved"
-        )));
+        )).into());
     }
     if eta_s < settings.sweep_min_eta {
         return Err(Undecided::Resolution(format!(
             "eta_s = {eta_s:e} is below {:e}, where the sweep's polynomial roots are not resolved",
             settings.sweep_min_eta
-        )));
+        )).into());
     }
     // P(η) with an interior point just above η_s: at μ = ∞ no limit state lies above
     // (`hinges_only`), at finite μ every one lies on the ridge over ∂Q (`ridge`)
@@ -247,7 +273,8 @@ fn search_from(sol: &Solution, settings: &Settings) -> Result<LimitStates, Undec
         return Err(match walk_failure {
             Some(w) => f.map_text(|f| format!("{f}; {w}")),
             None => f,
-        });
+        }
+        .into());
     }
     let mut above: Vec<LimitState> = sw.states.into_iter().filter(|s| s.t > lo).collect();
     ridge::sort_states(&mut above, settings);
@@ -361,7 +388,7 @@ fn continuous(
     mechanism_at_eta_s: bool,
     ridge: bool,
     settings: &Settings,
-) -> Result<LimitStates, Undecided> {
+) -> Result<LimitStates, Unsettled> {
     let (mut walked, mut tried) = (0, 0);
     let carry = |pieces: usize| -> Result<Carried, Undecided> {
         tried += 1;

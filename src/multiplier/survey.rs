@@ -367,7 +367,7 @@ fn continuous_finite_friction(
         discretised::same_state(p, q, settings.same_state_eta * (1.0 + p.t.abs()), settings)
     };
     let sort = |l: &mut Vec<LimitState>| l.sort_by(|p, q| p.t.total_cmp(&q.t));
-    let (fine, events, _) = agreed(settings, carry, same, sort)?;
+    let (fine, events, _) = agreed(settings, carry, same, sort).map_err(|u| u.why)?;
     let Some((lambda_s, x_s, pattern_s)) = max else {
         if fine.is_empty() {
             return Ok(LoadOutcome::NoCollapse {

@@ -307,7 +307,9 @@ fn assert_mirror_pair(a: &LimitState, b: &LimitState) {
 /// agree on the pair, which the independent reference of `continuum_reference` finds
 /// admissible over the whole arch with its contacts active. At α = 0.65, μ = 0.9257 the
 /// lists alternate (the pair found by 48 × 2 and 48 × 8 pieces, missed by 48 and 48 × 4):
-/// no list is taken, and the message lists all four.
+/// no list is taken, and the message lists all four; but η_s carries a limit state and the
+/// pair found is verified on the continuum, so `unique` is decided `false` all the same
+/// (`solve --json` lists the three, with `search.complete` false).
 #[test]
 fn finer_discretisations_decide_where_two_differ() {
     use arch_enum::undecided::Undecided;
@@ -349,6 +351,24 @@ fn finer_discretisations_decide_where_two_differ() {
         ),
         other => panic!("expected lists that do not settle, got {other:?}"),
     }
+    let sv = arch_enum::limit_states::survey(&alternating, 0.9257, &Settings::default()).unwrap();
+    assert!(sv.states.is_err());
+    assert_eq!(sv.found.len(), 2);
+    assert_mirror_pair(&sv.found[0], &sv.found[1]);
+    assert_eq!(sv.unique(), Some(false));
+    let (v, code) = crate::cli::json_of(&["solve", "--alpha", "0.65", "--mu", "0.9257"]);
+    assert_eq!(code, 0);
+    assert_eq!(v["unique"], false);
+    assert_eq!(v["search"]["complete"], false);
+    let listed: Vec<f64> = v["limit_states"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|l| l["eta"].as_f64().unwrap())
+        .collect();
+    assert_eq!(listed.len(), 3, "{listed:?}");
+    assert_eq!(listed[0], v["eta"].as_f64().unwrap());
+    assert_eq!(&listed[1..], &[sv.found[0].t, sv.found[1].t]);
 }
 
 /// Issue 10: an arch whose springings lie nearly one above the other (a steep segment):

@@ -3,8 +3,8 @@
 use super::common::{status, ArchJson, JSON_VERSION};
 use super::state::{mechanism_with_rays, reactions, MechanismJson, Reactions};
 use crate::contact::Contact;
-use crate::limit::{Candidate, LeastLimitState, Outcome};
-use crate::limit_states::{LimitStates, Rays, Survey};
+use crate::limit::{Candidate, LeastLimitState, Outcome, Solution};
+use crate::limit_states::{LimitState, LimitStates, Rays, Survey};
 use schemars::JsonSchema;
 use serde::Serialize;
 
@@ -93,10 +93,12 @@ pub struct SolveJson {
     /// Whether the least admissible state carries a non-associative mechanism.
     #[serde(skip_serializing_if = "Option::is_none")]
     mechanism_at_eta: Option<bool>,
-    /// Whether exactly one limit state has η in [η_s, 2) (`null`: search not completed).
+    /// Whether exactly one limit state has η in [η_s, 2) (`null`: search not completed;
+    /// `false` also when it was not completed but two limit states were found).
     #[serde(skip_serializing_if = "Option::is_none")]
     unique: Option<Option<bool>>,
-    /// Every limit state with η in [η_s, 2), ascending.
+    /// Every limit state with η in [η_s, 2), ascending (with `search.complete` false: the
+    /// ones found, each verified; others may exist).
     #[serde(skip_serializing_if = "Option::is_none")]
     limit_states: Option<Vec<LimitStateJson>>,
     /// How the limit states were searched.
@@ -247,7 +249,15 @@ pub fn solve(survey: &Survey, explain: bool, rays: &Rays) -> SolveJson {
                 reason: Some(reason.to_string()),
             });
             if let Outcome::Limit(ls) = &sol.outcome {
-                doc.unique = Some(None);
+                // not complete, but two limit states found decide `false`: the ones found
+                // are listed (`search.complete` stays false)
+                doc.unique = Some(survey.unique());
+                if !survey.found.is_empty() && ls.attained {
+                    let at_eta_s = ls.eta == ls.eta_static;
+                    doc.attained = Some(true);
+                    doc.mechanism_at_eta = Some(at_eta_s);
+                    doc.limit_states = Some(listed(at_eta_s, sol, &survey.found, rays));
+                }
                 // `eta` is η_s, decided whatever the search above it says; where the
                 // least admissible state carries no mechanism (a non-associative gap), the
                 // limit state described is the least one found above it
@@ -308,7 +318,6 @@ fn with_outcome(doc: &mut SolveJson, outcome: &Outcome, rays: &Rays) {
 /// Every limit state with η in [η_s, 2), found by a completed search: the decided answer.
 fn with_limit_states(doc: &mut SolveJson, survey: &Survey, s: &LimitStates, rays: &Rays) {
     let sol = &survey.solution;
-    let least_rays = rays.least.as_deref().unwrap_or_default();
     let above_rays = |k: usize| rays.above.get(k).map_or(&[][..], Vec::as_slice);
     // η_s is known exactly and every limit state above it was searched: a decided
     // answer even when the least state carries no mechanism. An arch that stands at
@@ -323,23 +332,7 @@ fn with_limit_states(doc: &mut SolveJson, survey: &Survey, s: &LimitStates, rays
     doc.attained = Some(s.attained);
     doc.mechanism_at_eta = Some(s.mechanism_at_eta_s);
     doc.unique = Some(survey.unique());
-    let mut all = Vec::new();
-    if let (true, Outcome::Limit(ls)) = (s.mechanism_at_eta_s, &sol.outcome) {
-        all.push(LimitStateJson {
-            eta: ls.eta,
-            mode: ls.mode.name(),
-            pattern: ls.pattern.clone(),
-            reactions: reactions(&ls.x),
-            mechanism: mechanism_with_rays(&ls.mechanism, least_rays),
-        });
-    }
-    all.extend(s.above.iter().enumerate().map(|(k, a)| LimitStateJson {
-        eta: a.t,
-        mode: a.mode.name(),
-        pattern: a.pattern.clone(),
-        reactions: reactions(&a.x),
-        mechanism: mechanism_with_rays(&a.mechanism, above_rays(k)),
-    }));
+    let all = listed(s.mechanism_at_eta_s, sol, &s.above, rays);
     // the top-level mode, pattern, reactions and mechanism are the least limit
     // state's (none when there is none)
     if !s.mechanism_at_eta_s {
@@ -363,6 +356,36 @@ fn with_limit_states(doc: &mut SolveJson, survey: &Survey, s: &LimitStates, rays
         events: Some(s.events),
         reason: None,
     });
+}
+
+/// The limit states listed: the least state's where it carries a mechanism, then those
+/// above η_s.
+fn listed(
+    mechanism_at_eta_s: bool,
+    sol: &Solution,
+    above: &[LimitState],
+    rays: &Rays,
+) -> Vec<LimitStateJson> {
+    let least_rays = rays.least.as_deref().unwrap_or_default();
+    let above_rays = |k: usize| rays.above.get(k).map_or(&[][..], Vec::as_slice);
+    let mut all = Vec::new();
+    if let (true, Outcome::Limit(ls)) = (mechanism_at_eta_s, &sol.outcome) {
+        all.push(LimitStateJson {
+            eta: ls.eta,
+            mode: ls.mode.name(),
+            pattern: ls.pattern.clone(),
+            reactions: reactions(&ls.x),
+            mechanism: mechanism_with_rays(&ls.mechanism, least_rays),
+        });
+    }
+    all.extend(above.iter().enumerate().map(|(k, a)| LimitStateJson {
+        eta: a.t,
+        mode: a.mode.name(),
+        pattern: a.pattern.clone(),
+        reactions: reactions(&a.x),
+        mechanism: mechanism_with_rays(&a.mechanism, above_rays(k)),
+    }));
+    all
 }
 
 fn candidates(c: &[Candidate]) -> Vec<CandidateJson> {

@@ -255,12 +255,21 @@ fn limit_states(survey: &Survey) -> String {
     let states = match &survey.states {
         Ok(st) => st,
         Err(reason) => {
-            if matches!(survey.solution.outcome, Outcome::Limit(_)) {
-                let _ = writeln!(
+            if !matches!(survey.solution.outcome, Outcome::Limit(_)) {
+                return s;
+            }
+            let found: Vec<String> = survey.found.iter().map(|f| sig(f.t, 12)).collect();
+            let _ = match survey.unique() {
+                Some(_) => writeln!(
+                    s,
+                    "limit states above eta_s: not searched to the end ({reason}); not unique all the same: limit states found above eta_s at eta = {} (each verified on the continuum; others may exist)",
+                    found.join(", ")
+                ),
+                None => writeln!(
                     s,
                     "limit states above eta_s: not searched to the end ({reason}); uniqueness undecided"
-                );
-            }
+                ),
+            };
             return s;
         }
     };
