@@ -52,7 +52,10 @@ pub fn classify(arch: &Arch, mu: f64, settings: &Settings) -> Result<Classified,
                     if ls.eta == ls.eta_static && ls.attained && !sv.found.is_empty() =>
                 {
                     let above = sv.found.iter().map(|s| s.t);
-                    Ok((Kind::NonUnique, std::iter::once(ls.eta).chain(above).collect()))
+                    Ok((
+                        Kind::NonUnique,
+                        std::iter::once(ls.eta).chain(above).collect(),
+                    ))
                 }
                 _ => Err(e.clone()),
             });

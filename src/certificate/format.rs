@@ -181,6 +181,10 @@ pub enum SearchMethod {
     /// the ridge's pieces along them, and `verify` re-proves that no limit state lies
     /// between the junctions of the pieces (docs/certificates.md#the-ridge).
     Ridge,
+    /// A continuous arch whose discretisations did not settle: the listed limit states were
+    /// found (each refined on the continuum) but the list is not claimed complete, so
+    /// `unique` is `false`, resting on the listed states alone.
+    Found,
 }
 
 /// The ridge over the friction polygon Q = {(h, v) : |T_j| ≤ μ N_j at every joint}: its
@@ -265,7 +269,8 @@ pub struct NoMechanism {
 /// Evidence for the list of limit states with η in [η_s, 2).
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct SearchEvidence {
-    /// `sweep`, `hinges_only`, `refined` or `ridge` (anything else is rejected when read).
+    /// `sweep`, `hinges_only`, `refined`, `ridge` or `found` (anything else is rejected
+    /// when read).
     #[serde(deserialize_with = "field_method")]
     pub method: SearchMethod,
     /// Events of the sweep.

@@ -7,6 +7,7 @@ use super::load::{prepare_parts, BridgeFlags, LiveLoadArgs};
 use crate::arch::{check_mu, fmt_value, InputError};
 use crate::certificate::{
     certify, certify_load, verify, Certificate, Claim, LoadSearchMethod, NotCertified, Rejection,
+    SearchMethod,
 };
 use crate::render::json;
 use crate::settings::Settings;
@@ -257,6 +258,9 @@ fn limit_states_text(cert: &Certificate) -> String {
                 s.limit_states_above.len(),
                 match (s.unique, s.mechanism_at_eta || !s.limit_states_above.is_empty()) {
                     (true, _) => "unique",
+                    (false, true) if s.method == SearchMethod::Found => {
+                        "not unique; the states found, the list not claimed complete"
+                    }
                     (false, true) => "not unique",
                     (false, false) => "the search found no limit state",
                 },

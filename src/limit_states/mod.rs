@@ -197,7 +197,9 @@ fn search_found(sol: &Solution, settings: &Settings) -> Result<LimitStates, Unse
             return Ok(from_vanishing_thickness(arch, mu, settings)?);
         }
         _ => {
-            return Err(Undecided::Resolution("no least admissible state to start from".into()).into())
+            return Err(
+                Undecided::Resolution("no least admissible state to start from".into()).into(),
+            )
         }
     };
     // an infimum approached only with reactions growing without bound is not a state: no
@@ -220,7 +222,8 @@ fn search_found(sol: &Solution, settings: &Settings) -> Result<LimitStates, Unse
         return Err(Undecided::Resolution(format!(
             "eta_s = {eta_s:e} is below {:e}, where the sweep's polynomial roots are not resolved",
             settings.sweep_min_eta
-        )).into());
+        ))
+        .into());
     }
     // P(η) with an interior point just above η_s: at μ = ∞ no limit state lies above
     // (`hinges_only`), at finite μ every one lies on the ridge over ∂Q (`ridge`)

@@ -1108,3 +1108,34 @@ fn negative_cofactors_and_unresolved_collapse_are_certified() {
         assert_eq!(c.limit_state.is_some(), mu < 2.0, "mu = {mu}");
     }
 }
+
+/// Where a continuous arch's discretisations do not settle (α = 0.65, μ = 0.9257: a mirror
+/// pair above η_s found by 96 and 384 pieces, missed by 48 and 192), the certificate lists
+/// the states found with method `found`: `unique = false` rests on them (η_s carries a
+/// limit state, two more are listed, each checked), and the report says the list is not
+/// claimed complete. The same certificate claiming `unique = true` is rejected.
+#[test]
+fn an_unsettled_search_certifies_non_uniqueness_by_the_states_found() {
+    use arch_enum::certificate::SearchMethod;
+    let arch = Arch::symmetric(0.65, WeightModel::Centreline).unwrap();
+    let c = cert(&arch, 0.9257);
+    let s = c.search.as_ref().expect("a search section");
+    assert_eq!(s.method, SearchMethod::Found);
+    assert!(!s.unique && s.mechanism_at_eta);
+    assert_eq!(s.limit_states_above.len(), 2);
+    let r = verify(&c).unwrap();
+    assert!(
+        r.checks
+            .iter()
+            .any(|l| l.starts_with("not claimed: that the listed limit states are every one")),
+        "{:?}",
+        r.checks
+    );
+    let mut forged = c.clone();
+    if let Some(s) = forged.search.as_mut() {
+        s.unique = true;
+        s.limit_states_above.clear();
+    }
+    let why = verify(&forged).unwrap_err();
+    assert!(why.0.contains("method found"), "{}", why.0);
+}

@@ -3,10 +3,10 @@
 //! same least admissible thickness, whether it carries a mechanism, and the same limit
 //! states above it (η to 1e-10 relative).
 
+use crate::continuum_reference::Cont;
 use crate::search_reference::{
     brute_force, brute_force_filled, least_friction, random_joints, RefSearch, Rng,
 };
-use crate::continuum_reference::Cont;
 use arch_enum::limit_states::{search, LimitState};
 use arch_enum::{Arch, Settings, WeightModel};
 use std::f64::consts::PI;
@@ -333,11 +333,17 @@ fn finer_discretisations_decide_where_two_differ() {
         assert!(s.t > 1.3 * r.eta_s, "{} vs {}", s.t, r.eta_s);
         let x = [s.x[0], s.x[1], s.x[2]];
         let worst = (0..=20_000)
-            .map(|i| arch.beta_right() + (arch.beta_left() - arch.beta_right()) * i as f64 / 20_000.0)
+            .map(|i| {
+                arch.beta_right() + (arch.beta_left() - arch.beta_right()) * i as f64 / 20_000.0
+            })
             .flat_map(|b| (0..4).map(move |k| (k, b)))
             .map(|(k, b)| reference.g(k, s.t, &x, b))
             .fold(f64::NEG_INFINITY, f64::max);
-        assert!(worst <= 1e-9, "the state at {} is violated by {worst:e}", s.t);
+        assert!(
+            worst <= 1e-9,
+            "the state at {} is violated by {worst:e}",
+            s.t
+        );
         for c in &s.pattern {
             let g = reference.g(c.kind as usize, s.t, &x, c.beta);
             assert!(g.abs() <= 1e-9, "{c:?} is not active: {g:e}");

@@ -85,6 +85,9 @@ fn without(
     Some(f)
 }
 
+/// The method of a list that is not claimed complete ([`crate::limit_states::Survey::found`]).
+pub(super) const FOUND: &str = "found";
+
 /// The evidence of the limit-state search, for the certificate.
 pub(super) fn evidence(
     (arch, traced): (&Arch, Option<&[TracedEdge]>),
@@ -102,6 +105,8 @@ pub(super) fn evidence(
         SearchMethod::Sweep
     } else if found.method.starts_with("hinges only") {
         SearchMethod::HingesOnly
+    } else if found.method == FOUND {
+        SearchMethod::Found
     } else {
         SearchMethod::Refined
     };

@@ -5,7 +5,7 @@
 
 use super::blank::empty;
 use super::loaded::{cert_joints, Loaded};
-use super::search::{evidence, limit_state_cert};
+use super::search::{evidence, limit_state_cert, FOUND};
 use super::sides::{chord_pool, find_farkas, move_inside, widening, Row};
 use crate::admissibility::{margin_over_arch, Goal, WorkingSet};
 use crate::arch::{Arch, WeightModel};
@@ -17,7 +17,7 @@ use crate::contact::{Contact, ContactKind, Location};
 use crate::friction::{friction_limit, SLIDES};
 use crate::limit::LeastLimitState;
 use crate::limit_states::ridge::TracedEdge;
-use crate::limit_states::Survey;
+use crate::limit_states::{LimitStates, Survey};
 use crate::search::candidates_at;
 use crate::settings::Settings;
 use crate::state::State;
@@ -293,8 +293,24 @@ pub(super) fn certify_limit(
         (None, _) => None,
     };
     // with fill no search section: its evidence rests on the ring's weight alone
-    let searched = (&survey.states, survey.unique(), arch.fill());
-    if let (Ok(found), Some(unique), None) = searched {
+    // a search not completed lists what it found where that decides `unique = false`
+    // (η_s carries a limit state, and another lies above it)
+    let unsettled = LimitStates {
+        eta_s,
+        attained: true,
+        mechanism_at_eta_s: true,
+        above: survey.found.clone(),
+        events: 0,
+        no_mechanism: Vec::new(),
+        method: FOUND.into(),
+        vertical: None,
+    };
+    let listed = match (&survey.states, survey.unique(), arch.fill()) {
+        (Ok(found), Some(unique), None) => Some((found, unique)),
+        (Err(_), Some(false), None) if at_eta_s.is_some() => Some((&unsettled, false)),
+        _ => None,
+    };
+    if let Some((found, unique)) = listed {
         cert.search = Some(evidence(
             (arch, traced),
             found,

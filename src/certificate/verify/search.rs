@@ -54,6 +54,7 @@ enum Method {
     Infinite(&'static str),
     Refined,
     Ridge,
+    Found,
 }
 
 impl Method {
@@ -63,6 +64,7 @@ impl Method {
             Method::Infinite(name) => name,
             Method::Refined => "refined",
             Method::Ridge => "ridge",
+            Method::Found => "found",
         }
     }
 }
@@ -183,6 +185,14 @@ impl Walk<'_> {
                 }
                 checks.push("not re-checked: that the refined limit states of two discretisations agreed (method refined); the listed states are checked above".into());
             }
+            Method::Found => {
+                if model.joints.is_some() || self.live.is_some() || !points.is_empty() {
+                    return reject(format!(
+                        "{section}: method found is for a continuous arch under its own weight, with no sweep points"
+                    ));
+                }
+                checks.push("not claimed: that the listed limit states are every one (method found: the discretisations did not settle); unique = false rests on the listed states, checked above".into());
+            }
         }
         Ok(())
     }
@@ -232,6 +242,10 @@ pub(super) fn verify_search(
         SearchMethod::HingesOnly => Method::Infinite("hinges only"),
         SearchMethod::Refined => Method::Refined,
         SearchMethod::Ridge => Method::Ridge,
+        SearchMethod::Found if search.unique => {
+            return reject("search: method found claims no complete list, so not unique = true")
+        }
+        SearchMethod::Found => Method::Found,
     };
     ridge_evidence(model, cert, search, safe, &mut checks)?;
     let points: Vec<Point> = search.no_mechanism.iter().map(point).collect();
