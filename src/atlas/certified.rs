@@ -4,7 +4,8 @@
 
 use super::classify::Kind;
 use crate::arch::Arch;
-use crate::certificate::{certify, verify, Claim};
+use crate::certificate::{certify_found, verify, Claim};
+use crate::limit_states::LimitState;
 use crate::settings::Settings;
 
 /// The relative gap of the η* brackets the atlas certifies (wide enough to be cheap; the kind
@@ -16,7 +17,18 @@ const ATLAS_GAP: f64 = 1e-9;
 /// arch; a no-equilibrium claim has no list to complete) or only checked each listed state;
 /// or why there is no such certificate.
 pub fn certified_kind(arch: &Arch, mu: f64, settings: &Settings) -> Result<(Kind, bool), String> {
-    let cert = certify(arch, mu, ATLAS_GAP, settings).map_err(|e| e.0)?;
+    certified_kind_with(arch, mu, &[], settings)
+}
+
+/// [`certified_kind`] with limit states above η_s known at `mu` from elsewhere (followed
+/// from a neighbouring friction: [`crate::certificate::certify_found`]).
+pub fn certified_kind_with(
+    arch: &Arch,
+    mu: f64,
+    found: &[LimitState],
+    settings: &Settings,
+) -> Result<(Kind, bool), String> {
+    let cert = certify_found(arch, mu, ATLAS_GAP, found, settings).map_err(|e| e.0)?;
     verify(&cert).map_err(|r| format!("the verifier rejected the certificate: {}", r.0))?;
     match cert.claim {
         Claim::NoEquilibrium => return Ok((Kind::NoEquilibrium, true)),

@@ -1,10 +1,11 @@
 //! One column of the atlas: an opening α, its μ_ms, the samples in μ classified, the changes
 //! of kind located by bisection, and the runs of one kind they bound.
 
-use super::certified::certified_kind;
+use super::certified::certified_kind_with;
 use super::classify::{classify, Classified, Kind};
-use crate::arch::{Arch, InputError, WeightModel};
+use crate::arch::{Arch, InputError, JointLayout, WeightModel};
 use crate::friction::friction_limit;
+use crate::limit_states::{follow, lost_at, survey, LimitState};
 use crate::settings::Settings;
 
 /// What the atlas covers.
@@ -133,6 +134,14 @@ pub struct BoundaryPoint {
     pub tight: bool,
     /// Why the bisection stopped short of neighbouring floats, if it did.
     pub stopped: Option<String>,
+    /// Between `non_unique` and `unique`: what becomes of the limit states above η_s at the
+    /// non-unique end when each is followed on its own pattern (Newton) to the other end:
+    /// why each is not a limit state there, or that one still is (then the unique side
+    /// missed it). `None` for other pairs of kinds.
+    pub why: Option<String>,
+    /// The limit states above η_s followed to the non-unique end (between `non_unique` and
+    /// `unique`; what the end's certificate lists where the search there missed them).
+    pub followed: Vec<LimitState>,
     /// With [`Rectangle::certify`]: verified certificates at the bracket's two ends state the
     /// two kinds (`Ok`, true where the verifier proved both lists of limit states complete,
     /// false where it only checked the listed states), or why not (`Err`).
@@ -251,11 +260,14 @@ pub(super) fn column(
 /// The certificates of a column: both ends of every located bracket, and the middle sample
 /// of every decided run.
 fn certify_column(arch: &Arch, col: &mut Column, settings: &Settings) {
-    let holds = |mu: f64, want: Kind| match certified_kind(arch, mu, settings) {
+    let holds_with = |mu: f64, want: Kind, found: &[LimitState]| match certified_kind_with(
+        arch, mu, found, settings,
+    ) {
         Ok((k, complete)) if k == want => Ok(complete),
         Ok((k, _)) => Err(format!("the certificate at mu = {mu} states {}", k.name())),
         Err(e) => Err(format!("at mu = {mu}: {e}")),
     };
+    let holds = |mu: f64, want: Kind| holds_with(mu, want, &[]);
     let both = |a: Result<bool, String>, b: Result<bool, String>| Ok(a? && b?);
     if let (Some(ms), Some((Some(first), _, _))) = (col.mu_ms, col.runs.first()) {
         let (lo, hi) = (ms * (1.0 - MU_MS_BRACKET), ms * (1.0 + MU_MS_BRACKET));
@@ -268,7 +280,15 @@ fn certify_column(arch: &Arch, col: &mut Column, settings: &Settings) {
     }
     for p in &mut col.boundaries {
         let (lo, hi) = p.bracket;
-        p.certified = Some(both(holds(lo, p.between[0]), holds(hi, p.between[1])));
+        // the followed states belong to the non-unique end
+        let (f_lo, f_hi): (&[LimitState], &[LimitState]) = match p.between[0] {
+            Kind::NonUnique => (&p.followed, &[]),
+            _ => (&[], &p.followed),
+        };
+        p.certified = Some(both(
+            holds_with(lo, p.between[0], f_lo),
+            holds_with(hi, p.between[1], f_hi),
+        ));
     }
     for &(kind, from, to) in &col.runs {
         let Some(kind) = kind else { continue };
@@ -285,7 +305,11 @@ fn certify_column(arch: &Arch, col: &mut Column, settings: &Settings) {
 }
 
 /// Bisects [lo, hi] between kinds `ka` (at lo) and `kb` (at hi) down to neighbouring floats;
-/// a third kind met in between splits the bracket in two.
+/// a third kind met in between splits the bracket in two. Between `non_unique` and `unique`
+/// on a continuous arch the non-unique end's limit states above η_s are followed along (Newton on each one's
+/// pattern, [`follow`]): a midpoint the search calls unique where one of them still is a
+/// limit state above η_s is non-unique (the discretised search lost the branch before its
+/// end), so the point is where the branches end, not where the search loses them.
 fn locate(
     arch: &Arch,
     alpha: f64,
@@ -297,13 +321,43 @@ fn locate(
 ) -> Result<(), InputError> {
     let mut tight = false;
     let mut stopped = Some(format!("{MAX_BISECTIONS} bisections"));
+    // the non-unique end (true: lo) and its limit states above η_s
+    // (a voussoir arch's search is complete by itself: only a continuous arch's, which rests
+    // on discretisations agreeing, is helped along)
+    let continuous = !matches!(arch.layout(), JointLayout::Discrete(_));
+    let mut tracked = match (ka, kb) {
+        _ if !continuous => None,
+        (Kind::NonUnique, Kind::Unique) => Some((true, lo, states_above(arch, lo, settings)?)),
+        (Kind::Unique, Kind::NonUnique) => Some((false, hi, states_above(arch, hi, settings)?)),
+        _ => None,
+    };
     for _ in 0..MAX_BISECTIONS {
         let m = 0.5 * (lo + hi);
         if m <= lo || m >= hi {
             (tight, stopped) = (true, None);
             break;
         }
-        match classify(arch, m, settings)? {
+        let mut kind = classify(arch, m, settings)?;
+        if let (Ok((k, etas)), Some((_, at, states))) = (&mut kind, &mut tracked) {
+            let followed: Vec<LimitState> = states
+                .iter()
+                .filter_map(|s| follow_to(arch, s, (*at, m), settings, FOLLOW_HALVINGS))
+                .filter(|f| f.t > etas[0] * (1.0 + settings.root_slack))
+                .collect();
+            if *k == Kind::Unique && !followed.is_empty() {
+                *k = Kind::NonUnique;
+            }
+            if *k == Kind::NonUnique {
+                // the search's own states where the tracked ones changed pattern on the way
+                let now = if followed.is_empty() {
+                    states_above(arch, m, settings)?
+                } else {
+                    followed
+                };
+                (*at, *states) = (m, now);
+            }
+        }
+        match kind {
             Ok((k, _)) if k == ka => lo = m,
             Ok((k, _)) if k == kb => hi = m,
             Ok((k, _)) if depth < 4 => {
@@ -320,15 +374,87 @@ fn locate(
             }
         }
     }
+    let (mut why, mut followed) = (None, Vec::new());
+    if let Some((at_lo, at, states)) = tracked {
+        let (from, to) = if at_lo { (lo, hi) } else { (hi, lo) };
+        followed = states
+            .iter()
+            .filter_map(|s| follow_to(arch, s, (at, from), settings, FOLLOW_HALVINGS))
+            .collect();
+        why = Some(why_lost(arch, &followed, (from, to), settings)).filter(|w| !w.is_empty());
+    }
     out.push(BoundaryPoint {
         alpha,
         between: [ka, kb],
         bracket: (lo, hi),
         tight,
         stopped,
+        why,
+        followed,
         certified: None,
     });
     Ok(())
+}
+
+/// A limit state is followed over a step of μ in up to this many halvings where one step
+/// fails (near a branch's end its states move fast, and Newton from too far lands on
+/// another state or none).
+const FOLLOW_HALVINGS: usize = 12;
+
+/// `s`, a limit state at `from`, followed to `to` on its pattern ([`follow`]), through
+/// midpoints where one step fails; `None` where it ends on the way.
+fn follow_to(
+    arch: &Arch,
+    s: &LimitState,
+    (from, to): (f64, f64),
+    settings: &Settings,
+    halvings: usize,
+) -> Option<LimitState> {
+    if let Ok(f) = follow(arch, to, s, settings) {
+        return Some(f);
+    }
+    if halvings == 0 {
+        return None;
+    }
+    let mid = 0.5 * (from + to);
+    let half = follow_to(arch, s, (from, mid), settings, halvings - 1)?;
+    follow_to(arch, &half, (mid, to), settings, halvings - 1)
+}
+
+/// The limit states above η_s at `mu` (those found where the search did not settle).
+fn states_above(arch: &Arch, mu: f64, settings: &Settings) -> Result<Vec<LimitState>, InputError> {
+    let sv = survey(arch, mu, settings)?;
+    Ok(match sv.states {
+        Ok(s) => s.above,
+        Err(_) => sv.found,
+    })
+}
+
+/// The limit states `states` (above η_s at `from`), each followed to `to` ([`lost_at`]):
+/// why none is a limit state there, one line per distinct η (mirror images share theirs),
+/// or which one still is.
+fn why_lost(
+    arch: &Arch,
+    states: &[LimitState],
+    (from, to): (f64, f64),
+    settings: &Settings,
+) -> String {
+    let mut lines: Vec<String> = Vec::new();
+    let mut last = f64::NAN;
+    for s in states {
+        if (s.t - last).abs() <= settings.same_root * s.t {
+            continue;
+        }
+        last = s.t;
+        lines.push(match lost_at(arch, to, s, settings) {
+            Some(why) => format!("the limit state at eta = {:.10} (mu = {from}): {why}", s.t),
+            None => format!(
+                "the limit state at eta = {:.10} (mu = {from}) is still one at mu = {to}",
+                s.t
+            ),
+        });
+    }
+    lines.join("; ")
 }
 
 /// The runs of a column from μ_ms to K μ_ms: each sample's kind (an undecided sample is a

@@ -92,6 +92,6 @@ pub mod format;
 pub mod interval;
 pub mod verify;
 
-pub use certify::{certify, certify_load};
+pub use certify::{certify, certify_found, certify_load};
 pub use format::*;
 pub use verify::{verify, Rejection, Report};

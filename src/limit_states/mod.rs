@@ -502,11 +502,23 @@ fn refine(
     pattern: &[Contact],
     settings: &Settings,
 ) -> Option<LimitState> {
+    refined(arch, mu, (eta, x), pattern, settings).ok()
+}
+
+/// [`refine`], or why the pattern carries no limit state at `mu`.
+fn refined(
+    arch: &Arch,
+    mu: f64,
+    (eta, x): (f64, Reactions),
+    pattern: &[Contact],
+    settings: &Settings,
+) -> Result<LimitState, String> {
     if pattern.len() < 4 {
-        return None;
+        return Err(format!("{} contacts fix no state", pattern.len()));
     }
     let start = State { arch, eta, mu, x };
-    let r = solve_system(&start, pattern, Unknowns::T, settings).ok()?;
+    let r = solve_system(&start, pattern, Unknowns::T, settings)
+        .map_err(|e| format!("Newton on the pattern finds no state ({e:?})"))?;
     let st = State {
         arch,
         eta: r.t,
@@ -515,16 +527,62 @@ fn refine(
     };
     let v = st.verdict(ContactKind::active_at(mu), settings);
     if v.worst > settings.adm_tol {
-        return None;
+        return Err(format!(
+            "the pattern's state (eta = {}) is not admissible: violated by {:.2e} (relative)",
+            r.t, v.worst
+        ));
     }
-    let mech = mechanism::find(&st, &v.active, settings).ok()??;
-    Some(LimitState::unloaded(
+    let mech = match mechanism::find(&st, &v.active, settings) {
+        Ok(Some(m)) => m,
+        Ok(None) => {
+            return Err(format!(
+                "the pattern's state (eta = {}) carries no mechanism without dilatancy",
+                r.t
+            ))
+        }
+        Err(e) => return Err(format!("the mechanism LP failed ({e:?})")),
+    };
+    Ok(LimitState::unloaded(
         arch,
         (r.t, r.x),
         v.active,
         mech,
         settings,
     ))
+}
+
+/// The limit state `s` of a continuous arch (found at another friction) followed to `mu`:
+/// Newton on its pattern from where it was, the state admissible over the whole arch and a
+/// mechanism on its active contacts; or why that pattern carries no limit state at `mu`.
+pub fn follow(
+    arch: &Arch,
+    mu: f64,
+    s: &LimitState,
+    settings: &Settings,
+) -> Result<LimitState, String> {
+    refined(arch, mu, (s.t, s.x), &s.pattern, settings)
+}
+
+/// Why the limit state `s` of a continuous arch (found at another friction) is not one at
+/// `mu` on its own pattern, Newton from where it was: `None` where it still is one there.
+/// With its smallest mechanism rate, which tends to zero where a branch ends because its
+/// mechanism is lost.
+pub fn lost_at(arch: &Arch, mu: f64, s: &LimitState, settings: &Settings) -> Option<String> {
+    let why = follow(arch, mu, s, settings).err()?;
+    let least = s
+        .mechanism
+        .contacts
+        .iter()
+        .zip(&s.mechanism.rates)
+        .min_by(|a, b| a.1.total_cmp(b.1));
+    Some(match least {
+        Some((c, r)) => format!(
+            "{why}; its smallest rate before was {r:.2e} ({} at beta = {:.6})",
+            c.kind.name(),
+            c.beta
+        ),
+        None => why,
+    })
 }
 
 /// At μ = μ_ms: the vertical branch, when the sliding contacts carry a mechanism at the

@@ -422,3 +422,83 @@ fn the_load_map_finds_the_reduction_and_agrees_with_the_brute_force() {
     assert_eq!(code, 2, "{v}");
     assert!(v["message"].as_str().unwrap().contains("--factors"), "{v}");
 }
+
+/// Near the top of the continuous band the discretised search loses a branch of limit
+/// states before the continuum does: at α = 0.7 the 48- and 96-piece searches agree on no
+/// limit state above η_s a little below where the branch ends. The atlas follows the
+/// non-unique end's states (Newton on each pattern) as it bisects, so its boundary point is
+/// where the branch ends: at the point's lower end a followed state is still a limit state
+/// (the search alone calls it unique there), and `why` says how the branch ends (its state
+/// leaves the admissible set or loses its mechanism), never that a state goes on. At
+/// α = 0.65 the branch ends by losing its mechanism (the interior slide's rate reaches 0).
+#[test]
+fn boundary_points_are_where_the_branches_end() {
+    let (doc, code) = json_of(&[
+        "atlas",
+        "--alpha-min",
+        "0.65",
+        "--alpha-max",
+        "0.7",
+        "--columns",
+        "2",
+        "--mu-max-factor",
+        "1.2",
+        "--samples",
+        "12",
+    ]);
+    assert_eq!(code, 0);
+    let points: Vec<&Value> = doc["boundaries"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|b| b["between"] == serde_json::json!(["non_unique", "unique"]))
+        .flat_map(|b| b["points"].as_array().unwrap())
+        .collect();
+    assert_eq!(points.len(), 2, "{points:?}");
+    let settings = Settings::default();
+    for p in points {
+        let (alpha, lo) = (
+            p["alpha"].as_f64().unwrap(),
+            p["bracket"][0].as_f64().unwrap(),
+        );
+        let why = p["why"].as_str().unwrap();
+        assert!(p["tight"].as_bool().unwrap(), "{p}");
+        assert!(!why.contains("still one"), "{why}");
+        assert!(
+            why.contains("is not admissible") || why.contains("carries no mechanism"),
+            "{why}"
+        );
+        if alpha == 0.65 {
+            assert!(why.contains("carries no mechanism"), "{why}");
+        }
+        let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
+        let sv = survey(&arch, lo, &settings).unwrap();
+        if alpha == 0.7 {
+            // the search alone: complete, and unique at the point's lower end (and 1e-9
+            // below it: within ~1e-12 of the end the state's violation is at `adm_tol`
+            // and rounding decides)
+            assert_eq!(sv.unique(), Some(true), "alpha = {alpha}, mu = {lo}");
+            let lo = lo * (1.0 - 1e-9);
+            let sv = survey(&arch, lo, &settings).unwrap();
+            assert_eq!(sv.unique(), Some(true), "alpha = {alpha}, mu = {lo}");
+            // but the branch the search finds at μ = 1.0495, followed there on its patterns
+            // (steps halving towards the end: the branch's two members close on each other
+            // there, like a fold), is still one
+            let start = survey(&arch, 1.0495, &settings).unwrap();
+            let mut states = start.states.unwrap().above;
+            assert!(!states.is_empty());
+            for k in 1..=60 {
+                let mu = lo - (lo - 1.0495) * 0.5f64.powi(k);
+                states = states
+                    .iter()
+                    .filter_map(|s| arch_enum::limit_states::follow(&arch, mu, s, &settings).ok())
+                    .collect();
+            }
+            let eta_s = sv.states.as_ref().unwrap().eta_s;
+            assert!(
+                states.iter().any(|s| s.t > 1.2 * eta_s),
+                "no limit state of the branch reaches mu = {lo}"
+            );
+        }
+    }
+}

@@ -53,10 +53,11 @@ use crate::arch::{Arch, JointLayout};
 use crate::certificate::format::{Certificate, Claim, NotCertified};
 use crate::limit::Outcome;
 use crate::limit_states::ridge::trace;
-use crate::limit_states::survey;
+use crate::limit_states::{survey, LimitState};
 use crate::load::LiveLoad;
 use crate::multiplier::{self, static_range, LoadOutcome, StaticRange};
 use crate::settings::{LimitStateSearch, Settings};
+use crate::undecided::Undecided;
 
 /// Builds a certificate for `arch` at friction `mu` with requested relative gap `gap`
 /// (e.g. 1e-12). The certificate is verified before it is returned. When the requested
@@ -67,6 +68,21 @@ pub fn certify(
     arch: &Arch,
     mu: f64,
     gap: f64,
+    settings: &Settings,
+) -> Result<Certificate, NotCertified> {
+    certify_found(arch, mu, gap, &[], settings)
+}
+
+/// [`certify`] with limit states above η_s known at `mu` from elsewhere (`found`: each a
+/// limit state of the continuum, e.g. followed from a neighbouring friction by
+/// [`crate::limit_states::follow`]) that the search may have missed: where it did, the
+/// certificate lists them with method `found` (not claimed complete, `unique = false`);
+/// they are re-checked like every listed state.
+pub fn certify_found(
+    arch: &Arch,
+    mu: f64,
+    gap: f64,
+    found: &[LimitState],
     settings: &Settings,
 ) -> Result<Certificate, NotCertified> {
     // a discrete arch's certificate carries the ridge's pieces as evidence where the ridge
@@ -83,7 +99,20 @@ pub fn certify(
         },
         _ => settings.clone(),
     };
-    let survey = survey(arch, mu, settings).map_err(|e| NotCertified(e.to_string()))?;
+    let mut survey = survey(arch, mu, settings).map_err(|e| NotCertified(e.to_string()))?;
+    let missed = survey.states.as_ref().is_ok_and(|s| {
+        found.iter().any(|f| {
+            !s.above
+                .iter()
+                .any(|a| (a.t - f.t).abs() <= settings.same_root * f.t)
+        })
+    });
+    if missed {
+        survey.states = Err(Undecided::Discretisation(
+            "limit states above eta_s known from elsewhere were missed by the search".into(),
+        ));
+        survey.found = found.to_vec();
+    }
     let limit = |least| {
         let found = (&survey, traced.as_deref());
         let cert = certify_limit((arch, mu), found, least, gap, settings)?;

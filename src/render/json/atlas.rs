@@ -32,6 +32,10 @@ struct PointJson {
     /// Why the bisection stopped short of neighbouring floats.
     #[serde(skip_serializing_if = "Option::is_none")]
     stopped: Option<String>,
+    /// Between `non_unique` and `unique`: why the non-unique end's limit states above η_s
+    /// are none at the other end (each followed there by Newton on its pattern).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    why: Option<String>,
     exact: bool,
     /// Verified certificates at both ends of the bracket state its two kinds.
     certified: bool,
@@ -144,6 +148,7 @@ fn boundaries(columns: &[Column]) -> Vec<BoundaryJson> {
                     bracket: [mu_ms, mu_ms],
                     tight: true,
                     stopped: None,
+                    why: None,
                     exact: c.mu_ms_exact,
                     certified: matches!(c.mu_ms_certified, Some(Ok(_))),
                     not_certified: c.mu_ms_certified.clone().and_then(Result::err),
@@ -166,6 +171,7 @@ fn boundaries(columns: &[Column]) -> Vec<BoundaryJson> {
                 bracket: [p.bracket.0, p.bracket.1],
                 tight: p.tight,
                 stopped: p.stopped.clone(),
+                why: p.why.clone(),
                 exact: false,
                 certified: matches!(p.certified, Some(Ok(_))),
                 not_certified: p.certified.clone().and_then(Result::err),
