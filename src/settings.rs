@@ -136,7 +136,8 @@ pub struct Settings {
     /// discretisations' refined limit states differ (a branch of limit states that the
     /// coarser one misses, near where the branch is born or dies), the next is tried until
     /// two agree. 1: `sweep_pieces` and twice as many only. Default 3 (up to 8 ×
-    /// `sweep_pieces`).
+    /// `sweep_pieces`; a discretisation the ridge does not walk stops at the sweep's
+    /// budget, `sweep_max_joints`).
     pub sweep_doublings: usize,
     /// The complete limit-state sweep of a discrete arch (work growing faster than the
     /// square of the number of joints) is run up to this many joints; beyond, the search

@@ -20,7 +20,7 @@
 //! | `collapse` | `{eta, joints: [{beta, kind, y}]}`: d + 1 contacts whose non-negative Farkas combination rules out every state at η_lo (lower bound); `eta` null for the friction-only problem (d = 2, sliding kinds only) |
 //! | `limit_state` | `{eta, x, pattern: [{beta, kind, at}], rates, complementarity_residual}`: the limit state and a mechanism on its pattern, the pattern strictly increasing in (β, kind); absent for `no_equilibrium` |
 //! | `gap`, `gap_relative` | η_hi − η_lo and (η_hi − η_lo)/η_hi |
-//! | `search` | optional (absent where the limit-state search was not completed): `{method, events, mechanism_at_eta, unique, least_state, limit_states_above, no_mechanism}`; `method` ∈ {`sweep`, `hinges_only`, `refined`}; `least_state` and each `no_mechanism` entry are `{eta, x, pattern, farkas: [{drop, y, z, u}]}` |
+//! | `search` | optional (absent where the limit-state search was not completed, unless the states it found decide `unique = false`: method `found`): `{method, events, mechanism_at_eta, unique, least_state, limit_states_above, no_mechanism, ridge}`; `method` ∈ {`sweep`, `hinges_only`, `refined`, `ridge`, `found`}; `least_state` and each `no_mechanism` entry are `{eta, x, pattern, farkas: [{drop, y, z, u}]}` |
 //!
 //! **Load certificates** (`claim` ∈ {`largest_multiplier`, `unbounded_multiplier`,
 //! `no_equilibrium`} with a `load` section) carry none of `safe`, `collapse`, `limit_state`,

@@ -86,7 +86,7 @@ impl Survey {
             Err(_) => {
                 let at_eta_s = matches!(&self.solution.outcome,
                     Outcome::Limit(ls) if ls.eta == ls.eta_static && ls.attained);
-                return (usize::from(at_eta_s) + self.found.len() >= 2).then_some(false);
+                return (usize::from(at_eta_s) + distinct(&self.found) >= 2).then_some(false);
             }
         };
         if s.vertical.is_some() {
@@ -94,6 +94,25 @@ impl Survey {
         }
         Some(usize::from(s.mechanism_at_eta_s) + s.above.len() == 1)
     }
+}
+
+/// Two limit states found are one where their η and reactions agree to this (relative):
+/// the list found is kept apart by patterns, and near where a branch ends a contact at the
+/// edge of being active could list one state twice.
+const DISTINCT_REL: f64 = 1e-9;
+
+/// How many distinct states `states` holds (η and reactions to [`DISTINCT_REL`]).
+fn distinct(states: &[LimitState]) -> usize {
+    let same = |p: &LimitState, q: &LimitState| {
+        let scale = 1.0 + crate::statics::reaction_scale(&q.x);
+        (p.t - q.t).abs() <= DISTINCT_REL * q.t
+            && (0..3).all(|k| (p.x[k] - q.x[k]).abs() <= DISTINCT_REL * scale)
+    };
+    states
+        .iter()
+        .enumerate()
+        .filter(|(i, p)| !states[..*i].iter().any(|q| same(p, q)))
+        .count()
 }
 
 /// The extreme rays of the mechanism cones of a survey's limit states, each a list of

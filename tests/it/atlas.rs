@@ -40,7 +40,13 @@ fn solve_kind(arch: &Arch, mu: f64) -> Option<&'static str> {
     if matches!(sv.solution.outcome, Outcome::NoEquilibrium { .. }) {
         return Some("no_equilibrium");
     }
-    let s = sv.states.as_ref().ok()?;
+    let Ok(s) = sv.states.as_ref() else {
+        // not searched to the end: non-unique where η_s carries a limit state and another
+        // was found (as `atlas` classifies it), else undecided
+        let at_eta_s = matches!(&sv.solution.outcome,
+            Outcome::Limit(ls) if ls.eta == ls.eta_static && ls.attained);
+        return (at_eta_s && sv.unique() == Some(false)).then_some("non_unique");
+    };
     Some(if !s.mechanism_at_eta_s || !s.attained {
         "no_mechanism_at_eta"
     } else if sv.unique()? {

@@ -1113,7 +1113,8 @@ fn negative_cofactors_and_unresolved_collapse_are_certified() {
 /// pair above η_s found by 96 and 384 pieces, missed by 48 and 192), the certificate lists
 /// the states found with method `found`: `unique = false` rests on them (η_s carries a
 /// limit state, two more are listed, each checked), and the report says the list is not
-/// claimed complete. The same certificate claiming `unique = true` is rejected.
+/// claimed complete ("at least"). The same certificate claiming `unique = true`, listing
+/// fewer than two states, or one state twice, is rejected.
 #[test]
 fn an_unsettled_search_certifies_non_uniqueness_by_the_states_found() {
     use arch_enum::certificate::SearchMethod;
@@ -1131,11 +1132,24 @@ fn an_unsettled_search_certifies_non_uniqueness_by_the_states_found() {
         "{:?}",
         r.checks
     );
-    let mut forged = c.clone();
-    if let Some(s) = forged.search.as_mut() {
-        s.unique = true;
-        s.limit_states_above.clear();
-    }
-    let why = verify(&forged).unwrap_err();
-    assert!(why.0.contains("method found"), "{}", why.0);
+    let listed = r.limit_states.as_deref().unwrap_or_default();
+    assert!(listed.contains("at least 3 limit states"), "{listed}");
+    let forge = |unique: bool, edit: &dyn Fn(&mut Vec<arch_enum::certificate::LimitStateCert>)| {
+        let mut f = c.clone();
+        if let Some(s) = f.search.as_mut() {
+            s.unique = unique;
+            edit(&mut s.limit_states_above);
+        }
+        verify(&f).unwrap_err().0
+    };
+    // unique = true with method found; one state only; one state listed twice
+    let why = forge(true, &|l| l.clear());
+    assert!(why.contains("method found"), "{why}");
+    let why = forge(false, &|l| l.clear());
+    assert!(
+        why.contains("1 limit states are listed") || why.contains("needs two"),
+        "{why}"
+    );
+    let why = forge(false, &|l| l[1] = l[0].clone());
+    assert!(why.contains("twice"), "{why}");
 }

@@ -31,7 +31,8 @@
 //!
 //! What is *not* re-proved: that the sweep met every event (its completeness argument,
 //! docs/limit-states.md, docs/loads.md), that two discretisations agreed (`refined`), and
-//! λ_min.
+//! λ_min. Method `found` claims no complete list: its `unique = false` rests on the listed
+//! states (at least two, distinct), each checked.
 
 use super::enclosure::prove_state;
 use super::joints::check_pattern;
@@ -245,7 +246,10 @@ pub(super) fn verify_search(
         SearchMethod::Found if search.unique => {
             return reject("search: method found claims no complete list, so not unique = true")
         }
-        SearchMethod::Found => Method::Found,
+        SearchMethod::Found => {
+            found_distinct(cert, search)?;
+            Method::Found
+        }
     };
     ridge_evidence(model, cert, search, safe, &mut checks)?;
     let points: Vec<Point> = search.no_mechanism.iter().map(point).collect();
@@ -273,12 +277,45 @@ pub(super) fn verify_search(
         (1, true) => "one limit state with eta in [eta_s, 2), at eta_s (unique)".to_string(),
         (1, false) => "one limit state with eta in [eta_s, 2), above eta_s (unique; none at eta_s)"
             .to_string(),
+        (n, _) if search.method == SearchMethod::Found => format!(
+            "at least {n} limit states with eta in [eta_s, 2) (not unique; the list is not claimed complete)"
+        ),
         (n, _) => format!("{n} limit states with eta in [eta_s, 2) (not unique)"),
     };
     Ok((
         checks,
         format!("the search ({}) lists {verdict}", method.name()),
     ))
+}
+
+/// Method `found` rests on its listed limit states alone: at least two (the one at η_s
+/// counted), pairwise distinct (η or reactions), so that `unique = false` follows from them.
+fn found_distinct(cert: &Certificate, search: &SearchEvidence) -> Result<(), Rejection> {
+    let at_eta_s = cert
+        .limit_state
+        .as_ref()
+        .filter(|_| search.mechanism_at_eta);
+    let listed: Vec<&LimitStateCert> = at_eta_s
+        .into_iter()
+        .chain(&search.limit_states_above)
+        .collect();
+    if listed.len() < 2 {
+        return reject(format!(
+            "search: method found lists {} limit state(s): not unique needs two",
+            listed.len()
+        ));
+    }
+    for (i, a) in listed.iter().enumerate() {
+        for b in &listed[i + 1..] {
+            if a.eta == b.eta && a.x == b.x {
+                return reject(format!(
+                    "search: method found lists the limit state at eta = {} twice",
+                    a.eta
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// The `ridge` section (method `ridge` only), re-proved: its lines, or a line saying what

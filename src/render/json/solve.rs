@@ -252,9 +252,8 @@ pub fn solve(survey: &Survey, explain: bool, rays: &Rays) -> SolveJson {
                 // not complete, but two limit states found decide `false`: the ones found
                 // are listed (`search.complete` stays false)
                 doc.unique = Some(survey.unique());
-                if !survey.found.is_empty() && ls.attained {
-                    let at_eta_s = ls.eta == ls.eta_static;
-                    doc.attained = Some(true);
+                if survey.unique() == Some(false) {
+                    let at_eta_s = ls.eta == ls.eta_static && ls.attained;
                     doc.mechanism_at_eta = Some(at_eta_s);
                     doc.limit_states = Some(listed(at_eta_s, sol, &survey.found, rays));
                 }
