@@ -86,7 +86,7 @@ impl Survey {
             Err(_) => {
                 let at_eta_s = matches!(&self.solution.outcome,
                     Outcome::Limit(ls) if ls.eta == ls.eta_static && ls.attained);
-                return (usize::from(at_eta_s) + distinct(&self.found) >= 2).then_some(false);
+                return (usize::from(at_eta_s) + distinct(&self.found).len() >= 2).then_some(false);
             }
         };
         if s.vertical.is_some() {
@@ -101,18 +101,20 @@ impl Survey {
 /// edge of being active could list one state twice.
 const DISTINCT_REL: f64 = 1e-9;
 
-/// How many distinct states `states` holds (η and reactions to [`DISTINCT_REL`]).
-fn distinct(states: &[LimitState]) -> usize {
+/// The distinct states of `states` (η and reactions to [`DISTINCT_REL`]), the first of each.
+pub(crate) fn distinct(states: &[LimitState]) -> Vec<LimitState> {
     let same = |p: &LimitState, q: &LimitState| {
         let scale = 1.0 + crate::statics::reaction_scale(&q.x);
         (p.t - q.t).abs() <= DISTINCT_REL * q.t
             && (0..3).all(|k| (p.x[k] - q.x[k]).abs() <= DISTINCT_REL * scale)
     };
-    states
-        .iter()
-        .enumerate()
-        .filter(|(i, p)| !states[..*i].iter().any(|q| same(p, q)))
-        .count()
+    let mut out: Vec<LimitState> = Vec::new();
+    for p in states {
+        if !out.iter().any(|q| same(p, q)) {
+            out.push(p.clone());
+        }
+    }
+    out
 }
 
 /// The extreme rays of the mechanism cones of a survey's limit states, each a list of

@@ -111,7 +111,7 @@ pub fn certify_found(
         survey.states = Err(Undecided::Discretisation(
             "limit states above eta_s known from elsewhere were missed by the search".into(),
         ));
-        survey.found = found.to_vec();
+        survey.found = crate::limit_states::distinct(found);
     }
     let limit = |least| {
         let found = (&survey, traced.as_deref());
