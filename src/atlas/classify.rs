@@ -1,7 +1,7 @@
 //! The kind of one (α, μ): what the complete limit-state search says about uniqueness.
 
 use crate::arch::{Arch, InputError};
-use crate::limit_states::survey;
+use crate::limit_states::{survey, LimitState};
 use crate::settings::Settings;
 use crate::undecided::Undecided;
 
@@ -38,19 +38,27 @@ pub type Classified = Result<(Kind, Vec<f64>), Undecided>;
 
 /// The kind of `arch` at `mu` by the complete search, with the η of its limit states.
 pub fn classify(arch: &Arch, mu: f64, settings: &Settings) -> Result<Classified, InputError> {
+    Ok(classify_states(arch, mu, settings)?.0)
+}
+
+/// [`classify`], with the limit states above η_s the search found (also where it did not
+/// settle), for the atlas to follow.
+pub(super) fn classify_states(
+    arch: &Arch,
+    mu: f64,
+    settings: &Settings,
+) -> Result<(Classified, Vec<LimitState>), InputError> {
     let sv = survey(arch, mu, settings)?;
     if matches!(sv.solution.outcome, crate::Outcome::NoEquilibrium { .. }) {
-        return Ok(Ok((Kind::NoEquilibrium, Vec::new())));
+        return Ok((Ok((Kind::NoEquilibrium, Vec::new())), Vec::new()));
     }
     let states = match &sv.states {
         Ok(s) => s,
         Err(e) => {
             // not searched to the end, but η_s carries a limit state and another was found
             // above it (verified on the continuum): non-unique all the same
-            return Ok(match &sv.solution.outcome {
-                crate::Outcome::Limit(ls)
-                    if ls.eta == ls.eta_static && ls.attained && !sv.found.is_empty() =>
-                {
+            let kind = match sv.limit_at_eta_s() {
+                Some(ls) if !sv.found.is_empty() => {
                     let above = sv.found.iter().map(|s| s.t);
                     Ok((
                         Kind::NonUnique,
@@ -58,7 +66,8 @@ pub fn classify(arch: &Arch, mu: f64, settings: &Settings) -> Result<Classified,
                     ))
                 }
                 _ => Err(e.clone()),
-            });
+            };
+            return Ok((kind, sv.found));
         }
     };
     let mut etas: Vec<f64> = states.above.iter().map(|s| s.t).collect();
@@ -72,5 +81,5 @@ pub fn classify(arch: &Arch, mu: f64, settings: &Settings) -> Result<Classified,
     } else {
         Kind::Unique
     };
-    Ok(Ok((kind, etas)))
+    Ok((Ok((kind, etas)), states.above.clone()))
 }

@@ -2,10 +2,10 @@
 //! of kind located by bisection, and the runs of one kind they bound.
 
 use super::certified::certified_kind_with;
-use super::classify::{classify, Classified, Kind};
+use super::classify::{classify, classify_states, Classified, Kind};
 use crate::arch::{Arch, InputError, JointLayout, WeightModel};
 use crate::friction::friction_limit;
-use crate::limit_states::{follow, lost_at, survey, LimitState};
+use crate::limit_states::{follow, lost_at, LimitState};
 use crate::settings::Settings;
 
 /// What the atlas covers.
@@ -337,7 +337,7 @@ fn locate(
             (tight, stopped) = (true, None);
             break;
         }
-        let mut kind = classify(arch, m, settings)?;
+        let (mut kind, found) = classify_states(arch, m, settings)?;
         if let (Ok((k, etas)), Some((_, at, states))) = (&mut kind, &mut tracked) {
             let followed: Vec<LimitState> = states
                 .iter()
@@ -349,11 +349,7 @@ fn locate(
             }
             if *k == Kind::NonUnique {
                 // the search's own states where the tracked ones changed pattern on the way
-                let now = if followed.is_empty() {
-                    states_above(arch, m, settings)?
-                } else {
-                    followed
-                };
+                let now = if followed.is_empty() { found } else { followed };
                 (*at, *states) = (m, now);
             }
         }
@@ -423,11 +419,7 @@ fn follow_to(
 
 /// The limit states above η_s at `mu` (those found where the search did not settle).
 fn states_above(arch: &Arch, mu: f64, settings: &Settings) -> Result<Vec<LimitState>, InputError> {
-    let sv = survey(arch, mu, settings)?;
-    Ok(match sv.states {
-        Ok(s) => s.above,
-        Err(_) => sv.found,
-    })
+    Ok(classify_states(arch, mu, settings)?.1)
 }
 
 /// The limit states `states` (above η_s at `from`), each followed to `to` ([`lost_at`]):

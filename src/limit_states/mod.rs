@@ -77,6 +77,15 @@ pub struct Survey {
 }
 
 impl Survey {
+    /// The solve's least state where it is a limit state at η_s (η_s attained, and its
+    /// active contacts carry a mechanism), whatever the search above it found.
+    pub fn limit_at_eta_s(&self) -> Option<&LeastLimitState> {
+        match &self.solution.outcome {
+            Outcome::Limit(ls) if ls.eta == ls.eta_static && ls.attained => Some(ls),
+            _ => None,
+        }
+    }
+
     /// Whether exactly one limit state exists with η in [η_s, 2) (`None`: the search was
     /// not completed, and the limit states it found are not two: a least state carrying a
     /// mechanism and one found above it, or two above, decide `false` all the same).
@@ -84,9 +93,8 @@ impl Survey {
         let s = match &self.states {
             Ok(s) => s,
             Err(_) => {
-                let at_eta_s = matches!(&self.solution.outcome,
-                    Outcome::Limit(ls) if ls.eta == ls.eta_static && ls.attained);
-                return (usize::from(at_eta_s) + distinct(&self.found).len() >= 2).then_some(false);
+                let at_eta_s = usize::from(self.limit_at_eta_s().is_some());
+                return (at_eta_s + distinct(&self.found).len() >= 2).then_some(false);
             }
         };
         if s.vertical.is_some() {

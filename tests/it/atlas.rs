@@ -43,8 +43,7 @@ fn solve_kind(arch: &Arch, mu: f64) -> Option<&'static str> {
     let Ok(s) = sv.states.as_ref() else {
         // not searched to the end: non-unique where η_s carries a limit state and another
         // was found (as `atlas` classifies it), else undecided
-        let at_eta_s = matches!(&sv.solution.outcome,
-            Outcome::Limit(ls) if ls.eta == ls.eta_static && ls.attained);
+        let at_eta_s = sv.limit_at_eta_s().is_some();
         return (at_eta_s && sv.unique() == Some(false)).then_some("non_unique");
     };
     Some(if !s.mechanism_at_eta_s || !s.attained {

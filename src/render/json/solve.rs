@@ -253,7 +253,7 @@ pub fn solve(survey: &Survey, explain: bool, rays: &Rays) -> SolveJson {
                 // are listed (`search.complete` stays false)
                 doc.unique = Some(survey.unique());
                 if survey.unique() == Some(false) {
-                    let at_eta_s = ls.eta == ls.eta_static && ls.attained;
+                    let at_eta_s = survey.limit_at_eta_s().is_some();
                     doc.mechanism_at_eta = Some(at_eta_s);
                     doc.limit_states = Some(listed(at_eta_s, sol, &survey.found, rays));
                 }
