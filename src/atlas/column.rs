@@ -5,7 +5,7 @@ use super::certified::certified_kind_with;
 use super::classify::{classify, classify_states, Classified, Kind};
 use crate::arch::{Arch, InputError, JointLayout, WeightModel};
 use crate::friction::friction_limit;
-use crate::limit_states::{follow, lost_at, LimitState};
+use crate::limit_states::{branch_end, follow, lost_at, BranchEnd, LimitState};
 use crate::settings::Settings;
 
 /// What the atlas covers.
@@ -142,6 +142,10 @@ pub struct BoundaryPoint {
     /// The limit states above η_s followed to the non-unique end (between `non_unique` and
     /// `unique`; what the end's certificate lists where the search there missed them).
     pub followed: Vec<LimitState>,
+    /// Between `non_unique` and `unique`: where the last of the followed branches ends,
+    /// solved from the condition that ends it ([`branch_end()`]), or why not. `None` for
+    /// other pairs of kinds.
+    pub end: Option<Result<BranchEnd, String>>,
     /// With [`Rectangle::certify`]: verified certificates at the bracket's two ends state the
     /// two kinds (`Ok`, true where the verifier proved both lists of limit states complete,
     /// false where it only checked the listed states), or why not (`Err`).
@@ -149,9 +153,29 @@ pub struct BoundaryPoint {
 }
 
 impl BoundaryPoint {
-    /// The point's μ: the middle of its bracket.
+    /// The point's μ: where its branch ends, solved from the defining condition, or
+    /// else the middle of its bracket.
     pub fn mu(&self) -> f64 {
-        0.5 * (self.bracket.0 + self.bracket.1)
+        match &self.end {
+            Some(Ok(e)) => e.mu,
+            _ => 0.5 * (self.bracket.0 + self.bracket.1),
+        }
+    }
+
+    /// The two μ that `--certify` certifies as the two kinds: the bracket, or where the
+    /// point is solved from its defining condition, the branch's end (its last limit state,
+    /// at the non-unique side) and the bracket's other end.
+    pub fn certified_bracket(&self) -> (f64, f64) {
+        match (&self.end, self.between[0]) {
+            (Some(Ok(e)), Kind::NonUnique) => (e.mu, self.bracket.1),
+            (Some(Ok(e)), _) => (self.bracket.0, e.mu),
+            _ => self.bracket,
+        }
+    }
+
+    /// Whether the point is solved from its defining condition.
+    pub fn exact(&self) -> bool {
+        matches!(self.end, Some(Ok(_)))
     }
 }
 
@@ -279,11 +303,16 @@ fn certify_column(arch: &Arch, col: &mut Column, settings: &Settings) {
         ));
     }
     for p in &mut col.boundaries {
-        let (lo, hi) = p.bracket;
-        // the followed states belong to the non-unique end
+        let (lo, hi) = p.certified_bracket();
+        // the followed states (or the branch's last one, at its end) belong to the
+        // non-unique end
+        let last: Vec<LimitState> = match &p.end {
+            Some(Ok(e)) => vec![e.state.clone()],
+            _ => p.followed.clone(),
+        };
         let (f_lo, f_hi): (&[LimitState], &[LimitState]) = match p.between[0] {
-            Kind::NonUnique => (&p.followed, &[]),
-            _ => (&[], &p.followed),
+            Kind::NonUnique => (&last, &[]),
+            _ => (&[], &last),
         };
         p.certified = Some(both(
             holds_with(lo, p.between[0], f_lo),
@@ -370,7 +399,7 @@ fn locate(
             }
         }
     }
-    let (mut why, mut followed) = (None, Vec::new());
+    let (mut why, mut followed, mut end) = (None, Vec::new(), None);
     if let Some((at_lo, at, states)) = tracked {
         let (from, to) = if at_lo { (lo, hi) } else { (hi, lo) };
         followed = states
@@ -378,6 +407,7 @@ fn locate(
             .filter_map(|s| follow_to(arch, s, (at, from), settings, FOLLOW_HALVINGS))
             .collect();
         why = Some(why_lost(arch, &followed, (from, to), settings)).filter(|w| !w.is_empty());
+        end = last_end(arch, &followed, (from, to), settings);
     }
     out.push(BoundaryPoint {
         alpha,
@@ -387,6 +417,7 @@ fn locate(
         stopped,
         why,
         followed,
+        end,
         certified: None,
     });
     Ok(())
@@ -415,6 +446,30 @@ fn follow_to(
     let mid = 0.5 * (from + to);
     let half = follow_to(arch, s, (from, mid), settings, halvings - 1)?;
     follow_to(arch, &half, (mid, to), settings, halvings - 1)
+}
+
+/// Where the last of the branches of `states` (limit states at `from`, none of them one at
+/// `to`) ends between the two, each solved from its defining condition ([`branch_end()`]):
+/// `Err` where one of them could not be (why); `None` without states.
+fn last_end(
+    arch: &Arch,
+    states: &[LimitState],
+    (from, to): (f64, f64),
+    settings: &Settings,
+) -> Option<Result<BranchEnd, String>> {
+    let mut last: Option<BranchEnd> = None;
+    for s in states {
+        match branch_end(arch, s, (from, to), settings) {
+            Ok(e) => {
+                let later = |l: &BranchEnd| (e.mu - l.mu) * (to - from) > 0.0;
+                if last.as_ref().is_none_or(later) {
+                    last = Some(e);
+                }
+            }
+            Err(why) => return Some(Err(format!("the limit state at eta = {:.10}: {why}", s.t))),
+        }
+    }
+    last.map(Ok)
 }
 
 /// The limit states above η_s at `mu` (those found where the search did not settle).

@@ -9,9 +9,11 @@
 //! different kinds the change is located by bisection in μ down to neighbouring floats (a
 //! sample of a third kind in between splits the bracket). Between columns the regions are
 //! joined by their boundaries' straight segments where both columns hold the same kinds in
-//! the same order; elsewhere each column's runs hold up to the middle of the strip. The
-//! boundary points are located to the last float of μ at their α, not solved from their
-//! defining conditions (`exact: false`), and not certified.
+//! the same order; elsewhere each column's runs hold up to the middle of the strip. Between
+//! `non_unique` and `unique` on a continuous arch the non-unique end's branches of limit
+//! states are followed and the point is where the last one ends, solved from the condition
+//! that ends it ([`crate::limit_states::branch_end()`]); other boundary points are brackets
+//! to the last float of μ. With [`Rectangle::certify`] both sides are certified.
 
 mod certified;
 mod classify;

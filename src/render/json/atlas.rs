@@ -36,7 +36,22 @@ struct PointJson {
     /// are none at the other end (each followed there by Newton on its pattern).
     #[serde(skip_serializing_if = "Option::is_none")]
     why: Option<String>,
+    /// Whether `mu` is solved from the condition that ends the branch (else the middle of
+    /// the bracket, or μ_ms as `friction_limit` gives it).
     exact: bool,
+    /// Solved from its defining condition: η of the branch's last limit state.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    eta: Option<f64>,
+    /// Solved from its defining condition: what ends the branch there.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    condition: Option<String>,
+    /// Solved from its defining condition: the condition's residual there.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    residual: Option<f64>,
+    /// Between `non_unique` and `unique`: why the point is not solved from its defining
+    /// condition.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    not_exact: Option<String>,
     /// Verified certificates at both ends of the bracket state its two kinds.
     certified: bool,
     /// With `--certify`, why the bracket is not certified.
@@ -150,6 +165,10 @@ fn boundaries(columns: &[Column]) -> Vec<BoundaryJson> {
                     stopped: None,
                     why: None,
                     exact: c.mu_ms_exact,
+                    eta: None,
+                    condition: None,
+                    residual: None,
+                    not_exact: None,
                     certified: matches!(c.mu_ms_certified, Some(Ok(_))),
                     not_certified: c.mu_ms_certified.clone().and_then(Result::err),
                     certified_bracket: c
@@ -165,6 +184,7 @@ fn boundaries(columns: &[Column]) -> Vec<BoundaryJson> {
                 });
         }
         for p in &c.boundaries {
+            let end = p.end.clone().and_then(Result::ok);
             by_pair.entry(p.between).or_default().push(PointJson {
                 alpha: p.alpha,
                 mu: p.mu(),
@@ -172,11 +192,17 @@ fn boundaries(columns: &[Column]) -> Vec<BoundaryJson> {
                 tight: p.tight,
                 stopped: p.stopped.clone(),
                 why: p.why.clone(),
-                exact: false,
+                exact: p.exact(),
+                eta: end.as_ref().map(|e| e.state.t),
+                condition: end.as_ref().map(|e| e.condition.describe()),
+                residual: end.as_ref().map(|e| e.residual),
+                not_exact: p.end.clone().and_then(Result::err),
                 certified: matches!(p.certified, Some(Ok(_))),
                 not_certified: p.certified.clone().and_then(Result::err),
-                certified_bracket: matches!(p.certified, Some(Ok(_)))
-                    .then_some([p.bracket.0, p.bracket.1]),
+                certified_bracket: matches!(p.certified, Some(Ok(_))).then(|| {
+                    let (lo, hi) = p.certified_bracket();
+                    [lo, hi]
+                }),
                 list_proved_complete: p.certified.clone().and_then(Result::ok),
             });
         }

@@ -2,6 +2,7 @@
 
 use super::format::sig;
 use crate::atlas::{Atlas, Kind};
+use crate::limit_states::EndCondition;
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
@@ -56,21 +57,30 @@ pub fn atlas(a: &Atlas) -> String {
     s
 }
 
+/// A boundary point as the summary counts it: (α, μ/μ_ms, tight, how its branch ends: 0
+/// not solved, 1 a contact reaches its limit, 2 a mechanism rate falls to 0).
+type Seen = (f64, f64, bool, usize);
+
 /// Each pair of kinds that meet: how many points, over which openings, at what μ/μ_ms.
 fn boundaries(s: &mut String, a: &Atlas) {
-    let mut by_pair: BTreeMap<[Kind; 2], Vec<(f64, f64, bool)>> = BTreeMap::new();
+    let mut by_pair: BTreeMap<[Kind; 2], Vec<Seen>> = BTreeMap::new();
     for c in &a.columns {
         for p in &c.boundaries {
             let ratio = c.mu_ms.map_or(f64::NAN, |m| p.mu() / m);
+            let how = match &p.end {
+                Some(Ok(e)) if matches!(e.condition, EndCondition::Admissibility(_)) => 1,
+                Some(Ok(_)) => 2,
+                _ => 0,
+            };
             by_pair
                 .entry(p.between)
                 .or_default()
-                .push((p.alpha, ratio, p.tight));
+                .push((p.alpha, ratio, p.tight, how));
         }
     }
     let _ = writeln!(
         s,
-        "boundaries (located by bisection in mu at each column; not solved from their defining conditions):"
+        "boundaries (bisected in mu at each column; where a branch of limit states ends, solved from the condition that ends it):"
     );
     if by_pair.is_empty() {
         let _ = writeln!(s, "  none: one kind above mu_ms at every opening");
@@ -83,9 +93,17 @@ fn boundaries(s: &mut String, a: &Atlas) {
             (m.0.min(p.1), m.1.max(p.1))
         });
         let loose = pts.iter().filter(|p| !p.2).count();
+        let how = |h: usize| pts.iter().filter(|p| p.3 == h).count();
+        let solved = match (how(1), how(2)) {
+            (0, 0) => String::new(),
+            (l, r) => format!(
+                "; {} solved ({l} where a contact reaches its limit, {r} where a mechanism rate falls to 0)",
+                l + r
+            ),
+        };
         let _ = writeln!(
             s,
-            "  {} / {}: {} point(s), alpha {:.5} to {:.5}, mu/mu_ms {} to {}{}",
+            "  {} / {}: {} point(s), alpha {:.5} to {:.5}, mu/mu_ms {} to {}{}{solved}",
             k[0].name(),
             k[1].name(),
             pts.len(),

@@ -1,0 +1,106 @@
+//! A limit state of a continuous arch on its pattern: Newton from where it was (a discrete
+//! limit state carried over, or one found at another friction), then the checks (admissible
+//! over the whole arch, a mechanism on its active contacts), or why the pattern carries no
+//! limit state there.
+
+use super::sweep::LimitState;
+use crate::arch::Arch;
+use crate::contact::{Contact, ContactKind};
+use crate::mechanism;
+use crate::refine::{solve_system, Unknowns};
+use crate::settings::Settings;
+use crate::state::State;
+use crate::statics::Reactions;
+
+/// Newton on the continuous pattern from a discrete limit state, then the checks: the state
+/// admissible over the whole arch, a mechanism on its active contacts.
+pub(crate) fn refine(
+    arch: &Arch,
+    mu: f64,
+    eta: f64,
+    x: Reactions,
+    pattern: &[Contact],
+    settings: &Settings,
+) -> Option<LimitState> {
+    refined(arch, mu, (eta, x), pattern, settings).ok()
+}
+
+/// [`refine`], or why the pattern carries no limit state at `mu`.
+pub(crate) fn refined(
+    arch: &Arch,
+    mu: f64,
+    (eta, x): (f64, Reactions),
+    pattern: &[Contact],
+    settings: &Settings,
+) -> Result<LimitState, String> {
+    if pattern.len() < 4 {
+        return Err(format!("{} contacts fix no state", pattern.len()));
+    }
+    let start = State { arch, eta, mu, x };
+    let r = solve_system(&start, pattern, Unknowns::T, settings)
+        .map_err(|e| format!("Newton on the pattern finds no state ({e:?})"))?;
+    let st = State {
+        arch,
+        eta: r.t,
+        mu,
+        x: r.x,
+    };
+    let v = st.verdict(ContactKind::active_at(mu), settings);
+    if v.worst > settings.adm_tol {
+        return Err(format!(
+            "the pattern's state (eta = {}) is not admissible: violated by {:.2e} (relative)",
+            r.t, v.worst
+        ));
+    }
+    let mech = match mechanism::find(&st, &v.active, settings) {
+        Ok(Some(m)) => m,
+        Ok(None) => {
+            return Err(format!(
+                "the pattern's state (eta = {}) carries no mechanism without dilatancy",
+                r.t
+            ))
+        }
+        Err(e) => return Err(format!("the mechanism LP failed ({e:?})")),
+    };
+    Ok(LimitState::unloaded(
+        arch,
+        (r.t, r.x),
+        v.active,
+        mech,
+        settings,
+    ))
+}
+
+/// The limit state `s` of a continuous arch (found at another friction) followed to `mu`:
+/// Newton on its pattern from where it was, the state admissible over the whole arch and a
+/// mechanism on its active contacts; or why that pattern carries no limit state at `mu`.
+pub fn follow(
+    arch: &Arch,
+    mu: f64,
+    s: &LimitState,
+    settings: &Settings,
+) -> Result<LimitState, String> {
+    refined(arch, mu, (s.t, s.x), &s.pattern, settings)
+}
+
+/// Why the limit state `s` of a continuous arch (found at another friction) is not one at
+/// `mu` on its own pattern, Newton from where it was: `None` where it still is one there.
+/// With its smallest mechanism rate, which tends to zero where a branch ends because its
+/// mechanism is lost.
+pub fn lost_at(arch: &Arch, mu: f64, s: &LimitState, settings: &Settings) -> Option<String> {
+    let why = follow(arch, mu, s, settings).err()?;
+    let least = s
+        .mechanism
+        .contacts
+        .iter()
+        .zip(&s.mechanism.rates)
+        .min_by(|a, b| a.1.total_cmp(b.1));
+    Some(match least {
+        Some((c, r)) => format!(
+            "{why}; its smallest rate before was {r:.2e} ({} at beta = {:.6})",
+            c.kind.name(),
+            c.beta
+        ),
+        None => why,
+    })
+}
