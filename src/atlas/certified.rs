@@ -4,13 +4,47 @@
 
 use super::classify::Kind;
 use crate::arch::Arch;
-use crate::certificate::{certify_found, verify, Claim};
+use crate::certificate::{certify_found, certify_load, verify, Claim};
 use crate::limit_states::LimitState;
+use crate::load::LiveLoad;
 use crate::settings::Settings;
 
 /// The relative gap of the η* brackets the atlas certifies (wide enough to be cheap; the kind
 /// does not depend on it).
 const ATLAS_GAP: f64 = 1e-9;
+
+/// A reduction of the collapse multiplier re-proved: the load certificate of `load` at
+/// (`eta`, `mu`) ([`certify_load`]), checked by the independent verifier, proves λ_static in
+/// a bracket [λ_lo, λ_hi] and lists a limit state at λ_c < λ_lo (each listed state checked
+/// by the verifier), so λ_c/λ_static ≤ λ_c/λ_lo. Returns that certified least reduction,
+/// 1 − λ_c/λ_lo (the least listed state's λ_c), or why there is none.
+pub fn certified_reduction(
+    arch: &Arch,
+    (eta, mu): (f64, f64),
+    load: &LiveLoad,
+    settings: &Settings,
+) -> Result<f64, String> {
+    let cert = certify_load(arch, eta, mu, load, ATLAS_GAP, settings).map_err(|e| e.0)?;
+    let report =
+        verify(&cert).map_err(|r| format!("the verifier rejected the certificate: {}", r.0))?;
+    let Some((lo, Some(_))) = report.lambda_bracket else {
+        return Err("the certificate proves no finite lambda_static".into());
+    };
+    let least = cert
+        .load_search
+        .as_ref()
+        .and_then(|s| s.limit_states.first())
+        .ok_or("the certificate lists no limit state")?;
+    let reduction = 1.0 - least.lambda / lo;
+    if reduction > 0.0 {
+        Ok(reduction)
+    } else {
+        Err(format!(
+            "its least listed limit state (lambda = {}) is not below the proved lambda_static >= {lo}",
+            least.lambda
+        ))
+    }
+}
 
 /// The kind at (arch, μ) as a verified certificate states it, and whether the verifier
 /// proved the certificate's list of limit states complete (the ridge evidence of a voussoir

@@ -8,6 +8,7 @@
 //! narrower than the grid's spacing is not seen, and a cell without a reduction proves
 //! nothing about its neighbours.
 
+use super::certified::certified_reduction;
 use super::column::Rectangle;
 use crate::arch::InputError;
 use crate::collapse_mode::CollapseMode;
@@ -74,6 +75,9 @@ pub struct LoadCell {
     pub eta: Option<f64>,
     /// Its answer.
     pub answer: CellAnswer,
+    /// With [`Rectangle::certify`], at a reduced cell: the reduction a verified load
+    /// certificate proves at least ([`super::certified::certified_reduction`]), or why not.
+    pub certified: Option<Result<f64, String>>,
 }
 
 impl LoadCell {
@@ -254,6 +258,7 @@ fn cell(
         mu,
         eta,
         answer,
+        certified: None,
     };
     let eta_star = match least {
         Ok(e) => *e,
@@ -279,5 +284,9 @@ fn cell(
         Ok(LoadOutcome::NoEquilibrium) => CellAnswer::NoRing,
         Err(e) => CellAnswer::Undecided(e.to_string()),
     };
-    Ok(at(Some(eta), answer))
+    let mut c = at(Some(eta), answer);
+    if rect.certify && c.reduced() {
+        c.certified = Some(certified_reduction(&arch, (eta, mu), &load, settings));
+    }
+    Ok(c)
 }

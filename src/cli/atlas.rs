@@ -36,7 +36,7 @@ pub(crate) struct RectArgs {
     #[arg(long, default_value_t = 40, allow_hyphen_values = true)]
     samples: usize,
     /// Certify the ends of every located bracket and one sample of every run (`certify`),
-    /// each re-proved by the verifier (`verify`).
+    /// each re-proved by the verifier (`verify`); with --horizontal, every reduced cell.
     #[arg(long)]
     certify: bool,
     #[command(flatten)]
@@ -76,7 +76,7 @@ struct LoadMapArgs {
     /// springing) instead: lambda_c/lambda_static over the openings and the thicknesses
     /// eta = f eta*(alpha, mu), at each --mu. Each cell is a complete load search (tens of
     /// ms on a continuous arch): mind --columns.
-    #[arg(long, requires = "mu", conflicts_with_all = ["certify", "samples", "mu_max_factor"])]
+    #[arg(long, requires = "mu", conflicts_with_all = ["samples", "mu_max_factor"])]
     horizontal: bool,
     /// With --horizontal: the friction coefficients, comma-separated (0 < mu < inf).
     #[arg(

@@ -342,7 +342,9 @@ fn certified_brackets() {
 /// the largest reduction of the collapse acceleration below the static maximum, 12.5 % at
 /// α = 0.45 (η = 0.6090, a mixed mode; the limit state λ = 0.23659 is found by 96 and 192
 /// pieces, missed by 48), is the largest over the cells, and every answered cell is the
-/// load survey run on its own; on five voussoirs each cell's collapse multiplier
+/// load survey run on its own; with `--certify` each of the three reductions is proved by a
+/// verified load certificate (λ_static ≥ the proved λ_lo > a listed limit state's λ), to
+/// within 1e-6 of its size; on five voussoirs each cell's collapse multiplier
 /// is the least limit state of the brute force (`load_reference`: every pattern of contacts,
 /// an LP each), and "no collapse" where it finds none. Bad flags are refused by name.
 #[test]
@@ -382,6 +384,39 @@ fn the_load_map_finds_the_reduction_and_agrees_with_the_brute_force() {
         .filter_map(|c| c.reduction())
         .fold(0.0, f64::max);
     assert_eq!(r, most);
+    // certified: a verified load certificate proves lambda_static >= lambda_lo and lists a
+    // limit state below it, at every reduced cell (and only there)
+    let certified = load_map(
+        &LoadGrid {
+            rect: Rectangle {
+                certify: true,
+                ..grid.rect
+            },
+            ..grid.clone()
+        },
+        &settings,
+        2,
+        &|_, _| {},
+    )
+    .unwrap();
+    for (c, plain) in certified.cells.iter().zip(&map.cells) {
+        assert_eq!(c.answer, plain.answer);
+        match (&c.certified, c.reduction().filter(|_| c.reduced())) {
+            (Some(Ok(at_least)), Some(r)) => {
+                assert!(*at_least <= r && *at_least >= r - 1e-6, "{c:?}")
+            }
+            (None, None) => {}
+            other => panic!("{c:?}: {other:?}"),
+        }
+    }
+    assert_eq!(
+        certified
+            .cells
+            .iter()
+            .filter(|c| c.certified.is_some())
+            .count(),
+        3
+    );
     let horizontal = LiveLoad::Horizontal {
         towards_right: true,
     };

@@ -39,6 +39,13 @@ struct CellJson {
     mode: Option<&'static str>,
     #[serde(skip_serializing_if = "Option::is_none")]
     message: Option<String>,
+    /// With `--certify`, at a reduced cell: the reduction a verified load certificate proves
+    /// at least (λ_static ≥ the proved λ_lo, a listed limit state at λ_c below it).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    certified_reduction: Option<f64>,
+    /// With `--certify`, at a reduced cell: why it is not certified.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    not_certified: Option<String>,
 }
 
 /// The load map as JSON.
@@ -84,6 +91,8 @@ fn cell_json(c: &LoadCell) -> CellJson {
         reduction: c.reduction(),
         mode,
         message,
+        certified_reduction: c.certified.clone().and_then(Result::ok),
+        not_certified: c.certified.clone().and_then(Result::err),
     }
 }
 

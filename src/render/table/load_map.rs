@@ -67,7 +67,12 @@ pub fn load_map(map: &LoadMap) -> String {
         let _ = writeln!(s, "cells with a reduction:");
         let _ = writeln!(
             s,
-            "          mu       alpha         eta  lambda_static      lambda_c  reduction  least limit state"
+            "          mu       alpha         eta  lambda_static      lambda_c  reduction  {}",
+            if r.certify {
+                format!("{:<24}  certified (at least)", "least limit state")
+            } else {
+                "least limit state".into()
+            }
         );
     }
     for c in reduced {
@@ -76,14 +81,22 @@ pub fn load_map(map: &LoadMap) -> String {
         };
         let _ = writeln!(
             s,
-            "  {:>10}  {:>10}  {:>10}  {:>13}  {:>12}  {:>9}  {}",
+            "  {:>10}  {:>10}  {:>10}  {:>13}  {:>12}  {:>9}  {}{}",
             sig(c.mu, 6),
             sig(c.alpha, 6),
             c.eta.map_or("-".into(), |e| sig(e, 6)),
             sig(lambda_static, 8),
             sig(lambda_c, 8),
             sig(c.reduction().unwrap_or(0.0), 4),
-            mode.name()
+            match c.certified {
+                Some(_) => format!("{:<24}", mode.name()),
+                None => mode.name().into(),
+            },
+            match &c.certified {
+                Some(Ok(r)) => format!("  {}", sig(*r, 4)),
+                Some(Err(why)) => format!("  not certified: {why}"),
+                None => String::new(),
+            }
         );
     }
     s
