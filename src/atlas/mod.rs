@@ -21,6 +21,7 @@ mod column;
 pub mod loads;
 mod regions;
 mod tips;
+mod top;
 
 pub use certified::certified_kind;
 pub use classify::{classify, Classified, Kind};
@@ -29,6 +30,7 @@ pub use column::{
     MU_MS_BRACKET,
 };
 pub use tips::Tip;
+pub use top::BandTop;
 
 use crate::arch::InputError;
 use crate::settings::Settings;
@@ -47,6 +49,9 @@ pub struct Atlas {
     pub curve: Vec<[f64; 2]>,
     /// Where a kind begins or ends along the μ_ms curve, located to neighbouring floats of α.
     pub tips: Vec<Tip>,
+    /// The top of the non-unique band (its largest μ/μ_ms), where the columns solve its
+    /// boundary points.
+    pub top: Option<BandTop>,
 }
 
 impl Atlas {
@@ -78,11 +83,13 @@ pub fn atlas(
     let with_ms: Vec<&Column> = columns.iter().filter(|c| c.mu_ms.is_some()).collect();
     let curve = regions::mu_ms_curve(&with_ms);
     let tips = tips::tips(rect, &columns, settings)?;
+    let top = top::band_top(rect, &columns, settings)?;
     Ok(Atlas {
         rectangle: *rect,
         columns,
         regions,
         curve,
         tips,
+        top,
     })
 }

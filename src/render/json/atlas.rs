@@ -126,6 +126,24 @@ struct TipJson {
     stopped: Option<String>,
 }
 
+#[derive(Debug, Serialize, JsonSchema)]
+struct TopJson {
+    /// The opening of the largest μ/μ_ms on the `non_unique`/`unique` boundary.
+    alpha: f64,
+    /// Its bracket when the golden section stopped.
+    alpha_bracket: [f64; 2],
+    /// The boundary point's μ there (solved from what ends its branch).
+    mu: f64,
+    mu_ms: f64,
+    /// μ/μ_ms.
+    ratio: f64,
+    /// What ends the branch at the bracket's two ends (different: a corner where the last
+    /// branch to end changes).
+    conditions: [String; 2],
+    /// Openings evaluated.
+    evaluations: usize,
+}
+
 /// The `atlas --json` document.
 #[derive(Debug, Serialize, JsonSchema)]
 pub struct AtlasJson {
@@ -138,6 +156,8 @@ pub struct AtlasJson {
     boundaries: Vec<BoundaryJson>,
     /// Where a kind begins or ends along the μ_ms curve (at μ_ms (1 + 1e-6)).
     tips: Vec<TipJson>,
+    /// The top of the non-unique band (null: no solved `non_unique`/`unique` point).
+    top: Option<TopJson>,
     /// Samples the search did not decide (their runs are in no region).
     undecided: usize,
     columns: Vec<ColumnJson>,
@@ -296,6 +316,15 @@ pub fn atlas(a: &Atlas) -> AtlasJson {
                 stopped: t.stopped.clone(),
             })
             .collect(),
+        top: a.top.as_ref().map(|t| TopJson {
+            alpha: t.alpha,
+            alpha_bracket: [t.alpha_bracket.0, t.alpha_bracket.1],
+            mu: t.mu,
+            mu_ms: t.mu_ms,
+            ratio: t.ratio,
+            conditions: [t.conditions.0.clone(), t.conditions.1.clone()],
+            evaluations: t.evaluations,
+        }),
         undecided: a
             .columns
             .iter()

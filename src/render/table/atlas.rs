@@ -133,6 +133,22 @@ fn boundaries(s: &mut String, a: &Atlas) {
             sig(t.mu_ms, 12)
         );
     }
+    if let Some(t) = &a.top {
+        let same = t.conditions.0 == t.conditions.1;
+        let _ = writeln!(
+            s,
+            "  top of the band: mu/mu_ms = {} at alpha = {} (mu = {}, {}): {}",
+            sig(t.ratio, 12),
+            sig(t.alpha, 12),
+            sig(t.mu, 12),
+            if same { "a smooth peak" } else { "a corner" },
+            if same {
+                t.conditions.0.clone()
+            } else {
+                format!("{} | {}", t.conditions.0, t.conditions.1)
+            }
+        );
+    }
     let undecided = a
         .columns
         .iter()

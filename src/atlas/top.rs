@@ -1,0 +1,139 @@
+//! The top of the non-unique band: the largest μ/μ_ms on its boundary with `unique`, over
+//! the openings. Each value is a boundary point solved from the condition that ends its
+//! branch ([`crate::limit_states::branch_end()`]) at that opening (a column of its own, in a
+//! μ range just above the band), so the ratio is exact at every α; the α of the largest is
+//! found by golden section between the columns around the largest sampled ratio. The top
+//! is where one branch-end curve peaks, or a corner where the last branch to end changes
+//! (the two sides' conditions say which).
+
+use super::classify::Kind;
+use super::column::{column, Column, Rectangle};
+use crate::arch::InputError;
+use crate::settings::Settings;
+
+/// The golden section stops when its bracket in α is this narrow (relative).
+const ALPHA_TOL: f64 = 1e-12;
+
+/// Golden-section steps at most (the bracket shrinks by 0.618 each).
+const MAX_STEPS: usize = 80;
+
+/// Samples of μ in each column the search evaluates.
+const SAMPLES: usize = 10;
+
+/// The top of the non-unique band.
+#[derive(Debug, Clone)]
+pub struct BandTop {
+    /// The opening of the largest μ/μ_ms (the middle of `alpha_bracket`).
+    pub alpha: f64,
+    /// The bracket of that opening when the golden section stopped.
+    pub alpha_bracket: (f64, f64),
+    /// μ of the boundary point there.
+    pub mu: f64,
+    /// μ_ms there.
+    pub mu_ms: f64,
+    /// μ/μ_ms there.
+    pub ratio: f64,
+    /// What ends the branch at the two ends of the bracket (the same condition on the same
+    /// contact: a smooth peak; different: a corner where the last branch to end changes).
+    pub conditions: (String, String),
+    /// Openings evaluated.
+    pub evaluations: usize,
+}
+
+/// The boundary point's μ/μ_ms at `alpha`, its μ, μ_ms and condition (`None`: no solved
+/// point between `non_unique` and `unique` there).
+fn ratio_at(
+    rect: &Rectangle,
+    alpha: f64,
+    top: f64,
+    settings: &Settings,
+) -> Result<Option<(f64, f64, f64, String)>, InputError> {
+    let sub = Rectangle {
+        mu_max_factor: top,
+        samples: SAMPLES,
+        certify: false,
+        ..*rect
+    };
+    let col = column(&sub, (alpha, None), settings)?;
+    Ok(best(&col))
+}
+
+/// The largest μ/μ_ms of a column's solved `non_unique`/`unique` points, with its μ, μ_ms
+/// and condition.
+fn best(col: &Column) -> Option<(f64, f64, f64, String)> {
+    let mu_ms = col.mu_ms?;
+    col.boundaries
+        .iter()
+        .filter(|p| p.between == [Kind::NonUnique, Kind::Unique])
+        .filter_map(|p| match &p.end {
+            Some(Ok(e)) => Some((e.mu / mu_ms, e.mu, mu_ms, e.condition.describe())),
+            _ => None,
+        })
+        .max_by(|a, b| a.0.total_cmp(&b.0))
+}
+
+/// The top of the non-unique band over the columns (`None`: no column has a solved point
+/// between `non_unique` and `unique`).
+pub(super) fn band_top(
+    rect: &Rectangle,
+    columns: &[Column],
+    settings: &Settings,
+) -> Result<Option<BandTop>, InputError> {
+    let sampled: Vec<(usize, f64)> = columns
+        .iter()
+        .enumerate()
+        .filter_map(|(k, c)| best(c).map(|b| (k, b.0)))
+        .collect();
+    let Some(&(k, r)) = sampled.iter().max_by(|a, b| a.1.total_cmp(&b.1)) else {
+        return Ok(None);
+    };
+    let (mut a, mut b) = (
+        columns[k.saturating_sub(1)].alpha,
+        columns[(k + 1).min(columns.len() - 1)].alpha,
+    );
+    // every column of the search reaches a little above the largest sampled ratio
+    let top = 1.0 + 1.5 * (r - 1.0);
+    let mut evaluations = 0;
+    let mut f = |alpha: f64| {
+        evaluations += 1;
+        ratio_at(rect, alpha, top, settings)
+    };
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    let (mut x1, mut x2) = (b - g * (b - a), a + g * (b - a));
+    let value = |v: &Option<(f64, f64, f64, String)>| v.as_ref().map_or(f64::NEG_INFINITY, |v| v.0);
+    let (mut f1, mut f2) = (f(x1)?, f(x2)?);
+    for _ in 0..MAX_STEPS {
+        if b - a <= ALPHA_TOL * a.abs().max(1.0) {
+            break;
+        }
+        if value(&f1) >= value(&f2) {
+            (b, x2, f2) = (x2, x1, f1);
+            x1 = b - g * (b - a);
+            f1 = f(x1)?;
+        } else {
+            (a, x1, f1) = (x1, x2, f2);
+            x2 = a + g * (b - a);
+            f2 = f(x2)?;
+        }
+    }
+    let (left, right) = (f(a)?, f(b)?);
+    let (alpha, mid) = if value(&f1) >= value(&f2) {
+        (x1, f1)
+    } else {
+        (x2, f2)
+    };
+    let Some((ratio, mu, mu_ms, _)) = mid else {
+        return Ok(None);
+    };
+    let name =
+        |v: &Option<(f64, f64, f64, String)>| v.as_ref().map_or("none".into(), |v| v.3.clone());
+    Ok(Some(BandTop {
+        alpha,
+        alpha_bracket: (a, b),
+        mu,
+        mu_ms,
+        ratio,
+        conditions: (name(&left), name(&right)),
+        evaluations,
+    }))
+}
