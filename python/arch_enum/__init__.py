@@ -207,8 +207,11 @@ def atlas(
     """The atlas of uniqueness over symmetric arches of opening alpha in [``alpha_min``,
     ``alpha_max``] and friction mu from mu_ms(alpha) to ``mu_max_factor`` mu_ms(alpha)
     (``arch-enum atlas --json``), as its JSON document: ``regions`` (kind and polygon of
-    [alpha, mu] vertices), ``boundaries``, ``tips``, ``columns`` (every sample), ``undecided``.
-    ``certify=True`` certifies both ends of every located bracket (see docs/uniqueness.md)."""
+    [alpha, mu] vertices), ``boundaries`` (between ``non_unique`` and ``unique`` on continuous
+    arches solved from what ends the branch: ``exact``, ``eta``, ``condition``), ``tips``,
+    ``top`` (the largest mu/mu_ms of the non-unique band), ``columns`` (every sample),
+    ``undecided``. ``certify=True`` certifies both sides of every located boundary point (see
+    docs/uniqueness.md). The load map is ``run("atlas", horizontal=..., mu=[...])``."""
     if not isinstance(certify, (bool, np.bool_)):
         raise TypeError(f"certify must be True or False, got {certify!r}")
     return _native.atlas(

@@ -2,13 +2,18 @@
 //! the openings. Each value is a boundary point solved from the condition that ends its
 //! branch ([`crate::limit_states::branch_end()`]) at that opening (a column of its own, in a
 //! μ range just above the band), so the ratio is exact at every α; the α of the largest is
-//! found by golden section between the columns around the largest sampled ratio. The top
+//! found by golden section between the columns around the largest sampled ratio, each
+//! value by continuation in α (the ends of the columns around it, moved to that opening by
+//! Newton on their defining conditions, [`crate::limit_states::end_on`]; the last of them
+//! stands where it is a limit state above η_s and the search finds the arch unique just
+//! beyond it, else a column of its own decides). The top
 //! is where one branch-end curve peaks, or a corner where the last branch to end changes
 //! (the two sides' conditions say which).
 
-use super::classify::Kind;
+use super::classify::{classify, Kind};
 use super::column::{column, Column, Rectangle};
 use crate::arch::InputError;
+use crate::limit_states::{end_on, BranchEnd};
 use crate::settings::Settings;
 
 /// The golden section stops when its bracket in α is this narrow (relative).
@@ -40,6 +45,71 @@ pub struct BandTop {
     pub evaluations: usize,
 }
 
+/// One opening's value: μ/μ_ms of its boundary point, its μ, μ_ms and condition.
+type Value = Option<(f64, f64, f64, String)>;
+
+/// The search's memory: the branches whose ends it continues in α, each with the opening of
+/// its latest end.
+struct Branches(Vec<(f64, BranchEnd)>);
+
+impl Branches {
+    /// The boundary point at `alpha` by continuation: every known branch's end moved there
+    /// (Newton on its defining condition, [`end_on`]), the last of them, accepted where the
+    /// search finds the arch unique just beyond it (no branch ends later); `None` where
+    /// not (then a column decides).
+    fn at(
+        &mut self,
+        rect: &Rectangle,
+        alpha: f64,
+        settings: &Settings,
+    ) -> Result<Value, InputError> {
+        let arch = rect.arch(alpha)?;
+        let Some(mu_ms) = crate::friction::friction_limit(&arch, settings)
+            .ok()
+            .flatten()
+        else {
+            return Ok(None);
+        };
+        let moved: Vec<Option<BranchEnd>> = self
+            .0
+            .iter()
+            .map(|(_, e)| end_on(&arch, e, settings).ok())
+            .collect();
+        let Some(last) = moved.iter().flatten().max_by(|a, b| a.mu.total_cmp(&b.mu)) else {
+            return Ok(None);
+        };
+        // the end's state is a limit state above η_s there, and none is left beyond it
+        let eta_s = match classify(&arch, last.mu, settings)? {
+            // η_s carries a limit state (the kind of a band's side): etas[0] is η_s
+            Ok((Kind::Unique | Kind::NonUnique, etas)) => etas[0],
+            _ => return Ok(None),
+        };
+        if last.state.t <= eta_s * (1.0 + settings.root_slack) {
+            return Ok(None);
+        }
+        let beyond = last.mu * (1.0 + BEYOND);
+        if !matches!(classify(&arch, beyond, settings)?, Ok((Kind::Unique, _))) {
+            return Ok(None);
+        }
+        let value = (
+            last.mu / mu_ms.mu,
+            last.mu,
+            mu_ms.mu,
+            last.condition.describe(),
+        );
+        for (b, m) in self.0.iter_mut().zip(moved) {
+            if let Some(m) = m {
+                *b = (alpha, m);
+            }
+        }
+        Ok(Some(value))
+    }
+}
+
+/// A continued boundary point stands where the search finds the arch unique this far
+/// beyond it (relative; the kinds decided to tolerances change within ~2e-10 of an end).
+const BEYOND: f64 = 1e-8;
+
 /// The boundary point's μ/μ_ms at `alpha`, its μ, μ_ms and condition (`None`: no solved
 /// point between `non_unique` and `unique` there).
 fn ratio_at(
@@ -47,7 +117,7 @@ fn ratio_at(
     alpha: f64,
     top: f64,
     settings: &Settings,
-) -> Result<Option<(f64, f64, f64, String)>, InputError> {
+) -> Result<Value, InputError> {
     let sub = Rectangle {
         mu_max_factor: top,
         samples: SAMPLES,
@@ -60,7 +130,7 @@ fn ratio_at(
 
 /// The largest μ/μ_ms of a column's solved `non_unique`/`unique` points, with its μ, μ_ms
 /// and condition.
-fn best(col: &Column) -> Option<(f64, f64, f64, String)> {
+fn best(col: &Column) -> Value {
     let mu_ms = col.mu_ms?;
     col.boundaries
         .iter()
@@ -94,13 +164,25 @@ pub(super) fn band_top(
     // every column of the search reaches a little above the largest sampled ratio
     let top = 1.0 + 1.5 * (r - 1.0);
     let mut evaluations = 0;
-    let mut f = |alpha: f64| {
+    // the ends of the columns around the largest, continued in α (a column where that fails)
+    let mut branches = Branches(
+        columns[k.saturating_sub(1)..=(k + 1).min(columns.len() - 1)]
+            .iter()
+            .flat_map(|c| &c.boundaries)
+            .filter(|p| p.between == [Kind::NonUnique, Kind::Unique])
+            .filter_map(|p| p.end.clone()?.ok().map(|e| (p.alpha, e)))
+            .collect(),
+    );
+    let mut f = |alpha: f64| -> Result<Value, InputError> {
         evaluations += 1;
-        ratio_at(rect, alpha, top, settings)
+        match branches.at(rect, alpha, settings)? {
+            Some(v) => Ok(Some(v)),
+            None => ratio_at(rect, alpha, top, settings),
+        }
     };
     let g = 0.5 * (5f64.sqrt() - 1.0);
     let (mut x1, mut x2) = (b - g * (b - a), a + g * (b - a));
-    let value = |v: &Option<(f64, f64, f64, String)>| v.as_ref().map_or(f64::NEG_INFINITY, |v| v.0);
+    let value = |v: &Value| v.as_ref().map_or(f64::NEG_INFINITY, |v| v.0);
     let (mut f1, mut f2) = (f(x1)?, f(x2)?);
     for _ in 0..MAX_STEPS {
         if b - a <= ALPHA_TOL * a.abs().max(1.0) {
@@ -125,8 +207,7 @@ pub(super) fn band_top(
     let Some((ratio, mu, mu_ms, _)) = mid else {
         return Ok(None);
     };
-    let name =
-        |v: &Option<(f64, f64, f64, String)>| v.as_ref().map_or("none".into(), |v| v.3.clone());
+    let name = |v: &Value| v.as_ref().map_or("none".into(), |v| v.3.clone());
     Ok(Some(BandTop {
         alpha,
         alpha_bracket: (a, b),

@@ -19,13 +19,14 @@
 use super::follow::{follow, refined};
 use super::sweep::LimitState;
 use crate::arch::Arch;
-use crate::contact::{Contact, ContactKind};
+use crate::contact::{Contact, ContactKind, Location};
 use crate::kinematics::column;
 use crate::refine::{solve_system, Unknowns};
 use crate::settings::Settings;
 use crate::state::State;
 use crate::statics::Reactions;
 use nalgebra::Matrix3;
+use std::f64::consts::FRAC_PI_2;
 
 /// What ends a branch.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -255,62 +256,88 @@ fn null_rates(contacts: &[Contact], eta: f64, reference: &[f64]) -> Option<[f64;
 }
 
 /// The end where a rate of the mechanism falls to 0: the contact whose cofactor changes
-/// sign between `mu_in` and `mu_out`, and the root of that cofactor in μ by the secant
-/// method, each value at the pattern's state there (Newton from the last one).
+/// sign between `mu_in` and `mu_out`, and the root of that cofactor in μ ([`rate_root`]).
 fn mechanism_end(
     arch: &Arch,
     inside: &LimitState,
     (mu_in, mu_out): (f64, f64),
     settings: &Settings,
 ) -> Result<BranchEnd, String> {
-    let m = &inside.mechanism;
-    let support: Vec<(Contact, f64)> = m.contacts.iter().copied().zip(m.rates.clone()).collect();
-    if support.len() != 4 {
-        return Err(format!(
-            "the mechanism is on {} contacts (a rate condition is solved for four)",
-            support.len()
-        ));
-    }
-    let reference: Vec<f64> = support.iter().map(|p| p.1).collect();
-    // the support's contacts at the pattern's state at μ (free angles refined there)
-    let rates_at = |s: &LimitState, mu: f64| -> Option<(LimitState, [f64; 4])> {
-        let start = State {
-            arch,
-            eta: s.t,
-            mu,
-            x: s.x,
-        };
-        let r = solve_system(&start, &s.pattern, Unknowns::T, settings).ok()?;
-        let cs: Vec<Contact> = support
-            .iter()
-            .map(|(c, _)| nearest(&r.contacts, c))
-            .collect();
-        let v = null_rates(&cs, r.t, &reference)?;
-        let mut moved = s.clone();
-        (moved.t, moved.x, moved.pattern) = (r.t, r.x, r.contacts);
-        Some((moved, v))
-    };
-    let (_, v_out) =
-        rates_at(inside, mu_out).ok_or("Newton on the pattern fails beyond the end")?;
+    let support = support_of(inside)?;
+    let (_, v_out) = rates_at(arch, inside, &support, mu_out, settings)
+        .ok_or("Newton on the pattern fails beyond the end")?;
     let Some(c) = (0..4).min_by(|&a, &b| v_out[a].total_cmp(&v_out[b])) else {
         return Err("no rate".into());
     };
     if v_out[c] > 0.0 {
         return Err("every rate stays positive beyond the end".into());
     }
-    // secant on v_c(μ) from a point well inside the branch and the point beyond its end
+    // from a point well inside the branch and the point beyond its end
     let span = (mu_out - mu_in).abs().max(1e-7 * mu_in.abs());
     let a = mu_in - span * (mu_out - mu_in).signum();
-    let (_, va) = rates_at(inside, a).ok_or("Newton on the pattern fails inside")?;
-    let (sb, vb) = rates_at(inside, mu_out).ok_or("Newton on the pattern fails beyond")?;
+    rate_root(arch, inside, (&support, c), (a, mu_out), settings)
+}
+
+/// The mechanism's four contacts with their rates.
+fn support_of(s: &LimitState) -> Result<Vec<(Contact, f64)>, String> {
+    let m = &s.mechanism;
+    if m.contacts.len() != 4 {
+        return Err(format!(
+            "the mechanism is on {} contacts (a rate condition is solved for four)",
+            m.contacts.len()
+        ));
+    }
+    Ok(m.contacts.iter().copied().zip(m.rates.clone()).collect())
+}
+
+/// The pattern's state at `mu` (Newton from `s`, free angles refined there) and the
+/// null vector of the support's compatibility matrix there ([`null_rates`]).
+fn rates_at(
+    arch: &Arch,
+    s: &LimitState,
+    support: &[(Contact, f64)],
+    mu: f64,
+    settings: &Settings,
+) -> Option<(LimitState, [f64; 4])> {
+    let start = State {
+        arch,
+        eta: s.t,
+        mu,
+        x: s.x,
+    };
+    let r = solve_system(&start, &s.pattern, Unknowns::T, settings).ok()?;
+    let cs: Vec<Contact> = support
+        .iter()
+        .map(|(c, _)| nearest(&r.contacts, c))
+        .collect();
+    let reference: Vec<f64> = support.iter().map(|p| p.1).collect();
+    let v = null_rates(&cs, r.t, &reference)?;
+    let mut moved = s.clone();
+    (moved.t, moved.x, moved.pattern) = (r.t, r.x, r.contacts);
+    Some((moved, v))
+}
+
+/// The root in μ of the cofactor of `support[c]` along the pattern of `s`, by the secant
+/// method from `a` and `b` to the rounding level; the state there checked (admissible, the
+/// other rates positive, a mechanism).
+fn rate_root(
+    arch: &Arch,
+    s: &LimitState,
+    (support, c): (&[(Contact, f64)], usize),
+    (a, b): (f64, f64),
+    settings: &Settings,
+) -> Result<BranchEnd, String> {
+    let at = |s: &LimitState, mu: f64| rates_at(arch, s, support, mu, settings);
+    let (_, va) = at(s, a).ok_or("Newton on the pattern fails inside")?;
+    let (sb, vb) = at(s, b).ok_or("Newton on the pattern fails beyond")?;
     let (mut a, mut ga) = (a, va[c]);
-    let (mut b, mut sb, mut vb) = (mu_out, sb, vb);
+    let (mut b, mut sb, mut vb) = (b, sb, vb);
     for _ in 0..SECANT_STEPS {
         if vb[c] == ga {
             break;
         }
         let next = b - vb[c] * (b - a) / (vb[c] - ga);
-        let (sn, vn) = rates_at(&sb, next).ok_or("Newton on the pattern fails on the way")?;
+        let (sn, vn) = at(&sb, next).ok_or("Newton on the pattern fails on the way")?;
         (a, ga) = (b, vb[c]);
         (b, sb, vb) = (next, sn, vn);
         if (b - a).abs() <= 4.0 * f64::EPSILON * b.abs() || vb[c] == 0.0 {
@@ -349,6 +376,70 @@ fn mechanism_end(
         condition: EndCondition::Mechanism(nearest(&sb.pattern, &support[c].0)),
         residual: gb.abs(),
     })
+}
+
+/// The same end on another arch (a nearby opening): its defining condition solved again from
+/// this end, the contacts at the springings moved to the new arch's (continuation in α).
+pub fn end_on(arch: &Arch, end: &BranchEnd, settings: &Settings) -> Result<BranchEnd, String> {
+    let moved = |c: &Contact| match c.at {
+        Location::Springing if c.beta < FRAC_PI_2 => Contact {
+            beta: arch.beta_right(),
+            ..*c
+        },
+        Location::Springing => Contact {
+            beta: arch.beta_left(),
+            ..*c
+        },
+        Location::Interior => *c,
+    };
+    let mut s = end.state.clone();
+    s.pattern = s.pattern.iter().map(moved).collect();
+    s.mechanism.contacts = s.mechanism.contacts.iter().map(moved).collect();
+    match end.condition {
+        EndCondition::Admissibility(c) => {
+            let start = State {
+                arch,
+                eta: s.t,
+                mu: end.mu,
+                x: s.x,
+            };
+            let r = solve_system(&start, &s.pattern, Unknowns::TMu, settings)
+                .map_err(|e| format!("Newton on the end's five contacts: {e:?}"))?;
+            let at = State {
+                arch,
+                eta: r.t,
+                mu: r.mu,
+                x: r.x,
+            };
+            let worst = at.verdict(ContactKind::active_at(r.mu), settings).worst;
+            if worst > settings.adm_tol {
+                return Err(format!("the end is not admissible ({worst:.1e})"));
+            }
+            let Ok(Some(mech)) = crate::mechanism::find(&at, &r.contacts, settings) else {
+                return Err("the end carries no mechanism".into());
+            };
+            Ok(BranchEnd {
+                mu: r.mu,
+                condition: EndCondition::Admissibility(nearest(&r.contacts, &moved(&c))),
+                state: LimitState::unloaded(arch, (r.t, r.x), r.contacts, mech, settings),
+                residual: r.residual,
+            })
+        }
+        EndCondition::Mechanism(c) => {
+            let support = support_of(&s)?;
+            let c = moved(&c);
+            let k = (0..4)
+                .filter(|&i| support[i].0.kind == c.kind)
+                .min_by(|&i, &j| {
+                    (support[i].0.beta - c.beta)
+                        .abs()
+                        .total_cmp(&(support[j].0.beta - c.beta).abs())
+                })
+                .ok_or("the vanishing contact is not in the mechanism")?;
+            let mu = end.mu;
+            rate_root(arch, &s, (&support, k), (mu * (1.0 - 1e-7), mu), settings)
+        }
+    }
 }
 
 /// The contact of `among` of `c`'s kind nearest to it in β (`c` itself if none).

@@ -29,7 +29,7 @@ use crate::settings::{LimitStateSearch, Settings};
 use crate::state::State;
 use crate::statics::Reactions;
 use crate::undecided::Undecided;
-pub use branch_end::{branch_end, BranchEnd, EndCondition};
+pub use branch_end::{branch_end, end_on, BranchEnd, EndCondition};
 use discretised::{agreed, Carried, Unsettled};
 use follow::refine;
 pub use follow::{follow, lost_at};
