@@ -76,7 +76,7 @@ pub struct LoadCell {
     /// Its answer.
     pub answer: CellAnswer,
     /// With [`Rectangle::certify`], at a reduced cell: the reduction a verified load
-    /// certificate proves at least ([`super::certified::certified_reduction`]), or why not.
+    /// certificate proves at least ([`super::certified_reduction`]), or why not.
     pub certified: Option<Result<f64, String>>,
 }
 

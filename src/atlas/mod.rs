@@ -23,7 +23,7 @@ mod regions;
 mod tips;
 mod top;
 
-pub use certified::certified_kind;
+pub use certified::{certified_kind, certified_reduction};
 pub use classify::{classify, Classified, Kind};
 pub use column::{
     BoundaryPoint, Column, MuMsCertified, Rectangle, Sample, CURVE_STEPS, FIRST_OFFSET,
