@@ -21,7 +21,7 @@ use super::sweep::LimitState;
 use crate::arch::Arch;
 use crate::contact::{Contact, ContactKind, Location};
 use crate::kinematics::column;
-use crate::refine::{solve_system, Unknowns};
+use crate::refine::{solve_system, Refined, Unknowns};
 use crate::settings::Settings;
 use crate::state::State;
 use crate::statics::Reactions;
@@ -89,9 +89,9 @@ pub fn branch_end(
         .ok_or("Newton on the pattern finds no state beyond the end (the branch may turn back)")?;
     let st = State {
         arch,
-        eta: out.0,
+        eta: out.t,
         mu: mu_out,
-        x: out.1,
+        x: out.x,
     };
     if st.verdict(ContactKind::active_at(mu_out), settings).worst > settings.adm_tol {
         admissibility_end(arch, &inside, &st, settings)
@@ -134,21 +134,16 @@ fn four_contacts(
     (inside, mu_in)
 }
 
-/// The pattern's state (η, x) at `mu`, Newton from `s`, whether a limit state or not.
-fn pattern_state(
-    arch: &Arch,
-    s: &LimitState,
-    mu: f64,
-    settings: &Settings,
-) -> Option<(f64, Reactions)> {
+/// The pattern's state at `mu`, Newton from `s` (η unknown, free angles refined), whether a
+/// limit state or not.
+fn pattern_state(arch: &Arch, s: &LimitState, mu: f64, settings: &Settings) -> Option<Refined> {
     let start = State {
         arch,
         eta: s.t,
         mu,
         x: s.x,
     };
-    let r = solve_system(&start, &s.pattern, Unknowns::T, settings).ok()?;
-    Some((r.t, r.x))
+    solve_system(&start, &s.pattern, Unknowns::T, settings).ok()
 }
 
 /// The end where a contact outside the pattern reaches its limit: every contact the state
@@ -189,47 +184,49 @@ fn admissibility_end(
                 continue;
             }
         };
-        let start = State {
-            arch,
-            eta: out.eta,
-            mu: out.mu,
-            x: out.x,
-        };
-        match solve_system(&start, &pattern, Unknowns::TMu, settings) {
-            Ok(r) => {
-                let at = State {
-                    arch,
-                    eta: r.t,
-                    mu: r.mu,
-                    x: r.x,
-                };
-                let worst = at.verdict(ContactKind::active_at(r.mu), settings).worst;
-                if worst > settings.adm_tol {
-                    why.push(format!(
-                        "with {}: not admissible ({worst:.1e})",
-                        c.kind.name()
-                    ));
-                    continue;
-                }
-                let Ok(Some(mech)) = crate::mechanism::find(&at, &r.contacts, settings) else {
-                    why.push(format!("with {}: no mechanism", c.kind.name()));
-                    continue;
-                };
-                let c = nearest(&r.contacts, &c);
-                return Ok(BranchEnd {
-                    mu: r.mu,
-                    state: LimitState::unloaded(arch, (r.t, r.x), r.contacts, mech, settings),
-                    condition: EndCondition::Admissibility(c),
-                    residual: r.residual,
-                });
-            }
-            Err(e) => why.push(format!("with {}: Newton {e:?}", c.kind.name())),
+        match five_contacts(arch, (out.eta, out.mu, out.x), &pattern, c, settings) {
+            Ok(end) => return Ok(end),
+            Err(e) => why.push(format!("with {}: {e}", c.kind.name())),
         }
     }
     Err(format!(
         "no contact the state beyond the end violates closes the branch ({})",
         why.join("; ")
     ))
+}
+
+/// The end where the five contacts of `pattern` are active at once (one of them `c`, the
+/// one that ends the branch): Newton with η and μ unknown from (η, μ, x), the state there
+/// admissible and carrying a mechanism.
+fn five_contacts(
+    arch: &Arch,
+    (eta, mu, x): (f64, f64, Reactions),
+    pattern: &[Contact],
+    c: Contact,
+    settings: &Settings,
+) -> Result<BranchEnd, String> {
+    let start = State { arch, eta, mu, x };
+    let r = solve_system(&start, pattern, Unknowns::TMu, settings)
+        .map_err(|e| format!("Newton on the five contacts: {e:?}"))?;
+    let at = State {
+        arch,
+        eta: r.t,
+        mu: r.mu,
+        x: r.x,
+    };
+    let worst = at.verdict(ContactKind::active_at(r.mu), settings).worst;
+    if worst > settings.adm_tol {
+        return Err(format!("not admissible ({worst:.1e})"));
+    }
+    let Ok(Some(mech)) = crate::mechanism::find(&at, &r.contacts, settings) else {
+        return Err("no mechanism".into());
+    };
+    Ok(BranchEnd {
+        mu: r.mu,
+        condition: EndCondition::Admissibility(nearest(&r.contacts, &c)),
+        state: LimitState::unloaded(arch, (r.t, r.x), r.contacts, mech, settings),
+        residual: r.residual,
+    })
 }
 
 /// The mechanism's four contacts (the pattern's contacts with a positive rate), and the
@@ -299,13 +296,7 @@ fn rates_at(
     mu: f64,
     settings: &Settings,
 ) -> Option<(LimitState, [f64; 4])> {
-    let start = State {
-        arch,
-        eta: s.t,
-        mu,
-        x: s.x,
-    };
-    let r = solve_system(&start, &s.pattern, Unknowns::T, settings).ok()?;
+    let r = pattern_state(arch, s, mu, settings)?;
     let cs: Vec<Contact> = support
         .iter()
         .map(|(c, _)| nearest(&r.contacts, c))
@@ -397,33 +388,7 @@ pub fn end_on(arch: &Arch, end: &BranchEnd, settings: &Settings) -> Result<Branc
     s.mechanism.contacts = s.mechanism.contacts.iter().map(moved).collect();
     match end.condition {
         EndCondition::Admissibility(c) => {
-            let start = State {
-                arch,
-                eta: s.t,
-                mu: end.mu,
-                x: s.x,
-            };
-            let r = solve_system(&start, &s.pattern, Unknowns::TMu, settings)
-                .map_err(|e| format!("Newton on the end's five contacts: {e:?}"))?;
-            let at = State {
-                arch,
-                eta: r.t,
-                mu: r.mu,
-                x: r.x,
-            };
-            let worst = at.verdict(ContactKind::active_at(r.mu), settings).worst;
-            if worst > settings.adm_tol {
-                return Err(format!("the end is not admissible ({worst:.1e})"));
-            }
-            let Ok(Some(mech)) = crate::mechanism::find(&at, &r.contacts, settings) else {
-                return Err("the end carries no mechanism".into());
-            };
-            Ok(BranchEnd {
-                mu: r.mu,
-                condition: EndCondition::Admissibility(nearest(&r.contacts, &moved(&c))),
-                state: LimitState::unloaded(arch, (r.t, r.x), r.contacts, mech, settings),
-                residual: r.residual,
-            })
+            five_contacts(arch, (s.t, end.mu, s.x), &s.pattern, moved(&c), settings)
         }
         EndCondition::Mechanism(c) => {
             let support = support_of(&s)?;

@@ -5,7 +5,7 @@
 
 use crate::atlas::{Atlas, Kind, FIRST_OFFSET};
 use crate::render::fine::Fine;
-use crate::render::plot::{Axis, FAMILY};
+use crate::render::plot::{Axis, AxisCoord, FAMILY};
 use plotters::prelude::*;
 
 const W: u32 = 1000;
@@ -104,42 +104,7 @@ pub fn svg(a: &Atlas) -> Result<String, String> {
                     Rectangle::new([(px, py - 6), (px + 14, py + 6)], c.filled())
                 });
         }
-        // boundary points: filled where solved from what ends the branch, open where a
-        // bracket of the decided kinds
-        let points: Vec<_> = a.columns.iter().flat_map(|c| &c.boundaries).collect();
-        for (exact, name) in [
-            (true, "change of kind, solved"),
-            (false, "change of kind, bracketed"),
-        ] {
-            let style = if exact {
-                BLACK.filled()
-            } else {
-                BLACK.stroke_width(1)
-            };
-            let these: Vec<(f64, f64)> = points
-                .iter()
-                .filter(|p| p.exact() == exact)
-                .map(|p| at([p.alpha, p.mu()]))
-                .collect();
-            if these.is_empty() {
-                continue;
-            }
-            ch.draw_series(these.into_iter().map(|q| Circle::new(q, 3, style)))
-                .map_err(err)?
-                .label(name)
-                .legend(move |(px, py)| Circle::new((px + 7, py), 3, style));
-        }
-        if let Some(t) = &a.top {
-            let q = (x.to(t.alpha), y.to((t.ratio - 1.0).clamp(y.lo, y.hi)));
-            let mark = TriangleMarker::new(q, 7, BLACK.filled());
-            ch.draw_series(std::iter::once(mark))
-                .map_err(err)?
-                .label(format!(
-                    "top of the band: μ/μ_ms = {:.6} at α = {:.6}",
-                    t.ratio, t.alpha
-                ))
-                .legend(|(px, py)| TriangleMarker::new((px + 7, py), 6, BLACK.filled()));
-        }
+        points(&mut ch, a, &at, (x, y))?;
         ch.configure_mesh()
             .disable_mesh()
             .x_desc("opening α (rad)   (below the axis, μ < μ_ms: no equilibrium)")
@@ -160,4 +125,51 @@ pub fn svg(a: &Atlas) -> Result<String, String> {
         root.present().map_err(err)?;
     }
     Ok(fine.finish(&buf))
+}
+
+/// The boundary points (filled where solved from what ends the branch, open where a bracket
+/// of the decided kinds) and the top of the band, with their legend entries.
+fn points(
+    ch: &mut ChartContext<'_, SVGBackend<'_>, Cartesian2d<AxisCoord, AxisCoord>>,
+    a: &Atlas,
+    at: &dyn Fn([f64; 2]) -> (f64, f64),
+    (x, y): (Axis, Axis),
+) -> Result<(), String> {
+    // boundary points: filled where solved from what ends the branch, open where a
+    // bracket of the decided kinds
+    let points: Vec<_> = a.columns.iter().flat_map(|c| &c.boundaries).collect();
+    for (exact, name) in [
+        (true, "change of kind, solved"),
+        (false, "change of kind, bracketed"),
+    ] {
+        let style = if exact {
+            BLACK.filled()
+        } else {
+            BLACK.stroke_width(1)
+        };
+        let these: Vec<(f64, f64)> = points
+            .iter()
+            .filter(|p| p.exact() == exact)
+            .map(|p| at([p.alpha, p.mu()]))
+            .collect();
+        if these.is_empty() {
+            continue;
+        }
+        ch.draw_series(these.into_iter().map(|q| Circle::new(q, 3, style)))
+            .map_err(err)?
+            .label(name)
+            .legend(move |(px, py)| Circle::new((px + 7, py), 3, style));
+    }
+    if let Some(t) = &a.top {
+        let q = (x.to(t.alpha), y.to((t.ratio - 1.0).clamp(y.lo, y.hi)));
+        let mark = TriangleMarker::new(q, 7, BLACK.filled());
+        ch.draw_series(std::iter::once(mark))
+            .map_err(err)?
+            .label(format!(
+                "top of the band: μ/μ_ms = {:.6} at α = {:.6}",
+                t.ratio, t.alpha
+            ))
+            .legend(|(px, py)| TriangleMarker::new((px + 7, py), 6, BLACK.filled()));
+    }
+    Ok(())
 }

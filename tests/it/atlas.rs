@@ -467,6 +467,39 @@ fn the_load_map_finds_the_reduction_and_agrees_with_the_brute_force() {
     assert!(v["message"].as_str().unwrap().contains("--factors"), "{v}");
 }
 
+/// The atlas document of two columns, α = 0.65 and `alpha_max`, 12 samples up to 1.2 μ_ms,
+/// with `extra` flags; each column has one boundary point of the band.
+fn band_doc(alpha_max: &str, extra: &[&str]) -> Value {
+    let flags = [
+        "atlas",
+        "--alpha-min",
+        "0.65",
+        "--alpha-max",
+        alpha_max,
+        "--columns",
+        "2",
+        "--mu-max-factor",
+        "1.2",
+        "--samples",
+        "12",
+    ];
+    let (doc, code) = json_of(&[&flags[..], extra].concat());
+    assert_eq!(code, 0);
+    assert_eq!(band_points(&doc).len(), 2, "{doc}");
+    doc
+}
+
+/// The boundary points between `non_unique` and `unique` of an atlas document.
+fn band_points(doc: &Value) -> Vec<&Value> {
+    doc["boundaries"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|b| b["between"] == serde_json::json!(["non_unique", "unique"]))
+        .flat_map(|b| b["points"].as_array().unwrap())
+        .collect()
+}
+
 /// Near the top of the continuous band the discretised search loses a branch of limit
 /// states before the continuum does: at α = 0.7 the 48- and 96-piece searches agree on no
 /// limit state above η_s a little below where the branch ends. The atlas follows the
@@ -477,28 +510,8 @@ fn the_load_map_finds_the_reduction_and_agrees_with_the_brute_force() {
 /// α = 0.65 the branch ends by losing its mechanism (the interior slide's rate reaches 0).
 #[test]
 fn boundary_points_are_where_the_branches_end() {
-    let (doc, code) = json_of(&[
-        "atlas",
-        "--alpha-min",
-        "0.65",
-        "--alpha-max",
-        "0.7",
-        "--columns",
-        "2",
-        "--mu-max-factor",
-        "1.2",
-        "--samples",
-        "12",
-    ]);
-    assert_eq!(code, 0);
-    let points: Vec<&Value> = doc["boundaries"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .filter(|b| b["between"] == serde_json::json!(["non_unique", "unique"]))
-        .flat_map(|b| b["points"].as_array().unwrap())
-        .collect();
-    assert_eq!(points.len(), 2, "{points:?}");
+    let doc = band_doc("0.7", &[]);
+    let points = band_points(&doc);
     let settings = Settings::default();
     for p in points {
         let (alpha, lo) = (
@@ -560,29 +573,8 @@ fn boundary_points_are_where_the_branches_end() {
 fn boundary_points_are_solved_from_what_ends_the_branch() {
     use crate::continuum_reference::Cont;
     use arch_enum::limit_states::{branch_end, follow, EndCondition};
-    let (doc, code) = json_of(&[
-        "atlas",
-        "--alpha-min",
-        "0.65",
-        "--alpha-max",
-        "0.75",
-        "--columns",
-        "2",
-        "--mu-max-factor",
-        "1.2",
-        "--samples",
-        "12",
-        "--certify",
-    ]);
-    assert_eq!(code, 0);
-    let points: Vec<&Value> = doc["boundaries"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .filter(|b| b["between"] == serde_json::json!(["non_unique", "unique"]))
-        .flat_map(|b| b["points"].as_array().unwrap())
-        .collect();
-    assert_eq!(points.len(), 2, "{points:?}");
+    let doc = band_doc("0.75", &["--certify"]);
+    let points = band_points(&doc);
     let settings = Settings::default();
     for p in points {
         let f = |k: &str| p[k].as_f64().unwrap_or_else(|| panic!("{k} in {p}"));

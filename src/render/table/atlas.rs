@@ -133,22 +133,7 @@ fn boundaries(s: &mut String, a: &Atlas) {
             sig(t.mu_ms, 12)
         );
     }
-    if let Some(t) = &a.top {
-        let same = t.conditions.0 == t.conditions.1;
-        let _ = writeln!(
-            s,
-            "  top of the band: mu/mu_ms = {} at alpha = {} (mu = {}, {}): {}",
-            sig(t.ratio, 12),
-            sig(t.alpha, 12),
-            sig(t.mu, 12),
-            if same { "a smooth peak" } else { "a corner" },
-            if same {
-                t.conditions.0.clone()
-            } else {
-                format!("{} | {}", t.conditions.0, t.conditions.1)
-            }
-        );
-    }
+    top_line(s, a);
     let undecided = a
         .columns
         .iter()
@@ -182,6 +167,26 @@ fn boundaries(s: &mut String, a: &Atlas) {
             s,
             "certified           kinds stated by verified certificates: {} of {} brackets (both ends), {} of {} runs (one sample each), mu_ms to 1e-6 at {} of {} openings;\n                    lists of limit states proved complete (ridge evidence) at {}, {} and {} of them, checked only elsewhere",
             b.1, b.0, r.1, r.0, m.1, m.0, b.2, r.2, m.2
+        );
+    }
+}
+
+/// The top of the non-unique band, where the atlas has one.
+fn top_line(s: &mut String, a: &Atlas) {
+    if let Some(t) = &a.top {
+        let same = t.conditions.0 == t.conditions.1;
+        let _ = writeln!(
+            s,
+            "  top of the band: mu/mu_ms = {} at alpha = {} (mu = {}, {}): {}",
+            sig(t.ratio, 12),
+            sig(t.alpha, 12),
+            sig(t.mu, 12),
+            if same { "a smooth peak" } else { "a corner" },
+            if same {
+                t.conditions.0.clone()
+            } else {
+                format!("{} | {}", t.conditions.0, t.conditions.1)
+            }
         );
     }
 }
