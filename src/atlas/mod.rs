@@ -79,11 +79,11 @@ pub fn atlas(
     })
     .into_iter()
     .collect::<Result<Vec<Column>, InputError>>()?;
-    let regions = regions::regions(&columns);
+    let top = top::band_top(rect, &columns, settings)?;
+    let regions = regions::regions(&columns, top.as_ref().map(|t| [t.alpha, t.mu]));
     let with_ms: Vec<&Column> = columns.iter().filter(|c| c.mu_ms.is_some()).collect();
     let curve = regions::mu_ms_curve(&with_ms);
     let tips = tips::tips(rect, &columns, settings)?;
-    let top = top::band_top(rect, &columns, settings)?;
     Ok(Atlas {
         rectangle: *rect,
         columns,

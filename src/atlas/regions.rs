@@ -14,8 +14,10 @@ type Polygon = Vec<[f64; 2]>;
 /// Two openings closer than this are one (a strip's middle computed two ways).
 const SAME_ALPHA: f64 = 1e-12;
 
-/// Every region of `columns` (ascending in α; those without μ_ms left out).
-pub(super) fn regions(columns: &[Column]) -> Vec<(Kind, Polygon)> {
+/// Every region of `columns` (ascending in α; those without μ_ms left out); `top`, the top of
+/// the non-unique band, is a vertex of the edge between `non_unique` and `unique` in the
+/// strip that holds it.
+pub(super) fn regions(columns: &[Column], top: Option<[f64; 2]>) -> Vec<(Kind, Polygon)> {
     let cols: Vec<&Column> = columns.iter().filter(|c| c.mu_ms.is_some()).collect();
     if cols.is_empty() {
         return Vec::new();
@@ -44,14 +46,26 @@ pub(super) fn regions(columns: &[Column]) -> Vec<(Kind, Polygon)> {
                 continue; // not decided: left out of every region
             };
             let group = &cols[i..=j];
+            let kind_of = |k: usize| cols[i].runs.get(k).and_then(|r| r.0);
+            // the top of the band on the edge between non_unique (below) and unique
+            let band = |below: usize| {
+                top.filter(|_| {
+                    below + 1 < cols[i].runs.len()
+                        && kind_of(below) == Some(Kind::NonUnique)
+                        && kind_of(below + 1) == Some(Kind::Unique)
+                })
+            };
             let lower = if r == 0 {
                 on_curve(&curve, left, right)
             } else {
-                edge(group, (left, right), &curve, |c| c.runs[r].1)
+                with_vertex(
+                    edge(group, (left, right), &curve, |c| c.runs[r].1),
+                    r.checked_sub(1).and_then(band),
+                )
             };
             let mut p = lower;
             p.extend(
-                edge(group, (left, right), &curve, |c| c.runs[r].2)
+                with_vertex(edge(group, (left, right), &curve, |c| c.runs[r].2), band(r))
                     .into_iter()
                     .rev(),
             );
@@ -109,6 +123,18 @@ fn edge(
     p.push([right, held(last, right)]);
     p.dedup();
     p
+}
+
+/// `edge` (ascending in α) with `vertex` inserted in order where it lies strictly inside the
+/// edge's span of α.
+fn with_vertex(mut edge: Polygon, vertex: Option<[f64; 2]>) -> Polygon {
+    if let Some(v) = vertex {
+        let k = edge.partition_point(|q| q[0] < v[0]);
+        if k > 0 && k < edge.len() && edge[k][0] > v[0] {
+            edge.insert(k, v);
+        }
+    }
+    edge
 }
 
 /// The μ_ms curve's value at `alpha`, linear between its points (held at its ends).

@@ -713,6 +713,18 @@ fn the_top_of_the_band_is_where_two_branch_ends_cross() {
     assert!((top.mu / top.mu_ms - top.ratio).abs() < 1e-15);
     assert!(top.conditions.0.contains("falls to 0"), "{top:?}");
     assert!(top.conditions.1.contains("reaches its limit"), "{top:?}");
+    // a vertex of the band's region and of the unique one above it
+    for kind in [
+        arch_enum::atlas::Kind::NonUnique,
+        arch_enum::atlas::Kind::Unique,
+    ] {
+        assert!(
+            a.regions
+                .iter()
+                .any(|(k, p)| *k == kind && p.contains(&[top.alpha, top.mu])),
+            "{kind:?}"
+        );
+    }
     // above both columns' own (exact) boundary points
     for c in &a.columns {
         let p = &c.boundaries[0];
