@@ -16,7 +16,7 @@
 //! Either way the end is a point solved from its defining condition, not the place where a
 //! tolerance is crossed.
 
-use super::follow::{follow, refined};
+use super::follow::{checked, follow, refined};
 use super::sweep::LimitState;
 use crate::arch::Arch;
 use crate::contact::{Contact, ContactKind, Location};
@@ -208,23 +208,11 @@ fn five_contacts(
     let start = State { arch, eta, mu, x };
     let r = solve_system(&start, pattern, Unknowns::TMu, settings)
         .map_err(|e| format!("Newton on the five contacts: {e:?}"))?;
-    let at = State {
-        arch,
-        eta: r.t,
-        mu: r.mu,
-        x: r.x,
-    };
-    let worst = at.verdict(ContactKind::active_at(r.mu), settings).worst;
-    if worst > settings.adm_tol {
-        return Err(format!("not admissible ({worst:.1e})"));
-    }
-    let Ok(Some(mech)) = crate::mechanism::find(&at, &r.contacts, settings) else {
-        return Err("no mechanism".into());
-    };
+    let state = checked(arch, r.mu, (r.t, r.x), Some(r.contacts.clone()), settings)?;
     Ok(BranchEnd {
         mu: r.mu,
         condition: EndCondition::Admissibility(nearest(&r.contacts, &c)),
-        state: LimitState::unloaded(arch, (r.t, r.x), r.contacts, mech, settings),
+        state,
         residual: r.residual,
     })
 }
@@ -346,24 +334,10 @@ fn rate_root(
             "another rate is not positive where this one falls to 0 ({vb:?})"
         ));
     }
-    let end = State {
-        arch,
-        eta: sb.t,
-        mu: b,
-        x: sb.x,
-    };
-    let worst = end.verdict(ContactKind::active_at(b), settings).worst;
-    if worst > settings.adm_tol {
-        return Err(format!(
-            "the state where the rate falls to 0 is not admissible ({worst:.1e})"
-        ));
-    }
-    let Ok(Some(mech)) = crate::mechanism::find(&end, &sb.pattern, settings) else {
-        return Err("the state where the rate falls to 0 carries no mechanism".into());
-    };
+    let state = checked(arch, b, (sb.t, sb.x), Some(sb.pattern.clone()), settings)?;
     Ok(BranchEnd {
         mu: b,
-        state: LimitState::unloaded(arch, (sb.t, sb.x), sb.pattern.clone(), mech, settings),
+        state,
         condition: EndCondition::Mechanism(nearest(&sb.pattern, &support[c].0)),
         residual: gb.abs(),
     })

@@ -39,33 +39,40 @@ pub(crate) fn refined(
     let start = State { arch, eta, mu, x };
     let r = solve_system(&start, pattern, Unknowns::T, settings)
         .map_err(|e| format!("Newton on the pattern finds no state ({e:?})"))?;
-    let st = State {
-        arch,
-        eta: r.t,
-        mu,
-        x: r.x,
-    };
+    checked(arch, mu, (r.t, r.x), None, settings)
+}
+
+/// The state (η, x) at `mu` checked as a limit state: admissible over the whole arch, and a
+/// mechanism on `contacts` (its active contacts where `None`); or why not.
+pub(crate) fn checked(
+    arch: &Arch,
+    mu: f64,
+    (eta, x): (f64, Reactions),
+    contacts: Option<Vec<Contact>>,
+    settings: &Settings,
+) -> Result<LimitState, String> {
+    let st = State { arch, eta, mu, x };
     let v = st.verdict(ContactKind::active_at(mu), settings);
     if v.worst > settings.adm_tol {
         return Err(format!(
-            "the pattern's state (eta = {}) is not admissible: violated by {:.2e} (relative)",
-            r.t, v.worst
+            "the pattern's state (eta = {eta}) is not admissible: violated by {:.2e} (relative)",
+            v.worst
         ));
     }
-    let mech = match mechanism::find(&st, &v.active, settings) {
+    let contacts = contacts.unwrap_or(v.active);
+    let mech = match mechanism::find(&st, &contacts, settings) {
         Ok(Some(m)) => m,
         Ok(None) => {
             return Err(format!(
-                "the pattern's state (eta = {}) carries no mechanism without dilatancy",
-                r.t
+                "the pattern's state (eta = {eta}) carries no mechanism without dilatancy"
             ))
         }
         Err(e) => return Err(format!("the mechanism LP failed ({e:?})")),
     };
     Ok(LimitState::unloaded(
         arch,
-        (r.t, r.x),
-        v.active,
+        (eta, x),
+        contacts,
         mech,
         settings,
     ))
