@@ -437,6 +437,9 @@ fn follow_to(
     settings: &Settings,
     halvings: usize,
 ) -> Option<LimitState> {
+    if from == to {
+        return Some(s.clone()); // a limit state there already (found by the search there)
+    }
     if let Ok(f) = follow(arch, to, s, settings) {
         return Some(f);
     }

@@ -173,12 +173,16 @@ pub(super) fn band_top(
             .filter_map(|p| p.end.clone()?.ok().map(|e| (p.alpha, e)))
             .collect(),
     );
+    // every opening evaluated, with its value
+    let mut log: Vec<(f64, Value)> = Vec::new();
     let mut f = |alpha: f64| -> Result<Value, InputError> {
         evaluations += 1;
-        match branches.at(rect, alpha, settings)? {
-            Some(v) => Ok(Some(v)),
-            None => ratio_at(rect, alpha, top, settings),
-        }
+        let v = match branches.at(rect, alpha, settings)? {
+            Some(v) => Some(v),
+            None => ratio_at(rect, alpha, top, settings)?,
+        };
+        log.push((alpha, v.clone()));
+        Ok(v)
     };
     let g = 0.5 * (5f64.sqrt() - 1.0);
     let (mut x1, mut x2) = (b - g * (b - a), a + g * (b - a));
@@ -198,7 +202,8 @@ pub(super) fn band_top(
             f2 = f(x2)?;
         }
     }
-    let (left, right) = (f(a)?, f(b)?);
+    f(a)?;
+    f(b)?;
     let (alpha, mid) = if value(&f1) >= value(&f2) {
         (x1, f1)
     } else {
@@ -207,6 +212,15 @@ pub(super) fn band_top(
     let Some((ratio, mu, mu_ms, _)) = mid else {
         return Ok(None);
     };
+    // the condition of the solved opening nearest the top on each side (within ~10⁻¹² of a
+    // corner both conditions hold, and an end there may not be solved: one from further)
+    let nearest = |left: bool| {
+        log.iter()
+            .filter(|(x, v)| v.is_some() && (*x < alpha) == left && *x != alpha)
+            .min_by(|p, q| (p.0 - alpha).abs().total_cmp(&(q.0 - alpha).abs()))
+            .and_then(|(_, v)| v.clone())
+    };
+    let (left, right) = (nearest(true), nearest(false));
     let name = |v: &Value| v.as_ref().map_or("none".into(), |v| v.3.clone());
     Ok(Some(BandTop {
         alpha,

@@ -81,13 +81,37 @@ pub(crate) fn checked(
 /// The limit state `s` of a continuous arch (found at another friction) followed to `mu`:
 /// Newton on its pattern from where it was, the state admissible over the whole arch and a
 /// mechanism on its active contacts; or why that pattern carries no limit state at `mu`.
+/// A state with more than four active contacts (one just reaching its limit, where a
+/// branch ends) is followed on the contacts its mechanism moves, where they are four.
 pub fn follow(
     arch: &Arch,
     mu: f64,
     s: &LimitState,
     settings: &Settings,
 ) -> Result<LimitState, String> {
-    refined(arch, mu, (s.t, s.x), &s.pattern, settings)
+    refined(arch, mu, (s.t, s.x), &moving(s, settings), settings)
+}
+
+/// The contacts of `s` to follow it on: its pattern, or where that has more than four, the
+/// four its mechanism moves (rates above `rate_tol` times the largest), if they are four.
+fn moving(s: &LimitState, settings: &Settings) -> Vec<Contact> {
+    if s.pattern.len() <= 4 {
+        return s.pattern.clone();
+    }
+    let m = &s.mechanism;
+    let big = m.rates.iter().fold(0.0f64, |a, r| a.max(r.abs()));
+    let moved: Vec<Contact> = m
+        .contacts
+        .iter()
+        .zip(&m.rates)
+        .filter(|(_, r)| r.abs() > settings.rate_tol * big)
+        .map(|(c, _)| *c)
+        .collect();
+    if moved.len() == 4 {
+        moved
+    } else {
+        s.pattern.clone()
+    }
 }
 
 /// Why the limit state `s` of a continuous arch (found at another friction) is not one at

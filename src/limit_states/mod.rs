@@ -415,7 +415,9 @@ fn hinges_only(
 /// limit state over to the continuum (adjacent contacts of one kind merged into one
 /// tangency contact), refine it by Newton, verify it over the whole arch, and accept the set
 /// when both discretisations give the same one (where they differ, finer ones:
-/// [`discretised::agreed`]).
+/// [`discretised::agreed`]). Each discretisation also hands over its states at shifted μ
+/// and its ridge points whose mechanism just fails ([`carried`]), so that a branch of
+/// the continuum is found up to its end.
 fn continuous(
     arch: &Arch,
     mu: f64,
@@ -432,25 +434,9 @@ fn continuous(
             .clone()
             .with_blocks(pieces)
             .map_err(|e| Undecided::Discretisation(e.to_string()))?;
-        // the ridge of the discretisation, from η = 0: every point it gives is checked, and
-        // the list is complete wherever P(η) of the continuum (hence of the discretisation,
-        // which has fewer joints) has an interior point, i.e. above η_s(1 + root_slack)
-        let walk = ridge
-            .then(|| ridge::search(&discrete, mu, 0.0, settings).ok())
-            .flatten();
-        let (states, events) = match walk {
-            Some(r) => {
-                walked += 1;
-                (r.states, r.candidates)
-            }
-            None => discrete_sweep(&discrete, mu, pieces, settings)?,
-        };
-        let h = arch.span() / pieces as f64;
-        let states = states
-            .iter()
-            .filter_map(|s| refine(arch, mu, s.t, s.x, &merge(&s.pattern, h), settings))
-            .filter(|r| r.t > eta_s * (1.0 + settings.root_slack))
-            .collect();
+        let (states, events, by_ridge) =
+            carried(arch, &discrete, (mu, pieces), (eta_s, ridge), settings)?;
+        walked += usize::from(by_ridge);
         Ok(Carried {
             states,
             events: Some(events),
@@ -480,6 +466,79 @@ fn continuous(
         ),
         vertical: None,
     })
+}
+
+/// The limit states of `discrete`, the `pieces`-piece discretisation of `arch`, carried
+/// over to the continuum at `mu` (adjacent contacts merged, Newton, checked there) and
+/// kept above η_s (1 + `root_slack`); with the events of its search at `mu` and whether
+/// the ridge walked it (else the sweep). The discretisation is searched at `mu` and at
+/// μ (1 ∓ `carry_shift` / pieces²) (`Settings::carry_shift`: a branch of the continuum
+/// that ends, or begins, within the discretisation's error of `mu` is found by it on one
+/// side); the lower shift is quartered, at most twice, while the discretisation has no
+/// equilibrium there (just above μ_ms). A shifted search that fails adds nothing.
+fn carried(
+    arch: &Arch,
+    discrete: &Arch,
+    (mu, pieces): (f64, usize),
+    (eta_s, ridge): (f64, bool),
+    settings: &Settings,
+) -> Result<(Vec<LimitState>, usize, bool), Undecided> {
+    // the ridge of the discretisation, from η = 0: every point it gives is checked, and
+    // the list is complete wherever P(η) of the continuum (hence of the discretisation,
+    // which has fewer joints) has an interior point, i.e. above η_s(1 + root_slack)
+    let walk = |m: f64| {
+        ridge::search(discrete, m, 0.0, settings).map(|r| {
+            let mut seeds: Vec<Seed> = r.states.iter().map(Seed::of).collect();
+            seeds.extend(r.near);
+            (seeds, r.candidates)
+        })
+    };
+    let sweep = |m: f64| {
+        discrete_sweep(discrete, m, pieces, settings)
+            .map(|(s, e)| (s.iter().map(Seed::of).collect::<Vec<_>>(), e))
+    };
+    let walked = if ridge { walk(mu).ok() } else { None };
+    let by_ridge = walked.is_some();
+    let (mut seeds, events) = match walked {
+        Some(w) => w,
+        None => sweep(mu)?,
+    };
+    // the shifted searches by the same method
+    let search = |m: f64| if by_ridge { walk(m) } else { sweep(m) };
+    let shift = settings.carry_shift / (pieces * pieces) as f64;
+    if shift > 0.0 {
+        for (sign, tries) in [(-1.0, 3), (1.0, 1)] {
+            let mut d = shift;
+            for _ in 0..tries {
+                if let Ok((s, _)) = search(mu * (1.0 + sign * d)) {
+                    seeds.extend(s);
+                    break;
+                }
+                d /= 4.0;
+            }
+        }
+    }
+    let h = arch.span() / pieces as f64;
+    let states = seeds
+        .iter()
+        .filter_map(|(t, x, pattern)| refine(arch, mu, *t, *x, &merge(pattern, h), settings))
+        .filter(|r| r.t > eta_s * (1.0 + settings.root_slack))
+        .collect();
+    Ok((states, events, by_ridge))
+}
+
+/// Where Newton on the continuum starts from: a discrete state (η, reactions) and its
+/// contacts.
+type Seed = (f64, Reactions, Vec<Contact>);
+
+trait SeedOf {
+    fn of(s: &LimitState) -> Seed;
+}
+
+impl SeedOf for Seed {
+    fn of(s: &LimitState) -> Seed {
+        (s.t, s.x, s.pattern.clone())
+    }
 }
 
 /// The sweep of a `pieces`-piece discretisation from its least admissible state: its

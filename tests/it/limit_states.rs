@@ -300,31 +300,45 @@ fn assert_mirror_pair(a: &LimitState, b: &LimitState) {
     }
 }
 
-/// Near where a branch of limit states is born or dies, a coarse discretisation can miss
-/// it. Continuous arch α = 0.7 at μ = 1.0408: the 48-piece search finds no limit state
-/// above η_s, the 96-piece one a mirror pair; with one doubling only (the former rule) the
-/// search is undecided; with the default the pieces are doubled again and 96 and 192
-/// agree on the pair, which the independent reference of `continuum_reference` finds
-/// admissible over the whole arch with its contacts active. At α = 0.65, μ = 0.9257 the
+/// Near where a branch of limit states is born or dies, a coarse discretisation searched at
+/// μ only (`carry_shift` = `carry_near_rate` = 0) can miss it. Continuous arch α = 0.7 at μ
+/// = 1.0408: the 48-piece search finds no limit state above η_s, the 96-piece one a mirror
+/// pair; with one doubling only the search is undecided; with three the pieces are doubled
+/// again and 96 and 192 agree on the pair, which the independent reference of
+/// `continuum_reference` finds admissible over the whole arch with its contacts active.
+/// With the default `carry_shift` the 48-piece discretisation, searched a little above and
+/// below μ too, finds the pair, and 48 and 96 agree on it. At α = 0.65, μ = 0.9257 the
 /// lists alternate (the pair found by 48 × 2 and 48 × 8 pieces, missed by 48 and 48 × 4):
 /// no list is taken, and the message lists all four; but η_s carries a limit state and the
 /// pair found is verified on the continuum, so `unique` is decided `false` all the same
-/// (`solve --json` lists the three, with `search.complete` false).
+/// (`solve --json` would list the three, with `search.complete` false). With the default
+/// the four agree (`solve --json`: the three listed, the search complete).
 #[test]
 fn finer_discretisations_decide_where_two_differ() {
     use arch_enum::undecided::Undecided;
     let arch = Arch::symmetric(0.7, WeightModel::Centreline).unwrap();
     let mu = 1.0408;
+    let at_mu = Settings {
+        carry_shift: 0.0,
+        carry_near_rate: 0.0,
+        ..Settings::default()
+    };
     let once = Settings {
         sweep_doublings: 1,
-        ..Settings::default()
+        ..at_mu.clone()
     };
     match search(&arch, mu, &once).unwrap() {
         Err(Undecided::Discretisation(t)) => assert!(t.contains("48 and 96 pieces"), "{t}"),
         other => panic!("expected two discretisations that differ, got {other:?}"),
     }
-    let r = search(&arch, mu, &Settings::default()).unwrap().unwrap();
+    let r = search(&arch, mu, &at_mu).unwrap().unwrap();
     assert_eq!(r.method, "refined 96/192 (ridge)");
+    let d = search(&arch, mu, &Settings::default()).unwrap().unwrap();
+    assert_eq!(d.method, "refined 48/96 (ridge)");
+    assert_eq!(d.above.len(), 2);
+    for (p, q) in d.above.iter().zip(&r.above) {
+        assert!((p.t - q.t).abs() <= 1e-12 * q.t, "{} vs {}", p.t, q.t);
+    }
     assert!(r.mechanism_at_eta_s);
     assert_eq!(r.above.len(), 2);
     assert_mirror_pair(&r.above[0], &r.above[1]);
@@ -350,14 +364,14 @@ fn finer_discretisations_decide_where_two_differ() {
         }
     }
     let alternating = Arch::symmetric(0.65, WeightModel::Centreline).unwrap();
-    match search(&alternating, 0.9257, &Settings::default()).unwrap() {
+    match search(&alternating, 0.9257, &at_mu).unwrap() {
         Err(Undecided::Discretisation(t)) => assert!(
             t.contains("48, 96, 192 and 384 pieces do not settle: [] vs [0.5593"),
             "{t}"
         ),
         other => panic!("expected lists that do not settle, got {other:?}"),
     }
-    let sv = arch_enum::limit_states::survey(&alternating, 0.9257, &Settings::default()).unwrap();
+    let sv = arch_enum::limit_states::survey(&alternating, 0.9257, &at_mu).unwrap();
     assert!(sv.states.is_err());
     assert_eq!(sv.found.len(), 2);
     assert_mirror_pair(&sv.found[0], &sv.found[1]);
@@ -365,7 +379,7 @@ fn finer_discretisations_decide_where_two_differ() {
     let (v, code) = crate::cli::json_of(&["solve", "--alpha", "0.65", "--mu", "0.9257"]);
     assert_eq!(code, 0);
     assert_eq!(v["unique"], false);
-    assert_eq!(v["search"]["complete"], false);
+    assert_eq!(v["search"]["complete"], true);
     let listed: Vec<f64> = v["limit_states"]
         .as_array()
         .unwrap()
@@ -868,23 +882,27 @@ fn undecided_search_names_its_step() {
 }
 
 /// `solve --json`'s `eta` is η_s even when the search above it is incomplete: here the
-/// least admissible state carries no mechanism and the searches of 48 to 384 pieces do not
-/// settle (a limit state at η = 0.6233 found by 48 and 192 pieces, missed by 96 and 384);
-/// the text output and `checks.eta_static` both give η_s = 0.449815368139. It used to
-/// print the η of the state found above as `eta`. (At μ = 1.0125176406133969, where this
-/// test stood before the pieces were doubled past 96, the search is now decided.)
+/// least admissible state carries no mechanism and, searched at μ only (`carry_shift` =
+/// `carry_near_rate` = 0), the discretisations of 48 to 384 pieces do not settle (a limit
+/// state at η = 0.6233 found by 48 and 192 pieces, missed by 96 and 384); the JSON's `eta`
+/// and `checks.eta_static` both give η_s = 0.449815368139. It used to print the η of the
+/// state found above as `eta`. (With the default `carry_shift` the search settles there.)
 #[test]
 fn json_eta_is_eta_static_when_the_search_is_incomplete() {
-    let (v, code) = crate::cli::json_of(&[
-        "solve",
-        "--beta-right",
-        "-0.6847873579095128",
-        "--beta-left",
-        "3.428723873012637",
-        "--mu",
-        "1.015",
-    ]);
-    assert_eq!(code, 0);
+    let arch = Arch::new(
+        -0.6847873579095128,
+        3.428723873012637,
+        WeightModel::Centreline,
+    )
+    .unwrap();
+    let at_mu = Settings {
+        carry_shift: 0.0,
+        carry_near_rate: 0.0,
+        ..Settings::default()
+    };
+    let sv = arch_enum::limit_states::survey(&arch, 1.015, &at_mu).unwrap();
+    let doc = arch_enum::render::json::solve(&sv, false, &sv.rays(&at_mu));
+    let v = serde_json::to_value(&doc).unwrap();
     assert_eq!(v["search"]["complete"], false);
     let eta = v["eta"].as_f64().unwrap();
     assert!((eta - 0.449815368139).abs() < 1e-12, "{eta}");

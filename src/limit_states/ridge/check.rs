@@ -4,7 +4,7 @@
 
 use super::rows::{det3, ev, Candidate, JointRows};
 use crate::arch::Arch;
-use crate::contact::ContactKind;
+use crate::contact::{Contact, ContactKind};
 use crate::kinematics::column;
 use crate::limit_states::sweep::LimitState;
 use crate::mechanism;
@@ -113,6 +113,32 @@ pub(super) fn may_carry_mechanism(
     let cols: [[f64; 3]; 4] =
         std::array::from_fn(|k| column(active[k].1, js[active[k].0].beta, c.eta));
     null_vector_signs(&cols, PREFILTER_ZERO_COFACTOR) != NullSigns::Mixed
+        || near_mechanism(&cols, settings.carry_near_rate)
+}
+
+/// Whether the cofactors of four columns have exactly one of the other sign, of at most
+/// `near` times the largest (`Settings::carry_near_rate`): their contacts carry no
+/// mechanism, but only just (the rate of one has passed through zero).
+fn near_mechanism(cols: &[[f64; 3]; 4], near: f64) -> bool {
+    let lam = cofactors(cols);
+    let big = lam.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let neg = lam.iter().filter(|&&v| v < 0.0).count();
+    let odd = match neg {
+        1 => lam.iter().find(|&&v| v < 0.0),
+        3 => lam.iter().find(|&&v| v > 0.0),
+        _ => None,
+    };
+    odd.is_some_and(|v| v.abs() <= near * big)
+}
+
+/// The null vector of four compatibility columns (3 × 4): their signed cofactors.
+fn cofactors(cols: &[[f64; 3]; 4]) -> [f64; 4] {
+    [
+        det3(cols[1], cols[2], cols[3]),
+        -det3(cols[0], cols[2], cols[3]),
+        det3(cols[0], cols[1], cols[3]),
+        -det3(cols[0], cols[1], cols[2]),
+    ]
 }
 
 /// The signs of the null vector of four compatibility columns (3 × 4), its cofactors.
@@ -128,12 +154,7 @@ enum NullSigns {
 }
 
 fn null_vector_signs(cols: &[[f64; 3]; 4], zero_rel: f64) -> NullSigns {
-    let lam = [
-        det3(cols[1], cols[2], cols[3]),
-        -det3(cols[0], cols[2], cols[3]),
-        det3(cols[0], cols[1], cols[3]),
-        -det3(cols[0], cols[1], cols[2]),
-    ];
+    let lam = cofactors(cols);
     let big = lam.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     if lam.iter().any(|v| v.abs() <= zero_rel * big) {
         NullSigns::NearZero
@@ -142,6 +163,17 @@ fn null_vector_signs(cols: &[[f64; 3]; 4], zero_rel: f64) -> NullSigns {
     } else {
         NullSigns::Mixed
     }
+}
+
+/// What a candidate is.
+pub(super) enum Checked {
+    /// A limit state.
+    Limit(LimitState),
+    /// Admissible, with four active contacts whose mechanism just fails
+    /// (`Settings::carry_near_rate`): the contacts.
+    Near(Vec<Contact>),
+    /// Neither.
+    No,
 }
 
 /// A candidate checked like a point of the sweep: admissible at every joint, and a
@@ -154,7 +186,7 @@ pub(super) fn check(
     mu: f64,
     c: &Candidate,
     settings: &Settings,
-) -> Result<Option<LimitState>, Undecided> {
+) -> Result<Checked, Undecided> {
     let st = State {
         arch,
         eta: c.eta,
@@ -163,7 +195,7 @@ pub(super) fn check(
     };
     let v = st.verdict(ContactKind::active_at(mu), settings);
     if v.worst > settings.adm_tol {
-        return Ok(None);
+        return Ok(Checked::No);
     }
     let a = &v.active;
     let two_senses = a.iter().any(|p| {
@@ -175,7 +207,11 @@ pub(super) fn check(
     if a.len() == 4 && !two_senses {
         let cols: [[f64; 3]; 4] = std::array::from_fn(|k| column(a[k].kind, a[k].beta, c.eta));
         if null_vector_signs(&cols, ZERO_COFACTOR) == NullSigns::Mixed {
-            return Ok(None);
+            return Ok(if near_mechanism(&cols, settings.carry_near_rate) {
+                Checked::Near(v.active)
+            } else {
+                Checked::No
+            });
         }
     }
     let mech = mechanism::find(&st, a, settings).map_err(|e| {
@@ -184,5 +220,14 @@ pub(super) fn check(
             c.eta
         ))
     })?;
-    Ok(mech.map(|m| LimitState::unloaded(arch, (c.eta, c.x), v.active, m, settings)))
+    Ok(match mech {
+        Some(m) => Checked::Limit(LimitState::unloaded(
+            arch,
+            (c.eta, c.x),
+            v.active,
+            m,
+            settings,
+        )),
+        None => Checked::No,
+    })
 }

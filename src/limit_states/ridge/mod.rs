@@ -35,11 +35,13 @@ mod trace;
 mod walk;
 
 use crate::arch::{Arch, JointLayout};
+use crate::contact::Contact;
 use crate::settings::Settings;
 use crate::statics::reaction_scale;
+use crate::statics::Reactions;
 use crate::undecided::Undecided;
 use candidates::candidates;
-use check::{check, may_carry_mechanism};
+use check::{check, may_carry_mechanism, Checked};
 pub use rows::applies;
 use rows::JointRows;
 pub use trace::{trace, Junction, TracedEdge};
@@ -54,6 +56,11 @@ pub struct Ridge {
     /// Candidate points of the ridge checked (vertices, apexes, breakpoints, dependent
     /// columns) with η > `eta_lo`.
     pub candidates: usize,
+    /// Admissible points with four active contacts whose mechanism just fails (the rate of
+    /// one contact has passed through zero by a little): (η, reactions, contacts). Not
+    /// limit states of this arch; a continuous arch's discretisation hands them to the
+    /// continuum, whose branch may end a little later.
+    pub near: Vec<(f64, Reactions, Vec<Contact>)>,
 }
 
 /// Every limit state of a discrete arch (centreline weight, finite μ) with η in
@@ -80,11 +87,20 @@ pub fn search(arch: &Arch, mu: f64, eta_lo: f64, settings: &Settings) -> Result<
     let js: Vec<JointRows> = joints.iter().map(|&b| JointRows::at(arch, b)).collect();
     let (cands, subsets) = candidates(&js, mu, eta_lo)?;
     let mut states: Vec<LimitState> = Vec::new();
+    let mut near = Vec::new();
     for c in &cands {
         if !may_carry_mechanism(&js, mu, c, &subsets, settings) {
             continue;
         }
-        if let Some(s) = check(arch, mu, c, settings)? {
+        let s = match check(arch, mu, c, settings)? {
+            Checked::Limit(s) => s,
+            Checked::Near(contacts) => {
+                near.push((c.eta, c.x, contacts));
+                continue;
+            }
+            Checked::No => continue,
+        };
+        {
             // a state found twice (an end of two edges of Q, say) is kept as the least of its
             // finds, so that the answer does not depend on the order of the walk
             let dup = states.iter_mut().find(|p| {
@@ -111,6 +127,7 @@ pub fn search(arch: &Arch, mu: f64, eta_lo: f64, settings: &Settings) -> Result<
     Ok(Ridge {
         states,
         candidates: cands.len(),
+        near,
     })
 }
 
