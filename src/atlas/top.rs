@@ -45,6 +45,22 @@ pub struct BandTop {
     pub evaluations: usize,
 }
 
+impl BandTop {
+    /// What the top is: a smooth peak of one branch-end curve (the same condition on both
+    /// sides), a corner where the last branch to end changes, or on a voussoir arch the
+    /// largest of points bisected to neighbouring floats (where what ends a branch is not
+    /// solved, so peak and corner are not told apart).
+    pub fn shape(&self) -> &'static str {
+        if self.conditions.0 == VOUSSOIR_END || self.conditions.1 == VOUSSOIR_END {
+            "the largest of bisected points"
+        } else if self.conditions.0 == self.conditions.1 {
+            "a smooth peak"
+        } else {
+            "a corner"
+        }
+    }
+}
+
 /// One opening's value: μ/μ_ms of its boundary point, its μ, μ_ms and condition.
 type Value = Option<(f64, f64, f64, String)>;
 
@@ -125,22 +141,30 @@ fn ratio_at(
         ..*rect
     };
     let col = column(&sub, (alpha, None), settings)?;
-    Ok(best(&col))
+    Ok(best(&col, rect.blocks.is_some()))
 }
 
 /// The largest μ/μ_ms of a column's solved `non_unique`/`unique` points, with its μ, μ_ms
-/// and condition.
-fn best(col: &Column) -> Value {
+/// and condition. On a voussoir arch (`discrete`), whose search is complete by itself, a
+/// point bisected to neighbouring floats counts too, at its non-unique end (the kinds
+/// change there, decided to the solver's tolerances: ~10⁻¹⁰ of μ).
+fn best(col: &Column, discrete: bool) -> Value {
     let mu_ms = col.mu_ms?;
     col.boundaries
         .iter()
         .filter(|p| p.between == [Kind::NonUnique, Kind::Unique])
         .filter_map(|p| match &p.end {
             Some(Ok(e)) => Some((e.mu / mu_ms, e.mu, mu_ms, e.condition.describe())),
+            None if discrete && p.tight => {
+                Some((p.bracket.0 / mu_ms, p.bracket.0, mu_ms, VOUSSOIR_END.into()))
+            }
             _ => None,
         })
         .max_by(|a, b| a.0.total_cmp(&b.0))
 }
+
+/// What ends the band at a voussoir arch's point: the exact search's kinds change.
+const VOUSSOIR_END: &str = "the voussoir arch's last limit state above eta_s (bisected)";
 
 /// The top of the non-unique band over the columns (`None`: no column has a solved point
 /// between `non_unique` and `unique`).
@@ -152,7 +176,7 @@ pub(super) fn band_top(
     let sampled: Vec<(usize, f64)> = columns
         .iter()
         .enumerate()
-        .filter_map(|(k, c)| best(c).map(|b| (k, b.0)))
+        .filter_map(|(k, c)| best(c, rect.blocks.is_some()).map(|b| (k, b.0)))
         .collect();
     let Some(&(k, r)) = sampled.iter().max_by(|a, b| a.1.total_cmp(&b.1)) else {
         return Ok(None);
@@ -204,12 +228,15 @@ pub(super) fn band_top(
     }
     f(a)?;
     f(b)?;
-    let (alpha, mid) = if value(&f1) >= value(&f2) {
-        (x1, f1)
-    } else {
-        (x2, f2)
-    };
-    let Some((ratio, mu, mu_ms, _)) = mid else {
+    // the largest value evaluated (where the band ends abruptly inside the bracket, as an
+    // island of a voussoir arch does at its tip, the golden section closes on the edge and
+    // its last points may lie beyond it)
+    let Some((alpha, Some((ratio, mu, mu_ms, _)))) = log
+        .iter()
+        .filter(|(_, v)| v.is_some())
+        .max_by(|p, q| value(&p.1).total_cmp(&value(&q.1)))
+        .cloned()
+    else {
         return Ok(None);
     };
     // the condition of the solved opening nearest the top on each side (within ~10⁻¹² of a

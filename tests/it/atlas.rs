@@ -819,3 +819,59 @@ fn the_search_finds_every_branch_up_to_its_end() {
     eprintln!("searched at mu only, unique (wrongly) at {missed_at_mu} of {checked}");
     assert!(missed_at_mu >= 10, "{missed_at_mu} of {checked}");
 }
+
+/// The top of a voussoir arch's band (48 voussoirs): its boundary points are bisected to
+/// neighbouring floats by the exact search (what ends a branch is not solved there), and the
+/// top is the largest of them over α by golden section. At the top the search says
+/// non-unique 10⁻⁹ below its μ and unique 10⁻⁸ above it, and the openings 10⁻⁴ either side
+/// have lower points (a maximum), both columns' points below it.
+#[test]
+fn a_voussoir_band_has_a_top_of_bisected_points() {
+    use arch_enum::atlas::{atlas, Kind, Rectangle};
+    let rect = Rectangle {
+        alpha_min: 0.66,
+        alpha_max: 0.67,
+        mu_max_factor: 1.2,
+        weight: WeightModel::Centreline,
+        blocks: Some(48),
+        columns: 2,
+        samples: 12,
+        certify: false,
+    };
+    let settings = Settings::default();
+    let a = atlas(&rect, &settings, 2, &|_, _| {}).unwrap();
+    let top = a.top.as_ref().expect("a top of the band");
+    assert_eq!(top.shape(), "the largest of bisected points", "{top:?}");
+    assert!((top.ratio - 1.0803056377).abs() < 1e-9, "{top:?}");
+    let unique_at = |alpha: f64, mu: f64| {
+        let arch = Arch::symmetric(alpha, WeightModel::Centreline)
+            .unwrap()
+            .with_blocks(48)
+            .unwrap();
+        survey(&arch, mu, &settings).unwrap().unique()
+    };
+    assert_eq!(unique_at(top.alpha, top.mu * (1.0 - 1e-9)), Some(false));
+    assert_eq!(unique_at(top.alpha, top.mu * (1.0 + 1e-8)), Some(true));
+    for side in [-1e-4, 1e-4] {
+        let alpha = top.alpha + side;
+        let arch = Arch::symmetric(alpha, WeightModel::Centreline)
+            .unwrap()
+            .with_blocks(48)
+            .unwrap();
+        let ms = least_friction(&arch, &settings).unwrap().unwrap();
+        assert_eq!(
+            unique_at(alpha, ms * top.ratio * (1.0 - 1e-7)),
+            Some(true),
+            "alpha = {alpha}"
+        );
+    }
+    for c in &a.columns {
+        for p in c
+            .boundaries
+            .iter()
+            .filter(|p| p.between == [Kind::NonUnique, Kind::Unique])
+        {
+            assert!(p.bracket.0 / c.mu_ms.unwrap() < top.ratio, "{p:?}");
+        }
+    }
+}

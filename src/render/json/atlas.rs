@@ -132,14 +132,17 @@ struct TopJson {
     alpha: f64,
     /// Its bracket when the golden section stopped.
     alpha_bracket: [f64; 2],
-    /// The boundary point's μ there (solved from what ends its branch).
+    /// The boundary point's μ there (solved from what ends its branch; on a voussoir arch
+    /// the non-unique end of its bracket, bisected to neighbouring floats).
     mu: f64,
     mu_ms: f64,
     /// μ/μ_ms.
     ratio: f64,
-    /// What ends the branch at the bracket's two ends (different: a corner where the last
-    /// branch to end changes).
+    /// What ends the branch at the solved openings nearest the top on either side
+    /// (different: a corner where the last branch to end changes).
     conditions: [String; 2],
+    /// "a smooth peak", "a corner", or on a voussoir arch "the largest of bisected points".
+    shape: &'static str,
     /// Openings evaluated.
     evaluations: usize,
 }
@@ -323,6 +326,7 @@ pub fn atlas(a: &Atlas) -> AtlasJson {
             mu_ms: t.mu_ms,
             ratio: t.ratio,
             conditions: [t.conditions.0.clone(), t.conditions.1.clone()],
+            shape: t.shape(),
             evaluations: t.evaluations,
         }),
         undecided: a

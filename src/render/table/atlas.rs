@@ -181,7 +181,7 @@ fn top_line(s: &mut String, a: &Atlas) {
             sig(t.ratio, 12),
             sig(t.alpha, 12),
             sig(t.mu, 12),
-            if same { "a smooth peak" } else { "a corner" },
+            t.shape(),
             if same {
                 t.conditions.0.clone()
             } else {
