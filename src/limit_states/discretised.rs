@@ -113,6 +113,35 @@ pub(crate) fn agreed(
     })
 }
 
+/// The results of `search` at the friction coefficients a `pieces`-piece discretisation is
+/// searched at besides `mu` (`Settings::carry_shift`): μ (1 − d) and μ (1 + d),
+/// d = `carry_shift` / pieces², the lower d quartered, at most twice, where the search
+/// fails there (just above μ_ms the discretisation has no equilibrium). A search that
+/// fails adds nothing.
+pub(crate) fn shifted<T, E>(
+    mu: f64,
+    pieces: usize,
+    settings: &Settings,
+    mut search: impl FnMut(f64) -> Result<T, E>,
+) -> Vec<T> {
+    let shift = settings.carry_shift / (pieces * pieces) as f64;
+    let mut out = Vec::new();
+    if shift <= 0.0 || !mu.is_finite() {
+        return out;
+    }
+    for (sign, tries) in [(-1.0, 3), (1.0, 1)] {
+        let mut d = shift;
+        for _ in 0..tries {
+            if let Ok(r) = search(mu * (1.0 + sign * d)) {
+                out.push(r);
+                break;
+            }
+            d /= 4.0;
+        }
+    }
+    out
+}
+
 /// Two carried states are the same: their parameters within `t_tol` and the same contacts
 /// (kinds and sides, angles to `settings.same_state_angle`). Mirror images share t but not
 /// contacts.

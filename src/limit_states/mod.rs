@@ -505,18 +505,8 @@ fn carried(
     };
     // the shifted searches by the same method
     let search = |m: f64| if by_ridge { walk(m) } else { sweep(m) };
-    let shift = settings.carry_shift / (pieces * pieces) as f64;
-    if shift > 0.0 {
-        for (sign, tries) in [(-1.0, 3), (1.0, 1)] {
-            let mut d = shift;
-            for _ in 0..tries {
-                if let Ok((s, _)) = search(mu * (1.0 + sign * d)) {
-                    seeds.extend(s);
-                    break;
-                }
-                d /= 4.0;
-            }
-        }
+    for (s, _) in discretised::shifted(mu, pieces, settings, search) {
+        seeds.extend(s);
     }
     let h = arch.span() / pieces as f64;
     let states = seeds

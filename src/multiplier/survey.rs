@@ -452,6 +452,17 @@ fn carried_states(
         }
         Err(e) => return Err(e.map_text(|e| format!("{pieces} pieces: {e}"))),
     };
+    // the discretisation at shifted friction too: near where a branch ends, the
+    // discretisation's own branch may have ended at μ (`discretised::shifted`)
+    let mut states = states;
+    let at = |m: f64| match survey(&discrete, eta, m, load, settings) {
+        Ok(Ok(LoadOutcome::Limits(sv))) => Ok(sv.limit_states),
+        _ => Err(()),
+    };
+    for more in discretised::shifted(mu, pieces, settings, at) {
+        // a face of states (a continuum at one λ) found there is not carried
+        states.extend(more.into_iter().filter(|s| s.continuum_to.is_none()));
+    }
     let h = (b - a) / pieces as f64;
     let mut found: Vec<LimitState> = Vec::new();
     for st in &states {
