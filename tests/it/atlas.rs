@@ -632,11 +632,7 @@ fn boundary_points_are_solved_from_what_ends_the_branch() {
         let reference = Cont::of(&arch, end.mu);
         let e = &end.state;
         let x = [e.x[0], e.x[1], e.x[2]];
-        let worst = (0..=20_000)
-            .map(|i| arch.beta_right() + (arch.beta_left() - arch.beta_right()) * i as f64 / 2e4)
-            .flat_map(|b| (0..4).map(move |k| (k, b)))
-            .map(|(k, b)| reference.g(k, e.t, &x, b))
-            .fold(f64::NEG_INFINITY, f64::max);
+        let worst = reference.worst(e.t, &x);
         assert!(
             worst <= 1e-9,
             "alpha = {alpha}: the end is violated by {worst:e}"
@@ -800,14 +796,7 @@ fn the_search_finds_every_branch_up_to_its_end() {
             assert!(!above.is_empty(), "alpha = {alpha}, mu = {mu}");
             let reference = Cont::of(&arch, mu);
             for s in &above {
-                let x = [s.x[0], s.x[1], s.x[2]];
-                let worst = (0..=20_000)
-                    .map(|i| {
-                        arch.beta_right() + (arch.beta_left() - arch.beta_right()) * i as f64 / 2e4
-                    })
-                    .flat_map(|b| (0..4).map(move |k| (k, b)))
-                    .map(|(k, b)| reference.g(k, s.t, &x, b))
-                    .fold(f64::NEG_INFINITY, f64::max);
+                let worst = reference.worst(s.t, &[s.x[0], s.x[1], s.x[2]]);
                 assert!(worst <= 1e-9, "alpha = {alpha}, eta = {}: {worst:e}", s.t);
             }
         }

@@ -196,6 +196,16 @@ impl Cont {
         a[0] * x[0] + a[1] * x[1] + a[2] * x[2] + c
     }
 
+    /// The largest g_k(x, β) over the four contact families and 20 001 equally spaced
+    /// angles of the arch: the state (η, x) is admissible to within it.
+    pub fn worst(&self, eta: f64, x: &[f64; 3]) -> f64 {
+        (0..=20_000)
+            .map(|i| self.br + (self.bl - self.br) * i as f64 / 20_000.0)
+            .flat_map(|b| (0..4).map(move |k| (k, b)))
+            .map(|(k, b)| self.g(k, eta, x, b))
+            .fold(f64::NEG_INFINITY, f64::max)
+    }
+
     /// φ_k itself (unnormalised), for the cross-check against `model::phis`.
     pub fn phi(&self, k: usize, eta: f64, x: &[f64; 3], beta: f64) -> f64 {
         let (a, c) = self.row_raw(k, eta, beta, beta.sin(), beta.cos());
