@@ -1,7 +1,8 @@
 //! The top of the non-unique band: the largest μ/μ_ms on its boundary with `unique`, over
 //! the openings. Each value is a boundary point solved from the condition that ends its
 //! branch ([`crate::limit_states::branch_end()`]) at that opening (a column of its own, in a
-//! μ range just above the band), so the ratio is exact at every α; the α of the largest is
+//! μ range just above the band), so the ratio is exact at every α (on a voussoir arch, whose
+//! ends are not solved, a point bisected to neighbouring floats); the α of the largest is
 //! found by golden section between the columns around the largest sampled ratio, each
 //! value by continuation in α (the ends of the columns around it, moved to that opening by
 //! Newton on their defining conditions, [`crate::limit_states::end_on`]; the last of them
@@ -28,7 +29,8 @@ const SAMPLES: usize = 10;
 /// The top of the non-unique band.
 #[derive(Debug, Clone)]
 pub struct BandTop {
-    /// The opening of the largest μ/μ_ms (the middle of `alpha_bracket`).
+    /// The opening of the largest μ/μ_ms evaluated (in `alpha_bracket`, or where the band
+    /// ends abruptly inside it, the last evaluated opening before the edge).
     pub alpha: f64,
     /// The bracket of that opening when the golden section stopped.
     pub alpha_bracket: (f64, f64),
@@ -38,8 +40,9 @@ pub struct BandTop {
     pub mu_ms: f64,
     /// μ/μ_ms there.
     pub ratio: f64,
-    /// What ends the branch at the two ends of the bracket (the same condition on the same
-    /// contact: a smooth peak; different: a corner where the last branch to end changes).
+    /// What ends the branch at the solved openings nearest the top on either side (the
+    /// same condition on the same contact: a smooth peak; different: a corner where the
+    /// last branch to end changes; "none": no solved opening on that side).
     pub conditions: (String, String),
     /// Openings evaluated.
     pub evaluations: usize,
@@ -53,6 +56,8 @@ impl BandTop {
     pub fn shape(&self) -> &'static str {
         if self.conditions.0 == VOUSSOIR_END || self.conditions.1 == VOUSSOIR_END {
             "the largest of bisected points"
+        } else if self.conditions.0 == NONE || self.conditions.1 == NONE {
+            "at the edge of the openings evaluated"
         } else if self.conditions.0 == self.conditions.1 {
             "a smooth peak"
         } else {
@@ -163,6 +168,9 @@ fn best(col: &Column, discrete: bool) -> Value {
         .max_by(|a, b| a.0.total_cmp(&b.0))
 }
 
+/// The condition of a side of the top without a solved opening.
+const NONE: &str = "none";
+
 /// What ends the band at a voussoir arch's point: the exact search's kinds change.
 const VOUSSOIR_END: &str = "the voussoir arch's last limit state above eta_s (bisected)";
 
@@ -197,8 +205,11 @@ pub(super) fn band_top(
             .filter_map(|p| p.end.clone()?.ok().map(|e| (p.alpha, e)))
             .collect(),
     );
-    // every opening evaluated, with its value
-    let mut log: Vec<(f64, Value)> = Vec::new();
+    // every opening evaluated, with its value (the sampled columns around the largest first)
+    let mut log: Vec<(f64, Value)> = columns[k.saturating_sub(1)..=(k + 1).min(columns.len() - 1)]
+        .iter()
+        .map(|c| (c.alpha, best(c, rect.blocks.is_some())))
+        .collect();
     let mut f = |alpha: f64| -> Result<Value, InputError> {
         evaluations += 1;
         let v = match branches.at(rect, alpha, settings)? {
@@ -248,7 +259,7 @@ pub(super) fn band_top(
             .and_then(|(_, v)| v.clone())
     };
     let (left, right) = (nearest(true), nearest(false));
-    let name = |v: &Value| v.as_ref().map_or("none".into(), |v| v.3.clone());
+    let name = |v: &Value| v.as_ref().map_or(NONE.into(), |v| v.3.clone());
     Ok(Some(BandTop {
         alpha,
         alpha_bracket: (a, b),

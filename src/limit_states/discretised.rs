@@ -116,8 +116,8 @@ pub(crate) fn agreed(
 /// The results of `search` at the friction coefficients a `pieces`-piece discretisation is
 /// searched at besides `mu` (`Settings::carry_shift`): μ (1 − d) and μ (1 + d),
 /// d = `carry_shift` / pieces², the lower d quartered, at most twice, where the search
-/// fails there (just above μ_ms the discretisation has no equilibrium). A search that
-/// fails adds nothing.
+/// fails there (just above μ_ms the discretisation has no equilibrium; any failure counts)
+/// or where μ (1 − d) would not be positive. A search that fails adds nothing.
 pub(crate) fn shifted<T, E>(
     mu: f64,
     pieces: usize,
@@ -132,7 +132,12 @@ pub(crate) fn shifted<T, E>(
     for (sign, tries) in [(-1.0, 3), (1.0, 1)] {
         let mut d = shift;
         for _ in 0..tries {
-            if let Ok(r) = search(mu * (1.0 + sign * d)) {
+            let m = mu * (1.0 + sign * d);
+            if m <= 0.0 {
+                d /= 4.0;
+                continue;
+            }
+            if let Ok(r) = search(m) {
                 out.push(r);
                 break;
             }

@@ -115,7 +115,8 @@ fn moving(s: &LimitState, settings: &Settings) -> Vec<Contact> {
 }
 
 /// Why the limit state `s` of a continuous arch (found at another friction) is not one at
-/// `mu` on its own pattern, Newton from where it was: `None` where it still is one there.
+/// `mu`, followed as [`follow`] does (its pattern, or the four contacts its mechanism
+/// moves), Newton from where it was: `None` where it still is one there.
 /// With its smallest mechanism rate, which tends to zero where a branch ends because its
 /// mechanism is lost.
 pub fn lost_at(arch: &Arch, mu: f64, s: &LimitState, settings: &Settings) -> Option<String> {

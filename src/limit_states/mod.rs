@@ -33,6 +33,7 @@ pub use branch_end::{branch_end, end_on, BranchEnd, EndCondition};
 use discretised::{agreed, Carried, Unsettled};
 use follow::refine;
 pub use follow::{follow, lost_at};
+use ridge::Start;
 pub use sweep::{CheckedPoint, LimitState};
 
 /// Every limit state of a discrete arch at friction μ, above the least admissible state.
@@ -288,7 +289,7 @@ fn search_found(sol: &Solution, settings: &Settings) -> Result<LimitStates, Unse
     let lo = eta_s * (1.0 + settings.root_slack);
     let mut walk_failure = None;
     if ridge {
-        match ridge::search(arch, mu, lo, settings) {
+        match ridge::search(arch, mu, lo, 0.0, settings) {
             Err(e) => walk_failure = Some(e),
             Ok(r) => {
                 return Ok(LimitStates {
@@ -487,19 +488,19 @@ fn carried(
     // the list is complete wherever P(η) of the continuum (hence of the discretisation,
     // which has fewer joints) has an interior point, i.e. above η_s(1 + root_slack)
     let walk = |m: f64| {
-        ridge::search(discrete, m, 0.0, settings).map(|r| {
-            let mut seeds: Vec<Seed> = r.states.iter().map(Seed::of).collect();
-            seeds.extend(r.near);
+        ridge::search(discrete, m, 0.0, settings.carry_near_rate, settings).map(|r| {
+            let mut seeds: Vec<Start> = r.states.iter().map(start_of).collect();
+            seeds.extend(r.almost);
             (seeds, r.candidates)
         })
     };
     let sweep = |m: f64| {
         discrete_sweep(discrete, m, pieces, settings)
-            .map(|(s, e)| (s.iter().map(Seed::of).collect::<Vec<_>>(), e))
+            .map(|(s, e)| (s.iter().map(start_of).collect::<Vec<_>>(), e))
     };
-    let walked = if ridge { walk(mu).ok() } else { None };
-    let by_ridge = walked.is_some();
-    let (mut seeds, events) = match walked {
+    let at_mu = if ridge { walk(mu).ok() } else { None };
+    let by_ridge = at_mu.is_some();
+    let (mut seeds, events) = match at_mu {
         Some(w) => w,
         None => sweep(mu)?,
     };
@@ -517,18 +518,9 @@ fn carried(
     Ok((states, events, by_ridge))
 }
 
-/// Where Newton on the continuum starts from: a discrete state (η, reactions) and its
-/// contacts.
-type Seed = (f64, Reactions, Vec<Contact>);
-
-trait SeedOf {
-    fn of(s: &LimitState) -> Seed;
-}
-
-impl SeedOf for Seed {
-    fn of(s: &LimitState) -> Seed {
-        (s.t, s.x, s.pattern.clone())
-    }
+/// A discrete limit state as a start for Newton on the continuum.
+fn start_of(s: &LimitState) -> Start {
+    (s.t, s.x, s.pattern.clone())
 }
 
 /// The sweep of a `pieces`-piece discretisation from its least admissible state: its

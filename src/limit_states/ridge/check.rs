@@ -25,15 +25,16 @@ const PREFILTER_ZERO_COFACTOR: f64 = 1e-6;
 const ZERO_COFACTOR: f64 = 1e-9;
 
 /// A pre-filter on the joints' rows (no trigonometry): `false` only where the answer of
-/// [`check`] is sure to be "no limit state" — the candidate is clearly not admissible
+/// [`check`] is sure to be [`Checked::No`] — the candidate is clearly not admissible
 /// (some φ above [`CLEAR_FACTOR`] `adm_tol` times its magnitude), or every contact is
 /// clearly active or clearly not (|φ| below `adm_tol`, or φ below −[`CLEAR_FACTOR`]
 /// `adm_tol`, in units of its magnitude), exactly four are active, one sliding sense per
-/// joint, and the cofactors of their columns have mixed signs. Everything in between is
+/// joint, and the cofactors of their columns have mixed signs (and not only just: not one
+/// of the other sign within `almost_rate` of the largest). Everything in between is
 /// left to `check`. Only the joints of the candidate's subset are looked at.
 pub(super) fn may_carry_mechanism(
     js: &[JointRows],
-    mu: f64,
+    (mu, almost_rate): (f64, f64),
     c: &Candidate,
     subsets: &[Vec<usize>],
     settings: &Settings,
@@ -113,13 +114,13 @@ pub(super) fn may_carry_mechanism(
     let cols: [[f64; 3]; 4] =
         std::array::from_fn(|k| column(active[k].1, js[active[k].0].beta, c.eta));
     null_vector_signs(&cols, PREFILTER_ZERO_COFACTOR) != NullSigns::Mixed
-        || near_mechanism(&cols, settings.carry_near_rate)
+        || almost_mechanism(&cols, almost_rate)
 }
 
 /// Whether the cofactors of four columns have exactly one of the other sign, of at most
-/// `near` times the largest (`Settings::carry_near_rate`): their contacts carry no
+/// `rate` times the largest (`Settings::carry_near_rate`): their contacts carry no
 /// mechanism, but only just (the rate of one has passed through zero).
-fn near_mechanism(cols: &[[f64; 3]; 4], near: f64) -> bool {
+fn almost_mechanism(cols: &[[f64; 3]; 4], rate: f64) -> bool {
     let lam = cofactors(cols);
     let big = lam.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     let neg = lam.iter().filter(|&&v| v < 0.0).count();
@@ -128,7 +129,7 @@ fn near_mechanism(cols: &[[f64; 3]; 4], near: f64) -> bool {
         3 => lam.iter().find(|&&v| v > 0.0),
         _ => None,
     };
-    odd.is_some_and(|v| v.abs() <= near * big)
+    rate > 0.0 && odd.is_some_and(|v| v.abs() <= rate * big)
 }
 
 /// The null vector of four compatibility columns (3 × 4): their signed cofactors.
@@ -169,9 +170,9 @@ fn null_vector_signs(cols: &[[f64; 3]; 4], zero_rel: f64) -> NullSigns {
 pub(super) enum Checked {
     /// A limit state.
     Limit(LimitState),
-    /// Admissible, with four active contacts whose mechanism just fails
-    /// (`Settings::carry_near_rate`): the contacts.
-    Near(Vec<Contact>),
+    /// Admissible, with four active contacts whose mechanism only just fails (one rate of
+    /// the other sign, of at most the given fraction of the largest): the contacts.
+    Almost(Vec<Contact>),
     /// Neither.
     No,
 }
@@ -183,7 +184,7 @@ pub(super) enum Checked {
 /// LP back end did not decide.
 pub(super) fn check(
     arch: &Arch,
-    mu: f64,
+    (mu, almost_rate): (f64, f64),
     c: &Candidate,
     settings: &Settings,
 ) -> Result<Checked, Undecided> {
@@ -207,8 +208,8 @@ pub(super) fn check(
     if a.len() == 4 && !two_senses {
         let cols: [[f64; 3]; 4] = std::array::from_fn(|k| column(a[k].kind, a[k].beta, c.eta));
         if null_vector_signs(&cols, ZERO_COFACTOR) == NullSigns::Mixed {
-            return Ok(if near_mechanism(&cols, settings.carry_near_rate) {
-                Checked::Near(v.active)
+            return Ok(if almost_mechanism(&cols, almost_rate) {
+                Checked::Almost(v.active)
             } else {
                 Checked::No
             });

@@ -56,19 +56,30 @@ pub struct Ridge {
     /// Candidate points of the ridge checked (vertices, apexes, breakpoints, dependent
     /// columns) with η > `eta_lo`.
     pub candidates: usize,
-    /// Admissible points with four active contacts whose mechanism just fails (the rate of
-    /// one contact has passed through zero by a little): (η, reactions, contacts). Not
-    /// limit states of this arch; a continuous arch's discretisation hands them to the
-    /// continuum, whose branch may end a little later.
-    pub near: Vec<(f64, Reactions, Vec<Contact>)>,
+    /// Admissible points with four active contacts whose mechanism only just fails (one
+    /// rate of the other sign, of at most `almost_rate` of the largest; none where that is
+    /// 0). Not limit states of this arch; a continuous arch's discretisation hands them to
+    /// the continuum, whose branch may end a little later.
+    pub almost: Vec<Start>,
 }
+
+/// Where Newton on the continuum starts from: a discrete state (η, reactions) and its
+/// contacts.
+pub type Start = (f64, Reactions, Vec<Contact>);
 
 /// Every limit state of a discrete arch (centreline weight, finite μ) with η in
 /// (`eta_lo`, 2) that lies on the ridge over ∂Q. The caller owns the claim that these are
 /// *all* limit states there: it holds wherever P(η) has an interior point (checked by the
 /// caller with one margin LP). `Err` says why the walk could not decide (the caller then
-/// sweeps).
-pub fn search(arch: &Arch, mu: f64, eta_lo: f64, settings: &Settings) -> Result<Ridge, Undecided> {
+/// sweeps). With `almost_rate` > 0 it also lists the points whose mechanism only just fails
+/// ([`Ridge::almost`]).
+pub fn search(
+    arch: &Arch,
+    mu: f64,
+    eta_lo: f64,
+    almost_rate: f64,
+    settings: &Settings,
+) -> Result<Ridge, Undecided> {
     if !applies(arch, mu) {
         return Err(Undecided::NotCovered(
             "the ridge search needs a discrete arch, the centreline weight and finite mu".into(),
@@ -87,15 +98,15 @@ pub fn search(arch: &Arch, mu: f64, eta_lo: f64, settings: &Settings) -> Result<
     let js: Vec<JointRows> = joints.iter().map(|&b| JointRows::at(arch, b)).collect();
     let (cands, subsets) = candidates(&js, mu, eta_lo)?;
     let mut states: Vec<LimitState> = Vec::new();
-    let mut near = Vec::new();
+    let mut almost = Vec::new();
     for c in &cands {
-        if !may_carry_mechanism(&js, mu, c, &subsets, settings) {
+        if !may_carry_mechanism(&js, (mu, almost_rate), c, &subsets, settings) {
             continue;
         }
-        let s = match check(arch, mu, c, settings)? {
+        let s = match check(arch, (mu, almost_rate), c, settings)? {
             Checked::Limit(s) => s,
-            Checked::Near(contacts) => {
-                near.push((c.eta, c.x, contacts));
+            Checked::Almost(contacts) => {
+                almost.push((c.eta, c.x, contacts));
                 continue;
             }
             Checked::No => continue,
@@ -127,7 +138,7 @@ pub fn search(arch: &Arch, mu: f64, eta_lo: f64, settings: &Settings) -> Result<
     Ok(Ridge {
         states,
         candidates: cands.len(),
-        near,
+        almost,
     })
 }
 
