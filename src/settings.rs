@@ -153,7 +153,7 @@ pub struct Settings {
     /// erratic amount): a point of the ridge with four active contacts whose rates have
     /// one of the other sign, of at most this fraction of the largest, is carried to the
     /// continuum as well (Newton, then checked there). 0: none. Default 0.2.
-    pub carry_near_rate: f64,
+    pub carry_almost_rate: f64,
     /// The complete limit-state sweep of a discrete arch (work growing faster than the
     /// square of the number of joints) is run up to this many joints; beyond, the search
     /// is reported as not done (η_s and λ_static stay exact). Default 256 (a 255-voussoir
@@ -252,7 +252,7 @@ impl Default for Settings {
             sweep_pieces: 48,
             sweep_doublings: 3,
             carry_shift: 8.0,
-            carry_near_rate: 0.2,
+            carry_almost_rate: 0.2,
             sweep_max_joints: 256,
             ridge_max_joints: 16384,
             unbounded_reactions: 1e6,
@@ -343,10 +343,10 @@ impl Settings {
                 reason: "must be at least settings.newton_tol".into(),
             });
         }
-        if !(0.0..1.0).contains(&self.carry_near_rate) {
+        if !(0.0..1.0).contains(&self.carry_almost_rate) {
             return Err(InputError::OutOfRange {
-                arg: "settings.carry_near_rate",
-                value: fmt_value(self.carry_near_rate),
+                arg: "settings.carry_almost_rate",
+                value: fmt_value(self.carry_almost_rate),
                 range: "0 <= value < 1".into(),
             });
         }

@@ -475,8 +475,9 @@ fn continuous(
 /// the ridge walked it (else the sweep). The discretisation is searched at `mu` and at
 /// μ (1 ∓ `carry_shift` / pieces²) (`Settings::carry_shift`: a branch of the continuum
 /// that ends, or begins, within the discretisation's error of `mu` is found by it on one
-/// side); the lower shift is quartered, at most twice, while the discretisation has no
-/// equilibrium there (just above μ_ms). A shifted search that fails adds nothing.
+/// side; [`discretised::shifted`]), and its ridge points whose mechanism only just fails
+/// (`Settings::carry_almost_rate`) are carried too. A shifted search that fails adds
+/// nothing.
 fn carried(
     arch: &Arch,
     discrete: &Arch,
@@ -488,7 +489,7 @@ fn carried(
     // the list is complete wherever P(η) of the continuum (hence of the discretisation,
     // which has fewer joints) has an interior point, i.e. above η_s(1 + root_slack)
     let walk = |m: f64| {
-        ridge::search(discrete, m, 0.0, settings.carry_near_rate, settings).map(|r| {
+        ridge::search(discrete, m, 0.0, settings.carry_almost_rate, settings).map(|r| {
             let mut seeds: Vec<Start> = r.states.iter().map(start_of).collect();
             seeds.extend(r.almost);
             (seeds, r.candidates)

@@ -503,7 +503,7 @@ fn band_points(doc: &Value) -> Vec<&Value> {
 /// Near the top of the continuous band the discretised search, run at μ only, loses a
 /// branch of limit states before the continuum does: at α = 0.7 the 48- and 96-piece
 /// searches agree on no limit state above η_s a little below where the branch ends (with
-/// `carry_shift` = `carry_near_rate` = 0; the default finds it). The atlas follows the
+/// `carry_shift` = `carry_almost_rate` = 0; the default finds it). The atlas follows the
 /// non-unique end's states (Newton on each pattern) as it bisects, so its boundary point is
 /// where the branch ends: at the point's lower end a followed state is still a limit state,
 /// and the search finds it there, and `why` says how the branch ends (its state leaves the
@@ -541,7 +541,7 @@ fn boundary_points_are_where_the_branches_end() {
             assert_eq!(sv.unique(), Some(false), "alpha = {alpha}, mu = {lo}");
             let former = Settings {
                 carry_shift: 0.0,
-                carry_near_rate: 0.0,
+                carry_almost_rate: 0.0,
                 ..Settings::default()
             };
             let sv = survey(&arch, lo, &former).unwrap();
@@ -743,7 +743,7 @@ fn the_top_of_the_band_is_where_two_branch_ends_cross() {
 /// non-unique 10⁻³ to 10⁻⁹ (relative) inside each solved boundary point and unique 10⁻⁸
 /// beyond it; every state it lists above η_s 10⁻⁵ inside is admissible over 20 001 angles
 /// by the independent continuum reference. Searched at μ only (`carry_shift` =
-/// `carry_near_rate` = 0) the discretisations lose the branch before its end and the search
+/// `carry_almost_rate` = 0) the discretisations lose the branch before its end and the search
 /// said `unique` (wrongly) inside 10 or more of these points.
 #[test]
 fn the_search_finds_every_branch_up_to_its_end() {
@@ -767,7 +767,7 @@ fn the_search_finds_every_branch_up_to_its_end() {
     let settings = Settings::default();
     let at_mu = Settings {
         carry_shift: 0.0,
-        carry_near_rate: 0.0,
+        carry_almost_rate: 0.0,
         ..Settings::default()
     };
     let (mut checked, mut missed_at_mu) = (0, 0);

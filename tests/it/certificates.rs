@@ -1110,7 +1110,7 @@ fn negative_cofactors_and_unresolved_collapse_are_certified() {
 }
 
 /// Where a continuous arch's discretisations do not settle (α = 0.65, μ = 0.9257, searched
-/// at μ only, `carry_shift` = `carry_near_rate` = 0: a mirror pair above η_s found by 96
+/// at μ only, `carry_shift` = `carry_almost_rate` = 0: a mirror pair above η_s found by 96
 /// and 384 pieces, missed by 48 and 192), the certificate lists the states found with
 /// method `found`: `unique = false` rests on them (η_s carries a limit state, two more are
 /// listed, each checked), and the report says the list is not claimed complete ("at
@@ -1122,7 +1122,7 @@ fn an_unsettled_search_certifies_non_uniqueness_by_the_states_found() {
     let arch = Arch::symmetric(0.65, WeightModel::Centreline).unwrap();
     let at_mu = Settings {
         carry_shift: 0.0,
-        carry_near_rate: 0.0,
+        carry_almost_rate: 0.0,
         ..Settings::default()
     };
     let c = certify(&arch, 0.9257, 1e-12, &at_mu).unwrap();

@@ -301,7 +301,7 @@ fn assert_mirror_pair(a: &LimitState, b: &LimitState) {
 }
 
 /// Near where a branch of limit states is born or dies, a coarse discretisation searched at
-/// μ only (`carry_shift` = `carry_near_rate` = 0) can miss it. Continuous arch α = 0.7 at μ
+/// μ only (`carry_shift` = `carry_almost_rate` = 0) can miss it. Continuous arch α = 0.7 at μ
 /// = 1.0408: the 48-piece search finds no limit state above η_s, the 96-piece one a mirror
 /// pair; with one doubling only the search is undecided; with three the pieces are doubled
 /// again and 96 and 192 agree on the pair, which the independent reference of
@@ -320,7 +320,7 @@ fn finer_discretisations_decide_where_two_differ() {
     let mu = 1.0408;
     let at_mu = Settings {
         carry_shift: 0.0,
-        carry_near_rate: 0.0,
+        carry_almost_rate: 0.0,
         ..Settings::default()
     };
     let once = Settings {
@@ -877,7 +877,7 @@ fn undecided_search_names_its_step() {
 
 /// `solve --json`'s `eta` is η_s even when the search above it is incomplete: here the
 /// least admissible state carries no mechanism and, searched at μ only (`carry_shift` =
-/// `carry_near_rate` = 0), the discretisations of 48 to 384 pieces do not settle (a limit
+/// `carry_almost_rate` = 0), the discretisations of 48 to 384 pieces do not settle (a limit
 /// state at η = 0.6233 found by 48 and 192 pieces, missed by 96 and 384); the JSON's `eta`
 /// and `checks.eta_static` both give η_s = 0.449815368139. It used to print the η of the
 /// state found above as `eta`. (With the default `carry_shift` the search settles there.)
@@ -891,7 +891,7 @@ fn json_eta_is_eta_static_when_the_search_is_incomplete() {
     .unwrap();
     let at_mu = Settings {
         carry_shift: 0.0,
-        carry_near_rate: 0.0,
+        carry_almost_rate: 0.0,
         ..Settings::default()
     };
     let sv = arch_enum::limit_states::survey(&arch, 1.015, &at_mu).unwrap();

@@ -118,7 +118,7 @@ pub(super) fn may_carry_mechanism(
 }
 
 /// Whether the cofactors of four columns have exactly one of the other sign, of at most
-/// `rate` times the largest (`Settings::carry_near_rate`): their contacts carry no
+/// `rate` times the largest (`Settings::carry_almost_rate`): their contacts carry no
 /// mechanism, but only just (the rate of one has passed through zero).
 fn almost_mechanism(cols: &[[f64; 3]; 4], rate: f64) -> bool {
     let lam = cofactors(cols);

@@ -111,25 +111,23 @@ pub fn search(
             }
             Checked::No => continue,
         };
-        {
-            // a state found twice (an end of two edges of Q, say) is kept as the least of its
-            // finds, so that the answer does not depend on the order of the walk
-            let dup = states.iter_mut().find(|p| {
-                (p.t - s.t).abs() <= settings.same_state_eta * s.t
-                    && (0..3).all(|k| {
-                        (p.x[k] - s.x[k]).abs() <= settings.same_state_x * reaction_scale(&s.x)
-                    })
-            });
-            let key = |s: &LimitState| [s.t, s.x[0], s.x[1], s.x[2]];
-            match dup {
-                None => states.push(s),
-                Some(p) => {
-                    let (a, b) = (key(&s), key(p));
-                    if (0..4).map(|k| a[k].total_cmp(&b[k])).find(|o| o.is_ne())
-                        == Some(std::cmp::Ordering::Less)
-                    {
-                        *p = s;
-                    }
+        // a state found twice (an end of two edges of Q, say) is kept as the least of its
+        // finds, so that the answer does not depend on the order of the walk
+        let dup = states.iter_mut().find(|p| {
+            (p.t - s.t).abs() <= settings.same_state_eta * s.t
+                && (0..3).all(|k| {
+                    (p.x[k] - s.x[k]).abs() <= settings.same_state_x * reaction_scale(&s.x)
+                })
+        });
+        let key = |s: &LimitState| [s.t, s.x[0], s.x[1], s.x[2]];
+        match dup {
+            None => states.push(s),
+            Some(p) => {
+                let (a, b) = (key(&s), key(p));
+                if (0..4).map(|k| a[k].total_cmp(&b[k])).find(|o| o.is_ne())
+                    == Some(std::cmp::Ordering::Less)
+                {
+                    *p = s;
                 }
             }
         }

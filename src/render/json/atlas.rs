@@ -141,7 +141,8 @@ struct TopJson {
     /// What ends the branch at the solved openings nearest the top on either side
     /// (different: a corner where the last branch to end changes).
     conditions: [String; 2],
-    /// "a smooth peak", "a corner", or on a voussoir arch "the largest of bisected points".
+    /// "a smooth peak", "a corner", "at the edge of the openings evaluated" (a side without
+    /// a solved opening), or on a voussoir arch "the largest of bisected points".
     shape: &'static str,
     /// Openings evaluated.
     evaluations: usize,
