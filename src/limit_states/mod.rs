@@ -30,7 +30,7 @@ use crate::state::State;
 use crate::statics::Reactions;
 use crate::undecided::Undecided;
 pub use branch_end::{branch_end, end_on, BranchEnd, EndCondition};
-use discretised::{agreed, Carried, Unsettled};
+use discretised::{agreed, Carried, Part, Unsettled};
 use follow::refine;
 pub use follow::{follow, lost_at};
 use ridge::Start;
@@ -416,9 +416,9 @@ fn hinges_only(
 /// limit state over to the continuum (adjacent contacts of one kind merged into one
 /// tangency contact), refine it by Newton, verify it over the whole arch, and accept the set
 /// when both discretisations give the same one (where they differ, finer ones:
-/// [`discretised::agreed`]). Each discretisation also hands over its states at shifted μ
-/// and its ridge points whose mechanism just fails ([`carried`]), so that a branch of
-/// the continuum is found up to its end.
+/// [`discretised::agreed`]). Each discretisation also hands over its ridge points whose
+/// mechanism just fails, and the coarsest one (a finer one where needed) its states at
+/// shifted μ ([`carried`]), so that a branch of the continuum is found up to its end.
 fn continuous(
     arch: &Arch,
     mu: f64,
@@ -429,19 +429,31 @@ fn continuous(
     settings: &Settings,
 ) -> Result<LimitStates, Unsettled> {
     let (mut walked, mut tried) = (0, 0);
-    let carry = |pieces: usize| -> Result<Carried, Undecided> {
-        tried += 1;
+    // each discretisation's shifted searches use the method its search at μ used
+    let mut by_ridge_of: Vec<(usize, bool)> = Vec::new();
+    let carry = |pieces: usize, part: Part| -> Result<Carried, Undecided> {
         let discrete = arch
             .clone()
             .with_blocks(pieces)
             .map_err(|e| Undecided::Discretisation(e.to_string()))?;
-        let (states, events, by_ridge) =
-            carried(arch, &discrete, (mu, pieces), (eta_s, ridge), settings)?;
-        walked += usize::from(by_ridge);
-        Ok(Carried {
-            states,
-            events: Some(events),
-        })
+        let ridge = match part {
+            Part::AtMu => ridge,
+            Part::Shifted => by_ridge_of.iter().any(|&(p, r)| p == pieces && r),
+        };
+        let (carried, by_ridge) = carried(
+            arch,
+            &discrete,
+            (mu, pieces),
+            (eta_s, ridge),
+            part,
+            settings,
+        )?;
+        if part == Part::AtMu {
+            tried += 1;
+            walked += usize::from(by_ridge);
+            by_ridge_of.push((pieces, by_ridge));
+        }
+        Ok(carried)
     };
     let same = |p: &LimitState, q: &LimitState| {
         discretised::same_state(p, q, settings.same_state_eta * p.t, settings)
@@ -471,20 +483,21 @@ fn continuous(
 
 /// The limit states of `discrete`, the `pieces`-piece discretisation of `arch`, carried
 /// over to the continuum at `mu` (adjacent contacts merged, Newton, checked there) and
-/// kept above η_s (1 + `root_slack`); with the events of its search at `mu` and whether
-/// the ridge walked it (else the sweep). The discretisation is searched at `mu` and at
-/// μ (1 ∓ `carry_shift` / pieces²) (`Settings::carry_shift`: a branch of the continuum
-/// that ends, or begins, within the discretisation's error of `mu` is found by it on one
-/// side; [`discretised::shifted`]), and its ridge points whose mechanism only just fails
-/// (`Settings::carry_almost_rate`) are carried too. A shifted search that fails adds
-/// nothing.
+/// kept above η_s (1 + `root_slack`); with the events of its search and whether the ridge
+/// walked it (else the sweep; `ridge`: try the ridge first). `part` says which searches:
+/// the one at `mu`, whose ridge points whose mechanism only just fails
+/// (`Settings::carry_almost_rate`) are carried too, or the ones at μ (1 ∓ `carry_shift` /
+/// pieces²) ([`discretised::shifted`]: a branch of the continuum that ends, or begins,
+/// within the discretisation's error of `mu` is found by it on one side), which have no
+/// events; a shifted search that fails adds nothing.
 fn carried(
     arch: &Arch,
     discrete: &Arch,
     (mu, pieces): (f64, usize),
     (eta_s, ridge): (f64, bool),
+    part: Part,
     settings: &Settings,
-) -> Result<(Vec<LimitState>, usize, bool), Undecided> {
+) -> Result<(Carried, bool), Undecided> {
     // the ridge of the discretisation, from η = 0: every point it gives is checked, and
     // the list is complete wherever P(η) of the continuum (hence of the discretisation,
     // which has fewer joints) has an interior point, i.e. above η_s(1 + root_slack)
@@ -499,24 +512,35 @@ fn carried(
         discrete_sweep(discrete, m, pieces, settings)
             .map(|(s, e)| (s.iter().map(start_of).collect::<Vec<_>>(), e))
     };
-    let at_mu = if ridge { walk(mu).ok() } else { None };
-    let by_ridge = at_mu.is_some();
-    let (mut seeds, events) = match at_mu {
-        Some(w) => w,
-        None => sweep(mu)?,
+    let (seeds, events, by_ridge, narrowed) = match part {
+        Part::AtMu => {
+            let at_mu = if ridge { walk(mu).ok() } else { None };
+            let by_ridge = at_mu.is_some();
+            let (seeds, events) = match at_mu {
+                Some(w) => w,
+                None => sweep(mu)?,
+            };
+            (seeds, Some(events), by_ridge, false)
+        }
+        Part::Shifted => {
+            let search = |m: f64| if ridge { walk(m) } else { sweep(m) };
+            let (found, narrowed) = discretised::shifted(mu, pieces, settings, search);
+            let seeds = found.into_iter().flat_map(|(s, _)| s).collect();
+            (seeds, None, ridge, narrowed)
+        }
     };
-    // the shifted searches by the same method
-    let search = |m: f64| if by_ridge { walk(m) } else { sweep(m) };
-    for (s, _) in discretised::shifted(mu, pieces, settings, search) {
-        seeds.extend(s);
-    }
     let h = arch.span() / pieces as f64;
     let states = seeds
         .iter()
         .filter_map(|(t, x, pattern)| refine(arch, mu, *t, *x, &merge(pattern, h), settings))
         .filter(|r| r.t > eta_s * (1.0 + settings.root_slack))
         .collect();
-    Ok((states, events, by_ridge))
+    let carried = Carried {
+        states,
+        events,
+        narrowed,
+    };
+    Ok((carried, by_ridge))
 }
 
 /// A discrete limit state as a start for Newton on the continuum.

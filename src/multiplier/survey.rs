@@ -11,7 +11,7 @@ use crate::arch::{check_eta, Arch, InputError, JointLayout};
 use crate::contact::Contact;
 use crate::family::Tagged;
 use crate::kinematics::{column, power};
-use crate::limit_states::discretised::{self, agreed, Carried};
+use crate::limit_states::discretised::{self, agreed, Carried, Part};
 use crate::limit_states::sweep::sweep_load_with_top;
 use crate::limit_states::LimitState;
 use crate::load::{rows, LiveLoad, LoadRow, Side};
@@ -361,7 +361,8 @@ fn continuous_finite_friction(
 ) -> Result<LoadOutcome, Undecided> {
     // unbounded: the discretisations sweep up to `UNBOUNDED_SEARCH_TOP`, as a discrete arch's
     let top = max.as_ref().map_or(UNBOUNDED_SEARCH_TOP, |m| m.0);
-    let carry = |pieces| carried_states(arch, eta, mu, load, pieces, top, min, settings);
+    let carry =
+        |pieces, part| carried_states(arch, eta, mu, load, (pieces, part), top, min, settings);
     // λ to `same_state_eta` × (1 + |λ|): a multiplier near zero is fixed in absolute terms
     let same = |p: &LimitState, q: &LimitState| {
         discretised::same_state(p, q, settings.same_state_eta * (1.0 + p.t.abs()), settings)
@@ -403,14 +404,16 @@ fn continuous_finite_friction(
 /// The limit states below λ_static of the `pieces`-piece discretisation of a continuous arch
 /// carried over to the continuum (adjacent contacts merged into tangencies, Newton with λ
 /// unknown, verified over the arch), with the events of its sweep (`None` where it found no
-/// limit state to sweep to).
+/// limit state to sweep to); `part`: of its search at μ, or of its searches at shifted μ
+/// (near where a branch ends, the discretisation's own branch may have ended at μ;
+/// [`discretised::shifted`]), which have no events.
 #[allow(clippy::too_many_arguments)]
 fn carried_states(
     arch: &Arch,
     eta: f64,
     mu: f64,
     load: &LiveLoad,
-    pieces: usize,
+    (pieces, part): (usize, Part),
     lambda_s: f64,
     min: (f64, Reactions),
     settings: &Settings,
@@ -437,32 +440,38 @@ fn carried_states(
         .clone()
         .with_joints(&joints)
         .map_err(|e| Undecided::Discretisation(e.to_string()))?;
-    let states = match survey(&discrete, eta, mu, load, settings)
-        .map_err(|e| Undecided::Discretisation(e.to_string()))?
-    {
-        Ok(LoadOutcome::Limits(sv)) => {
-            events = Some(sv.events);
-            sv.limit_states
+    let mut narrowed = false;
+    let states = match part {
+        Part::AtMu => match survey(&discrete, eta, mu, load, settings)
+            .map_err(|e| Undecided::Discretisation(e.to_string()))?
+        {
+            Ok(LoadOutcome::Limits(sv)) => {
+                events = Some(sv.events);
+                sv.limit_states
+            }
+            Ok(LoadOutcome::NoCollapse { .. }) => Vec::new(),
+            Ok(LoadOutcome::NoEquilibrium) => {
+                return Err(Undecided::Discretisation(format!(
+                    "the {pieces}-piece discretisation has no admissible state"
+                )))
+            }
+            Err(e) => return Err(e.map_text(|e| format!("{pieces} pieces: {e}"))),
+        },
+        Part::Shifted => {
+            let at = |m: f64| match survey(&discrete, eta, m, load, settings) {
+                Ok(Ok(LoadOutcome::Limits(sv))) => Ok(sv.limit_states),
+                _ => Err(()),
+            };
+            // a face of states (a continuum at one λ) found there is not carried
+            let (found, n) = discretised::shifted(mu, pieces, settings, at);
+            narrowed = n;
+            found
+                .into_iter()
+                .flatten()
+                .filter(|s| s.continuum_to.is_none())
+                .collect()
         }
-        Ok(LoadOutcome::NoCollapse { .. }) => Vec::new(),
-        Ok(LoadOutcome::NoEquilibrium) => {
-            return Err(Undecided::Discretisation(format!(
-                "the {pieces}-piece discretisation has no admissible state"
-            )))
-        }
-        Err(e) => return Err(e.map_text(|e| format!("{pieces} pieces: {e}"))),
     };
-    // the discretisation at shifted friction too: near where a branch ends, the
-    // discretisation's own branch may have ended at μ (`discretised::shifted`)
-    let mut states = states;
-    let at = |m: f64| match survey(&discrete, eta, m, load, settings) {
-        Ok(Ok(LoadOutcome::Limits(sv))) => Ok(sv.limit_states),
-        _ => Err(()),
-    };
-    for more in discretised::shifted(mu, pieces, settings, at) {
-        // a face of states (a continuum at one λ) found there is not carried
-        states.extend(more.into_iter().filter(|s| s.continuum_to.is_none()));
-    }
     let h = (b - a) / pieces as f64;
     let mut found: Vec<LimitState> = Vec::new();
     for st in &states {
@@ -500,6 +509,7 @@ fn carried_states(
     Ok(Carried {
         states: found,
         events,
+        narrowed,
     })
 }
 
