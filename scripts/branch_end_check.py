@@ -7,6 +7,9 @@ below mu_ms) and the counts. Inside an end the answer must be F, beyond it T.
     target/release/arch-enum atlas --alpha-min 0.55 --alpha-max 1.0 --columns 46 \\
         --mu-max-factor 1.2 --json > band.json
     python3 scripts/branch_end_check.py band.json target/release/arch-enum
+
+With `--traced` the points traced between the columns (`traced` in the JSON) are checked
+instead of the columns' own.
 """
 import json
 import subprocess
@@ -16,6 +19,9 @@ path, BIN = sys.argv[1], sys.argv[2]
 doc = json.load(open(path))
 ends = [(p['alpha'], p['mu']) for b in doc['boundaries']
         if b['between'] == ['non_unique', 'unique'] for p in b['points'] if p.get('exact')]
+if '--traced' in sys.argv:
+    # the points traced between the columns instead
+    ends = [(p['alpha'], p['mu']) for t in doc.get('traced', []) for p in t['points']]
 RS = [3e-2, 1e-2, 3e-3, 1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9]
 
 

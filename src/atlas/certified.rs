@@ -86,3 +86,19 @@ pub fn certified_kind_with(
     };
     Ok((kind, search.ridge.is_some()))
 }
+
+/// Whether a verified certificate at (arch, μ) states `want` ([`certified_kind_with`], with
+/// `found` listed): `Ok` with whether the verifier proved its list complete, else why not.
+pub(super) fn states_kind(
+    arch: &Arch,
+    mu: f64,
+    want: Kind,
+    found: &[LimitState],
+    settings: &Settings,
+) -> Result<bool, String> {
+    match certified_kind_with(arch, mu, found, settings) {
+        Ok((k, complete)) if k == want => Ok(complete),
+        Ok((k, _)) => Err(format!("the certificate at mu = {mu} states {}", k.name())),
+        Err(e) => Err(format!("at mu = {mu}: {e}")),
+    }
+}

@@ -1,7 +1,7 @@
 //! One column of the atlas: an opening α, its μ_ms, the samples in μ classified, the changes
 //! of kind located by bisection, and the runs of one kind they bound.
 
-use super::certified::certified_kind_with;
+use super::certified::states_kind;
 use super::classify::{classify, classify_states, Classified, Kind};
 use crate::arch::{Arch, InputError, JointLayout, WeightModel};
 use crate::friction::friction_limit;
@@ -284,13 +284,8 @@ pub(super) fn column(
 /// The certificates of a column: both ends of every located bracket, and the middle sample
 /// of every decided run.
 fn certify_column(arch: &Arch, col: &mut Column, settings: &Settings) {
-    let holds_with = |mu: f64, want: Kind, found: &[LimitState]| match certified_kind_with(
-        arch, mu, found, settings,
-    ) {
-        Ok((k, complete)) if k == want => Ok(complete),
-        Ok((k, _)) => Err(format!("the certificate at mu = {mu} states {}", k.name())),
-        Err(e) => Err(format!("at mu = {mu}: {e}")),
-    };
+    let holds_with =
+        |mu: f64, want: Kind, found: &[LimitState]| states_kind(arch, mu, want, found, settings);
     let holds = |mu: f64, want: Kind| holds_with(mu, want, &[]);
     let both = |a: Result<bool, String>, b: Result<bool, String>| Ok(a? && b?);
     if let (Some(ms), Some((Some(first), _, _))) = (col.mu_ms, col.runs.first()) {

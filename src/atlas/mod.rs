@@ -8,8 +8,10 @@
 //! classified by the complete limit-state search ([`crate::limit_states::survey`]); between two samples of
 //! different kinds the change is located by bisection in μ down to neighbouring floats (a
 //! sample of a third kind in between splits the bracket). Between columns the regions are
-//! joined by their boundaries' straight segments where both columns hold the same kinds in
-//! the same order; elsewhere each column's runs hold up to the middle of the strip. Between
+//! joined through their boundaries' points where both columns hold the same kinds in the
+//! same order (the `non_unique`/`unique` boundary traced inside the strip by continuation
+//! in α where both columns solve one, [`Traced`]; other boundaries by straight segments);
+//! elsewhere each column's runs hold up to the middle of the strip. Between
 //! `non_unique` and `unique` on a continuous arch the non-unique end's branches of limit
 //! states are followed and the point is where the last one ends, solved from the condition
 //! that ends it ([`crate::limit_states::branch_end()`]); other boundary points are brackets
@@ -18,10 +20,12 @@
 mod certified;
 mod classify;
 mod column;
+mod continued;
 pub mod loads;
 mod regions;
 mod tips;
 mod top;
+mod traced;
 
 pub use certified::{certified_kind, certified_reduction};
 pub use classify::{classify, Classified, Kind};
@@ -31,6 +35,7 @@ pub use column::{
 };
 pub use tips::Tip;
 pub use top::BandTop;
+pub use traced::{Traced, TracedPoint, TRACE_STEPS};
 
 use crate::arch::InputError;
 use crate::settings::Settings;
@@ -52,6 +57,10 @@ pub struct Atlas {
     /// The top of the non-unique band (its largest μ/μ_ms), where the columns solve its
     /// boundary points.
     pub top: Option<BandTop>,
+    /// One per column: the `non_unique`/`unique` boundary traced by continuation towards
+    /// the next column (`None`: not both columns hold exactly one solved such point, with
+    /// the same kinds in the same order).
+    pub traced: Vec<Option<Traced>>,
 }
 
 impl Atlas {
@@ -79,8 +88,9 @@ pub fn atlas(
     })
     .into_iter()
     .collect::<Result<Vec<Column>, InputError>>()?;
+    let traced = traced::trace(rect, &columns, settings, threads)?;
     let top = top::band_top(rect, &columns, settings)?;
-    let regions = regions::regions(&columns, top.as_ref().map(|t| [t.alpha, t.mu]));
+    let regions = regions::regions(&columns, &traced, top.as_ref().map(|t| [t.alpha, t.mu]));
     let with_ms: Vec<&Column> = columns.iter().filter(|c| c.mu_ms.is_some()).collect();
     let curve = regions::mu_ms_curve(&with_ms);
     let tips = tips::tips(rect, &columns, settings)?;
@@ -91,5 +101,6 @@ pub fn atlas(
         curve,
         tips,
         top,
+        traced,
     })
 }

@@ -1,12 +1,14 @@
 //! The regions of the atlas as polygons of (α, μ): consecutive columns holding the same kinds
-//! in the same order are joined run by run (the runs' ends, the located boundaries, joined by
-//! straight segments); where the kinds of two neighbouring columns differ, each column's
+//! in the same order are joined run by run (the runs' ends, the located boundaries, joined
+//! through the points traced between the columns where there are some, else by straight
+//! segments); where the kinds of two neighbouring columns differ, each column's
 //! runs hold up to the middle of the strip between them. The lowest run starts on the μ_ms
 //! curve, which the polygons follow through its points between the columns; below it, down
 //! to μ = 0, lies the region without equilibrium.
 
 use super::classify::Kind;
 use super::column::Column;
+use super::traced::Traced;
 
 /// A polygon of (α, μ) vertices, closed (the last vertex joins the first).
 type Polygon = Vec<[f64; 2]>;
@@ -17,8 +19,22 @@ const SAME_ALPHA: f64 = 1e-12;
 /// Every region of `columns` (ascending in α; those without μ_ms left out); `top`, the top of
 /// the non-unique band, is a vertex of the edge between `non_unique` and `unique` in the
 /// strip that holds it.
-pub(super) fn regions(columns: &[Column], top: Option<[f64; 2]>) -> Vec<(Kind, Polygon)> {
-    let cols: Vec<&Column> = columns.iter().filter(|c| c.mu_ms.is_some()).collect();
+pub(super) fn regions(
+    columns: &[Column],
+    traced: &[Option<Traced>],
+    top: Option<[f64; 2]>,
+) -> Vec<(Kind, Polygon)> {
+    // the columns with μ_ms, each with the boundary traced from it
+    let (cols, traced): (Vec<&Column>, Vec<Option<&Traced>>) = columns
+        .iter()
+        .zip(
+            traced
+                .iter()
+                .map(Option::as_ref)
+                .chain(std::iter::repeat(None)),
+        )
+        .filter(|c| c.0.mu_ms.is_some())
+        .unzip();
     if cols.is_empty() {
         return Vec::new();
     }
@@ -45,7 +61,7 @@ pub(super) fn regions(columns: &[Column], top: Option<[f64; 2]>) -> Vec<(Kind, P
             let Some(kind) = run.0 else {
                 continue; // not decided: left out of every region
             };
-            let group = &cols[i..=j];
+            let group = (&cols[i..=j], &traced[i..=j]);
             let kind_of = |k: usize| cols[i].runs.get(k).and_then(|r| r.0);
             // the top of the band on the edge between non_unique (below) and unique
             let band = |below: usize| {
@@ -107,10 +123,11 @@ fn on_curve(curve: &[[f64; 2]], left: f64, right: f64) -> Polygon {
     p
 }
 
-/// One edge of a group's run, left to right: `mu` at each column, and out to `left` and
-/// `right` at the same μ/μ_ms as at the nearest column.
+/// One edge of a group's run, left to right: `mu` at each column (with the points traced
+/// from it to the next column where the edge is the boundary they trace), and out to `left`
+/// and `right` at the same μ/μ_ms as at the nearest column.
 fn edge(
-    group: &[&Column],
+    (group, traced): (&[&Column], &[Option<&Traced>]),
     (left, right): (f64, f64),
     curve: &[[f64; 2]],
     mu: impl Fn(&Column) -> f64,
@@ -119,7 +136,21 @@ fn edge(
         |c: &Column, a: f64| mu(c) / c.mu_ms.expect("columns with mu_ms") * interpolate(curve, a);
     let (first, last) = (group[0], group[group.len() - 1]);
     let mut p = vec![[left, held(first, left)]];
-    p.extend(group.iter().map(|c| [c.alpha, mu(c)]));
+    for (k, c) in group.iter().enumerate() {
+        p.push([c.alpha, mu(c)]);
+        // the boundary traced from this column's point to the next one's
+        let traced = traced[k].filter(|t| {
+            group
+                .get(k + 1)
+                .is_some_and(|n| t.from_mu == mu(c) && t.to_mu == mu(n))
+        });
+        p.extend(
+            traced
+                .iter()
+                .flat_map(|t| &t.points)
+                .map(|q| [q.alpha, q.end.mu]),
+        );
+    }
     p.push([right, held(last, right)]);
     p.dedup();
     p

@@ -11,10 +11,11 @@
 //! is where one branch-end curve peaks, or a corner where the last branch to end changes
 //! (the two sides' conditions say which).
 
-use super::classify::{classify, Kind};
+use super::classify::Kind;
 use super::column::{column, Column, Rectangle};
+use super::continued::Branches;
 use crate::arch::InputError;
-use crate::limit_states::{end_on, BranchEnd};
+use crate::limit_states::BranchEnd;
 use crate::settings::Settings;
 
 /// The golden section stops when its bracket in α is this narrow (relative).
@@ -69,67 +70,10 @@ impl BandTop {
 /// One opening's value: μ/μ_ms of its boundary point, its μ, μ_ms and condition.
 type Value = Option<(f64, f64, f64, String)>;
 
-/// The search's memory: the branches whose ends it continues in α, each with the opening of
-/// its latest end.
-struct Branches(Vec<(f64, BranchEnd)>);
-
-impl Branches {
-    /// The boundary point at `alpha` by continuation: every known branch's end moved there
-    /// (Newton on its defining condition, [`end_on`]), the last of them, accepted where the
-    /// search finds the arch unique just beyond it (no branch ends later); `None` where
-    /// not (then a column decides).
-    fn at(
-        &mut self,
-        rect: &Rectangle,
-        alpha: f64,
-        settings: &Settings,
-    ) -> Result<Value, InputError> {
-        let arch = rect.arch(alpha)?;
-        let Some(mu_ms) = crate::friction::friction_limit(&arch, settings)
-            .ok()
-            .flatten()
-        else {
-            return Ok(None);
-        };
-        let moved: Vec<Option<BranchEnd>> = self
-            .0
-            .iter()
-            .map(|(_, e)| end_on(&arch, e, settings).ok())
-            .collect();
-        let Some(last) = moved.iter().flatten().max_by(|a, b| a.mu.total_cmp(&b.mu)) else {
-            return Ok(None);
-        };
-        // the end's state is a limit state above η_s there, and none is left beyond it
-        let eta_s = match classify(&arch, last.mu, settings)? {
-            // η_s carries a limit state (the kind of a band's side): etas[0] is η_s
-            Ok((Kind::Unique | Kind::NonUnique, etas)) => etas[0],
-            _ => return Ok(None),
-        };
-        if last.state.t <= eta_s * (1.0 + settings.root_slack) {
-            return Ok(None);
-        }
-        let beyond = last.mu * (1.0 + BEYOND);
-        if !matches!(classify(&arch, beyond, settings)?, Ok((Kind::Unique, _))) {
-            return Ok(None);
-        }
-        let value = (
-            last.mu / mu_ms.mu,
-            last.mu,
-            mu_ms.mu,
-            last.condition.describe(),
-        );
-        for (b, m) in self.0.iter_mut().zip(moved) {
-            if let Some(m) = m {
-                *b = (alpha, m);
-            }
-        }
-        Ok(Some(value))
-    }
+/// A continued end as the top's value.
+fn value_of(end: Option<(BranchEnd, f64)>) -> Value {
+    end.map(|(e, mu_ms)| (e.mu / mu_ms, e.mu, mu_ms, e.condition.describe()))
 }
-
-/// A continued boundary point stands where the search finds the arch unique this far
-/// beyond it (relative; the kinds decided to tolerances change within ~2e-10 of an end).
-const BEYOND: f64 = 1e-8;
 
 /// The boundary point's μ/μ_ms at `alpha`, its μ, μ_ms and condition (`None`: no solved
 /// point between `non_unique` and `unique` there).
@@ -197,14 +141,7 @@ pub(super) fn band_top(
     let top = 1.0 + 1.5 * (r - 1.0);
     let mut evaluations = 0;
     // the ends of the columns around the largest, continued in α (a column where that fails)
-    let mut branches = Branches(
-        columns[k.saturating_sub(1)..=(k + 1).min(columns.len() - 1)]
-            .iter()
-            .flat_map(|c| &c.boundaries)
-            .filter(|p| p.between == [Kind::NonUnique, Kind::Unique])
-            .filter_map(|p| p.end.clone()?.ok().map(|e| (p.alpha, e)))
-            .collect(),
-    );
+    let mut branches = Branches::of(&columns[k.saturating_sub(1)..=(k + 1).min(columns.len() - 1)]);
     // every opening evaluated, with its value (the sampled columns around the largest first)
     let mut log: Vec<(f64, Value)> = columns[k.saturating_sub(1)..=(k + 1).min(columns.len() - 1)]
         .iter()
@@ -212,7 +149,7 @@ pub(super) fn band_top(
         .collect();
     let mut f = |alpha: f64| -> Result<Value, InputError> {
         evaluations += 1;
-        let v = match branches.at(rect, alpha, settings)? {
+        let v = match value_of(branches.at(rect, alpha, settings)?) {
             Some(v) => Some(v),
             None => ratio_at(rect, alpha, top, settings)?,
         };

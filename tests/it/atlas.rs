@@ -864,3 +864,65 @@ fn a_voussoir_band_has_a_top_of_bisected_points() {
         }
     }
 }
+
+/// The `non_unique`/`unique` boundary is traced between two columns by continuation in α
+/// (`traced`): every traced point is non-unique just inside it and unique just beyond it
+/// by the search itself, and the polygons pass through the points. Between α = 0.68 and
+/// 0.69 the branch that ends last changes (a slide's rate at 0.68, the extrados hinge's at
+/// 0.69) and the curve bends away from the chord; a point between the chord and the curve
+/// is `non_unique` by `solve` and by the polygons (the chord alone put it in `unique`).
+/// Inside the strip `solve` also shows a notch of uniqueness (docs/uniqueness.md): at
+/// α = 0.685 the first branch ends near μ = 1.0156 and the second is born at the corner of
+/// η*(μ), μ = 1.02096.
+#[test]
+fn the_boundary_is_traced_between_columns() {
+    let (doc, code) = json_of(&[
+        "atlas",
+        "--alpha-min",
+        "0.68",
+        "--alpha-max",
+        "0.69",
+        "--columns",
+        "2",
+        "--mu-max-factor",
+        "1.2",
+        "--samples",
+        "12",
+    ]);
+    assert_eq!(code, 0);
+    let traced = doc["traced"].as_array().unwrap();
+    assert_eq!(traced.len(), 1, "{doc}");
+    let t = &traced[0];
+    let points = t["points"].as_array().unwrap();
+    assert_eq!(points.len(), arch_enum::atlas::TRACE_STEPS - 1, "{t}");
+    let kind = |alpha: f64, mu: f64| {
+        solve_kind(
+            &Arch::symmetric(alpha, WeightModel::Centreline).unwrap(),
+            mu,
+        )
+    };
+    for p in points {
+        let (alpha, mu) = (p["alpha"].as_f64().unwrap(), p["mu"].as_f64().unwrap());
+        assert_eq!(kind(alpha, mu * (1.0 - 1e-6)), Some("non_unique"), "{p}");
+        assert_eq!(kind(alpha, mu * (1.0 + 1e-8)), Some("unique"), "{p}");
+    }
+    // the point at α = 0.68625 (the fifth of seven) and the chord there
+    let p = &points[4];
+    let alpha = p["alpha"].as_f64().unwrap();
+    assert!((alpha - 0.68625).abs() < 1e-12, "{p}");
+    let (from, to) = (t["mu_from"].as_f64().unwrap(), t["mu_to"].as_f64().unwrap());
+    let chord = from + (to - from) * 0.625;
+    let curve = p["mu"].as_f64().unwrap();
+    assert!(curve > chord * (1.0 + 1e-3), "curve {curve}, chord {chord}");
+    let mu = 0.5 * (chord + curve);
+    assert_eq!(kind(alpha, mu), Some("non_unique"));
+    assert_eq!(kinds_at(&regions_of(&doc), alpha, mu), vec!["non_unique"]);
+    // the notch: the first branch, none, the second branch
+    for (mu, want) in [
+        (1.015, "non_unique"),
+        (1.018, "unique"),
+        (1.0225, "non_unique"),
+    ] {
+        assert_eq!(kind(0.685, mu), Some(want), "mu = {mu}");
+    }
+}

@@ -148,6 +148,42 @@ struct TopJson {
     evaluations: usize,
 }
 
+#[derive(Debug, Serialize, JsonSchema)]
+struct TracedPointJson {
+    alpha: f64,
+    /// Where the branch ends, solved from its defining condition.
+    mu: f64,
+    mu_ms: f64,
+    /// η of the branch's last limit state.
+    eta: f64,
+    /// What ends the branch there.
+    condition: String,
+    /// The condition's residual there.
+    residual: f64,
+    /// Verified certificates at `mu` (the branch's last limit state listed) and at
+    /// mu (1 + 1e-8) state `non_unique` and `unique`.
+    certified: bool,
+    /// With `--certify`, why the point is not certified.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    not_certified: Option<String>,
+}
+
+/// The `non_unique`/`unique` boundary between two columns, traced by continuation in α.
+#[derive(Debug, Serialize, JsonSchema)]
+struct TracedJson {
+    between: [&'static str; 2],
+    /// The strip: the two columns' openings.
+    alpha_from: f64,
+    alpha_to: f64,
+    /// The columns' boundary points' μ.
+    mu_from: f64,
+    mu_to: f64,
+    /// The largest departure of the points from the straight segment between the
+    /// columns' points, relative to μ (null: no points).
+    chord_departure: Option<f64>,
+    points: Vec<TracedPointJson>,
+}
+
 /// The `atlas --json` document.
 #[derive(Debug, Serialize, JsonSchema)]
 pub struct AtlasJson {
@@ -158,6 +194,9 @@ pub struct AtlasJson {
     rectangle: RectangleJson,
     regions: Vec<RegionJson>,
     boundaries: Vec<BoundaryJson>,
+    /// The `non_unique`/`unique` boundary inside each strip between two columns that both
+    /// solve one, traced by continuation in α (the polygons pass through these points).
+    traced: Vec<TracedJson>,
     /// Where a kind begins or ends along the μ_ms curve (at μ_ms (1 + 1e-6)).
     tips: Vec<TipJson>,
     /// The top of the non-unique band (null: no solved `non_unique`/`unique` point).
@@ -240,6 +279,40 @@ fn boundaries(columns: &[Column]) -> Vec<BoundaryJson> {
         .collect()
 }
 
+/// The traced boundary of every strip that has one.
+fn traced(a: &Atlas) -> Vec<TracedJson> {
+    a.columns
+        .iter()
+        .zip(a.columns.iter().skip(1))
+        .zip(&a.traced)
+        .filter_map(|((c, d), t)| {
+            let t = t.as_ref()?;
+            Some(TracedJson {
+                between: [Kind::NonUnique.name(), Kind::Unique.name()],
+                alpha_from: c.alpha,
+                alpha_to: d.alpha,
+                mu_from: t.from_mu,
+                mu_to: t.to_mu,
+                chord_departure: t.chord_departure((c.alpha, d.alpha)).map(|d| d.0),
+                points: t
+                    .points
+                    .iter()
+                    .map(|p| TracedPointJson {
+                        alpha: p.alpha,
+                        mu: p.end.mu,
+                        mu_ms: p.mu_ms,
+                        eta: p.end.state.t,
+                        condition: p.end.condition.describe(),
+                        residual: p.end.residual,
+                        certified: matches!(p.certified, Some(Ok(_))),
+                        not_certified: p.certified.clone().and_then(Result::err),
+                    })
+                    .collect(),
+            })
+        })
+        .collect()
+}
+
 fn column(c: &Column) -> ColumnJson {
     ColumnJson {
         alpha: c.alpha,
@@ -309,6 +382,7 @@ pub fn atlas(a: &Atlas) -> AtlasJson {
             })
             .collect(),
         boundaries: boundaries(&a.columns),
+        traced: traced(a),
         tips: a
             .tips
             .iter()

@@ -134,6 +134,7 @@ fn boundaries(s: &mut String, a: &Atlas) {
         );
     }
     top_line(s, a);
+    traced_line(s, a);
     let undecided = a
         .columns
         .iter()
@@ -163,12 +164,49 @@ fn boundaries(s: &mut String, a: &Atlas) {
             .filter_map(|c| c.mu_ms_certified.clone().map(|m| m.map(|x| x.complete)))
             .collect();
         let m = count(&mut ms.iter().map(Some));
+        let t = count(
+            &mut a
+                .traced
+                .iter()
+                .flatten()
+                .flat_map(|t| &t.points)
+                .map(|p| p.certified.as_ref()),
+        );
         let _ = writeln!(
             s,
-            "certified           kinds stated by verified certificates: {} of {} brackets (both ends), {} of {} runs (one sample each), mu_ms to 1e-6 at {} of {} openings;\n                    lists of limit states proved complete (ridge evidence) at {}, {} and {} of them, checked only elsewhere",
-            b.1, b.0, r.1, r.0, m.1, m.0, b.2, r.2, m.2
+            "certified           kinds stated by verified certificates: {} of {} brackets (both ends), {} of {} runs (one sample each), mu_ms to 1e-6 at {} of {} openings, {} of {} traced points (both sides);\n                    lists of limit states proved complete (ridge evidence) at {}, {}, {} and {} of them, checked only elsewhere",
+            b.1, b.0, r.1, r.0, m.1, m.0, t.1, t.0, b.2, r.2, m.2, t.2
         );
     }
+}
+
+/// The `non_unique`/`unique` boundary traced between columns, where it is.
+fn traced_line(s: &mut String, a: &Atlas) {
+    let strips: Vec<_> = a
+        .columns
+        .iter()
+        .zip(a.columns.iter().skip(1))
+        .zip(&a.traced)
+        .filter_map(|((c, d), t)| t.as_ref().map(|t| (t, (c.alpha, d.alpha))))
+        .collect();
+    if strips.is_empty() {
+        return;
+    }
+    let points: usize = strips.iter().map(|(t, _)| t.points.len()).sum();
+    let worst = strips
+        .iter()
+        .filter_map(|(t, span)| t.chord_departure(*span))
+        .max_by(|p, q| p.0.total_cmp(&q.0));
+    let _ = writeln!(
+        s,
+        "  traced between columns (non_unique / unique, by continuation in alpha): {points} point(s) in {} strip(s){}",
+        strips.len(),
+        worst.map_or(String::new(), |(d, alpha)| format!(
+            "; the straight segment between two columns departs from them by up to {} of mu (alpha = {})",
+            sig(d, 3),
+            sig(alpha, 6)
+        ))
+    );
 }
 
 /// The top of the non-unique band, where the atlas has one.
