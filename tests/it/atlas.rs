@@ -467,13 +467,13 @@ fn the_load_map_finds_the_reduction_and_agrees_with_the_brute_force() {
     assert!(v["message"].as_str().unwrap().contains("--factors"), "{v}");
 }
 
-/// The atlas document of two columns, α = 0.65 and `alpha_max`, 12 samples up to 1.2 μ_ms,
-/// with `extra` flags; each column has one boundary point of the band.
-fn band_doc(alpha_max: &str, extra: &[&str]) -> Value {
+/// The atlas document of two columns, α = `alpha_min` and `alpha_max`, 12 samples up to
+/// 1.2 μ_ms, with `extra` flags; each column has one boundary point of the band.
+fn band_doc(alpha_min: &str, alpha_max: &str, extra: &[&str]) -> Value {
     let flags = [
         "atlas",
         "--alpha-min",
-        "0.65",
+        alpha_min,
         "--alpha-max",
         alpha_max,
         "--columns",
@@ -511,7 +511,7 @@ fn band_points(doc: &Value) -> Vec<&Value> {
 /// branch ends by losing its mechanism (the interior slide's rate reaches 0).
 #[test]
 fn boundary_points_are_where_the_branches_end() {
-    let doc = band_doc("0.7", &[]);
+    let doc = band_doc("0.65", "0.7", &[]);
     let points = band_points(&doc);
     let settings = Settings::default();
     for p in points {
@@ -581,7 +581,7 @@ fn boundary_points_are_where_the_branches_end() {
 fn boundary_points_are_solved_from_what_ends_the_branch() {
     use crate::continuum_reference::Cont;
     use arch_enum::limit_states::{branch_end, follow, EndCondition};
-    let doc = band_doc("0.75", &["--certify"]);
+    let doc = band_doc("0.65", "0.75", &["--certify"]);
     let points = band_points(&doc);
     let settings = Settings::default();
     for p in points {
@@ -876,20 +876,7 @@ fn a_voussoir_band_has_a_top_of_bisected_points() {
 /// η*(μ), μ = 1.02096.
 #[test]
 fn the_boundary_is_traced_between_columns() {
-    let (doc, code) = json_of(&[
-        "atlas",
-        "--alpha-min",
-        "0.68",
-        "--alpha-max",
-        "0.69",
-        "--columns",
-        "2",
-        "--mu-max-factor",
-        "1.2",
-        "--samples",
-        "12",
-    ]);
-    assert_eq!(code, 0);
+    let doc = band_doc("0.68", "0.69", &[]);
     let traced = doc["traced"].as_array().unwrap();
     assert_eq!(traced.len(), 1, "{doc}");
     let t = &traced[0];
