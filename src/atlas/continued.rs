@@ -19,10 +19,10 @@ pub(super) struct Branches(Vec<(f64, BranchEnd)>);
 
 impl Branches {
     /// The solved `non_unique`/`unique` ends of `columns`.
-    pub(super) fn of(columns: &[Column]) -> Branches {
+    pub(super) fn of<'a>(columns: impl IntoIterator<Item = &'a Column>) -> Branches {
         Branches(
             columns
-                .iter()
+                .into_iter()
                 .flat_map(|c| &c.boundaries)
                 .filter(|p| p.between == [Kind::NonUnique, Kind::Unique])
                 .filter_map(|p| p.end.clone()?.ok().map(|e| (p.alpha, e)))

@@ -58,8 +58,8 @@ pub struct Atlas {
     /// boundary points.
     pub top: Option<BandTop>,
     /// One per column: the `non_unique`/`unique` boundary traced by continuation towards
-    /// the next column (`None`: not both columns hold exactly one solved such point, with
-    /// the same kinds in the same order).
+    /// the next column, or to a tip of the band on the μ_ms curve between them (`None`:
+    /// neither).
     pub traced: Vec<Option<Traced>>,
 }
 
@@ -88,12 +88,12 @@ pub fn atlas(
     })
     .into_iter()
     .collect::<Result<Vec<Column>, InputError>>()?;
-    let traced = traced::trace(rect, &columns, settings, threads)?;
+    let tips = tips::tips(rect, &columns, settings)?;
+    let traced = traced::trace(rect, &columns, &tips, settings, threads)?;
     let top = top::band_top(rect, &columns, settings)?;
     let regions = regions::regions(&columns, &traced, top.as_ref().map(|t| [t.alpha, t.mu]));
     let with_ms: Vec<&Column> = columns.iter().filter(|c| c.mu_ms.is_some()).collect();
     let curve = regions::mu_ms_curve(&with_ms);
-    let tips = tips::tips(rect, &columns, settings)?;
     Ok(Atlas {
         rectangle: *rect,
         columns,

@@ -47,21 +47,25 @@ pub(super) fn regions(
         while j + 1 < cols.len() && signature(cols[j + 1]) == signature(cols[i]) {
             j += 1;
         }
-        let left = if i > 0 {
-            0.5 * (cols[i - 1].alpha + cols[i].alpha)
-        } else {
-            cols[i].alpha
+        // the groups meet in the middle of the strip between them, or at a tip of the
+        // band traced there
+        let tip_of = |k: usize| traced[k].and_then(|t| t.tip.map(|p| (t, p)));
+        let (before, left) = match i.checked_sub(1) {
+            Some(k) => tip_of(k).map_or((None, 0.5 * (cols[k].alpha + cols[i].alpha)), |(t, p)| {
+                (Some(t), p[0])
+            }),
+            None => (None, cols[i].alpha),
         };
-        let right = if j + 1 < cols.len() {
-            0.5 * (cols[j].alpha + cols[j + 1].alpha)
-        } else {
-            cols[j].alpha
+        let right = match tip_of(j) {
+            _ if j + 1 == cols.len() => cols[j].alpha,
+            Some((_, p)) => p[0],
+            None => 0.5 * (cols[j].alpha + cols[j + 1].alpha),
         };
         for (r, run) in cols[i].runs.iter().enumerate() {
             let Some(kind) = run.0 else {
                 continue; // not decided: left out of every region
             };
-            let group = (&cols[i..=j], &traced[i..=j]);
+            let group = (&cols[i..=j], &traced[i..=j], before);
             let kind_of = |k: usize| cols[i].runs.get(k).and_then(|r| r.0);
             // the top of the band on the edge between non_unique (below) and unique
             let band = |below: usize| {
@@ -108,26 +112,28 @@ pub(super) fn mu_ms_curve(cols: &[&Column]) -> Vec<[f64; 2]> {
 }
 
 /// The curve's points from α = `left` to `right`, ends included (a strip's middle is one of
-/// them when the steps per strip are even; else the nearest point holds to it).
+/// them when the steps per strip are even; an end between two points, such as a tip, lies
+/// on the chord between them).
 fn on_curve(curve: &[[f64; 2]], left: f64, right: f64) -> Polygon {
     let inner: Vec<[f64; 2]> = curve
         .iter()
         .filter(|q| q[0] >= left - SAME_ALPHA && q[0] <= right + SAME_ALPHA)
         .copied()
         .collect();
-    let (first, last) = (inner[0], inner[inner.len() - 1]);
-    let mut p = vec![[left, first[1]]];
+    let mut p = vec![[left, interpolate(curve, left)]];
     p.extend(inner);
-    p.push([right, last[1]]);
+    p.push([right, interpolate(curve, right)]);
     p.dedup_by(|a, b| (a[0] - b[0]).abs() <= SAME_ALPHA && a[1] == b[1]);
     p
 }
 
 /// One edge of a group's run, left to right: `mu` at each column (with the points traced
 /// from it to the next column where the edge is the boundary they trace), and out to `left`
-/// and `right` at the same μ/μ_ms as at the nearest column.
+/// and `right` at the same μ/μ_ms as at the nearest column, or where the edge is the
+/// boundary traced to a tip of the band (`before` the group, or from its last column),
+/// through the traced points to the tip.
 fn edge(
-    (group, traced): (&[&Column], &[Option<&Traced>]),
+    (group, traced, before): (&[&Column], &[Option<&Traced>], Option<&Traced>),
     (left, right): (f64, f64),
     curve: &[[f64; 2]],
     mu: impl Fn(&Column) -> f64,
@@ -135,7 +141,16 @@ fn edge(
     let held =
         |c: &Column, a: f64| mu(c) / c.mu_ms.expect("columns with mu_ms") * interpolate(curve, a);
     let (first, last) = (group[0], group[group.len() - 1]);
-    let mut p = vec![[left, held(first, left)]];
+    let points = |t: &Traced| {
+        t.points
+            .iter()
+            .map(|q| [q.alpha, q.end.mu])
+            .collect::<Vec<_>>()
+    };
+    let mut p = match before.and_then(|t| Some((t, t.tip?))) {
+        Some((t, tip)) if t.to_mu == mu(first) => [vec![tip], points(t)].concat(),
+        _ => vec![[left, held(first, left)]],
+    };
     for (k, c) in group.iter().enumerate() {
         p.push([c.alpha, mu(c)]);
         // the boundary traced from this column's point to the next one's
@@ -151,7 +166,10 @@ fn edge(
                 .map(|q| [q.alpha, q.end.mu]),
         );
     }
-    p.push([right, held(last, right)]);
+    match traced[group.len() - 1].and_then(|t| Some((t, t.tip?))) {
+        Some((t, tip)) if t.from_mu == mu(last) => p.extend(points(t).into_iter().chain([tip])),
+        _ => p.push([right, held(last, right)]),
+    }
     p.dedup();
     p
 }

@@ -9,6 +9,7 @@ use super::certified::states_kind;
 use super::classify::Kind;
 use super::column::{Column, Rectangle};
 use super::continued::{Branches, BEYOND};
+use super::tips::Tip;
 use crate::arch::{Arch, InputError};
 use crate::limit_states::BranchEnd;
 use crate::settings::Settings;
@@ -33,22 +34,31 @@ pub struct TracedPoint {
     pub certified: Option<Result<bool, String>>,
 }
 
-/// The boundary traced from a column's `non_unique`/`unique` point to the next column's.
+/// The boundary traced from a column's `non_unique`/`unique` point to the next column's, or
+/// between a column's point and a tip of the band on the μ_ms curve inside the strip.
 #[derive(Debug, Clone)]
 pub struct Traced {
-    /// The μ of the column's boundary point (the strip's left end).
+    /// The μ of the traced curve's left end: the column's boundary point, or μ_ms at a tip.
     pub from_mu: f64,
-    /// The μ of the next column's boundary point (the strip's right end).
+    /// The μ of its right end: the next column's boundary point, or μ_ms at a tip.
     pub to_mu: f64,
-    /// The points inside the strip, ascending in α (an opening where the continuation is
-    /// not accepted has none).
+    /// The points inside, ascending in α (an opening where the continuation is not
+    /// accepted has none).
     pub points: Vec<TracedPoint>,
+    /// Where the band meets the μ_ms curve inside the strip, (α, μ_ms) ([`super::Tip`]):
+    /// the curve's left end (the band lies to its right) or its right end (to its left).
+    pub tip: Option<[f64; 2]>,
 }
 
 impl Traced {
     /// The largest departure of the points from the straight segment between the strip's
     /// ends, relative to μ, and the opening where it lies (`None`: no points).
     pub fn chord_departure(&self, (a0, a1): (f64, f64)) -> Option<(f64, f64)> {
+        let (a0, a1) = match self.tip {
+            Some(t) if t[1] == self.from_mu => (t[0], a1),
+            Some(t) => (a0, t[0]),
+            None => (a0, a1),
+        };
         self.points
             .iter()
             .map(|p| {
@@ -72,12 +82,15 @@ fn the_end(c: &Column) -> Option<&BranchEnd> {
     }
 }
 
-/// The traced boundary of every strip (one per column: towards the next; `None` where the
-/// two columns do not both hold exactly one solved `non_unique`/`unique` point with the same
-/// kinds in the same order), strips on `threads` threads.
+/// The traced boundary of every strip (one per column: towards the next), strips on
+/// `threads` threads: between two columns that both hold exactly one solved
+/// `non_unique`/`unique` point with the same kinds in the same order, or from the one
+/// column of the strip that holds one to a tip of the band on the μ_ms curve between them
+/// (`tips`); `None` elsewhere.
 pub(super) fn trace(
     rect: &Rectangle,
     columns: &[Column],
+    tips: &[Tip],
     settings: &Settings,
     threads: usize,
 ) -> Result<Vec<Option<Traced>>, InputError> {
@@ -85,26 +98,49 @@ pub(super) fn trace(
     let strips: Vec<usize> = (0..columns.len()).collect();
     threads::map(&strips, threads, |_, &k| {
         let (c, d) = (&columns[k], columns.get(k + 1)?);
-        let (e0, e1) = (the_end(c)?, the_end(d)?);
-        if kinds(c) != kinds(d) {
-            return None;
-        }
-        Some(strip(rect, &columns[k..=k + 1], (e0.mu, e1.mu), settings))
+        let inside = |t: &&Tip| t.alpha.0 > c.alpha && t.alpha.1 < d.alpha;
+        let tip = |between: [Kind; 2]| tips.iter().filter(inside).find(|t| t.between == between);
+        let at_tip = |t: &Tip| [0.5 * (t.alpha.0 + t.alpha.1), t.mu_ms];
+        let (span, ends) = match (the_end(c), the_end(d)) {
+            (Some(e0), Some(e1)) if kinds(c) == kinds(d) => ((c.alpha, d.alpha), (e0.mu, e1.mu)),
+            // the band ends on the μ_ms curve inside the strip: from the column to the tip
+            (Some(e0), None) => {
+                let t = at_tip(tip([Kind::NonUnique, Kind::Unique])?);
+                return Some(
+                    strip(rect, &[c], ((c.alpha, t[0]), (e0.mu, t[1])), settings)
+                        .map(|s| Traced { tip: Some(t), ..s }),
+                );
+            }
+            (None, Some(e1)) => {
+                let t = at_tip(tip([Kind::Unique, Kind::NonUnique])?);
+                return Some(
+                    strip(rect, &[d], ((d.alpha, t[0]), (e1.mu, t[1])), settings).map(|s| Traced {
+                        from_mu: s.to_mu,
+                        to_mu: s.from_mu,
+                        points: s.points.into_iter().rev().collect(),
+                        tip: Some(t),
+                    }),
+                );
+            }
+            _ => return None,
+        };
+        Some(strip(rect, &[c, d], (span, ends), settings))
     })
     .into_iter()
     .map(Option::transpose)
     .collect()
 }
 
-/// The points inside the strip between `pair` (two columns), from the left.
+/// The points at the openings inside `span`, traced from its first end (`from`: the columns
+/// whose ends are continued), in that order; `from_mu`/`to_mu` the curve's μ at the span's
+/// first and second end.
 fn strip(
     rect: &Rectangle,
-    pair: &[Column],
-    (from_mu, to_mu): (f64, f64),
+    from: &[&Column],
+    ((a0, a1), (from_mu, to_mu)): ((f64, f64), (f64, f64)),
     settings: &Settings,
 ) -> Result<Traced, InputError> {
-    let (a0, a1) = (pair[0].alpha, pair[1].alpha);
-    let mut branches = Branches::of(pair);
+    let mut branches = Branches::of(from.iter().copied());
     let mut points = Vec::new();
     for i in 1..TRACE_STEPS {
         let alpha = a0 + (a1 - a0) * i as f64 / TRACE_STEPS as f64;
@@ -123,6 +159,7 @@ fn strip(
         from_mu,
         to_mu,
         points,
+        tip: None,
     })
 }
 

@@ -913,3 +913,51 @@ fn the_boundary_is_traced_between_columns() {
         assert_eq!(kind(0.685, mu), Some(want), "mu = {mu}");
     }
 }
+
+/// Where the band ends on the μ_ms curve between two columns, its boundary is traced from
+/// the column to the tip, and the two groups of columns meet at the tip (not in the middle
+/// of the strip): at α = 0.9155, beyond the middle of the strip 0.91–0.92, the arch is
+/// still non-unique just above μ_ms (the tip lies at α ≈ 0.91636), and the polygons say so.
+#[test]
+fn the_band_is_traced_to_its_tip() {
+    let (doc, code) = json_of(&[
+        "atlas",
+        "--alpha-min",
+        "0.91",
+        "--alpha-max",
+        "0.92",
+        "--columns",
+        "2",
+        "--mu-max-factor",
+        "1.2",
+        "--samples",
+        "12",
+    ]);
+    assert_eq!(code, 0);
+    let traced = doc["traced"].as_array().unwrap();
+    assert_eq!(traced.len(), 1, "{doc}");
+    let tip = traced[0]["tip"].as_array().unwrap();
+    let tip_alpha = tip[0].as_f64().unwrap();
+    assert!(tip_alpha > 0.916 && tip_alpha < 0.9165, "{tip:?}");
+    let points = traced[0]["points"].as_array().unwrap();
+    assert_eq!(points.len(), arch_enum::atlas::TRACE_STEPS - 1);
+    for p in points {
+        let (alpha, mu) = (p["alpha"].as_f64().unwrap(), p["mu"].as_f64().unwrap());
+        let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
+        assert!(alpha > 0.91 && alpha < tip_alpha, "{p}");
+        assert_eq!(
+            solve_kind(&arch, mu * (1.0 - 1e-6)),
+            Some("non_unique"),
+            "{p}"
+        );
+        assert_eq!(solve_kind(&arch, mu * (1.0 + 1e-8)), Some("unique"), "{p}");
+    }
+    let alpha = 0.9155;
+    let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
+    let ms = least_friction(&arch, &Settings::default())
+        .unwrap()
+        .unwrap();
+    let mu = ms * (1.0 + 1e-4);
+    assert_eq!(solve_kind(&arch, mu), Some("non_unique"));
+    assert_eq!(kinds_at(&regions_of(&doc), alpha, mu), vec!["non_unique"]);
+}

@@ -175,9 +175,13 @@ struct TracedJson {
     /// The strip: the two columns' openings.
     alpha_from: f64,
     alpha_to: f64,
-    /// The columns' boundary points' μ.
+    /// The μ of the curve's ends: the columns' boundary points, or μ_ms at a tip.
     mu_from: f64,
     mu_to: f64,
+    /// Where the band meets the μ_ms curve inside the strip, [alpha, mu_ms]: the curve runs
+    /// from a column's point to this tip (or from it to the next column's point).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    tip: Option<[f64; 2]>,
     /// The largest departure of the points from the straight segment between the
     /// columns' points, relative to μ (null: no points).
     chord_departure: Option<f64>,
@@ -293,6 +297,7 @@ fn traced(a: &Atlas) -> Vec<TracedJson> {
                 alpha_to: d.alpha,
                 mu_from: t.from_mu,
                 mu_to: t.to_mu,
+                tip: t.tip,
                 chord_departure: t.chord_departure((c.alpha, d.alpha)).map(|d| d.0),
                 points: t
                     .points
