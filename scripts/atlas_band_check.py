@@ -8,11 +8,18 @@ for being near a boundary). Prints each disagreement and the counts.
     target/release/arch-enum atlas --alpha-min 0.55 --alpha-max 1.0 --columns 46 \\
         --mu-max-factor 1.2 --json > band.json
     python3 scripts/atlas_band_check.py target/release/arch-enum 2000 band.json [other.json ...]
+
+`--box A0 A1 D0 D1` draws from another box (alpha in [A0, A1], d in [D0, D1]).
 """
 import json, random, subprocess, sys
 
-BIN, WANT, paths = sys.argv[1], int(sys.argv[2]), sys.argv[3:]
+args = sys.argv[1:]
 A0, A1, D0, D1 = 0.6, 0.93, 1e-3, 0.1
+if '--box' in args:  # --box A0 A1 D0 D1: another box of alpha and d
+    k = args.index('--box')
+    A0, A1, D0, D1 = map(float, args[k + 1:k + 5])
+    del args[k:k + 5]
+BIN, WANT, paths = args[0], int(args[1]), args[2:]
 docs = [[(r['kind'], r['polygon']) for r in json.load(open(p))['regions']] for p in paths]
 
 

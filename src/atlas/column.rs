@@ -298,21 +298,7 @@ fn certify_column(arch: &Arch, col: &mut Column, settings: &Settings) {
         ));
     }
     for p in &mut col.boundaries {
-        let (lo, hi) = p.certified_bracket();
-        // the followed states (or the branch's last one, at its end) belong to the
-        // non-unique end
-        let last: Vec<LimitState> = match &p.end {
-            Some(Ok(e)) => vec![e.state.clone()],
-            _ => p.followed.clone(),
-        };
-        let (f_lo, f_hi): (&[LimitState], &[LimitState]) = match p.between[0] {
-            Kind::NonUnique => (&last, &[]),
-            _ => (&[], &last),
-        };
-        p.certified = Some(both(
-            holds_with(lo, p.between[0], f_lo),
-            holds_with(hi, p.between[1], f_hi),
-        ));
+        p.certified = Some(certify_point(arch, p, settings));
     }
     for &(kind, from, to) in &col.runs {
         let Some(kind) = kind else { continue };
@@ -328,13 +314,35 @@ fn certify_column(arch: &Arch, col: &mut Column, settings: &Settings) {
     }
 }
 
+/// Verified certificates at the two μ of `p`'s certified bracket state its two kinds (`Ok`,
+/// true where the verifier proved both lists complete), or why not.
+pub(super) fn certify_point(
+    arch: &Arch,
+    p: &BoundaryPoint,
+    settings: &Settings,
+) -> Result<bool, String> {
+    let (lo, hi) = p.certified_bracket();
+    // the followed states (or the branch's last one, at its end) belong to the non-unique end
+    let last: Vec<LimitState> = match &p.end {
+        Some(Ok(e)) => vec![e.state.clone()],
+        _ => p.followed.clone(),
+    };
+    let (f_lo, f_hi): (&[LimitState], &[LimitState]) = match p.between[0] {
+        Kind::NonUnique => (&last, &[]),
+        _ => (&[], &last),
+    };
+    let a = states_kind(arch, lo, p.between[0], f_lo, settings)?;
+    let b = states_kind(arch, hi, p.between[1], f_hi, settings)?;
+    Ok(a && b)
+}
+
 /// Bisects [lo, hi] between kinds `ka` (at lo) and `kb` (at hi) down to neighbouring floats;
 /// a third kind met in between splits the bracket in two. Between `non_unique` and `unique`
 /// on a continuous arch the non-unique end's limit states above η_s are followed along (Newton on each one's
 /// pattern, [`follow`]): a midpoint the search calls unique where one of them still is a
 /// limit state above η_s is non-unique (the discretised search lost the branch before its
 /// end), so the point is where the branches end, not where the search loses them.
-fn locate(
+pub(super) fn locate(
     arch: &Arch,
     alpha: f64,
     (mut lo, ka): (f64, Kind),

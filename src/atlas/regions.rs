@@ -141,12 +141,7 @@ fn edge(
     let held =
         |c: &Column, a: f64| mu(c) / c.mu_ms.expect("columns with mu_ms") * interpolate(curve, a);
     let (first, last) = (group[0], group[group.len() - 1]);
-    let points = |t: &Traced| {
-        t.points
-            .iter()
-            .map(|q| [q.alpha, q.end.mu])
-            .collect::<Vec<_>>()
-    };
+    let points = path;
     let mut p = match before.and_then(|t| Some((t, t.tip?))) {
         Some((t, tip)) if t.to_mu == mu(first) => [vec![tip], points(t)].concat(),
         _ => vec![[left, held(first, left)]],
@@ -159,18 +154,41 @@ fn edge(
                 .get(k + 1)
                 .is_some_and(|n| t.from_mu == mu(c) && t.to_mu == mu(n))
         });
-        p.extend(
-            traced
-                .iter()
-                .flat_map(|t| &t.points)
-                .map(|q| [q.alpha, q.end.mu]),
-        );
+        p.extend(traced.into_iter().flat_map(path));
     }
     match traced[group.len() - 1].and_then(|t| Some((t, t.tip?))) {
         Some((t, tip)) if t.from_mu == mu(last) => p.extend(points(t).into_iter().chain([tip])),
         _ => p.push([right, held(last, right)]),
     }
     p.dedup();
+    p
+}
+
+/// The traced boundary's path, left to right: through each point's end, and where a run of
+/// consecutive points has a notch below its end, first along the lower ends up to the
+/// run's last point, back along the births, and on along the upper ends from the run's
+/// first point (so the notch is a tongue of `unique` reaching into the band).
+fn path(t: &Traced) -> Polygon {
+    let at = |q: &super::traced::TracedPoint| [q.alpha, q.end.mu];
+    let first = t.points.iter().position(|q| q.notch.is_some());
+    let Some(f) = first else {
+        return t.points.iter().map(at).collect();
+    };
+    let l = f + t.points[f..]
+        .iter()
+        .take_while(|q| q.notch.is_some())
+        .count()
+        - 1;
+    let notch = |q: &super::traced::TracedPoint| q.notch.clone().expect("a run of notches");
+    let mut p: Vec<[f64; 2]> = t.points[..f].iter().map(at).collect();
+    p.extend(t.points[f..=l].iter().map(|q| [q.alpha, notch(q).below.mu]));
+    p.extend(
+        t.points[f..=l]
+            .iter()
+            .rev()
+            .map(|q| [q.alpha, notch(q).birth.mu()]),
+    );
+    p.extend(t.points[f..].iter().map(at));
     p
 }
 

@@ -6,8 +6,9 @@
 //! through exact points, not the chord between the columns.
 
 use super::certified::states_kind;
+use super::classify::classify;
 use super::classify::Kind;
-use super::column::{Column, Rectangle};
+use super::column::{certify_point, locate, BoundaryPoint, Column, Rectangle};
 use super::continued::{Branches, BEYOND};
 use super::tips::Tip;
 use crate::arch::{Arch, InputError};
@@ -30,9 +31,29 @@ pub struct TracedPoint {
     pub end: BranchEnd,
     /// With [`Rectangle::certify`]: verified certificates at the end (listing its last
     /// limit state) and [`BEYOND`] it state `non_unique` and `unique` (`Ok`, true where the
-    /// verifier proved both lists complete), or why not.
+    /// verifier proved both lists complete), or why not; where there is a notch, at its
+    /// lower end and across its birth too.
     pub certified: Option<Result<bool, String>>,
+    /// A notch of uniqueness below the end: another branch ends below the birth of the
+    /// end's branch.
+    pub notch: Option<Notch>,
 }
+
+/// A notch of uniqueness inside the band at one opening: from the end of a lower branch
+/// (`non_unique` below it, `unique` just beyond it) up to where the upper branch is born
+/// (`unique` below, `non_unique` above).
+#[derive(Debug, Clone)]
+pub struct Notch {
+    /// The lower branch's end, solved from its defining condition.
+    pub below: BranchEnd,
+    /// The birth of the upper branch, bisected between `unique` and `non_unique` (as a
+    /// column's boundary point is).
+    pub birth: BoundaryPoint,
+}
+
+/// The upper branch is looked for this far (relative) below its end when a notch is
+/// located.
+const NOTCH_INSIDE: f64 = 1e-6;
 
 /// The boundary traced from a column's `non_unique`/`unique` point to the next column's, or
 /// between a column's point and a tip of the band on the μ_ms curve inside the strip.
@@ -131,8 +152,8 @@ pub(super) fn trace(
     .collect()
 }
 
-/// The points at the openings inside `span`, traced from its first end (`from`: the columns
-/// whose ends are continued), in that order; `from_mu`/`to_mu` the curve's μ at the span's
+/// The points at the openings inside `span`, in its order (`from`: the columns whose ends
+/// are continued: the span's two ends, or its first end only); `from_mu`/`to_mu` the curve's μ at the span's
 /// first and second end.
 fn strip(
     rect: &Rectangle,
@@ -142,24 +163,82 @@ fn strip(
 ) -> Result<Traced, InputError> {
     let mut branches = Branches::of(from.iter().copied());
     let mut points = Vec::new();
-    for i in 1..TRACE_STEPS {
+    // between two columns from both ends inwards, so that each column's branches move by
+    // short steps; from one column outwards in order
+    let both = from.len() == 2;
+    let order = (1..TRACE_STEPS).map(|i| match i % 2 {
+        _ if !both => i,
+        1 => (i + 1) / 2,
+        _ => TRACE_STEPS - i / 2,
+    });
+    for i in order {
         let alpha = a0 + (a1 - a0) * i as f64 / TRACE_STEPS as f64;
-        if let Some((end, mu_ms)) = branches.at(rect, alpha, settings)? {
+        if let Some((mut ends, mu_ms)) = branches.all_at(rect, alpha, true, settings)? {
             let arch = rect.arch(alpha)?;
-            let certified = rect.certify.then(|| certify(&arch, &end, settings));
+            let end = ends.pop().expect("the last end stands");
+            let notch = match ends.pop() {
+                Some(below) => notch(&arch, alpha, below, &end, settings)?,
+                None => None,
+            };
+            let certified = rect.certify.then(|| {
+                let at_end = certify(&arch, &end, settings)?;
+                match &notch {
+                    Some(n) => Ok(at_end
+                        && certify(&arch, &n.below, settings)?
+                        && certify_point(&arch, &n.birth, settings)?),
+                    None => Ok(at_end),
+                }
+            });
             points.push(TracedPoint {
                 alpha,
                 mu_ms,
                 end,
                 certified,
+                notch,
             });
         }
+    }
+    if both {
+        points.sort_by(|p: &TracedPoint, q| p.alpha.total_cmp(&q.alpha));
     }
     Ok(Traced {
         from_mu,
         to_mu,
         points,
         tip: None,
+    })
+}
+
+/// The notch between the end `below` (the arch unique just beyond it) and the upper
+/// branch's end `end`: the upper branch's birth located between them ([`locate`]) where
+/// the arch is `non_unique` just below `end`; `None` where not, or where the bisection
+/// meets a third kind.
+fn notch(
+    arch: &Arch,
+    alpha: f64,
+    below: BranchEnd,
+    end: &BranchEnd,
+    settings: &Settings,
+) -> Result<Option<Notch>, InputError> {
+    let (lo, hi) = (below.mu * (1.0 + BEYOND), end.mu * (1.0 - NOTCH_INSIDE));
+    if hi <= lo || !matches!(classify(arch, hi, settings)?, Ok((Kind::NonUnique, _))) {
+        return Ok(None);
+    }
+    let mut out = Vec::new();
+    locate(
+        arch,
+        alpha,
+        (lo, Kind::Unique),
+        (hi, Kind::NonUnique),
+        settings,
+        &mut out,
+        0,
+    )?;
+    Ok(match <[BoundaryPoint; 1]>::try_from(out) {
+        Ok([birth]) if birth.between == [Kind::Unique, Kind::NonUnique] => {
+            Some(Notch { below, birth })
+        }
+        _ => None,
     })
 }
 

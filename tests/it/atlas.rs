@@ -873,7 +873,8 @@ fn a_voussoir_band_has_a_top_of_bisected_points() {
 /// is `non_unique` by `solve` and by the polygons (the chord alone put it in `unique`).
 /// Inside the strip `solve` also shows a notch of uniqueness (docs/uniqueness.md): at
 /// α = 0.685 the first branch ends near μ = 1.0156 and the second is born at the corner of
-/// η*(μ), μ = 1.02096.
+/// η*(μ), μ = 1.02096. The traced points locate it (`notch`: the lower end and the birth,
+/// each checked by the search on both sides) and the polygons hold it.
 #[test]
 fn the_boundary_is_traced_between_columns() {
     let doc = band_doc("0.68", "0.69", &[]);
@@ -888,11 +889,23 @@ fn the_boundary_is_traced_between_columns() {
             mu,
         )
     };
+    let mut notches = 0;
     for p in points {
         let (alpha, mu) = (p["alpha"].as_f64().unwrap(), p["mu"].as_f64().unwrap());
         assert_eq!(kind(alpha, mu * (1.0 - 1e-6)), Some("non_unique"), "{p}");
         assert_eq!(kind(alpha, mu * (1.0 + 1e-8)), Some("unique"), "{p}");
+        let Some(n) = p.get("notch") else { continue };
+        notches += 1;
+        let end = n["mu_end"].as_f64().unwrap();
+        let birth = n["birth_bracket"].as_array().unwrap();
+        let (b0, b1) = (birth[0].as_f64().unwrap(), birth[1].as_f64().unwrap());
+        assert!(end < b0 && b1 < mu, "{p}");
+        assert_eq!(kind(alpha, end * (1.0 - 1e-6)), Some("non_unique"), "{p}");
+        assert_eq!(kind(alpha, end * (1.0 + 1e-8)), Some("unique"), "{p}");
+        assert_eq!(kind(alpha, b0), Some("unique"), "{p}");
+        assert_eq!(kind(alpha, b1), Some("non_unique"), "{p}");
     }
+    assert!(notches >= 3, "{notches} notches: {t}");
     // the point at α = 0.68625 (the fifth of seven) and the chord there
     let p = &points[4];
     let alpha = p["alpha"].as_f64().unwrap();
@@ -904,13 +917,18 @@ fn the_boundary_is_traced_between_columns() {
     let mu = 0.5 * (chord + curve);
     assert_eq!(kind(alpha, mu), Some("non_unique"));
     assert_eq!(kinds_at(&regions_of(&doc), alpha, mu), vec!["non_unique"]);
-    // the notch: the first branch, none, the second branch
+    // the notch: the first branch, none, the second branch, by the search and the polygons
     for (mu, want) in [
         (1.015, "non_unique"),
         (1.018, "unique"),
         (1.0225, "non_unique"),
     ] {
         assert_eq!(kind(0.685, mu), Some(want), "mu = {mu}");
+        assert_eq!(
+            kinds_at(&regions_of(&doc), 0.685, mu),
+            vec![want],
+            "mu = {mu}"
+        );
     }
 }
 

@@ -166,6 +166,24 @@ struct TracedPointJson {
     /// With `--certify`, why the point is not certified.
     #[serde(skip_serializing_if = "Option::is_none")]
     not_certified: Option<String>,
+    /// A notch of uniqueness below `mu`: a lower branch ends (`non_unique` below, `unique`
+    /// above) before the upper branch is born (`unique` below, `non_unique` above).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    notch: Option<NotchJson>,
+}
+
+#[derive(Debug, Serialize, JsonSchema)]
+struct NotchJson {
+    /// Where the lower branch ends, solved from its defining condition.
+    mu_end: f64,
+    /// η of its last limit state.
+    eta_end: f64,
+    /// What ends it.
+    condition: String,
+    /// The birth of the upper branch: its μ, bisected (solved where `birth_exact`).
+    mu_birth: f64,
+    birth_bracket: [f64; 2],
+    birth_exact: bool,
 }
 
 /// The `non_unique`/`unique` boundary between two columns, traced by continuation in α.
@@ -311,6 +329,14 @@ fn traced(a: &Atlas) -> Vec<TracedJson> {
                         residual: p.end.residual,
                         certified: matches!(p.certified, Some(Ok(_))),
                         not_certified: p.certified.clone().and_then(Result::err),
+                        notch: p.notch.as_ref().map(|n| NotchJson {
+                            mu_end: n.below.mu,
+                            eta_end: n.below.state.t,
+                            condition: n.below.condition.describe(),
+                            mu_birth: n.birth.mu(),
+                            birth_bracket: [n.birth.bracket.0, n.birth.bracket.1],
+                            birth_exact: n.birth.exact(),
+                        }),
                     })
                     .collect(),
             })

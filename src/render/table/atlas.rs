@@ -193,14 +193,24 @@ fn traced_line(s: &mut String, a: &Atlas) {
         return;
     }
     let points: usize = strips.iter().map(|(t, _)| t.points.len()).sum();
+    let notches = strips
+        .iter()
+        .flat_map(|(t, _)| &t.points)
+        .filter(|p| p.notch.is_some())
+        .count();
     let worst = strips
         .iter()
         .filter_map(|(t, span)| t.chord_departure(*span))
         .max_by(|p, q| p.0.total_cmp(&q.0));
     let _ = writeln!(
         s,
-        "  traced between columns (non_unique / unique, by continuation in alpha): {points} point(s) in {} strip(s){}",
+        "  traced between columns (non_unique / unique, by continuation in alpha): {points} point(s) in {} strip(s){}{}",
         strips.len(),
+        if notches > 0 {
+            format!(", {notches} with a notch of uniqueness below (a branch ends before the next is born)")
+        } else {
+            String::new()
+        },
         worst.map_or(String::new(), |(d, alpha)| format!(
             "; the straight segment between two columns departs from them by up to {} of mu (alpha = {})",
             sig(d, 3),
