@@ -168,7 +168,7 @@ fn strip(
     let both = from.len() == 2;
     let order = (1..TRACE_STEPS).map(|i| match i % 2 {
         _ if !both => i,
-        1 => (i + 1) / 2,
+        1 => i.div_ceil(2),
         _ => TRACE_STEPS - i / 2,
     });
     for i in order {
