@@ -30,7 +30,7 @@ pub struct TracedPoint {
     /// The branch's end there, solved from its defining condition.
     pub end: BranchEnd,
     /// With [`Rectangle::certify`]: verified certificates at the end (listing its last
-    /// limit state) and [`BEYOND`] it state `non_unique` and `unique` (`Ok`, true where the
+    /// limit state) and 10⁻⁸ beyond it state `non_unique` and `unique` (`Ok`, true where the
     /// verifier proved both lists complete), or why not; where there is a notch, at its
     /// lower end and across its birth too.
     pub certified: Option<Result<bool, String>>,
