@@ -468,8 +468,8 @@ fn the_load_map_finds_the_reduction_and_agrees_with_the_brute_force() {
 }
 
 /// The atlas document of two columns, α = `alpha_min` and `alpha_max`, 12 samples up to
-/// 1.2 μ_ms, with `extra` flags; each column has one boundary point of the band.
-fn band_doc(alpha_min: &str, alpha_max: &str, extra: &[&str]) -> Value {
+/// 1.2 μ_ms, with `extra` flags; the columns have `points` boundary points of the band.
+fn band_doc(alpha_min: &str, alpha_max: &str, extra: &[&str], points: usize) -> Value {
     let flags = [
         "atlas",
         "--alpha-min",
@@ -485,7 +485,7 @@ fn band_doc(alpha_min: &str, alpha_max: &str, extra: &[&str]) -> Value {
     ];
     let (doc, code) = json_of(&[&flags[..], extra].concat());
     assert_eq!(code, 0);
-    assert_eq!(band_points(&doc).len(), 2, "{doc}");
+    assert_eq!(band_points(&doc).len(), points, "{doc}");
     doc
 }
 
@@ -511,7 +511,7 @@ fn band_points(doc: &Value) -> Vec<&Value> {
 /// branch ends by losing its mechanism (the interior slide's rate reaches 0).
 #[test]
 fn boundary_points_are_where_the_branches_end() {
-    let doc = band_doc("0.65", "0.7", &[]);
+    let doc = band_doc("0.65", "0.7", &[], 2);
     let points = band_points(&doc);
     let settings = Settings::default();
     for p in points {
@@ -581,7 +581,7 @@ fn boundary_points_are_where_the_branches_end() {
 fn boundary_points_are_solved_from_what_ends_the_branch() {
     use crate::continuum_reference::Cont;
     use arch_enum::limit_states::{branch_end, follow, EndCondition};
-    let doc = band_doc("0.65", "0.75", &["--certify"]);
+    let doc = band_doc("0.65", "0.75", &["--certify"], 2);
     let points = band_points(&doc);
     let settings = Settings::default();
     for p in points {
@@ -877,7 +877,7 @@ fn a_voussoir_band_has_a_top_of_bisected_points() {
 /// each checked by the search on both sides) and the polygons hold it.
 #[test]
 fn the_boundary_is_traced_between_columns() {
-    let doc = band_doc("0.68", "0.69", &[]);
+    let doc = band_doc("0.68", "0.69", &[], 2);
     let traced = doc["traced"].as_array().unwrap();
     assert_eq!(traced.len(), 1, "{doc}");
     let t = &traced[0];
@@ -938,20 +938,7 @@ fn the_boundary_is_traced_between_columns() {
 /// still non-unique just above μ_ms (the tip lies at α ≈ 0.91636), and the polygons say so.
 #[test]
 fn the_band_is_traced_to_its_tip() {
-    let (doc, code) = json_of(&[
-        "atlas",
-        "--alpha-min",
-        "0.91",
-        "--alpha-max",
-        "0.92",
-        "--columns",
-        "2",
-        "--mu-max-factor",
-        "1.2",
-        "--samples",
-        "12",
-    ]);
-    assert_eq!(code, 0);
+    let doc = band_doc("0.91", "0.92", &[], 1);
     let traced = doc["traced"].as_array().unwrap();
     assert_eq!(traced.len(), 1, "{doc}");
     let tip = traced[0]["tip"].as_array().unwrap();
