@@ -142,8 +142,8 @@ pub struct Settings {
     /// A discretisation of J pieces misses a continuous arch's limit state where μ lies
     /// within its discretisation error of where the state's branch is born or dies (its
     /// own branch ends a little before or after, by O(1/J²) relative): the coarsest
-    /// discretisation (and a finer one whose list does not settle without it) is therefore
-    /// also searched at μ (1 ∓ `carry_shift` / J²) (the lower shift quartered, at most
+    /// discretisation (and a finer one where its list does not settle without it, or where
+    /// the previous shifted search was narrowed or failed, near μ_ms) is therefore also searched at μ (1 ∓ `carry_shift` / J²) (the lower shift quartered, at most
     /// twice, where that search fails), and every state found there is carried to μ
     /// (Newton on the continuum at μ, then checked there). 0: only at μ. Default 8
     /// (0.35 % at 48 pieces, 0.087 % at 96; on the 22 branch ends of the 46-column atlas

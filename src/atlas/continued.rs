@@ -31,6 +31,17 @@ impl Branches {
         )
     }
 
+    /// Branches of their own, one per end (`(opening, end)`), besides these.
+    pub(super) fn with(mut self, ends: impl IntoIterator<Item = (f64, BranchEnd)>) -> Branches {
+        self.0.extend(ends.into_iter().map(|e| vec![e]));
+        self
+    }
+
+    /// Every end known, with its opening.
+    pub(super) fn into_ends(self) -> Vec<(f64, BranchEnd)> {
+        self.0.into_iter().flatten().collect()
+    }
+
     /// The boundary point at `alpha` by continuation, with μ_ms there: every known branch's
     /// end nearest `alpha` moved there (Newton on its defining condition, [`end_on`]), the
     /// last of them, accepted where it is a limit state above η_s and the search finds the

@@ -11,7 +11,9 @@
 //! joined through their boundaries' points where both columns hold the same kinds in the
 //! same order (the `non_unique`/`unique` boundary traced inside the strip by continuation
 //! in α where both columns solve one, [`Traced`]; other boundaries by straight segments);
-//! elsewhere each column's runs hold up to the middle of the strip. Between
+//! elsewhere each column's runs hold up to the middle of the strip, or up to a tip where
+//! a kind begins or ends on the μ_ms curve inside it ([`tips`]; the `non_unique`/`unique`
+//! boundary is traced from the column to the tip). Between
 //! `non_unique` and `unique` on a continuous arch the non-unique end's branches of limit
 //! states are followed and the point is where the last one ends, solved from the condition
 //! that ends it ([`crate::limit_states::branch_end()`]); other boundary points are brackets
@@ -89,8 +91,9 @@ pub fn atlas(
     .into_iter()
     .collect::<Result<Vec<Column>, InputError>>()?;
     let tips = tips::tips(rect, &columns, settings)?;
-    let traced = traced::trace(rect, &columns, &tips, settings, threads)?;
     let top = top::band_top(rect, &columns, settings)?;
+    let known = top.as_ref().map_or(&[][..], |t| &t.ends[..]);
+    let traced = traced::trace(rect, &columns, (&tips, known), settings, threads)?;
     let regions = regions::regions(&columns, &traced, top.as_ref().map(|t| [t.alpha, t.mu]));
     let with_ms: Vec<&Column> = columns.iter().filter(|c| c.mu_ms.is_some()).collect();
     let curve = regions::mu_ms_curve(&with_ms);

@@ -2,7 +2,8 @@
 //! in the same order are joined run by run (the runs' ends, the located boundaries, joined
 //! through the points traced between the columns where there are some, else by straight
 //! segments); where the kinds of two neighbouring columns differ, each column's
-//! runs hold up to the middle of the strip between them. The lowest run starts on the μ_ms
+//! runs hold up to the middle of the strip between them, or up to the band's tip on the
+//! μ_ms curve where the boundary is traced to one. The lowest run starts on the μ_ms
 //! curve, which the polygons follow through its points between the columns; below it, down
 //! to μ = 0, lies the region without equilibrium.
 
@@ -143,7 +144,10 @@ fn edge(
     let (first, last) = (group[0], group[group.len() - 1]);
     let points = path;
     let mut p = match before.and_then(|t| Some((t, t.tip?))) {
-        Some((t, tip)) if t.to_mu == mu(first) => [vec![tip], points(t)].concat(),
+        // the tip on the μ_ms curve as the lowest run's polygon has it
+        Some((t, tip)) if t.to_mu == mu(first) => {
+            [vec![[tip[0], interpolate(curve, tip[0])]], points(t)].concat()
+        }
         _ => vec![[left, held(first, left)]],
     };
     for (k, c) in group.iter().enumerate() {
@@ -157,47 +161,55 @@ fn edge(
         p.extend(traced.into_iter().flat_map(path));
     }
     match traced[group.len() - 1].and_then(|t| Some((t, t.tip?))) {
-        Some((t, tip)) if t.from_mu == mu(last) => p.extend(points(t).into_iter().chain([tip])),
+        Some((t, tip)) if t.from_mu == mu(last) => p.extend(
+            points(t)
+                .into_iter()
+                .chain([[tip[0], interpolate(curve, tip[0])]]),
+        ),
         _ => p.push([right, held(last, right)]),
     }
     p.dedup();
     p
 }
 
-/// The traced boundary's path, left to right: through each point's end, and where a run of
-/// consecutive points has a notch below its end, first along the lower ends up to the
-/// run's last point, back along the births, and on along the upper ends from the run's
-/// first point (so the notch is a tongue of `unique` reaching into the band).
+/// The traced boundary's path, left to right: through each point's end, and for each run
+/// of consecutive points with a notch below their ends, along the run's lower ends, back
+/// along its births and on along its upper ends (so each notch is a tongue of `unique`
+/// reaching into the band).
 fn path(t: &Traced) -> Polygon {
-    let at = |q: &super::traced::TracedPoint| [q.alpha, q.end.mu];
-    let first = t.points.iter().position(|q| q.notch.is_some());
-    let Some(f) = first else {
-        return t.points.iter().map(at).collect();
-    };
-    let l = f + t.points[f..]
-        .iter()
-        .take_while(|q| q.notch.is_some())
-        .count()
-        - 1;
-    let notch = |q: &super::traced::TracedPoint| q.notch.clone().expect("a run of notches");
-    let mut p: Vec<[f64; 2]> = t.points[..f].iter().map(at).collect();
-    p.extend(t.points[f..=l].iter().map(|q| [q.alpha, notch(q).below.mu]));
-    p.extend(
-        t.points[f..=l]
+    let mut p = Vec::new();
+    let mut k = 0;
+    while k < t.points.len() {
+        let run = t.points[k..]
             .iter()
-            .rev()
-            .map(|q| [q.alpha, notch(q).birth.mu()]),
-    );
-    p.extend(t.points[f..].iter().map(at));
+            .map_while(|q| q.notch.as_ref().map(|n| (q.alpha, n)))
+            .collect::<Vec<_>>();
+        if run.is_empty() {
+            p.push([t.points[k].alpha, t.points[k].end.mu]);
+            k += 1;
+            continue;
+        }
+        p.extend(run.iter().map(|(a, n)| [*a, n.below.mu]));
+        p.extend(run.iter().rev().map(|(a, n)| [*a, n.birth.mu()]));
+        p.extend(
+            t.points[k..k + run.len()]
+                .iter()
+                .map(|q| [q.alpha, q.end.mu]),
+        );
+        k += run.len();
+    }
     p
 }
 
-/// `edge` (ascending in α) with `vertex` inserted in order where it lies strictly inside the
-/// edge's span of α.
+/// `edge` (left to right, turning back in α only along a notch) with `vertex` inserted into
+/// the last of its segments whose span of α holds it strictly (the upper path, where a
+/// notch turns back).
 fn with_vertex(mut edge: Polygon, vertex: Option<[f64; 2]>) -> Polygon {
     if let Some(v) = vertex {
-        let k = edge.partition_point(|q| q[0] < v[0]);
-        if k > 0 && k < edge.len() && edge[k][0] > v[0] {
+        let k = (1..edge.len())
+            .rev()
+            .find(|&k| edge[k - 1][0] < v[0] && v[0] < edge[k][0]);
+        if let Some(k) = k {
             edge.insert(k, v);
         }
     }

@@ -47,6 +47,9 @@ pub struct BandTop {
     pub conditions: (String, String),
     /// Openings evaluated.
     pub evaluations: usize,
+    /// Every branch end the search solved, with its opening (continued, or a column's of
+    /// its own): the traced strips start from them too.
+    pub ends: Vec<(f64, BranchEnd)>,
 }
 
 impl BandTop {
@@ -82,7 +85,7 @@ fn ratio_at(
     alpha: f64,
     top: f64,
     settings: &Settings,
-) -> Result<Value, InputError> {
+) -> Result<(Value, Column), InputError> {
     let sub = Rectangle {
         mu_max_factor: top,
         samples: SAMPLES,
@@ -90,7 +93,7 @@ fn ratio_at(
         ..*rect
     };
     let col = column(&sub, (alpha, None), settings)?;
-    Ok(best(&col, rect.blocks.is_some()))
+    Ok((best(&col, rect.blocks.is_some()), col))
 }
 
 /// The largest μ/μ_ms of a column's solved `non_unique`/`unique` points, with its μ, μ_ms
@@ -147,11 +150,19 @@ pub(super) fn band_top(
         .iter()
         .map(|c| (c.alpha, best(c, rect.blocks.is_some())))
         .collect();
+    let mut ends: Vec<(f64, BranchEnd)> = Vec::new();
     let mut f = |alpha: f64| -> Result<Value, InputError> {
         evaluations += 1;
-        let v = match value_of(branches.at(rect, alpha, settings)?) {
-            Some(v) => Some(v),
-            None => ratio_at(rect, alpha, top, settings)?,
+        let v = match branches.at(rect, alpha, settings)? {
+            Some(e) => {
+                ends.push((alpha, e.0.clone()));
+                value_of(Some(e))
+            }
+            None => {
+                let (v, col) = ratio_at(rect, alpha, top, settings)?;
+                ends.extend(Branches::of([&col]).into_ends());
+                v
+            }
         };
         log.push((alpha, v.clone()));
         Ok(v)
@@ -205,5 +216,6 @@ pub(super) fn band_top(
         ratio,
         conditions: (name(&left), name(&right)),
         evaluations,
+        ends,
     }))
 }

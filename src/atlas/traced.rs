@@ -107,11 +107,13 @@ fn the_end(c: &Column) -> Option<&BranchEnd> {
 /// `threads` threads: between two columns that both hold exactly one solved
 /// `non_unique`/`unique` point with the same kinds in the same order, or from the one
 /// column of the strip that holds one to a tip of the band on the μ_ms curve between them
-/// (`tips`); `None` elsewhere.
+/// (`tips`); `None` elsewhere. The branch ends `known` elsewhere (the top's search) whose
+/// openings lie inside a strip are continued there too: a branch that ends last only
+/// between two columns is found so.
 pub(super) fn trace(
     rect: &Rectangle,
     columns: &[Column],
-    tips: &[Tip],
+    (tips, known): (&[Tip], &[(f64, BranchEnd)]),
     settings: &Settings,
     threads: usize,
 ) -> Result<Vec<Option<Traced>>, InputError> {
@@ -119,7 +121,14 @@ pub(super) fn trace(
     let strips: Vec<usize> = (0..columns.len()).collect();
     threads::map(&strips, threads, |_, &k| {
         let (c, d) = (&columns[k], columns.get(k + 1)?);
-        let inside = |t: &&Tip| t.alpha.0 > c.alpha && t.alpha.1 < d.alpha;
+        let inner: Vec<(f64, BranchEnd)> = known
+            .iter()
+            .filter(|e| e.0 > c.alpha && e.0 < d.alpha)
+            .cloned()
+            .collect();
+        let inside = |t: &&Tip| {
+            t.alpha.0 > c.alpha && t.alpha.1 < d.alpha && t.stopped.is_none() && t.mu_ms.is_finite()
+        };
         let tip = |between: [Kind; 2]| tips.iter().filter(inside).find(|t| t.between == between);
         let at_tip = |t: &Tip| [0.5 * (t.alpha.0 + t.alpha.1), t.mu_ms];
         let (span, ends) = match (the_end(c), the_end(d)) {
@@ -128,14 +137,25 @@ pub(super) fn trace(
             (Some(e0), None) => {
                 let t = at_tip(tip([Kind::NonUnique, Kind::Unique])?);
                 return Some(
-                    strip(rect, &[c], ((c.alpha, t[0]), (e0.mu, t[1])), settings)
-                        .map(|s| Traced { tip: Some(t), ..s }),
+                    strip(
+                        rect,
+                        (&[c], &inner),
+                        ((c.alpha, t[0]), (e0.mu, t[1])),
+                        settings,
+                    )
+                    .map(|s| Traced { tip: Some(t), ..s }),
                 );
             }
             (None, Some(e1)) => {
                 let t = at_tip(tip([Kind::Unique, Kind::NonUnique])?);
                 return Some(
-                    strip(rect, &[d], ((d.alpha, t[0]), (e1.mu, t[1])), settings).map(|s| Traced {
+                    strip(
+                        rect,
+                        (&[d], &inner),
+                        ((d.alpha, t[0]), (e1.mu, t[1])),
+                        settings,
+                    )
+                    .map(|s| Traced {
                         from_mu: s.to_mu,
                         to_mu: s.from_mu,
                         points: s.points.into_iter().rev().collect(),
@@ -145,7 +165,7 @@ pub(super) fn trace(
             }
             _ => return None,
         };
-        Some(strip(rect, &[c, d], (span, ends), settings))
+        Some(strip(rect, (&[c, d], &inner), (span, ends), settings))
     })
     .into_iter()
     .map(Option::transpose)
@@ -157,11 +177,11 @@ pub(super) fn trace(
 /// first and second end.
 fn strip(
     rect: &Rectangle,
-    from: &[&Column],
+    (from, inner): (&[&Column], &[(f64, BranchEnd)]),
     ((a0, a1), (from_mu, to_mu)): ((f64, f64), (f64, f64)),
     settings: &Settings,
 ) -> Result<Traced, InputError> {
-    let mut branches = Branches::of(from.iter().copied());
+    let mut branches = Branches::of(from.iter().copied()).with(inner.iter().cloned());
     let mut points = Vec::new();
     // between two columns from both ends inwards, so that each column's branches move by
     // short steps; from one column outwards in order

@@ -966,3 +966,21 @@ fn the_band_is_traced_to_its_tip() {
     assert_eq!(solve_kind(&arch, mu), Some("non_unique"));
     assert_eq!(kinds_at(&regions_of(&doc), alpha, mu), vec!["non_unique"]);
 }
+
+/// A branch that ends last only between two columns (the extrados hinge's, between 0.65 and
+/// 0.70, left of the top) is continued in the strip from the ends the top's search solved:
+/// the polygons do not take the lower branch's end (a notch's lower edge) for the band's
+/// boundary there.
+#[test]
+fn a_branch_known_only_between_columns_is_traced() {
+    let doc = band_doc("0.65", "0.7", &[], 2);
+    for (alpha, mu) in [(0.6875, 1.026), (0.69375, 1.0395)] {
+        let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
+        assert_eq!(solve_kind(&arch, mu), Some("non_unique"));
+        assert_eq!(
+            kinds_at(&regions_of(&doc), alpha, mu),
+            vec!["non_unique"],
+            "{alpha}"
+        );
+    }
+}

@@ -161,7 +161,8 @@ struct TracedPointJson {
     /// The condition's residual there.
     residual: f64,
     /// Verified certificates at `mu` (the branch's last limit state listed) and at
-    /// mu (1 + 1e-8) state `non_unique` and `unique`.
+    /// mu (1 + 1e-8) state `non_unique` and `unique`; where there is a notch, its lower
+    /// end and its birth's bracket are certified the same way too.
     certified: bool,
     /// With `--certify`, why the point is not certified.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -190,7 +191,7 @@ struct NotchJson {
 #[derive(Debug, Serialize, JsonSchema)]
 struct TracedJson {
     between: [&'static str; 2],
-    /// The strip: the two columns' openings.
+    /// The curve's ends in α: the two columns' openings, or a column's and the tip's.
     alpha_from: f64,
     alpha_to: f64,
     /// The μ of the curve's ends: the columns' boundary points, or μ_ms at a tip.
@@ -200,8 +201,8 @@ struct TracedJson {
     /// from a column's point to this tip (or from it to the next column's point).
     #[serde(skip_serializing_if = "Option::is_none")]
     tip: Option<[f64; 2]>,
-    /// The largest departure of the points from the straight segment between the
-    /// columns' points, relative to μ (null: no points).
+    /// The largest departure of the points from the straight segment between the curve's
+    /// ends, relative to μ (null: no points).
     chord_departure: Option<f64>,
     points: Vec<TracedPointJson>,
 }
@@ -309,10 +310,16 @@ fn traced(a: &Atlas) -> Vec<TracedJson> {
         .zip(&a.traced)
         .filter_map(|((c, d), t)| {
             let t = t.as_ref()?;
+            // a tip strip's curve ends at the tip on one side
+            let (alpha_from, alpha_to) = match t.tip {
+                Some(tip) if t.from_mu == tip[1] => (tip[0], d.alpha),
+                Some(tip) => (c.alpha, tip[0]),
+                None => (c.alpha, d.alpha),
+            };
             Some(TracedJson {
                 between: [Kind::NonUnique.name(), Kind::Unique.name()],
-                alpha_from: c.alpha,
-                alpha_to: d.alpha,
+                alpha_from,
+                alpha_to,
                 mu_from: t.from_mu,
                 mu_to: t.to_mu,
                 tip: t.tip,

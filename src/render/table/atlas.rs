@@ -193,6 +193,7 @@ fn traced_line(s: &mut String, a: &Atlas) {
         return;
     }
     let points: usize = strips.iter().map(|(t, _)| t.points.len()).sum();
+    let with_points = strips.iter().filter(|(t, _)| !t.points.is_empty()).count();
     let notches = strips
         .iter()
         .flat_map(|(t, _)| &t.points)
@@ -204,15 +205,14 @@ fn traced_line(s: &mut String, a: &Atlas) {
         .max_by(|p, q| p.0.total_cmp(&q.0));
     let _ = writeln!(
         s,
-        "  traced between columns (non_unique / unique, by continuation in alpha): {points} point(s) in {} strip(s){}{}",
-        strips.len(),
+        "  traced between columns (non_unique / unique, by continuation in alpha): {points} point(s) in {with_points} strip(s){}{}",
         if notches > 0 {
             format!(", {notches} with a notch of uniqueness below (a branch ends before the next is born)")
         } else {
             String::new()
         },
         worst.map_or(String::new(), |(d, alpha)| format!(
-            "; the straight segment between two columns departs from them by up to {} of mu (alpha = {})",
+            "; the straight segment between a strip's ends (columns or a tip) departs from them by up to {} of mu (alpha = {})",
             sig(d, 3),
             sig(alpha, 6)
         ))
