@@ -5,6 +5,7 @@ use super::certified::states_kind;
 use super::classify::{classify, classify_states, Classified, Kind};
 use crate::arch::{Arch, InputError, JointLayout, WeightModel};
 use crate::friction::friction_limit;
+use crate::limit_curve::pattern_changes;
 use crate::limit_states::{branch_end, follow, lost_at, BranchEnd, LimitState};
 use crate::settings::Settings;
 
@@ -102,6 +103,11 @@ impl Rectangle {
 /// The first sample of a column lies this far above μ_ms (relative): at μ_ms itself every
 /// thickness from η_s up is a limit state (the vertical branch).
 pub const FIRST_OFFSET: f64 = 1e-6;
+
+/// A column samples both sides of each pattern change of η_s(μ) this far from it
+/// (relative): beyond the change's own rounding, close enough that a branch born there is
+/// met (docs/uniqueness.md, the notch of uniqueness).
+pub const CORNER_OFFSET: f64 = 1e-5;
 
 /// μ_ms bracketed by two verified certificates (see [`Column::mu_ms_certified`]).
 #[derive(Debug, Clone, Copy)]
@@ -253,7 +259,7 @@ pub(super) fn column(
     let Some(mu_ms) = col.mu_ms else {
         return Ok(col);
     };
-    for mu in rect.mus(mu_ms) {
+    for mu in sample_mus(rect, &arch, mu_ms, settings) {
         let kind = classify(&arch, mu, settings)?;
         col.samples.push(Sample { mu, kind });
     }
@@ -279,6 +285,26 @@ pub(super) fn column(
         certify_column(&arch, &mut col, settings);
     }
     Ok(col)
+}
+
+/// A column's μ samples, ascending: [`Rectangle::mus`], and both sides of every pattern
+/// change of η_s(μ) in their range (at μ (1 ± [`CORNER_OFFSET`]), located by
+/// [`pattern_changes`]): a branch of limit states born at a corner of η*(μ) can be narrower
+/// than the samples' spacing (the upper branch of a notch of uniqueness), and starts there.
+fn sample_mus(rect: &Rectangle, arch: &Arch, mu_ms: f64, settings: &Settings) -> Vec<f64> {
+    let mut mus = rect.mus(mu_ms);
+    let (lo, hi) = (mus[0], mus[mus.len() - 1]);
+    let n = settings.curve_samples;
+    for c in pattern_changes(arch, (lo, hi), n, settings) {
+        mus.extend(
+            [c.mu * (1.0 - CORNER_OFFSET), c.mu * (1.0 + CORNER_OFFSET)]
+                .into_iter()
+                .filter(|m| *m > lo && *m < hi),
+        );
+    }
+    mus.sort_by(f64::total_cmp);
+    mus.dedup();
+    mus
 }
 
 /// The certificates of a column: both ends of every located bracket, and the middle sample
@@ -542,4 +568,25 @@ fn runs(col: &Column, factor: f64) -> Vec<(Option<Kind>, f64, f64)> {
     }
     out.retain(|r| r.2 > r.1);
     out
+}
+
+/// A column's notch of uniqueness: the band's boundary above it (the μ where the upper
+/// branch ends), and [the lower branch's end, the upper branch's birth].
+pub(super) type ColumnNotch = (f64, [f64; 2]);
+
+/// `c` with a notch of uniqueness folded into the band (a `unique` run between two
+/// `non_unique` runs: the three become one `non_unique` run, as its neighbours without the
+/// notch have it), and the notch, where it has one: so a column whose samples fall in the
+/// notch joins its neighbours, and the notch is a tongue of its edge (the regions' path).
+pub(super) fn folded(c: &Column) -> (Column, Option<ColumnNotch>) {
+    let kinds: Vec<Option<Kind>> = c.runs.iter().map(|r| r.0).collect();
+    let notch = [Kind::NonUnique, Kind::Unique, Kind::NonUnique].map(Some);
+    let Some(k) = kinds.windows(3).position(|w| w == notch) else {
+        return (c.clone(), None);
+    };
+    let (lower, gap, upper) = (c.runs[k], c.runs[k + 1], c.runs[k + 2]);
+    let mut f = c.clone();
+    f.runs
+        .splice(k..k + 3, [(Some(Kind::NonUnique), lower.1, upper.2)]);
+    (f, Some((upper.2, [lower.2, gap.2])))
 }

@@ -58,10 +58,8 @@ impl Branches {
             .and_then(|(mut ends, mu_ms)| Some((ends.pop()?, mu_ms))))
     }
 
-    /// [`Branches::at`], with (`all`) the other moved ends that stand as well (each a limit
-    /// state above η_s with the arch unique just beyond it: a branch that ends below
-    /// another's birth), ascending in μ (the last is [`Branches::at`]'s; the ends of one
-    /// branch continued from two columns counted once).
+    /// [`Branches::at`], with (`all`) the other moved ends that stand as well (ascending in
+    /// μ, [`standing`]); each branch moved is known at `alpha` only where the point stands.
     pub(super) fn all_at(
         &mut self,
         rect: &Rectangle,
@@ -70,52 +68,134 @@ impl Branches {
         settings: &Settings,
     ) -> Result<Option<(Vec<BranchEnd>, f64)>, InputError> {
         let arch = rect.arch(alpha)?;
-        let Some(mu_ms) = crate::friction::friction_limit(&arch, settings)
-            .ok()
-            .flatten()
-        else {
+        let Some(mu_ms) = mu_ms_of(&arch, settings) else {
             return Ok(None);
         };
+        let moved = self.moved(&arch, alpha, settings);
+        let Some(standing) = standing(&arch, moved.iter().flatten(), all, settings)? else {
+            return Ok(None);
+        };
+        self.record(alpha, moved);
+        Ok(Some((standing, mu_ms)))
+    }
+
+    /// Every branch's end nearest `alpha` moved there (Newton on its defining condition,
+    /// [`end_on`]; `None` where it does not converge), in the branches' order.
+    pub(super) fn moved(
+        &self,
+        arch: &Arch,
+        alpha: f64,
+        settings: &Settings,
+    ) -> Vec<Option<BranchEnd>> {
         let nearest = |known: &[(f64, BranchEnd)]| {
             known
                 .iter()
                 .min_by(|p, q| (p.0 - alpha).abs().total_cmp(&(q.0 - alpha).abs()))
                 .map(|k| k.1.clone())
         };
-        let moved: Vec<Option<BranchEnd>> = self
-            .0
+        self.0
             .iter()
-            .map(|known| end_on(&arch, &nearest(known)?, settings).ok())
-            .collect();
-        let mut ends: Vec<&BranchEnd> = moved.iter().flatten().collect();
-        ends.sort_by(|a, b| a.mu.total_cmp(&b.mu));
-        ends.dedup_by(|a, b| {
-            (a.mu - b.mu).abs() <= SAME_END * a.mu
-                && a.condition.describe() == b.condition.describe()
-        });
-        let Some(&last) = ends.last() else {
-            return Ok(None);
-        };
-        if !stands(&arch, last, settings)? {
-            return Ok(None);
+            .map(|known| end_on(arch, &nearest(known)?, settings).ok())
+            .collect()
+    }
+
+    /// [`Branches::moved`], where a branch's Newton does not converge from its nearest
+    /// end, by halving the step in α (at most [`HALVINGS`] times): a sweep across a wide
+    /// strip moves each branch as far as its end stays within Newton's reach.
+    pub(super) fn moved_in_steps(
+        &self,
+        rect: &Rectangle,
+        alpha: f64,
+        settings: &Settings,
+    ) -> Result<Vec<Option<BranchEnd>>, InputError> {
+        let mut out = Vec::new();
+        for known in &self.0 {
+            let nearest = known
+                .iter()
+                .min_by(|p, q| (p.0 - alpha).abs().total_cmp(&(q.0 - alpha).abs()));
+            out.push(match nearest {
+                Some(start) => step(rect, start.clone(), alpha, HALVINGS, settings)?,
+                None => None,
+            });
         }
-        let mut standing = Vec::new();
-        for &e in &ends[..ends.len() - 1] {
-            if all && stands(&arch, e, settings)? {
-                standing.push(e.clone());
-            }
-        }
-        standing.push(last.clone());
+        Ok(out)
+    }
+
+    /// Each branch's `moved` end (from [`Branches::moved`]) known at `alpha` from now on.
+    pub(super) fn record(&mut self, alpha: f64, moved: Vec<Option<BranchEnd>>) {
         for (known, m) in self.0.iter_mut().zip(moved) {
             if let Some(m) = m {
                 known.push((alpha, m));
             }
         }
-        Ok(Some((standing, mu_ms.mu)))
     }
 }
 
-/// Two moved ends within this (relative) of each other, with the same condition, are one.
+/// A branch's step in α is halved at most this many times.
+const HALVINGS: usize = 3;
+
+/// The branch's end `start` (with its opening) moved to `alpha` by Newton, through the
+/// middle of the step where it does not converge (`depth` halvings left).
+fn step(
+    rect: &Rectangle,
+    (from, start): (f64, BranchEnd),
+    alpha: f64,
+    depth: usize,
+    settings: &Settings,
+) -> Result<Option<BranchEnd>, InputError> {
+    if let Ok(e) = end_on(&rect.arch(alpha)?, &start, settings) {
+        return Ok(Some(e));
+    }
+    if depth == 0 {
+        return Ok(None);
+    }
+    let mid = 0.5 * (from + alpha);
+    match step(rect, (from, start), mid, depth - 1, settings)? {
+        Some(e) => step(rect, (mid, e), alpha, depth - 1, settings),
+        None => Ok(None),
+    }
+}
+
+/// μ_ms of `arch`, where it has one.
+pub(super) fn mu_ms_of(arch: &Arch, settings: &Settings) -> Option<f64> {
+    crate::friction::friction_limit(arch, settings)
+        .ok()
+        .flatten()
+        .map(|l| l.mu)
+}
+
+/// The boundary point among moved `ends` (ascending in μ, the ends of one branch continued
+/// from two sides counted once): the last of them, where it [`stands`], with (`all`) the
+/// others that stand as well (each a limit state above η_s with the arch unique just beyond
+/// it: a branch that ends below another's birth); `None` where the last does not stand.
+pub(super) fn standing<'a>(
+    arch: &Arch,
+    ends: impl IntoIterator<Item = &'a BranchEnd>,
+    all: bool,
+    settings: &Settings,
+) -> Result<Option<Vec<BranchEnd>>, InputError> {
+    let mut ends: Vec<&BranchEnd> = ends.into_iter().collect();
+    ends.sort_by(|a, b| a.mu.total_cmp(&b.mu));
+    // one end continued from two sides, or a mirror pair's two ends: one point
+    ends.dedup_by(|a, b| (a.mu - b.mu).abs() <= SAME_END * a.mu);
+    let Some(&last) = ends.last() else {
+        return Ok(None);
+    };
+    if !stands(arch, last, settings)? {
+        return Ok(None);
+    }
+    let mut out = Vec::new();
+    for &e in &ends[..ends.len() - 1] {
+        if all && stands(arch, e, settings)? {
+            out.push(e.clone());
+        }
+    }
+    out.push(last.clone());
+    Ok(Some(out))
+}
+
+/// Two moved ends within this (relative) of each other are one (the same branch's, or a
+/// mirror pair's).
 const SAME_END: f64 = 1e-9;
 
 /// Whether `end` is a boundary point on `arch`: its state is a limit state above η_s at its

@@ -8,7 +8,7 @@
 //! to μ = 0, lies the region without equilibrium.
 
 use super::classify::Kind;
-use super::column::Column;
+use super::column::{folded, Column, ColumnNotch};
 use super::traced::Traced;
 
 /// A polygon of (α, μ) vertices, closed (the last vertex joins the first).
@@ -39,6 +39,9 @@ pub(super) fn regions(
     if cols.is_empty() {
         return Vec::new();
     }
+    let (folded, notches): (Vec<Column>, Vec<Option<ColumnNotch>>) =
+        cols.iter().map(|c| folded(c)).unzip();
+    let cols: Vec<&Column> = folded.iter().collect();
     let curve = mu_ms_curve(&cols);
     let signature = |c: &Column| c.runs.iter().map(|r| r.0).collect::<Vec<_>>();
     let mut out = Vec::new();
@@ -66,7 +69,7 @@ pub(super) fn regions(
             let Some(kind) = run.0 else {
                 continue; // not decided: left out of every region
             };
-            let group = (&cols[i..=j], &traced[i..=j], before);
+            let group = (&cols[i..=j], &traced[i..=j], &notches[i..=j], before);
             let kind_of = |k: usize| cols[i].runs.get(k).and_then(|r| r.0);
             // the top of the band on the edge between non_unique (below) and unique
             let band = |below: usize| {
@@ -134,7 +137,7 @@ fn on_curve(curve: &[[f64; 2]], left: f64, right: f64) -> Polygon {
 /// boundary traced to a tip of the band (`before` the group, or from its last column),
 /// through the traced points to the tip.
 fn edge(
-    (group, traced, before): (&[&Column], &[Option<&Traced>], Option<&Traced>),
+    (group, traced, notches, before): Group,
     (left, right): (f64, f64),
     curve: &[[f64; 2]],
     mu: impl Fn(&Column) -> f64,
@@ -142,60 +145,86 @@ fn edge(
     let held =
         |c: &Column, a: f64| mu(c) / c.mu_ms.expect("columns with mu_ms") * interpolate(curve, a);
     let (first, last) = (group[0], group[group.len() - 1]);
-    let points = path;
-    let mut p = match before.and_then(|t| Some((t, t.tip?))) {
+    let on_curve = |tip: [f64; 2]| [tip[0], interpolate(curve, tip[0])];
+    let mut items: Vec<Item> = Vec::new();
+    let start = match before.and_then(|t| Some((t, t.tip?))) {
         // the tip on the μ_ms curve as the lowest run's polygon has it
         Some((t, tip)) if t.to_mu == mu(first) => {
-            [vec![[tip[0], interpolate(curve, tip[0])]], points(t)].concat()
+            items.extend(items_of(t));
+            on_curve(tip)
         }
-        _ => vec![[left, held(first, left)]],
+        _ => [left, held(first, left)],
     };
     for (k, c) in group.iter().enumerate() {
-        p.push([c.alpha, mu(c)]);
+        // the column's own notch where this edge is the boundary above it
+        let notch = notches[k].filter(|n| n.0 == mu(c)).map(|n| n.1);
+        items.push((c.alpha, mu(c), notch));
         // the boundary traced from this column's point to the next one's
         let traced = traced[k].filter(|t| {
             group
                 .get(k + 1)
                 .is_some_and(|n| t.from_mu == mu(c) && t.to_mu == mu(n))
         });
-        p.extend(traced.into_iter().flat_map(path));
+        items.extend(traced.into_iter().flat_map(items_of));
     }
-    match traced[group.len() - 1].and_then(|t| Some((t, t.tip?))) {
-        Some((t, tip)) if t.from_mu == mu(last) => p.extend(
-            points(t)
-                .into_iter()
-                .chain([[tip[0], interpolate(curve, tip[0])]]),
-        ),
-        _ => p.push([right, held(last, right)]),
-    }
+    let end = match traced[group.len() - 1].and_then(|t| Some((t, t.tip?))) {
+        Some((t, tip)) if t.from_mu == mu(last) => {
+            items.extend(items_of(t));
+            on_curve(tip)
+        }
+        _ => [right, held(last, right)],
+    };
+    let mut p = vec![start];
+    p.extend(path(&items));
+    p.push(end);
     p.dedup();
     p
 }
 
-/// The traced boundary's path, left to right: through each point's end, and for each run
-/// of consecutive points with a notch below their ends, along the run's lower ends, back
+/// A run of consecutive columns with the same kinds: the columns, the boundaries traced
+/// from each, their own notches, and the tip strip before the first.
+type Group<'a> = (
+    &'a [&'a Column],
+    &'a [Option<&'a Traced>],
+    &'a [Option<ColumnNotch>],
+    Option<&'a Traced>,
+);
+
+/// A point of an edge: α, μ, and the notch of uniqueness below it (the lower branch's end,
+/// the upper branch's birth), where there is one.
+type Item = (f64, f64, Option<[f64; 2]>);
+
+/// The points of a traced boundary as [`Item`]s.
+fn items_of(t: &Traced) -> Vec<Item> {
+    t.points
+        .iter()
+        .map(|q| {
+            let notch = q.notch.as_ref().map(|n| [n.below.mu, n.birth.mu()]);
+            (q.alpha, q.end.mu, notch)
+        })
+        .collect()
+}
+
+/// An edge's path through its points (the columns' and the traced ones), left to right:
+/// through each point's μ, and for each run of consecutive points with a notch below them, along the run's lower ends, back
 /// along its births and on along its upper ends (so each notch is a tongue of `unique`
 /// reaching into the band).
-fn path(t: &Traced) -> Polygon {
+fn path(items: &[Item]) -> Polygon {
     let mut p = Vec::new();
     let mut k = 0;
-    while k < t.points.len() {
-        let run = t.points[k..]
+    while k < items.len() {
+        let run = items[k..]
             .iter()
-            .map_while(|q| q.notch.as_ref().map(|n| (q.alpha, n)))
+            .map_while(|q| q.2.map(|n| (q.0, n)))
             .collect::<Vec<_>>();
         if run.is_empty() {
-            p.push([t.points[k].alpha, t.points[k].end.mu]);
+            p.push([items[k].0, items[k].1]);
             k += 1;
             continue;
         }
-        p.extend(run.iter().map(|(a, n)| [*a, n.below.mu]));
-        p.extend(run.iter().rev().map(|(a, n)| [*a, n.birth.mu()]));
-        p.extend(
-            t.points[k..k + run.len()]
-                .iter()
-                .map(|q| [q.alpha, q.end.mu]),
-        );
+        p.extend(run.iter().map(|(a, n)| [*a, n[0]]));
+        p.extend(run.iter().rev().map(|(a, n)| [*a, n[1]]));
+        p.extend(items[k..k + run.len()].iter().map(|q| [q.0, q.1]));
         k += run.len();
     }
     p

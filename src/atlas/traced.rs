@@ -8,8 +8,8 @@
 use super::certified::states_kind;
 use super::classify::classify;
 use super::classify::Kind;
-use super::column::{certify_point, locate, BoundaryPoint, Column, Rectangle};
-use super::continued::{Branches, BEYOND};
+use super::column::{certify_point, folded, locate, BoundaryPoint, Column, Rectangle};
+use super::continued::{mu_ms_of, standing, Branches, BEYOND};
 use super::tips::Tip;
 use crate::arch::{Arch, InputError};
 use crate::limit_states::BranchEnd;
@@ -90,22 +90,19 @@ impl Traced {
     }
 }
 
-/// The solved `non_unique`/`unique` point of a column, where it has exactly one.
+/// The band's boundary at a column: its last `non_unique`/`unique` point (above a notch of
+/// uniqueness where its samples meet one), where it is solved.
 fn the_end(c: &Column) -> Option<&BranchEnd> {
-    let mut ends = c
+    let last = c
         .boundaries
         .iter()
-        .filter(|p| p.between == [Kind::NonUnique, Kind::Unique]);
-    let one = ends.next()?;
-    match (ends.next(), &one.end) {
-        (None, Some(Ok(e))) => Some(e),
-        _ => None,
-    }
+        .rfind(|p| p.between == [Kind::NonUnique, Kind::Unique])?;
+    last.end.as_ref()?.as_ref().ok()
 }
 
 /// The traced boundary of every strip (one per column: towards the next), strips on
-/// `threads` threads: between two columns that both hold exactly one solved
-/// `non_unique`/`unique` point with the same kinds in the same order, or from the one
+/// `threads` threads: between two columns that both hold a solved `non_unique`/`unique`
+/// point ([`the_end`]), or from the one
 /// column of the strip that holds one to a tip of the band on the μ_ms curve between them
 /// (`tips`); `None` elsewhere. The branch ends `known` elsewhere (the top's search) whose
 /// openings lie inside a strip are continued there too: a branch that ends last only
@@ -117,7 +114,8 @@ pub(super) fn trace(
     settings: &Settings,
     threads: usize,
 ) -> Result<Vec<Option<Traced>>, InputError> {
-    let kinds = |c: &Column| c.runs.iter().map(|r| r.0).collect::<Vec<_>>();
+    // the kinds with a column's notch of uniqueness folded into the band
+    let kinds = |c: &Column| folded(c).0.runs.iter().map(|r| r.0).collect::<Vec<_>>();
     let strips: Vec<usize> = (0..columns.len()).collect();
     threads::map(&strips, threads, |_, &k| {
         let (c, d) = (&columns[k], columns.get(k + 1)?);
@@ -181,45 +179,35 @@ fn strip(
     ((a0, a1), (from_mu, to_mu)): ((f64, f64), (f64, f64)),
     settings: &Settings,
 ) -> Result<Traced, InputError> {
-    let mut branches = Branches::of(from.iter().copied()).with(inner.iter().cloned());
+    let alphas: Vec<f64> = (1..TRACE_STEPS)
+        .map(|i| a0 + (a1 - a0) * i as f64 / TRACE_STEPS as f64)
+        .collect();
     let mut points = Vec::new();
-    // between two columns from both ends inwards, so that each column's branches move by
-    // short steps; from one column outwards in order
-    let both = from.len() == 2;
-    let order = (1..TRACE_STEPS).map(|i| match i % 2 {
-        _ if !both => i,
-        1 => i.div_ceil(2),
-        _ => TRACE_STEPS - i / 2,
-    });
-    for i in order {
-        let alpha = a0 + (a1 - a0) * i as f64 / TRACE_STEPS as f64;
-        if let Some((mut ends, mu_ms)) = branches.all_at(rect, alpha, true, settings)? {
-            let arch = rect.arch(alpha)?;
-            let end = ends.pop().expect("the last end stands");
-            let notch = match ends.pop() {
-                Some(below) => notch(&arch, alpha, below, &end, settings)?,
-                None => None,
-            };
-            let certified = rect.certify.then(|| {
-                let at_end = certify(&arch, &end, settings)?;
-                match &notch {
-                    Some(n) => Ok(at_end
-                        && certify(&arch, &n.below, settings)?
-                        && certify_point(&arch, &n.birth, settings)?),
-                    None => Ok(at_end),
-                }
-            });
-            points.push(TracedPoint {
-                alpha,
-                mu_ms,
-                end,
-                certified,
-                notch,
-            });
-        }
-    }
-    if both {
-        points.sort_by(|p: &TracedPoint, q| p.alpha.total_cmp(&q.alpha));
+    for (alpha, arch, mu_ms, moved) in swept(rect, (from, inner), &alphas, settings)? {
+        let Some(mut ends) = standing(&arch, &moved, true, settings)? else {
+            continue;
+        };
+        let end = ends.pop().expect("the last end stands");
+        let notch = match ends.pop() {
+            Some(below) => notch(&arch, alpha, below, &end, settings)?,
+            None => None,
+        };
+        let certified = rect.certify.then(|| {
+            let at_end = certify(&arch, &end, settings)?;
+            match &notch {
+                Some(n) => Ok(at_end
+                    && certify(&arch, &n.below, settings)?
+                    && certify_point(&arch, &n.birth, settings)?),
+                None => Ok(at_end),
+            }
+        });
+        points.push(TracedPoint {
+            alpha,
+            mu_ms,
+            end,
+            certified,
+            notch,
+        });
     }
     Ok(Traced {
         from_mu,
@@ -228,6 +216,48 @@ fn strip(
         tip: None,
     })
 }
+
+/// The opening, arch, μ_ms and the moved branch ends at each of `alphas` (in the span's order; those
+/// without μ_ms left out of the continuation): the first column's branches (and the ends
+/// `inner` known inside) swept across the openings in order, the second column's (where
+/// `from` has two) in reverse, each branch moved from its end at the opening before, so that
+/// every branch moves by one opening's step whatever its column.
+fn swept(
+    rect: &Rectangle,
+    (from, inner): (&[&Column], &[(f64, BranchEnd)]),
+    alphas: &[f64],
+    settings: &Settings,
+) -> Result<Vec<Opening>, InputError> {
+    let mut out = Vec::new();
+    for &alpha in alphas {
+        let arch = rect.arch(alpha)?;
+        if let Some(mu_ms) = mu_ms_of(&arch, settings) {
+            out.push((alpha, arch, mu_ms, Vec::new()));
+        }
+    }
+    let sweep = |columns: &[&Column],
+                 order: &mut dyn Iterator<Item = usize>,
+                 out: &mut Vec<Opening>|
+     -> Result<(), InputError> {
+        let mut branches = Branches::of(columns.iter().copied()).with(inner.iter().cloned());
+        for k in order {
+            let (alpha, _, _, ends) = &mut out[k];
+            let moved = branches.moved_in_steps(rect, *alpha, settings)?;
+            ends.extend(moved.iter().flatten().cloned());
+            branches.record(*alpha, moved);
+        }
+        Ok(())
+    };
+    let n = out.len();
+    sweep(&from[..1], &mut (0..n), &mut out)?;
+    if from.len() == 2 {
+        sweep(&from[1..], &mut (0..n).rev(), &mut out)?;
+    }
+    Ok(out)
+}
+
+/// An opening of a strip: α, the arch, μ_ms and the branch ends moved there.
+type Opening = (f64, Arch, f64, Vec<BranchEnd>);
 
 /// The notch between the end `below` (the arch unique just beyond it) and the upper
 /// branch's end `end`: the upper branch's birth located between them ([`locate`]) where

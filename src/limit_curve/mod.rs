@@ -250,6 +250,33 @@ fn merge_duplicates(changes: Vec<Corner>, same: f64) -> Vec<Corner> {
     out
 }
 
+/// The pattern changes of η_s(μ) (corners and smooth transitions) with μ in
+/// [`mu_lo`, `mu_hi`], located as [`trace`] locates them between `n` samples geometric over
+/// the range, without the limit-state search and without the lowest end: where a branch of
+/// limit states above η_s may be born (the atlas samples both sides of each). One thread.
+pub fn pattern_changes(
+    arch: &Arch,
+    (mu_lo, mu_hi): (f64, f64),
+    n: usize,
+    settings: &Settings,
+) -> Vec<Corner> {
+    let mut tr = Tracer::new(arch, settings);
+    let samples = sample_groups(&mut tr, &geometric_down(mu_lo, mu_hi, n), None, 1);
+    let mut changes = locate_changes(&mut tr, &samples, 1);
+    changes.retain(|c| c.mu.is_finite());
+    changes.sort_by(|a, b| b.mu.total_cmp(&a.mu));
+    merge_duplicates(changes, settings.same_root)
+}
+
+/// `n` (at least 2) frictions geometric from `hi` down to `lo`.
+fn geometric_down(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+    let n = n.max(2);
+    (0..n)
+        .rev()
+        .map(|i| lo * (hi / lo).powf(i as f64 / (n - 1) as f64))
+        .collect()
+}
+
 /// The curve of an arch without branches: no finite μ suffices (`mu_ms` `None`), or
 /// nothing stands at any μ.
 fn without_branches(tr: Tracer, mu_ms: Option<f64>, solves: usize) -> LimitCurve {
@@ -286,11 +313,7 @@ fn sample_frictions(
     } else {
         OVERTURNING_SPAN * mu_lo.max(MU_FLOOR)
     };
-    let n = settings.curve_samples.max(2);
-    (0..n)
-        .rev()
-        .map(|i| mu_lo * (mu_hi / mu_lo).powf(i as f64 / (n - 1) as f64))
-        .collect()
+    geometric_down(mu_lo, mu_hi, settings.curve_samples)
 }
 
 /// η_s at each of `mus`, in fixed groups of [`SAMPLE_GROUP`] on `threads` threads (each

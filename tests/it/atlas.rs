@@ -762,8 +762,10 @@ fn the_search_finds_every_branch_up_to_its_end() {
         "12",
     ]);
     assert_eq!(code, 0);
+    // one per column, and at 0.68 (sampled at the corners of η*(μ)) a second one: the
+    // lower branch's end below the notch of uniqueness there
     let points = band_points(&doc);
-    assert_eq!(points.len(), 14, "{doc}");
+    assert_eq!(points.len(), 15, "{doc}");
     let settings = Settings::default();
     let at_mu = Settings {
         carry_shift: 0.0,
@@ -771,14 +773,29 @@ fn the_search_finds_every_branch_up_to_its_end() {
         ..Settings::default()
     };
     let (mut checked, mut missed_at_mu) = (0, 0);
+    // where a branch is born (a notch of uniqueness below it): its birth, at each opening
+    let births: Vec<(f64, f64)> = doc["boundaries"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|b| b["between"] == serde_json::json!(["unique", "non_unique"]))
+        .flat_map(|b| b["points"].as_array().unwrap())
+        .map(|p| (p["alpha"].as_f64().unwrap(), p["mu"].as_f64().unwrap()))
+        .collect();
     for p in points {
         assert!(p["exact"].as_bool().unwrap(), "{p}");
         let (alpha, end) = (p["alpha"].as_f64().unwrap(), p["mu"].as_f64().unwrap());
         let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
         let ms = least_friction(&arch, &settings).unwrap().unwrap();
+        // the branch lives above μ_ms and above its birth, where it has one below its end
+        let born = births
+            .iter()
+            .filter(|b| b.0 == alpha && b.1 < end)
+            .map(|b| b.1)
+            .fold(ms * (1.0 + 1e-6), f64::max);
         for r in [1e-3, 1e-5, 1e-7, 1e-9] {
             let mu = end * (1.0 - r);
-            if mu <= ms * (1.0 + 1e-6) {
+            if mu <= born {
                 continue;
             }
             let sv = survey(&arch, mu, &settings).unwrap();
@@ -868,16 +885,18 @@ fn a_voussoir_band_has_a_top_of_bisected_points() {
 /// The `non_unique`/`unique` boundary is traced between two columns by continuation in α
 /// (`traced`): every traced point is non-unique just inside it and unique just beyond it
 /// by the search itself, and the polygons pass through the points. Between α = 0.68 and
-/// 0.69 the branch that ends last changes (a slide's rate at 0.68, the extrados hinge's at
-/// 0.69) and the curve bends away from the chord; a point between the chord and the curve
-/// is `non_unique` by `solve` and by the polygons (the chord alone put it in `unique`).
+/// 0.69 the curve bends away from the chord; a point between the chord and the curve has
+/// the kind `solve` gives it in the polygons too (the chord alone puts it on the other side).
 /// Inside the strip `solve` also shows a notch of uniqueness (docs/uniqueness.md): at
 /// α = 0.685 the first branch ends near μ = 1.0156 and the second is born at the corner of
 /// η*(μ), μ = 1.02096. The traced points locate it (`notch`: the lower end and the birth,
-/// each checked by the search on both sides) and the polygons hold it.
+/// each checked by the search on both sides) and the polygons hold it. The column at
+/// 0.68, sampled on both sides of the corner, crosses the notch too (three boundary
+/// points: the lower end, the birth, the band's boundary) and joins the next column through
+/// the band's boundary above it.
 #[test]
 fn the_boundary_is_traced_between_columns() {
-    let doc = band_doc("0.68", "0.69", &[], 2);
+    let doc = band_doc("0.68", "0.69", &[], 3);
     let traced = doc["traced"].as_array().unwrap();
     assert_eq!(traced.len(), 1, "{doc}");
     let t = &traced[0];
@@ -906,6 +925,19 @@ fn the_boundary_is_traced_between_columns() {
         assert_eq!(kind(alpha, b1), Some("non_unique"), "{p}");
     }
     assert!(notches >= 3, "{notches} notches: {t}");
+    // the column's own notch at 0.68, by the search and the polygons
+    for (mu, want) in [
+        (1.0138, "unique"),
+        (1.0145, "non_unique"),
+        (1.0152, "unique"),
+    ] {
+        assert_eq!(kind(0.68, mu), Some(want), "mu = {mu}");
+        assert_eq!(
+            kinds_at(&regions_of(&doc), 0.68 + 1e-9, mu),
+            vec![want],
+            "mu = {mu}"
+        );
+    }
     // the point at α = 0.68625 (the fifth of seven) and the chord there
     let p = &points[4];
     let alpha = p["alpha"].as_f64().unwrap();
@@ -913,10 +945,18 @@ fn the_boundary_is_traced_between_columns() {
     let (from, to) = (t["mu_from"].as_f64().unwrap(), t["mu_to"].as_f64().unwrap());
     let chord = from + (to - from) * 0.625;
     let curve = p["mu"].as_f64().unwrap();
-    assert!(curve > chord * (1.0 + 1e-3), "curve {curve}, chord {chord}");
+    assert!(
+        (curve - chord).abs() > 1e-4 * chord,
+        "curve {curve}, chord {chord}"
+    );
     let mu = 0.5 * (chord + curve);
-    assert_eq!(kind(alpha, mu), Some("non_unique"));
-    assert_eq!(kinds_at(&regions_of(&doc), alpha, mu), vec!["non_unique"]);
+    let want = if curve > chord {
+        "non_unique"
+    } else {
+        "unique"
+    };
+    assert_eq!(kind(alpha, mu), Some(want));
+    assert_eq!(kinds_at(&regions_of(&doc), alpha, mu), vec![want]);
     // the notch: the first branch, none, the second branch, by the search and the polygons
     for (mu, want) in [
         (1.015, "non_unique"),
