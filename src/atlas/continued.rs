@@ -174,10 +174,17 @@ pub(super) fn standing<'a>(
     all: bool,
     settings: &Settings,
 ) -> Result<Option<Vec<BranchEnd>>, InputError> {
-    let mut ends: Vec<&BranchEnd> = ends.into_iter().collect();
-    ends.sort_by(|a, b| a.mu.total_cmp(&b.mu));
-    // one end continued from two sides, or a mirror pair's two ends: one point
-    ends.dedup_by(|a, b| (a.mu - b.mu).abs() <= SAME_END * a.mu);
+    let mut sorted: Vec<&BranchEnd> = ends.into_iter().collect();
+    sorted.sort_by(|a, b| a.mu.total_cmp(&b.mu));
+    // one end continued from two sides, or a mirror pair's two ends: one point, the
+    // highest (where two branches' ends cross, the boundary is the later one)
+    let mut ends: Vec<&BranchEnd> = Vec::new();
+    for e in sorted {
+        match ends.last_mut() {
+            Some(last) if (e.mu - last.mu).abs() <= SAME_END * e.mu => *last = e,
+            _ => ends.push(e),
+        }
+    }
     let Some(&last) = ends.last() else {
         return Ok(None);
     };

@@ -12,7 +12,7 @@
 //! same order (the `non_unique`/`unique` boundary traced inside the strip by continuation
 //! in α where both columns solve one, [`Traced`]; other boundaries by straight segments);
 //! elsewhere each column's runs hold up to the middle of the strip, or up to a tip where
-//! a kind begins or ends on the μ_ms curve inside it ([`tips`]; the `non_unique`/`unique`
+//! a kind begins or ends on the μ_ms curve inside it (the `non_unique`/`unique`
 //! boundary is traced from the column to the tip). Between
 //! `non_unique` and `unique` on a continuous arch the non-unique end's branches of limit
 //! states are followed and the point is where the last one ends, solved from the condition
