@@ -37,6 +37,12 @@ impl Branches {
         self
     }
 
+    /// These branches and `other`'s.
+    pub(super) fn join(mut self, other: Branches) -> Branches {
+        self.0.extend(other.0);
+        self
+    }
+
     /// Every end known, with its opening.
     pub(super) fn into_ends(self) -> Vec<(f64, BranchEnd)> {
         self.0.into_iter().flatten().collect()

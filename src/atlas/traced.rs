@@ -171,8 +171,9 @@ pub(super) fn trace(
 }
 
 /// The points at the openings inside `span`, in its order (`from`: the columns whose ends
-/// are continued: the span's two ends, or its first end only); `from_mu`/`to_mu` the curve's μ at the span's
-/// first and second end.
+/// are continued: the span's two ends, or its first end only); `from_mu`/`to_mu` the
+/// curve's μ at the span's first and second end. The [`TRACE_STEPS`] − 1 openings first,
+/// then [`refine`]d where the curve bends or a notch begins or ends.
 fn strip(
     rect: &Rectangle,
     (from, inner): (&[&Column], &[(f64, BranchEnd)]),
@@ -182,32 +183,30 @@ fn strip(
     let alphas: Vec<f64> = (1..TRACE_STEPS)
         .map(|i| a0 + (a1 - a0) * i as f64 / TRACE_STEPS as f64)
         .collect();
+    let (openings, mut branches) = swept(rect, (from, inner), &alphas, settings)?;
     let mut points = Vec::new();
-    for (alpha, arch, mu_ms, moved) in swept(rect, (from, inner), &alphas, settings)? {
-        let Some(mut ends) = standing(&arch, &moved, true, settings)? else {
-            continue;
-        };
-        let end = ends.pop().expect("the last end stands");
-        let notch = match ends.pop() {
-            Some(below) => notch(&arch, alpha, below, &end, settings)?,
-            None => None,
-        };
-        let certified = rect.certify.then(|| {
-            let at_end = certify(&arch, &end, settings)?;
-            match &notch {
-                Some(n) => Ok(at_end
-                    && certify(&arch, &n.below, settings)?
-                    && certify_point(&arch, &n.birth, settings)?),
-                None => Ok(at_end),
-            }
-        });
-        points.push(TracedPoint {
-            alpha,
-            mu_ms,
-            end,
-            certified,
-            notch,
-        });
+    for (alpha, arch, mu_ms, moved) in openings {
+        points.extend(point_at(rect, (alpha, &arch, mu_ms), &moved, settings)?);
+    }
+    let ends = ((a0, from_mu), (a1, to_mu));
+    for _ in 0..REFINEMENTS {
+        let more = refine(&points, ends);
+        if more.is_empty() {
+            break;
+        }
+        for alpha in more {
+            let arch = rect.arch(alpha)?;
+            let Some(mu_ms) = mu_ms_of(&arch, settings) else {
+                continue;
+            };
+            let moved = branches.moved_in_steps(rect, alpha, settings)?;
+            let ends: Vec<BranchEnd> = moved.iter().flatten().cloned().collect();
+            branches.record(alpha, moved);
+            points.extend(point_at(rect, (alpha, &arch, mu_ms), &ends, settings)?);
+        }
+        // in the span's order
+        points
+            .sort_by(|p, q| ((p.alpha - a0) * (a1 - a0)).total_cmp(&((q.alpha - a0) * (a1 - a0))));
     }
     Ok(Traced {
         from_mu,
@@ -217,17 +216,93 @@ fn strip(
     })
 }
 
+/// A strip's points are refined at most this many times (each time halving the step
+/// where they are refined).
+const REFINEMENTS: usize = 3;
+
+/// A point departing from the chord between its neighbours by more than this (relative
+/// to μ) is refined on both sides.
+const BEND: f64 = 1e-4;
+
+/// The openings to add between consecutive points of a strip (its `ends`, (α, μ), count as
+/// points without a notch): the middle of every step next to a point that departs from
+/// its neighbours' chord by more than [`BEND`] of μ, and of every step between a point with
+/// a notch and one without.
+fn refine(points: &[TracedPoint], ends: ((f64, f64), (f64, f64))) -> Vec<f64> {
+    let mut all: Vec<(f64, f64, bool)> = vec![(ends.0 .0, ends.0 .1, false)];
+    all.extend(
+        points
+            .iter()
+            .map(|p| (p.alpha, p.end.mu, p.notch.is_some())),
+    );
+    all.push((ends.1 .0, ends.1 .1, false));
+    let mut split = vec![false; all.len() - 1];
+    for k in 1..all.len() - 1 {
+        let (p, q, r) = (all[k - 1], all[k], all[k + 1]);
+        let chord = p.1 + (r.1 - p.1) * (q.0 - p.0) / (r.0 - p.0);
+        if (q.1 - chord).abs() > BEND * q.1 {
+            split[k - 1] = true;
+            split[k] = true;
+        }
+        // a notch begins or ends between two points of the strip
+        if k + 1 < all.len() - 1 && q.2 != r.2 {
+            split[k] = true;
+        }
+    }
+    split
+        .iter()
+        .zip(all.windows(2))
+        .filter(|(s, _)| **s)
+        .map(|(_, w)| 0.5 * (w[0].0 + w[1].0))
+        .collect()
+}
+
+/// The traced point at one opening from the branch ends `moved` there: the last that stands,
+/// with the notch below it where another stands too; `None` where none stands.
+fn point_at(
+    rect: &Rectangle,
+    (alpha, arch, mu_ms): (f64, &Arch, f64),
+    moved: &[BranchEnd],
+    settings: &Settings,
+) -> Result<Option<TracedPoint>, InputError> {
+    let Some(mut ends) = standing(arch, moved, true, settings)? else {
+        return Ok(None);
+    };
+    let end = ends.pop().expect("the last end stands");
+    let notch = match ends.pop() {
+        Some(below) => notch(arch, alpha, below, &end, settings)?,
+        None => None,
+    };
+    let certified = rect.certify.then(|| {
+        let at_end = certify(arch, &end, settings)?;
+        match &notch {
+            Some(n) => Ok(at_end
+                && certify(arch, &n.below, settings)?
+                && certify_point(arch, &n.birth, settings)?),
+            None => Ok(at_end),
+        }
+    });
+    Ok(Some(TracedPoint {
+        alpha,
+        mu_ms,
+        end,
+        certified,
+        notch,
+    }))
+}
+
 /// The opening, arch, μ_ms and the moved branch ends at each of `alphas` (in the span's order; those
 /// without μ_ms left out of the continuation): the first column's branches (and the ends
 /// `inner` known inside) swept across the openings in order, the second column's (where
 /// `from` has two) in reverse, each branch moved from its end at the opening before, so that
-/// every branch moves by one opening's step whatever its column.
+/// every branch moves by one opening's step whatever its column; with every branch and the
+/// ends it reached.
 fn swept(
     rect: &Rectangle,
     (from, inner): (&[&Column], &[(f64, BranchEnd)]),
     alphas: &[f64],
     settings: &Settings,
-) -> Result<Vec<Opening>, InputError> {
+) -> Result<(Vec<Opening>, Branches), InputError> {
     let mut out = Vec::new();
     for &alpha in alphas {
         let arch = rect.arch(alpha)?;
@@ -238,7 +313,7 @@ fn swept(
     let sweep = |columns: &[&Column],
                  order: &mut dyn Iterator<Item = usize>,
                  out: &mut Vec<Opening>|
-     -> Result<(), InputError> {
+     -> Result<Branches, InputError> {
         let mut branches = Branches::of(columns.iter().copied()).with(inner.iter().cloned());
         for k in order {
             let (alpha, _, _, ends) = &mut out[k];
@@ -246,14 +321,14 @@ fn swept(
             ends.extend(moved.iter().flatten().cloned());
             branches.record(*alpha, moved);
         }
-        Ok(())
+        Ok(branches)
     };
     let n = out.len();
-    sweep(&from[..1], &mut (0..n), &mut out)?;
+    let mut branches = sweep(&from[..1], &mut (0..n), &mut out)?;
     if from.len() == 2 {
-        sweep(&from[1..], &mut (0..n).rev(), &mut out)?;
+        branches = branches.join(sweep(&from[1..], &mut (0..n).rev(), &mut out)?);
     }
-    Ok(out)
+    Ok((out, branches))
 }
 
 /// An opening of a strip: α, the arch, μ_ms and the branch ends moved there.
