@@ -1,9 +1,11 @@
 //! The boundary between `non_unique` and `unique` between two columns, traced by
-//! continuation in α: at [`TRACE_STEPS`] − 1 openings inside the strip, the ends of both
-//! columns' branches are moved there by Newton on their defining conditions
-//! ([`Branches::at`]), and the last end stands where it is a limit state above η_s and the
-//! search finds the arch unique just beyond it. So the regions' polygons follow the curve
-//! through exact points, not the chord between the columns.
+//! continuation in α: at [`TRACE_STEPS`] − 1 openings inside the strip (and more where the
+//! curve bends or a notch of uniqueness begins or ends, [`refine`]), the ends of both
+//! columns' branches are moved there by Newton on their defining conditions, one opening
+//! at a time from their own column ([`Branches::moved_in_steps`]), and the last end stands
+//! where it is a limit state above η_s and the search finds the arch unique just beyond it
+//! ([`standing`]). So the regions' polygons follow the curve through exact points, not the
+//! chord between the columns.
 
 use super::certified::states_kind;
 use super::classify::classify;

@@ -1050,3 +1050,55 @@ fn a_branch_known_only_between_columns_is_traced() {
         );
     }
 }
+
+/// A voussoir arch's η*(μ) has corners where a branch of limit states is born that is far
+/// narrower than the samples' spacing: at α = 1.1 with 24 voussoirs a mirror pair of
+/// states with the joints next to the crown sliding lies just above η_s for μ from
+/// 4.41833 to 4.41861 only (μ/μ_ms ≈ 2.14). The column samples both sides of every corner
+/// of η*(μ), so it holds the sliver as the search does (40 samples alone did not).
+#[test]
+fn a_sliver_born_at_a_corner_is_sampled() {
+    let (doc, code) = json_of(&[
+        "atlas",
+        "--blocks",
+        "24",
+        "--alpha-min",
+        "1.1",
+        "--alpha-max",
+        "1.1001",
+        "--columns",
+        "2",
+        "--mu-max-factor",
+        "3",
+        "--samples",
+        "12",
+    ]);
+    assert_eq!(code, 0);
+    let column = &doc["columns"][0];
+    let runs: Vec<(&str, f64)> = column["runs"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| (r["kind"].as_str().unwrap(), r["mu_to"].as_f64().unwrap()))
+        .collect();
+    let kinds: Vec<&str> = runs.iter().map(|r| r.0).collect();
+    assert_eq!(kinds, ["unique", "non_unique", "unique"], "{runs:?}");
+    let (from, to) = (runs[0].1, runs[1].1);
+    assert!(from > 4.418 && to < 4.419 && to - from < 1e-3, "{runs:?}");
+    let arch = Arch::symmetric(1.1, WeightModel::Centreline)
+        .unwrap()
+        .with_blocks(24)
+        .unwrap();
+    for (mu, want) in [
+        (from * (1.0 - 1e-4), "unique"),
+        (0.5 * (from + to), "non_unique"),
+        (to * (1.0 + 1e-4), "unique"),
+    ] {
+        assert_eq!(solve_kind(&arch, mu), Some(want), "mu = {mu}");
+        assert_eq!(
+            kinds_at(&regions_of(&doc), 1.1 + 1e-6, mu),
+            vec![want],
+            "mu = {mu}"
+        );
+    }
+}
