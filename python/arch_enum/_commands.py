@@ -140,7 +140,9 @@ ROWS = {
     "modes": ("corners", "samples"),
     "load": ("limit_states",),
     "load-curve": ("points",),
-    "atlas": ("boundaries", "cells"),
+    # the load map's cells first (its document has boundaries too), else the atlas's
+    # boundaries
+    "atlas": ("cells", "boundaries"),
 }
 
 

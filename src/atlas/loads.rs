@@ -104,6 +104,28 @@ impl LoadCell {
     }
 }
 
+/// Where a reduction begins or ends along η at one opening and friction: bisected in the
+/// thickness factor between two cells that both have a ratio, one reduced and one not.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LoadBoundary {
+    /// Opening.
+    pub alpha: f64,
+    /// Friction coefficient.
+    pub mu: f64,
+    /// Whether the thinner side is the reduced one (else the thicker side is).
+    pub reduced_below: bool,
+    /// The last factor of the thinner side's answer and the first of the thicker's.
+    pub factors: (f64, f64),
+    /// The same, as thicknesses η.
+    pub etas: (f64, f64),
+    /// Why the bisection stopped before [`BOUNDARY_REL`] (a midpoint without a ratio), if it
+    /// did.
+    pub stopped: Option<String>,
+}
+
+/// A boundary of the reduction is bisected until its factors are this close (relative).
+pub const BOUNDARY_REL: f64 = 1e-9;
+
 /// The whole load map.
 #[derive(Debug, Clone)]
 pub struct LoadMap {
@@ -115,6 +137,8 @@ pub struct LoadMap {
     pub factors: Vec<f64>,
     /// Every cell: by μ, then α, then factor.
     pub cells: Vec<LoadCell>,
+    /// Where the reduction begins or ends between neighbouring cells, by μ, then α, then η.
+    pub boundaries: Vec<LoadBoundary>,
 }
 
 impl LoadMap {
@@ -178,11 +202,74 @@ pub fn load_map(
     )
     .into_iter()
     .collect::<Result<Vec<_>, _>>()?;
+    // between neighbouring thicknesses of one opening and friction, reduced and not
+    let changes: Vec<(&LoadCell, &LoadCell, f64)> = cells
+        .chunks(n)
+        .zip(&stars)
+        .filter_map(|(column, star)| Some((column, *star.as_ref().ok()?)))
+        .flat_map(|(column, star)| {
+            column
+                .windows(2)
+                .filter(|w| w[0].ratio().is_some() && w[1].ratio().is_some())
+                .filter(|w| w[0].reduced() != w[1].reduced())
+                .map(move |w| (&w[0], &w[1], star))
+        })
+        .collect();
+    let boundaries = threads::map(&changes, threads, |_, &(lo, hi, star)| {
+        boundary(&grid.rect, (lo, hi), star, settings)
+    })
+    .into_iter()
+    .collect::<Result<Vec<_>, _>>()?;
     Ok(LoadMap {
         grid: grid.clone(),
         alphas,
         factors,
         cells,
+        boundaries,
+    })
+}
+
+/// The change between the cells `lo` (thinner) and `hi` of one opening and friction,
+/// bisected in the factor over η\* = `star` down to [`BOUNDARY_REL`] (each midpoint the
+/// complete load survey, as a cell is).
+fn boundary(
+    rect: &Rectangle,
+    (lo, hi): (&LoadCell, &LoadCell),
+    star: f64,
+    settings: &Settings,
+) -> Result<LoadBoundary, InputError> {
+    let (alpha, mu, below) = (lo.alpha, lo.mu, lo.reduced());
+    // the midpoints are not certified (only the cells are)
+    let rect = &Rectangle {
+        certify: false,
+        ..*rect
+    };
+    let (mut f0, mut f1) = (lo.factor, hi.factor);
+    let mut stopped = None;
+    while f1 - f0 > BOUNDARY_REL * f1 {
+        let mid = 0.5 * (f0 + f1);
+        let c = cell(rect, (alpha, mid, mu), &Ok(star), settings)?;
+        match c.ratio() {
+            Some(_) if c.reduced() == below => f0 = mid,
+            Some(_) => f1 = mid,
+            None => {
+                let what = match c.answer {
+                    CellAnswer::Undecided(_) => "the load survey did not decide",
+                    CellAnswer::NoCollapse => "no collapse",
+                    _ => "no ring",
+                };
+                stopped = Some(format!("{what} at eta = {}", mid * star));
+                break;
+            }
+        }
+    }
+    Ok(LoadBoundary {
+        alpha,
+        mu,
+        reduced_below: below,
+        factors: (f0, f1),
+        etas: (f0 * star, f1 * star),
+        stopped,
     })
 }
 

@@ -420,6 +420,23 @@ fn the_load_map_finds_the_reduction_and_agrees_with_the_brute_force() {
     let horizontal = LiveLoad::Horizontal {
         towards_right: true,
     };
+    // where the reduction ends in η at α = 0.45, bisected to 1e-9: reduced on the thinner
+    // side, not on the thicker, by the survey alone
+    let ends: Vec<_> = map.boundaries.iter().filter(|b| b.alpha == 0.45).collect();
+    assert_eq!(ends.len(), 1, "{:?}", map.boundaries);
+    let b = ends[0];
+    assert!(b.reduced_below && b.stopped.is_none(), "{b:?}");
+    assert!(b.etas.1 - b.etas.0 <= 2e-9 * b.etas.1, "{b:?}");
+    assert!(b.etas.0 > best.eta.unwrap(), "{b:?}");
+    let arch = Arch::symmetric(0.45, WeightModel::Centreline).unwrap();
+    let reduced = |eta: f64| match load_survey(&arch, eta, 1.0, &horizontal, &settings).unwrap() {
+        Ok(LoadOutcome::Limits(sv)) => {
+            let s = sv.lambda_static.unwrap().0;
+            1.0 - sv.lambda().unwrap() / s > arch_enum::atlas::loads::REDUCTION_TOL
+        }
+        other => panic!("{other:?}"),
+    };
+    assert!(reduced(b.etas.0) && !reduced(b.etas.1), "{b:?}");
     for c in map.cells.iter().filter(|c| c.eta.is_some()).step_by(5) {
         let arch = Arch::symmetric(c.alpha, WeightModel::Centreline).unwrap();
         let alone = load_survey(&arch, c.eta.unwrap(), c.mu, &horizontal, &settings).unwrap();

@@ -1,7 +1,7 @@
 //! The `atlas --horizontal --json` document: the load map.
 
 use super::common::JSON_VERSION;
-use crate::atlas::loads::{CellAnswer, LoadCell, LoadMap};
+use crate::atlas::loads::{CellAnswer, LoadBoundary, LoadCell, LoadMap};
 use schemars::JsonSchema;
 use serde::Serialize;
 
@@ -48,6 +48,37 @@ struct CellJson {
     not_certified: Option<String>,
 }
 
+/// Where a reduction begins or ends along η, bisected between two cells.
+#[derive(Debug, Serialize, JsonSchema)]
+struct BoundaryJson {
+    alpha: f64,
+    mu: f64,
+    /// The side of the reduction: `thinner` (reduced below the bracket, not above) or
+    /// `thicker`.
+    reduced_side: &'static str,
+    /// The last thickness of the thinner side's answer and the first of the thicker's.
+    eta_bracket: [f64; 2],
+    factor_bracket: [f64; 2],
+    /// Why the bisection stopped before its resolution (a midpoint without a ratio).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    stopped: Option<String>,
+}
+
+fn boundary_json(b: &LoadBoundary) -> BoundaryJson {
+    BoundaryJson {
+        alpha: b.alpha,
+        mu: b.mu,
+        reduced_side: if b.reduced_below {
+            "thinner"
+        } else {
+            "thicker"
+        },
+        eta_bracket: [b.etas.0, b.etas.1],
+        factor_bracket: [b.factors.0, b.factors.1],
+        stopped: b.stopped.clone(),
+    }
+}
+
 /// The load map as JSON.
 #[derive(Debug, Serialize, JsonSchema)]
 pub struct LoadMapJson {
@@ -62,6 +93,10 @@ pub struct LoadMapJson {
     reduction_tol: f64,
     summary: Vec<SummaryJson>,
     cells: Vec<CellJson>,
+    /// Where the reduction begins or ends between neighbouring cells of one opening,
+    /// bisected in η to `boundary_rel` (relative).
+    boundaries: Vec<BoundaryJson>,
+    boundary_rel: f64,
 }
 
 fn cell_json(c: &LoadCell) -> CellJson {
@@ -132,5 +167,7 @@ pub fn load_map(map: &LoadMap) -> LoadMapJson {
         reduction_tol: crate::atlas::loads::REDUCTION_TOL,
         summary: map.grid.mus.iter().map(|&mu| summary(map, mu)).collect(),
         cells: map.cells.iter().map(cell_json).collect(),
+        boundaries: map.boundaries.iter().map(boundary_json).collect(),
+        boundary_rel: crate::atlas::loads::BOUNDARY_REL,
     }
 }

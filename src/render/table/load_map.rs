@@ -3,7 +3,7 @@
 //! the semicircle's; then every cell with a reduction.
 
 use super::format::sig;
-use crate::atlas::loads::{CellAnswer, LoadMap, FACTOR_MIN};
+use crate::atlas::loads::{CellAnswer, LoadMap, BOUNDARY_REL, FACTOR_MIN};
 use std::fmt::Write;
 
 /// The load map as text.
@@ -99,5 +99,40 @@ pub fn load_map(map: &LoadMap) -> String {
             }
         );
     }
+    boundaries(&mut s, map);
     s
+}
+
+/// Where the reduction begins or ends along η, between neighbouring cells.
+fn boundaries(s: &mut String, map: &LoadMap) {
+    if map.boundaries.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        s,
+        "where the reduction begins or ends (bisected in eta to {} of it, each midpoint the complete load survey):",
+        sig(BOUNDARY_REL, 1)
+    );
+    let _ = writeln!(
+        s,
+        "          mu       alpha  eta (bracket)                  reduced side"
+    );
+    for b in &map.boundaries {
+        let _ = writeln!(
+            s,
+            "  {:>10}  {:>10}  [{}, {}]  {}{}",
+            sig(b.mu, 6),
+            sig(b.alpha, 6),
+            sig(b.etas.0, 12),
+            sig(b.etas.1, 12),
+            if b.reduced_below {
+                "thinner"
+            } else {
+                "thicker"
+            },
+            b.stopped
+                .as_ref()
+                .map_or(String::new(), |w| format!(" (stopped: {w})"))
+        );
+    }
 }
