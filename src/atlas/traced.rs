@@ -14,6 +14,7 @@ use super::column::{certify_point, folded, locate, BoundaryPoint, Column, Rectan
 use super::continued::{mu_ms_of, standing, Branches, BEYOND};
 use super::tips::Tip;
 use crate::arch::{Arch, InputError};
+use crate::limit_curve::pattern_changes;
 use crate::limit_states::BranchEnd;
 use crate::settings::Settings;
 use crate::threads;
@@ -336,6 +337,34 @@ fn swept(
 /// An opening of a strip: α, the arch, μ_ms and the branch ends moved there.
 type Opening = (f64, Arch, f64, Vec<BranchEnd>);
 
+/// The bracket of a birth between `unique` at `lo` and `non_unique` at `hi`, narrowed to
+/// [`SEED`] (relative) either side of a pattern change of η_s(μ) inside it where the
+/// kinds there agree (a branch born from η_s is born at a corner of η*(μ)); else as given.
+/// The bisection from it ends at the same neighbouring floats where the kind changes once.
+fn seeded(
+    arch: &Arch,
+    (lo, hi): (f64, f64),
+    settings: &Settings,
+) -> Result<(f64, f64), InputError> {
+    for c in pattern_changes(arch, (lo, hi), SEED_SAMPLES, settings) {
+        let (a, b) = (c.mu * (1.0 - SEED), c.mu * (1.0 + SEED));
+        if a > lo
+            && b < hi
+            && matches!(classify(arch, a, settings)?, Ok((Kind::Unique, _)))
+            && matches!(classify(arch, b, settings)?, Ok((Kind::NonUnique, _)))
+        {
+            return Ok((a, b));
+        }
+    }
+    Ok((lo, hi))
+}
+
+/// A birth's bracket is seeded this close to the corner either side (relative).
+const SEED: f64 = 1e-10;
+
+/// The samples of η_s(μ) between a notch's two ends that locate its corners.
+const SEED_SAMPLES: usize = 4;
+
 /// The notch between the end `below` (the arch unique just beyond it) and the upper
 /// branch's end `end`: the upper branch's birth located between them ([`locate`]) where
 /// the arch is `non_unique` just below `end`; `None` where not, or where the bisection
@@ -351,6 +380,7 @@ fn notch(
     if hi <= lo || !matches!(classify(arch, hi, settings)?, Ok((Kind::NonUnique, _))) {
         return Ok(None);
     }
+    let (lo, hi) = seeded(arch, (lo, hi), settings)?;
     let mut out = Vec::new();
     locate(
         arch,
