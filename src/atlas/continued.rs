@@ -93,15 +93,9 @@ impl Branches {
         alpha: f64,
         settings: &Settings,
     ) -> Vec<Option<BranchEnd>> {
-        let nearest = |known: &[(f64, BranchEnd)]| {
-            known
-                .iter()
-                .min_by(|p, q| (p.0 - alpha).abs().total_cmp(&(q.0 - alpha).abs()))
-                .map(|k| k.1.clone())
-        };
         self.0
             .iter()
-            .map(|known| end_on(arch, &nearest(known)?, settings).ok())
+            .map(|known| end_on(arch, &nearest(known, alpha)?.1, settings).ok())
             .collect()
     }
 
@@ -116,10 +110,7 @@ impl Branches {
     ) -> Result<Vec<Option<BranchEnd>>, InputError> {
         let mut out = Vec::new();
         for known in &self.0 {
-            let nearest = known
-                .iter()
-                .min_by(|p, q| (p.0 - alpha).abs().total_cmp(&(q.0 - alpha).abs()));
-            out.push(match nearest {
+            out.push(match nearest(known, alpha) {
                 Some(start) => step(rect, start.clone(), alpha, HALVINGS, settings)?,
                 None => None,
             });
@@ -135,6 +126,13 @@ impl Branches {
             }
         }
     }
+}
+
+/// A branch's known end nearest `alpha`, with its opening.
+fn nearest(known: &[(f64, BranchEnd)], alpha: f64) -> Option<&(f64, BranchEnd)> {
+    known
+        .iter()
+        .min_by(|p, q| (p.0 - alpha).abs().total_cmp(&(q.0 - alpha).abs()))
 }
 
 /// A branch's step in α is halved at most this many times.
