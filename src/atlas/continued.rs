@@ -51,48 +51,29 @@ impl Branches {
     /// The boundary point at `alpha` by continuation, with μ_ms there: every known branch's
     /// end nearest `alpha` moved there (Newton on its defining condition, [`end_on`]), the
     /// last of them, accepted where it is a limit state above η_s and the search finds the
-    /// arch unique [`BEYOND`] it (no branch ends later); each branch moved is then known
-    /// there too. `None` where not.
+    /// arch unique [`BEYOND`] it (no branch ends later, [`standing`]); each branch moved is
+    /// then known there too. `None` where not.
     pub(super) fn at(
         &mut self,
         rect: &Rectangle,
         alpha: f64,
         settings: &Settings,
     ) -> Result<Option<(BranchEnd, f64)>, InputError> {
-        Ok(self
-            .all_at(rect, alpha, false, settings)?
-            .and_then(|(mut ends, mu_ms)| Some((ends.pop()?, mu_ms))))
-    }
-
-    /// [`Branches::at`], with (`all`) the other moved ends that stand as well (ascending in
-    /// μ, [`standing`]); each branch moved is known at `alpha` only where the point stands.
-    pub(super) fn all_at(
-        &mut self,
-        rect: &Rectangle,
-        alpha: f64,
-        all: bool,
-        settings: &Settings,
-    ) -> Result<Option<(Vec<BranchEnd>, f64)>, InputError> {
         let arch = rect.arch(alpha)?;
         let Some(mu_ms) = mu_ms_of(&arch, settings) else {
             return Ok(None);
         };
         let moved = self.moved(&arch, alpha, settings);
-        let Some(standing) = standing(&arch, moved.iter().flatten(), all, settings)? else {
+        let Some(mut standing) = standing(&arch, moved.iter().flatten(), false, settings)? else {
             return Ok(None);
         };
         self.record(alpha, moved);
-        Ok(Some((standing, mu_ms)))
+        Ok(standing.pop().map(|end| (end, mu_ms)))
     }
 
     /// Every branch's end nearest `alpha` moved there (Newton on its defining condition,
     /// [`end_on`]; `None` where it does not converge), in the branches' order.
-    pub(super) fn moved(
-        &self,
-        arch: &Arch,
-        alpha: f64,
-        settings: &Settings,
-    ) -> Vec<Option<BranchEnd>> {
+    fn moved(&self, arch: &Arch, alpha: f64, settings: &Settings) -> Vec<Option<BranchEnd>> {
         self.0
             .iter()
             .map(|known| end_on(arch, &nearest(known, alpha)?.1, settings).ok())
