@@ -83,6 +83,9 @@ def test_report_and_plot():
     assert "α = 1.15" in curves and "α = 0" in curves
     influence = ae.plot("influence", **BRIDGE, axles=[100], critical=True, samples=9)
     assert influence.lstrip().startswith("<svg")
+    load_map = ae.plot("atlas", horizontal="right", mu=[0.6, 1], blocks=5, alpha_min=-0.2,
+                       alpha_max=0.6, columns=3, factors=3, factor_max=2.5)
+    assert "μ = 0.6:" in load_map and "μ = 1:" in load_map  # one panel per mu
 
 
 @pytest.mark.parametrize(

@@ -5,7 +5,7 @@ use super::arch_args::WeightArg;
 use super::io::{to_json, Exit, Io};
 use super::threads_arg::ThreadsArg;
 use crate::arch::InputError;
-use crate::atlas::loads::{load_map, LoadGrid};
+use crate::atlas::loads::{load_map, LoadGrid, LoadMap};
 use crate::atlas::{atlas, Atlas, Rectangle};
 use crate::render::{json, table};
 use crate::settings::Settings;
@@ -44,6 +44,25 @@ pub(crate) struct RectArgs {
 }
 
 impl RectArgs {
+    /// The load map these flags and `loads` ask for (a bad range is named by its flag).
+    pub(crate) fn load_map(
+        &self,
+        loads: &LoadMapArgs,
+        settings: &Settings,
+    ) -> Result<LoadMap, InputError> {
+        let grid = LoadGrid {
+            rect: self.rectangle(),
+            mus: loads.mu.clone(),
+            factors: loads.factors.unwrap_or(12),
+            factor_max: loads.factor_max.unwrap_or(4.0),
+        };
+        let threads = self.threads.count()?;
+        let bar = super::progress::Progress::new("atlas");
+        load_map(&grid, settings, threads, &|done, total| {
+            bar.update(done, total)
+        })
+    }
+
     /// The rectangle of these flags.
     fn rectangle(&self) -> Rectangle {
         Rectangle {
@@ -69,15 +88,15 @@ impl RectArgs {
     }
 }
 
-/// The load map's flags.
+/// The load map's flags (shared with `plot atlas`).
 #[derive(Args, Debug)]
-struct LoadMapArgs {
+pub(crate) struct LoadMapArgs {
     /// Map the collapse multiplier of a horizontal acceleration (towards the right
     /// springing) instead: lambda_c/lambda_static over the openings and the thicknesses
     /// eta = f eta*(alpha, mu), at each --mu. Each cell is a complete load search (tens of
     /// ms on a continuous arch): mind --columns.
     #[arg(long, requires = "mu", conflicts_with_all = ["samples", "mu_max_factor"])]
-    horizontal: bool,
+    pub(crate) horizontal: bool,
     /// With --horizontal: the friction coefficients, comma-separated (0 < mu < inf).
     #[arg(
         long,
@@ -108,18 +127,7 @@ pub(crate) struct AtlasArgs {
 
 /// `atlas --horizontal`: the load map.
 fn run_load_map(a: &AtlasArgs, settings: &Settings, io: &mut Io) -> Exit {
-    let grid = LoadGrid {
-        rect: a.rect.rectangle(),
-        mus: a.loads.mu.clone(),
-        factors: a.loads.factors.unwrap_or(12),
-        factor_max: a.loads.factor_max.unwrap_or(4.0),
-    };
-    let bar = super::progress::Progress::new("atlas");
-    let map = match a.rect.threads.count().and_then(|threads| {
-        load_map(&grid, settings, threads, &|done, total| {
-            bar.update(done, total)
-        })
-    }) {
+    let map = match a.rect.load_map(&a.loads, settings) {
         Ok(m) => m,
         Err(e) => return io.bad_input(&e),
     };

@@ -215,6 +215,8 @@ pub(crate) enum Figure {
         #[command(flatten)]
         rect: super::atlas::RectArgs,
         #[command(flatten)]
+        loads: super::atlas::LoadMapArgs,
+        #[command(flatten)]
         output: Output,
     },
     /// A margin map over the eta-mu plane with the exact limit curve (computed on all cores).
@@ -364,6 +366,12 @@ pub(crate) fn draw(figure: Figure, settings: &Settings, io: &mut Io) -> Result<S
             Ok((a, mu, eta)) => figures::scene(&a, mu, eta, settings).map(|s| plot_ecc::svg(&s)),
             Err(e) => return Err(io.bad_input(&e)),
         },
+        Figure::Atlas { rect, loads, .. } if loads.horizontal => {
+            match rect.load_map(&loads, settings) {
+                Ok(m) => Ok(crate::render::plot_load_map::svg(&m)),
+                Err(e) => return Err(io.bad_input(&e)),
+            }
+        }
         Figure::Atlas { rect, .. } => match rect.atlas(settings) {
             Ok(a) => Ok(crate::render::plot_atlas::svg(&a)),
             Err(e) => return Err(io.bad_input(&e)),

@@ -24,6 +24,8 @@ pub mod plot_influence;
 #[cfg(feature = "svg")]
 pub mod plot_load_curve;
 #[cfg(feature = "svg")]
+pub mod plot_load_map;
+#[cfg(feature = "svg")]
 pub mod plot_map;
 pub mod report;
 pub mod table;

@@ -204,6 +204,24 @@ impl Axis {
     }
 }
 
+/// The edges of the cells centred on `c` (ascending): midpoints between neighbours
+/// (geometric on a log axis), the outer edges half a step out.
+pub fn cell_edges(c: &[f64], log: bool) -> Vec<f64> {
+    let n = c.len();
+    let mid = |a: f64, b: f64| if log { (a * b).sqrt() } else { 0.5 * (a + b) };
+    let out = |a: f64, b: f64| {
+        if log {
+            a * (a / b).sqrt()
+        } else {
+            1.5 * a - 0.5 * b
+        }
+    };
+    let mut e = vec![if n > 1 { out(c[0], c[1]) } else { c[0] }];
+    e.extend(c.windows(2).map(|w| mid(w[0], w[1])));
+    e.push(if n > 1 { out(c[n - 1], c[n - 2]) } else { c[0] });
+    e
+}
+
 /// The estimated width of `text` in pixels at font `size` (DejaVu Sans, mostly digits).
 pub fn text_width(text: &str, size: u32) -> i32 {
     (0.47 * size as f64 * text.chars().count() as f64).ceil() as i32

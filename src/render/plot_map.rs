@@ -4,7 +4,7 @@
 
 use crate::figures::MapData;
 use crate::render::fine::Fine;
-use crate::render::plot::{arch_label, Axis, AxisCoord, FAMILY};
+use crate::render::plot::{arch_label, cell_edges, Axis, AxisCoord, FAMILY};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -43,17 +43,6 @@ fn value_color(v: f64, vmax_pos: f64, vmax_neg: f64) -> RGBColor {
     }
 }
 
-/// Cell edges around the centres `c` (geometric means on a log axis).
-fn edges(c: &[f64], log: bool) -> Vec<f64> {
-    let n = c.len();
-    let mid = |a: f64, b: f64| if log { (a * b).sqrt() } else { 0.5 * (a + b) };
-    let out = |a: f64, b: f64| if log { a * a / b } else { 2.0 * a - b };
-    let mut e = vec![if n > 1 { out(c[0], c[1]) } else { c[0] }];
-    e.extend(c.windows(2).map(|w| mid(w[0], w[1])));
-    e.push(if n > 1 { out(c[n - 1], c[n - 2]) } else { c[0] });
-    e
-}
-
 fn err(e: impl std::fmt::Display) -> String {
     e.to_string()
 }
@@ -71,7 +60,10 @@ struct Frame {
 
 impl Frame {
     fn new(map: &MapData, log_eta: bool) -> Frame {
-        let (me, ee) = (edges(&map.mus, true), edges(&map.etas, map.log_eta));
+        let (me, ee) = (
+            cell_edges(&map.mus, true),
+            cell_edges(&map.etas, map.log_eta),
+        );
         Frame {
             mu: Axis {
                 lo: me[0],

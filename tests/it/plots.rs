@@ -843,3 +843,160 @@ fn fill_curve_figure_turns_at_the_least_friction() {
         .contains("least friction"));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The fill of every rect of `doc` (rects with no fill left out).
+fn rect_fills<'a>(doc: &'a roxmltree::Document) -> Vec<(&'a str, [f64; 4])> {
+    doc.descendants()
+        .filter(|n| n.has_tag_name("rect"))
+        .filter_map(|n| {
+            let at = |a: &str| n.attribute(a).and_then(|v| v.parse::<f64>().ok());
+            let fill = n.attribute("fill").filter(|f| *f != "none")?;
+            Some((fill, [at("x")?, at("y")?, at("width")?, at("height")?]))
+        })
+        .collect()
+}
+
+/// The load map's figure (`plot atlas --horizontal`): one panel per μ, every cell filled by
+/// its answer (one rect per cell of its colour, besides the legend's swatch), a reduced cell
+/// coloured from the reduction scale with its reduction written inside it, a boundary as a
+/// black bar, and the same from the command line (five voussoirs, two friction coefficients).
+#[test]
+fn load_map_figure_fills_each_cell_by_its_answer() {
+    use arch_enum::atlas::loads::{load_map, CellAnswer, LoadBoundary, LoadGrid};
+    use arch_enum::atlas::Rectangle;
+    use arch_enum::render::plot_load_map::{self, NOT_REDUCED, NO_COLLAPSE, UNDECIDED};
+    let grid = LoadGrid {
+        rect: Rectangle {
+            alpha_min: -0.2,
+            alpha_max: 0.6,
+            mu_max_factor: 10.0,
+            weight: WeightModel::Centreline,
+            blocks: Some(5),
+            columns: 3,
+            samples: 40,
+            certify: false,
+        },
+        mus: vec![0.6, 1.0],
+        factors: 4,
+        factor_max: 2.5,
+    };
+    let mut map = load_map(&grid, &Settings::default(), 2, &|_, _| {}).unwrap();
+    // the drawing is a pure function of the map: give it one reduced and one undecided
+    // cell, and a boundary between the reduced cell and the next thicker one
+    let ratio = |c: &arch_enum::atlas::loads::LoadCell| c.ratio().is_some();
+    let k = map
+        .cells
+        .iter()
+        .position(ratio)
+        .expect("a cell with a ratio");
+    let (lambda_static, _, mode) = map.cells[k].ratio().unwrap();
+    map.cells[k].answer = CellAnswer::Ratio {
+        lambda_static,
+        lambda_c: 0.875 * lambda_static,
+        mode,
+    };
+    let reduced = map.cells[k].clone();
+    let u = map.cells.iter().rposition(ratio).unwrap();
+    map.cells[u].answer = CellAnswer::Undecided("test".into());
+    let next = map.factors[map
+        .factors
+        .iter()
+        .position(|&f| f == reduced.factor)
+        .unwrap()
+        + 1];
+    let star = reduced.eta.unwrap() / reduced.factor;
+    map.boundaries = vec![LoadBoundary {
+        alpha: reduced.alpha,
+        mu: reduced.mu,
+        reduced_below: true,
+        factors: (reduced.factor * 1.01, reduced.factor * 1.01),
+        etas: (reduced.factor * 1.01 * star, reduced.factor * 1.01 * star),
+        stopped: None,
+    }];
+    assert!(next > reduced.factor * 1.01);
+    let svg = plot_load_map::svg(&map).unwrap();
+    let doc = parse(&svg);
+    let fills = rect_fills(&doc);
+    let count = |c: plotters::style::RGBColor| fills.iter().filter(|f| f.0 == hex(c)).count();
+    let of = |p: &dyn Fn(&arch_enum::atlas::loads::LoadCell) -> bool| {
+        map.cells.iter().filter(|c| p(c)).count()
+    };
+    // each cell once, and its legend swatch
+    assert_eq!(count(NOT_REDUCED), of(&|c| ratio(c) && !c.reduced()) + 1);
+    assert_eq!(count(UNDECIDED), 2);
+    let no_collapse = of(&|c| c.answer == CellAnswer::NoCollapse);
+    if no_collapse > 0 {
+        assert_eq!(count(NO_COLLAPSE), no_collapse + 1);
+    }
+    // the reduced cell: "12.5" written inside the rect of its colour, which no other cell has
+    let text = doc
+        .descendants()
+        .find(|n| n.has_tag_name("text") && n.text().map(str::trim) == Some("12.5"))
+        .expect("the reduction written in its cell");
+    let at = |a: &str| text.attribute(a).unwrap().parse::<f64>().unwrap();
+    let (tx, ty) = (at("x"), at("y"));
+    let cell = fills
+        .iter()
+        .filter(|(_, [x, y, w, h])| tx > *x && tx < x + w && ty > *y - 12.0 && ty < y + h)
+        .min_by(|a, b| (a.1[2] * a.1[3]).total_cmp(&(b.1[2] * b.1[3])))
+        .expect("a filled rect under the text");
+    // 12.5 % on a scale to 15 %: a colour of its own (no step of the colour bar has it)
+    assert!([NOT_REDUCED, NO_COLLAPSE, UNDECIDED]
+        .iter()
+        .all(|c| hex(*c) != cell.0));
+    assert_eq!(
+        fills.iter().filter(|f| f.0 == cell.0).count(),
+        1,
+        "{}",
+        cell.0
+    );
+    assert!(
+        svg.contains("λ_c &lt; λ_static in 1 of"),
+        "the caption counts it"
+    );
+    // the boundary bar, and the legend's two bars
+    let bars = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("polyline") && n.attribute("stroke-width") == Some("3"))
+        .count();
+    assert_eq!(bars, 3, "one boundary and two legend bars");
+    // from the command line: one panel per mu, every cell drawn
+    let dir = std::env::temp_dir().join(format!("load_map_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("m.svg");
+    let args = [
+        "atlas",
+        "--horizontal",
+        "--mu",
+        "0.6,1",
+        "--blocks",
+        "5",
+        "--alpha-min",
+        "-0.2",
+        "--alpha-max",
+        "0.6",
+        "--columns",
+        "3",
+        "--factors",
+        "4",
+        "--factor-max",
+        "2.5",
+    ];
+    let o = plot(&args, &out);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let svg = std::fs::read_to_string(&out).unwrap();
+    assert_eq!(svg.matches("μ = 0.6:").count(), 1);
+    assert_eq!(svg.matches("μ = 1:").count(), 1);
+    let o = plot(
+        &["atlas", "--horizontal", "--mu", "1", "--factors", "1"],
+        &out,
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--factors"));
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -1,0 +1,348 @@
+//! Figure: the load map of the atlas ([`LoadMap`], `atlas --horizontal`): one panel per
+//! friction coefficient, the openings α across and the thickness factor η/η\*(α, μ) up (log
+//! scale), each cell filled by its answer — λ_c = λ_static (no reduction), a reduction
+//! 1 − λ_c/λ_static (a sequential scale, its value written in the cell), no collapse, no
+//! ring, not decided — and the boundaries of the reduction bisected along η drawn at their
+//! brackets (a bar across the cell where the bracket closed, a vertical bar over the stretch
+//! left where the bisection stopped).
+
+use crate::atlas::loads::{CellAnswer, LoadBoundary, LoadCell, LoadMap, FACTOR_MIN};
+use crate::render::plot::{cell_edges, legend_swatch, Axis, AxisCoord, FAMILY};
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+const W: u32 = 1000;
+/// The height of one μ's panel.
+const PANEL: u32 = 360;
+/// The band above the panels (the title).
+const TITLE: u32 = 40;
+/// The column right of the panels (legend and colour bar).
+const RIGHT: u32 = 210;
+
+/// λ_c = λ_static: the load's limit state is its static maximum.
+pub const NOT_REDUCED: RGBColor = RGBColor(199, 233, 192);
+/// The load drives no mechanism.
+pub const NO_COLLAPSE: RGBColor = RGBColor(158, 202, 225);
+/// No ring of the map (no η\*, or η at its limit).
+pub const NO_RING: RGBColor = RGBColor(255, 255, 255);
+/// The survey reached no decision.
+pub const UNDECIDED: RGBColor = RGBColor(200, 200, 200);
+
+/// The colour of a reduction `r` on a scale whose darkest end is `top`.
+fn reduction_color(r: f64, top: f64) -> RGBColor {
+    let t = (r / top).clamp(0.0, 1.0);
+    let mix = |a: u8, b: u8| (a as f64 + (b as f64 - a as f64) * t).round() as u8;
+    RGBColor(mix(254, 165), mix(217, 15), mix(118, 21))
+}
+
+/// The fill of a cell, on a reduction scale ending at `top`.
+fn cell_color(c: &LoadCell, top: f64) -> RGBColor {
+    match &c.answer {
+        CellAnswer::Ratio { .. } if c.reduced() => reduction_color(c.reduction().unwrap(), top),
+        CellAnswer::Ratio { .. } => NOT_REDUCED,
+        CellAnswer::NoCollapse => NO_COLLAPSE,
+        CellAnswer::NoRing => NO_RING,
+        CellAnswer::Undecided(_) => UNDECIDED,
+    }
+}
+
+/// The end of the reduction scale: the largest reduction of the map rounded up to a
+/// multiple of 5 % (5 % where none is larger).
+fn scale_top(map: &LoadMap) -> f64 {
+    let most = map
+        .cells
+        .iter()
+        .filter(|c| c.reduced())
+        .filter_map(LoadCell::reduction)
+        .fold(0.0, f64::max);
+    ((most / 0.05 - 1e-9).ceil() * 0.05).max(0.05)
+}
+
+fn err(e: impl std::fmt::Display) -> String {
+    e.to_string()
+}
+
+type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<AxisCoord, AxisCoord>>;
+
+/// The axes of a panel and the edges of its cells.
+struct Frame {
+    alpha: Axis,
+    factor: Axis,
+    alpha_edges: Vec<f64>,
+    factor_edges: Vec<f64>,
+}
+
+impl Frame {
+    fn new(map: &LoadMap) -> Frame {
+        let (ae, fe) = (
+            cell_edges(&map.alphas, false),
+            cell_edges(&map.factors, true),
+        );
+        Frame {
+            alpha: Axis {
+                lo: ae[0],
+                hi: ae[ae.len() - 1],
+                log: false,
+            },
+            factor: Axis {
+                lo: fe[0],
+                hi: fe[fe.len() - 1],
+                log: true,
+            },
+            alpha_edges: ae,
+            factor_edges: fe,
+        }
+    }
+
+    fn at(&self, alpha: f64, factor: f64) -> (f64, f64) {
+        (self.alpha.to(alpha), self.factor.to(factor))
+    }
+}
+
+/// Draws the load map.
+pub fn svg(map: &LoadMap) -> Result<String, String> {
+    if map.alphas.len() < 2 || map.factors.len() < 2 {
+        return Err("a load map needs at least 2 openings and 2 thicknesses".into());
+    }
+    let f = Frame::new(map);
+    let top = scale_top(map);
+    let mus = &map.grid.mus;
+    let h = TITLE + PANEL * mus.len() as u32;
+    let mut buf = String::new();
+    {
+        let root = SVGBackend::with_string(&mut buf, (W, h)).into_drawing_area();
+        root.fill(&WHITE).map_err(err)?;
+        let r = &map.grid.rect;
+        let title = format!(
+            "Load map: λ_c / λ_static of a horizontal acceleration, symmetric arches, {}, weight along the {}",
+            r.blocks
+                .map_or("continuous joints".into(), |n| format!("{n} voussoirs")),
+            r.weight.name()
+        );
+        let (head, body) = root.split_vertically(TITLE);
+        head.titled(&title, (FAMILY, 17)).map_err(err)?;
+        let (panels, side) = body.split_horizontally(W - RIGHT);
+        for (area, &mu) in panels.split_evenly((mus.len(), 1)).iter().zip(mus) {
+            panel(area, &f, map, mu, top)?;
+        }
+        legend(&side, map, top)?;
+        root.present().map_err(err)?;
+    }
+    Ok(buf)
+}
+
+/// The caption of the panel at `mu`: its cells, the reduced ones and the largest.
+fn caption(map: &LoadMap, mu: f64) -> String {
+    let answered = map.at(mu).filter(|c| c.ratio().is_some()).count();
+    let reduced = map.at(mu).filter(|c| c.reduced()).count();
+    let head =
+        format!("μ = {mu}: λ_c < λ_static in {reduced} of {answered} cells with a collapse load");
+    match map.largest(mu) {
+        Some(c) => format!(
+            "{head}, the most by {:.1} % at α = {}, η = {:.4}",
+            100.0 * c.reduction().unwrap(),
+            c.alpha,
+            c.eta.unwrap_or(f64::NAN)
+        ),
+        None => head,
+    }
+}
+
+/// One μ's panel: the cells, the reductions written in, the boundaries, the axes.
+fn panel(
+    area: &DrawingArea<SVGBackend, Shift>,
+    f: &Frame,
+    map: &LoadMap,
+    mu: f64,
+    top: f64,
+) -> Result<(), String> {
+    let mut ch = ChartBuilder::on(area)
+        .caption(caption(map, mu), (FAMILY, 15))
+        .margin(12)
+        .margin_right(20)
+        .x_label_area_size(48)
+        .y_label_area_size(70)
+        .build_cartesian_2d(f.alpha.range(), f.factor.range())
+        .map_err(err)?;
+    let (ae, fe) = (&f.alpha_edges, &f.factor_edges);
+    for c in map.at(mu) {
+        let i = map.alphas.iter().position(|&a| a == c.alpha).unwrap_or(0);
+        let j = map.factors.iter().position(|&x| x == c.factor).unwrap_or(0);
+        let corners = [f.at(ae[i], fe[j]), f.at(ae[i + 1], fe[j + 1])];
+        let color = cell_color(c, top);
+        // the outline in the same colour closes the anti-aliasing seams
+        ch.draw_series([
+            Rectangle::new(corners, color.filled()),
+            Rectangle::new(corners, color.stroke_width(1)),
+        ])
+        .map_err(err)?;
+        if c.reduced() {
+            percent(&mut ch, map, c, (fe[j], fe[j + 1]), f, top)?;
+        }
+    }
+    for b in map.boundaries.iter().filter(|b| b.mu == mu) {
+        boundary(&mut ch, f, map, b)?;
+    }
+    ch.configure_mesh()
+        .disable_mesh()
+        .x_desc("opening α (rad)")
+        .y_desc("η / η*(α, μ) (log scale)")
+        .x_label_formatter(&|u| f.alpha.label(*u))
+        .y_label_formatter(&|u| f.factor.label(*u))
+        .label_style((FAMILY, 12))
+        .axis_desc_style((FAMILY, 14))
+        .draw()
+        .map_err(err)?;
+    Ok(())
+}
+
+/// The reduction of cell `c` (factors `edges`) written in it, in per cent: in the half of the
+/// cell away from a boundary of its opening that lies in it.
+fn percent(
+    ch: &mut Chart,
+    map: &LoadMap,
+    c: &LoadCell,
+    (lo, hi): (f64, f64),
+    f: &Frame,
+    top: f64,
+) -> Result<(), String> {
+    let r = c.reduction().unwrap_or(0.0);
+    let bar = map
+        .boundaries
+        .iter()
+        .filter(|b| b.mu == c.mu && b.alpha == c.alpha)
+        .map(|b| (b.factors.0 * b.factors.1).sqrt())
+        .find(|&y| y > lo && y < hi);
+    let y = match bar {
+        Some(y) if y > c.factor => (lo.powi(3) * hi).powf(0.25),
+        Some(_) => (lo * hi.powi(3)).powf(0.25),
+        None => c.factor,
+    };
+    let ink = if r > 0.6 * top { WHITE } else { BLACK };
+    let style = TextStyle::from((FAMILY, 11).into_font())
+        .pos(Pos::new(HPos::Center, VPos::Center))
+        .color(&ink);
+    let text = format!("{:.1}", 100.0 * r);
+    ch.draw_series(std::iter::once(Text::new(text, f.at(c.alpha, y), style)))
+        .map_err(err)?;
+    Ok(())
+}
+
+/// A boundary of the reduction at its opening: a bar across the opening's cell at the
+/// bracket where it closed, or a vertical bar over the bracket left where it stopped.
+fn boundary(ch: &mut Chart, f: &Frame, map: &LoadMap, b: &LoadBoundary) -> Result<(), String> {
+    let i = map.alphas.iter().position(|&a| a == b.alpha).unwrap_or(0);
+    let (lo, hi) = b.factors;
+    let line = if b.stopped.is_none() {
+        let y = (lo * hi).sqrt();
+        let w = 0.3 * (f.alpha_edges[i + 1] - f.alpha_edges[i]);
+        vec![f.at(b.alpha - w, y), f.at(b.alpha + w, y)]
+    } else {
+        vec![f.at(b.alpha, lo.max(FACTOR_MIN)), f.at(b.alpha, hi)]
+    };
+    ch.draw_series(std::iter::once(PathElement::new(
+        line,
+        BLACK.stroke_width(3),
+    )))
+    .map_err(err)?;
+    Ok(())
+}
+
+/// The legend of the fills and the boundaries, and the colour bar of the reductions.
+fn legend(area: &DrawingArea<SVGBackend, Shift>, map: &LoadMap, top: f64) -> Result<(), String> {
+    let (lx, mut ly) = (8, 20);
+    area.draw(&Text::new("cells", (lx, ly), (FAMILY, 14)))
+        .map_err(err)?;
+    let has = |p: fn(&CellAnswer) -> bool| map.cells.iter().any(|c| p(&c.answer));
+    let rows = [
+        (NOT_REDUCED, "λ_c = λ_static", true),
+        (
+            NO_COLLAPSE,
+            "no collapse (no limit state)",
+            has(|a| matches!(a, CellAnswer::NoCollapse)),
+        ),
+        (
+            NO_RING,
+            "no ring (μ < μ_ms, or η ≥ 1.9)",
+            has(|a| matches!(a, CellAnswer::NoRing)),
+        ),
+        (
+            UNDECIDED,
+            "not decided",
+            has(|a| matches!(a, CellAnswer::Undecided(_))),
+        ),
+    ];
+    for (color, text, shown) in rows {
+        if shown {
+            ly += 22;
+            legend_swatch(area, (lx, ly), color, 1.0, text)?;
+            area.draw(&Rectangle::new(
+                [(lx + 2, ly + 1), (lx + 24, ly + 14)],
+                RGBColor(120, 120, 120).stroke_width(1),
+            ))
+            .map_err(err)?;
+        }
+    }
+    if !map.boundaries.is_empty() {
+        for (text, vertical) in [
+            ("end of a reduction in η", false),
+            ("  (bracket where it stopped)", true),
+        ] {
+            ly += 22;
+            let seg = if vertical {
+                vec![(lx + 13, ly - 2), (lx + 13, ly + 16)]
+            } else {
+                vec![(lx + 2, ly + 7), (lx + 24, ly + 7)]
+            };
+            area.draw(&PathElement::new(seg, BLACK.stroke_width(3)))
+                .map_err(err)?;
+            area.draw(&Text::new(text, (lx + 34, ly), (FAMILY, 13)))
+                .map_err(err)?;
+        }
+    }
+    colour_bar(area, (lx, ly + 44), top)
+}
+
+/// The colour bar of the reduction 1 − λ_c/λ_static, in per cent, from 0 to `top`.
+fn colour_bar(
+    area: &DrawingArea<SVGBackend, Shift>,
+    (x, y): (i32, i32),
+    top: f64,
+) -> Result<(), String> {
+    area.draw(&Text::new(
+        "reduction 1 − λ_c/λ_static (%)",
+        (x, y - 22),
+        (FAMILY, 13),
+    ))
+    .map_err(err)?;
+    let (steps, h) = (20, 8);
+    for k in 0..steps {
+        let v = top * (steps - k) as f64 / steps as f64;
+        let y0 = y + k * h;
+        area.draw(&Rectangle::new(
+            [(x + 2, y0), (x + 24, y0 + h)],
+            reduction_color(v, top).filled(),
+        ))
+        .map_err(err)?;
+    }
+    area.draw(&Rectangle::new(
+        [(x + 2, y), (x + 24, y + steps * h)],
+        BLACK.stroke_width(1),
+    ))
+    .map_err(err)?;
+    let label = TextStyle::from((FAMILY, 12).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
+    for (v, at) in [
+        (top, y),
+        (0.5 * top, y + steps * h / 2),
+        (0.0, y + steps * h),
+    ] {
+        area.draw(&Text::new(
+            format!("{:.1}", 100.0 * v),
+            (x + 30, at),
+            label.clone(),
+        ))
+        .map_err(err)?;
+    }
+    Ok(())
+}
