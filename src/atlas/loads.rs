@@ -14,7 +14,8 @@ use crate::arch::InputError;
 use crate::collapse_mode::CollapseMode;
 use crate::limit::{solve, Outcome};
 use crate::load::LiveLoad;
-use crate::multiplier::{survey, LoadOutcome};
+use crate::limit_states::LimitState;
+use crate::multiplier::{follow, static_range, survey, LoadOutcome, StaticRange};
 use crate::settings::Settings;
 use crate::threads;
 
@@ -118,9 +119,27 @@ pub struct LoadBoundary {
     pub factors: (f64, f64),
     /// The same, as thicknesses η.
     pub etas: (f64, f64),
-    /// Why the bisection stopped before [`BOUNDARY_REL`] (a midpoint without a ratio), if it
-    /// did.
+    /// Why the bisection stopped before [`BOUNDARY_REL`] (a midpoint without a ratio, or
+    /// undecided where the reduced side's limit state could not be followed), if it did.
     pub stopped: Option<String>,
+    /// The reduction 1 − λ_c/λ_static at the bracket's reduced end (the limit state there
+    /// from the survey, or followed to it).
+    pub reduction: f64,
+    /// Midpoints where the survey did not decide but the reduced side's least limit state,
+    /// followed there ([`crate::multiplier::follow`]), is a limit state below λ_static: the
+    /// midpoint is reduced.
+    pub followed: usize,
+}
+
+impl LoadBoundary {
+    /// The reduced end of the bracket: (factor, η).
+    pub fn reduced_end(&self) -> (f64, f64) {
+        if self.reduced_below {
+            (self.factors.0, self.etas.0)
+        } else {
+            (self.factors.1, self.etas.1)
+        }
+    }
 }
 
 /// A boundary of the reduction is bisected until its factors are this close (relative).
@@ -152,6 +171,15 @@ impl LoadMap {
         self.at(mu)
             .filter(|c| c.reduced())
             .max_by(|a, b| a.reduction().unwrap().total_cmp(&b.reduction().unwrap()))
+    }
+
+    /// The boundary at `mu` whose reduced end has the largest reduction, if any: a branch's
+    /// reduction can grow towards where the branch ends, beyond every cell's.
+    pub fn largest_at_boundary(&self, mu: f64) -> Option<&LoadBoundary> {
+        self.boundaries
+            .iter()
+            .filter(|b| b.mu == mu && b.reduction.is_finite())
+            .max_by(|a, b| a.reduction.total_cmp(&b.reduction))
     }
 
     /// The semicircle's largest reduction at `mu` (0 where it has none; `None` where the
@@ -245,22 +273,53 @@ fn boundary(
         ..*rect
     };
     let (mut f0, mut f1) = (lo.factor, hi.factor);
-    let mut stopped = None;
+    // the reduced end's least limit state, followed where the survey does not decide
+    let reduced_end = if below { lo } else { hi };
+    let (_, mut tracked) = surveyed(rect, (alpha, reduced_end.factor, mu), &Ok(star), settings)?;
+    let mut reduction = reduced_end.reduction().unwrap_or(f64::NAN);
+    let (mut stopped, mut followed) = (None, 0);
     while f1 - f0 > BOUNDARY_REL * f1 {
         let mid = 0.5 * (f0 + f1);
-        let c = cell(rect, (alpha, mid, mu), &Ok(star), settings)?;
-        match c.ratio() {
-            Some(_) if c.reduced() == below => f0 = mid,
-            Some(_) => f1 = mid,
-            None => {
-                let what = match c.answer {
-                    CellAnswer::Undecided(_) => "the load survey did not decide",
+        let (c, least) = surveyed(rect, (alpha, mid, mu), &Ok(star), settings)?;
+        let reduced = match (&c.answer, c.ratio()) {
+            (_, Some(_)) => c.reduced(),
+            (CellAnswer::Undecided(_), None) => {
+                match follow_reduced(rect, (alpha, mid * star, mu), tracked.as_ref(), settings)? {
+                    Ok((state, r)) => {
+                        followed += 1;
+                        tracked = Some(state);
+                        reduction = r;
+                        if below {
+                            f0 = mid
+                        } else {
+                            f1 = mid
+                        }
+                        continue;
+                    }
+                    Err(why) => {
+                        let e = mid * star;
+                        stopped = Some(format!("the load survey did not decide at eta = {e} ({why})"));
+                        break;
+                    }
+                }
+            }
+            (answer, None) => {
+                let what = match answer {
                     CellAnswer::NoCollapse => "no collapse",
                     _ => "no ring",
                 };
                 stopped = Some(format!("{what} at eta = {}", mid * star));
                 break;
             }
+        };
+        if reduced {
+            tracked = least;
+            reduction = c.reduction().unwrap_or(f64::NAN);
+        }
+        if reduced == below {
+            f0 = mid
+        } else {
+            f1 = mid
         }
     }
     Ok(LoadBoundary {
@@ -270,7 +329,46 @@ fn boundary(
         factors: (f0, f1),
         etas: (f0 * star, f1 * star),
         stopped,
+        reduction,
+        followed,
     })
+}
+
+/// The reduced side's least limit state `from` followed to (α, η, μ) where the survey did
+/// not decide: the state there and its reduction below λ_static, if it is a limit state
+/// below λ_static by more than [`REDUCTION_TOL`]; else why not.
+fn follow_reduced(
+    rect: &Rectangle,
+    (alpha, eta, mu): (f64, f64, f64),
+    from: Option<&LimitState>,
+    settings: &Settings,
+) -> Result<Result<(LimitState, f64), String>, InputError> {
+    let Some(from) = from else {
+        return Ok(Err("no limit state to follow".into()));
+    };
+    let (arch, load) = (rect.arch(alpha)?, horizontal());
+    let top = match static_range(&arch, eta, mu, &load, settings)? {
+        Ok(StaticRange::Interval { max: Some(m), .. }) => m.0,
+        _ => return Ok(Err("no finite lambda_static".into())),
+    };
+    Ok(match follow(&arch, (eta, mu), &load, from, settings) {
+        Ok(s) if 1.0 - s.t / top > REDUCTION_TOL => {
+            let r = 1.0 - s.t / top;
+            Ok((s, r))
+        }
+        Ok(s) => Err(format!(
+            "the followed limit state lambda = {} is not below lambda_static = {top}",
+            s.t
+        )),
+        Err(why) => Err(format!("the followed limit state ends: {why}")),
+    })
+}
+
+/// The horizontal acceleration of the map, towards the right springing.
+fn horizontal() -> LiveLoad {
+    LiveLoad::Horizontal {
+        towards_right: true,
+    }
 }
 
 /// The ranges, each named by its flag.
@@ -334,10 +432,20 @@ fn least(rect: &Rectangle, alpha: f64, mu: f64, settings: &Settings) -> Result<L
 /// One cell: the ring f η\* and its load survey.
 fn cell(
     rect: &Rectangle,
-    (alpha, factor, mu): (f64, f64, f64),
+    at: (f64, f64, f64),
     least: &Least,
     settings: &Settings,
 ) -> Result<LoadCell, InputError> {
+    surveyed(rect, at, least, settings).map(|(c, _)| c)
+}
+
+/// [`cell`], and the least limit state of its survey where it has one.
+fn surveyed(
+    rect: &Rectangle,
+    (alpha, factor, mu): (f64, f64, f64),
+    least: &Least,
+    settings: &Settings,
+) -> Result<(LoadCell, Option<LimitState>), InputError> {
     let arch = rect.arch(alpha)?;
     let at = |eta, answer| LoadCell {
         alpha,
@@ -349,22 +457,24 @@ fn cell(
     };
     let eta_star = match least {
         Ok(e) => *e,
-        Err(answer) => return Ok(at(None, answer.clone())),
+        Err(answer) => return Ok((at(None, answer.clone()), None)),
     };
     let eta = factor * eta_star;
     if eta >= ETA_MAX {
-        return Ok(at(None, CellAnswer::NoRing));
+        return Ok((at(None, CellAnswer::NoRing), None));
     }
-    let load = LiveLoad::Horizontal {
-        towards_right: true,
-    };
+    let load = horizontal();
+    let mut first = None;
     let answer = match survey(&arch, eta, mu, &load, settings)? {
         Ok(LoadOutcome::Limits(sv)) => match (sv.lambda_static, sv.limit_states.first()) {
-            (Some((lambda_static, _)), Some(least)) => CellAnswer::Ratio {
-                lambda_static,
-                lambda_c: least.t,
-                mode: least.mode,
-            },
+            (Some((lambda_static, _)), Some(least)) => {
+                first = Some(least.clone());
+                CellAnswer::Ratio {
+                    lambda_static,
+                    lambda_c: least.t,
+                    mode: least.mode,
+                }
+            }
             _ => CellAnswer::NoCollapse,
         },
         Ok(LoadOutcome::NoCollapse { .. }) => CellAnswer::NoCollapse,
@@ -375,5 +485,5 @@ fn cell(
     if rect.certify && c.reduced() {
         c.certified = Some(certified_reduction(&arch, (eta, mu), &load, settings));
     }
-    Ok(c)
+    Ok((c, first))
 }

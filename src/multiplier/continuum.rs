@@ -705,15 +705,30 @@ pub fn carry_over(
     h: f64,
     settings: &Settings,
 ) -> Option<Extreme> {
-    let p = Loaded::new(arch, eta, mu, load);
     let breaks = load.breaks(arch, eta);
     let fixed = |c: &(Contact, Side)| c.0.at == Location::Springing || breaks.contains(&c.0.beta);
     let merged: Vec<Tagged<Side>> = family::merge_adjacent(pattern, h, fixed)
         .into_iter()
         .collect();
+    followed(arch, (eta, mu), load, (lambda, x), &merged, settings)
+}
+
+/// The state of a continuous pattern at (η, μ): Newton with λ unknown from (λ, x) (a limit
+/// state of the pattern at another thickness or friction, or a discrete one carried over),
+/// the root within 0.1 (relative) of the start and verified over the whole arch; `None`
+/// when either fails. Returns λ, the state and its active contacts.
+pub(crate) fn followed(
+    arch: &Arch,
+    (eta, mu): (f64, f64),
+    load: &LiveLoad,
+    (lambda, x): (f64, Reactions),
+    pattern: &[Tagged<Side>],
+    settings: &Settings,
+) -> Option<Extreme> {
+    let p = Loaded::new(arch, eta, mu, load);
     let goal = Refinement {
         maximise: None,
         reach: 0.1,
     };
-    newton_verified(&p, x, lambda, &merged, goal, settings).ok()
+    newton_verified(&p, x, lambda, pattern, goal, settings).ok()
 }

@@ -13,12 +13,14 @@ pub mod continuum;
 pub mod curve;
 mod face;
 mod limit_state;
+
 mod outcome;
 mod range;
 mod survey;
 
 pub use outcome::{LoadOutcome, LoadSurvey, StaticRange, UNBOUNDED_SEARCH_TOP};
 pub use range::{check_load, static_range};
+pub use limit_state::follow;
 pub use survey::{continua, survey};
 
 pub use curve::{sample, trace, CurveSample, LoadCurve};

@@ -912,6 +912,8 @@ fn load_map_figure_fills_each_cell_by_its_answer() {
         factors: (reduced.factor * 1.01, reduced.factor * 1.01),
         etas: (reduced.factor * 1.01 * star, reduced.factor * 1.01 * star),
         stopped: None,
+        reduction: 0.125,
+        followed: 0,
     }];
     assert!(next > reduced.factor * 1.01);
     let svg = plot_load_map::svg(&map).unwrap();

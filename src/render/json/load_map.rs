@@ -21,6 +21,9 @@ struct SummaryJson {
     undecided: usize,
     reduced: usize,
     largest: Option<LargestJson>,
+    /// The boundary whose reduced end has the largest reduction (at least this where its
+    /// limit state was followed there).
+    largest_at_boundary: Option<LargestJson>,
     /// The semicircle's largest reduction (null: the map holds no semicircle).
     semicircle_largest: Option<f64>,
 }
@@ -59,9 +62,17 @@ struct BoundaryJson {
     /// The last thickness of the thinner side's answer and the first of the thicker's.
     eta_bracket: [f64; 2],
     factor_bracket: [f64; 2],
-    /// Why the bisection stopped before its resolution (a midpoint without a ratio).
+    /// Why the bisection stopped before its resolution (a midpoint without a ratio, or
+    /// undecided where the reduced side's limit state could not be followed).
     #[serde(skip_serializing_if = "Option::is_none")]
     stopped: Option<String>,
+    /// 1 − λ/λ_static of the limit state at the bracket's reduced end: the survey's least
+    /// (λ_c), or the one followed there (then the reduction is at least this).
+    reduction: f64,
+    /// Midpoints the survey did not decide, decided reduced by the reduced side's least
+    /// limit state followed there (Newton on its pattern, verified over the arch, a
+    /// mechanism with positive live power, below λ_static).
+    followed: usize,
 }
 
 fn boundary_json(b: &LoadBoundary) -> BoundaryJson {
@@ -76,6 +87,8 @@ fn boundary_json(b: &LoadBoundary) -> BoundaryJson {
         eta_bracket: [b.etas.0, b.etas.1],
         factor_bracket: [b.factors.0, b.factors.1],
         stopped: b.stopped.clone(),
+        reduction: b.reduction,
+        followed: b.followed,
     }
 }
 
@@ -148,6 +161,12 @@ fn summary(map: &LoadMap, mu: f64) -> SummaryJson {
             eta: c.eta,
             factor: c.factor,
             reduction: c.reduction(),
+        }),
+        largest_at_boundary: map.largest_at_boundary(mu).map(|b| LargestJson {
+            alpha: b.alpha,
+            eta: Some(b.reduced_end().1),
+            factor: b.reduced_end().0,
+            reduction: Some(b.reduction),
         }),
         semicircle_largest: map.semicircle(mu),
     }

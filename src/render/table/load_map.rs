@@ -115,24 +115,49 @@ fn boundaries(s: &mut String, map: &LoadMap) {
     );
     let _ = writeln!(
         s,
-        "          mu       alpha  eta (bracket)                  reduced side"
+        "          mu       alpha  eta (bracket)                  reduction at its reduced side"
     );
     for b in &map.boundaries {
         let _ = writeln!(
             s,
-            "  {:>10}  {:>10}  [{}, {}]  {}{}",
+            "  {:>10}  {:>10}  [{}, {}]  {} {}{}{}",
             sig(b.mu, 6),
             sig(b.alpha, 6),
             sig(b.etas.0, 12),
             sig(b.etas.1, 12),
+            sig(b.reduction, 4),
             if b.reduced_below {
                 "thinner"
             } else {
                 "thicker"
             },
+            if b.followed > 0 {
+                format!(" ({} midpoints decided by following its limit state)", b.followed)
+            } else {
+                String::new()
+            },
             b.stopped
                 .as_ref()
                 .map_or(String::new(), |w| format!(" (stopped: {w})"))
         );
+    }
+    for &mu in &map.grid.mus {
+        if let Some(b) = map.largest_at_boundary(mu) {
+            let (_, eta) = b.reduced_end();
+            let cells = map.largest(mu).and_then(|c| c.reduction()).unwrap_or(0.0);
+            let _ = writeln!(
+                s,
+                "largest reduction at a boundary's reduced end, mu = {}: {} (alpha {}, eta {}){}",
+                sig(mu, 6),
+                sig(b.reduction, 4),
+                sig(b.alpha, 6),
+                sig(eta, 10),
+                if b.reduction > cells {
+                    ", more than any cell's: the reduction grows towards where its branch ends"
+                } else {
+                    ""
+                }
+            );
+        }
     }
 }
