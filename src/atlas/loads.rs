@@ -13,8 +13,8 @@ use super::column::Rectangle;
 use crate::arch::InputError;
 use crate::collapse_mode::CollapseMode;
 use crate::limit::{solve, Outcome};
-use crate::load::LiveLoad;
 use crate::limit_states::LimitState;
+use crate::load::LiveLoad;
 use crate::multiplier::{follow, static_range, survey, LoadOutcome, StaticRange};
 use crate::settings::Settings;
 use crate::threads;
@@ -298,7 +298,9 @@ fn boundary(
                     }
                     Err(why) => {
                         let e = mid * star;
-                        stopped = Some(format!("the load survey did not decide at eta = {e} ({why})"));
+                        stopped = Some(format!(
+                            "the load survey did not decide at eta = {e} ({why})"
+                        ));
                         break;
                     }
                 }

@@ -18,9 +18,9 @@ mod outcome;
 mod range;
 mod survey;
 
+pub use limit_state::follow;
 pub use outcome::{LoadOutcome, LoadSurvey, StaticRange, UNBOUNDED_SEARCH_TOP};
 pub use range::{check_load, static_range};
-pub use limit_state::follow;
 pub use survey::{continua, survey};
 
 pub use curve::{sample, trace, CurveSample, LoadCurve};

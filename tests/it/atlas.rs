@@ -437,6 +437,66 @@ fn the_load_map_finds_the_reduction_and_agrees_with_the_brute_force() {
         other => panic!("{other:?}"),
     };
     assert!(reduced(b.etas.0) && !reduced(b.etas.1), "{b:?}");
+    // α = 0.5: near where its reduction ends the survey does not decide (its 48-, 96- and
+    // 192-piece lists do not settle); the bisection follows the reduced side's limit state
+    // there and locates the end to 1e-9, where the reduction is larger than the cell's
+    let b = map.boundaries.iter().find(|b| b.alpha == 0.5).unwrap();
+    assert!(
+        b.reduced_below && b.stopped.is_none() && b.followed > 0,
+        "{b:?}"
+    );
+    assert!(b.etas.1 - b.etas.0 <= 2e-9 * b.etas.1, "{b:?}");
+    let cell = map
+        .cells
+        .iter()
+        .find(|c| c.alpha == 0.5 && c.reduced())
+        .unwrap();
+    assert!(b.reduction > cell.reduction().unwrap() + 0.05, "{b:?}");
+    assert!(!reduced(b.etas.1), "{b:?}");
+    // independently: the cell's least limit state followed to the reduced end in eight steps
+    // gives the same reduction, and it is a limit state of the discrete arch whose joints are
+    // the springings and its contacts (the brute force of `load_reference`: its own statics
+    // and kinematic LP)
+    let arch = Arch::symmetric(0.5, WeightModel::Centreline).unwrap();
+    let (eta_c, eta_b) = (cell.eta.unwrap(), b.etas.0);
+    let Ok(LoadOutcome::Limits(sv)) =
+        load_survey(&arch, eta_c, 1.0, &horizontal, &settings).unwrap()
+    else {
+        panic!("the cell's survey")
+    };
+    let mut st = sv.limit_states[0].clone();
+    for k in 1..=8 {
+        let eta = eta_c + (eta_b - eta_c) * k as f64 / 8.0;
+        st = arch_enum::multiplier::follow(&arch, (eta, 1.0), &horizontal, &st, &settings)
+            .unwrap_or_else(|e| panic!("eta = {eta}: {e}"));
+    }
+    let top = match arch_enum::multiplier::static_range(&arch, eta_b, 1.0, &horizontal, &settings)
+        .unwrap()
+        .unwrap()
+    {
+        arch_enum::multiplier::StaticRange::Interval { max: Some(m), .. } => m.0,
+        other => panic!("{other:?}"),
+    };
+    assert!(
+        (1.0 - st.t / top - b.reduction).abs() < 1e-9,
+        "{st:?} vs {b:?}"
+    );
+    let mut joints = vec![arch.beta_right(), arch.beta_left()];
+    joints.extend(st.pattern.iter().map(|c| c.beta));
+    joints.sort_by(f64::total_cmp);
+    joints.dedup_by(|a, b| (*a - *b).abs() < 1e-12);
+    let listed =
+        crate::load_reference::Case::new(&joints, false, eta_b, 1.0, horizontal).brute_force();
+    eprintln!(
+        "alpha 0.5: reduction {} at eta {eta_b} ({} midpoints followed); joints {joints:?}, brute force {listed:?}",
+        b.reduction, b.followed
+    );
+    assert!(
+        listed.iter().any(|l| (l - st.t).abs() <= 1e-8 * st.t),
+        "{:?}: lambda = {} not among {listed:?}",
+        joints,
+        st.t
+    );
     for c in map.cells.iter().filter(|c| c.eta.is_some()).step_by(5) {
         let arch = Arch::symmetric(c.alpha, WeightModel::Centreline).unwrap();
         let alone = load_survey(&arch, c.eta.unwrap(), c.mu, &horizontal, &settings).unwrap();

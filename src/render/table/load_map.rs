@@ -132,7 +132,10 @@ fn boundaries(s: &mut String, map: &LoadMap) {
                 "thicker"
             },
             if b.followed > 0 {
-                format!(" ({} midpoints decided by following its limit state)", b.followed)
+                format!(
+                    " ({} midpoints decided by following its limit state)",
+                    b.followed
+                )
             } else {
                 String::new()
             },
