@@ -136,16 +136,23 @@ pub fn svg(map: &LoadMap) -> Result<String, String> {
 fn caption(map: &LoadMap, mu: f64) -> String {
     let answered = map.at(mu).filter(|c| c.ratio().is_some()).count();
     let reduced = map.at(mu).filter(|c| c.reduced()).count();
-    let head =
-        format!("μ = {mu}: λ_c < λ_static in {reduced} of {answered} cells with a collapse load");
-    match map.largest(mu) {
+    let head = format!("μ = {mu}: λ_c < λ_static in {reduced} of {answered} cells");
+    let cells = match map.largest(mu) {
         Some(c) => format!(
-            "{head}, the most by {:.1} % at α = {}, η = {:.4}",
+            "{head}, most {:.1} % (α = {}, η = {:.4})",
             100.0 * c.reduction().unwrap(),
             c.alpha,
             c.eta.unwrap_or(f64::NAN)
         ),
         None => head,
+    };
+    match map.largest_at_boundary(mu) {
+        Some(b) => format!(
+            "{cells}; {:.1} % at a boundary (α = {})",
+            100.0 * b.reduction,
+            b.alpha
+        ),
+        None => cells,
     }
 }
 
@@ -284,11 +291,13 @@ fn legend(area: &DrawingArea<SVGBackend, Shift>, map: &LoadMap, top: f64) -> Res
             .map_err(err)?;
         }
     }
+    let stopped = map.boundaries.iter().any(|b| b.stopped.is_some());
     if !map.boundaries.is_empty() {
-        for (text, vertical) in [
+        let rows = [
             ("end of a reduction in η", false),
             ("  (bracket where it stopped)", true),
-        ] {
+        ];
+        for (text, vertical) in rows.into_iter().filter(|r| stopped || !r.1) {
             ly += 22;
             let seg = if vertical {
                 vec![(lx + 13, ly - 2), (lx + 13, ly + 16)]
