@@ -99,6 +99,15 @@ impl LoadCell {
         }
     }
 
+    /// Whether the cell says whether λ_c lies below λ_static: it has both, or the load has
+    /// no limit state at all (no collapse, so no reduction).
+    pub fn answered(&self) -> bool {
+        matches!(
+            self.answer,
+            CellAnswer::Ratio { .. } | CellAnswer::NoCollapse
+        )
+    }
+
     /// Whether non-associative friction lowers λ_c below λ_static here.
     pub fn reduced(&self) -> bool {
         self.reduction().is_some_and(|r| r > REDUCTION_TOL)
@@ -106,7 +115,7 @@ impl LoadCell {
 }
 
 /// Where a reduction begins or ends along η at one opening and friction: bisected in the
-/// thickness factor between two cells that both have a ratio, one reduced and one not.
+/// thickness factor between two answered cells ([`LoadCell::answered`]), one reduced and one not.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LoadBoundary {
     /// Opening.
@@ -238,7 +247,7 @@ pub fn load_map(
         .flat_map(|(column, star)| {
             column
                 .windows(2)
-                .filter(|w| w[0].ratio().is_some() && w[1].ratio().is_some())
+                .filter(|w| w[0].answered() && w[1].answered())
                 .filter(|w| w[0].reduced() != w[1].reduced())
                 .map(move |w| (&w[0], &w[1], star))
         })
@@ -283,6 +292,7 @@ fn boundary(
         let (c, least) = surveyed(rect, (alpha, mid, mu), &Ok(star), settings)?;
         let reduced = match (&c.answer, c.ratio()) {
             (_, Some(_)) => c.reduced(),
+            (CellAnswer::NoCollapse, None) => false,
             (CellAnswer::Undecided(_), None) => {
                 match follow_reduced(rect, (alpha, mid * star, mu), tracked.as_ref(), settings)? {
                     Ok((state, r)) => {
@@ -305,12 +315,8 @@ fn boundary(
                     }
                 }
             }
-            (answer, None) => {
-                let what = match answer {
-                    CellAnswer::NoCollapse => "no collapse",
-                    _ => "no ring",
-                };
-                stopped = Some(format!("{what} at eta = {}", mid * star));
+            (_, None) => {
+                stopped = Some(format!("no ring at eta = {}", mid * star));
                 break;
             }
         };

@@ -482,7 +482,7 @@ impl LoadedCont {
 
     /// The state is admissible on a dense grid of every piece, with the dead statics of
     /// `model::ntm` (not the rows above) plus the live terms.
-    fn dense_check(&self, z: &[f64; 4]) -> Result<(), String> {
+    pub(crate) fn dense_check(&self, z: &[f64; 4]) -> Result<(), String> {
         let x = [z[0], z[1], z[2]];
         let zs = z.iter().map(|v| v.abs()).fold(0.0, f64::max);
         let scale = (1.0 + zs) * (1.0 + if self.mu.is_finite() { self.mu } else { 0.0 });
