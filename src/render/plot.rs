@@ -58,13 +58,17 @@ pub fn svg_to_png(svg: &str, width: u32) -> Result<Vec<u8>, String> {
 /// "0.3 (17°)": μ with up to 3 significant digits, trailing zeros trimmed, and the
 /// friction angle φ = atan μ.
 pub fn mu_label(mu: f64) -> String {
-    let t = short_num(mu);
-    let t = if t.contains('.') && !t.contains('e') {
+    format!("{} ({:.0}°)", short_trimmed(mu), mu.atan().to_degrees())
+}
+
+/// [`short_num`] with trailing zeros trimmed: "0.4", "0.593", "12.5".
+pub fn short_trimmed(v: f64) -> String {
+    let t = short_num(v);
+    if t.contains('.') && !t.contains('e') {
         t.trim_end_matches('0').trim_end_matches('.').to_string()
     } else {
         t
-    };
-    format!("{t} ({:.0}°)", mu.atan().to_degrees())
+    }
 }
 
 /// A number with 3 significant digits, plain where readable.

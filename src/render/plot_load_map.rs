@@ -7,7 +7,7 @@
 //! left where the bisection stopped).
 
 use crate::atlas::loads::{CellAnswer, LoadBoundary, LoadCell, LoadMap, FACTOR_MIN};
-use crate::render::plot::{cell_edges, legend_swatch, Axis, AxisCoord, FAMILY};
+use crate::render::plot::{cell_edges, legend_swatch, short_trimmed, Axis, AxisCoord, FAMILY};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -136,13 +136,16 @@ pub fn svg(map: &LoadMap) -> Result<String, String> {
 fn caption(map: &LoadMap, mu: f64) -> String {
     let answered = map.at(mu).filter(|c| c.ratio().is_some()).count();
     let reduced = map.at(mu).filter(|c| c.reduced()).count();
-    let head = format!("μ = {mu}: λ_c < λ_static in {reduced} of {answered} cells");
+    let head = format!(
+        "μ = {}: λ_c < λ_static in {reduced} of {answered} cells",
+        short_trimmed(mu)
+    );
     let cells = match map.largest(mu) {
         Some(c) => format!(
-            "{head}, most {:.1} % (α = {}, η = {:.4})",
+            "{head}, most {:.1} % (α = {}, η = {})",
             100.0 * c.reduction().unwrap(),
-            c.alpha,
-            c.eta.unwrap_or(f64::NAN)
+            short_trimmed(c.alpha),
+            short_trimmed(c.eta.unwrap_or(f64::NAN))
         ),
         None => head,
     };
@@ -150,7 +153,7 @@ fn caption(map: &LoadMap, mu: f64) -> String {
         Some(b) => format!(
             "{cells}; {:.1} % at a boundary (α = {})",
             100.0 * b.reduction,
-            b.alpha
+            short_trimmed(b.alpha)
         ),
         None => cells,
     }
@@ -185,7 +188,7 @@ fn panel(
         ])
         .map_err(err)?;
         if c.reduced() {
-            percent(&mut ch, map, c, (fe[j], fe[j + 1]), f, top)?;
+            percent(&mut ch, c, f, top)?;
         }
     }
     for b in map.boundaries.iter().filter(|b| b.mu == mu) {
@@ -204,54 +207,49 @@ fn panel(
     Ok(())
 }
 
-/// The reduction of cell `c` (factors `edges`) written in it, in per cent: in the half of the
-/// cell away from a boundary of its opening that lies in it.
-fn percent(
-    ch: &mut Chart,
-    map: &LoadMap,
-    c: &LoadCell,
-    (lo, hi): (f64, f64),
-    f: &Frame,
-    top: f64,
-) -> Result<(), String> {
+/// The reduction of cell `c` written at its centre, in per cent (white on the darker half of
+/// the scale ending at `top`).
+fn percent(ch: &mut Chart, c: &LoadCell, f: &Frame, top: f64) -> Result<(), String> {
     let r = c.reduction().unwrap_or(0.0);
-    let bar = map
-        .boundaries
-        .iter()
-        .filter(|b| b.mu == c.mu && b.alpha == c.alpha)
-        .map(|b| (b.factors.0 * b.factors.1).sqrt())
-        .find(|&y| y > lo && y < hi);
-    let y = match bar {
-        Some(y) if y > c.factor => (lo.powi(3) * hi).powf(0.25),
-        Some(_) => (lo * hi.powi(3)).powf(0.25),
-        None => c.factor,
-    };
     let ink = if r > 0.6 * top { WHITE } else { BLACK };
     let style = TextStyle::from((FAMILY, 11).into_font())
         .pos(Pos::new(HPos::Center, VPos::Center))
         .color(&ink);
     let text = format!("{:.1}", 100.0 * r);
-    ch.draw_series(std::iter::once(Text::new(text, f.at(c.alpha, y), style)))
-        .map_err(err)?;
+    ch.draw_series(std::iter::once(Text::new(
+        text,
+        f.at(c.alpha, c.factor),
+        style,
+    )))
+    .map_err(err)?;
     Ok(())
 }
 
-/// A boundary of the reduction at its opening: a bar across the opening's cell at the
-/// bracket where it closed, or a vertical bar over the bracket left where it stopped.
+/// The part of a cell's width each tick of a boundary covers, from its side.
+const TICK: f64 = 0.22;
+
+/// A boundary of the reduction at its opening: a tick at each side of the opening's cell at
+/// the bracket where it closed, or a vertical bar over the bracket left where it stopped.
 fn boundary(ch: &mut Chart, f: &Frame, map: &LoadMap, b: &LoadBoundary) -> Result<(), String> {
     let i = map.alphas.iter().position(|&a| a == b.alpha).unwrap_or(0);
     let (lo, hi) = b.factors;
-    let line = if b.stopped.is_none() {
+    let lines = if b.stopped.is_none() {
+        // a tick at each side of the cell, leaving its middle to the reduction's value
         let y = (lo * hi).sqrt();
-        let w = 0.3 * (f.alpha_edges[i + 1] - f.alpha_edges[i]);
-        vec![f.at(b.alpha - w, y), f.at(b.alpha + w, y)]
+        let (l, r) = (f.alpha_edges[i], f.alpha_edges[i + 1]);
+        let w = TICK * (r - l);
+        vec![
+            vec![f.at(l, y), f.at(l + w, y)],
+            vec![f.at(r - w, y), f.at(r, y)],
+        ]
     } else {
-        vec![f.at(b.alpha, lo.max(FACTOR_MIN)), f.at(b.alpha, hi)]
+        vec![vec![f.at(b.alpha, lo.max(FACTOR_MIN)), f.at(b.alpha, hi)]]
     };
-    ch.draw_series(std::iter::once(PathElement::new(
-        line,
-        BLACK.stroke_width(3),
-    )))
+    ch.draw_series(
+        lines
+            .into_iter()
+            .map(|l| PathElement::new(l, BLACK.stroke_width(3))),
+    )
     .map_err(err)?;
     Ok(())
 }
@@ -294,18 +292,23 @@ fn legend(area: &DrawingArea<SVGBackend, Shift>, map: &LoadMap, top: f64) -> Res
     let stopped = map.boundaries.iter().any(|b| b.stopped.is_some());
     if !map.boundaries.is_empty() {
         let rows = [
-            ("end of a reduction in η", false),
+            ("a reduction begins or ends", false),
             ("  (bracket where it stopped)", true),
         ];
         for (text, vertical) in rows.into_iter().filter(|r| stopped || !r.1) {
             ly += 22;
-            let seg = if vertical {
-                vec![(lx + 13, ly - 2), (lx + 13, ly + 16)]
+            let segs = if vertical {
+                vec![vec![(lx + 13, ly - 2), (lx + 13, ly + 16)]]
             } else {
-                vec![(lx + 2, ly + 7), (lx + 24, ly + 7)]
+                vec![
+                    vec![(lx + 2, ly + 7), (lx + 9, ly + 7)],
+                    vec![(lx + 17, ly + 7), (lx + 24, ly + 7)],
+                ]
             };
-            area.draw(&PathElement::new(seg, BLACK.stroke_width(3)))
-                .map_err(err)?;
+            for seg in segs {
+                area.draw(&PathElement::new(seg, BLACK.stroke_width(3)))
+                    .map_err(err)?;
+            }
             area.draw(&Text::new(text, (lx + 34, ly), (FAMILY, 13)))
                 .map_err(err)?;
         }

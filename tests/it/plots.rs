@@ -961,8 +961,8 @@ fn load_map_figure_fills_each_cell_by_its_answer() {
         .descendants()
         .filter(|n| n.has_tag_name("polyline") && n.attribute("stroke-width") == Some("3"))
         .count();
-    // (the legend's vertical bar only where a bisection stopped)
-    assert_eq!(bars, 2, "one boundary and its legend bar");
+    // two ticks each (the legend's vertical bar only where a bisection stopped)
+    assert_eq!(bars, 4, "one boundary and its legend");
     // from the command line: one panel per mu, every cell drawn
     let dir = std::env::temp_dir().join(format!("load_map_{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
