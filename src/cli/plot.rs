@@ -216,6 +216,10 @@ pub(crate) enum Figure {
         rect: super::atlas::RectArgs,
         #[command(flatten)]
         loads: super::atlas::LoadMapArgs,
+        /// With --horizontal: the thickness eta up the map instead of eta/eta*(alpha, mu) (the
+        /// cells of an opening at f eta*; a change at one eta across openings lies level).
+        #[arg(long, requires = "horizontal")]
+        eta_axis: bool,
         #[command(flatten)]
         output: Output,
     },
@@ -366,12 +370,15 @@ pub(crate) fn draw(figure: Figure, settings: &Settings, io: &mut Io) -> Result<S
             Ok((a, mu, eta)) => figures::scene(&a, mu, eta, settings).map(|s| plot_ecc::svg(&s)),
             Err(e) => return Err(io.bad_input(&e)),
         },
-        Figure::Atlas { rect, loads, .. } if loads.horizontal => {
-            match rect.load_map(&loads, settings) {
-                Ok(m) => Ok(crate::render::plot_load_map::svg(&m)),
-                Err(e) => return Err(io.bad_input(&e)),
-            }
-        }
+        Figure::Atlas {
+            rect,
+            loads,
+            eta_axis,
+            ..
+        } if loads.horizontal => match rect.load_map(&loads, settings) {
+            Ok(m) => Ok(crate::render::plot_load_map::svg(&m, eta_axis)),
+            Err(e) => return Err(io.bad_input(&e)),
+        },
         Figure::Atlas { rect, .. } => match rect.atlas(settings) {
             Ok(a) => Ok(crate::render::plot_atlas::svg(&a)),
             Err(e) => return Err(io.bad_input(&e)),

@@ -1,12 +1,13 @@
 //! Figure: the load map of the atlas ([`LoadMap`], `atlas --horizontal`): one panel per
-//! friction coefficient, the openings α across and the thickness factor η/η\*(α, μ) up (log
-//! scale), each cell filled by its answer — λ_c = λ_static (no reduction), a reduction
+//! friction coefficient, the openings α across and the thickness η up (log scale; the cells
+//! of an opening at η = f η\*(α, μ), so the coloured area starts at η\*), each cell filled by
+//! its answer — λ_c = λ_static (no reduction), a reduction
 //! 1 − λ_c/λ_static (a sequential scale, its value written in the cell), no collapse, no
 //! ring, not decided — and the boundaries of the reduction bisected along η drawn at their
-//! brackets (a bar across the cell where the bracket closed, a vertical bar over the stretch
-//! left where the bisection stopped).
+//! brackets (a tick at each side of the cell where the bracket closed, a vertical bar over
+//! the stretch left where the bisection stopped).
 
-use crate::atlas::loads::{CellAnswer, LoadBoundary, LoadCell, LoadMap, FACTOR_MIN};
+use crate::atlas::loads::{CellAnswer, LoadBoundary, LoadCell, LoadMap};
 use crate::render::plot::{cell_edges, legend_swatch, short_trimmed, Axis, AxisCoord, FAMILY};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -65,47 +66,78 @@ fn err(e: impl std::fmt::Display) -> String {
 
 type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<AxisCoord, AxisCoord>>;
 
-/// The axes of a panel and the edges of its cells.
+/// The axes of one μ's panel and the edges of its cells: opening α across and, up (log
+/// scale), the thickness factor f or (`by_eta`) the thickness η = f η\*(α, μ); an
+/// opening's cells reach midway between its thicknesses.
 struct Frame {
+    by_eta: bool,
     alpha: Axis,
-    factor: Axis,
+    up: Axis,
     alpha_edges: Vec<f64>,
     factor_edges: Vec<f64>,
+    /// What each opening's factors are multiplied by up the axis: η\*(α, μ) by η (`None`
+    /// where the opening has no ring: no η\* to scale), else 1.
+    scales: Vec<Option<f64>>,
 }
 
 impl Frame {
-    fn new(map: &LoadMap) -> Frame {
+    fn new(map: &LoadMap, mu: f64, by_eta: bool) -> Frame {
         let (ae, fe) = (
             cell_edges(&map.alphas, false),
             cell_edges(&map.factors, true),
         );
+        let scales: Vec<Option<f64>> = map
+            .alphas
+            .iter()
+            .map(|&a| match by_eta {
+                true => map
+                    .at(mu)
+                    .find(|c| c.alpha == a && c.eta.is_some())
+                    .map(|c| c.eta.unwrap() / c.factor),
+                false => Some(1.0),
+            })
+            .collect();
+        let (lo, hi) = scales
+            .iter()
+            .flatten()
+            .fold((f64::INFINITY, 0.0f64), |(l, h), s| {
+                (l.min(fe[0] * s), h.max(fe[fe.len() - 1] * s))
+            });
+        let (lo, hi) = match (by_eta, lo < hi) {
+            (true, true) => (lo, hi.min(2.0)),
+            (true, false) => (0.1, 2.0),
+            (false, _) => (fe[0], fe[fe.len() - 1]),
+        };
         Frame {
+            by_eta,
             alpha: Axis {
                 lo: ae[0],
                 hi: ae[ae.len() - 1],
                 log: false,
             },
-            factor: Axis {
-                lo: fe[0],
-                hi: fe[fe.len() - 1],
-                log: true,
-            },
+            up: Axis { lo, hi, log: true },
             alpha_edges: ae,
             factor_edges: fe,
+            scales,
         }
     }
 
-    fn at(&self, alpha: f64, factor: f64) -> (f64, f64) {
-        (self.alpha.to(alpha), self.factor.to(factor))
+    /// The chart point at `alpha` of the factor `factor` of the opening with index `i`.
+    fn at(&self, i: usize, alpha: f64, factor: f64) -> Option<(f64, f64)> {
+        let y = factor * self.scales[i]?;
+        Some((
+            self.alpha.to(alpha),
+            self.up.to(y.clamp(self.up.lo, self.up.hi)),
+        ))
     }
 }
 
-/// Draws the load map.
-pub fn svg(map: &LoadMap) -> Result<String, String> {
+/// Draws the load map, up the thickness factor η/η\*(α, μ), or the thickness η itself
+/// (`by_eta`: a change at one η across openings then lies level).
+pub fn svg(map: &LoadMap, by_eta: bool) -> Result<String, String> {
     if map.alphas.len() < 2 || map.factors.len() < 2 {
         return Err("a load map needs at least 2 openings and 2 thicknesses".into());
     }
-    let f = Frame::new(map);
     let top = scale_top(map);
     let mus = &map.grid.mus;
     let h = TITLE + PANEL * mus.len() as u32;
@@ -124,7 +156,7 @@ pub fn svg(map: &LoadMap) -> Result<String, String> {
         head.titled(&title, (FAMILY, 17)).map_err(err)?;
         let (panels, side) = body.split_horizontally(W - RIGHT);
         for (area, &mu) in panels.split_evenly((mus.len(), 1)).iter().zip(mus) {
-            panel(area, &f, map, mu, top)?;
+            panel(area, &Frame::new(map, mu, by_eta), map, mu, top)?;
         }
         legend(&side, map, top)?;
         root.present().map_err(err)?;
@@ -173,22 +205,24 @@ fn panel(
         .margin_right(20)
         .x_label_area_size(48)
         .y_label_area_size(70)
-        .build_cartesian_2d(f.alpha.range(), f.factor.range())
+        .build_cartesian_2d(f.alpha.range(), f.up.range())
         .map_err(err)?;
     let (ae, fe) = (&f.alpha_edges, &f.factor_edges);
     for c in map.at(mu) {
         let i = map.alphas.iter().position(|&a| a == c.alpha).unwrap_or(0);
         let j = map.factors.iter().position(|&x| x == c.factor).unwrap_or(0);
-        let corners = [f.at(ae[i], fe[j]), f.at(ae[i + 1], fe[j + 1])];
+        let (Some(p0), Some(p1)) = (f.at(i, ae[i], fe[j]), f.at(i, ae[i + 1], fe[j + 1])) else {
+            continue;
+        };
         let color = cell_color(c, top);
         // the outline in the same colour closes the anti-aliasing seams
         ch.draw_series([
-            Rectangle::new(corners, color.filled()),
-            Rectangle::new(corners, color.stroke_width(1)),
+            Rectangle::new([p0, p1], color.filled()),
+            Rectangle::new([p0, p1], color.stroke_width(1)),
         ])
         .map_err(err)?;
-        if c.reduced() {
-            percent(&mut ch, c, f, top)?;
+        if let (true, Some(at)) = (c.reduced(), f.at(i, c.alpha, c.factor)) {
+            percent(&mut ch, c, at, top)?;
         }
     }
     for b in map.boundaries.iter().filter(|b| b.mu == mu) {
@@ -197,9 +231,13 @@ fn panel(
     ch.configure_mesh()
         .disable_mesh()
         .x_desc("opening α (rad)")
-        .y_desc("η / η*(α, μ) (log scale)")
+        .y_desc(if f.by_eta {
+            "thickness ratio η = t / r (log scale)"
+        } else {
+            "η / η*(α, μ) (log scale)"
+        })
         .x_label_formatter(&|u| f.alpha.label(*u))
-        .y_label_formatter(&|u| f.factor.label(*u))
+        .y_label_formatter(&|u| f.up.label(*u))
         .label_style((FAMILY, 12))
         .axis_desc_style((FAMILY, 14))
         .draw()
@@ -207,21 +245,17 @@ fn panel(
     Ok(())
 }
 
-/// The reduction of cell `c` written at its centre, in per cent (white on the darker half of
-/// the scale ending at `top`).
-fn percent(ch: &mut Chart, c: &LoadCell, f: &Frame, top: f64) -> Result<(), String> {
+/// The reduction of cell `c` written at its centre `at`, in per cent (white on the darker
+/// half of the scale ending at `top`).
+fn percent(ch: &mut Chart, c: &LoadCell, at: (f64, f64), top: f64) -> Result<(), String> {
     let r = c.reduction().unwrap_or(0.0);
     let ink = if r > 0.6 * top { WHITE } else { BLACK };
     let style = TextStyle::from((FAMILY, 11).into_font())
         .pos(Pos::new(HPos::Center, VPos::Center))
         .color(&ink);
     let text = format!("{:.1}", 100.0 * r);
-    ch.draw_series(std::iter::once(Text::new(
-        text,
-        f.at(c.alpha, c.factor),
-        style,
-    )))
-    .map_err(err)?;
+    ch.draw_series(std::iter::once(Text::new(text, at, style)))
+        .map_err(err)?;
     Ok(())
 }
 
@@ -233,24 +267,24 @@ const TICK: f64 = 0.22;
 fn boundary(ch: &mut Chart, f: &Frame, map: &LoadMap, b: &LoadBoundary) -> Result<(), String> {
     let i = map.alphas.iter().position(|&a| a == b.alpha).unwrap_or(0);
     let (lo, hi) = b.factors;
+    let (l, r) = (f.alpha_edges[i], f.alpha_edges[i + 1]);
+    let w = TICK * (r - l);
+    let y = (lo * hi).sqrt();
     let lines = if b.stopped.is_none() {
         // a tick at each side of the cell, leaving its middle to the reduction's value
-        let y = (lo * hi).sqrt();
-        let (l, r) = (f.alpha_edges[i], f.alpha_edges[i + 1]);
-        let w = TICK * (r - l);
-        vec![
-            vec![f.at(l, y), f.at(l + w, y)],
-            vec![f.at(r - w, y), f.at(r, y)],
-        ]
+        vec![[(l, y), (l + w, y)], [(r - w, y), (r, y)]]
     } else {
-        vec![vec![f.at(b.alpha, lo.max(FACTOR_MIN)), f.at(b.alpha, hi)]]
+        vec![[(b.alpha, lo), (b.alpha, hi)]]
     };
-    ch.draw_series(
-        lines
-            .into_iter()
-            .map(|l| PathElement::new(l, BLACK.stroke_width(3))),
-    )
-    .map_err(err)?;
+    for [p, q] in lines {
+        if let (Some(p), Some(q)) = (f.at(i, p.0, p.1), f.at(i, q.0, q.1)) {
+            ch.draw_series(std::iter::once(PathElement::new(
+                vec![p, q],
+                BLACK.stroke_width(3),
+            )))
+            .map_err(err)?;
+        }
+    }
     Ok(())
 }
 

@@ -916,7 +916,7 @@ fn load_map_figure_fills_each_cell_by_its_answer() {
         followed: 0,
     }];
     assert!(next > reduced.factor * 1.01);
-    let svg = plot_load_map::svg(&map).unwrap();
+    let svg = plot_load_map::svg(&map, false).unwrap();
     let doc = parse(&svg);
     let fills = rect_fills(&doc);
     let count = |c: plotters::style::RGBColor| fills.iter().filter(|f| f.0 == hex(c)).count();
@@ -995,6 +995,30 @@ fn load_map_figure_fills_each_cell_by_its_answer() {
     let svg = std::fs::read_to_string(&out).unwrap();
     assert_eq!(svg.matches("μ = 0.6:").count(), 1);
     assert_eq!(svg.matches("μ = 1:").count(), 1);
+    assert!(svg.contains("η / η*(α, μ)"), "the factor up the map");
+    // the heights at which cells start: one row of edges shared by every opening
+    let rows = |svg: &str| {
+        let doc = parse(svg);
+        let mut ys: Vec<i64> = rect_fills(&doc)
+            .iter()
+            .filter(|(_, [_, _, w, _])| *w < 200.0)
+            .map(|(_, [_, y, _, _])| (y * 10.0).round() as i64)
+            .collect();
+        ys.sort();
+        ys.dedup();
+        ys.len()
+    };
+    let by_factor = rows(&svg);
+    // --eta-axis: the thickness itself up the map, each opening's cells at f eta*, so the
+    // openings' cells start at heights of their own
+    let mut by_eta = args.to_vec();
+    by_eta.push("--eta-axis");
+    assert_eq!(plot(&by_eta, &out).status.code(), Some(0));
+    let svg = std::fs::read_to_string(&out).unwrap();
+    assert!(svg.contains("thickness ratio η = t / r") && !svg.contains("η / η*(α, μ)"));
+    assert!(rows(&svg) > by_factor, "{} vs {by_factor}", rows(&svg));
+    let o = plot(&["atlas", "--eta-axis"], &out);
+    assert_eq!(o.status.code(), Some(2), "--eta-axis needs --horizontal");
     let o = plot(
         &["atlas", "--horizontal", "--mu", "1", "--factors", "1"],
         &out,
