@@ -370,19 +370,9 @@ pub(crate) fn draw(figure: Figure, settings: &Settings, io: &mut Io) -> Result<S
             Ok((a, mu, eta)) => figures::scene(&a, mu, eta, settings).map(|s| plot_ecc::svg(&s)),
             Err(e) => return Err(io.bad_input(&e)),
         },
-        Figure::Atlas {
-            rect,
-            loads,
-            eta_axis,
-            ..
-        } if loads.horizontal => match rect.load_map(&loads, settings) {
-            Ok(m) => Ok(crate::render::plot_load_map::svg(&m, eta_axis)),
-            Err(e) => return Err(io.bad_input(&e)),
-        },
-        Figure::Atlas { rect, .. } => match rect.atlas(settings) {
-            Ok(a) => Ok(crate::render::plot_atlas::svg(&a)),
-            Err(e) => return Err(io.bad_input(&e)),
-        },
+        Figure::Atlas { rect, loads, eta_axis, .. } => {
+            Ok(atlas_figure(&rect, &loads, eta_axis, settings).map_err(|e| io.bad_input(&e))?)
+        }
         Figure::Map {
             arch,
             n_eta,
@@ -428,6 +418,21 @@ pub(crate) fn draw(figure: Figure, settings: &Settings, io: &mut Io) -> Result<S
 
 /// The arch, μ and thickness of a state figure (`--mu ms` resolved; `--eta` or `--ring`,
 /// default η*), the inputs checked.
+/// `plot atlas`: the atlas of uniqueness, or with `--horizontal` the load map (up its
+/// thickness factor, or its thickness with `--eta-axis`).
+fn atlas_figure(
+    rect: &super::atlas::RectArgs,
+    loads: &super::atlas::LoadMapArgs,
+    eta_axis: bool,
+    settings: &Settings,
+) -> Result<Result<String, String>, InputError> {
+    if loads.horizontal {
+        let m = rect.load_map(loads, settings)?;
+        return Ok(crate::render::plot_load_map::svg(&m, eta_axis));
+    }
+    Ok(crate::render::plot_atlas::svg(&rect.atlas(settings)?))
+}
+
 fn plot_inputs(
     st: &StateArgs,
     settings: &Settings,
