@@ -1207,43 +1207,10 @@ fn a_sliver_born_at_a_corner_is_sampled() {
 fn the_semicircle_is_not_free_of_a_reduction() {
     use arch_enum::atlas::loads::{load_map, LoadGrid};
     use arch_enum::atlas::Rectangle;
-    use arch_enum::load::LiveLoad;
-    use arch_enum::multiplier::{survey as load_survey, LoadOutcome};
     let settings = Settings::default();
-    let horizontal = LiveLoad::Horizontal {
-        towards_right: true,
-    };
     let semi = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();
-    let eta = 0.5701;
-    let Ok(LoadOutcome::Limits(sv)) = load_survey(&semi, eta, 1.0, &horizontal, &settings).unwrap()
-    else {
-        panic!("the semicircle's survey")
-    };
-    let least = &sv.limit_states[0];
-    let reference = crate::load_continuum_reference::LoadedCont::of(&semi, eta, 1.0, horizontal);
-    let top = match reference.lambda_static().unwrap() {
-        crate::load_continuum_reference::RefLambda::Static { lambda, .. } => lambda,
-        other => panic!("{other:?}"),
-    };
-    assert!(
-        (top - sv.lambda_static.unwrap().0).abs() < 1e-9 * top,
-        "{top}"
-    );
-    let reduction = 1.0 - least.t / top;
+    let (reduction, _) = reduced_independently(&semi, 0.5701, 1.0);
     assert!(reduction > 0.03 && reduction < 0.04, "{reduction}");
-    let z = [least.x[0], least.x[1], least.x[2], least.t];
-    reference.dense_check(&z).unwrap();
-    let mut joints = vec![semi.beta_right(), semi.beta_left()];
-    joints.extend(least.pattern.iter().map(|c| c.beta));
-    joints.sort_by(f64::total_cmp);
-    joints.dedup_by(|a, b| (*a - *b).abs() < 1e-12);
-    let listed =
-        crate::load_reference::Case::new(&joints, false, eta, 1.0, horizontal).brute_force();
-    assert!(
-        listed.iter().any(|l| (l - least.t).abs() <= 1e-8 * least.t),
-        "{joints:?}: lambda = {} not among {listed:?}",
-        least.t
-    );
     // the map over rings from 1.02 eta* to 5.3 eta* (inside the reduced stretch): where the
     // reduction begins, bisected to 1e-9
     let grid = LoadGrid {
@@ -1271,4 +1238,96 @@ fn the_semicircle_is_not_free_of_a_reduction() {
         (b.etas.0 - 0.5430468).abs() < 1e-6 && b.etas.1 - b.etas.0 <= 2e-9 * b.etas.1,
         "{b:?}"
     );
+}
+
+/// The least limit state of a horizontal acceleration (towards the right springing) on the
+/// continuous `arch` at (η, μ), checked independently of the crate: λ_static by the
+/// continuum reference of `load_continuum_reference` (its own statics and exchange LP), the
+/// state admissible on a dense grid of that reference's statics, its λ a limit state of the
+/// discrete arch whose joints are the springings and its contacts for the brute force of
+/// `load_reference` (its own kinematic LP). Returns the reduction 1 − λ_c/λ_static (with the
+/// reference's λ_static) and the state.
+fn reduced_independently(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+) -> (f64, arch_enum::limit_states::LimitState) {
+    use arch_enum::load::LiveLoad;
+    use arch_enum::multiplier::{survey as load_survey, LoadOutcome};
+    let horizontal = LiveLoad::Horizontal {
+        towards_right: true,
+    };
+    let Ok(LoadOutcome::Limits(sv)) =
+        load_survey(arch, eta, mu, &horizontal, &Settings::default()).unwrap()
+    else {
+        panic!("the load survey at eta = {eta}")
+    };
+    let least = sv.limit_states[0].clone();
+    let reference = crate::load_continuum_reference::LoadedCont::of(arch, eta, mu, horizontal);
+    let top = match reference.lambda_static().unwrap() {
+        crate::load_continuum_reference::RefLambda::Static { lambda, .. } => lambda,
+        other => panic!("{other:?}"),
+    };
+    assert!(
+        (top - sv.lambda_static.unwrap().0).abs() < 1e-9 * top,
+        "{top}"
+    );
+    let z = [least.x[0], least.x[1], least.x[2], least.t];
+    reference.dense_check(&z).unwrap();
+    let mut joints = vec![arch.beta_right(), arch.beta_left()];
+    joints.extend(least.pattern.iter().map(|c| c.beta));
+    joints.sort_by(f64::total_cmp);
+    joints.dedup_by(|a, b| (*a - *b).abs() < 1e-12);
+    let listed =
+        crate::load_reference::Case::new(&joints, false, eta, mu, horizontal).brute_force();
+    assert!(
+        listed
+            .iter()
+            .any(|l| (l - least.t).abs() <= 1e-8 * least.t.max(1e-3)),
+        "{joints:?}: lambda = {} not among {listed:?}",
+        least.t
+    );
+    (1.0 - least.t / top, least)
+}
+
+/// A horizontal acceleration λ g is gravity tilted by ψ = atan λ (towards the left), so a
+/// symmetric arch of opening α under it is the arch of springings (−α − ψ, π + α − ψ) under
+/// self-weight alone. At μ = 1 and η = 0.59 the reduced limit state of α = 0.2, 0.5 and
+/// 0.6974 moves only the blocks from the right springing to its intrados hinge, so it
+/// depends on the tilt α + ψ alone: α + atan λ_c is one number (0.6974667578) for every
+/// opening, and the tilted arch under self-weight has its own limit state at η = 0.59 (the
+/// thickness search, a second implementation of the statics). As α approaches that number
+/// λ_c falls to 0 while λ_static stays about 0.017: at α = 0.6974 the collapse acceleration
+/// is 99.6 % below the static maximum, checked independently of the crate.
+#[test]
+fn a_horizontal_acceleration_is_tilted_gravity() {
+    let settings = Settings::default();
+    let mut tilts = Vec::new();
+    for alpha in [0.2, 0.5, 0.6974] {
+        let arch = Arch::symmetric(alpha, WeightModel::Centreline).unwrap();
+        let (reduction, least) = reduced_independently(&arch, 0.59, 1.0);
+        let psi = least.t.atan();
+        tilts.push(alpha + psi);
+        let tilted = Arch::new(
+            -alpha - psi,
+            std::f64::consts::PI + alpha - psi,
+            WeightModel::Centreline,
+        )
+        .unwrap();
+        let found = survey(&tilted, 1.0, &settings).unwrap();
+        let etas: Vec<f64> = match &found.states {
+            Ok(ls) => ls.above.iter().map(|s| s.t).collect(),
+            Err(e) => panic!("alpha = {alpha}: {e:?}"),
+        };
+        assert!(
+            etas.iter().any(|e| (e - 0.59).abs() < 1e-9),
+            "alpha = {alpha}: the tilted arch's limit states {etas:?}"
+        );
+        if alpha == 0.6974 {
+            assert!(reduction > 0.99, "{reduction}");
+        }
+    }
+    for t in &tilts {
+        assert!((t - tilts[0]).abs() < 1e-9, "{tilts:?}");
+    }
 }
