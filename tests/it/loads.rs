@@ -779,3 +779,87 @@ fn plot_load_curve_refuses_json() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--json"));
 }
+
+/// A horizontal acceleration λ g towards +x added to self-weight is self-weight turned by
+/// ψ = atan λ, and every condition is homogeneous in the load's size: the arch under λ at
+/// thickness η admits exactly the states (turned) of the arch turned by −ψ, springings
+/// (β_R − ψ, β_L − ψ), under self-weight alone. So at ψ = atan λ_static(η) the turned arch
+/// stands at η, and its least thickness η_s is where λ_static reaches λ_static(η): η itself
+/// where λ_static rises with η, the start of the plateau where it does not (a sliding limit,
+/// the same at every thicker ring): λ_static(η_s (1 + 1e-7)) = λ_static(η) and
+/// λ_static(η_s (1 − 1e-6)) < λ_static(η). Two implementations of the statics checked
+/// against each other (the load's live terms and rows, `multiplier::static_range`; the
+/// thickness problem's, `solve`), on random openings, thicknesses, friction, both weight
+/// models, continuous and voussoir arches.
+#[test]
+fn the_load_is_gravity_turned() {
+    let settings = Settings::default();
+    let load = LiveLoad::Horizontal {
+        towards_right: true,
+    };
+    let mut rng = Rng(0x7117_5eed);
+    let (mut equal, mut plateau, mut worst) = (0, 0, 0.0f64);
+    for case in 0..60 {
+        let alpha = -0.8 + 1.8 * rng.next();
+        let weight = if case % 2 == 0 {
+            WeightModel::Centreline
+        } else {
+            WeightModel::Centroid
+        };
+        let blocks = (case % 3 == 0).then(|| 6 + (30.0 * rng.next()) as usize);
+        let shape = |br: f64, bl: f64| {
+            let a = Arch::new(br, bl, weight).unwrap();
+            match blocks {
+                Some(n) => a.with_blocks(n).unwrap(),
+                None => a,
+            }
+        };
+        let arch = shape(-alpha, PI + alpha);
+        let Some(ms) = arch_enum::least_friction(&arch, &settings).unwrap() else {
+            continue;
+        };
+        let mu = ms * (1.1 + 2.0 * rng.next());
+        let arch_enum::Outcome::Limit(ls) = arch_enum::solve(&arch, mu, &settings).unwrap().outcome
+        else {
+            continue;
+        };
+        let eta = ls.eta_static * (1.05 + 1.5 * rng.next());
+        let top = |eta: f64| match static_range(&arch, eta, mu, &load, &settings).unwrap() {
+            Ok(StaticRange::Interval { max: Some(m), .. }) => Some(m.0),
+            _ => None,
+        };
+        let Some(lambda) = top(eta).filter(|_| eta < 1.9) else {
+            continue;
+        };
+        let psi = lambda.atan();
+        let turned = shape(-alpha - psi, PI + alpha - psi);
+        let eta_s = match arch_enum::solve(&turned, mu, &settings).unwrap().outcome {
+            arch_enum::Outcome::Limit(t) => t.eta_static,
+            arch_enum::Outcome::Unresolved {
+                least_static: Some((e, _)),
+                ..
+            } => e,
+            other => panic!("case {case}: the turned arch: {other:?}"),
+        };
+        let what = format!("case {case}: alpha {alpha}, {weight:?}, {blocks:?}, mu {mu}, eta {eta}: lambda_static {lambda} turns it to eta_s {eta_s}");
+        let rel = (eta_s - eta).abs() / eta;
+        if rel < 1e-8 {
+            worst = worst.max(rel);
+            equal += 1;
+            continue;
+        }
+        assert!(eta_s < eta, "{what}");
+        let on = top(eta_s * (1.0 + 1e-7)).unwrap();
+        let below = top(eta_s * (1.0 - 1e-6)).unwrap();
+        assert!(
+            (on - lambda).abs() <= 1e-8 * lambda && below < lambda * (1.0 - 1e-9),
+            "{what}: lambda_static {on} just above eta_s, {below} just below"
+        );
+        plateau += 1;
+    }
+    eprintln!("gravity turned: eta_s = eta on {equal} cases (worst relative difference {worst:e}), the start of a plateau of lambda_static on {plateau}");
+    assert!(
+        equal >= 30 && plateau >= 2,
+        "only {equal} and {plateau} cases compared"
+    );
+}
