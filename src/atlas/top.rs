@@ -93,18 +93,25 @@ fn ratio_at(
         ..*rect
     };
     let col = column(&sub, (alpha, None), settings)?;
-    Ok((best(&col, rect.blocks.is_some()), col))
+    let band = band_runs(std::slice::from_ref(&col));
+    Ok((best(&col, rect.blocks.is_some(), &band[0]), col))
 }
 
 /// The largest μ/μ_ms of a column's solved `non_unique`/`unique` points, with its μ, μ_ms
 /// and condition. On a voussoir arch (`discrete`), whose search is complete by itself, a
 /// point bisected to neighbouring floats counts too, at its non-unique end (the kinds
 /// change there, decided to the solver's tolerances: ~10⁻¹⁰ of μ).
-fn best(col: &Column, discrete: bool) -> Value {
+fn best(col: &Column, discrete: bool, band: &[(f64, f64)]) -> Value {
     let mu_ms = col.mu_ms?;
+    let in_band = |mu: f64| {
+        let r = mu / mu_ms;
+        band.iter()
+            .any(|&(lo, hi)| r >= lo * (1.0 - BAND_SLACK) && r <= hi * (1.0 + BAND_SLACK))
+    };
     col.boundaries
         .iter()
         .filter(|p| p.between == [Kind::NonUnique, Kind::Unique])
+        .filter(|p| in_band(p.bracket.0))
         .filter_map(|p| match &p.end {
             Some(Ok(e)) => Some((e.mu / mu_ms, e.mu, mu_ms, e.condition.describe())),
             None if discrete && p.tight => {
@@ -113,6 +120,67 @@ fn best(col: &Column, discrete: bool) -> Value {
             _ => None,
         })
         .max_by(|a, b| a.0.total_cmp(&b.0))
+}
+
+/// A boundary point belongs to a run of the band when its μ/μ_ms lies in the run's
+/// interval to this (relative).
+const BAND_SLACK: f64 = 1e-9;
+
+/// A run reaches down to μ_ms when it starts below μ_ms (1 + this): at the column's first
+/// sample.
+const AT_MU_MS: f64 = 1e-4;
+
+/// The non-unique runs of each column that belong to the band, as μ/μ_ms intervals: the
+/// runs reaching down to μ_ms, and every run joined to one of them through runs of
+/// neighbouring columns whose intervals overlap (an island of the band above a stretch of
+/// `unique`, as the 12-voussoir band has at α ≈ 0.6, is joined to it; a sliver of a voussoir
+/// arch far from it is not). Where no run reaches μ_ms, every non-unique run.
+fn band_runs(columns: &[Column]) -> Vec<Vec<(f64, f64)>> {
+    let runs: Vec<Vec<(f64, f64)>> = columns
+        .iter()
+        .map(|c| match c.mu_ms {
+            Some(ms) => c
+                .runs
+                .iter()
+                .filter(|r| r.0 == Some(Kind::NonUnique))
+                .map(|r| (r.1 / ms, r.2 / ms))
+                .collect(),
+            None => Vec::new(),
+        })
+        .collect();
+    let mut band: Vec<Vec<(f64, f64)>> = runs
+        .iter()
+        .map(|rs| {
+            rs.iter()
+                .copied()
+                .filter(|r| r.0 < 1.0 + AT_MU_MS)
+                .collect()
+        })
+        .collect();
+    if band.iter().all(Vec::is_empty) {
+        return runs;
+    }
+    let overlap = |a: &(f64, f64), b: &(f64, f64)| a.0 <= b.1 && b.0 <= a.1;
+    loop {
+        let mut grew = false;
+        for k in 0..columns.len() {
+            let neighbours: Vec<(f64, f64)> = [k.wrapping_sub(1), k + 1]
+                .iter()
+                .filter_map(|&j| band.get(j))
+                .flatten()
+                .copied()
+                .collect();
+            for r in &runs[k] {
+                if !band[k].contains(r) && neighbours.iter().any(|n| overlap(n, r)) {
+                    band[k].push(*r);
+                    grew = true;
+                }
+            }
+        }
+        if !grew {
+            return band;
+        }
+    }
 }
 
 /// The condition of a side of the top without a solved opening.
@@ -128,10 +196,12 @@ pub(super) fn band_top(
     columns: &[Column],
     settings: &Settings,
 ) -> Result<Option<BandTop>, InputError> {
+    let band = band_runs(columns);
+    let discrete = rect.blocks.is_some();
     let sampled: Vec<(usize, f64)> = columns
         .iter()
         .enumerate()
-        .filter_map(|(k, c)| best(c, rect.blocks.is_some()).map(|b| (k, b.0)))
+        .filter_map(|(k, c)| best(c, discrete, &band[k]).map(|b| (k, b.0)))
         .collect();
     let Some(&(k, r)) = sampled.iter().max_by(|a, b| a.1.total_cmp(&b.1)) else {
         return Ok(None);
@@ -148,7 +218,8 @@ pub(super) fn band_top(
     // every opening evaluated, with its value (the sampled columns around the largest first)
     let mut log: Vec<(f64, Value)> = columns[k.saturating_sub(1)..=(k + 1).min(columns.len() - 1)]
         .iter()
-        .map(|c| (c.alpha, best(c, rect.blocks.is_some())))
+        .zip(&band[k.saturating_sub(1)..])
+        .map(|(c, b)| (c.alpha, best(c, discrete, b)))
         .collect();
     let mut ends: Vec<(f64, BranchEnd)> = Vec::new();
     let mut f = |alpha: f64| -> Result<Value, InputError> {

@@ -1331,3 +1331,42 @@ fn a_horizontal_acceleration_is_tilted_gravity() {
         assert!((t - tilts[0]).abs() < 1e-9, "{tilts:?}");
     }
 }
+
+/// The top of the band is the band's: on 24 voussoirs the α = 1.1 column holds a sliver of
+/// `non_unique` at μ/μ_ms ≈ 2.142, far above the band and not joined to it through
+/// neighbouring columns; the top is the band's largest μ/μ_ms (1.08454 at α ≈ 0.6346),
+/// between the continuous band's 1.0755 and the 12-voussoir band's 1.0921.
+#[test]
+fn the_top_is_the_bands_not_a_slivers() {
+    let (doc, code) = json_of(&[
+        "atlas",
+        "--blocks",
+        "24",
+        "--alpha-min",
+        "0.6",
+        "--alpha-max",
+        "1.1",
+        "--columns",
+        "11",
+        "--mu-max-factor",
+        "2.5",
+    ]);
+    assert_eq!(code, 0);
+    let last = &doc["columns"][10];
+    let ms = last["mu_ms"].as_f64().unwrap();
+    let sliver: Vec<f64> = last["runs"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|r| r["kind"] == "non_unique")
+        .map(|r| r["mu_from"].as_f64().unwrap() / ms)
+        .collect();
+    assert!(sliver.len() == 1 && sliver[0] > 2.0, "{sliver:?}");
+    let top = &doc["top"];
+    let (alpha, ratio) = (
+        top["alpha"].as_f64().unwrap(),
+        top["ratio"].as_f64().unwrap(),
+    );
+    assert!((ratio - 1.08454).abs() < 1e-5, "{top}");
+    assert!(alpha > 0.6 && alpha < 0.7, "{top}");
+}
