@@ -145,6 +145,31 @@ fn agrees_with_solve(
     eprintln!("atlas {flags:?}: {compared} compared, {near} near a boundary, {undecided} undecided by solve");
 }
 
+/// 24 voussoirs over a rectangle that holds the band and the sliver at α = 1.1 (μ/μ_ms ≈
+/// 2.142): the regions, with the band's top among their vertices, agree with `solve`.
+#[test]
+fn voussoir_regions_with_a_sliver_agree_with_solve() {
+    agrees_with_solve(
+        &[
+            "--alpha-min",
+            "0.55",
+            "--alpha-max",
+            "1.15",
+            "--columns",
+            "25",
+            "--mu-max-factor",
+            "2.5",
+            "--samples",
+            "24",
+            "--blocks",
+            "24",
+        ],
+        Some(24),
+        (0.55, 1.15, 2.5),
+        200,
+    );
+}
+
 #[test]
 fn regions_agree_with_solve_away_from_boundaries() {
     // the continuous arch, the horseshoes where the non-unique band lies
