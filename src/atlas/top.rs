@@ -17,7 +17,6 @@ use super::continued::Branches;
 use crate::arch::InputError;
 use crate::limit_states::BranchEnd;
 use crate::settings::Settings;
-use std::cell::RefCell;
 
 /// The golden section stops when its bracket in α is this narrow (relative).
 const ALPHA_TOL: f64 = 1e-12;
@@ -193,62 +192,6 @@ fn band_runs(columns: &[Column]) -> Vec<Vec<(f64, f64)>> {
     }
 }
 
-/// Where the band ends abruptly beside the largest value evaluated (an island's tip, its
-/// ratio rising to the end): the edge between that opening and the nearest evaluated one
-/// without a value, bisected in α to [`ALPHA_TOL`] by `f` (which logs each value), and its
-/// bracket; else `bracket` as it is.
-fn edge(
-    log: &RefCell<Vec<(f64, Value)>>,
-    bracket: (f64, f64),
-    f: &mut dyn FnMut(f64) -> Result<Value, InputError>,
-) -> Result<(f64, f64), InputError> {
-    let Some((some, none)) = edge_start(&log.borrow()) else {
-        return Ok(bracket);
-    };
-    let (mut some, mut none) = (some, none);
-    for _ in 0..MAX_STEPS {
-        if (some - none).abs() <= ALPHA_TOL * some.abs().max(1.0) {
-            break;
-        }
-        let mid = 0.5 * (some + none);
-        if f(mid)?.is_some() {
-            some = mid
-        } else {
-            none = mid
-        }
-    }
-    Ok((some.min(none), some.max(none)))
-}
-
-/// The opening of the largest value in `log` and the nearest evaluated one without a value
-/// on a side where no opening with a value lies between them, if there is one.
-fn edge_start(log: &[(f64, Value)]) -> Option<(f64, f64)> {
-    let value = |v: &Value| v.as_ref().map_or(f64::NEG_INFINITY, |v| v.0);
-    let &(best, _) = log
-        .iter()
-        .filter(|(_, v)| v.is_some())
-        .max_by(|p, q| value(&p.1).total_cmp(&value(&q.1)))?;
-    let nearest = |pred: &dyn Fn(&Value) -> bool, left: bool| {
-        log.iter()
-            .filter(|(x, v)| pred(v) && (*x < best) == left && *x != best)
-            .map(|p| p.0)
-            .min_by(|p, q| (p - best).abs().total_cmp(&(q - best).abs()))
-    };
-    for left in [true, false] {
-        let (Some(none), inner) = (
-            nearest(&|v| v.is_none(), left),
-            nearest(&|v| v.is_some(), left),
-        ) else {
-            continue;
-        };
-        if inner.is_some_and(|x| (x - best).abs() < (none - best).abs()) {
-            continue;
-        }
-        return Some((best, none));
-    }
-    None
-}
-
 /// The condition of a side of the top without a solved opening.
 const NONE: &str = "none";
 
@@ -282,13 +225,11 @@ pub(super) fn band_top(
     // the ends of the columns around the largest, continued in α (a column where that fails)
     let mut branches = Branches::of(&columns[k.saturating_sub(1)..=(k + 1).min(columns.len() - 1)]);
     // every opening evaluated, with its value (the sampled columns around the largest first)
-    let log: RefCell<Vec<(f64, Value)>> = RefCell::new(
-        columns[k.saturating_sub(1)..=(k + 1).min(columns.len() - 1)]
-            .iter()
-            .zip(&band[k.saturating_sub(1)..])
-            .map(|(c, b)| (c.alpha, best(c, discrete, b)))
-            .collect(),
-    );
+    let mut log: Vec<(f64, Value)> = columns[k.saturating_sub(1)..=(k + 1).min(columns.len() - 1)]
+        .iter()
+        .zip(&band[k.saturating_sub(1)..])
+        .map(|(c, b)| (c.alpha, best(c, discrete, b)))
+        .collect();
     let mut ends: Vec<(f64, BranchEnd)> = Vec::new();
     let mut f = |alpha: f64| -> Result<Value, InputError> {
         evaluations += 1;
@@ -303,7 +244,7 @@ pub(super) fn band_top(
                 v
             }
         };
-        log.borrow_mut().push((alpha, v.clone()));
+        log.push((alpha, v.clone()));
         Ok(v)
     };
     let g = 0.5 * (5f64.sqrt() - 1.0);
@@ -326,8 +267,6 @@ pub(super) fn band_top(
     }
     f(a)?;
     f(b)?;
-    let (a, b) = edge(&log, (a, b), &mut f)?;
-    let log = log.into_inner();
     // the largest value evaluated (where the band ends abruptly inside the bracket, as an
     // island of a voussoir arch does at its tip, the golden section closes on the edge and
     // its last points may lie beyond it)
