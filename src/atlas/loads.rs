@@ -138,6 +138,10 @@ pub struct LoadBoundary {
     /// followed there ([`crate::multiplier::follow`]), is a limit state below λ_static: the
     /// midpoint is reduced.
     pub followed: usize,
+    /// With [`Rectangle::certify`]: the reduction a verified load certificate proves at least
+    /// at the bracket's reduced end ([`super::certified_reduction`]), or why not (the other
+    /// end, without a reduction, is not certified as such).
+    pub certified: Option<Result<f64, String>>,
 }
 
 impl LoadBoundary {
@@ -276,7 +280,8 @@ fn boundary(
     settings: &Settings,
 ) -> Result<LoadBoundary, InputError> {
     let (alpha, mu, below) = (lo.alpha, lo.mu, lo.reduced());
-    // the midpoints are not certified (only the cells are)
+    let certify = rect.certify;
+    // the midpoints are not certified (the cells and the bracket's reduced end are)
     let rect = &Rectangle {
         certify: false,
         ..*rect
@@ -330,6 +335,11 @@ fn boundary(
             f1 = mid
         }
     }
+    let reduced_eta = if below { f0 } else { f1 } * star;
+    let certified = certify
+        .then(|| rect.arch(alpha))
+        .transpose()?
+        .map(|arch| certified_reduction(&arch, (reduced_eta, mu), &horizontal(), settings));
     Ok(LoadBoundary {
         alpha,
         mu,
@@ -339,6 +349,7 @@ fn boundary(
         stopped,
         reduction,
         followed,
+        certified,
     })
 }
 

@@ -442,6 +442,18 @@ fn the_load_map_finds_the_reduction_and_agrees_with_the_brute_force() {
             .count(),
         3
     );
+    // the boundaries' reduced ends: certified where the survey decides there (α = 0.45, both
+    // ends, the survey alone), each at least its reduction less the certificate's gap
+    for b in certified.boundaries.iter().filter(|b| b.alpha == 0.45) {
+        match &b.certified {
+            Some(Ok(at_least)) => assert!(
+                *at_least > 0.0 && *at_least <= b.reduction && *at_least >= b.reduction - 1e-6,
+                "{b:?}"
+            ),
+            other => panic!("{b:?}: {other:?}"),
+        }
+    }
+    assert!(map.boundaries.iter().all(|b| b.certified.is_none()));
     let horizontal = LiveLoad::Horizontal {
         towards_right: true,
     };

@@ -914,6 +914,7 @@ fn load_map_figure_fills_each_cell_by_its_answer() {
         stopped: None,
         reduction: 0.125,
         followed: 0,
+        certified: None,
     }];
     assert!(next > reduced.factor * 1.01);
     let svg = plot_load_map::svg(&map, false).unwrap();

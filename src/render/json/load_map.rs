@@ -73,6 +73,13 @@ struct BoundaryJson {
     /// limit state followed there (Newton on its pattern, verified over the arch, a
     /// mechanism with positive live power, below λ_static).
     followed: usize,
+    /// With `--certify`: the reduction a verified load certificate proves at least at the
+    /// bracket's reduced end.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    certified_reduction: Option<f64>,
+    /// With `--certify`: why the reduced end is not certified.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    not_certified: Option<String>,
 }
 
 fn boundary_json(b: &LoadBoundary) -> BoundaryJson {
@@ -89,6 +96,8 @@ fn boundary_json(b: &LoadBoundary) -> BoundaryJson {
         stopped: b.stopped.clone(),
         reduction: b.reduction,
         followed: b.followed,
+        certified_reduction: b.certified.clone().and_then(Result::ok),
+        not_certified: b.certified.clone().and_then(Result::err),
     }
 }
 

@@ -120,7 +120,7 @@ fn boundaries(s: &mut String, map: &LoadMap) {
     for b in &map.boundaries {
         let _ = writeln!(
             s,
-            "  {:>10}  {:>10}  [{}, {}]  {} {}{}{}",
+            "  {:>10}  {:>10}  [{}, {}]  {} {}{}{}{}",
             sig(b.mu, 6),
             sig(b.alpha, 6),
             sig(b.etas.0, 12),
@@ -141,7 +141,12 @@ fn boundaries(s: &mut String, map: &LoadMap) {
             },
             b.stopped
                 .as_ref()
-                .map_or(String::new(), |w| format!(" (stopped: {w})"))
+                .map_or(String::new(), |w| format!(" (stopped: {w})")),
+            match &b.certified {
+                Some(Ok(r)) => format!("; certified at least {}", sig(*r, 4)),
+                Some(Err(why)) => format!("; not certified: {why}"),
+                None => String::new(),
+            }
         );
     }
     for &mu in &map.grid.mus {
