@@ -289,7 +289,9 @@ fn boundary(
     let (mut f0, mut f1) = (lo.factor, hi.factor);
     // the reduced end's least limit state, followed where the survey does not decide
     let reduced_end = if below { lo } else { hi };
-    let (_, mut tracked) = surveyed(rect, (alpha, reduced_end.factor, mu), &Ok(star), settings)?;
+    // the reduced end's least limit state: the cell's (surveyed again only if needed), then
+    // each reduced midpoint's
+    let mut tracked: Option<Option<LimitState>> = None;
     let mut reduction = reduced_end.reduction().unwrap_or(f64::NAN);
     let (mut stopped, mut followed) = (None, 0);
     while f1 - f0 > BOUNDARY_REL * f1 {
@@ -299,10 +301,15 @@ fn boundary(
             (_, Some(_)) => c.reduced(),
             (CellAnswer::NoCollapse, None) => false,
             (CellAnswer::Undecided(_), None) => {
-                match follow_reduced(rect, (alpha, mid * star, mu), tracked.as_ref(), settings)? {
+                if tracked.is_none() {
+                    let at = (alpha, reduced_end.factor, mu);
+                    tracked = Some(surveyed(rect, at, &Ok(star), settings)?.1);
+                }
+                let from = tracked.as_ref().and_then(Option::as_ref);
+                match follow_reduced(rect, (alpha, mid * star, mu), from, settings)? {
                     Ok((state, r)) => {
                         followed += 1;
-                        tracked = Some(state);
+                        tracked = Some(Some(state));
                         reduction = r;
                         if below {
                             f0 = mid
@@ -326,7 +333,7 @@ fn boundary(
             }
         };
         if reduced {
-            tracked = least;
+            tracked = Some(least);
             reduction = c.reduction().unwrap_or(f64::NAN);
         }
         if reduced == below {

@@ -416,8 +416,6 @@ pub(crate) fn draw(figure: Figure, settings: &Settings, io: &mut Io) -> Result<S
     }
 }
 
-/// The arch, μ and thickness of a state figure (`--mu ms` resolved; `--eta` or `--ring`,
-/// default η*), the inputs checked.
 /// `plot atlas`: the atlas of uniqueness, or with `--horizontal` the load map (up its
 /// thickness factor, or its thickness with `--eta-axis`).
 fn atlas_figure(
@@ -433,6 +431,8 @@ fn atlas_figure(
     Ok(crate::render::plot_atlas::svg(&rect.atlas(settings)?))
 }
 
+/// The arch, μ and thickness of a state figure (`--mu ms` resolved; `--eta` or `--ring`,
+/// default η*), the inputs checked.
 fn plot_inputs(
     st: &StateArgs,
     settings: &Settings,

@@ -13,7 +13,6 @@ pub mod continuum;
 pub mod curve;
 mod face;
 mod limit_state;
-
 mod outcome;
 mod range;
 mod survey;

@@ -161,7 +161,7 @@ fn boundaries(s: &mut String, map: &LoadMap) {
                 sig(b.alpha, 6),
                 sig(eta, 10),
                 if b.reduction > cells {
-                    ", more than any cell's: the reduction grows towards where its branch ends"
+                    ", more than any cell's"
                 } else {
                     ""
                 }
