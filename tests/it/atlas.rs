@@ -1235,8 +1235,9 @@ fn a_sliver_born_at_a_corner_is_sampled() {
 /// The semicircle is not free of a reduction: at μ = 1 a horizontal acceleration's collapse
 /// multiplier lies below its static maximum for thick rings, η from 0.5430468 (where a
 /// limit state below λ_static is born, none at all below it) to 0.5914202 (where it
-/// vanishes, 5.8 % below), which the default map (η ≤ 4 η* = 0.43) does not reach.
-/// Independently of the crate: λ_static of the continuum reference (its own statics and
+/// vanishes, 5.8 % below), which the default map (η ≤ 4 η* = 0.43) does not reach; and at
+/// μ = 10 every ring from η ≈ 0.958 (7.7 % at η = 1.48: a wedge slides out near the left
+/// springing). Independently of the crate: λ_static of the continuum reference (its own statics and
 /// exchange LP), the crate's least limit state admissible on a dense grid of the reference's
 /// statics, and a limit state of the discrete arch of its contacts for the brute force of
 /// `load_reference` (its own kinematic LP).
@@ -1248,6 +1249,9 @@ fn the_semicircle_is_not_free_of_a_reduction() {
     let semi = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();
     let (reduction, _) = reduced_independently(&semi, 0.5701, 1.0);
     assert!(reduction > 0.03 && reduction < 0.04, "{reduction}");
+    // and in thick rings at large friction (7.7 % at mu = 10, eta = 1.48)
+    let (reduction, _) = reduced_independently(&semi, 1.48, 10.0);
+    assert!(reduction > 0.07 && reduction < 0.085, "{reduction}");
     // the map over rings from 1.02 eta* to 5.3 eta* (inside the reduced stretch): where the
     // reduction begins, bisected to 1e-9
     let grid = LoadGrid {
