@@ -652,8 +652,11 @@ class LoadResult(_x.LoadExtras, _c.Result):
         arch: The arch.
         eta: The thickness ratio η.
         load: The live load.
-        limit_states: Every limit state with λ in [0, λ_static], ascending.
+        limit_states: Every limit state with λ in [0, λ_static], ascending
+            (`unresolved`: the ones found, each verified; others may lie below).
         lambda_: (JSON `lambda`) The collapse multiplier λ_c: the least limit state's.
+        lambda_at_most: `unresolved` with limit states found: the least λ found, which
+            the collapse multiplier does not exceed.
         lambda_min: The least admissible multiplier (negative loads allowed).
         lambda_static: The largest admissible multiplier (the static maximum).
         mechanism_at_static: Whether the state at λ_static carries a mechanism.
@@ -661,6 +664,8 @@ class LoadResult(_x.LoadExtras, _c.Result):
         mu: μ (`null` = ∞).
         reduction: 1 − λ_c / λ_static: how much non-associative friction lowers the
             collapse load.
+        reduction_at_least: `unresolved` with a limit state found below λ_static: 1 −
+            `lambda_at_most`/λ_static, which the reduction is at least.
         search: How the limit states were searched.
         unique: Whether exactly one limit state lies in [0, λ_static] (`null`: not
             decided).
@@ -676,12 +681,14 @@ class LoadResult(_x.LoadExtras, _c.Result):
     load: LiveLoad
     limit_states: Tuple[LoadLimitState, ...]
     lambda_: Optional[float] = None
+    lambda_at_most: Optional[float] = None
     lambda_min: Optional[float] = None
     lambda_static: Optional[float] = None
     mechanism_at_static: Optional[bool] = None
     message: Optional[str] = None
     mu: Optional[float] = None
     reduction: Optional[float] = None
+    reduction_at_least: Optional[float] = None
     search: Optional[LoadSearch] = None
     unique: Optional[bool] = None
     units: Optional[Units] = None
@@ -696,12 +703,14 @@ class LoadResult(_x.LoadExtras, _c.Result):
             load=LiveLoad._of(d["load"]),
             limit_states=tuple(LoadLimitState._of(y) for y in d["limit_states"]),
             lambda_=None if (v := d.get("lambda")) is None else float(v),
+            lambda_at_most=None if (v := d.get("lambda_at_most")) is None else float(v),
             lambda_min=None if (v := d.get("lambda_min")) is None else float(v),
             lambda_static=None if (v := d.get("lambda_static")) is None else float(v),
             mechanism_at_static=None if (v := d.get("mechanism_at_static")) is None else bool(v),
             message=d.get("message"),
             mu=None if (v := d.get("mu", _c.ABSENT)) is _c.ABSENT else _c.number(v),
             reduction=None if (v := d.get("reduction")) is None else float(v),
+            reduction_at_least=None if (v := d.get("reduction_at_least")) is None else float(v),
             search=None if (v := d.get("search")) is None else LoadSearch._of(v),
             unique=None if (v := d.get("unique")) is None else bool(v),
             units=None if (v := d.get("units")) is None else Units._of(v),

@@ -18,7 +18,7 @@ use arch_enum::limit::mu_ms_of;
 use arch_enum::limit_curve::{available_threads, sample, trace_parallel};
 use arch_enum::limit_states::survey;
 use arch_enum::load::LiveLoad;
-use arch_enum::multiplier::{check_load, survey as load_survey};
+use arch_enum::multiplier::{check_load, survey_partial as load_survey};
 use arch_enum::render::geometry as render_geometry;
 use arch_enum::render::json::JSON_VERSION;
 use arch_enum::render::load::{json as load_json, LoadQuestion};

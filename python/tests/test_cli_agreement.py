@@ -197,6 +197,19 @@ def test_load(cli, kw, flags):
     assert [s.mode for s in r.limit_states] == [s["mode"] for s in doc["limit_states"]]
 
 
+def test_load_unresolved_keeps_what_it_decided(cli):
+    # near where a branch ends the discretisations do not settle: lambda_c is not decided,
+    # but lambda_static, the states found and "not unique" are
+    code, doc = cli("load", "--alpha", "0.5", "--eta", "0.6125", "--mu", "1", "--horizontal",
+                    "--json")
+    r = ae.load(ae.Arch(alpha=0.5), 0.6125, 1.0, horizontal="right")
+    typed_agrees(r, doc, skip={"doc.search.events"})
+    assert (code, r.status, r.lambda_, r.unique) == (1, "unresolved", None, False)
+    assert r.lambda_at_most == pytest.approx(doc["lambda_at_most"], rel=1e-12)
+    assert r.lambda_at_most < r.lambda_static
+    assert r.reduction_at_least == pytest.approx(1 - r.lambda_at_most / r.lambda_static)
+
+
 def test_certify_and_verify_cross(cli, tmp_path):
     """A certificate from Python verifies with the command line, and one from the
     command line verifies in Python; the claims agree."""

@@ -11,7 +11,7 @@ use crate::bridge::critical::{critical, Critical};
 use crate::friction::least_friction;
 use crate::limit_curve::mu_grid;
 use crate::load::LiveLoad;
-use crate::multiplier::{check_load, survey, trace, LoadCurve, LoadOutcome};
+use crate::multiplier::{check_load, survey_partial, trace, LoadCurve, LoadOutcome};
 use crate::render::load::{curve_json, curve_table, json, table, LoadQuestion};
 use crate::settings::Settings;
 use clap::{ArgGroup, Args};
@@ -233,7 +233,10 @@ pub(crate) fn run(a: LoadArgs, settings: &Settings, io: &mut Io) -> Exit {
         .as_ref()
         .and_then(|b| b.critical.as_ref()?.at_critical.as_ref())
         .map(|(_, sv)| Ok(LoadOutcome::Limits(sv.clone())));
-    let outcome = match known.map_or_else(|| survey(&p.arch, p.eta, p.mu, &p.load, settings), Ok) {
+    let outcome = match known.map_or_else(
+        || survey_partial(&p.arch, p.eta, p.mu, &p.load, settings),
+        Ok,
+    ) {
         Ok(o) => o,
         Err(e) => return io.bad_input(&e),
     };

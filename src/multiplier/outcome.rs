@@ -4,6 +4,7 @@
 use crate::limit_states::sweep::CheckedPoint;
 use crate::limit_states::LimitState;
 use crate::statics::Reactions;
+use crate::undecided::Undecided;
 
 /// The admissible multipliers λ ≥ 0 at (η, μ).
 #[derive(Debug, Clone, PartialEq)]
@@ -88,4 +89,59 @@ pub enum LoadOutcome {
     },
     /// The static range and every limit state in it.
     Limits(LoadSurvey),
+}
+
+/// A load survey that reached no decision on its list of limit states, with what it decided
+/// all the same: the ends of the static range where they were computed (each exact), and
+/// the limit states found — on a continuous arch whose discretisations do not settle, each
+/// carried over from one of them, refined and verified on the continuum (a limit state:
+/// admissible over the arch, a mechanism with positive live power), and the state at
+/// λ_static where it carries a mechanism. Others may lie below them, so the collapse
+/// multiplier is not decided: it is at most the least λ found.
+#[derive(Debug, Clone)]
+pub struct LoadUnsettled {
+    /// Why the list of limit states is not established.
+    pub why: Undecided,
+    /// λ_min, where it was computed.
+    pub lambda_min: Option<f64>,
+    /// λ_static, where it was computed and is finite.
+    pub lambda_static: Option<f64>,
+    /// Whether the state at λ_static carries a mechanism with positive live power, where
+    /// that was decided.
+    pub mechanism_at_static: Option<bool>,
+    /// The limit states found, ascending in λ (empty where none was, or where the survey
+    /// stopped before its list).
+    pub found: Vec<LimitState>,
+}
+
+impl From<Undecided> for LoadUnsettled {
+    fn from(why: Undecided) -> LoadUnsettled {
+        LoadUnsettled {
+            why,
+            lambda_min: None,
+            lambda_static: None,
+            mechanism_at_static: None,
+            found: Vec::new(),
+        }
+    }
+}
+
+impl LoadUnsettled {
+    /// The least λ found: the collapse multiplier is at most this.
+    pub fn lambda_at_most(&self) -> Option<f64> {
+        self.found.first().map(|s| s.t)
+    }
+
+    /// `Some(false)` where two distinct limit states were found (not unique, whatever the
+    /// list misses); `None` otherwise (not decided).
+    pub fn unique(&self) -> Option<bool> {
+        (crate::limit_states::distinct(&self.found).len() >= 2).then_some(false)
+    }
+
+    /// 1 − λ/λ_static for the least λ found: the collapse multiplier lies at least this far
+    /// below the static maximum.
+    pub fn reduction_at_least(&self) -> Option<f64> {
+        let (l, s) = (self.lambda_at_most()?, self.lambda_static?);
+        (l < s).then(|| 1.0 - l / s)
+    }
 }

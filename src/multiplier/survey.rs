@@ -5,7 +5,7 @@
 use super::continuum::{self, NoExtreme};
 use super::face;
 use super::limit_state::limit_state_on;
-use super::outcome::{LoadOutcome, LoadSurvey, StaticRange, UNBOUNDED_SEARCH_TOP};
+use super::outcome::{LoadOutcome, LoadSurvey, LoadUnsettled, StaticRange, UNBOUNDED_SEARCH_TOP};
 use super::range::{check_load, static_range, UNBOUNDED_BELOW};
 use crate::arch::{check_eta, Arch, InputError, JointLayout};
 use crate::contact::Contact;
@@ -33,6 +33,18 @@ pub fn survey(
     load: &LiveLoad,
     settings: &Settings,
 ) -> Result<Result<LoadOutcome, Undecided>, InputError> {
+    Ok(survey_partial(arch, eta, mu, load, settings)?.map_err(|u| u.why))
+}
+
+/// [`survey`], with what an undecided survey decided all the same (the static range, the
+/// limit states found: [`LoadUnsettled`]).
+pub fn survey_partial(
+    arch: &Arch,
+    eta: f64,
+    mu: f64,
+    load: &LiveLoad,
+    settings: &Settings,
+) -> Result<Result<LoadOutcome, LoadUnsettled>, InputError> {
     if !matches!(arch.layout(), JointLayout::Discrete(_)) {
         // the exchange for each end once (static_range would run the largest twice)
         check_eta(eta)?;
@@ -42,7 +54,7 @@ pub fn survey(
     }
     let range = match static_range(arch, eta, mu, load, settings)? {
         Ok(r) => r,
-        Err(e) => return Ok(Err(e)),
+        Err(e) => return Ok(Err(e.into())),
     };
     let (min, max) = match range {
         StaticRange::NoEquilibrium => return Ok(Ok(LoadOutcome::NoEquilibrium)),
@@ -52,9 +64,17 @@ pub fn survey(
         unreachable!("continuous arches answered above")
     };
     let all_rows = rows(arch, joints, eta, mu, load);
+    // an undecided survey keeps its static range (exact)
+    let unsettled = |why: Undecided| LoadUnsettled {
+        why,
+        lambda_min: Some(min.0),
+        lambda_static: max.map(|m| m.0),
+        mechanism_at_static: None,
+        found: Vec::new(),
+    };
     let continua = match continua(arch, eta, mu, load, &all_rows, settings) {
         Ok(c) => c,
-        Err(e) => return Ok(Err(e)),
+        Err(e) => return Ok(Err(unsettled(e))),
     };
     // a state whose active set holds a continuum's pair belongs to that continuum
     let in_continuum = |pattern: &[Contact], sides: &[Side]| {
@@ -80,7 +100,7 @@ pub fn survey(
         Some(lp) => {
             match states_at_static(arch, (eta, mu), load, &all_rows, lp, at_top, settings) {
                 Ok(a) => Some(a),
-                Err(e) => return Ok(Err(e)),
+                Err(e) => return Ok(Err(unsettled(e))),
             }
         }
     };
@@ -90,10 +110,16 @@ pub fn survey(
     }
     let (sw, _) = swept.expect("swept at finite mu");
     if let Some(f) = sw.failure {
-        return Ok(Err(match max {
-            Some(m) => f.map_text(|f| format!("{f} (lambda_static = {}, exact)", m.0)),
+        return Ok(Err(unsettled(match max {
+            Some(m) => f.map_text(|f| {
+                format!(
+                    "{f} (lambda_static of these {} joints = {}, exact)",
+                    joints.len(),
+                    m.0
+                )
+            }),
             None => f,
-        }));
+        })));
     }
     // where the arch does not stand unloaded (λ_min > 0) the state at λ_min is the
     // unloading end: the arch fails there as λ decreases, and it is never reported as a
@@ -307,17 +333,17 @@ fn continuous_survey(
     mu: f64,
     load: &LiveLoad,
     settings: &Settings,
-) -> Result<LoadOutcome, Undecided> {
+) -> Result<LoadOutcome, LoadUnsettled> {
     let min = match continuum::extreme(arch, eta, mu, load, false, settings) {
         Ok(Some((l, x, _))) => (l, x),
-        Ok(None) => return Err(Undecided::Lp(UNBOUNDED_BELOW.into())),
+        Ok(None) => return Err(Undecided::Lp(UNBOUNDED_BELOW.into()).into()),
         Err(NoExtreme::NoState) => return Ok(LoadOutcome::NoEquilibrium),
-        Err(NoExtreme::Undecided(e)) => return Err(e),
+        Err(NoExtreme::Undecided(e)) => return Err(e.into()),
     };
     let max = match continuum::extreme(arch, eta, mu, load, true, settings) {
         Ok(m) => m,
         Err(NoExtreme::NoState) => return Ok(LoadOutcome::NoEquilibrium),
-        Err(NoExtreme::Undecided(e)) => return Err(e),
+        Err(NoExtreme::Undecided(e)) => return Err(e.into()),
     };
     if mu.is_finite() {
         return continuous_finite_friction(arch, eta, mu, load, min, max, settings);
@@ -349,7 +375,9 @@ fn continuous_survey(
 /// when it is one there too (a mechanism with positive live power); the answer stands when
 /// both discretisations give the same set (or, where they differ, two finer ones), as for the
 /// thickness search. λ_static itself is the exact continuum's. A continuum of limit states in a discretisation (the loaded
-/// point sliding along its section) is not carried over yet: no decision then.
+/// point sliding along its section) is not carried over yet: no decision then. Where the
+/// discretisations do not settle, the states they found (each verified on the continuum)
+/// and the state at λ_static are kept with the reason ([`LoadUnsettled`]).
 fn continuous_finite_friction(
     arch: &Arch,
     eta: f64,
@@ -358,7 +386,7 @@ fn continuous_finite_friction(
     min: (f64, Reactions),
     max: Option<continuum::Extreme>,
     settings: &Settings,
-) -> Result<LoadOutcome, Undecided> {
+) -> Result<LoadOutcome, LoadUnsettled> {
     // unbounded: the discretisations sweep up to `UNBOUNDED_SEARCH_TOP`, as a discrete arch's
     let top = max.as_ref().map_or(UNBOUNDED_SEARCH_TOP, |m| m.0);
     let carry =
@@ -368,8 +396,27 @@ fn continuous_finite_friction(
         discretised::same_state(p, q, settings.same_state_eta * (1.0 + p.t.abs()), settings)
     };
     let sort = |l: &mut Vec<LimitState>| l.sort_by(|p, q| p.t.total_cmp(&q.t));
-    let (fine, events, _) = agreed(settings, carry, same, sort).map_err(|u| u.why)?;
-    let Some((lambda_s, x_s, pattern_s)) = max else {
+    let at_static = |(lambda_s, x_s, pattern_s): &continuum::Extreme| {
+        limit_state_on(arch, eta, mu, load, (*lambda_s, *x_s), pattern_s, settings)
+    };
+    let (fine, events, _) = match agreed(settings, carry, same, sort) {
+        Ok(a) => a,
+        Err(u) => {
+            // the state at λ_static too, where its check decides (it tops the list)
+            let mut found = u.found;
+            let checked = max.as_ref().and_then(|m| at_static(m).ok());
+            let mechanism_at_static = checked.as_ref().map(Option::is_some);
+            found.extend(checked.flatten());
+            return Err(LoadUnsettled {
+                why: u.why,
+                lambda_min: Some(min.0),
+                lambda_static: max.map(|m| m.0),
+                mechanism_at_static,
+                found,
+            });
+        }
+    };
+    let Some(m) = &max else {
         if fine.is_empty() {
             return Ok(LoadOutcome::NoCollapse {
                 lambda_min: min,
@@ -386,13 +433,13 @@ fn continuous_finite_friction(
             no_mechanism: Vec::new(),
         }));
     };
-    let at_static = limit_state_on(arch, eta, mu, load, (lambda_s, x_s), &pattern_s, settings)?;
+    let at_static = at_static(m)?;
     let mechanism_at_static = at_static.is_some();
     let mut limit_states = fine;
     limit_states.extend(at_static);
     Ok(LoadOutcome::Limits(LoadSurvey {
         lambda_min: min,
-        lambda_static: Some((lambda_s, x_s)),
+        lambda_static: Some((m.0, m.1)),
         mechanism_at_static,
         limit_states,
         events: events.unwrap_or(0),

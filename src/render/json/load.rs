@@ -6,9 +6,8 @@ use super::state::{mechanism_json, reactions, MechanismJson, Reactions};
 use crate::contact::Contact;
 use crate::limit_states::LimitState;
 use crate::load::LiveLoad;
-use crate::multiplier::LoadOutcome;
+use crate::multiplier::{LoadOutcome, LoadUnsettled};
 use crate::render::live_load::{at_joint, force_unit_kn, merged, LoadQuestion};
-use crate::undecided::Undecided;
 use schemars::JsonSchema;
 use serde::Serialize;
 
@@ -113,8 +112,17 @@ pub struct LoadDoc {
     mechanism_at_static: Option<bool>,
     /// 1 − λ_c / λ_static: how much non-associative friction lowers the collapse load.
     reduction: Option<f64>,
-    /// Every limit state with λ in [0, λ_static], ascending.
+    /// Every limit state with λ in [0, λ_static], ascending (`unresolved`: the ones found,
+    /// each verified; others may lie below).
     limit_states: Vec<StateJson>,
+    /// `unresolved` with limit states found: the least λ found, which the collapse
+    /// multiplier does not exceed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    lambda_at_most: Option<f64>,
+    /// `unresolved` with a limit state found below λ_static: 1 − `lambda_at_most`/λ_static,
+    /// which the reduction is at least.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    reduction_at_least: Option<f64>,
     /// How the limit states were searched.
     search: Option<SearchJson>,
     /// The answer in units (given the dimensions).
@@ -198,8 +206,8 @@ fn units(q: &LoadQuestion, lambda: Option<f64>, lambda_static: Option<f64>) -> O
 }
 
 /// The `load --json` document; the `Err` of the outcome is the reason no decision was
-/// reached (status `unresolved`).
-pub fn load(q: &LoadQuestion, outcome: &Result<LoadOutcome, Undecided>) -> LoadDoc {
+/// reached (status `unresolved`), with what was decided all the same.
+pub fn load(q: &LoadQuestion, outcome: &Result<LoadOutcome, LoadUnsettled>) -> LoadDoc {
     let mut doc = LoadDoc {
         version: JSON_VERSION,
         status: "ok",
@@ -214,14 +222,24 @@ pub fn load(q: &LoadQuestion, outcome: &Result<LoadOutcome, Undecided>) -> LoadD
         mechanism_at_static: None,
         reduction: None,
         limit_states: Vec::new(),
+        lambda_at_most: None,
+        reduction_at_least: None,
         search: None,
         units: None,
         message: None,
     };
     match outcome {
-        Err(reason) => {
+        Err(u) => {
             doc.status = "unresolved";
-            doc.message = Some(reason.to_string());
+            doc.message = Some(u.why.to_string());
+            doc.lambda_static = u.lambda_static;
+            doc.lambda_min = u.lambda_min;
+            doc.unique = u.unique();
+            doc.mechanism_at_static = u.mechanism_at_static;
+            doc.limit_states = u.found.iter().map(|l| state_json(&q.load, l)).collect();
+            doc.lambda_at_most = u.lambda_at_most();
+            doc.reduction_at_least = u.reduction_at_least();
+            doc.units = units(q, None, doc.lambda_static);
         }
         Ok(LoadOutcome::NoEquilibrium) => {
             doc.status = "no_equilibrium";

@@ -4,9 +4,8 @@
 use super::format::{describe_arch, fmt_mu, short, sig};
 use crate::limit_states::LimitState;
 use crate::load::LiveLoad;
-use crate::multiplier::{LoadOutcome, LoadSurvey};
+use crate::multiplier::{LoadOutcome, LoadSurvey, LoadUnsettled};
 use crate::render::live_load::{at_joint, force_unit_kn, merged, LoadQuestion};
-use crate::undecided::Undecided;
 use std::fmt::Write;
 
 /// A pattern as `kind@beta`, `<`/`>` marking the contacts before/after the loaded section.
@@ -26,7 +25,7 @@ pub(super) fn pattern_text(load: &LiveLoad, s: &LimitState) -> String {
 }
 
 /// The human-readable answer of `load`.
-pub fn load(q: &LoadQuestion, outcome: &Result<LoadOutcome, Undecided>) -> String {
+pub fn load(q: &LoadQuestion, outcome: &Result<LoadOutcome, LoadUnsettled>) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "{}", describe_arch(q.arch));
     let _ = writeln!(
@@ -37,9 +36,7 @@ pub fn load(q: &LoadQuestion, outcome: &Result<LoadOutcome, Undecided>) -> Strin
     );
     let _ = writeln!(s, "load                {}", load_text(q));
     match outcome {
-        Err(reason) => {
-            let _ = writeln!(s, "unresolved: {reason}");
-        }
+        Err(u) => unsettled(&mut s, q, u),
         Ok(LoadOutcome::NoEquilibrium) => {
             let _ = writeln!(
                 s,
@@ -60,6 +57,54 @@ pub fn load(q: &LoadQuestion, outcome: &Result<LoadOutcome, Undecided>) -> Strin
         }
     }
     s.lines().map(|l| l.trim_end().to_string() + "\n").collect()
+}
+
+/// An undecided survey: why, and what it decided all the same (the static maximum, the
+/// limit states found, an upper bound on the collapse multiplier, "not unique").
+fn unsettled(s: &mut String, q: &LoadQuestion, u: &LoadUnsettled) {
+    if let Some(m) = u.lambda_static {
+        let _ = writeln!(
+            s,
+            "static maximum      lambda_static = {}{} (exact){}",
+            sig(m, 12),
+            physical(q, m),
+            match u.mechanism_at_static {
+                Some(true) => "; carries a mechanism with positive live power",
+                Some(false) => "; carries NO mechanism with positive live power",
+                None => "",
+            }
+        );
+    }
+    let _ = writeln!(s, "unresolved: {}", u.why);
+    let Some(at_most) = u.lambda_at_most() else {
+        return;
+    };
+    let _ = writeln!(
+        s,
+        "found all the same (each a limit state, verified on the continuum; others may lie below):"
+    );
+    for l in &u.found {
+        let _ = writeln!(
+            s,
+            "  lambda = {}  {}  {}",
+            sig(l.t, 12),
+            l.mode.name(),
+            pattern_text(&q.load, l)
+        );
+    }
+    let _ = writeln!(
+        s,
+        "collapse multiplier not decided: at most {}{}{}",
+        sig(at_most, 12),
+        physical(q, at_most),
+        u.reduction_at_least().map_or(String::new(), |r| format!(
+            " (reduction 1 - lambda/lambda_static at least {})",
+            sig(r, 6)
+        ))
+    );
+    if u.unique() == Some(false) {
+        let _ = writeln!(s, "verdict             not unique (two limit states found)");
+    }
 }
 
 /// The live load in words, with where a point load sits.
