@@ -95,8 +95,9 @@ pub enum LoadOutcome {
 /// all the same: the ends of the static range where they were computed (each exact), and
 /// the limit states found — on a continuous arch whose discretisations do not settle, each
 /// carried over from one of them, refined and verified on the continuum (a limit state:
-/// admissible over the arch, a mechanism with positive live power), and the state at
-/// λ_static where it carries a mechanism. Others may lie below them, so the collapse
+/// admissible over the arch, a mechanism with positive live power), and the states at
+/// λ_static where they carry a mechanism (on a discrete arch whose sweep is beyond its
+/// budget, those alone). Others may lie below them, so the collapse
 /// multiplier is not decided: it is at most the least λ found.
 #[derive(Debug, Clone)]
 pub struct LoadUnsettled {
@@ -112,6 +113,9 @@ pub struct LoadUnsettled {
     /// The limit states found, ascending in λ (empty where none was, or where the survey
     /// stopped before its list).
     pub found: Vec<LimitState>,
+    /// How many of `found`, the first ones, lie below λ_static by more than the resolution
+    /// at which λ is decided (the rest are states at λ_static).
+    pub below_static: usize,
 }
 
 impl From<Undecided> for LoadUnsettled {
@@ -122,6 +126,7 @@ impl From<Undecided> for LoadUnsettled {
             lambda_static: None,
             mechanism_at_static: None,
             found: Vec::new(),
+            below_static: 0,
         }
     }
 }
@@ -138,10 +143,10 @@ impl LoadUnsettled {
         (crate::limit_states::distinct(&self.found).len() >= 2).then_some(false)
     }
 
-    /// 1 − λ/λ_static for the least λ found: the collapse multiplier lies at least this far
-    /// below the static maximum.
+    /// 1 − λ/λ_static for the least λ found below λ_static: the collapse multiplier lies at
+    /// least this far below the static maximum (`None`: none was found below it).
     pub fn reduction_at_least(&self) -> Option<f64> {
-        let (l, s) = (self.lambda_at_most()?, self.lambda_static?);
-        (l < s).then(|| 1.0 - l / s)
+        let s = self.lambda_static?;
+        (self.below_static > 0).then(|| 1.0 - self.found[0].t / s)
     }
 }

@@ -71,6 +71,7 @@ pub fn survey_partial(
         lambda_static: max.map(|m| m.0),
         mechanism_at_static: None,
         found: Vec::new(),
+        below_static: 0,
     };
     let continua = match continua(arch, eta, mu, load, &all_rows, settings) {
         Ok(c) => c,
@@ -110,7 +111,7 @@ pub fn survey_partial(
     }
     let (sw, _) = swept.expect("swept at finite mu");
     if let Some(f) = sw.failure {
-        return Ok(Err(unsettled(match max {
+        let why = match max {
             Some(m) => f.map_text(|f| {
                 format!(
                     "{f} (lambda_static of these {} joints = {}, exact)",
@@ -119,7 +120,14 @@ pub fn survey_partial(
                 )
             }),
             None => f,
-        })));
+        };
+        // the states at λ_static are decided without the sweep
+        let found = at_static.map(|a| a.limit_states);
+        return Ok(Err(LoadUnsettled {
+            mechanism_at_static: found.as_ref().map(|f| !f.is_empty()),
+            found: found.unwrap_or_default(),
+            ..unsettled(why)
+        }));
     }
     // where the arch does not stand unloaded (λ_min > 0) the state at λ_min is the
     // unloading end: the arch fails there as λ decreases, and it is never reported as a
@@ -403,7 +411,9 @@ fn continuous_finite_friction(
         Ok(a) => a,
         Err(u) => {
             // the state at λ_static too, where its check decides (it tops the list)
+            // (each carried state lies below λ_static: `below`)
             let mut found = u.found;
+            let below_static = found.len();
             let checked = max.as_ref().and_then(|m| at_static(m).ok());
             let mechanism_at_static = checked.as_ref().map(Option::is_some);
             found.extend(checked.flatten());
@@ -413,6 +423,7 @@ fn continuous_finite_friction(
                 lambda_static: max.map(|m| m.0),
                 mechanism_at_static,
                 found,
+                below_static,
             });
         }
     };

@@ -824,7 +824,19 @@ fn search_budget_is_said_not_hidden() {
     ]);
     assert_eq!(code, 1);
     assert_eq!(v["status"], "unresolved");
-    assert!(v["message"].as_str().unwrap().contains("lambda_static = "));
+    assert!(v["message"]
+        .as_str()
+        .unwrap()
+        .contains("lambda_static of these 1001 joints = "));
+    // decided without the sweep: the static maximum and the states there
+    // (the face's state has λ_static to rounding)
+    let top = v["lambda_static"].as_f64().unwrap();
+    let at_most = v["lambda_at_most"].as_f64().unwrap();
+    assert!((at_most - top).abs() <= 1e-14 * top, "{at_most} vs {top}");
+    assert_eq!(v["limit_states"][0]["lambda"].as_f64(), Some(at_most));
+    assert!(v["lambda"].is_null() && v["mechanism_at_static"] == true);
+    // a state at λ_static is no reduction, whatever its rounding
+    assert!(v["reduction_at_least"].is_null(), "{v}");
     let (v, code) = crate::cli::json_of(&[
         "load",
         "--alpha",

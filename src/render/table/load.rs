@@ -81,7 +81,7 @@ fn unsettled(s: &mut String, q: &LoadQuestion, u: &LoadUnsettled) {
     };
     let _ = writeln!(
         s,
-        "found all the same (each a limit state, verified on the continuum; others may lie below):"
+        "found all the same (each a limit state, checked over the whole arch; others may lie below):"
     );
     for l in &u.found {
         let _ = writeln!(
