@@ -113,21 +113,12 @@ pub fn survey_partial(
     if let Some(f) = sw.failure {
         let why = match max {
             Some(m) => f.map_text(|f| {
-                format!(
-                    "{f} (lambda_static of these {} joints = {}, exact)",
-                    joints.len(),
-                    m.0
-                )
+                let n = joints.len();
+                format!("{f} (lambda_static of these {n} joints = {}, exact)", m.0)
             }),
             None => f,
         };
-        // the states at λ_static are decided without the sweep
-        let found = at_static.map(|a| a.limit_states);
-        return Ok(Err(LoadUnsettled {
-            mechanism_at_static: found.as_ref().map(|f| !f.is_empty()),
-            found: found.unwrap_or_default(),
-            ..unsettled(why)
-        }));
+        return Ok(Err(with_static_states(unsettled(why), at_static)));
     }
     // where the arch does not stand unloaded (λ_min > 0) the state at λ_min is the
     // unloading end: the arch fails there as λ decreases, and it is never reported as a
@@ -165,6 +156,17 @@ pub fn survey_partial(
         method: "sweep",
         no_mechanism,
     })))
+}
+
+/// An undecided survey of a discrete arch with the states at λ_static, decided without the
+/// sweep (by the optimal face).
+fn with_static_states(u: LoadUnsettled, at_static: Option<face::AtStatic>) -> LoadUnsettled {
+    let found = at_static.map(|a| a.limit_states);
+    LoadUnsettled {
+        mechanism_at_static: found.as_ref().map(|f| !f.is_empty()),
+        found: found.unwrap_or_default(),
+        ..u
+    }
 }
 
 /// The states at λ_static of a discrete arch: the optimal face whole, by a walk on its

@@ -84,13 +84,7 @@ fn unsettled(s: &mut String, q: &LoadQuestion, u: &LoadUnsettled) {
         "found all the same (each a limit state, checked over the whole arch; others may lie below):"
     );
     for l in &u.found {
-        let _ = writeln!(
-            s,
-            "  lambda = {}  {}  {}",
-            sig(l.t, 12),
-            l.mode.name(),
-            pattern_text(&q.load, l)
-        );
+        let _ = writeln!(s, "{}", state_line(q, l));
     }
     let _ = writeln!(
         s,
@@ -227,21 +221,7 @@ fn limit_states(s: &mut String, q: &LoadQuestion, sv: &LoadSurvey) {
         "limit states ({how}; E/I hinge at extrados/intrados, S+/S- sliding, < > before/after the loaded section):"
     );
     for l in &sv.limit_states {
-        let _ = writeln!(
-            s,
-            "  lambda = {}  {}  {}{}",
-            sig(l.t, 12),
-            l.mode.name(),
-            pattern_text(&q.load, l),
-            l.continuum_to.map_or(String::new(), |to| if to > l.t {
-                format!(
-                    "  (least of a continuum of limit states up to lambda = {})",
-                    sig(to, 12)
-                )
-            } else {
-                "  (a continuum of limit states at this lambda: every state of a face of the admissible set)".to_string()
-            })
-        );
+        let _ = writeln!(s, "{}", state_line(q, l));
     }
     let _ = writeln!(
         s,
@@ -254,4 +234,23 @@ fn limit_states(s: &mut String, q: &LoadQuestion, sv: &LoadSurvey) {
             "not unique"
         }
     );
+}
+
+/// One limit state as a line: its λ, mode and pattern, and where it is the least of a
+/// continuum of limit states, up to where.
+fn state_line(q: &LoadQuestion, l: &LimitState) -> String {
+    let continuum = l.continuum_to.map_or(String::new(), |to| if to > l.t {
+        format!(
+            "  (least of a continuum of limit states up to lambda = {})",
+            sig(to, 12)
+        )
+    } else {
+        "  (a continuum of limit states at this lambda: every state of a face of the admissible set)".to_string()
+    });
+    format!(
+        "  lambda = {}  {}  {}{continuum}",
+        sig(l.t, 12),
+        l.mode.name(),
+        pattern_text(&q.load, l)
+    )
 }
