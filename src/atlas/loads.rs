@@ -15,7 +15,7 @@ use crate::collapse_mode::CollapseMode;
 use crate::limit::{solve, Outcome};
 use crate::limit_states::LimitState;
 use crate::load::LiveLoad;
-use crate::multiplier::{follow, static_range, survey, LoadOutcome, StaticRange};
+use crate::multiplier::{follow, static_range, survey_partial, LoadOutcome, StaticRange};
 use crate::settings::Settings;
 use crate::threads;
 
@@ -49,10 +49,14 @@ pub enum CellAnswer {
     Ratio {
         /// λ_static.
         lambda_static: f64,
-        /// λ_c, the least limit state's λ.
+        /// λ_c, the least limit state's λ (with `at_most`, the least found: λ_c ≤ it).
         lambda_c: f64,
-        /// The least limit state's mode.
+        /// The least limit state's mode (with `at_most`, the least found's).
         mode: CollapseMode,
+        /// Whether `lambda_c` is only a bound: the survey did not settle, but found a limit
+        /// state below λ_static, verified on the continuum ([`crate::multiplier::LoadUnsettled`]),
+        /// so the cell is reduced by at least 1 − `lambda_c`/λ_static.
+        at_most: bool,
     },
     /// The load drives no mechanism (λ unbounded, or no limit state).
     NoCollapse,
@@ -94,6 +98,7 @@ impl LoadCell {
                 lambda_static,
                 lambda_c,
                 mode,
+                ..
             } => Some((lambda_static, lambda_c, mode)),
             _ => None,
         }
@@ -106,6 +111,12 @@ impl LoadCell {
             self.answer,
             CellAnswer::Ratio { .. } | CellAnswer::NoCollapse
         )
+    }
+
+    /// Whether its λ_c is only a bound (a survey that did not settle, a limit state found
+    /// below λ_static): its reduction is then at least [`LoadCell::reduction`].
+    pub fn at_least(&self) -> bool {
+        matches!(self.answer, CellAnswer::Ratio { at_most: true, .. })
     }
 
     /// Whether non-associative friction lowers λ_c below λ_static here.
@@ -297,10 +308,13 @@ fn boundary(
     while f1 - f0 > BOUNDARY_REL * f1 {
         let mid = 0.5 * (f0 + f1);
         let (c, least) = surveyed(rect, (alpha, mid, mu), &Ok(star), settings)?;
-        let reduced = match (&c.answer, c.ratio()) {
-            (_, Some(_)) => c.reduced(),
-            (CellAnswer::NoCollapse, None) => false,
-            (CellAnswer::Undecided(_), None) => {
+        // a survey that did not settle (a bound, or undecided): the reduced side's state
+        // followed first, as where the survey finds nothing; a bound decides where it fails
+        let bound = c.at_least();
+        let reduced = match &c.answer {
+            CellAnswer::Ratio { at_most: false, .. } => c.reduced(),
+            CellAnswer::NoCollapse => false,
+            CellAnswer::Ratio { .. } | CellAnswer::Undecided(_) => {
                 if tracked.is_none() {
                     let at = (alpha, reduced_end.factor, mu);
                     tracked = Some(surveyed(rect, at, &Ok(star), settings)?.1);
@@ -318,6 +332,7 @@ fn boundary(
                         }
                         continue;
                     }
+                    Err(_) if bound => c.reduced(),
                     Err(why) => {
                         let e = mid * star;
                         stopped = Some(format!(
@@ -327,7 +342,7 @@ fn boundary(
                     }
                 }
             }
-            (_, None) => {
+            CellAnswer::NoRing => {
                 stopped = Some(format!("no ring at eta = {}", mid * star));
                 break;
             }
@@ -491,21 +506,27 @@ fn surveyed(
     }
     let load = horizontal();
     let mut first = None;
-    let answer = match survey(&arch, eta, mu, &load, settings)? {
+    let mut ratio = |lambda_static: f64, least: &LimitState, at_most: bool| {
+        first = Some(least.clone());
+        CellAnswer::Ratio {
+            lambda_static,
+            lambda_c: least.t,
+            mode: least.mode,
+            at_most,
+        }
+    };
+    let answer = match survey_partial(&arch, eta, mu, &load, settings)? {
         Ok(LoadOutcome::Limits(sv)) => match (sv.lambda_static, sv.limit_states.first()) {
-            (Some((lambda_static, _)), Some(least)) => {
-                first = Some(least.clone());
-                CellAnswer::Ratio {
-                    lambda_static,
-                    lambda_c: least.t,
-                    mode: least.mode,
-                }
-            }
+            (Some((lambda_static, _)), Some(least)) => ratio(lambda_static, least, false),
             _ => CellAnswer::NoCollapse,
         },
         Ok(LoadOutcome::NoCollapse { .. }) => CellAnswer::NoCollapse,
         Ok(LoadOutcome::NoEquilibrium) => CellAnswer::NoRing,
-        Err(e) => CellAnswer::Undecided(e.to_string()),
+        // not settled, but a verified limit state below λ_static: reduced, by at least
+        Err(u) => match (u.lambda_static, u.reduction_at_least()) {
+            (Some(lambda_static), Some(_)) => ratio(lambda_static, &u.found[0], true),
+            _ => CellAnswer::Undecided(u.why.to_string()),
+        },
     };
     let mut c = at(Some(eta), answer);
     if rect.certify && c.reduced() {

@@ -174,7 +174,8 @@ fn caption(map: &LoadMap, mu: f64) -> String {
     );
     let cells = match map.largest(mu) {
         Some(c) => format!(
-            "{head}, most {:.1} % (α = {}, η = {})",
+            "{head}, most {}{:.1} % (α = {}, η = {})",
+            if c.at_least() { "≥ " } else { "" },
             100.0 * c.reduction().unwrap(),
             short_trimmed(c.alpha),
             short_trimmed(c.eta.unwrap_or(f64::NAN))
@@ -253,7 +254,8 @@ fn percent(ch: &mut Chart, c: &LoadCell, at: (f64, f64), top: f64) -> Result<(),
     let style = TextStyle::from((FAMILY, 11).into_font())
         .pos(Pos::new(HPos::Center, VPos::Center))
         .color(&ink);
-    let text = format!("{:.1}", 100.0 * r);
+    // a survey that did not settle: at least this much
+    let text = format!("{}{:.1}", if c.at_least() { "≥" } else { "" }, 100.0 * r);
     ch.draw_series(std::iter::once(Text::new(text, at, style)))
         .map_err(err)?;
     Ok(())

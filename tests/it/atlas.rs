@@ -1286,7 +1286,8 @@ fn the_semicircle_is_not_free_of_a_reduction() {
 /// 192 miss it, 384 are beyond the sweep's budget), so the collapse multiplier is not
 /// decided; what is decided stays in the answer: λ_static (exact), the reduced state found
 /// (a limit state of the continuum, checked independently as below), hence "not unique"
-/// and the bound λ_c ≤ 0.18133 (at least 16.6 % below λ_static).
+/// and the bound λ_c ≤ 0.18133 (at least 16.6 % below λ_static). The load map's cell at that
+/// ring takes the bound (`at_most`: reduced by at least as much).
 #[test]
 fn an_unsettled_load_survey_keeps_what_it_decided() {
     let (doc, code) = json_of(&[
@@ -1324,6 +1325,40 @@ fn an_unsettled_load_survey_keeps_what_it_decided() {
     assert!((reduction - 0.166).abs() < 1e-3, "{reduction}");
     let r = doc["reduction_at_least"].as_f64().unwrap();
     assert!((r - reduction).abs() < 1e-9, "{r} vs {reduction}");
+    // the load map takes that bound: its cell at this ring is reduced by at least r
+    use arch_enum::atlas::loads::{load_map, LoadGrid};
+    use arch_enum::atlas::Rectangle;
+    let Outcome::Limit(ls) = arch_enum::limit::solve(&arch, 1.0, &settings)
+        .unwrap()
+        .outcome
+    else {
+        panic!("eta* at alpha = 0.5")
+    };
+    let grid = LoadGrid {
+        rect: Rectangle {
+            alpha_min: 0.5,
+            alpha_max: 0.55,
+            mu_max_factor: 10.0,
+            weight: WeightModel::Centreline,
+            blocks: None,
+            columns: 2,
+            samples: 40,
+            certify: false,
+        },
+        mus: vec![1.0],
+        factors: 2,
+        factor_max: 0.6125 / ls.eta_static,
+    };
+    let map = load_map(&grid, &settings, 2, &|_, _| {}).unwrap();
+    let cell = map
+        .cells
+        .iter()
+        .filter(|c| c.alpha == 0.5)
+        .max_by(|a, b| a.factor.total_cmp(&b.factor))
+        .unwrap();
+    assert!((cell.eta.unwrap() - 0.6125).abs() < 1e-12, "{cell:?}");
+    assert!(cell.at_least() && cell.reduced(), "{cell:?}");
+    assert!((cell.reduction().unwrap() - r).abs() < 1e-9, "{cell:?}");
 }
 
 /// The least limit state of a horizontal acceleration (towards the right springing) on the

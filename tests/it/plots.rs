@@ -894,6 +894,7 @@ fn load_map_figure_fills_each_cell_by_its_answer() {
         lambda_static,
         lambda_c: 0.875 * lambda_static,
         mode,
+        at_most: false,
     };
     let reduced = map.cells[k].clone();
     let u = map.cells.iter().rposition(ratio).unwrap();

@@ -34,7 +34,9 @@ struct CellJson {
     factor: f64,
     mu: f64,
     eta: Option<f64>,
-    /// `ratio`, `no_collapse`, `no_ring` or `undecided`.
+    /// `ratio`, `at_most` (the survey did not settle but found a limit state below
+    /// λ_static, verified: `lambda_c` is the least found, λ_c does not exceed it, and
+    /// `reduction` is a lower bound), `no_collapse`, `no_ring` or `undecided`.
     status: &'static str,
     lambda_static: Option<f64>,
     lambda_c: Option<f64>,
@@ -127,8 +129,9 @@ fn cell_json(c: &LoadCell) -> CellJson {
             lambda_static,
             lambda_c,
             mode,
+            at_most,
         } => (
-            "ratio",
+            if *at_most { "at_most" } else { "ratio" },
             Some((*lambda_static, *lambda_c)),
             Some(mode.name()),
             None,

@@ -79,6 +79,8 @@ pub fn load_map(map: &LoadMap) -> String {
         let Some((lambda_static, lambda_c, mode)) = c.ratio() else {
             continue;
         };
+        // a survey that did not settle: λ_c at most the least state found
+        let bound = if c.at_least() { ">=" } else { "" };
         let _ = writeln!(
             s,
             "  {:>10}  {:>10}  {:>10}  {:>13}  {:>12}  {:>9}  {}{}",
@@ -86,8 +88,8 @@ pub fn load_map(map: &LoadMap) -> String {
             sig(c.alpha, 6),
             c.eta.map_or("-".into(), |e| sig(e, 6)),
             sig(lambda_static, 8),
-            sig(lambda_c, 8),
-            sig(c.reduction().unwrap_or(0.0), 4),
+            (if bound.is_empty() { "" } else { "<=" }).to_string() + &sig(lambda_c, 8),
+            bound.to_string() + &sig(c.reduction().unwrap_or(0.0), 4),
             match c.certified {
                 Some(_) => format!("{:<24}", mode.name()),
                 None => mode.name().into(),
