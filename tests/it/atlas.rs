@@ -1243,9 +1243,6 @@ fn a_sliver_born_at_a_corner_is_sampled() {
 /// `load_reference` (its own kinematic LP).
 #[test]
 fn the_semicircle_is_not_free_of_a_reduction() {
-    use arch_enum::atlas::loads::{load_map, LoadGrid};
-    use arch_enum::atlas::Rectangle;
-    let settings = Settings::default();
     let semi = Arch::symmetric(0.0, WeightModel::Centreline).unwrap();
     let (reduction, _) = reduced_independently(&semi, 0.5701, 1.0);
     assert!(reduction > 0.03 && reduction < 0.04, "{reduction}");
@@ -1254,22 +1251,7 @@ fn the_semicircle_is_not_free_of_a_reduction() {
     assert!(reduction > 0.07 && reduction < 0.085, "{reduction}");
     // the map over rings from 1.02 eta* to 5.3 eta* (inside the reduced stretch): where the
     // reduction begins, bisected to 1e-9
-    let grid = LoadGrid {
-        rect: Rectangle {
-            alpha_min: 0.0,
-            alpha_max: 0.1,
-            mu_max_factor: 10.0,
-            weight: WeightModel::Centreline,
-            blocks: None,
-            columns: 2,
-            samples: 40,
-            certify: false,
-        },
-        mus: vec![1.0],
-        factors: 2,
-        factor_max: 5.3,
-    };
-    let map = load_map(&grid, &settings, 2, &|_, _| {}).unwrap();
+    let map = two_by_two_load_map((0.0, 0.1), 1.0, 5.3);
     assert_eq!(map.semicircle(1.0).map(|r| r > 0.03), Some(true));
     let begin: Vec<_> = map.boundaries.iter().filter(|b| b.alpha == 0.0).collect();
     assert_eq!(begin.len(), 1, "{:?}", map.boundaries);
@@ -1326,30 +1308,13 @@ fn an_unsettled_load_survey_keeps_what_it_decided() {
     let r = doc["reduction_at_least"].as_f64().unwrap();
     assert!((r - reduction).abs() < 1e-9, "{r} vs {reduction}");
     // the load map takes that bound: its cell at this ring is reduced by at least r
-    use arch_enum::atlas::loads::{load_map, LoadGrid};
-    use arch_enum::atlas::Rectangle;
     let Outcome::Limit(ls) = arch_enum::limit::solve(&arch, 1.0, &settings)
         .unwrap()
         .outcome
     else {
         panic!("eta* at alpha = 0.5")
     };
-    let grid = LoadGrid {
-        rect: Rectangle {
-            alpha_min: 0.5,
-            alpha_max: 0.55,
-            mu_max_factor: 10.0,
-            weight: WeightModel::Centreline,
-            blocks: None,
-            columns: 2,
-            samples: 40,
-            certify: false,
-        },
-        mus: vec![1.0],
-        factors: 2,
-        factor_max: 0.6125 / ls.eta_static,
-    };
-    let map = load_map(&grid, &settings, 2, &|_, _| {}).unwrap();
+    let map = two_by_two_load_map((0.5, 0.55), 1.0, 0.6125 / ls.eta_static);
     let cell = map
         .cells
         .iter()
@@ -1359,6 +1324,34 @@ fn an_unsettled_load_survey_keeps_what_it_decided() {
     assert!((cell.eta.unwrap() - 0.6125).abs() < 1e-12, "{cell:?}");
     assert!(cell.at_least() && cell.reduced(), "{cell:?}");
     assert!((cell.reduction().unwrap() - r).abs() < 1e-9, "{cell:?}");
+}
+
+/// The load map of a horizontal acceleration at friction `mu` over the two openings `alphas`
+/// (continuous, centreline weight) and the two rings 1.02 η\* and `factor_max` η\* of each,
+/// with its boundaries bisected.
+fn two_by_two_load_map(
+    (alpha_min, alpha_max): (f64, f64),
+    mu: f64,
+    factor_max: f64,
+) -> arch_enum::atlas::loads::LoadMap {
+    use arch_enum::atlas::loads::{load_map, LoadGrid};
+    use arch_enum::atlas::Rectangle;
+    let grid = LoadGrid {
+        rect: Rectangle {
+            alpha_min,
+            alpha_max,
+            mu_max_factor: 10.0,
+            weight: WeightModel::Centreline,
+            blocks: None,
+            columns: 2,
+            samples: 40,
+            certify: false,
+        },
+        mus: vec![mu],
+        factors: 2,
+        factor_max,
+    };
+    load_map(&grid, &Settings::default(), 2, &|_, _| {}).unwrap()
 }
 
 /// The least limit state of a horizontal acceleration (towards the right springing) on the
