@@ -149,6 +149,10 @@ pub struct LoadBoundary {
     /// followed there ([`crate::multiplier::follow`]), is a limit state below λ_static: the
     /// midpoint is reduced.
     pub followed: usize,
+    /// Midpoints where the survey did not settle, the followed state failed, and a limit
+    /// state the survey found below λ_static (verified) decided them reduced
+    /// ([`LoadCell::at_least`]); the reduction at the reduced end is then at least its value.
+    pub bounded: usize,
     /// With [`Rectangle::certify`]: the reduction a verified load certificate proves at least
     /// at the bracket's reduced end ([`super::certified_reduction`]), or why not (the other
     /// end, without a reduction, is not certified as such).
@@ -304,7 +308,7 @@ fn boundary(
     // each reduced midpoint's
     let mut tracked: Option<Option<LimitState>> = None;
     let mut reduction = reduced_end.reduction().unwrap_or(f64::NAN);
-    let (mut stopped, mut followed) = (None, 0);
+    let (mut stopped, mut followed, mut bounded) = (None, 0, 0);
     while f1 - f0 > BOUNDARY_REL * f1 {
         let mid = 0.5 * (f0 + f1);
         let (c, least) = surveyed(rect, (alpha, mid, mu), &Ok(star), settings)?;
@@ -332,7 +336,10 @@ fn boundary(
                         }
                         continue;
                     }
-                    Err(_) if bound => c.reduced(),
+                    Err(_) if bound => {
+                        bounded += 1;
+                        c.reduced()
+                    }
                     Err(why) => {
                         let e = mid * star;
                         stopped = Some(format!(
@@ -371,6 +378,7 @@ fn boundary(
         stopped,
         reduction,
         followed,
+        bounded,
         certified,
     })
 }

@@ -915,6 +915,7 @@ fn load_map_figure_fills_each_cell_by_its_answer() {
         stopped: None,
         reduction: 0.125,
         followed: 0,
+        bounded: 0,
         certified: None,
     }];
     assert!(next > reduced.factor * 1.01);

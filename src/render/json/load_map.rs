@@ -75,6 +75,11 @@ struct BoundaryJson {
     /// limit state followed there (Newton on its pattern, verified over the arch, a
     /// mechanism with positive live power, below λ_static).
     followed: usize,
+    /// Midpoints the survey did not settle and following did not decide, decided reduced by
+    /// a limit state the survey found below λ_static (verified; cells of status `at_most`);
+    /// then the reduction is at least `reduction`. Absent when none.
+    #[serde(skip_serializing_if = "is_zero")]
+    bounded: usize,
     /// With `--certify`: the reduction a verified load certificate proves at least at the
     /// bracket's reduced end.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -82,6 +87,10 @@ struct BoundaryJson {
     /// With `--certify`: why the reduced end is not certified.
     #[serde(skip_serializing_if = "Option::is_none")]
     not_certified: Option<String>,
+}
+
+fn is_zero(n: &usize) -> bool {
+    *n == 0
 }
 
 fn boundary_json(b: &LoadBoundary) -> BoundaryJson {
@@ -98,6 +107,7 @@ fn boundary_json(b: &LoadBoundary) -> BoundaryJson {
         stopped: b.stopped.clone(),
         reduction: b.reduction,
         followed: b.followed,
+        bounded: b.bounded,
         certified_reduction: b.certified.clone().and_then(Result::ok),
         not_certified: b.certified.clone().and_then(Result::err),
     }

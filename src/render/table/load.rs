@@ -65,14 +65,8 @@ fn unsettled(s: &mut String, q: &LoadQuestion, u: &LoadUnsettled) {
     if let Some(m) = u.lambda_static {
         let _ = writeln!(
             s,
-            "static maximum      lambda_static = {}{} (exact){}",
-            sig(m, 12),
-            physical(q, m),
-            match u.mechanism_at_static {
-                Some(true) => "; carries a mechanism with positive live power",
-                Some(false) => "; carries NO mechanism with positive live power",
-                None => "",
-            }
+            "{}",
+            static_line(q, m, " (exact)", u.mechanism_at_static)
         );
     }
     let _ = writeln!(s, "unresolved: {}", u.why);
@@ -170,14 +164,8 @@ fn multipliers(s: &mut String, q: &LoadQuestion, sv: &LoadSurvey) {
     if let Some(m) = sv.lambda_static {
         let _ = writeln!(
             s,
-            "static maximum      lambda_static = {}{}; {}",
-            sig(m.0, 12),
-            physical(q, m.0),
-            if sv.mechanism_at_static {
-                "carries a mechanism with positive live power"
-            } else {
-                "carries NO mechanism with positive live power"
-            }
+            "{}",
+            static_line(q, m.0, "", Some(sv.mechanism_at_static))
         );
     }
     match sv.lambda() {
@@ -252,5 +240,20 @@ fn state_line(q: &LoadQuestion, l: &LimitState) -> String {
         sig(l.t, 12),
         l.mode.name(),
         pattern_text(&q.load, l)
+    )
+}
+
+/// The static maximum as a line: λ_static, in units where given, `note`, and whether its
+/// state carries a mechanism with positive live power (where decided).
+fn static_line(q: &LoadQuestion, lambda: f64, note: &str, mechanism: Option<bool>) -> String {
+    format!(
+        "static maximum      lambda_static = {}{}{note}{}",
+        sig(lambda, 12),
+        physical(q, lambda),
+        match mechanism {
+            Some(true) => "; carries a mechanism with positive live power",
+            Some(false) => "; carries NO mechanism with positive live power",
+            None => "",
+        }
     )
 }

@@ -122,7 +122,7 @@ fn boundaries(s: &mut String, map: &LoadMap) {
     for b in &map.boundaries {
         let _ = writeln!(
             s,
-            "  {:>10}  {:>10}  [{}, {}]  {} {}{}{}{}",
+            "  {:>10}  {:>10}  [{}, {}]  {} {}{}{}{}{}",
             sig(b.mu, 6),
             sig(b.alpha, 6),
             sig(b.etas.0, 12),
@@ -137,6 +137,14 @@ fn boundaries(s: &mut String, map: &LoadMap) {
                 format!(
                     " ({} midpoints decided by following its limit state)",
                     b.followed
+                )
+            } else {
+                String::new()
+            },
+            if b.bounded > 0 {
+                format!(
+                    " ({} midpoints decided by a limit state the survey found: at least)",
+                    b.bounded
                 )
             } else {
                 String::new()
