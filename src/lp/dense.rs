@@ -204,9 +204,10 @@ fn dual_simplex(
 
 /// The kinematic LP of [`super::highs::kinematic`] (maximise `objective · λ` subject to
 /// Σ λ_j c_j = 0, `power · λ ≥ 0`, Σ λ = 1, λ ≥ 0) for small patterns, by enumerating the
-/// basic solutions of its five equality rows (power with a slack): where
-/// [`kinematic_rows`] is [`KinematicRows::Full`], [`kinematic_vertices`] once per pattern, then [`kinematic_best`]
-/// for each objective (`Infeasible` when there is no vertex). Elsewhere HiGHS solves it.
+/// basic solutions of its five equality rows (power with a slack), or of the independent
+/// ones among them: where [`kinematic_rows`] is [`KinematicRows::Independent`],
+/// [`kinematic_vertices`] once per pattern, then [`kinematic_best`] for each objective
+/// (`Infeasible` when there is no vertex). Elsewhere HiGHS solves it.
 /// The equality rows of the kinematic LP with the power slack: λ_j → (c_j, p_j, 1), the
 /// slack → (0, 0, 0, −1, 0).
 fn kinematic_column(columns: &[[f64; 3]], power: &[f64], j: usize) -> [f64; 5] {
@@ -221,8 +222,10 @@ fn kinematic_column(columns: &[[f64; 3]], power: &[f64], j: usize) -> [f64; 5] {
 /// objective: decided once for several solves).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum KinematicRows {
-    /// 1 to 12 rates and rows of full rank: the enumeration of bases applies.
-    Full,
+    /// 1 to 12 rates, and these rows (bit k: row k) independent, every other row a
+    /// combination of them right-hand side included (all five where the rows have full
+    /// rank): the enumeration of bases of that many columns applies.
+    Independent(u8),
     /// 1 to 12 rates and rows that contradict each other whatever the signs of the rates
     /// (the right-hand side outside their span, e.g. hinges whose rotations must sum to
     /// zero and to one): the LP is infeasible.
@@ -231,7 +234,10 @@ pub enum KinematicRows {
     Other,
 }
 
-/// Classifies the equality rows of the kinematic LP of these rates ([`KinematicRows`]).
+/// Classifies the equality rows of the kinematic LP of these rates ([`KinematicRows`]):
+/// the rows are taken in order, each kept when it raises the rank of the kept rows with
+/// their right-hand side; a right-hand side outside the span of the columns makes the
+/// rows inconsistent.
 pub fn kinematic_rows(columns: &[[f64; 3]], power: &[f64]) -> KinematicRows {
     use nalgebra::DMatrix;
     let n = columns.len();
@@ -241,32 +247,73 @@ pub fn kinematic_rows(columns: &[[f64; 3]], power: &[f64]) -> KinematicRows {
     let rows = DMatrix::from_fn(5, n + 1, |r, c| kinematic_column(columns, power, c)[r]);
     let rank = rows.rank(1e2 * BASIS_TOL);
     if rank >= 5 {
-        return KinematicRows::Full;
+        return KinematicRows::Independent(0b11111);
     }
     // the right-hand side (0, 0, 0, 0, 1) appended as a column: a greater rank puts it
     // outside the rows' span
-    let with_rhs = rows.insert_column(n + 1, 0.0);
-    let mut with_rhs = with_rhs;
+    let mut with_rhs = rows.insert_column(n + 1, 0.0);
     with_rhs[(4, n + 1)] = 1.0;
     if with_rhs.rank(1e2 * BASIS_TOL) > rank {
-        KinematicRows::Inconsistent
-    } else {
-        KinematicRows::Other
+        return KinematicRows::Inconsistent;
+    }
+    let (mut kept, mut mask) = (0, 0u8);
+    for r in 0..5 {
+        let trial = mask | 1 << r;
+        let picked: Vec<usize> = (0..5).filter(|k| trial & 1 << k != 0).collect();
+        if with_rhs.select_rows(picked.iter()).rank(1e2 * BASIS_TOL) > kept {
+            kept += 1;
+            mask = trial;
+        }
+    }
+    KinematicRows::Independent(mask)
+}
+
+/// Every basic feasible solution of the kinematic LP's equality rows `rows` (the
+/// independent ones, [`KinematicRows::Independent`]): the rates λ, in the order the bases
+/// are enumerated; the vertices among which [`kinematic_best`] picks, the same for every
+/// objective.
+pub fn kinematic_vertices(
+    columns: &[[f64; 3]],
+    power: &[f64],
+    rows: u8,
+    tol: f64,
+) -> Vec<Vec<f64>> {
+    let picked: Vec<usize> = (0..5).filter(|k| rows & 1 << k != 0).collect();
+    match picked.len() {
+        5 => basic_solutions::<5>(columns, power, &picked, tol),
+        4 => basic_solutions::<4>(columns, power, &picked, tol),
+        3 => basic_solutions::<3>(columns, power, &picked, tol),
+        2 => basic_solutions::<2>(columns, power, &picked, tol),
+        1 => basic_solutions::<1>(columns, power, &picked, tol),
+        _ => Vec::new(),
     }
 }
 
-/// Every basic feasible solution of the kinematic LP's equality rows (the rates λ, in the
-/// order the bases are enumerated): the vertices among which [`kinematic_best`] picks, the
-/// same for every objective.
-pub fn kinematic_vertices(columns: &[[f64; 3]], power: &[f64], tol: f64) -> Vec<Vec<f64>> {
+/// The basic feasible solutions of the `R` equality rows `picked` (R × R bases of the
+/// columns, the power slack included).
+fn basic_solutions<const R: usize>(
+    columns: &[[f64; 3]],
+    power: &[f64],
+    picked: &[usize],
+    tol: f64,
+) -> Vec<Vec<f64>>
+where
+    nalgebra::Const<R>: nalgebra::DimMin<nalgebra::Const<R>, Output = nalgebra::Const<R>>,
+{
     use itertools::Itertools;
-    use nalgebra::{Matrix5, Vector5};
+    use nalgebra::{SMatrix, SVector};
     let n = columns.len();
-    let col = |j: usize| kinematic_column(columns, power, j);
-    let rhs = Vector5::new(0.0, 0.0, 0.0, 0.0, 1.0);
+    // each column's entries in the picked rows
+    let cols: Vec<[f64; R]> = (0..=n)
+        .map(|j| {
+            let c = kinematic_column(columns, power, j);
+            std::array::from_fn(|r| c[picked[r]])
+        })
+        .collect();
+    let rhs = SVector::<f64, R>::from_fn(|r, _| if picked[r] == 4 { 1.0 } else { 0.0 });
     let mut out = Vec::new();
-    for basis in (0..=n).combinations(5) {
-        let m = Matrix5::from_fn(|r, c| col(basis[c])[r]);
+    for basis in (0..=n).combinations(R) {
+        let m = SMatrix::<f64, R, R>::from_fn(|r, c| cols[basis[c]][r]);
         let lu = m.lu();
         if lu.determinant().abs() < BASIS_TOL {
             continue;

@@ -80,9 +80,12 @@ impl<'a> Kinematic<'a> {
             LpBackend::Highs => dense::KinematicRows::Other,
         };
         let vertices = match rows {
-            dense::KinematicRows::Full => {
-                Some(dense::kinematic_vertices(columns, power, settings.rate_tol))
-            }
+            dense::KinematicRows::Independent(rows) => Some(dense::kinematic_vertices(
+                columns,
+                power,
+                rows,
+                settings.rate_tol,
+            )),
             dense::KinematicRows::Inconsistent => Some(Vec::new()),
             dense::KinematicRows::Other => None,
         };

@@ -375,3 +375,80 @@ fn continuous_lambda_static_is_the_optimum_not_an_admissible_vertex() {
         assert!((l - fine).abs() <= 1e-9 * fine, "HiGHS path {l} vs {fine}");
     }
 }
+
+/// The dense kinematic LP (`lp::Kinematic` with the dense back end: the basic solutions of
+/// the independent equality rows) against HiGHS on 600 random patterns of 1 to 12 rates:
+/// compatibility columns of rank 1 to 3, repeated columns, powers zero or of either sign.
+/// Both say "no mechanism", or both find rates with the same objective to 1e-9, and the
+/// dense rates satisfy every row. Rows of full rank and rows of lower rank (every pattern
+/// of three rates or fewer) are both met many times, and so are both answers.
+#[test]
+fn dense_kinematic_lp_matches_highs() {
+    use arch_enum::lp::{dense, highs, Kinematic, LpOutcome};
+    use arch_enum::settings::LpBackend;
+    let settings = arch_enum::Settings {
+        lp_backend: LpBackend::Dense,
+        ..arch_enum::Settings::default()
+    };
+    let mut rng = Lcg(0x5eed_c0de_4b1e_0007);
+    let (mut full, mut deficient, mut found, mut none) = (0, 0, 0, 0);
+    for case in 0..600 {
+        let n = 1 + case % 12;
+        let rank = 1 + (case / 12) % 3;
+        let basis: Vec<[f64; 3]> = (0..rank)
+            .map(|_| [0; 3].map(|_| 2.0 * rng.next() - 1.0))
+            .collect();
+        let mut columns: Vec<[f64; 3]> = (0..n)
+            .map(|_| {
+                let w: Vec<f64> = basis.iter().map(|_| 2.0 * rng.next() - 1.0).collect();
+                [0, 1, 2].map(|i| basis.iter().zip(&w).map(|(b, w)| b[i] * w).sum())
+            })
+            .collect();
+        if n > 1 && case % 5 == 0 {
+            columns[n - 1] = columns[0]; // a repeated contact
+        }
+        let power: Vec<f64> = (0..n)
+            .map(|_| match case % 4 {
+                0 => 0.0,
+                _ => 2.0 * rng.next() - 1.0,
+            })
+            .collect();
+        let objective: Vec<f64> = (0..n).map(|_| rng.next()).collect();
+        match dense::kinematic_rows(&columns, &power) {
+            dense::KinematicRows::Independent(0b11111) => full += 1,
+            dense::KinematicRows::Independent(_) => deficient += 1,
+            _ => {}
+        }
+        let d = Kinematic::new(&columns, &power, &settings).solve(&objective);
+        let h = highs::kinematic(&columns, &power, &objective, settings.lp_tol);
+        let value = |l: &[f64]| l.iter().zip(&objective).map(|(a, b)| a * b).sum::<f64>();
+        match (d, h) {
+            (Err(LpOutcome::Infeasible), Err(LpOutcome::Infeasible)) => none += 1,
+            (Ok(l), Ok(r)) => {
+                found += 1;
+                assert!(
+                    (value(&l) - value(&r)).abs() <= 1e-9,
+                    "case {case}: dense {} vs HiGHS {}",
+                    value(&l),
+                    value(&r)
+                );
+                let sum = |f: &dyn Fn(usize) -> f64| (0..n).map(|j| l[j] * f(j)).sum::<f64>();
+                for i in 0..3 {
+                    assert!(
+                        sum(&|j| columns[j][i]).abs() <= 1e-9,
+                        "case {case}: row {i}"
+                    );
+                }
+                assert!(sum(&|j| power[j]) >= -1e-9, "case {case}: power");
+                assert!((sum(&|_| 1.0) - 1.0).abs() <= 1e-9, "case {case}: sum");
+                assert!(l.iter().all(|&v| v >= 0.0), "case {case}: sign");
+            }
+            (d, h) => panic!("case {case}: dense {d:?} vs HiGHS {h:?}"),
+        }
+    }
+    assert!(
+        full >= 100 && deficient >= 100,
+        "full {full}, deficient {deficient}"
+    );
+    assert!(found >= 100 && none >= 100, "found {found}, none {none}");
+}
