@@ -433,12 +433,13 @@ fn dense_kinematic_lp_matches_highs() {
                     value(&r)
                 );
                 let sum = |f: &dyn Fn(usize) -> f64| (0..n).map(|j| l[j] * f(j)).sum::<f64>();
-                for i in 0..3 {
-                    assert!(
-                        sum(&|j| columns[j][i]).abs() <= 1e-9,
-                        "case {case}: row {i}"
-                    );
-                }
+                let rows = (0..n).fold([0.0; 3], |acc, j| {
+                    [0, 1, 2].map(|i| acc[i] + l[j] * columns[j][i])
+                });
+                assert!(
+                    rows.iter().all(|r| r.abs() <= 1e-9),
+                    "case {case}: {rows:?}"
+                );
                 assert!(sum(&|j| power[j]) >= -1e-9, "case {case}: power");
                 assert!((sum(&|_| 1.0) - 1.0).abs() <= 1e-9, "case {case}: sum");
                 assert!(l.iter().all(|&v| v >= 0.0), "case {case}: sign");
