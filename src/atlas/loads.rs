@@ -145,6 +145,10 @@ pub struct LoadBoundary {
     /// The reduction 1 − λ_c/λ_static at the bracket's reduced end (the limit state there
     /// from the survey, or followed to it).
     pub reduction: f64,
+    /// Whether [`Self::reduction`] is only a lower bound: the reduced end was decided by a
+    /// limit state followed there or found by a survey that did not settle (λ_c is at most
+    /// that state's λ), not by a settled survey.
+    pub at_least: bool,
     /// Midpoints where the survey did not decide but the reduced side's least limit state,
     /// followed there ([`crate::multiplier::follow`]), is a limit state below λ_static: the
     /// midpoint is reduced.
@@ -308,6 +312,7 @@ fn boundary(
     // each reduced midpoint's
     let mut tracked: Option<Option<LimitState>> = None;
     let mut reduction = reduced_end.reduction().unwrap_or(f64::NAN);
+    let mut at_least = reduced_end.at_least();
     let (mut stopped, mut followed, mut bounded) = (None, 0, 0);
     while f1 - f0 > BOUNDARY_REL * f1 {
         let mid = 0.5 * (f0 + f1);
@@ -329,6 +334,7 @@ fn boundary(
                         followed += 1;
                         tracked = Some(Some(state));
                         reduction = r;
+                        at_least = true;
                         if below {
                             f0 = mid
                         } else {
@@ -357,6 +363,7 @@ fn boundary(
         if reduced {
             tracked = Some(least);
             reduction = c.reduction().unwrap_or(f64::NAN);
+            at_least = bound;
         }
         if reduced == below {
             f0 = mid
@@ -377,6 +384,7 @@ fn boundary(
         etas: (f0 * star, f1 * star),
         stopped,
         reduction,
+        at_least,
         followed,
         bounded,
         certified,

@@ -184,7 +184,8 @@ fn caption(map: &LoadMap, mu: f64) -> String {
     };
     match map.largest_at_boundary(mu) {
         Some(b) => format!(
-            "{cells}; {:.1} % at a boundary (α = {})",
+            "{cells}; {}{:.1} % at a boundary (α = {})",
+            if b.at_least { "≥ " } else { "" },
             100.0 * b.reduction,
             short_trimmed(b.alpha)
         ),

@@ -465,7 +465,10 @@ fn the_load_map_finds_the_reduction_and_agrees_with_the_brute_force() {
     assert_eq!(at.len(), 2, "{:?}", map.boundaries);
     let (begin, b) = (at[0], at[1]);
     for x in [begin, b] {
-        assert!(x.stopped.is_none() && x.followed == 0, "{x:?}");
+        assert!(
+            x.stopped.is_none() && x.followed == 0 && !x.at_least,
+            "{x:?}"
+        );
         assert!(x.etas.1 - x.etas.0 <= 2e-9 * x.etas.1, "{x:?}");
     }
     assert!(!begin.reduced_below && b.reduced_below, "{at:?}");
@@ -493,8 +496,9 @@ fn the_load_map_finds_the_reduction_and_agrees_with_the_brute_force() {
         .iter()
         .find(|b| b.alpha == 0.5 && b.reduced_below)
         .unwrap();
+    // (its reduction then a lower bound: λ_c is at most the followed state's λ)
     assert!(
-        b.reduced_below && b.stopped.is_none() && b.followed > 0,
+        b.reduced_below && b.stopped.is_none() && b.followed > 0 && b.at_least,
         "{b:?}"
     );
     assert!(b.etas.1 - b.etas.0 <= 2e-9 * b.etas.1, "{b:?}");

@@ -914,7 +914,8 @@ fn load_map_figure_fills_each_cell_by_its_answer() {
         etas: (reduced.factor * 1.01 * star, reduced.factor * 1.01 * star),
         stopped: None,
         reduction: 0.125,
-        followed: 0,
+        at_least: true,
+        followed: 1,
         bounded: 0,
         certified: None,
     }];
@@ -958,6 +959,11 @@ fn load_map_figure_fills_each_cell_by_its_answer() {
     assert!(
         svg.contains("λ_c &lt; λ_static in 1 of"),
         "the caption counts it"
+    );
+    // a boundary decided by following its limit state gives a lower bound, and says so
+    assert!(
+        svg.contains("; ≥ 12.5 % at a boundary"),
+        "the caption's bound"
     );
     // the boundary bar, and the legend's two bars
     let bars = doc

@@ -71,6 +71,11 @@ struct BoundaryJson {
     /// 1 − λ/λ_static of the limit state at the bracket's reduced end: the survey's least
     /// (λ_c), or the one followed there (then the reduction is at least this).
     reduction: f64,
+    /// Present (true) where `reduction` is only a lower bound: the reduced end was decided
+    /// by a followed limit state or by a survey that did not settle (λ_c is at most that
+    /// state's λ). Absent where a settled survey gave it.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    at_least: bool,
     /// Midpoints the survey did not decide, decided reduced by the reduced side's least
     /// limit state followed there (Newton on its pattern, verified over the arch, a
     /// mechanism with positive live power, below λ_static).
@@ -106,6 +111,7 @@ fn boundary_json(b: &LoadBoundary) -> BoundaryJson {
         factor_bracket: [b.factors.0, b.factors.1],
         stopped: b.stopped.clone(),
         reduction: b.reduction,
+        at_least: b.at_least,
         followed: b.followed,
         bounded: b.bounded,
         certified_reduction: b.certified.clone().and_then(Result::ok),

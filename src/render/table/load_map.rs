@@ -122,11 +122,12 @@ fn boundaries(s: &mut String, map: &LoadMap) {
     for b in &map.boundaries {
         let _ = writeln!(
             s,
-            "  {:>10}  {:>10}  [{}, {}]  {} {}{}{}{}{}",
+            "  {:>10}  {:>10}  [{}, {}]  {}{} {}{}{}{}{}",
             sig(b.mu, 6),
             sig(b.alpha, 6),
             sig(b.etas.0, 12),
             sig(b.etas.1, 12),
+            if b.at_least { ">= " } else { "" },
             sig(b.reduction, 4),
             if b.reduced_below {
                 "thinner"
@@ -165,8 +166,9 @@ fn boundaries(s: &mut String, map: &LoadMap) {
             let cells = map.largest(mu).and_then(|c| c.reduction()).unwrap_or(0.0);
             let _ = writeln!(
                 s,
-                "largest reduction at a boundary's reduced end, mu = {}: {} (alpha {}, eta {}){}",
+                "largest reduction at a boundary's reduced end, mu = {}: {}{} (alpha {}, eta {}){}",
                 sig(mu, 6),
+                if b.at_least { "at least " } else { "" },
                 sig(b.reduction, 4),
                 sig(b.alpha, 6),
                 sig(eta, 10),
