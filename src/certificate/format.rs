@@ -490,6 +490,11 @@ pub enum LoadSearchMethod {
     /// A continuous arch at finite μ: two discretisations, refined on the continuum,
     /// agreed (not re-checked by `verify`).
     Refined,
+    /// The search did not settle (a continuous arch's discretisations disagree, a discrete
+    /// arch lies beyond the sweep's budget): the listed limit states were found, each is
+    /// checked, but the list is not claimed complete. So `lambda` (the collapse multiplier)
+    /// is `null`, λ_c is at most the least listed λ, and `unique` is `false` (not claimed).
+    Found,
 }
 
 /// The end of a continuum of limit states (two contacts whose columns cancel, carrying
@@ -535,7 +540,7 @@ pub struct LoadNoMechanism {
 /// Evidence for the list of limit states under the load.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct LoadSearchEvidence {
-    /// `sweep`, `associative` or `refined` (anything else is rejected when read).
+    /// `sweep`, `associative`, `refined` or `found` (anything else is rejected when read).
     #[serde(deserialize_with = "field_load_method")]
     pub method: LoadSearchMethod,
     /// Events of the sweep.

@@ -219,12 +219,21 @@ fn limit_states_text(cert: &Certificate) -> String {
             |s| {
                 format!(
                     "  limit states: {} ({}{}; {} method; Farkas evidence for {} state(s) without a mechanism)\n",
-                    match s.lambda {
-                        Some(l) => format!("{}, the collapse multiplier lambda = {l}", s.limit_states.len()),
-                        None => "none".to_string(),
+                    match (s.lambda, s.limit_states.first()) {
+                        (Some(l), _) => format!("{}, the collapse multiplier lambda = {l}", s.limit_states.len()),
+                        (None, Some(f)) => format!(
+                            "{} found, the collapse multiplier at most lambda = {}",
+                            s.limit_states.len(),
+                            f.lambda
+                        ),
+                        (None, None) => "none".to_string(),
                     },
                     match (s.unique, s.limit_states.is_empty()) {
                         (_, true) => "the load drives no mechanism",
+                        // two found: not unique, whatever the list misses
+                        _ if s.method == LoadSearchMethod::Found && s.limit_states.len() < 2 => {
+                            "uniqueness not decided"
+                        }
                         (true, false) => "unique",
                         (false, false) => "not unique",
                     },
@@ -233,6 +242,7 @@ fn limit_states_text(cert: &Certificate) -> String {
                         LoadSearchMethod::Sweep => "sweep",
                         LoadSearchMethod::Associative => "associative",
                         LoadSearchMethod::Refined => "refined",
+                        LoadSearchMethod::Found => "found (not claimed complete)",
                     },
                     s.no_mechanism.len() + usize::from(s.static_state.is_some())
                 )

@@ -838,3 +838,80 @@ fn sweep_from_lambda_zero_checks_only_admissible_states() {
     }
     holds(&cert(&arch, eta, mu, &load, 1e-12));
 }
+
+/// Where the load survey does not settle (α = 0.5, η = 0.6125, μ = 1, horizontal: the
+/// discretisations disagree near the end of a branch, docs/live-loads.md), the certificate
+/// still brackets λ_static and lists the limit states found, as method `found`: each is
+/// checked by the verifier, `lambda` is null and `unique` false, and the report says that
+/// the collapse multiplier is at most the least listed λ and the list is not claimed
+/// complete. Here two are found (the least 16 % below λ_static). Tampering: a `found`
+/// listing that claims a collapse multiplier, uniqueness or nothing listed is rejected, and
+/// a listed state moved off its limit state is caught.
+#[test]
+fn an_unsettled_load_survey_certifies_what_it_found() {
+    use arch_enum::multiplier::survey_partial;
+    let arch = Arch::symmetric(0.5, WeightModel::Centreline).unwrap();
+    let load = LiveLoad::Horizontal {
+        towards_right: true,
+    };
+    let (eta, mu) = (0.6125, 1.0);
+    let settings = Settings::default();
+    let u = match survey_partial(&arch, eta, mu, &load, &settings).unwrap() {
+        Err(u) => u,
+        other => panic!("expected an unsettled survey: {other:?}"),
+    };
+    let good = round_trip(&cert(&arch, eta, mu, &load, 1e-12));
+    let s = good.load_search.as_ref().expect("the states found, listed");
+    assert_eq!(s.method, LoadSearchMethod::Found);
+    assert!(
+        !s.unique && s.lambda.is_none() && s.mechanism_at_static,
+        "{s:?}"
+    );
+    let listed: Vec<f64> = s.limit_states.iter().map(|l| l.lambda).collect();
+    let found: Vec<f64> = u.found.iter().map(|l| l.t).collect();
+    assert_eq!(listed, found);
+    assert_eq!(listed.len(), 2, "{listed:?}");
+    let r = holds(&good);
+    let Some((lo, Some(hi))) = r.lambda_bracket else {
+        panic!("lambda_static not bracketed: {:?}", r.lambda_bracket)
+    };
+    assert!(
+        listed[0] < 0.84 * lo && listed[1] >= lo && listed[1] <= hi,
+        "{listed:?} {lo}"
+    );
+    let verdict = r.limit_states.clone().unwrap_or_default();
+    assert!(
+        verdict.contains("at most that (the list is not claimed complete)"),
+        "{verdict}"
+    );
+    assert!(r
+        .checks
+        .iter()
+        .any(|l| l.starts_with("not claimed: that the listed limit states are every one")));
+    let edit = |f: &dyn Fn(&mut arch_enum::certificate::LoadSearchEvidence)| {
+        let mut t = good.clone();
+        f(t.load_search.as_mut().unwrap());
+        t
+    };
+    for (what, t) in [
+        (
+            "a collapse multiplier",
+            edit(&|s| s.lambda = Some(s.limit_states[0].lambda)),
+        ),
+        ("uniqueness", edit(&|s| s.unique = true)),
+        (
+            "nothing listed",
+            edit(&|s| {
+                s.limit_states.clear();
+                s.mechanism_at_static = false;
+            }),
+        ),
+    ] {
+        assert!(
+            rejected(&t, what).contains("method found claims no complete list"),
+            "{what}"
+        );
+    }
+    let t = edit(&|s| s.limit_states[0].x[0] *= 1.01);
+    rejected(&t, "a listed state moved");
+}

@@ -14,7 +14,7 @@ use crate::contact::{Contact, ContactKind};
 use crate::limit_states::sweep::{sweep_load, CheckedPoint};
 use crate::limit_states::LimitState;
 use crate::load::LiveLoad;
-use crate::multiplier::{LoadSurvey, UNBOUNDED_SEARCH_TOP};
+use crate::multiplier::{LoadSurvey, LoadUnsettled, UNBOUNDED_SEARCH_TOP};
 use crate::settings::Settings;
 use crate::statics::Reactions;
 
@@ -59,6 +59,44 @@ pub(super) fn evidence(
         static_state,
         no_mechanism: checked(arch, eta, load, &sv.no_mechanism, settings),
     })
+}
+
+/// The evidence of a survey that did not settle but found limit states (`u.found`, with
+/// `u.mechanism_at_static` decided): method `found`, each state listed to be checked, the
+/// list not claimed complete (`lambda` null, `unique` false); `at_static` as in
+/// [`evidence`]. `None` where nothing was found or the state at λ_static is not decided.
+pub(super) fn found_evidence(
+    arch: &Arch,
+    eta: f64,
+    load: &LiveLoad,
+    (u, lambda_min): (&LoadUnsettled, f64),
+    at_static: (f64, Reactions, &[Loaded]),
+    settings: &Settings,
+) -> Result<Option<LoadSearchEvidence>, NotCertified> {
+    let Some(mechanism_at_static) = u.mechanism_at_static else {
+        return Ok(None);
+    };
+    if u.found.is_empty() {
+        return Ok(None);
+    }
+    let limit_states = u
+        .found
+        .iter()
+        .map(|s| limit_state_cert(load, s))
+        .collect::<Result<Vec<_>, _>>()?;
+    let (lambda, x, pattern) = at_static;
+    Ok(Some(LoadSearchEvidence {
+        method: LoadSearchMethod::Found,
+        events: 0,
+        lambda_min: u.lambda_min.unwrap_or(lambda_min),
+        mechanism_at_static,
+        unique: false,
+        lambda: None,
+        limit_states,
+        static_state: (!mechanism_at_static)
+            .then(|| no_mechanism(arch, eta, load, (lambda, x, pattern.to_vec()), settings)),
+        no_mechanism: Vec::new(),
+    }))
 }
 
 /// Where λ_static is unbounded and no limit state exists (`NoCollapse`): at μ = ∞ the

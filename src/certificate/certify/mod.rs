@@ -43,7 +43,7 @@ use blank::empty;
 use infimum::certify_infimum;
 use load_bracket::{bracket, static_state};
 use load_ends::{no_equilibrium, unbounded};
-use load_search::{evidence, unbounded_evidence};
+use load_search::{evidence, found_evidence, unbounded_evidence};
 use loaded::load_spec;
 use thickness::{
     certify_limit, certify_no_equilibrium, certify_no_equilibrium_at_top, certify_stands,
@@ -152,6 +152,70 @@ pub fn certify_found(
     }
 }
 
+/// The load certificate where the survey did not settle (`u`): the static range alone
+/// (no equilibrium, λ unbounded, or λ_static bracketed), with the limit states the survey
+/// found all the same as evidence of method `found` (each checked; the list not claimed
+/// complete) where λ_static is finite.
+fn undecided_load(
+    arch: &Arch,
+    (eta, mu): (f64, f64),
+    load: &LiveLoad,
+    u: &multiplier::LoadUnsettled,
+    base: impl Fn(Claim) -> Certificate,
+    gap: f64,
+    settings: &Settings,
+) -> Result<Certificate, NotCertified> {
+    let reason = &u.why;
+    let range = static_range(arch, eta, mu, load, settings)
+        .map_err(|e| NotCertified(e.to_string()))?
+        .map_err(|e| NotCertified(format!("the load question is not decided: {e}")))?;
+    match range {
+        StaticRange::NoEquilibrium => {
+            no_equilibrium(arch, eta, mu, load, base(Claim::NoEquilibrium), settings)
+        }
+        StaticRange::Interval { min, max: None } => unbounded(
+            arch,
+            eta,
+            mu,
+            load,
+            min,
+            base(Claim::UnboundedMultiplier),
+            settings,
+        ),
+        StaticRange::Interval {
+            min,
+            max: Some(top),
+        } => {
+            let (lambda_s, x_s, pattern) = static_state(arch, eta, mu, load, top, settings)?;
+            let mut cert = base(Claim::LargestMultiplier);
+            cert.load_search = found_evidence(
+                arch,
+                eta,
+                load,
+                (u, min.0),
+                (lambda_s, x_s, &pattern),
+                settings,
+            )?;
+            bracket(
+                arch,
+                eta,
+                mu,
+                load,
+                (lambda_s, x_s, &pattern),
+                cert,
+                gap,
+                settings,
+            )
+        }
+    }
+    .map_err(|e| {
+        NotCertified(format!(
+            "{} (the limit states are not decided: {reason})",
+            e.0
+        ))
+    })
+}
+
 /// Builds a certificate for the live `load` on `arch` at thickness `eta` and friction
 /// `mu` with requested relative gap `gap` of the multiplier bracket (e.g. 1e-12): the
 /// largest admissible multiplier (two-sided), its unboundedness, or no equilibrium at any
@@ -170,50 +234,11 @@ pub fn certify_load(
         c.load = Some(load_spec(eta, load));
         c
     };
-    let outcome = match multiplier::survey(arch, eta, mu, load, settings)
+    let outcome = match multiplier::survey_partial(arch, eta, mu, load, settings)
         .map_err(|e| NotCertified(e.to_string()))?
     {
         Ok(o) => o,
-        // the limit states undecided: the static range alone, without their evidence
-        Err(reason) => {
-            let range = static_range(arch, eta, mu, load, settings)
-                .map_err(|e| NotCertified(e.to_string()))?
-                .map_err(|e| NotCertified(format!("the load question is not decided: {e}")))?;
-            return match range {
-                StaticRange::NoEquilibrium => {
-                    no_equilibrium(arch, eta, mu, load, base(Claim::NoEquilibrium), settings)
-                }
-                StaticRange::Interval { min, max: None } => unbounded(
-                    arch,
-                    eta,
-                    mu,
-                    load,
-                    min,
-                    base(Claim::UnboundedMultiplier),
-                    settings,
-                ),
-                StaticRange::Interval { max: Some(top), .. } => {
-                    let (lambda_s, x_s, pattern) =
-                        static_state(arch, eta, mu, load, top, settings)?;
-                    bracket(
-                        arch,
-                        eta,
-                        mu,
-                        load,
-                        (lambda_s, x_s, &pattern),
-                        base(Claim::LargestMultiplier),
-                        gap,
-                        settings,
-                    )
-                }
-            }
-            .map_err(|e| {
-                NotCertified(format!(
-                    "{} (the limit states are not decided: {reason})",
-                    e.0
-                ))
-            });
-        }
+        Err(u) => return undecided_load(arch, (eta, mu), load, &u, base, gap, settings),
     };
     match outcome {
         LoadOutcome::NoEquilibrium => {

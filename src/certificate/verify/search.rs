@@ -186,8 +186,14 @@ impl Walk<'_> {
                 }
                 checks.push("not re-checked: that the refined limit states of two discretisations agreed (method refined); the listed states are checked above".into());
             }
+            Method::Found if self.live.is_some() => {
+                if !points.is_empty() {
+                    return reject("load_search: method found lists no sweep points");
+                }
+                checks.push("not claimed: that the listed limit states are every one (method found: the search did not settle); the collapse multiplier is at most the least listed lambda, each listed state checked above".into());
+            }
             Method::Found => {
-                if model.joints.is_some() || self.live.is_some() || !points.is_empty() {
+                if model.joints.is_some() || !points.is_empty() {
                     return reject(format!(
                         "{section}: method found is for a continuous arch under its own weight, with no sweep points"
                     ));
@@ -479,6 +485,7 @@ pub(super) fn verify_load_search(
         LoadSearchMethod::Sweep => Method::Sweep,
         LoadSearchMethod::Associative => Method::Infinite("associative"),
         LoadSearchMethod::Refined => Method::Refined,
+        LoadSearchMethod::Found => Method::Found,
     };
     let mut points: Vec<Point> = Vec::new();
     for (i, p) in search.no_mechanism.iter().enumerate() {
@@ -512,7 +519,14 @@ pub(super) fn verify_load_search(
 /// collapse multiplier with the least of them, λ_min in [0, λ_lo].
 fn check_load_listing(search: &LoadSearchEvidence, lo: f64) -> Result<bool, Rejection> {
     let states = &search.limit_states;
-    let unique = states.len() == 1
+    if search.method == LoadSearchMethod::Found
+        && (search.unique || search.lambda.is_some() || states.is_empty())
+    {
+        return reject("load_search: method found claims no complete list: it lists limit states, with unique = false and no collapse multiplier (lambda = null)");
+    }
+    // (method found: not claimed, whatever is listed)
+    let unique = search.method != LoadSearchMethod::Found
+        && states.len() == 1
         && states[0]
             .continuum
             .as_ref()
@@ -529,7 +543,8 @@ fn check_load_listing(search: &LoadSearchEvidence, lo: f64) -> Result<bool, Reje
             }
         ));
     }
-    if search.lambda != states.first().map(|s| s.lambda) {
+    if search.method != LoadSearchMethod::Found && search.lambda != states.first().map(|s| s.lambda)
+    {
         return reject(format!(
             "load_search: the collapse multiplier lambda = {:?} is not the least listed limit state's ({:?})",
             search.lambda,
@@ -649,6 +664,10 @@ fn associative(
 fn load_verdict(search: &LoadSearchEvidence, unique: bool, method: Method) -> String {
     let states = &search.limit_states;
     let verdict = match (states.len(), unique) {
+        (n, _) if search.method == LoadSearchMethod::Found => format!(
+            "{n} limit state(s) found, the least at lambda = {}: the collapse multiplier is at most that (the list is not claimed complete)",
+            states[0].lambda
+        ),
         (0, _) => "no limit state: the load never drives a mechanism".to_string(),
         (1, true) => format!(
             "one limit state, lambda = {} (unique{})",
