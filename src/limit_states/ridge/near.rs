@@ -183,13 +183,52 @@ impl Group {
         }
     }
 
-    /// The range of c_j · φ over the group.
-    fn range(&self, phi: &[f64; 9]) -> [f64; 2] {
-        let dot = |c: &[f64; 9]| (0..9).map(|k| c[k] * phi[k]).sum::<f64>();
+    /// The group's three forms m, n and t at p ([`Forms`]): every row there is a
+    /// combination of them.
+    fn forms(&self, p: [f64; 2]) -> Forms {
+        let q = [p[0], p[1], 1.0];
+        let at = |c: &[f64; 9]| -> [f64; 3] {
+            std::array::from_fn(|f| (0..3).map(|k| c[3 * f + k] * q[k]).sum::<f64>())
+        };
+        let residual = std::array::from_fn(|f| {
+            let mut r = [0.0, 0.0];
+            for k in 0..3 {
+                let (x, y) = (
+                    self.residual[3 * f + k][0] * q[k],
+                    self.residual[3 * f + k][1] * q[k],
+                );
+                r[0] += x.min(y);
+                r[1] += x.max(y);
+            }
+            r
+        });
+        Forms {
+            first: at(&self.first),
+            last: at(&self.last),
+            residual,
+        }
+    }
+}
+
+/// A group's forms m, n and t (each c · (h, v, 1) for its joint's part c of the nine
+/// coefficients) at one point (h, v): their values at the group's first and last joints,
+/// and the range of each form's residual over the group.
+struct Forms {
+    first: [f64; 3],
+    last: [f64; 3],
+    residual: [[f64; 2]; 3],
+}
+
+impl Forms {
+    /// The range over the group of the row a m + b n + c t (`coef` = [a, b, c]): between
+    /// its values at the first and last joints, plus the residual's range of each form
+    /// scaled by its coefficient.
+    fn range(&self, coef: [f64; 3]) -> [f64; 2] {
+        let dot = |v: &[f64; 3]| (0..3).map(|f| coef[f] * v[f]).sum::<f64>();
         let (a, b) = (dot(&self.first), dot(&self.last));
         let mut r = [a.min(b), a.max(b)];
-        for (res, f) in self.residual.iter().zip(phi) {
-            let (x, y) = (res[0] * f, res[1] * f);
+        for (res, &c) in self.residual.iter().zip(&coef) {
+            let (x, y) = (res[0] * c, res[1] * c);
             r[0] += x.min(y);
             r[1] += x.max(y);
         }
@@ -197,23 +236,15 @@ impl Group {
     }
 }
 
-/// φ of the extrados row u = −m + η n / 2 and of the intrados row l = −m − η n / 2 at p.
-fn hinge_phi(p: [f64; 2], eta: f64) -> [[f64; 9]; 2] {
-    let (h, v) = (p[0], p[1]);
-    let half = 0.5 * eta;
-    [
-        [-h, -v, -1.0, half * h, half * v, half, 0.0, 0.0, 0.0],
-        [-h, -v, -1.0, -half * h, -half * v, -half, 0.0, 0.0, 0.0],
-    ]
+/// The extrados row u = −m + η n / 2 and the intrados row l = −m − η n / 2 as
+/// combinations of the forms m, n, t.
+fn hinge_rows(eta: f64) -> [[f64; 3]; 2] {
+    [[-1.0, 0.5 * eta, 0.0], [-1.0, -0.5 * eta, 0.0]]
 }
 
-/// φ of the sliding rows ±T − μN at p.
-fn slide_phi(p: [f64; 2], mu: f64) -> [[f64; 9]; 2] {
-    let (h, v) = (p[0], p[1]);
-    [
-        [0.0, 0.0, 0.0, -mu * h, -mu * v, -mu, h, v, 1.0],
-        [0.0, 0.0, 0.0, -mu * h, -mu * v, -mu, -h, -v, -1.0],
-    ]
+/// The sliding rows ±T − μN as combinations of the forms m, n, t.
+fn slide_rows(mu: f64) -> [[f64; 3]; 2] {
+    [[0.0, -mu, 1.0], [0.0, -mu, -1.0]]
 }
 
 /// The joints of an arch in a binary tree of consecutive groups (leaves of
@@ -309,27 +340,26 @@ pub(super) fn verify(
     out
 }
 
-/// The hinge rows' φ at the eight corners of box × range of η, with the reference rows'
-/// values there (u_r and l_s), and the hinge margin.
+/// The reference rows' values (u_r and l_s) at the eight corners of box × range of η
+/// (for each corner of the box, at each end of the range), and the hinge margin.
 struct References {
-    at: Vec<([[f64; 9]; 2], [f64; 2])>,
+    at: [([f64; 2], [[f64; 2]; 2]); 4],
     margin: f64,
 }
 
 impl References {
     fn new(js: &[JointRows], b: &Bounds) -> References {
-        let (r, s) = (
-            coefficients(&js[b.reference[0]]),
-            coefficients(&js[b.reference[1]]),
-        );
-        let dot = |c: &[f64; 9], phi: &[f64; 9]| (0..9).map(|k| c[k] * phi[k]).sum::<f64>();
-        let mut at = Vec::with_capacity(8);
-        for p in b.corners() {
-            for eta in b.eta {
-                let phi = hinge_phi(p, eta);
-                at.push((phi, [dot(&r, &phi[0]), dot(&s, &phi[1])]));
-            }
-        }
+        let corners = b.corners();
+        let at = std::array::from_fn(|c| {
+            let p = corners[c];
+            let [r, s] = [0, 1].map(|k| Group::of(std::slice::from_ref(&js[b.reference[k]]), 0.0));
+            let (r, s) = (r.forms(p), s.forms(p));
+            let values = b.eta.map(|eta| {
+                let [u, l] = hinge_rows(eta);
+                [r.range(u)[0], s.range(l)[0]]
+            });
+            (p, values)
+        });
         References {
             at,
             margin: MARGIN_REL * b.size() * b.eta[0].abs().max(b.eta[1].abs()).max(1.0),
@@ -347,12 +377,16 @@ fn hinges(g: &Group, b: &Bounds, refs: &References) -> (bool, bool) {
         [f64::INFINITY, f64::NEG_INFINITY],
         [f64::INFINITY, f64::NEG_INFINITY],
     );
-    for (phi, [ur, ls]) in &refs.at {
-        let (gu, gl) = (g.range(&phi[0]), g.range(&phi[1]));
-        widen(&mut u, gu[0] - ur);
-        widen(&mut u, gu[1] - ur);
-        widen(&mut l, gl[0] - ls);
-        widen(&mut l, gl[1] - ls);
+    for (p, values) in &refs.at {
+        let forms = g.forms(*p);
+        for (eta, [ur, ls]) in b.eta.iter().zip(values) {
+            let [hu, hl] = hinge_rows(*eta);
+            let (gu, gl) = (forms.range(hu), forms.range(hl));
+            widen(&mut u, gu[0] - ur);
+            widen(&mut u, gu[1] - ur);
+            widen(&mut l, gl[0] - ls);
+            widen(&mut l, gl[1] - ls);
+        }
     }
     let margin = refs.margin;
     let slack = [u[0] - b.dw[0][1], b.dw[1][0] - l[1]];
@@ -374,9 +408,10 @@ fn hinges(g: &Group, b: &Bounds, refs: &References) -> (bool, bool) {
 /// Q, and a row is affine along each edge).
 fn slides(g: &Group, mu: f64, b: &Bounds) -> bool {
     let margin = MARGIN_REL * b.size() * (1.0 + g.grad);
+    let [sp, sm] = slide_rows(mu);
     let most = |p: [f64; 2]| {
-        let [sp, sm] = slide_phi(p, mu);
-        g.range(&sp)[1].max(g.range(&sm)[1])
+        let forms = g.forms(p);
+        forms.range(sp)[1].max(forms.range(sm)[1])
     };
     b.corners().into_iter().all(|p| most(p) < -margin) || b.ends.iter().all(|&p| most(p) < -margin)
 }
