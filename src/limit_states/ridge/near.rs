@@ -192,11 +192,8 @@ impl Group {
         };
         let residual = std::array::from_fn(|f| {
             let mut r = [0.0, 0.0];
-            for k in 0..3 {
-                let (x, y) = (
-                    self.residual[3 * f + k][0] * q[k],
-                    self.residual[3 * f + k][1] * q[k],
-                );
+            for (res, qk) in self.residual[3 * f..3 * f + 3].iter().zip(q) {
+                let (x, y) = (res[0] * qk, res[1] * qk);
                 r[0] += x.min(y);
                 r[1] += x.max(y);
             }
