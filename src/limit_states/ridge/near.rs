@@ -312,7 +312,7 @@ pub(super) fn verify(
     let mut stack = vec![0];
     while let Some(k) = stack.pop() {
         let (lo, hi, g, children) = &tree.nodes[k];
-        let (h_off, h_near) = hinges(g, b, &refs);
+        let (h_off, h_near) = hinges(g, b, &refs, true);
         if h_off && !h_near && slides(g, mu, b) {
             continue;
         }
@@ -322,7 +322,7 @@ pub(super) fn verify(
         }
         for j in *lo..*hi {
             let g = Group::of(std::slice::from_ref(&js[j]), mu);
-            let (h_off, h_near) = hinges(&g, b, &refs);
+            let (h_off, h_near) = hinges(&g, b, &refs, false);
             if !h_off && !in_walk[j] {
                 out.failing.push(j);
             }
@@ -368,12 +368,30 @@ impl References {
 /// they may come near in the next chunk (a slack below [`PREDICT_FACTOR`] times the rows'
 /// variation over this one). The gaps are u_j − w = (u_j − u_r) − (w − u_r) and
 /// w − l_j = (w − l_s) − (l_j − l_s), with u_j − u_r and l_j − l_s over box × range of η
-/// (bilinear: their extremes at the corners).
-fn hinges(g: &Group, b: &Bounds, refs: &References) -> (bool, bool) {
+/// (bilinear: their extremes at the corners). With `stop_near`, it stops at the first
+/// corner after which the rows are near: the slack only shrinks and the variation only
+/// grows with more corners, so they are near over all of them (and then not inactive
+/// by more than the margin, which is less).
+fn hinges(g: &Group, b: &Bounds, refs: &References, stop_near: bool) -> (bool, bool) {
     let (mut u, mut l) = (
         [f64::INFINITY, f64::NEG_INFINITY],
         [f64::INFINITY, f64::NEG_INFINITY],
     );
+    let margin = refs.margin;
+    let verdict = |u: [f64; 2], l: [f64; 2]| {
+        let slack = [u[0] - b.dw[0][1], b.dw[1][0] - l[1]];
+        let vary = [
+            u[1] - u[0] + b.dw[0][1] - b.dw[0][0],
+            l[1] - l[0] + b.dw[1][1] - b.dw[1][0],
+        ];
+        let off = slack[0] > margin && slack[1] > margin;
+        // (a NaN slack counts as near)
+        let near = (0..2).any(|k| {
+            slack[k].partial_cmp(&(PREDICT_FACTOR * vary[k] + margin))
+                != Some(std::cmp::Ordering::Greater)
+        });
+        (off, near)
+    };
     for (p, values) in &refs.at {
         let forms = g.forms(*p);
         for (eta, [ur, ls]) in b.eta.iter().zip(values) {
@@ -384,20 +402,11 @@ fn hinges(g: &Group, b: &Bounds, refs: &References) -> (bool, bool) {
             widen(&mut l, gl[0] - ls);
             widen(&mut l, gl[1] - ls);
         }
+        if stop_near && verdict(u, l).1 {
+            return (false, true);
+        }
     }
-    let margin = refs.margin;
-    let slack = [u[0] - b.dw[0][1], b.dw[1][0] - l[1]];
-    let vary = [
-        u[1] - u[0] + b.dw[0][1] - b.dw[0][0],
-        l[1] - l[0] + b.dw[1][1] - b.dw[1][0],
-    ];
-    let off = slack[0] > margin && slack[1] > margin;
-    // (a NaN slack counts as near)
-    let near = (0..2).any(|k| {
-        slack[k].partial_cmp(&(PREDICT_FACTOR * vary[k] + margin))
-            != Some(std::cmp::Ordering::Greater)
-    });
-    (off, near)
+    verdict(u, l)
 }
 
 /// Whether the group's sliding rows are inactive by the margin on the chunk's edges (over
