@@ -16,8 +16,8 @@
 //! not seen: sample densely where that matters.
 
 use super::continuum;
-use super::outcome::LoadOutcome;
-use super::survey::{below, survey};
+use super::outcome::{LoadAnswer, LoadOutcome};
+use super::survey::{below, survey_partial};
 use crate::arch::{Arch, InputError, JointLayout};
 use crate::contact::{Contact, ContactKind, Location};
 use crate::family::{self, Family};
@@ -26,10 +26,9 @@ use crate::refine::{self, Objective, Start, Unknowns};
 use crate::settings::Settings;
 use crate::statics::{magnitude, Reactions};
 use crate::tracer::{self, Split};
-use crate::undecided::Undecided;
 
 /// One sample of the λ–μ curve: μ and the answer there (`Err`: no decision, why).
-pub type CurveSample = (f64, Result<LoadOutcome, Undecided>);
+pub type CurveSample = (f64, LoadAnswer);
 
 /// The answer at each friction coefficient of `mus` (any order; μ = ∞ allowed): the λ–μ
 /// curve at fixed η, sampled. `progress(done, total)` is called after each sample.
@@ -43,7 +42,7 @@ pub fn sample(
 ) -> Result<Vec<CurveSample>, InputError> {
     let mut out = Vec::with_capacity(mus.len());
     for (i, &mu) in mus.iter().enumerate() {
-        out.push((mu, survey(arch, eta, mu, load, settings)?));
+        out.push((mu, survey_partial(arch, eta, mu, load, settings)?));
         progress(i + 1, mus.len());
     }
     Ok(out)
@@ -79,7 +78,7 @@ pub enum BranchKey {
 pub fn branch_key(
     arch: &Arch,
     load: &LiveLoad,
-    answer: &Result<LoadOutcome, Undecided>,
+    answer: &LoadAnswer,
     settings: &Settings,
 ) -> BranchKey {
     let sv = match answer {
@@ -154,7 +153,7 @@ impl Corner {
     }
     /// The collapse multipliers on both sides, when both exist.
     pub fn lambdas(&self) -> (Option<f64>, Option<f64>) {
-        let l = |a: &Result<LoadOutcome, Undecided>| match a {
+        let l = |a: &LoadAnswer| match a {
             Ok(LoadOutcome::Limits(sv)) => sv.lambda(),
             _ => None,
         };
@@ -233,7 +232,7 @@ impl Bisection<'_> {
     fn at(&self, mu: f64) -> Result<CurveSample, InputError> {
         Ok((
             mu,
-            survey(self.arch, self.eta, mu, self.load, self.settings)?,
+            survey_partial(self.arch, self.eta, mu, self.load, self.settings)?,
         ))
     }
 
@@ -474,7 +473,7 @@ type Pattern = Vec<(Contact, Side)>;
 /// A least limit state: (λ, x, pattern).
 type LeastState = (f64, Reactions, Vec<(Contact, Side)>);
 
-fn least(answer: &Result<LoadOutcome, Undecided>) -> Option<LeastState> {
+fn least(answer: &LoadAnswer) -> Option<LeastState> {
     let Ok(LoadOutcome::Limits(sv)) = answer else {
         return None;
     };

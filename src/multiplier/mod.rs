@@ -18,7 +18,9 @@ mod range;
 mod survey;
 
 pub use limit_state::follow;
-pub use outcome::{LoadOutcome, LoadSurvey, LoadUnsettled, StaticRange, UNBOUNDED_SEARCH_TOP};
+pub use outcome::{
+    LoadAnswer, LoadOutcome, LoadSurvey, LoadUnsettled, StaticRange, UNBOUNDED_SEARCH_TOP,
+};
 pub use range::{check_load, static_range};
 pub use survey::{continua, survey, survey_partial};
 

@@ -118,6 +118,9 @@ pub struct LoadUnsettled {
     pub below_static: usize,
 }
 
+/// A load survey's answer: decided, or what an undecided survey decided all the same.
+pub type LoadAnswer = Result<LoadOutcome, LoadUnsettled>;
+
 impl From<Undecided> for LoadUnsettled {
     fn from(why: Undecided) -> LoadUnsettled {
         LoadUnsettled {

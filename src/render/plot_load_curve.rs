@@ -5,10 +5,9 @@
 //! lowers the collapse load; the gap is shaded.
 
 use crate::collapse_mode::CollapseMode;
-use crate::multiplier::{LoadCurve, LoadOutcome};
+use crate::multiplier::{LoadAnswer, LoadCurve, LoadOutcome};
 use crate::render::fine::Fine;
 use crate::render::plot::{mode_color, short_num, Axis, AxisCoord, FAMILY};
-use crate::undecided::Undecided;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -30,7 +29,7 @@ fn err(e: impl std::fmt::Display) -> String {
 /// One sample: μ, λ_static, and the least limit state (λ, mode) where there is one.
 type Sample = (f64, Option<f64>, Option<(f64, CollapseMode)>);
 
-fn point((mu, o): &(f64, Result<LoadOutcome, Undecided>)) -> Sample {
+fn point((mu, o): &(f64, LoadAnswer)) -> Sample {
     match o {
         Ok(LoadOutcome::Limits(s)) => (
             *mu,

@@ -1311,6 +1311,47 @@ fn an_unsettled_load_survey_keeps_what_it_decided() {
     assert!((reduction - 0.166).abs() < 1e-3, "{reduction}");
     let r = doc["reduction_at_least"].as_f64().unwrap();
     assert!((r - reduction).abs() < 1e-9, "{r} vs {reduction}");
+    // a load-curve sample there keeps the same bound, in its JSON row and its table row
+    let samples =
+        arch_enum::multiplier::sample(&arch, 0.6125, &horizontal, &[1.0], &settings, &|_, _| {})
+            .unwrap();
+    let curve = arch_enum::multiplier::LoadCurve {
+        samples,
+        corners: Vec::new(),
+    };
+    let q = arch_enum::render::load::LoadQuestion {
+        arch: &arch,
+        eta: 0.6125,
+        mu: 1.0,
+        load: horizontal,
+        dims: None,
+        vehicle_kn: None,
+    };
+    let rows = serde_json::to_value(arch_enum::render::json::load_curve(&q, &curve)).unwrap();
+    let row = &rows["points"][0];
+    assert_eq!(row["status"], "unresolved", "{row}");
+    assert_eq!(
+        (
+            row["lambda_at_most"].as_f64(),
+            row["lambda_static"].as_f64()
+        ),
+        (Some(at_most), Some(top)),
+        "{row}"
+    );
+    assert_eq!(
+        (row["limit_states"].as_u64(), &row["unique"]),
+        (Some(2), &serde_json::json!(false))
+    );
+    assert!(
+        (row["reduction_at_least"].as_f64().unwrap() - r).abs() < 1e-15,
+        "{row}"
+    );
+    let table = arch_enum::render::table::load_curve(&q, &curve);
+    assert!(
+        table
+            .contains("unresolved (lambda <= 0.181329002871, at least 0.1660 below lambda_static)"),
+        "{table}"
+    );
     // the load map takes that bound: its cell at this ring is reduced by at least r
     let Outcome::Limit(ls) = arch_enum::limit::solve(&arch, 1.0, &settings)
         .unwrap()

@@ -709,7 +709,7 @@ fn load_curve_corners_match_the_brute_force() {
         };
         let mus: Vec<f64> = (0..8).map(|i| 0.3 * 1.3f64.powi(i)).collect();
         let curve = trace(&arch, eta, &load, &mus, &settings, &|_, _| {}).unwrap();
-        let lambda_of = |o: &Result<LoadOutcome, arch_enum::undecided::Undecided>| match o {
+        let lambda_of = |o: &arch_enum::multiplier::LoadAnswer| match o {
             Ok(LoadOutcome::Limits(s)) => s.lambda(),
             _ => None,
         };
@@ -719,7 +719,7 @@ fn load_curve_corners_match_the_brute_force() {
                 continue;
             }
             // near-unbounded multipliers (reactions ~λ) are beyond the brute force's box
-            let big = |o: &Result<LoadOutcome, arch_enum::undecided::Undecided>| match o {
+            let big = |o: &arch_enum::multiplier::LoadAnswer| match o {
                 Ok(LoadOutcome::Limits(s)) => {
                     s.lambda_static.is_none_or(|m| m.0 > 1e3) || s.lambda().is_some_and(|l| l > 1e3)
                 }
@@ -744,15 +744,15 @@ fn load_curve_corners_match_the_brute_force() {
             }
             // on each side, 1e-6 away (the corner itself is degenerate by construction):
             // the crate's branch is the corner's, and its λ is the brute force's
-            let key = |o: &Result<LoadOutcome, arch_enum::undecided::Undecided>| {
-                branch_key(&arch, &load, o, &settings)
-            };
+            let key =
+                |o: &arch_enum::multiplier::LoadAnswer| branch_key(&arch, &load, o, &settings);
             let mut reference_sides = Vec::new();
             for (mu, side) in [
                 (c.below().0 - delta, c.below()),
                 (c.above().0 + delta, c.above()),
             ] {
-                let o = survey(&arch, eta, mu, &load, &settings).unwrap();
+                let o = arch_enum::multiplier::survey_partial(&arch, eta, mu, &load, &settings)
+                    .unwrap();
                 if o.is_err() || side.1.is_err() {
                     continue;
                 }

@@ -3,9 +3,8 @@
 use super::common::{ArchJson, JSON_VERSION};
 use super::load::{load_json, pattern_json, LoadJson, PatternContact};
 use crate::load::LiveLoad;
-use crate::multiplier::{LoadCurve, LoadOutcome};
+use crate::multiplier::{LoadAnswer, LoadCurve, LoadOutcome};
 use crate::render::live_load::{LoadQuestion, CONTINUOUS_TOL};
-use crate::undecided::Undecided;
 use schemars::JsonSchema;
 use serde::Serialize;
 
@@ -20,6 +19,15 @@ pub struct LoadCurveRow {
     pub(crate) unique: Option<bool>,
     pub(crate) mode: Option<&'static str>,
     pub(crate) limit_states: usize,
+    /// `unresolved` with a limit state found all the same: the least λ found (the collapse
+    /// multiplier is at most this), as in `load --json`. Absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(crate) lambda_at_most: Option<f64>,
+    /// `unresolved` with a limit state found below λ_static: 1 − `lambda_at_most` /
+    /// `lambda_static`, the least the collapse multiplier lies below the static maximum.
+    /// Absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(crate) reduction_at_least: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(crate) message: Option<String>,
 }
@@ -36,7 +44,7 @@ pub struct LoadCurveDoc {
     corners: Vec<CornerJson>,
 }
 
-pub(crate) fn curve_row(mu: f64, outcome: &Result<LoadOutcome, Undecided>) -> LoadCurveRow {
+pub(crate) fn curve_row(mu: f64, outcome: &LoadAnswer) -> LoadCurveRow {
     let mut row = LoadCurveRow {
         mu: mu.is_finite().then_some(mu),
         status: "ok",
@@ -46,12 +54,20 @@ pub(crate) fn curve_row(mu: f64, outcome: &Result<LoadOutcome, Undecided>) -> Lo
         unique: None,
         mode: None,
         limit_states: 0,
+        lambda_at_most: None,
+        reduction_at_least: None,
         message: None,
     };
     match outcome {
-        Err(e) => {
+        // what an undecided survey decided all the same: λ_static, the states it found
+        Err(u) => {
             row.status = "unresolved";
-            row.message = Some(e.to_string());
+            row.message = Some(u.why.to_string());
+            row.lambda_static = u.lambda_static;
+            row.unique = u.unique();
+            row.limit_states = u.found.len();
+            row.lambda_at_most = u.lambda_at_most();
+            row.reduction_at_least = u.reduction_at_least();
         }
         Ok(LoadOutcome::NoEquilibrium) => row.status = "no_equilibrium",
         Ok(LoadOutcome::NoCollapse { .. }) => row.status = "no_collapse",
@@ -99,7 +115,7 @@ struct CornerJson {
     above: CornerSide,
 }
 
-fn corner_side(load: &LiveLoad, (mu, o): &(f64, Result<LoadOutcome, Undecided>)) -> CornerSide {
+fn corner_side(load: &LiveLoad, (mu, o): &(f64, LoadAnswer)) -> CornerSide {
     let pattern = match o {
         Ok(LoadOutcome::Limits(sv)) => sv
             .limit_states

@@ -3,16 +3,23 @@
 use super::format::{describe_arch, fmt_mu, sig};
 use super::load::pattern_text;
 use crate::load::LiveLoad;
-use crate::multiplier::{LoadCurve, LoadOutcome};
+use crate::multiplier::{LoadAnswer, LoadCurve, LoadOutcome};
 use crate::render::json::curve_row;
 use crate::render::live_load::{LoadQuestion, CONTINUOUS_TOL};
-use crate::undecided::Undecided;
 use std::fmt::Write;
 
 /// The least limit state of an answer in words: mode and pattern (or the status).
-fn least_text(load: &LiveLoad, o: &Result<LoadOutcome, Undecided>) -> String {
+fn least_text(load: &LiveLoad, o: &LoadAnswer) -> String {
     match o {
-        Err(_) => "unresolved".into(),
+        Err(u) => match u.found.first() {
+            None => "unresolved".into(),
+            Some(l) => format!(
+                "unresolved; found lambda = {}  {}  {}  (the collapse multiplier is at most this)",
+                sig(l.t, 12),
+                l.mode.name(),
+                pattern_text(load, l)
+            ),
+        },
         Ok(LoadOutcome::NoEquilibrium) => "no equilibrium".into(),
         Ok(LoadOutcome::NoCollapse { .. }) => "no collapse".into(),
         Ok(LoadOutcome::Limits(sv)) => match sv.limit_states.first() {
@@ -66,7 +73,7 @@ pub fn load_curve(q: &LoadQuestion, curve: &LoadCurve) -> String {
 
 /// One row of the table: λ_static, λ, the reduction, the number of limit states and the
 /// least one's mode, or the status.
-fn sample_row(s: &mut String, mu: f64, o: &Result<LoadOutcome, Undecided>) {
+fn sample_row(s: &mut String, mu: f64, o: &LoadAnswer) {
     let r = curve_row(mu, o);
     let num = |v: Option<f64>| v.map_or("-".to_string(), |v| sig(v, 12));
     if r.status == "ok" {
@@ -81,9 +88,18 @@ fn sample_row(s: &mut String, mu: f64, o: &Result<LoadOutcome, Undecided>) {
             r.mode.unwrap_or("-")
         );
     } else {
+        let bound = match (r.lambda_at_most, r.reduction_at_least) {
+            (Some(l), Some(red)) => format!(
+                " (lambda <= {}, at least {} below lambda_static)",
+                sig(l, 12),
+                sig(red, 4)
+            ),
+            (Some(l), None) => format!(" (lambda <= {})", sig(l, 12)),
+            _ => String::new(),
+        };
         let _ = writeln!(
             s,
-            "{:>16}  {}{}",
+            "{:>16}  {}{bound}{}",
             fmt_mu(mu),
             r.status,
             r.message.map_or(String::new(), |m| format!(": {m}"))
