@@ -6,7 +6,7 @@ use super::loaded::{at_lambda, cert_joints, row_at, sorted, Loaded};
 use super::sides::{chord_pool, find_farkas, move_inside, reduced, widening, Row};
 use crate::arch::{Arch, JointLayout};
 use crate::certificate::format::{
-    Certificate, LoadFarkas, LoadState, MultiplierSides, NotCertified,
+    Certificate, LoadFarkas, LoadSearchEvidence, LoadState, MultiplierSides, NotCertified,
 };
 use crate::certificate::verify::{prove_admissible_side, verify};
 use crate::load::{rows, LiveLoad};
@@ -48,9 +48,35 @@ pub(super) fn static_state(
     }
 }
 
+/// The certificate of a finite λ_static `top` (claim `largest_multiplier` in `cert`): the
+/// state there with its active contacts, the `load_search` evidence that `search` builds
+/// from that state, then the bracket of λ_static to `gap`.
+pub(super) fn largest(
+    arch: &Arch,
+    (eta, mu): (f64, f64),
+    load: &LiveLoad,
+    top: (f64, Reactions),
+    (mut cert, gap): (Certificate, f64),
+    settings: &Settings,
+    search: impl FnOnce((f64, Reactions, &[Loaded])) -> Result<Option<LoadSearchEvidence>, NotCertified>,
+) -> Result<Certificate, NotCertified> {
+    let (lambda_s, x_s, pattern) = static_state(arch, eta, mu, load, top, settings)?;
+    cert.load_search = search((lambda_s, x_s, &pattern))?;
+    bracket(
+        arch,
+        eta,
+        mu,
+        load,
+        (lambda_s, x_s, &pattern),
+        cert,
+        gap,
+        settings,
+    )
+}
+
 /// The two sides of λ_static: an admissible state at λ_lo, a Farkas certificate at λ_hi.
 #[allow(clippy::too_many_arguments)]
-pub(super) fn bracket(
+fn bracket(
     arch: &Arch,
     eta: f64,
     mu: f64,

@@ -41,7 +41,7 @@ mod thickness;
 
 use blank::empty;
 use infimum::certify_infimum;
-use load_bracket::{bracket, static_state};
+use load_bracket::largest;
 use load_ends::{no_equilibrium, unbounded};
 use load_search::{evidence, found_evidence, unbounded_evidence};
 use loaded::load_spec;
@@ -185,28 +185,15 @@ fn undecided_load(
         StaticRange::Interval {
             min,
             max: Some(top),
-        } => {
-            let (lambda_s, x_s, pattern) = static_state(arch, eta, mu, load, top, settings)?;
-            let mut cert = base(Claim::LargestMultiplier);
-            cert.load_search = found_evidence(
-                arch,
-                eta,
-                load,
-                (u, min.0),
-                (lambda_s, x_s, &pattern),
-                settings,
-            )?;
-            bracket(
-                arch,
-                eta,
-                mu,
-                load,
-                (lambda_s, x_s, &pattern),
-                cert,
-                gap,
-                settings,
-            )
-        }
+        } => largest(
+            arch,
+            (eta, mu),
+            load,
+            top,
+            (base(Claim::LargestMultiplier), gap),
+            settings,
+            |at_static| found_evidence(arch, eta, load, (u, min.0), at_static, settings),
+        ),
     }
     .map_err(|e| {
         NotCertified(format!(
@@ -250,28 +237,15 @@ pub fn certify_load(
             unbounded(arch, eta, mu, load, lambda_min, cert, settings)
         }
         LoadOutcome::Limits(sv) => match sv.lambda_static {
-            Some(top) => {
-                let (lambda_s, x_s, pattern) = static_state(arch, eta, mu, load, top, settings)?;
-                let mut cert = base(Claim::LargestMultiplier);
-                cert.load_search = Some(evidence(
-                    arch,
-                    eta,
-                    load,
-                    &sv,
-                    Some((lambda_s, x_s, &pattern)),
-                    settings,
-                )?);
-                bracket(
-                    arch,
-                    eta,
-                    mu,
-                    load,
-                    (lambda_s, x_s, &pattern),
-                    cert,
-                    gap,
-                    settings,
-                )
-            }
+            Some(top) => largest(
+                arch,
+                (eta, mu),
+                load,
+                top,
+                (base(Claim::LargestMultiplier), gap),
+                settings,
+                |at_static| evidence(arch, eta, load, &sv, Some(at_static), settings).map(Some),
+            ),
             None => {
                 let mut cert = base(Claim::UnboundedMultiplier);
                 cert.load_search = Some(evidence(arch, eta, load, &sv, None, settings)?);
