@@ -31,7 +31,7 @@
 //! | `load` | `{eta, kind, towards, beta}`: η, `kind` ∈ {`horizontal`, `point`}, `towards` ∈ {`right`, `left`} (horizontal only), `beta` (point only) |
 //! | `multiplier` | `admissible: {lambda, x}` (a state admissible at λ_lo), `infeasible: {lambda, joints: [{beta, kind, side, y}], lambda_row}` (Farkas at λ_hi; `lambda` null for `no_equilibrium`: rows in (h, v, w, λ) and `lambda_row` the multiplier of −λ ≤ 0), `transfer` ∈ {`right`, `left`} or `recession: {lambda, x}` (`unbounded_multiplier`) |
 //! | `gap`, `gap_relative` | λ_hi − λ_lo and (λ_hi − λ_lo)/λ_hi |
-//! | `load_search` | `{method, events, lambda_min, mechanism_at_static, unique, lambda, limit_states, static_state, no_mechanism}`; `method` ∈ {`sweep`, `associative`, `refined`}; limit states `{lambda, x, pattern, rates, live_power, continuum}`; `static_state` and `no_mechanism` entries `{lambda, x, pattern, farkas: [{drop, y, z, u, v}]}` |
+//! | `load_search` | `{method, events, lambda_min, mechanism_at_static, unique, lambda, limit_states, static_state, no_mechanism}`; `method` ∈ {`sweep`, `associative`, `refined`, `found`} (`found`: the survey did not settle; the states it found, `unique` false and `lambda` null, the list not claimed complete); limit states `{lambda, x, pattern, rates, live_power, continuum}`; `static_state` and `no_mechanism` entries `{lambda, x, pattern, farkas: [{drop, y, z, u, v}]}` |
 //!
 //! `side` ∈ {`before`, `after`} is given exactly at the point load's own angle (the section
 //! just before the loaded point, or just after it), on joints and pattern contacts alike.

@@ -80,12 +80,12 @@ impl<'a> Kinematic<'a> {
             LpBackend::Highs => dense::KinematicRows::Other,
         };
         let vertices = match rows {
-            dense::KinematicRows::Independent(rows) => Some(dense::kinematic_vertices(
-                columns,
-                power,
-                rows,
-                settings.rate_tol,
-            )),
+            // rows of full rank without a vertex: infeasible; rank-deficient rows without one
+            // (nearly dependent kept rows can fail every basis's determinant test): HiGHS
+            dense::KinematicRows::Independent(rows) => {
+                let v = dense::kinematic_vertices(columns, power, rows, settings.rate_tol);
+                (rows == 0b11111 || !v.is_empty()).then_some(v)
+            }
             dense::KinematicRows::Inconsistent => Some(Vec::new()),
             dense::KinematicRows::Other => None,
         };

@@ -369,9 +369,11 @@ impl References {
 /// variation over this one). The gaps are u_j − w = (u_j − u_r) − (w − u_r) and
 /// w − l_j = (w − l_s) − (l_j − l_s), with u_j − u_r and l_j − l_s over box × range of η
 /// (bilinear: their extremes at the corners). With `stop_near`, it stops at the first
-/// corner after which the rows are near: the slack only shrinks and the variation only
-/// grows with more corners, so they are near over all of them (and then not inactive
-/// by more than the margin, which is less).
+/// corner after which the rows are near (the slack only shrinks and the variation only
+/// grows with more corners, so they are near over all of them) and returns (false, true):
+/// `false` is then not a verdict on inactivity, only the cautious answer, for a caller
+/// that descends into a near group whatever its first answer (a group node in
+/// [`verify`]).
 fn hinges(g: &Group, b: &Bounds, refs: &References, stop_near: bool) -> (bool, bool) {
     let (mut u, mut l) = (
         [f64::INFINITY, f64::NEG_INFINITY],
