@@ -271,32 +271,35 @@ pub fn kinematic_rows(columns: &[[f64; 3]], power: &[f64]) -> KinematicRows {
 /// Every basic feasible solution of the kinematic LP's equality rows `rows` (the
 /// independent ones, [`KinematicRows::Independent`]): the rates λ, in the order the bases
 /// are enumerated; the vertices among which [`kinematic_best`] picks, the same for every
-/// objective.
+/// objective. `None` where fewer than five rows are kept and no basis passes the
+/// determinant test (nearly dependent rows: no decision here, HiGHS's to make); with five,
+/// an empty list as before (infeasible).
 pub fn kinematic_vertices(
     columns: &[[f64; 3]],
     power: &[f64],
     rows: u8,
     tol: f64,
-) -> Vec<Vec<f64>> {
+) -> Option<Vec<Vec<f64>>> {
     let picked: Vec<usize> = (0..5).filter(|k| rows & 1 << k != 0).collect();
-    match picked.len() {
-        5 => basic_solutions::<5>(columns, power, &picked, tol),
+    let (vertices, nonsingular) = match picked.len() {
+        5 => return Some(basic_solutions::<5>(columns, power, &picked, tol).0),
         4 => basic_solutions::<4>(columns, power, &picked, tol),
         3 => basic_solutions::<3>(columns, power, &picked, tol),
         2 => basic_solutions::<2>(columns, power, &picked, tol),
         1 => basic_solutions::<1>(columns, power, &picked, tol),
-        _ => Vec::new(),
-    }
+        _ => (Vec::new(), false),
+    };
+    nonsingular.then_some(vertices)
 }
 
 /// The basic feasible solutions of the `R` equality rows `picked` (R × R bases of the
-/// columns, the power slack included).
+/// columns, the power slack included), and whether any basis passed the determinant test.
 fn basic_solutions<const R: usize>(
     columns: &[[f64; 3]],
     power: &[f64],
     picked: &[usize],
     tol: f64,
-) -> Vec<Vec<f64>>
+) -> (Vec<Vec<f64>>, bool)
 where
     nalgebra::Const<R>: nalgebra::DimMin<nalgebra::Const<R>, Output = nalgebra::Const<R>>,
 {
@@ -311,13 +314,14 @@ where
         })
         .collect();
     let rhs = SVector::<f64, R>::from_fn(|r, _| if picked[r] == 4 { 1.0 } else { 0.0 });
-    let mut out = Vec::new();
+    let (mut out, mut nonsingular) = (Vec::new(), false);
     for basis in (0..=n).combinations(R) {
         let m = SMatrix::<f64, R, R>::from_fn(|r, c| cols[basis[c]][r]);
         let lu = m.lu();
         if lu.determinant().abs() < BASIS_TOL {
             continue;
         }
+        nonsingular = true;
         let Some(x) = lu.solve(&rhs) else { continue };
         if x.iter().any(|&v| v < -tol) {
             continue;
@@ -330,7 +334,7 @@ where
         }
         out.push(lambda);
     }
-    out
+    (out, nonsingular)
 }
 
 /// The vertex of [`kinematic_vertices`] that maximises `objective · λ` (the first of

@@ -80,11 +80,9 @@ impl<'a> Kinematic<'a> {
             LpBackend::Highs => dense::KinematicRows::Other,
         };
         let vertices = match rows {
-            // rows of full rank without a vertex: infeasible; rank-deficient rows without one
-            // (nearly dependent kept rows can fail every basis's determinant test): HiGHS
+            // (`None`: kept rows so nearly dependent that no basis passed: HiGHS)
             dense::KinematicRows::Independent(rows) => {
-                let v = dense::kinematic_vertices(columns, power, rows, settings.rate_tol);
-                (rows == 0b11111 || !v.is_empty()).then_some(v)
+                dense::kinematic_vertices(columns, power, rows, settings.rate_tol)
             }
             dense::KinematicRows::Inconsistent => Some(Vec::new()),
             dense::KinematicRows::Other => None,

@@ -1,4 +1,4 @@
-//! The λ–μ curve at fixed η: the answer of [`survey`] at sampled friction coefficients, and
+//! The λ–μ curve at fixed η: the answer of [`survey_partial`] at sampled friction coefficients, and
 //! its **corners** — the friction coefficients where the collapse pattern changes — located
 //! by bisection on the answer itself down to adjacent floating-point numbers in μ (the load
 //! problem's part of the [`crate::tracer`]).
@@ -214,7 +214,7 @@ const MAX_CORNERS: usize = 64;
 /// The search for the last corner below μ = ∞ stops at this friction coefficient.
 const LARGE_MU: f64 = 1e12;
 
-/// The load problem's part of the tracer: the answer of [`survey`] at one (η, load),
+/// The load problem's part of the tracer: the answer of [`survey_partial`] at one (η, load),
 /// keyed by [`branch_key`], bisected on the key to neighbouring floats within a budget of
 /// evaluations; the exact corner is solved afterwards, per cluster of changes.
 struct Bisection<'a> {
