@@ -94,4 +94,4 @@ pub mod verify;
 
 pub use certify::{certify, certify_found, certify_load};
 pub use format::*;
-pub use verify::{verify, Rejection, Report};
+pub use verify::{distinct_in_lambda, verify, Rejection, Report};

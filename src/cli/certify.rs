@@ -6,8 +6,8 @@ use super::io::{to_json, Exit, Io};
 use super::load::{prepare_parts, BridgeFlags, LiveLoadArgs};
 use crate::arch::{check_mu, fmt_value, InputError};
 use crate::certificate::{
-    certify, certify_load, verify, Certificate, Claim, LoadSearchMethod, NotCertified, Rejection,
-    SearchMethod,
+    certify, certify_load, distinct_in_lambda, verify, Certificate, Claim, LoadSearchMethod,
+    NotCertified, Rejection, SearchMethod,
 };
 use crate::render::json;
 use crate::settings::Settings;
@@ -230,8 +230,13 @@ fn limit_states_text(cert: &Certificate) -> String {
                     },
                     match (s.unique, s.limit_states.is_empty()) {
                         (_, true) => "the load drives no mechanism",
-                        // (the verifier checks each state found, not that they are distinct)
-                        _ if s.method == LoadSearchMethod::Found => "uniqueness not claimed",
+                        // two found distinct in λ (the verifier's count): not unique
+                        _ if s.method == LoadSearchMethod::Found => {
+                            match distinct_in_lambda(&s.limit_states) >= 2 {
+                                true => "not unique",
+                                false => "uniqueness not claimed",
+                            }
+                        }
                         (true, false) => "unique",
                         (false, false) => "not unique",
                     },

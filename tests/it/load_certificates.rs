@@ -844,7 +844,8 @@ fn sweep_from_lambda_zero_checks_only_admissible_states() {
 /// still brackets λ_static and lists the limit states found, as method `found`: each is
 /// checked by the verifier, `lambda` is null and `unique` false, and the report says that
 /// the collapse multiplier is at most the least listed λ and the list is not claimed
-/// complete. Here two are found (the least 16 % below λ_static). Tampering: a `found`
+/// complete. Here two are found (the least 16 % below λ_static), distinct in λ, so the verdict
+/// also says "not unique". Tampering: a `found`
 /// listing that claims a collapse multiplier, uniqueness or nothing listed is rejected, and
 /// a listed state moved off its limit state is caught.
 #[test]
@@ -881,7 +882,7 @@ fn an_unsettled_load_survey_certifies_what_it_found() {
     );
     let verdict = r.limit_states.clone().unwrap_or_default();
     assert!(
-        verdict.contains("at most that (the list is not claimed complete)"),
+        verdict.contains("(2 distinct in lambda: not unique): the collapse multiplier is at most that (the list is not claimed complete)"),
         "{verdict}"
     );
     assert!(r

@@ -45,6 +45,7 @@ mod vertical;
 
 pub(crate) use mechanism::one_sense_choices;
 pub use report::{Rejection, Report};
+pub use search::distinct_in_lambda;
 pub use statics::LIMIT_STATE_TOL;
 
 use crate::certificate::format::{Certificate, Claim, FarkasCell, FORMAT, VERSION};

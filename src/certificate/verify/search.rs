@@ -43,8 +43,8 @@ use super::report::{reject, Rejection};
 use super::ridge::prove_ridge;
 use super::statics::{Model, LIMIT_STATE_TOL};
 use crate::certificate::format::{
-    Certificate, KinematicFarkas, LimitStateCert, LoadSearchEvidence, LoadSearchMethod,
-    NoMechanism, PatternJoint, SafeSide, SearchEvidence, SearchMethod,
+    Certificate, KinematicFarkas, LimitStateCert, LoadLimitStateCert, LoadSearchEvidence,
+    LoadSearchMethod, NoMechanism, PatternJoint, SafeSide, SearchEvidence, SearchMethod,
 };
 
 /// How a search established its list, for the walker: the sweep, the μ = ∞ argument
@@ -661,12 +661,28 @@ fn associative(
 }
 
 /// The one-line verdict on the limit states listed under the load.
+/// How many of the listed limit states (ascending in λ) are distinct in λ: apart by more
+/// than the checks' tolerance [`LIMIT_STATE_TOL`] × (1 + |λ|). Two distinct ones, each
+/// checked as a limit state, make the answer not unique whatever the list misses.
+pub fn distinct_in_lambda(states: &[LoadLimitStateCert]) -> usize {
+    let apart = |a: f64, b: f64| (b - a).abs() > LIMIT_STATE_TOL * (1.0 + b.abs());
+    states.len().min(1)
+        + states
+            .windows(2)
+            .filter(|w| apart(w[0].lambda, w[1].lambda))
+            .count()
+}
+
 fn load_verdict(search: &LoadSearchEvidence, unique: bool, method: Method) -> String {
     let states = &search.limit_states;
     let verdict = match (states.len(), unique) {
         (n, _) if search.method == LoadSearchMethod::Found => format!(
-            "{n} limit state(s) found, the least at lambda = {}: the collapse multiplier is at most that (the list is not claimed complete)",
-            states[0].lambda
+            "{n} limit state(s) found, the least at lambda = {}{}: the collapse multiplier is at most that (the list is not claimed complete)",
+            states[0].lambda,
+            match distinct_in_lambda(states) {
+                d if d >= 2 => format!(" ({d} distinct in lambda: not unique)"),
+                _ => String::new(),
+            }
         ),
         (0, _) => "no limit state: the load never drives a mechanism".to_string(),
         (1, true) => format!(
