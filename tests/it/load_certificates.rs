@@ -882,7 +882,7 @@ fn an_unsettled_load_survey_certifies_what_it_found() {
     );
     let verdict = r.limit_states.clone().unwrap_or_default();
     assert!(
-        verdict.contains("(2 distinct in lambda: not unique): the collapse multiplier is at most that (the list is not claimed complete)"),
+        verdict.contains("(2 distinct in lambda, each checked as a limit state: not unique): the collapse multiplier is at most that (the list is not claimed complete)"),
         "{verdict}"
     );
     assert!(r

@@ -680,7 +680,7 @@ fn load_verdict(search: &LoadSearchEvidence, unique: bool, method: Method) -> St
             "{n} limit state(s) found, the least at lambda = {}{}: the collapse multiplier is at most that (the list is not claimed complete)",
             states[0].lambda,
             match distinct_in_lambda(states) {
-                d if d >= 2 => format!(" ({d} distinct in lambda: not unique)"),
+                d if d >= 2 => format!(" ({d} distinct in lambda, each checked as a limit state: not unique)"),
                 _ => String::new(),
             }
         ),
