@@ -266,15 +266,7 @@ impl Arch {
     #[inline]
     pub fn scan_sin_cos(&self, n: usize, beta: Radians) -> Option<(f64, f64)> {
         let (a, b) = (self.beta_right, self.beta_left);
-        let (m, trig) = self.scan_trig.0.get_or_init(|| {
-            (
-                n,
-                (0..n).map(|i| grid_angle(a, b, n, i).sin_cos()).collect(),
-            )
-        });
-        if *m != n {
-            return None;
-        }
+        let trig = self.scan_trig(n)?;
         let t = (beta - a) / (b - a) * (n - 1) as f64;
         if !(t >= 0.0 && t <= (n - 1) as f64) {
             return None;
@@ -282,6 +274,20 @@ impl Arch {
         // the nearest index (t ≥ 0: truncation of t + ½; no call to round)
         let i = ((t + 0.5) as usize).min(n - 1);
         (grid_angle(a, b, n, i) == beta).then(|| trig[i])
+    }
+    /// (sin β, cos β) at the `n` angles of the scan grid from β_R to β_L ([`grid_angle`]),
+    /// from the arch's cache (filled at the first call, for the first `n` asked for); `None`
+    /// for any other `n`.
+    #[inline]
+    pub fn scan_trig(&self, n: usize) -> Option<&[(f64, f64)]> {
+        let (a, b) = (self.beta_right, self.beta_left);
+        let (m, trig) = self.scan_trig.0.get_or_init(|| {
+            (
+                n,
+                (0..n).map(|i| grid_angle(a, b, n, i).sin_cos()).collect(),
+            )
+        });
+        (*m == n).then_some(&trig[..])
     }
     /// (sin β_R, cos β_R) of the right springing, computed once with the arch.
     #[inline]

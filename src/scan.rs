@@ -12,7 +12,7 @@ use crate::contact::ContactKind;
 use crate::contact::{Contact, Location, Peak};
 use crate::settings::Settings;
 use crate::state::State;
-use crate::statics::{actions, actions_with, activation_of, forces_with};
+use crate::statics::{actions, actions_with, activation_of, forces_with, ring_slopes};
 
 impl State<'_> {
     /// φ of `mode` and its first two β-derivatives at `beta`.
@@ -90,50 +90,113 @@ impl State<'_> {
     fn continuous_peaks(&self, settings: &Settings) -> Vec<Peak> {
         let (a, b) = (self.arch.beta_right(), self.arch.beta_left());
         let modes = ContactKind::active_at(self.mu);
-        peaks_over(
+        let n = settings.scan_points.max(3);
+        let phi = |beta: Radians, orders: usize, only: Option<usize>| {
+            let act = match self.arch.scan_sin_cos(n, beta) {
+                Some(sc) => actions_with(self.arch, self.eta, beta, sc),
+                None => actions(self.arch, self.eta, beta),
+            };
+            let mut out = [[0.0; 3]; 4];
+            for (k, &mode) in modes.iter().enumerate() {
+                if only.is_some_and(|o| o != k) {
+                    continue;
+                }
+                for (d, slot) in out[k].iter_mut().enumerate().take(orders) {
+                    *slot = act.activation(mode, d, self.eta, self.mu).at(&self.x);
+                }
+            }
+            out
+        };
+        // the slopes from N and T at x (the ring's weight alone: not with fill)
+        let ring = self
+            .arch
+            .scan_trig(n)
+            .filter(|_| self.arch.fill().is_none());
+        let ring = ring.map(|trig| RingSlopes {
+            state: self,
+            trig,
+            modes,
+        });
+        peaks_over_with(
             (a, Location::Springing),
             (b, Location::Springing),
             modes,
-            settings.scan_points,
-            &|beta, orders| {
-                let act = match self.arch.scan_sin_cos(settings.scan_points.max(3), beta) {
-                    Some(sc) => actions_with(self.arch, self.eta, beta, sc),
-                    None => actions(self.arch, self.eta, beta),
-                };
-                let mut out = [[0.0; 3]; 4];
-                for (k, &mode) in modes.iter().enumerate() {
-                    for (d, slot) in out[k].iter_mut().enumerate().take(orders) {
-                        *slot = act.activation(mode, d, self.eta, self.mu).at(&self.x);
-                    }
-                }
-                out
-            },
+            n,
+            &phi,
+            ring.as_ref().map(|r| r as &dyn Slopes),
         )
     }
 }
 
+/// A cheaper form of a scan's slopes on its grid than its `phi`, for the sign tests of
+/// [`peaks_over_with`] (every value it returns and every Newton step is `phi`'s).
+pub trait Slopes {
+    /// dφ/dβ of each mode at the `i`-th grid angle `beta`.
+    fn on_grid(&self, i: usize, beta: Radians) -> [f64; 4];
+}
+
+/// The slopes of a state's activation functions from the ring's own weight
+/// ([`ring_slopes`]), on the arch's cached grid.
+struct RingSlopes<'a> {
+    state: &'a State<'a>,
+    trig: &'a [(f64, f64)],
+    modes: &'a [ContactKind],
+}
+
+impl Slopes for RingSlopes<'_> {
+    fn on_grid(&self, i: usize, beta: Radians) -> [f64; 4] {
+        let s = self.state;
+        ring_slopes(s.arch, (s.eta, s.mu), beta, self.trig[i], &s.x, self.modes)
+    }
+}
+
+impl State<'_> {}
+
 /// The local maxima of each activation function over the smooth piece [a, b] of a
-/// continuous arch; `phi(β, orders)[k]` holds the value and the first `orders − 1`
+/// continuous arch; `phi(β, orders, only)[k]` holds the value and the first `orders − 1`
 /// β-derivatives of `modes[k]` (all modes at once, from one evaluation of the actions; the
-/// rest zero): sampled on `n` equally
+/// rest zero; with `only = Some(k)` modes[k] alone is needed, the others may be zero): sampled on `n` equally
 /// spaced angles, a sign change of dφ/dβ in a cell brackets an interior maximum refined by
 /// safeguarded Newton on dφ/dβ = 0 with the exact d²φ/dβ²; an end of the piece is a
 /// maximum when φ decreases into the piece (its location as given: a springing, or the
 /// fixed angle of a point load, which is no free tangency).
 pub fn peaks_over(
+    a: (Radians, Location),
+    b: (Radians, Location),
+    modes: &[ContactKind],
+    n: usize,
+    phi: &dyn Fn(Radians, usize, Option<usize>) -> [[f64; 3]; 4],
+) -> Vec<Peak> {
+    peaks_over_with(a, b, modes, n, phi, None)
+}
+
+/// [`peaks_over`], with the slopes on the grid from `slopes` where given (a cheaper form
+/// than `phi`, equal to rounding: they only say where dφ/dβ changes sign); every value
+/// returned and every Newton step is `phi`'s.
+pub fn peaks_over_with(
     (a, at_a): (Radians, Location),
     (b, at_b): (Radians, Location),
     modes: &[ContactKind],
     n: usize,
-    phi: &dyn Fn(Radians, usize) -> [[f64; 3]; 4],
+    phi: &dyn Fn(Radians, usize, Option<usize>) -> [[f64; 3]; 4],
+    slopes: Option<&dyn Slopes>,
 ) -> Vec<Peak> {
     let n = n.max(3);
     let grid: Vec<Radians> = (0..n).map(|i| grid_angle(a, b, n, i)).collect();
-    // values and slopes on the grid (second derivatives only where Newton needs them)
-    let all: Vec<[[f64; 3]; 4]> = grid.iter().map(|&beta| phi(beta, 2)).collect();
+    // slopes on the grid (second derivatives only where Newton needs them), and the values
+    // at the ends
+    let slope: Vec<[f64; 4]> = grid
+        .iter()
+        .enumerate()
+        .map(|(i, &beta)| match slopes {
+            Some(f) => f.on_grid(i, beta),
+            None => phi(beta, 2, None).map(|v| v[1]),
+        })
+        .collect();
+    let (at_first, at_last) = (phi(a, 1, None), phi(b, 1, None));
     let mut out = Vec::new();
     for (k, &mode) in modes.iter().enumerate() {
-        let vals = |i: usize| all[i][k];
+        let slope = |i: usize| slope[i][k];
         let push = |out: &mut Vec<Peak>, beta: Radians, value: f64, at: Location, free: bool| {
             out.push(Peak {
                 contact: Contact {
@@ -146,17 +209,21 @@ pub fn peaks_over(
                 sin_cos: None,
             })
         };
-        if vals(0)[1] <= 0.0 {
-            push(&mut out, a, vals(0)[0], at_a, false);
+        if slope(0) <= 0.0 {
+            push(&mut out, a, at_first[k][0], at_a, false);
         }
-        if vals(n - 1)[1] >= 0.0 {
-            push(&mut out, b, vals(n - 1)[0], at_b, false);
+        if slope(n - 1) >= 0.0 {
+            push(&mut out, b, at_last[k][0], at_b, false);
         }
         for i in 0..n - 1 {
-            if vals(i)[1] > 0.0 && vals(i + 1)[1] <= 0.0 {
-                let beta = refine_max(&|x| phi(x, 3)[k], grid[i], grid[i + 1], vals(i + 1)[1]);
+            if slope(i) > 0.0 && slope(i + 1) <= 0.0 {
+                let newton = |x: Radians| {
+                    let v = phi(x, 3, Some(k))[k];
+                    [v[1], v[2]]
+                };
+                let beta = refine_max(&newton, (grid[i], grid[i + 1]), slope(i + 1));
                 if beta > a && beta < b {
-                    let v = phi(beta, 1)[k][0];
+                    let v = phi(beta, 1, Some(k))[k][0];
                     push(&mut out, beta, v, Location::Interior, true);
                 }
             }
@@ -165,12 +232,11 @@ pub fn peaks_over(
     out
 }
 
-/// Root of dφ/dβ in [lo, hi] where it goes from positive to non-positive: Newton with the
+/// Root of dφ/dβ in [lo, hi] where it goes from positive to `fhi` ≤ 0: Newton with the
 /// exact second derivative, safeguarded by bisection.
 fn refine_max(
-    phi: &dyn Fn(Radians) -> [f64; 3],
-    mut lo: Radians,
-    mut hi: Radians,
+    phi: &dyn Fn(Radians) -> [f64; 2],
+    (mut lo, mut hi): (Radians, Radians),
     fhi: f64,
 ) -> Radians {
     if fhi == 0.0 {
@@ -178,7 +244,7 @@ fn refine_max(
     }
     let mut beta = 0.5 * (lo + hi);
     for _ in 0..100 {
-        let [_, f, df] = phi(beta);
+        let [f, df] = phi(beta);
         if f > 0.0 {
             lo = beta;
         } else {

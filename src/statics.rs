@@ -196,6 +196,45 @@ fn ring_forces(arch: &Arch, eta: f64, beta: Radians, (s, c): (f64, f64)) -> [Aff
     ]
 }
 
+/// dφ/dβ of each of `modes` (in their order; the rest zero) at reactions `x`, from the
+/// ring's own weight alone (the caller leaves out arches with fill), at angle `beta` with
+/// (sin β, cos β) given: N and T are evaluated at x first and the identities dN = T − cos β,
+/// dT = −N + sin β, dM = −T + (1 − ρ) cos β combine them, a few flops in all. The values of
+/// `actions_with(..).activation(mode, 1, ..).at(x)` to rounding (another order of the same
+/// terms, so not bit for bit): a scan's sign tests on its grid use them.
+#[inline]
+pub fn ring_slopes(
+    arch: &Arch,
+    (eta, mu): (f64, f64),
+    beta: Radians,
+    (s, c): (f64, f64),
+    x: &Reactions,
+    modes: &[ContactKind],
+) -> [f64; 4] {
+    let d = beta - arch.beta_right();
+    let rho = arch.weight().rho(eta);
+    let n0 = x[0] * s + x[1] * c - d * c;
+    let t0 = x[0] * c - x[1] * s + d * s;
+    let (n1, t1, m1) = (t0 - c, s - n0, (1.0 - rho) * c - t0);
+    let mut out = [0.0; 4];
+    for (slot, &mode) in out.iter_mut().zip(modes) {
+        *slot = combine_forces(mode, [n1, t1, m1], eta, mu);
+    }
+    out
+}
+
+/// The activation function of `mode` from the values of N, T, M (any one β-derivative
+/// order), as [`activation_of`] combines their affine forms.
+#[inline]
+fn combine_forces(mode: ContactKind, [n, t, m]: [f64; 3], eta: f64, mu: f64) -> f64 {
+    match mode {
+        ContactKind::HingeExtrados => m - 0.5 * eta * n,
+        ContactKind::HingeIntrados => -m - 0.5 * eta * n,
+        ContactKind::SlidePlus => t - mu * n,
+        ContactKind::SlideMinus => -t - mu * n,
+    }
+}
+
 /// The activation function of `mode` from N, T, M (any one β-derivative order) as an
 /// affine function of x at thickness `eta` and friction `mu`.
 #[inline]

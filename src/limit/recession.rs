@@ -347,7 +347,7 @@ fn weightless_peaks(
 ) -> Vec<(f64, crate::contact::Contact)> {
     use crate::contact::Location;
     let modes = ContactKind::active_at(mu);
-    let phi = |beta: f64, orders: usize| {
+    let phi = |beta: f64, orders: usize, _only: Option<usize>| {
         let mut out = [[0.0; 3]; 4];
         for (k, &kind) in modes.iter().enumerate() {
             let rows = weightless_rows(arch, eta, mu, kind, beta);

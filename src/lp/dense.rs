@@ -245,6 +245,9 @@ pub fn kinematic_rows(columns: &[[f64; 3]], power: &[f64]) -> KinematicRows {
         return KinematicRows::Other;
     }
     let rows = DMatrix::from_fn(5, n + 1, |r, c| kinematic_column(columns, power, c)[r]);
+    if surely_full_rank(&rows, 1e2 * BASIS_TOL) {
+        return KinematicRows::Independent(0b11111);
+    }
     let rank = rows.rank(1e2 * BASIS_TOL);
     if rank >= 5 {
         return KinematicRows::Independent(0b11111);
@@ -266,6 +269,48 @@ pub fn kinematic_rows(columns: &[[f64; 3]], power: &[f64]) -> KinematicRows {
         }
     }
     KinematicRows::Independent(mask)
+}
+
+/// Whether the five rows of `m` have rank 5 at the threshold `tol` of
+/// `DMatrix::rank` (singular values above it), shown without the SVD: Gaussian elimination
+/// with complete pivoting picks five columns M, and σ₅(m) ≥ σ₅(M) ≥ |det M| / ‖M‖_F⁴ (the
+/// singular values of m are at least those of its five columns, and |det M| = σ₁⋯σ₅ ≤
+/// σ₅ ‖M‖_F⁴). `false` says nothing (the SVD decides).
+fn surely_full_rank(m: &nalgebra::DMatrix<f64>, tol: f64) -> bool {
+    let (rows, cols) = m.shape();
+    if rows != 5 || cols < 5 {
+        return false;
+    }
+    let mut a = m.clone();
+    let (mut det, mut picked) = (1.0f64, [0usize; 5]);
+    let mut free: Vec<usize> = (0..cols).collect();
+    for k in 0..5 {
+        // the largest entry of rows k.. in the columns not yet picked
+        let (mut best, mut at) = (0.0f64, (k, 0));
+        for r in k..5 {
+            for (f, &c) in free.iter().enumerate() {
+                if a[(r, c)].abs() > best {
+                    (best, at) = (a[(r, c)].abs(), (r, f));
+                }
+            }
+        }
+        if best == 0.0 {
+            return false;
+        }
+        let (r, c) = (at.0, free.swap_remove(at.1));
+        a.swap_rows(k, r);
+        det *= a[(k, c)];
+        picked[k] = c;
+        for i in k + 1..5 {
+            let f = a[(i, c)] / a[(k, c)];
+            for &j in &free {
+                a[(i, j)] -= f * a[(k, j)];
+            }
+        }
+    }
+    let frobenius2: f64 = picked.iter().map(|&c| m.column(c).norm_squared()).sum();
+    // a margin of 2 for the rounding of det and of the SVD
+    det.abs() > 2.0 * tol * frobenius2 * frobenius2
 }
 
 /// Every basic feasible solution of the kinematic LP's equality rows `rows` (the

@@ -244,7 +244,7 @@ impl<'a> Loaded<'a> {
         for (i, piece) in self.pieces().into_iter().enumerate() {
             let (from, to, _) = piece;
             let grid = grids.map(|g| &g[i]);
-            let phi = |beta: Radians, orders: usize| {
+            let phi = |beta: Radians, orders: usize, _only: Option<usize>| {
                 let mut v = [[0.0; 3]; 4];
                 if orders <= 2 {
                     if let Some(rows) = grid.and_then(|g| g.at(beta)) {

@@ -453,3 +453,52 @@ fn dense_kinematic_lp_matches_highs() {
     );
     assert!(found >= 100 && none >= 100, "found {found}, none {none}");
 }
+
+/// The kinematic rows are classified as of full rank exactly where their SVD says rank 5
+/// at the dense path's threshold (1e-10), including rows a small perturbation away from
+/// rank 4 on either side of it: the shortcut that skips the SVD (a determinant bound)
+/// never claims full rank that the SVD would deny.
+#[test]
+fn kinematic_rows_full_rank_as_the_svd_says() {
+    use arch_enum::lp::dense::{kinematic_rows, KinematicRows};
+    let mut rng = Lcg(0x5eed_fa11_4a4c_0001);
+    let (mut full, mut not_full) = (0, 0);
+    for case in 0..2000 {
+        let n = 4 + case % 9;
+        // rank-2 columns of the compatibility rows, then a perturbation of 1e-7 to 1e-14
+        let basis: Vec<[f64; 3]> = (0..2)
+            .map(|_| [0; 3].map(|_| 2.0 * rng.next() - 1.0))
+            .collect();
+        let size = 10f64.powi(-7 - (case as i32 / 9) % 8);
+        let columns: Vec<[f64; 3]> = (0..n)
+            .map(|_| {
+                let w: Vec<f64> = basis.iter().map(|_| 2.0 * rng.next() - 1.0).collect();
+                [0, 1, 2].map(|i| {
+                    basis.iter().zip(&w).map(|(b, w)| b[i] * w).sum::<f64>()
+                        + size * (2.0 * rng.next() - 1.0)
+                })
+            })
+            .collect();
+        let power: Vec<f64> = (0..n).map(|_| 2.0 * rng.next() - 1.0).collect();
+        let m = DMatrix::from_fn(5, n + 1, |r, c| {
+            if c < n {
+                [columns[c][0], columns[c][1], columns[c][2], power[c], 1.0][r]
+            } else {
+                [0.0, 0.0, 0.0, -1.0, 0.0][r]
+            }
+        });
+        let svd_full = m.rank(1e-10) >= 5;
+        let classified_full =
+            kinematic_rows(&columns, &power) == KinematicRows::Independent(0b11111);
+        assert_eq!(classified_full, svd_full, "case {case}: size {size:e}");
+        if svd_full {
+            full += 1;
+        } else {
+            not_full += 1;
+        }
+    }
+    assert!(
+        full >= 300 && not_full >= 300,
+        "full {full}, not full {not_full}"
+    );
+}
