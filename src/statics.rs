@@ -50,6 +50,72 @@ impl Affine {
     }
 }
 
+/// N, T or M as the statics combine them: an affine form of x ([`Affine`]), or its value
+/// at one x (`f64`). The identities below are written once for both.
+pub trait Force: Copy {
+    /// `a·p + b·q`.
+    fn combine(a: f64, p: &Self, b: f64, q: &Self) -> Self;
+    /// `self + k` for a constant k.
+    fn shift(self, k: f64) -> Self;
+    /// `−self`.
+    fn negated(self) -> Self;
+}
+
+impl Force for Affine {
+    #[inline]
+    fn combine(a: f64, p: &Affine, b: f64, q: &Affine) -> Affine {
+        Affine::combine(a, p, b, q)
+    }
+    #[inline]
+    fn shift(self, k: f64) -> Affine {
+        Affine {
+            g: self.g,
+            c: self.c + k,
+        }
+    }
+    #[inline]
+    fn negated(self) -> Affine {
+        Affine {
+            g: self.g.map(|v| -v),
+            c: -self.c,
+        }
+    }
+}
+
+impl Force for f64 {
+    #[inline]
+    fn combine(a: f64, p: &f64, b: f64, q: &f64) -> f64 {
+        a * p + b * q
+    }
+    #[inline]
+    fn shift(self, k: f64) -> f64 {
+        self + k
+    }
+    #[inline]
+    fn negated(self) -> f64 {
+        -self
+    }
+}
+
+/// The first and second β-derivatives of N, T, M under the ring's own weight, from N and T
+/// at the angle (sin β, cos β) (formulation §3): dN = T − cos β, dT = −N + sin β,
+/// dM = −T + (1 − ρ) cos β; d²N = 2 sin β − N, d²T = 2 cos β − T, d²M = N − (2 − ρ) sin β.
+#[inline]
+pub fn ring_derivatives<F: Force>(n: F, t: F, (s, c): (f64, f64), rho: f64) -> [[F; 3]; 2] {
+    [
+        [
+            t.shift(-c),
+            n.negated().shift(s),
+            t.negated().shift((1.0 - rho) * c),
+        ],
+        [
+            n.negated().shift(2.0 * s),
+            t.negated().shift(2.0 * c),
+            n.shift(-((2.0 - rho) * s)),
+        ],
+    ]
+}
+
 /// The natural magnitude of a state's forces, 1 + |h| + |v| + |w| (units of γ t d r):
 /// tolerances on φ and on Newton residuals are relative to it.
 pub fn reaction_scale(x: &Reactions) -> f64 {
@@ -198,8 +264,8 @@ fn ring_forces(arch: &Arch, eta: f64, beta: Radians, (s, c): (f64, f64)) -> [Aff
 
 /// dφ/dβ of each of `modes` (in their order; the rest zero) at reactions `x`, from the
 /// ring's own weight alone (the caller leaves out arches with fill), at angle `beta` with
-/// (sin β, cos β) given: N and T are evaluated at x first and the identities dN = T − cos β,
-/// dT = −N + sin β, dM = −T + (1 − ρ) cos β combine them, a few flops in all. The values of
+/// (sin β, cos β) given: N and T are evaluated at x first and [`ring_derivatives`] combines
+/// their values, a few flops in all. The values of
 /// `actions_with(..).activation(mode, 1, ..).at(x)` to rounding (another order of the same
 /// terms, so not bit for bit): a scan's sign tests on its grid use them.
 #[inline]
@@ -207,43 +273,29 @@ pub fn ring_slopes(
     arch: &Arch,
     (eta, mu): (f64, f64),
     beta: Radians,
-    (s, c): (f64, f64),
+    sc: (f64, f64),
     x: &Reactions,
     modes: &[ContactKind],
 ) -> [f64; 4] {
-    let d = beta - arch.beta_right();
-    let rho = arch.weight().rho(eta);
-    let n0 = x[0] * s + x[1] * c - d * c;
-    let t0 = x[0] * c - x[1] * s + d * s;
-    let (n1, t1, m1) = (t0 - c, s - n0, (1.0 - rho) * c - t0);
+    let [n, t, _] = ring_forces(arch, eta, beta, sc);
+    let [first, _] = ring_derivatives(n.at(x), t.at(x), sc, arch.weight().rho(eta));
     let mut out = [0.0; 4];
     for (slot, &mode) in out.iter_mut().zip(modes) {
-        *slot = combine_forces(mode, [n1, t1, m1], eta, mu);
+        *slot = activation_of(mode, &first, eta, mu);
     }
     out
 }
 
-/// The activation function of `mode` from the values of N, T, M (any one β-derivative
-/// order), as [`activation_of`] combines their affine forms.
+/// The activation function of `mode` from N, T, M (any one β-derivative order) at
+/// thickness `eta` and friction `mu`: an affine function of x from their affine forms, or
+/// its value from their values ([`Force`]).
 #[inline]
-fn combine_forces(mode: ContactKind, [n, t, m]: [f64; 3], eta: f64, mu: f64) -> f64 {
+pub fn activation_of<F: Force>(mode: ContactKind, [n, t, m]: &[F; 3], eta: f64, mu: f64) -> F {
     match mode {
-        ContactKind::HingeExtrados => m - 0.5 * eta * n,
-        ContactKind::HingeIntrados => -m - 0.5 * eta * n,
-        ContactKind::SlidePlus => t - mu * n,
-        ContactKind::SlideMinus => -t - mu * n,
-    }
-}
-
-/// The activation function of `mode` from N, T, M (any one β-derivative order) as an
-/// affine function of x at thickness `eta` and friction `mu`.
-#[inline]
-pub fn activation_of(mode: ContactKind, [n, t, m]: &[Affine; 3], eta: f64, mu: f64) -> Affine {
-    match mode {
-        ContactKind::HingeExtrados => Affine::combine(1.0, m, -0.5 * eta, n),
-        ContactKind::HingeIntrados => Affine::combine(-1.0, m, -0.5 * eta, n),
-        ContactKind::SlidePlus => Affine::combine(1.0, t, -mu, n),
-        ContactKind::SlideMinus => Affine::combine(-1.0, t, -mu, n),
+        ContactKind::HingeExtrados => F::combine(1.0, m, -0.5 * eta, n),
+        ContactKind::HingeIntrados => F::combine(-1.0, m, -0.5 * eta, n),
+        ContactKind::SlidePlus => F::combine(1.0, t, -mu, n),
+        ContactKind::SlideMinus => F::combine(-1.0, t, -mu, n),
     }
 }
 
@@ -264,32 +316,7 @@ pub fn actions(arch: &Arch, eta: f64, beta: Radians) -> Actions {
 pub fn actions_with(arch: &Arch, eta: f64, beta: Radians, (s, c): (f64, f64)) -> Actions {
     let rho = arch.weight().rho(eta);
     let [n0, t0, m0] = ring_forces(arch, eta, beta, (s, c));
-    // dN = T − cos β, dT = −N + sin β, dM = −T + (1 − ρ) cos β
-    let n1 = Affine {
-        g: t0.g,
-        c: t0.c - c,
-    };
-    let t1 = Affine {
-        g: [-s, -c, 0.0],
-        c: -n0.c + s,
-    };
-    let m1 = Affine {
-        g: [-c, s, 0.0],
-        c: -t0.c + (1.0 - rho) * c,
-    };
-    // d²N = 2 sin β − N, d²T = 2 cos β − T, d²M = N − (2 − ρ) sin β
-    let n2 = Affine {
-        g: [-s, -c, 0.0],
-        c: -n0.c + 2.0 * s,
-    };
-    let t2 = Affine {
-        g: [-c, s, 0.0],
-        c: -t0.c + 2.0 * c,
-    };
-    let m2 = Affine {
-        g: n0.g,
-        c: n0.c - (2.0 - rho) * s,
-    };
+    let [[n1, t1, m1], [n2, t2, m2]] = ring_derivatives(n0, t0, (s, c), rho);
     let mut a = Actions {
         n: [n0, n1, n2],
         t: [t0, t1, t2],
