@@ -150,13 +150,11 @@ impl Slopes for RingSlopes<'_> {
     }
 }
 
-impl State<'_> {}
-
 /// The local maxima of each activation function over the smooth piece [a, b] of a
 /// continuous arch; `phi(β, orders, only)[k]` holds the value and the first `orders − 1`
 /// β-derivatives of `modes[k]` (all modes at once, from one evaluation of the actions; the
-/// rest zero; with `only = Some(k)` modes[k] alone is needed, the others may be zero): sampled on `n` equally
-/// spaced angles, a sign change of dφ/dβ in a cell brackets an interior maximum refined by
+/// rest zero; with `only = Some(k)` `modes[k]` alone is needed, the others may be zero):
+/// sampled on `n` equally spaced angles, a sign change of dφ/dβ in a cell brackets an interior maximum refined by
 /// safeguarded Newton on dφ/dβ = 0 with the exact d²φ/dβ²; an end of the piece is a
 /// maximum when φ decreases into the piece (its location as given: a springing, or the
 /// fixed angle of a point load, which is no free tangency).
