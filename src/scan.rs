@@ -112,10 +112,13 @@ impl State<'_> {
             .arch
             .scan_trig(n)
             .filter(|_| self.arch.fill().is_none());
+        let terms = 2.0 + self.x[0].abs() + self.x[1].abs() + (b - a);
+        let friction = if self.mu.is_finite() { self.mu } else { 0.0 };
         let ring = ring.map(|trig| RingSlopes {
             state: self,
             trig,
             modes,
+            sure: SLOPE_SIGN_ULPS * f64::EPSILON * terms * (1.0 + self.eta + friction),
         });
         peaks_over_with(
             (a, Location::Springing),
@@ -131,9 +134,15 @@ impl State<'_> {
 /// A cheaper form of a scan's slopes on its grid than its `phi`, for the sign tests of
 /// [`peaks_over_with`] (every value it returns and every Newton step is `phi`'s).
 pub trait Slopes {
-    /// dφ/dβ of each mode at the `i`-th grid angle `beta`.
-    fn on_grid(&self, i: usize, beta: Radians) -> [f64; 4];
+    /// dφ/dβ of each mode at each angle of `grid` (the scan's), and a bound above which a
+    /// slope's sign is that of `phi`'s (both within rounding of the exact slope).
+    fn on_grid(&self, grid: &[Radians]) -> (Vec<[f64; 4]>, f64);
 }
+
+/// The sign of a slope from [`ring_slopes`] is sure above this many ε times
+/// (2 + |h| + |v| + |β − β_R|)(1 + η + μ): each of the two forms rounds by at most ~16 of
+/// them (a few products and sums of terms of that size), so a margin of 2.
+const SLOPE_SIGN_ULPS: f64 = 64.0;
 
 /// The slopes of a state's activation functions from the ring's own weight
 /// ([`ring_slopes`]), on the arch's cached grid.
@@ -141,12 +150,19 @@ struct RingSlopes<'a> {
     state: &'a State<'a>,
     trig: &'a [(f64, f64)],
     modes: &'a [ContactKind],
+    /// The bound of [`Slopes::on_grid`] ([`SLOPE_SIGN_ULPS`], |β − β_R| at most the span).
+    sure: f64,
 }
 
 impl Slopes for RingSlopes<'_> {
-    fn on_grid(&self, i: usize, beta: Radians) -> [f64; 4] {
+    fn on_grid(&self, grid: &[Radians]) -> (Vec<[f64; 4]>, f64) {
         let s = self.state;
-        ring_slopes(s.arch, (s.eta, s.mu), beta, self.trig[i], &s.x, self.modes)
+        let slopes = grid
+            .iter()
+            .zip(self.trig)
+            .map(|(&beta, &sc)| ring_slopes(s.arch, (s.eta, s.mu), beta, sc, &s.x, self.modes))
+            .collect();
+        (slopes, self.sure)
     }
 }
 
@@ -169,8 +185,9 @@ pub fn peaks_over(
 }
 
 /// [`peaks_over`], with the slopes on the grid from `slopes` where given (a cheaper form
-/// than `phi`, equal to rounding: they only say where dφ/dβ changes sign); every value
-/// returned and every Newton step is `phi`'s.
+/// than `phi`, equal to rounding: they only say where dφ/dβ changes sign, and where one is
+/// too near zero for its sign to be sure, `phi`'s slope decides); every value returned and
+/// every Newton step is `phi`'s.
 pub fn peaks_over_with(
     (a, at_a): (Radians, Location),
     (b, at_b): (Radians, Location),
@@ -181,17 +198,29 @@ pub fn peaks_over_with(
 ) -> Vec<Peak> {
     let n = n.max(3);
     let grid: Vec<Radians> = (0..n).map(|i| grid_angle(a, b, n, i)).collect();
-    // slopes on the grid (second derivatives only where Newton needs them), and the values
-    // at the ends
-    let slope: Vec<[f64; 4]> = grid
-        .iter()
-        .enumerate()
-        .map(|(i, &beta)| match slopes {
-            Some(f) => f.on_grid(i, beta),
-            None => phi(beta, 2, None).map(|v| v[1]),
-        })
-        .collect();
-    let (at_first, at_last) = (phi(a, 1, None), phi(b, 1, None));
+    // slopes on the grid (second derivatives only where Newton needs them): `phi`'s, with
+    // its values at the ends; or the cheaper ones, each replaced by `phi`'s where it is too
+    // near zero to be sure of its sign (so every sign is `phi`'s)
+    let mut ends = None;
+    let slope: Vec<[f64; 4]> = match slopes {
+        None => {
+            let all: Vec<[[f64; 3]; 4]> = grid.iter().map(|&beta| phi(beta, 2, None)).collect();
+            ends = Some((all[0], all[n - 1]));
+            all.iter().map(|v| v.map(|m| m[1])).collect()
+        }
+        Some(f) => {
+            let (mut slope, sure) = f.on_grid(&grid);
+            for (s, &beta) in slope.iter_mut().zip(&grid) {
+                for (k, v) in s.iter_mut().enumerate().take(modes.len()) {
+                    if v.abs() <= sure {
+                        *v = phi(beta, 2, Some(k))[k][1];
+                    }
+                }
+            }
+            slope
+        }
+    };
+    let (at_first, at_last) = ends.unwrap_or_else(|| (phi(a, 1, None), phi(b, 1, None)));
     let mut out = Vec::new();
     for (k, &mode) in modes.iter().enumerate() {
         let slope = |i: usize| slope[i][k];

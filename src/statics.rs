@@ -277,6 +277,7 @@ pub fn ring_slopes(
     x: &Reactions,
     modes: &[ContactKind],
 ) -> [f64; 4] {
+    debug_assert!(arch.fill().is_none(), "ring_slopes on an arch with fill");
     let [n, t, _] = ring_forces(arch, eta, beta, sc);
     let [first, _] = ring_derivatives(n.at(x), t.at(x), sc, arch.weight().rho(eta));
     let mut out = [0.0; 4];

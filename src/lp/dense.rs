@@ -276,7 +276,7 @@ pub fn kinematic_rows(columns: &[[f64; 3]], power: &[f64]) -> KinematicRows {
 /// with complete pivoting picks five columns M, and σ₅(m) ≥ σ₅(M) ≥ |det M| / ‖M‖_F⁴ (the
 /// singular values of m are at least those of its five columns, and |det M| = σ₁⋯σ₅ ≤
 /// σ₅ ‖M‖_F⁴). `false` says nothing (the SVD decides).
-fn surely_full_rank(m: &nalgebra::DMatrix<f64>, tol: f64) -> bool {
+pub fn surely_full_rank(m: &nalgebra::DMatrix<f64>, tol: f64) -> bool {
     let (rows, cols) = m.shape();
     if rows != 5 || cols < 5 {
         return false;

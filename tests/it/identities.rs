@@ -457,12 +457,12 @@ fn dense_kinematic_lp_matches_highs() {
 /// The kinematic rows are classified as of full rank exactly where their SVD says rank 5
 /// at the dense path's threshold (1e-10), including rows a small perturbation away from
 /// rank 4 on either side of it: the shortcut that skips the SVD (a determinant bound)
-/// never claims full rank that the SVD would deny.
+/// never claims full rank that the SVD would deny, and it decides most full-rank rows.
 #[test]
 fn kinematic_rows_full_rank_as_the_svd_says() {
     use arch_enum::lp::dense::{kinematic_rows, KinematicRows};
     let mut rng = Lcg(0x5eed_fa11_4a4c_0001);
-    let (mut full, mut not_full) = (0, 0);
+    let (mut full, mut not_full, mut shortcut) = (0, 0, 0);
     for case in 0..2000 {
         let n = 4 + case % 9;
         // rank-2 columns of the compatibility rows, then a perturbation of 1e-7 to 1e-14
@@ -488,6 +488,13 @@ fn kinematic_rows_full_rank_as_the_svd_says() {
             }
         });
         let svd_full = m.rank(1e-10) >= 5;
+        if arch_enum::lp::dense::surely_full_rank(&m, 1e-10) {
+            assert!(
+                svd_full,
+                "case {case}: the bound claims full rank, the SVD does not"
+            );
+            shortcut += 1;
+        }
         let classified_full =
             kinematic_rows(&columns, &power) == KinematicRows::Independent(0b11111);
         assert_eq!(classified_full, svd_full, "case {case}: size {size:e}");
@@ -500,5 +507,34 @@ fn kinematic_rows_full_rank_as_the_svd_says() {
     assert!(
         full >= 300 && not_full >= 300,
         "full {full}, not full {not_full}"
+    );
+    // near rank 4 the bound (loose by up to ‖M‖_F⁴) often leaves the decision to the SVD
+    assert!(
+        4 * shortcut >= full,
+        "the bound decided {shortcut} of {full} full-rank rows"
+    );
+    // the rows the solver meets most (generic columns of rank 3): the bound decides them
+    let mut decided = 0;
+    for case in 0..200 {
+        let n = 4 + case % 9;
+        let columns: Vec<[f64; 3]> = (0..n)
+            .map(|_| [0; 3].map(|_| 2.0 * rng.next() - 1.0))
+            .collect();
+        let power: Vec<f64> = (0..n).map(|_| 2.0 * rng.next() - 1.0).collect();
+        let m = DMatrix::from_fn(5, n + 1, |r, c| {
+            if c < n {
+                [columns[c][0], columns[c][1], columns[c][2], power[c], 1.0][r]
+            } else {
+                [0.0, 0.0, 0.0, -1.0, 0.0][r]
+            }
+        });
+        if arch_enum::lp::dense::surely_full_rank(&m, 1e-10) {
+            assert!(m.rank(1e-10) >= 5, "generic case {case}");
+            decided += 1;
+        }
+    }
+    assert!(
+        decided >= 190,
+        "the bound decided {decided} of 200 generic rows"
     );
 }
