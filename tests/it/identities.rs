@@ -454,6 +454,19 @@ fn dense_kinematic_lp_matches_highs() {
     assert!(found >= 100 && none >= 100, "found {found}, none {none}");
 }
 
+/// The kinematic LP's equality rows with its power slack, as the dense path builds them:
+/// rate j → (c_j, p_j, 1), the slack → (0, 0, 0, −1, 0).
+fn kinematic_matrix(columns: &[[f64; 3]], power: &[f64]) -> DMatrix<f64> {
+    let n = columns.len();
+    DMatrix::from_fn(5, n + 1, |r, c| {
+        if c < n {
+            [columns[c][0], columns[c][1], columns[c][2], power[c], 1.0][r]
+        } else {
+            [0.0, 0.0, 0.0, -1.0, 0.0][r]
+        }
+    })
+}
+
 /// The kinematic rows are classified as of full rank exactly where their SVD says rank 5
 /// at the dense path's threshold (1e-10), including rows a small perturbation away from
 /// rank 4 on either side of it: the shortcut that skips the SVD (a determinant bound)
@@ -480,13 +493,7 @@ fn kinematic_rows_full_rank_as_the_svd_says() {
             })
             .collect();
         let power: Vec<f64> = (0..n).map(|_| 2.0 * rng.next() - 1.0).collect();
-        let m = DMatrix::from_fn(5, n + 1, |r, c| {
-            if c < n {
-                [columns[c][0], columns[c][1], columns[c][2], power[c], 1.0][r]
-            } else {
-                [0.0, 0.0, 0.0, -1.0, 0.0][r]
-            }
-        });
+        let m = kinematic_matrix(&columns, &power);
         let svd_full = m.rank(1e-10) >= 5;
         if arch_enum::lp::dense::surely_full_rank(&m, 1e-10) {
             assert!(
@@ -521,13 +528,7 @@ fn kinematic_rows_full_rank_as_the_svd_says() {
             .map(|_| [0; 3].map(|_| 2.0 * rng.next() - 1.0))
             .collect();
         let power: Vec<f64> = (0..n).map(|_| 2.0 * rng.next() - 1.0).collect();
-        let m = DMatrix::from_fn(5, n + 1, |r, c| {
-            if c < n {
-                [columns[c][0], columns[c][1], columns[c][2], power[c], 1.0][r]
-            } else {
-                [0.0, 0.0, 0.0, -1.0, 0.0][r]
-            }
-        });
+        let m = kinematic_matrix(&columns, &power);
         if arch_enum::lp::dense::surely_full_rank(&m, 1e-10) {
             assert!(m.rank(1e-10) >= 5, "generic case {case}");
             decided += 1;
