@@ -482,7 +482,7 @@ fn kinematic_rows_full_rank_as_the_svd_says() {
         let basis: Vec<[f64; 3]> = (0..2)
             .map(|_| [0; 3].map(|_| 2.0 * rng.next() - 1.0))
             .collect();
-        let size = 10f64.powi(-7 - (case as i32 / 9) % 8);
+        let size = 10f64.powi(-7 - (case / 9) % 8);
         let columns: Vec<[f64; 3]> = (0..n)
             .map(|_| {
                 let w: Vec<f64> = basis.iter().map(|_| 2.0 * rng.next() - 1.0).collect();
