@@ -141,7 +141,9 @@ pub trait Slopes {
 
 /// The sign of a slope from [`ring_slopes`] is sure above this many ε times
 /// (2 + |h| + |v| + |β − β_R|)(1 + η + μ): each of the two forms rounds by at most ~16 of
-/// them (a few products and sums of terms of that size), so a margin of 2.
+/// them (a few products and sums of terms of that size), so a margin of 2; the largest gap
+/// seen on 20 000 random states is ~1.7 of them
+/// (`identities::ring_slopes_agree_with_the_full_evaluation_within_the_scan_bound`).
 const SLOPE_SIGN_ULPS: f64 = 64.0;
 
 /// The slopes of a state's activation functions from the ring's own weight
