@@ -114,11 +114,18 @@ impl State<'_> {
             .filter(|_| self.arch.fill().is_none());
         let terms = 2.0 + self.x[0].abs() + self.x[1].abs() + (b - a);
         let friction = if self.mu.is_finite() { self.mu } else { 0.0 };
-        let ring = ring.map(|trig| RingSlopes {
-            state: self,
-            trig,
-            modes,
-            sure: SLOPE_SIGN_ULPS * f64::EPSILON * terms * (1.0 + self.eta + friction),
+        let sure = SLOPE_SIGN_ULPS * f64::EPSILON * terms * (1.0 + self.eta + friction);
+        let on_grid = ring.map(|trig| {
+            move |grid: &[Radians]| {
+                let slopes = grid
+                    .iter()
+                    .zip(trig)
+                    .map(|(&beta, &sc)| {
+                        ring_slopes(self.arch, (self.eta, self.mu), beta, sc, &self.x, modes)
+                    })
+                    .collect();
+                (slopes, sure)
+            }
         });
         peaks_over_with(
             (a, Location::Springing),
@@ -126,18 +133,16 @@ impl State<'_> {
             modes,
             n,
             &phi,
-            ring.as_ref().map(|r| r as &dyn Slopes),
+            on_grid.as_ref().map(|f| f as &Slopes<'_>),
         )
     }
 }
 
 /// A cheaper form of a scan's slopes on its grid than its `phi`, for the sign tests of
-/// [`peaks_over_with`] (every value it returns and every Newton step is `phi`'s).
-pub trait Slopes {
-    /// dφ/dβ of each mode at each angle of `grid` (the scan's), and a bound above which a
-    /// slope's sign is that of `phi`'s (both within rounding of the exact slope).
-    fn on_grid(&self, grid: &[Radians]) -> (Vec<[f64; 4]>, f64);
-}
+/// [`peaks_over_with`] (every value it returns and every Newton step is `phi`'s): dφ/dβ of
+/// each mode at each angle of the grid given, and a bound above which a slope's sign is that
+/// of `phi`'s (both within rounding of the exact slope).
+pub type Slopes<'a> = dyn Fn(&[Radians]) -> (Vec<[f64; 4]>, f64) + 'a;
 
 /// The sign of a slope from [`ring_slopes`] is sure above this many ε times
 /// (2 + |h| + |v| + |β − β_R|)(1 + η + μ): each of the two forms rounds by at most ~16 of
@@ -145,28 +150,6 @@ pub trait Slopes {
 /// seen on 20 000 random states is ~1.7 of them
 /// (`identities::ring_slopes_agree_with_the_full_evaluation_within_the_scan_bound`).
 const SLOPE_SIGN_ULPS: f64 = 64.0;
-
-/// The slopes of a state's activation functions from the ring's own weight
-/// ([`ring_slopes`]), on the arch's cached grid.
-struct RingSlopes<'a> {
-    state: &'a State<'a>,
-    trig: &'a [(f64, f64)],
-    modes: &'a [ContactKind],
-    /// The bound of [`Slopes::on_grid`] ([`SLOPE_SIGN_ULPS`], |β − β_R| at most the span).
-    sure: f64,
-}
-
-impl Slopes for RingSlopes<'_> {
-    fn on_grid(&self, grid: &[Radians]) -> (Vec<[f64; 4]>, f64) {
-        let s = self.state;
-        let slopes = grid
-            .iter()
-            .zip(self.trig)
-            .map(|(&beta, &sc)| ring_slopes(s.arch, (s.eta, s.mu), beta, sc, &s.x, self.modes))
-            .collect();
-        (slopes, self.sure)
-    }
-}
 
 /// The local maxima of each activation function over the smooth piece [a, b] of a
 /// continuous arch; `phi(β, orders, only)[k]` holds the value and the first `orders − 1`
@@ -196,7 +179,7 @@ pub fn peaks_over_with(
     modes: &[ContactKind],
     n: usize,
     phi: &dyn Fn(Radians, usize, Option<usize>) -> [[f64; 3]; 4],
-    slopes: Option<&dyn Slopes>,
+    slopes: Option<&Slopes<'_>>,
 ) -> Vec<Peak> {
     let n = n.max(3);
     let grid: Vec<Radians> = (0..n).map(|i| grid_angle(a, b, n, i)).collect();
@@ -211,7 +194,7 @@ pub fn peaks_over_with(
             all.iter().map(|v| v.map(|m| m[1])).collect()
         }
         Some(f) => {
-            let (mut slope, sure) = f.on_grid(&grid);
+            let (mut slope, sure) = f(&grid);
             for (s, &beta) in slope.iter_mut().zip(&grid) {
                 for (k, v) in s.iter_mut().enumerate().take(modes.len()) {
                     if v.abs() <= sure {
