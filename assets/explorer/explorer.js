@@ -108,13 +108,47 @@ function busy(delta) {
   $("busy").hidden = pending === 0;
 }
 class BadInput extends Error {}
+// Every API request is a computation on the server, which runs 4 at a time and refuses
+// (503) one that waits more than 1.5 s for its turn (src/cli/serve/jobs.rs). The page keeps
+// at most IN_FLIGHT of its own on the server, so that it alone never meets that refusal: a
+// request superseded by an edit is aborted, and its computation killed within ~20 ms.
+const IN_FLIGHT = 3;
+let inFlight = 0;
+const waiting = new Set();
+async function turn(signal) {
+  while (inFlight >= IN_FLIGHT) {
+    await new Promise((wake) => {
+      waiting.add(wake);
+      signal.addEventListener("abort", wake, { once: true });
+    });
+    signal.throwIfAborted();
+  }
+  inFlight += 1;
+}
+function turnDone() {
+  inFlight -= 1;
+  const all = [...waiting];
+  waiting.clear();
+  all.forEach((wake) => wake());
+}
+// The API's response to `u`, one of IN_FLIGHT at most.
+async function request(u, signal) {
+  await turn(signal);
+  try {
+    const r = await fetch(u, { signal });
+    // the body too, before the turn is given back
+    return { status: r.status, text: await r.text() };
+  } finally {
+    turnDone();
+  }
+}
 // A document from the API: 200 -> the JSON (an answer, possibly "no equilibrium"),
 // 400/422 -> BadInput with the server's message.
 async function getJson(u, signal) {
   busy(1);
   try {
-    const r = await fetch(u, { signal });
-    const doc = await r.json();
+    const r = await request(u, signal);
+    const doc = JSON.parse(r.text);
     if (r.status !== 200) throw new BadInput(doc.message || `HTTP ${r.status}`);
     return doc;
   } finally {
@@ -124,9 +158,9 @@ async function getJson(u, signal) {
 async function getText(u, signal) {
   busy(1);
   try {
-    const r = await fetch(u, { signal });
-    if (r.status !== 200) throw new BadInput((await r.json()).message || `HTTP ${r.status}`);
-    return await r.text();
+    const r = await request(u, signal);
+    if (r.status !== 200) throw new BadInput(JSON.parse(r.text).message || `HTTP ${r.status}`);
+    return r.text;
   } finally {
     busy(-1);
   }
