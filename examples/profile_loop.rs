@@ -6,12 +6,12 @@
 //! `valgrind --tool=callgrind --callgrind-out-file=/dev/null target/release/examples/profile_loop solve 0 0.35 20`
 //! (and again with 40), then the difference of the two "Collected" counts over 20.
 //!
-//! Usage: `profile_loop solve|limit|curve|modes|mix|chain ALPHA MU N [BLOCKS]`: N times `survey`
+//! Usage: `profile_loop solve|limit|curve|modes|mix|chain ALPHA MU N [BLOCKS [centroid]]`: N times `survey`
 //! (solve with the limit-state search) at friction MU (`inf` allowed), `limit::solve`
 //! (η_s and the least limit state, no search), `sample` (`curve`: 400 friction
 //! coefficients from MU to MU + 0.2 on one thread, as `curve` samples them) or `trace`
-//! (modes, one thread), of the symmetric arch of opening ALPHA (radians, centreline weight), continuous or of
-//! BLOCKS equal voussoirs; `mix` and `chain` (ALPHA and MU ignored) solve a fixed set of
+//! (modes, one thread), of the symmetric arch of opening ALPHA (radians, centreline weight, or
+//! the true centroid's with `centroid`), continuous (BLOCKS 0) or of BLOCKS equal voussoirs; `mix` and `chain` (ALPHA and MU ignored) solve a fixed set of
 //! arches N times and print their η (see `mix`). Prints the mean time per call on standard
 //! error.
 
@@ -66,15 +66,21 @@ fn mix(s: &Settings, blocks: usize, chain: bool) {
 
 fn main() {
     let a: Vec<String> = std::env::args().collect();
-    let usage = "usage: profile_loop solve|limit|curve|modes|mix|chain ALPHA MU N [BLOCKS]";
+    let usage =
+        "usage: profile_loop solve|limit|curve|modes|mix|chain ALPHA MU N [BLOCKS [centroid]]";
     let arg = |i: usize| a.get(i).expect(usage).as_str();
     let what = arg(1);
     let alpha: f64 = arg(2).parse().expect(usage);
     let mu: f64 = arg(3).parse().expect(usage);
     let n: u32 = arg(4).parse().expect(usage);
     let blocks: usize = a.get(5).map_or(0, |b| b.parse().expect(usage));
+    let weight = match a.get(6).map(String::as_str) {
+        None => WeightModel::Centreline,
+        Some("centroid") => WeightModel::Centroid,
+        Some(_) => panic!("{usage}"),
+    };
     let s = Settings::default();
-    let arch = Arch::symmetric(alpha, WeightModel::Centreline).expect("an opening");
+    let arch = Arch::symmetric(alpha, weight).expect("an opening");
     let arch = if blocks > 0 {
         arch.with_blocks(blocks).expect("a voussoir count")
     } else {

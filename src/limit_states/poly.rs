@@ -192,6 +192,45 @@ impl Poly {
         (lo_b, hi_b)
     }
 
+    /// Whether every Bernstein coefficient of the polynomial over [lo, hi] has the strict
+    /// sign of `sign` (±1; anything else: no), so that the polynomial has that sign on the whole interval: the
+    /// decision of `sign`·[`Poly::bernstein_bounds`] (the least > 0), taken with less work.
+    /// In t ∈ [0, 1] the Bernstein coefficients are b_i = Σ_{k≤i} C(i,k) a_k with b_0 = a_0,
+    /// and a_k has the sign of the k-th coefficient in η − lo (times w^k / C(deg, k), w > 0).
+    /// Where sign·a_0 > 0 and no sign·a_k is negative, every product has a_k's sign and
+    /// every sum keeps a_0's in floating point too (adding terms of one sign never crosses
+    /// zero), so the answer is yes without the sums; otherwise they are formed in turn up to
+    /// the first that fails. (A NaN coefficient is passed over, as the bounds' min and max
+    /// pass it over.)
+    pub fn bernstein_sign(&self, lo: f64, hi: f64, sign: f64) -> bool {
+        let n = self.n;
+        if n == 0 || !(sign == 1.0 || sign == -1.0) {
+            return false;
+        }
+        // the signs of the coefficients in s = η − lo are those in t (s = w t with w > 0
+        // scales a_k by w^k, and C(deg, k) > 0 divides it)
+        let mut c = self.taylor_at(lo, n - 1);
+        let w = hi - lo;
+        if w > 0.0 && sign * c[0] > 0.0 && c[1..n].iter().all(|&a| sign * a >= 0.0) {
+            return true;
+        }
+        unit_scale(&mut c, w, n - 1);
+        let mut row = [0.0; MAX_COEFFS];
+        row[0] = 1.0;
+        for i in 0..n {
+            if i > 0 {
+                for k in (1..=i).rev() {
+                    row[k] += row[k - 1];
+                }
+            }
+            let b: f64 = (0..=i).map(|k| row[k] * c[k]).sum();
+            if sign * b <= 0.0 {
+                return false;
+            }
+        }
+        true
+    }
+
     /// The Bernstein coefficients of degree `deg` (at least the polynomial's degree, less
     /// than [`MAX_COEFFS`]) over [lo, hi], the first `deg + 1` entries: a linear function of
     /// the coefficients.
@@ -216,25 +255,22 @@ impl Poly {
     /// C(deg,k) (the rows C(i, ·) of Pascal's triangle built by addition by the callers).
     #[inline]
     fn unit_scaled(&self, lo: f64, hi: f64, deg: usize) -> [f64; MAX_COEFFS] {
+        let mut c = self.taylor_at(lo, deg);
+        unit_scale(&mut c, hi - lo, deg);
+        c
+    }
+
+    /// The coefficients in s = η − lo, the first `deg + 1` (at least the polynomial's
+    /// degree + 1, at most [`MAX_COEFFS`]; a Horner-like shift).
+    #[inline]
+    fn taylor_at(&self, lo: f64, deg: usize) -> [f64; MAX_COEFFS] {
         let n = deg + 1;
         assert!(n >= self.n && n <= MAX_COEFFS, "Bernstein degree {deg}");
-        // Horner-like shift to t, then the powers of the width
-        let w = hi - lo;
         let mut c = self.c;
         for k in 0..n {
             for j in (k..n - 1).rev() {
                 c[j] += lo * c[j + 1];
             }
-        }
-        let mut scale = 1.0;
-        for ck in c[..n].iter_mut() {
-            *ck *= scale;
-            scale *= w;
-        }
-        let mut cdeg = 1.0;
-        for (k, ck) in c[..n].iter_mut().enumerate() {
-            *ck /= cdeg;
-            cdeg = cdeg * (deg - k) as f64 / (k + 1) as f64;
         }
         c
     }
@@ -259,6 +295,22 @@ impl Poly {
             return None;
         }
         Some(real_roots(&p, lo, hi))
+    }
+}
+
+/// Coefficients in s = η − lo to those of [`Poly::unit_scaled`]: times w^k (t = s / w),
+/// divided by C(deg, k).
+#[inline]
+fn unit_scale(c: &mut [f64; MAX_COEFFS], w: f64, deg: usize) {
+    let mut scale = 1.0;
+    for ck in c[..=deg].iter_mut() {
+        *ck *= scale;
+        scale *= w;
+    }
+    let mut cdeg = 1.0;
+    for (k, ck) in c[..=deg].iter_mut().enumerate() {
+        *ck /= cdeg;
+        cdeg = cdeg * (deg - k) as f64 / (k + 1) as f64;
     }
 }
 

@@ -249,6 +249,66 @@ fn polynomial_roots_and_bounds() {
     }
 }
 
+/// `Poly::bernstein_sign` decides as the signs of `Poly::bernstein_bounds` do, on
+/// polynomials of the sweep's degrees whose sign on the interval is clear, unclear or
+/// mixed (so both its shortcut, from the shifted coefficients' signs, and its full path are
+/// taken), for either sign asked and for empty and reversed intervals.
+#[test]
+fn bernstein_sign_decides_as_the_bounds() {
+    use arch_enum::limit_states::poly::Poly;
+    let mut rng = Rng(0x0b0b_5eef);
+    let (mut shortcut_cases, mut yes, mut no) = (0, 0, 0);
+    for _ in 0..20_000 {
+        let deg = (rng.next() * 8.0) as usize;
+        let offset = 4.0 * rng.next() - 2.0;
+        let c: Vec<f64> = (0..=deg)
+            .map(|k| {
+                let v = rng.next() - 0.5;
+                if k == 0 {
+                    offset + v
+                } else {
+                    v * 10f64.powf(-3.0 * rng.next())
+                }
+            })
+            .collect();
+        let p = Poly::from_coeffs(&c);
+        let lo = 2.0 * rng.next() - 0.5;
+        let hi = match (rng.next() * 10.0) as usize {
+            0 => lo,
+            1 => lo - 0.1,
+            _ => lo + 2.0 * rng.next(),
+        };
+        let (bmin, bmax) = p.bernstein_bounds(lo, hi);
+        for sign in [1.0, -1.0] {
+            let expected = if sign > 0.0 { bmin > 0.0 } else { bmax < 0.0 };
+            assert_eq!(
+                p.bernstein_sign(lo, hi, sign),
+                expected,
+                "{c:?} on [{lo}, {hi}], sign {sign}: bounds [{bmin}, {bmax}]"
+            );
+            // the coefficients in η − lo: p^(k)(lo) / k!, all of the sign asked (the
+            // shortcut's case, counted so that the test sees it taken)
+            let (mut d, mut f) = (p, 1.0);
+            let shifted = (0..=deg).all(|k| {
+                let a = d.eval(lo) / f;
+                d = d.derivative();
+                f *= (k + 1) as f64;
+                sign * a > 1e-9
+            });
+            shortcut_cases += usize::from(hi > lo && shifted);
+            if expected {
+                yes += 1;
+            } else {
+                no += 1;
+            }
+        }
+    }
+    assert!(yes > 5_000 && no > 5_000, "{yes} yes, {no} no");
+    assert!(shortcut_cases > 100, "{shortcut_cases}");
+    assert!(!Poly::from_coeffs(&[]).bernstein_sign(0.0, 1.0, 1.0));
+    assert!(!Poly::constant(1.0).bernstein_sign(0.0, 1.0, f64::NAN));
+}
+
 /// The unsymmetric arch: η_s is monotone in μ (the old "widened" answer was not),
 /// and at μ = 0.96 the least admissible state carries no mechanism while one limit state
 /// lies above it.

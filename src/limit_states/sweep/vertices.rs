@@ -89,9 +89,8 @@ impl Sweeper<'_> {
             // φ_l = p / det stays negative on [lo, bound] when the Bernstein coefficients of
             // p there all have the sign opposite to det's (det keeps its sign before `hi`)
             let bound = first.map_or(hi, |f| f.0);
-            let (bmin, bmax) = p.bernstein_bounds(lo, bound);
             let det_sign = v.det.eval(0.5 * (lo + bound)).signum();
-            if (det_sign > 0.0 && bmax < 0.0) || (det_sign < 0.0 && bmin > 0.0) {
+            if p.bernstein_sign(lo, bound, -det_sign) {
                 continue;
             }
             let scale = p.norm().max(f64::MIN_POSITIVE);
