@@ -113,6 +113,41 @@ impl Poly {
         r
     }
 
+    /// a₀b₀ + a₁b₁ + …: the same sums in the same order as folding [`Poly::mul`] and
+    /// [`Poly::add`] over the terms (so the same bits), without the intermediate
+    /// polynomials.
+    pub fn sum_of_products<const N: usize>(terms: [(&Poly, &Poly); N]) -> Poly {
+        let mut acc = Poly {
+            c: [0.0; MAX_COEFFS],
+            n: 0,
+        };
+        for (k, (a, b)) in terms.into_iter().enumerate() {
+            let mut prod = [0.0; MAX_COEFFS];
+            let n = if a.n == 0 || b.n == 0 {
+                0
+            } else {
+                a.n + b.n - 1
+            };
+            assert!(n <= MAX_COEFFS, "product of degree {} too large", n - 1);
+            if n > 0 {
+                for i in 0..a.n {
+                    for j in 0..b.n {
+                        prod[i + j] += a.c[i] * b.c[j];
+                    }
+                }
+            }
+            if k == 0 {
+                acc = Poly { c: prod, n };
+            } else {
+                acc.n = acc.n.max(n);
+                for i in 0..acc.n {
+                    acc.c[i] = acc.c[i] + prod[i];
+                }
+            }
+        }
+        acc
+    }
+
     /// `k` times the polynomial.
     pub fn scale(&self, k: f64) -> Poly {
         let mut r = *self;

@@ -309,6 +309,35 @@ fn bernstein_sign_decides_as_the_bounds() {
     assert!(!Poly::constant(1.0).bernstein_sign(0.0, 1.0, f64::NAN));
 }
 
+/// `Poly::sum_of_products` gives the bits of folding `mul` and `add` (the sweep's crossing
+/// polynomials were formed so), for terms of every length the sweep meets, empty included.
+#[test]
+fn sum_of_products_has_the_bits_of_mul_and_add() {
+    use arch_enum::limit_states::poly::Poly;
+    let mut rng = Rng(0x50b5_0f1d);
+    let random = |rng: &mut Rng| {
+        let n = (rng.next() * 6.0) as usize;
+        let c: Vec<f64> = (0..n).map(|_| rng.next() - 0.5).collect();
+        Poly::from_coeffs(&c)
+    };
+    for _ in 0..5_000 {
+        let t: Vec<(Poly, Poly)> = (0..4)
+            .map(|_| (random(&mut rng), random(&mut rng)))
+            .collect();
+        let folded = t[1..]
+            .iter()
+            .fold(t[0].0.mul(&t[0].1), |acc, (a, b)| acc.add(&a.mul(b)));
+        let fused = Poly::sum_of_products([
+            (&t[0].0, &t[0].1),
+            (&t[1].0, &t[1].1),
+            (&t[2].0, &t[2].1),
+            (&t[3].0, &t[3].1),
+        ]);
+        let bits = |p: &Poly| p.coeffs().iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&fused), bits(&folded), "{t:?}");
+    }
+}
+
 /// The unsymmetric arch: η_s is monotone in μ (the old "widened" answer was not),
 /// and at μ = 0.96 the least admissible state carries no mechanism while one limit state
 /// lies above it.

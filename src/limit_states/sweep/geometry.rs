@@ -376,9 +376,12 @@ impl Vertex {
     /// φ_l(x(η), η) · det(η), a polynomial.
     #[inline]
     pub(super) fn along(&self, l: &Plane) -> Poly {
-        let p = (0..3).fold(l.c.mul(&self.det), |acc, k| {
-            acc.add(&l.g[k].mul(&self.num[k]))
-        });
+        let p = Poly::sum_of_products([
+            (&l.c, &self.det),
+            (&l.g[0], &self.num[0]),
+            (&l.g[1], &self.num[1]),
+            (&l.g[2], &self.num[2]),
+        ]);
         if self.scaled || l.scaled {
             return deflated(p);
         }
