@@ -130,9 +130,10 @@ impl Poly {
             };
             assert!(n <= MAX_COEFFS, "product of degree {} too large", n - 1);
             if n > 0 {
-                for i in 0..a.n {
-                    for j in 0..b.n {
-                        prod[i + j] += a.c[i] * b.c[j];
+                let bs = b.coeffs();
+                for (i, &ai) in a.coeffs().iter().enumerate() {
+                    for (p, &bj) in prod[i..i + bs.len()].iter_mut().zip(bs) {
+                        *p += ai * bj;
                     }
                 }
             }
@@ -140,8 +141,8 @@ impl Poly {
                 acc = Poly { c: prod, n };
             } else {
                 acc.n = acc.n.max(n);
-                for i in 0..acc.n {
-                    acc.c[i] = acc.c[i] + prod[i];
+                for (s, &p) in acc.c[..acc.n].iter_mut().zip(&prod) {
+                    *s = *s + p;
                 }
             }
         }
