@@ -66,6 +66,7 @@ impl Poly {
     }
 
     /// Value at `t` (Horner).
+    #[inline]
     pub fn eval(&self, t: f64) -> f64 {
         self.coeffs().iter().rev().fold(0.0, |acc, &c| acc * t + c)
     }

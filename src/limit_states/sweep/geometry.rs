@@ -252,8 +252,8 @@ fn deflated(p: Poly) -> Poly {
 pub(super) struct Screen {
     /// For each Bernstein coefficient in turn, its value for each slot.
     by_degree: Vec<f64>,
-    c_len: usize,
-    g_len: usize,
+    /// Slots a plane fills (`c_len + 3 g_len`).
+    slots: usize,
     det_sign: f64,
 }
 
@@ -262,32 +262,45 @@ pub(super) struct Screen {
 const SCREEN_REL: f64 = 1e-12;
 
 impl Screen {
+    /// Slots a plane fills (its coefficients for [`Screen::inside`]).
+    pub(super) fn slots(&self) -> usize {
+        self.slots
+    }
+
     /// Whether the plane stays strictly inside along the path over the whole interval:
     /// every Bernstein coefficient of φ_l·det has det's opposite sign (beyond rounding), so
-    /// φ_l < 0 there and the plane crosses nowhere in it.
-    pub(super) fn inside(&self, l: &Plane) -> bool {
-        let (c, g) = (l.c.coeffs(), [0, 1, 2].map(|k| l.g[k].coeffs()));
-        if c.len() > self.c_len || g.iter().any(|q| q.len() > self.g_len) {
-            return false;
-        }
-        let slots = self.c_len + 3 * self.g_len;
-        self.by_degree.chunks_exact(slots).all(|row| {
-            let (rc, rg) = row.split_at(self.c_len);
+    /// φ_l < 0 there and the plane crosses nowhere in it. `slots`: the plane's coefficients
+    /// in the screen's slots ([`screen_slots`]).
+    pub(super) fn inside(&self, slots: &[f64]) -> bool {
+        self.by_degree.chunks_exact(slots.len()).all(|row| {
             let (mut b, mut size) = (0.0, 0.0);
-            let mut dot = |r: &[f64], w: &[f64]| {
-                for (x, y) in r.iter().zip(w) {
-                    let t = x * y;
-                    b += t;
-                    size += t.abs();
-                }
-            };
-            dot(rc, c);
-            for (k, q) in g.iter().enumerate() {
-                dot(&rg[k * self.g_len..], q);
+            for (x, y) in row.iter().zip(slots) {
+                let t = x * y;
+                b += t;
+                size += t.abs();
             }
             self.det_sign * b < -SCREEN_REL * size
         })
     }
+}
+
+/// The planes' coefficients in the screen's slots, `c_len + 3 g_len` a plane (its constant
+/// term's, then each gradient component's, zero where it has fewer): the `l`-th plane's are
+/// `[l * slots, (l + 1) * slots)`. A product with such a zero adds zero to both sums of
+/// [`Screen::inside`] (its rows are finite), so every sum is the one without that slot.
+pub(super) fn screen_slots(planes: &[Plane], c_len: usize, g_len: usize) -> Vec<f64> {
+    let slots = c_len + 3 * g_len;
+    let mut out = vec![0.0; planes.len() * slots];
+    for (l, p) in planes.iter().enumerate() {
+        let w = &mut out[l * slots..(l + 1) * slots];
+        let c = p.c.coeffs();
+        w[..c.len()].copy_from_slice(c);
+        for (k, q) in p.g.iter().enumerate() {
+            let at = c_len + k * g_len;
+            w[at..at + q.coeffs().len()].copy_from_slice(q.coeffs());
+        }
+    }
+    out
 }
 
 /// A vertex of P(η): three planes and its path x(η) = num(η)/det(η) (Cramer's rule).
@@ -367,8 +380,7 @@ impl Vertex {
         }
         Some(Screen {
             by_degree,
-            c_len,
-            g_len,
+            slots,
             det_sign,
         })
     }

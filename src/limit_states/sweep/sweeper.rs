@@ -28,6 +28,9 @@ pub(super) struct Sweeper<'a> {
     /// The most coefficients of any plane's constant term and of any gradient component
     /// (the slots of a vertex's screen), when the planes are many enough to screen.
     pub(super) screen_slots: Option<(usize, usize)>,
+    /// Where there is a screen, every plane's coefficients in its slots
+    /// ([`super::geometry::screen_slots`]).
+    pub(super) screen_coeffs: Vec<f64>,
     pub(super) settings: &'a Settings,
     /// The vertices alive, each with its death (the parameter and the plane that crosses
     /// it), `None` when it survives to the top.
@@ -71,6 +74,9 @@ impl<'a> Sweeper<'a> {
         let work = slots * (slots.saturating_sub(3)).max(1);
         let screen_slots = (planes.len() >= SCREEN_MIN_PLANES && work <= SCREEN_MAX_WORK)
             .then_some((c_len, g_len));
+        let screen_coeffs = screen_slots.map_or_else(Vec::new, |(c, g)| {
+            super::geometry::screen_slots(&planes, c, g)
+        });
         Sweeper {
             arch,
             mu,
@@ -78,6 +84,7 @@ impl<'a> Sweeper<'a> {
             top,
             planes,
             screen_slots,
+            screen_coeffs,
             settings,
             alive: Vec::new(),
             states: Vec::new(),
