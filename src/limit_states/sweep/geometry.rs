@@ -36,15 +36,21 @@ pub(super) struct Plane {
 
 impl Plane {
     /// φ at (x, η) (of a scaled row, η φ / η: tolerances stay those of φ).
+    #[inline]
     pub(super) fn value(&self, x: &Reactions, eta: f64) -> f64 {
-        let v = self.g[0].eval(eta) * x[0]
-            + self.g[1].eval(eta) * x[1]
-            + self.g[2].eval(eta) * x[2]
-            + self.c.eval(eta);
-        if self.scaled {
-            v / eta
-        } else {
-            v
+        self.at(eta).value(x)
+    }
+    /// The plane at η, for its values at many x ([`PlaneAt::value`]).
+    #[inline]
+    pub(super) fn at(&self, eta: f64) -> PlaneAt {
+        PlaneAt {
+            g: [
+                self.g[0].eval(eta),
+                self.g[1].eval(eta),
+                self.g[2].eval(eta),
+            ],
+            c: self.c.eval(eta),
+            scaled: self.scaled.then_some(eta),
         }
     }
     /// φ at η as an affine function of x (of a scaled row, divided by η).
@@ -301,6 +307,27 @@ pub(super) fn screen_slots(planes: &[Plane], c_len: usize, g_len: usize) -> Vec<
         }
     }
     out
+}
+
+/// A plane's polynomials evaluated at one η ([`Plane::at`]).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct PlaneAt {
+    g: [f64; 3],
+    c: f64,
+    /// η, where the row is η φ.
+    scaled: Option<f64>,
+}
+
+impl PlaneAt {
+    /// φ at x ([`Plane::value`]).
+    #[inline]
+    pub(super) fn value(&self, x: &Reactions) -> f64 {
+        let v = self.g[0] * x[0] + self.g[1] * x[1] + self.g[2] * x[2] + self.c;
+        match self.scaled {
+            Some(eta) => v / eta,
+            None => v,
+        }
+    }
 }
 
 /// A vertex of P(η): three planes and its path x(η) = num(η)/det(η) (Cramer's rule).

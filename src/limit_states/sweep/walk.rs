@@ -2,7 +2,7 @@
 //! inside it (the start of a sweep whose least state is degenerate, or whose P(t) has an
 //! interior at the start).
 
-use super::geometry::Vertex;
+use super::geometry::{PlaneAt, Vertex};
 use super::sweeper::Sweeper;
 use crate::statics::Reactions;
 
@@ -31,7 +31,8 @@ impl Sweeper<'_> {
     /// dependent, so that P(η_s) is not a point) and the first-order start does not apply.
     fn vertices_by_walk(&self, eta: f64, start: Reactions) -> Vec<[usize; 3]> {
         let g: Vec<[f64; 3]> = self.planes.iter().map(|p| p.affine(eta).g).collect();
-        let phi = |x: &Reactions, i: usize| self.planes[i].value(x, eta);
+        let at: Vec<PlaneAt> = self.planes.iter().map(|p| p.at(eta)).collect();
+        let phi = |x: &Reactions, i: usize| at[i].value(x);
         let dot = |a: &[f64; 3], b: &[f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
         let cross = |a: &[f64; 3], b: &[f64; 3]| {
             [
@@ -117,15 +118,13 @@ impl Sweeper<'_> {
     /// Starts from every vertex of P(t), found by a walk on its vertex graph from `centre`
     /// (a point inside P(t)).
     pub(super) fn start_by_walk(&mut self, t: f64, centre: Reactions) {
+        let at: Vec<PlaneAt> = self.planes.iter().map(|p| p.at(t)).collect();
         for tri in self.vertices_by_walk(t, centre) {
             let v = Vertex::new(&self.planes, tri);
             let x = v.at(t);
             let tol = self.tol(&x);
-            let feasible = self
-                .planes
-                .iter()
-                .enumerate()
-                .all(|(i, p)| tri.contains(&i) || p.value(&x, t) <= tol);
+            let feasible =
+                (at.iter().enumerate()).all(|(i, p)| tri.contains(&i) || p.value(&x) <= tol);
             if !feasible {
                 continue;
             }
