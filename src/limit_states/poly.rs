@@ -143,7 +143,7 @@ impl Poly {
             } else {
                 acc.n = acc.n.max(n);
                 for (s, &p) in acc.c[..acc.n].iter_mut().zip(&prod) {
-                    *s = *s + p;
+                    *s += p;
                 }
             }
         }
