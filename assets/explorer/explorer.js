@@ -116,10 +116,16 @@ const IN_FLIGHT = 3;
 let inFlight = 0;
 const waiting = new Set();
 async function turn(signal) {
+  signal.throwIfAborted(); // superseded before its turn was asked for
   while (inFlight >= IN_FLIGHT) {
     await new Promise((wake) => {
-      waiting.add(wake);
-      signal.addEventListener("abort", wake, { once: true });
+      const done = () => {
+        signal.removeEventListener("abort", done);
+        waiting.delete(done);
+        wake();
+      };
+      waiting.add(done);
+      signal.addEventListener("abort", done);
     });
     signal.throwIfAborted();
   }
