@@ -212,26 +212,16 @@ impl Poly {
             return (0.0, 0.0);
         }
         let c = self.unit_scaled(lo, hi, n - 1);
-        let mut row = [0.0; MAX_COEFFS];
-        row[0] = 1.0;
-        let mut lo_b = f64::INFINITY;
-        let mut hi_b = f64::NEG_INFINITY;
-        for i in 0..n {
-            if i > 0 {
-                for k in (1..=i).rev() {
-                    row[k] += row[k - 1];
-                }
-            }
-            let b: f64 = (0..=i).map(|k| row[k] * c[k]).sum();
-            lo_b = lo_b.min(b);
-            hi_b = hi_b.max(b);
-        }
-        (lo_b, hi_b)
+        let mut row = PASCAL_START;
+        (0..n).fold((f64::INFINITY, f64::NEG_INFINITY), |(lo_b, hi_b), i| {
+            let b = bernstein_next(&mut row, &c, i);
+            (lo_b.min(b), hi_b.max(b))
+        })
     }
 
     /// Whether every Bernstein coefficient of the polynomial over [lo, hi] has the strict
-    /// sign of `sign` (±1; anything else: no), so that the polynomial has that sign on the whole interval: the
-    /// decision of `sign`·[`Poly::bernstein_bounds`] (the least > 0), taken with less work.
+    /// sign of `sign` (±1; anything else: no), so that the polynomial has that sign on the
+    /// whole interval: the decision of `sign`·[`Poly::bernstein_bounds`] (the least > 0), taken with less work.
     /// In t ∈ [0, 1] the Bernstein coefficients are b_i = Σ_{k≤i} C(i,k) a_k with b_0 = a_0,
     /// and a_k has the sign of the k-th coefficient in η − lo (times w^k / C(deg, k), w > 0).
     /// Where sign·a_0 > 0 and no sign·a_k is negative, every product has a_k's sign and
@@ -252,20 +242,11 @@ impl Poly {
             return true;
         }
         unit_scale(&mut c, w, n - 1);
-        let mut row = [0.0; MAX_COEFFS];
-        row[0] = 1.0;
-        for i in 0..n {
-            if i > 0 {
-                for k in (1..=i).rev() {
-                    row[k] += row[k - 1];
-                }
-            }
-            let b: f64 = (0..=i).map(|k| row[k] * c[k]).sum();
-            if sign * b <= 0.0 {
-                return false;
-            }
-        }
-        true
+        let mut row = PASCAL_START;
+        (0..n).all(|i| {
+            let b = sign * bernstein_next(&mut row, &c, i);
+            b > 0.0 || b.is_nan()
+        })
     }
 
     /// The Bernstein coefficients of degree `deg` (at least the polynomial's degree, less
@@ -273,23 +254,17 @@ impl Poly {
     /// the coefficients.
     pub fn bernstein(&self, lo: f64, hi: f64, deg: usize) -> [f64; MAX_COEFFS] {
         let c = self.unit_scaled(lo, hi, deg);
-        let mut row = [0.0; MAX_COEFFS];
-        row[0] = 1.0;
+        let mut row = PASCAL_START;
         let mut out = [0.0; MAX_COEFFS];
         for (i, o) in out[..=deg].iter_mut().enumerate() {
-            if i > 0 {
-                for k in (1..=i).rev() {
-                    row[k] += row[k - 1];
-                }
-            }
-            *o = (0..=i).map(|k| row[k] * c[k]).sum();
+            *o = bernstein_next(&mut row, &c, i);
         }
         out
     }
 
     /// The coefficients a_k / C(deg, k) in t ∈ [0, 1], η = lo + (hi − lo) t, from which the
     /// Bernstein coefficients of degree `deg` over [lo, hi] are b_i = Σ_{k≤i} C(i,k) a_k /
-    /// C(deg,k) (the rows C(i, ·) of Pascal's triangle built by addition by the callers).
+    /// C(deg,k) ([`bernstein_next`]).
     #[inline]
     fn unit_scaled(&self, lo: f64, hi: f64, deg: usize) -> [f64; MAX_COEFFS] {
         let mut c = self.taylor_at(lo, deg);
@@ -334,6 +309,25 @@ impl Poly {
         Some(real_roots(&p, lo, hi))
     }
 }
+
+/// Pascal's triangle for the Bernstein coefficients b_i = Σ_{k≤i} C(i,k) c_k of the
+/// coefficients c of [`Poly::unit_scaled`]: `row` holds C(i − 1, ·) (start: [`PASCAL_START`])
+/// and becomes C(i, ·), and b_i is returned. Called for i = 0, 1, … in turn: one
+/// implementation for the coefficients, their bounds and their sign.
+#[inline]
+fn bernstein_next(row: &mut [f64; MAX_COEFFS], c: &[f64; MAX_COEFFS], i: usize) -> f64 {
+    for k in (1..=i).rev() {
+        row[k] += row[k - 1];
+    }
+    (0..=i).map(|k| row[k] * c[k]).sum()
+}
+
+/// The row C(0, ·) of [`bernstein_next`].
+const PASCAL_START: [f64; MAX_COEFFS] = {
+    let mut r = [0.0; MAX_COEFFS];
+    r[0] = 1.0;
+    r
+};
 
 /// Coefficients in s = η − lo to those of [`Poly::unit_scaled`]: times w^k (t = s / w),
 /// divided by C(deg, k).

@@ -268,19 +268,15 @@ pub(super) struct Screen {
 const SCREEN_REL: f64 = 1e-12;
 
 impl Screen {
-    /// Slots a plane fills (its coefficients for [`Screen::inside`]).
-    pub(super) fn slots(&self) -> usize {
-        self.slots
-    }
-
     /// Whether the plane stays strictly inside along the path over the whole interval:
     /// every Bernstein coefficient of φ_l·det has det's opposite sign (beyond rounding), so
-    /// φ_l < 0 there and the plane crosses nowhere in it. `slots`: the plane's coefficients
-    /// in the screen's slots ([`screen_slots`]).
-    pub(super) fn inside(&self, slots: &[f64]) -> bool {
-        self.by_degree.chunks_exact(slots.len()).all(|row| {
+    /// φ_l < 0 there and the plane crosses nowhere in it: plane `l`, its coefficients in
+    /// `layout` ([`slot_layout`]).
+    pub(super) fn inside(&self, layout: &[f64], l: usize) -> bool {
+        let coeffs = &layout[l * self.slots..(l + 1) * self.slots];
+        self.by_degree.chunks_exact(self.slots).all(|row| {
             let (mut b, mut size) = (0.0, 0.0);
-            for (x, y) in row.iter().zip(slots) {
+            for (x, y) in row.iter().zip(coeffs) {
                 let t = x * y;
                 b += t;
                 size += t.abs();
@@ -294,7 +290,7 @@ impl Screen {
 /// term's, then each gradient component's, zero where it has fewer): the `l`-th plane's are
 /// `[l * slots, (l + 1) * slots)`. A product with such a zero adds zero to both sums of
 /// [`Screen::inside`] (its rows are finite), so every sum is the one without that slot.
-pub(super) fn screen_slots(planes: &[Plane], c_len: usize, g_len: usize) -> Vec<f64> {
+pub(super) fn slot_layout(planes: &[Plane], c_len: usize, g_len: usize) -> Vec<f64> {
     let slots = c_len + 3 * g_len;
     let mut out = vec![0.0; planes.len() * slots];
     for (l, p) in planes.iter().enumerate() {

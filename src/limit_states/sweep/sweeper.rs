@@ -29,7 +29,7 @@ pub(super) struct Sweeper<'a> {
     /// (the slots of a vertex's screen), when the planes are many enough to screen.
     pub(super) screen_slots: Option<(usize, usize)>,
     /// Where there is a screen, every plane's coefficients in its slots
-    /// ([`super::geometry::screen_slots`]).
+    /// ([`super::geometry::slot_layout`]).
     pub(super) screen_coeffs: Vec<f64>,
     pub(super) settings: &'a Settings,
     /// The vertices alive, each with its death (the parameter and the plane that crosses
@@ -75,7 +75,7 @@ impl<'a> Sweeper<'a> {
         let screen_slots = (planes.len() >= SCREEN_MIN_PLANES && work <= SCREEN_MAX_WORK)
             .then_some((c_len, g_len));
         let screen_coeffs = screen_slots.map_or_else(Vec::new, |(c, g)| {
-            super::geometry::screen_slots(&planes, c, g)
+            super::geometry::slot_layout(&planes, c, g)
         });
         Sweeper {
             arch,

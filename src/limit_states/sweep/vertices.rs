@@ -81,9 +81,8 @@ impl Sweeper<'_> {
         };
         let mut screen = build(hi);
         for (l, plane) in self.planes.iter().enumerate() {
-            let slots = |n: usize| &self.screen_coeffs[l * n..(l + 1) * n];
             if v.planes.contains(&l)
-                || (screen.as_ref()).is_some_and(|s| s.inside(slots(s.slots())))
+                || (screen.as_ref()).is_some_and(|s| s.inside(&self.screen_coeffs, l))
             {
                 continue;
             }
