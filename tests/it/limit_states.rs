@@ -940,11 +940,31 @@ fn search_budget_is_said_not_hidden() {
     ]);
     assert_eq!(code, 0);
     assert_eq!(v["unique"], true);
+    // the load's sweep in λ has its own budget, twice the joints (its vertices move along
+    // lines): 400 voussoirs under a point load are searched to the end
+    let (v, code) = crate::cli::json_of(&[
+        "load",
+        "--alpha",
+        "0",
+        "--blocks",
+        "400",
+        "--eta",
+        "0.3",
+        "--mu",
+        "0.6",
+        "--point-load-deg",
+        "40",
+    ]);
+    assert_eq!(code, 0, "{v}");
+    assert_eq!(v["search"]["method"], "sweep");
+    assert!(v["unique"].is_boolean() && v["lambda"].is_f64(), "{v}");
 }
 
 /// A search that reaches no decision says which step stopped it, typed: the sweep over more
 /// joints than its budget is `Undecided::Budget` (for thickness and load alike), its text
-/// naming the setting; a smaller budget on the same arch is the same failure.
+/// naming the setting (the sweep in η `sweep_max_joints`, the sweep in λ
+/// `load_sweep_max_joints`); a smaller budget on the same arch is the same failure, and
+/// each budget bounds its own sweep only.
 #[test]
 fn undecided_search_names_its_step() {
     use arch_enum::multiplier::{survey as load_survey, LoadOutcome};
@@ -964,15 +984,28 @@ fn undecided_search_names_its_step() {
     let load = arch_enum::load::LiveLoad::Horizontal {
         towards_right: true,
     };
+    // the thickness sweep's budget does not bound the load's sweep
+    assert!(matches!(
+        load_survey(&arch, 0.3, 0.8, &load, &settings).unwrap(),
+        Ok(LoadOutcome::Limits(_))
+    ));
+    let settings = Settings {
+        load_sweep_max_joints: 20,
+        ..Settings::default()
+    };
     match load_survey(&arch, 0.3, 0.8, &load, &settings).unwrap() {
-        Err(Undecided::Budget(t)) => assert!(t.contains("sweep_max_joints"), "{t}"),
+        Err(Undecided::Budget(t)) => {
+            assert!(t.contains("settings.load_sweep_max_joints = 20"), "{t}")
+        }
         Err(other) => panic!("expected a budget failure, got {other:?}"),
         Ok(o) => panic!(
             "expected a budget failure, got an answer ({})",
             matches!(o, LoadOutcome::Limits(_))
         ),
     }
-    // with the default budget the same arch is searched to the end
+    // nor the load's budget the thickness sweep; with the default budgets the same arch
+    // is searched to the end
+    assert!(search(&arch, 0.5, &settings).unwrap().is_ok());
     assert!(search(&arch, 0.5, &Settings::default()).unwrap().is_ok());
 }
 
@@ -1072,4 +1105,51 @@ fn filled_arches_match_brute_force() {
     );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     assert!(compared > count / 2);
+}
+
+/// With the true centroid a point of P(η) can leave P at a larger η (the band of w at a
+/// fixed (h, v) is not monotone in η: a pair's width gains (η²/12)(s_k − s_j), which shrinks
+/// it where N is small): why the ridge, whose height is the least η closing the band, is
+/// walked for the centreline weight only (docs/design/limit-states-on-boundary.md). The
+/// centreline's band only widens where N ≥ 0.
+#[test]
+fn true_centroid_band_is_not_monotone_in_eta() {
+    use arch_enum::statics::actions;
+    use arch_enum::{ContactKind, JointLayout};
+    let x = [
+        0.272_886_908_730_373_1,
+        2.131_802_739_906_716_8,
+        -0.371_131_027_404_948_1,
+    ];
+    let mu = 0.988_686_369_496_438_5;
+    let worst = |weight, eta: f64| {
+        let arch = Arch::new(-0.325_326_482_653_878_4, 2.539_928_795_571_390_7, weight)
+            .unwrap()
+            .with_blocks(3)
+            .unwrap();
+        let JointLayout::Discrete(joints) = arch.layout() else {
+            unreachable!("voussoirs")
+        };
+        joints
+            .iter()
+            .flat_map(|&b| {
+                let a = actions(&arch, eta, b);
+                ContactKind::ALL.map(|k| a.activation(k, 0, eta, mu).at(&x))
+            })
+            .fold(f64::NEG_INFINITY, f64::max)
+    };
+    let (thin, thick) = (0.966_554_911_120_090_7, 1.2);
+    // admissible at the thinner ring (an intrados row active to rounding) ...
+    assert!(worst(WeightModel::Centroid, thin) <= 1e-12);
+    // ... not at the thicker one
+    assert!(worst(WeightModel::Centroid, thick) > 0.02);
+    // with the centreline weight the worst row at this x only falls as η grows (N > 0 at
+    // every joint here, and each hinge row is M ∓ η N / 2)
+    let mut last = worst(WeightModel::Centreline, thin);
+    for k in 1..=20 {
+        let eta = thin + (2.0 - thin) * f64::from(k) / 20.0;
+        let now = worst(WeightModel::Centreline, eta);
+        assert!(now <= last, "{eta}: {now} > {last}");
+        last = now;
+    }
 }

@@ -58,7 +58,7 @@ pub fn sweep(arch: &Arch, mu: f64, eta_s: f64, x_s: Reactions, settings: &Settin
     let JointLayout::Discrete(joints) = arch.layout() else {
         return Sweep::failed(not_discrete());
     };
-    if let Some(f) = too_many(joints.len(), settings) {
+    if let Some(f) = too_many(joints.len(), settings.sweep_max_joints, "sweep_max_joints") {
         return Sweep::failed(f);
     }
     let planes = planes(arch, joints, mu);
@@ -77,12 +77,12 @@ fn not_discrete() -> Undecided {
 
 /// Why the sweep is not run on `joints` joints, if it is not: its work grows faster than
 /// the square of the number of joints (every vertex born is tested against every plane),
-/// so beyond `settings.sweep_max_joints` it is not attempted.
-fn too_many(joints: usize, settings: &Settings) -> Option<Undecided> {
-    (joints > settings.sweep_max_joints).then(|| {
+/// so beyond its budget `most` (the setting `name`: `sweep_max_joints` in η,
+/// `load_sweep_max_joints` in λ) it is not attempted.
+fn too_many(joints: usize, most: usize, name: &str) -> Option<Undecided> {
+    (joints > most).then(|| {
         Undecided::Budget(format!(
-            "the complete search over {joints} joints is beyond this version's budget (settings.sweep_max_joints = {}): the limit states were not searched",
-            settings.sweep_max_joints
+            "the complete search over {joints} joints is beyond this version's budget (settings.{name} = {most}): the limit states were not searched"
         ))
     })
 }
@@ -131,7 +131,8 @@ pub fn sweep_load_with_top(
     let JointLayout::Discrete(joints) = arch.layout() else {
         return failure(not_discrete());
     };
-    if let Some(f) = too_many(joints.len(), settings) {
+    let budget = settings.load_sweep_max_joints;
+    if let Some(f) = too_many(joints.len(), budget, "load_sweep_max_joints") {
         return failure(f);
     }
     let planes = load_planes(arch, joints, eta, mu, load);
