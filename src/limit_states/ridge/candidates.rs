@@ -1,14 +1,17 @@
 //! Every point of the ridge over ∂Q where a limit state may be: the apexes of Q (V2) and
 //! the points the walk along each sliding edge returns (V, E1, E2), once Q is known to
-//! have no three sliding lines through a vertex (G1).
+//! have no sliding lines through a vertex that could carry a mechanism without hinge rates
+//! (G1).
 
 use super::near::{verify, Bounds, EdgeView, JointTree, Verdict};
 use super::polygon::{lines, on_box, q_polygon, Line};
 use super::rows::{ev, hinge_rows, hinge_rows_of, in_band, Candidate, HingeRow, JointRows, TOL};
 use super::walk::{walk_edge, Walked};
 use crate::arch::ETA_TOP;
+use crate::contact::ContactKind;
 use crate::kinematics::column;
 use crate::undecided::Undecided;
+use std::f64::consts::{PI, TAU};
 
 /// An edge of Q shorter (ℓ₁) than this times 1 + the size of its start is not walked.
 const SHORT_EDGE_REL: f64 = 1e-12;
@@ -56,26 +59,105 @@ fn candidates_walked(
 /// G1 counts a sliding line through a vertex q of Q when |a · q + b| is below this times
 /// |a|₁ (1 + |h| + |v|): about 100 times the candidates' own activity tolerance (`adm_tol`,
 /// 10⁻¹² of the row's magnitude (1 + |h| + |v| + |w|) max(min(μ, 1), 10⁻³); the two scales
-/// differ by a factor of order one), so that a line G1 lets pass is inactive at q in the
-/// check. (It was the walk's 10⁻⁹, which the lines of neighbouring joints of arches of some
-/// thousands of voussoirs come within without meeting.)
+/// differ by a factor of order one). (It was the walk's 10⁻⁹, which the lines of
+/// neighbouring joints of arches of some thousands of voussoirs come within without
+/// meeting.)
 const G1_TOL: f64 = 1e-10;
 
-/// Whether the sliding line passes through q (to G1's tolerance).
-fn through(l: &Line, q: [f64; 2]) -> bool {
-    let na = l.a[0].abs() + l.a[1].abs();
-    l.slide.is_some() && (l.a[0] * q[0] + l.a[1] * q[1] + l.b).abs() <= G1_TOL * na * scale(q)
+/// Sliding columns whose widest angular gap is within this (radians) of π count as able to
+/// balance with non-negative rates ([`may_slide_purely`]): far above rounding, far below
+/// the angle between neighbouring joints of any arch walked (10⁻⁴ at 10⁴ voussoirs).
+const PURE_SLIDING_GAP: f64 = 1e-9;
+
+/// A sliding line through a vertex of Q at an angle below this (radians) to one of the
+/// vertex's two edges counts as running along that edge (G1's "no two lines coincide").
+const ALONG_EDGE: f64 = 1e-6;
+
+/// The sliding lines among `lines` that pass through q (to G1's tolerance).
+fn through<'a>(lines: impl Iterator<Item = &'a Line>, q: [f64; 2]) -> Vec<&'a Line> {
+    lines
+        .filter(|l| {
+            let na = l.a[0].abs() + l.a[1].abs();
+            l.slide.is_some()
+                && (l.a[0] * q[0] + l.a[1] * q[1] + l.b).abs() <= G1_TOL * na * scale(q)
+        })
+        .collect()
 }
 
-/// G1: no third sliding line through a vertex of Q (a pure-sliding mechanism may then
-/// hold over an interval of η, and the pair of lines would not define the vertex).
-pub(super) fn no_third_line(lines: &[Line], poly: &[QVertex]) -> Result<(), Undecided> {
-    for &(q, _) in poly {
-        if on_box(q) {
-            continue;
+/// Whether sliding rows may carry a mechanism without hinge rates (the corollary's only
+/// mechanisms off the ridge): their columns ±(cos β, sin β, 0) balance with non-negative
+/// rates, not all zero, exactly when no open half-plane holds them all, i.e. when the
+/// widest angular gap between them is at most π (within [`PURE_SLIDING_GAP`]); or a joint
+/// with both senses among them (its apex beside the vertex: left to the sweep).
+fn may_slide_purely(js: &[JointRows], rows: &[(usize, ContactKind)]) -> bool {
+    let mut angles = Vec::with_capacity(rows.len());
+    for (k, &(j, kind)) in rows.iter().enumerate() {
+        if rows[..k].iter().any(|&(i, _)| i == j) {
+            return true;
         }
-        let count = lines.iter().filter(|l| through(l, q)).count();
-        if count > 2 {
+        let turn = if kind == ContactKind::SlideMinus {
+            PI
+        } else {
+            0.0
+        };
+        angles.push((js[j].beta + turn).rem_euclid(TAU));
+    }
+    angles.sort_by(f64::total_cmp);
+    let (first, last) = (angles[0], angles[angles.len() - 1]);
+    let widest = angles
+        .windows(2)
+        .map(|w| w[1] - w[0])
+        .fold(TAU - (last - first), f64::max);
+    widest <= PI + PURE_SLIDING_GAP
+}
+
+/// Whether two lines' directions differ by less than [`ALONG_EDGE`].
+fn parallel(l: &Line, e: &Line) -> bool {
+    let cross = l.a[0] * e.a[1] - l.a[1] * e.a[0];
+    cross.abs() <= ALONG_EDGE * l.a[0].hypot(l.a[1]) * e.a[0].hypot(e.a[1])
+}
+
+/// G1 at vertex `v` of Q among the sliding lines `among` (every line, or a chunk's): the
+/// number of lines through it where G1 fails there, else `None`. The ridge's theorem
+/// needs G1 only to exclude mechanisms without hinge rates, which need sliding lines
+/// meeting at one point of Q with columns that balance (a pure-sliding mechanism may then
+/// hold over an interval of η, off the ridge), and lines that coincide along an edge (two
+/// sliding rows active along a piece). With `js` (the search) more than two lines through
+/// a vertex pass where their columns cannot balance ([`may_slide_purely`]) and none runs
+/// along one of the vertex's edges ([`ALONG_EDGE`]): every limit state there has hinge
+/// rates, so it is the ridge's point at the vertex, which the check decides on every
+/// contact active there, the extra lines included. Without `js` (`trace`, whose verifier
+/// proves every other sliding row strictly inactive at each vertex) any third line fails.
+fn breaks_g1<'a>(
+    (lines, poly): (&[Line], &[QVertex]),
+    v: usize,
+    among: impl Iterator<Item = &'a Line>,
+    js: Option<&[JointRows]>,
+) -> Option<usize> {
+    let (q, leaving) = poly[v];
+    let arriving = poly[(v + poly.len() - 1) % poly.len()].1;
+    let rows = through(among, q);
+    if rows.len() <= 2 || on_box(q) {
+        return None;
+    }
+    let Some(js) = js else {
+        return Some(rows.len());
+    };
+    let edges = [&lines[arriving], &lines[leaving]];
+    let along = |l: &&Line| edges.iter().any(|e| e.slide != l.slide && parallel(l, e));
+    let slides: Vec<(usize, ContactKind)> = rows.iter().filter_map(|l| l.slide).collect();
+    (rows.iter().any(along) || may_slide_purely(js, &slides)).then_some(rows.len())
+}
+
+/// G1 at every vertex of Q off the box ([`breaks_g1`] among every line).
+pub(super) fn no_third_line(
+    lines: &[Line],
+    poly: &[QVertex],
+    js: Option<&[JointRows]>,
+) -> Result<(), Undecided> {
+    for v in 0..poly.len() {
+        if let Some(count) = breaks_g1((lines, poly), v, lines.iter(), js) {
+            let q = poly[v].0;
             return Err(Undecided::NotCovered(format!(
                 "{count} sliding lines meet at the vertex ({}, {}) of Q",
                 q[0], q[1]
@@ -193,18 +275,17 @@ fn along_edges(
             match walk_chunk(js, geometry, (at, whole), (mu, &tree), &guess, &mut in_walk) {
                 Ok(w) => w,
                 Err(e) => {
-                    no_third_line(lines, poly)?;
+                    no_third_line(lines, poly, Some(js))?;
                     return Err(e);
                 }
             };
         for &v in walked.vertices.iter().flatten() {
-            let q = poly[v].0;
             let lines_of = walked.subset.iter().flat_map(|&j| [2 * j, 2 * j + 1]);
+            let among = lines_of.map(|l| &lines[l]);
             if !std::mem::replace(&mut tested[v], true)
-                && !on_box(q)
-                && lines_of.filter(|&l| through(&lines[l], q)).count() > 2
+                && breaks_g1((lines, poly), v, among, Some(js)).is_some()
             {
-                no_third_line(lines, poly)?;
+                no_third_line(lines, poly, Some(js))?;
             }
         }
         for (_, p0, d, wk) in &walked.walks {
@@ -224,13 +305,10 @@ fn along_edges(
         subsets.push(walked.subset);
     }
     // vertices of Q on no walked edge (between sides of the box or short edges)
-    let untested_third = |v: usize| {
-        !tested[v]
-            && !on_box(poly[v].0)
-            && lines.iter().filter(|l| through(l, poly[v].0)).count() > 2
-    };
+    let untested_third =
+        |v: usize| !tested[v] && breaks_g1((lines, poly), v, lines.iter(), Some(js)).is_some();
     if (0..poly.len()).any(untested_third) {
-        no_third_line(lines, poly)?;
+        no_third_line(lines, poly, Some(js))?;
     }
     Ok(subsets)
 }
@@ -396,6 +474,41 @@ fn walk_from(
 mod tests {
     use super::*;
     use crate::arch::{Arch, JointLayout, WeightModel};
+
+    /// Sliding columns balance with non-negative rates exactly when no open half-plane
+    /// holds them all (or one joint slides both ways); neighbours of one sense never do.
+    #[test]
+    fn pure_sliding_needs_columns_around_the_origin() {
+        use ContactKind::{SlideMinus as M, SlidePlus as P};
+        let js: Vec<JointRows> = [
+            0.0,
+            0.1,
+            0.2,
+            2.0 * PI / 3.0,
+            4.0 * PI / 3.0,
+            PI / 2.0 + 0.05,
+        ]
+        .iter()
+        .map(|&beta| JointRows {
+            beta,
+            n: [0.0; 3],
+            t: [0.0; 3],
+            m: [0.0; 3],
+        })
+        .collect();
+        let slides = |rows: &[(usize, ContactKind)]| may_slide_purely(&js, rows);
+        // three at 120°: around the origin
+        assert!(slides(&[(0, P), (3, P), (4, P)]));
+        // three neighbours of one sense, or of both senses spread over less than π
+        assert!(!slides(&[(0, P), (1, P), (2, P)]));
+        assert!(!slides(&[(0, M), (1, M), (2, M)]));
+        // 0 and 0.1 + π are nearly opposite (widest gap π + 0.1): not alone ...
+        assert!(!slides(&[(0, P), (1, M), (2, M)]));
+        // ... but with a third between them on the short side (gaps π/2 + 0.05 twice, π − 0.1)
+        assert!(slides(&[(0, P), (1, M), (5, P)]));
+        // both senses of one joint: its apex beside the vertex, left to the sweep
+        assert!(slides(&[(0, P), (0, M), (1, P)]));
+    }
 
     /// The chunked walk finds the same candidates as the whole one, to the bit, and the
     /// joints it leaves out of a candidate's subset are clearly away from it: on symmetric

@@ -17,7 +17,8 @@
 //! (`mechanism::find`).
 //!
 //! Every event is a closed form of degree ≤ 2. What the walk cannot decide it hands back
-//! as an `Err` (the caller then sweeps): three sliding lines through one vertex of Q,
+//! as an `Err` (the caller then sweeps): three sliding lines through one vertex of Q whose
+//! columns could balance without hinge rates, or one running along an edge there (G1),
 //! families of limit states (a quadratic that vanishes identically), a walk that does not
 //! reach the end of its edge, a kinematic LP the back end does not decide.
 //!

@@ -62,7 +62,7 @@ pub fn trace(arch: &Arch, mu: f64) -> Result<Vec<TracedEdge>, Undecided> {
     {
         return not("Q is unbounded");
     }
-    no_third_line(&lines, &poly)?;
+    no_third_line(&lines, &poly, None)?;
     let m = poly.len();
     let contact = |j: usize, kind: ContactKind| Contact {
         beta: js[j].beta,
