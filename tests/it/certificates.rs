@@ -1038,6 +1038,45 @@ fn ridge_evidence_proves_the_list_complete_on_fine_arches() {
     }
 }
 
+/// More than two sliding lines through a vertex of Q (three joints 1.1·10⁻⁴ apart, whose
+/// lines pass 3–9·10⁻¹¹ from the vertex, as neighbouring joints of 10⁴ voussoirs do): the
+/// search goes on where their columns cannot balance without hinge rates, `certify` writes
+/// the ridge's evidence, and `verify` proves every extra line strictly inactive at the
+/// vertex and the list complete (the certificate carried the sweep's evidence, which it
+/// does not prove complete).
+#[test]
+fn ridge_evidence_is_proved_with_three_lines_near_a_vertex() {
+    let gap = 1.1416e-4;
+    let joints = [
+        1.19,
+        1.38,
+        1.57,
+        1.76,
+        1.95,
+        2.096 - gap,
+        2.096,
+        2.096 + gap,
+    ];
+    let arch = Arch::symmetric(-1.0, WeightModel::Centreline)
+        .unwrap()
+        .with_joints(&joints)
+        .unwrap();
+    // (η* ≈ 0.0021: its gap is proved to 10⁻¹¹, not 10⁻¹²)
+    let c = certify(&arch, 0.6, 1e-10, &Settings::default()).unwrap();
+    assert!(
+        c.search.as_ref().is_some_and(|s| s.ridge.is_some()),
+        "no ridge evidence"
+    );
+    let r = verify(&c).unwrap();
+    let not = r.checks.iter().find(|l| l.starts_with("not proved"));
+    assert!(
+        r.checks
+            .iter()
+            .any(|l| l.starts_with("proved: the listed limit states are every limit state")),
+        "{not:?}"
+    );
+}
+
 /// At μ = ∞ the search needs no sweep: the safe state is proved strictly inside P(η_hi),
 /// which rules out every limit state above (virtual work). A safe state moved onto the
 /// boundary (η_hi lowered to η_s) loses that proof.

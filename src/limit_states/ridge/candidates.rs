@@ -1,7 +1,7 @@
 //! Every point of the ridge over ∂Q where a limit state may be: the apexes of Q (V2) and
 //! the points the walk along each sliding edge returns (V, E1, E2), once Q is known to
-//! have no sliding lines through a vertex that could carry a mechanism without hinge rates
-//! (G1).
+//! satisfy G1 where the ridge needs it: no sliding lines through a vertex that could carry
+//! a mechanism without hinge rates, none along an edge there, none beside a short edge.
 
 use super::near::{verify, Bounds, EdgeView, JointTree, Verdict};
 use super::polygon::{lines, on_box, q_polygon, Line};
@@ -59,18 +59,20 @@ fn candidates_walked(
 /// G1 counts a sliding line through a vertex q of Q when |a · q + b| is below this times
 /// |a|₁ (1 + |h| + |v|): about 100 times the candidates' own activity tolerance (`adm_tol`,
 /// 10⁻¹² of the row's magnitude (1 + |h| + |v| + |w|) max(min(μ, 1), 10⁻³); the two scales
-/// differ by a factor of order one). (It was the walk's 10⁻⁹, which the lines of
-/// neighbouring joints of arches of some thousands of voussoirs come within without
-/// meeting.)
+/// differ by a factor of order one), so that it counts every line the check may take as
+/// active at q. (It was the walk's 10⁻⁹.)
 const G1_TOL: f64 = 1e-10;
 
 /// Sliding columns whose widest angular gap is within this (radians) of π count as able to
-/// balance with non-negative rates ([`may_slide_purely`]): far above rounding, far below
-/// the angle between neighbouring joints of any arch walked (10⁻⁴ at 10⁴ voussoirs).
+/// balance with non-negative rates ([`may_slide_purely`]): rates that balance them to
+/// about this (relative), above the kinematic LP's rank and rate tolerances (10⁻¹⁰), count
+/// as a mechanism.
 const PURE_SLIDING_GAP: f64 = 1e-9;
 
 /// A sliding line through a vertex of Q at an angle below this (radians) to one of the
-/// vertex's two edges counts as running along that edge (G1's "no two lines coincide").
+/// vertex's two edges counts as running along that edge (G1's "no two lines coincide"):
+/// it stays within the check's activity tolerance (10⁻¹²) of the edge for a stretch of at
+/// least 10⁻⁶ of the arch's scale.
 const ALONG_EDGE: f64 = 1e-6;
 
 /// The sliding lines among `lines` that pass through q (to G1's tolerance).
@@ -87,21 +89,18 @@ fn through<'a>(lines: impl Iterator<Item = &'a Line>, q: [f64; 2]) -> Vec<&'a Li
 /// Whether sliding rows may carry a mechanism without hinge rates (the corollary's only
 /// mechanisms off the ridge): their columns ±(cos β, sin β, 0) balance with non-negative
 /// rates, not all zero, exactly when no open half-plane holds them all, i.e. when the
-/// widest angular gap between them is at most π (within [`PURE_SLIDING_GAP`]); or a joint
-/// with both senses among them (its apex beside the vertex: left to the sweep).
+/// widest angular gap between them is at most π (within [`PURE_SLIDING_GAP`]; both senses
+/// of one joint leave a gap of π).
 fn may_slide_purely(js: &[JointRows], rows: &[(usize, ContactKind)]) -> bool {
-    let mut angles = Vec::with_capacity(rows.len());
-    for (k, &(j, kind)) in rows.iter().enumerate() {
-        if rows[..k].iter().any(|&(i, _)| i == j) {
-            return true;
-        }
+    let angle = |&(j, kind): &(usize, ContactKind)| {
         let turn = if kind == ContactKind::SlideMinus {
             PI
         } else {
             0.0
         };
-        angles.push((js[j].beta + turn).rem_euclid(TAU));
-    }
+        (js[j].beta + turn).rem_euclid(TAU)
+    };
+    let mut angles: Vec<f64> = rows.iter().map(angle).collect();
     angles.sort_by(f64::total_cmp);
     let (first, last) = (angles[0], angles[angles.len() - 1]);
     let widest = angles
@@ -117,49 +116,60 @@ fn parallel(l: &Line, e: &Line) -> bool {
     cross.abs() <= ALONG_EDGE * l.a[0].hypot(l.a[1]) * e.a[0].hypot(e.a[1])
 }
 
-/// G1 at vertex `v` of Q among the sliding lines `among` (every line, or a chunk's): the
-/// number of lines through it where G1 fails there, else `None`. The ridge's theorem
+/// Why G1 fails at vertex `v` of Q among the sliding lines `among` (every line, or a
+/// chunk's), if it does. The ridge's theorem
 /// needs G1 only to exclude mechanisms without hinge rates, which need sliding lines
 /// meeting at one point of Q with columns that balance (a pure-sliding mechanism may then
 /// hold over an interval of η, off the ridge), and lines that coincide along an edge (two
-/// sliding rows active along a piece). With `js` (the search) more than two lines through
-/// a vertex pass where their columns cannot balance ([`may_slide_purely`]) and none runs
-/// along one of the vertex's edges ([`ALONG_EDGE`]): every limit state there has hinge
-/// rates, so it is the ridge's point at the vertex, which the check decides on every
-/// contact active there, the extra lines included. Without `js` (`trace`, whose verifier
-/// proves every other sliding row strictly inactive at each vertex) any third line fails.
+/// sliding rows active along a piece). So more than two lines through a vertex pass where
+/// their columns cannot balance ([`may_slide_purely`]) and none runs along one of the
+/// vertex's edges ([`ALONG_EDGE`]): every limit state there has hinge rates, so it is the
+/// ridge's point at the vertex, which the check decides on every contact active there, the
+/// extra lines included (`verify` proves each of them strictly inactive at the vertex, or
+/// says it cannot). Beside a sliding edge too short to walk ([`walked`]) the vertex may
+/// have no candidate of its own and the edge's points are not found: any third line fails
+/// there.
 fn breaks_g1<'a>(
     (lines, poly): (&[Line], &[QVertex]),
     v: usize,
     among: impl Iterator<Item = &'a Line>,
-    js: Option<&[JointRows]>,
-) -> Option<usize> {
+    js: &[JointRows],
+) -> Option<String> {
+    let m = poly.len();
     let (q, leaving) = poly[v];
-    let arriving = poly[(v + poly.len() - 1) % poly.len()].1;
+    let before = (v + m - 1) % m;
     let rows = through(among, q);
     if rows.len() <= 2 || on_box(q) {
         return None;
     }
-    let Some(js) = js else {
-        return Some(rows.len());
-    };
-    let edges = [&lines[arriving], &lines[leaving]];
+    let n = rows.len();
+    let short = |k: usize| lines[poly[k].1].slide.is_some() && !walked(lines, poly, k);
+    if short(v) || short(before) {
+        return Some(format!(
+            "{n} sliding lines meet beside an edge of Q too short to walk"
+        ));
+    }
+    let edges = [&lines[poly[before].1], &lines[leaving]];
     let along = |l: &&Line| edges.iter().any(|e| e.slide != l.slide && parallel(l, e));
+    if rows.iter().any(along) {
+        return Some(format!("{n} sliding lines meet, one along an edge of Q,"));
+    }
     let slides: Vec<(usize, ContactKind)> = rows.iter().filter_map(|l| l.slide).collect();
-    (rows.iter().any(along) || may_slide_purely(js, &slides)).then_some(rows.len())
+    may_slide_purely(js, &slides)
+        .then(|| format!("{n} sliding lines whose columns may balance without hinge rates meet"))
 }
 
 /// G1 at every vertex of Q off the box ([`breaks_g1`] among every line).
 pub(super) fn no_third_line(
+    js: &[JointRows],
     lines: &[Line],
     poly: &[QVertex],
-    js: Option<&[JointRows]>,
 ) -> Result<(), Undecided> {
     for v in 0..poly.len() {
-        if let Some(count) = breaks_g1((lines, poly), v, lines.iter(), js) {
+        if let Some(why) = breaks_g1((lines, poly), v, lines.iter(), js) {
             let q = poly[v].0;
             return Err(Undecided::NotCovered(format!(
-                "{count} sliding lines meet at the vertex ({}, {}) of Q",
+                "{why} at the vertex ({}, {}) of Q",
                 q[0], q[1]
             )));
         }
@@ -221,15 +231,18 @@ const CHUNK_PIECES: usize = 24;
 /// bookkeeping costs more than it saves there).
 const WHOLE_ARCH_JOINTS: usize = 768;
 
+/// Whether the edge of Q from vertex `k` is walked: a sliding edge long enough.
+fn walked(lines: &[Line], poly: &[QVertex], k: usize) -> bool {
+    let (q0, ri) = poly[k];
+    let q1 = poly[(k + 1) % poly.len()].0;
+    let len = (q1[0] - q0[0]).abs() + (q1[1] - q0[1]).abs();
+    lines[ri].slide.is_some() && len > SHORT_EDGE_REL * scale(q0)
+}
+
 /// The sliding edges of Q long enough to walk, by the index of their first vertex.
 fn walkable(lines: &[Line], poly: &[QVertex]) -> Vec<usize> {
     (0..poly.len())
-        .filter(|&k| {
-            let (q0, ri) = poly[k];
-            let q1 = poly[(k + 1) % poly.len()].0;
-            let len = (q1[0] - q0[0]).abs() + (q1[1] - q0[1]).abs();
-            lines[ri].slide.is_some() && len > SHORT_EDGE_REL * scale(q0)
-        })
+        .filter(|&k| walked(lines, poly, k))
         .collect()
 }
 
@@ -246,8 +259,8 @@ struct Cursor {
 
 /// The walk along each sliding edge of Q, in chunks of [`CHUNK_PIECES`] pieces, each with
 /// the joints that may be active over it ([`super::near`]): the points it returns inside
-/// the box are added to `out`, and the chunks' subsets of joints returned. G1 (no third
-/// sliding line through a vertex of Q, [`no_third_line`]) is tested at each vertex among
+/// the box are added to `out`, and the chunks' subsets of joints returned. G1 (where more
+/// than two sliding lines meet at a vertex of Q, [`breaks_g1`]) is tested at each vertex among
 /// the lines of the joints of the chunk that reaches it (the others are further than the
 /// test's tolerance); where it fails, or a walk fails, the answer is the one
 /// [`no_third_line`] over every line gives first.
@@ -275,7 +288,7 @@ fn along_edges(
             match walk_chunk(js, geometry, (at, whole), (mu, &tree), &guess, &mut in_walk) {
                 Ok(w) => w,
                 Err(e) => {
-                    no_third_line(lines, poly, Some(js))?;
+                    no_third_line(js, lines, poly)?;
                     return Err(e);
                 }
             };
@@ -283,9 +296,9 @@ fn along_edges(
             let lines_of = walked.subset.iter().flat_map(|&j| [2 * j, 2 * j + 1]);
             let among = lines_of.map(|l| &lines[l]);
             if !std::mem::replace(&mut tested[v], true)
-                && breaks_g1((lines, poly), v, among, Some(js)).is_some()
+                && breaks_g1((lines, poly), v, among, js).is_some()
             {
-                no_third_line(lines, poly, Some(js))?;
+                no_third_line(js, lines, poly)?;
             }
         }
         for (_, p0, d, wk) in &walked.walks {
@@ -306,9 +319,9 @@ fn along_edges(
     }
     // vertices of Q on no walked edge (between sides of the box or short edges)
     let untested_third =
-        |v: usize| !tested[v] && breaks_g1((lines, poly), v, lines.iter(), Some(js)).is_some();
+        |v: usize| !tested[v] && breaks_g1((lines, poly), v, lines.iter(), js).is_some();
     if (0..poly.len()).any(untested_third) {
-        no_third_line(lines, poly, Some(js))?;
+        no_third_line(js, lines, poly)?;
     }
     Ok(subsets)
 }

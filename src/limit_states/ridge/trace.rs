@@ -41,7 +41,8 @@ pub struct TracedEdge {
 
 /// The ridge over a bounded Q, edge by edge (counter-clockwise), for a discrete arch with
 /// the centreline weight at finite μ. `Err` where Q is unbounded, has no interior, an apex
-/// (both lines of one joint) or a third line through a vertex, or where the walk fails.
+/// (both lines of one joint) or more than two lines through a vertex that break G1 (the
+/// search's test, `candidates::no_third_line`), or where the walk fails.
 pub fn trace(arch: &Arch, mu: f64) -> Result<Vec<TracedEdge>, Undecided> {
     let not = |why: &str| Err(Undecided::NotCovered(format!("no ridge evidence: {why}")));
     if !applies(arch, mu) {
@@ -62,7 +63,7 @@ pub fn trace(arch: &Arch, mu: f64) -> Result<Vec<TracedEdge>, Undecided> {
     {
         return not("Q is unbounded");
     }
-    no_third_line(&lines, &poly, None)?;
+    no_third_line(&js, &lines, &poly)?;
     let m = poly.len();
     let contact = |j: usize, kind: ContactKind| Contact {
         beta: js[j].beta,
