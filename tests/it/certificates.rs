@@ -1023,19 +1023,25 @@ fn ridge_evidence_proves_the_list_complete_on_fine_arches() {
             .with_blocks(1000)
             .unwrap();
         let c = cert(&arch, mu);
-        assert!(
-            c.search.as_ref().is_some_and(|s| s.ridge.is_some()),
-            "alpha = {alpha}, mu = {mu}: no ridge evidence"
-        );
-        let r = verify(&c).unwrap_or_else(|e| panic!("alpha = {alpha}, mu = {mu}: {e:?}"));
-        let not = r.checks.iter().find(|l| l.starts_with("not proved"));
-        assert!(
-            r.checks
-                .iter()
-                .any(|l| l.starts_with("proved: the listed limit states are every limit state")),
-            "alpha = {alpha}, mu = {mu}: {not:?}"
-        );
+        if let Err(e) = ridge_proves_the_list_complete(&c) {
+            panic!("alpha = {alpha}, mu = {mu}: {e}");
+        }
     }
+}
+
+/// Whether the certificate carries the ridge's evidence and `verify` proves the listed
+/// limit states complete with it; `Err` says what is missing.
+fn ridge_proves_the_list_complete(c: &Certificate) -> Result<(), String> {
+    if !c.search.as_ref().is_some_and(|s| s.ridge.is_some()) {
+        return Err("no ridge evidence".into());
+    }
+    let r = verify(c).map_err(|e| format!("{e:?}"))?;
+    let complete = r
+        .checks
+        .iter()
+        .any(|l| l.starts_with("proved: the listed limit states are every limit state"));
+    let not = r.checks.iter().find(|l| l.starts_with("not proved"));
+    complete.then_some(()).ok_or(format!("{not:?}"))
 }
 
 /// More than two sliding lines through a vertex of Q (three joints 1.1·10⁻⁴ apart, whose
@@ -1063,18 +1069,7 @@ fn ridge_evidence_is_proved_with_three_lines_near_a_vertex() {
         .unwrap();
     // (η* ≈ 0.0021: its gap is proved to 10⁻¹¹, not 10⁻¹²)
     let c = certify(&arch, 0.6, 1e-10, &Settings::default()).unwrap();
-    assert!(
-        c.search.as_ref().is_some_and(|s| s.ridge.is_some()),
-        "no ridge evidence"
-    );
-    let r = verify(&c).unwrap();
-    let not = r.checks.iter().find(|l| l.starts_with("not proved"));
-    assert!(
-        r.checks
-            .iter()
-            .any(|l| l.starts_with("proved: the listed limit states are every limit state")),
-        "{not:?}"
-    );
+    ridge_proves_the_list_complete(&c).unwrap();
 }
 
 /// At μ = ∞ the search needs no sweep: the safe state is proved strictly inside P(η_hi),

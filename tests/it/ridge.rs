@@ -24,6 +24,19 @@ fn sweep_settings() -> Settings {
     }
 }
 
+/// A random arch: every fourth (`case` % 4 = 3) with arbitrary springings, the others
+/// arch-like; 2–12 voussoirs of random sizes. The springings and every joint angle.
+fn random_arch(rng: &mut Rng, case: usize) -> (f64, f64, Vec<f64>) {
+    let (br, bl) = if case % 4 == 3 {
+        let br = -1.2 + 2.6 * rng.next();
+        (br, br + 0.4 + 3.3 * rng.next())
+    } else {
+        (-0.6 + 1.2 * rng.next(), PI - 0.6 + 1.2 * rng.next())
+    };
+    let blocks = 2 + (rng.next() * 11.0) as usize;
+    (br, bl, random_joints(rng, br, bl, blocks))
+}
+
 /// The two answers agree state by state; `Err` describes the first difference.
 fn same_answer(ridge: &LimitStates, sweep: &LimitStates) -> Result<(), String> {
     if ridge.mechanism_at_eta_s != sweep.mechanism_at_eta_s || ridge.eta_s != sweep.eta_s {
@@ -76,15 +89,7 @@ fn ridge_and_sweep_agree_on_random_discrete_arches() {
     let (mut compared, mut by_ridge, mut above, mut both_failed) = (0, 0, 0, 0);
     let mut differ: Vec<String> = Vec::new();
     for case in 0..1500 {
-        let wild = case % 4 == 3;
-        let (br, bl) = if wild {
-            let br = -1.2 + 2.6 * rng.next();
-            (br, br + 0.4 + 3.3 * rng.next())
-        } else {
-            (-0.6 + 1.2 * rng.next(), PI - 0.6 + 1.2 * rng.next())
-        };
-        let blocks = 2 + (rng.next() * 11.0) as usize;
-        let joints = random_joints(&mut rng, br, bl, blocks);
+        let (br, bl, joints) = random_arch(&mut rng, case);
         let ms = least_friction(br, bl, &joints);
         let mu = ms * (1.0 + 1e-3 + 3.0 * rng.next().powi(2));
         if !mu.is_finite() {
@@ -242,15 +247,7 @@ fn ridge_passes_three_sliding_lines_at_a_limit_state() {
     let mut rng = Rng(0x05ee_d0f4_1d6e);
     let (mut compared, mut through_triple) = (0, 0);
     for case in 0..9000 {
-        let wild = case % 4 == 3;
-        let (br, bl) = if wild {
-            let br = -1.2 + 2.6 * rng.next();
-            (br, br + 0.4 + 3.3 * rng.next())
-        } else {
-            (-0.6 + 1.2 * rng.next(), PI - 0.6 + 1.2 * rng.next())
-        };
-        let blocks = 2 + (rng.next() * 11.0) as usize;
-        let all = random_joints(&mut rng, br, bl, blocks);
+        let (br, bl, all) = random_arch(&mut rng, case);
         let arch0 = discrete(br, bl, &all[1..all.len() - 1]);
         // (the library's μ_ms: the reference's LP bisection costs more than the searches)
         let Ok(Some(ms)) = arch_enum::least_friction(&arch0, &Settings::default()) else {
