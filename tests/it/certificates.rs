@@ -1032,7 +1032,7 @@ fn ridge_evidence_proves_the_list_complete_on_fine_arches() {
 /// Whether the certificate carries the ridge's evidence and `verify` proves the listed
 /// limit states complete with it; `Err` says what is missing.
 fn ridge_proves_the_list_complete(c: &Certificate) -> Result<(), String> {
-    if !c.search.as_ref().is_some_and(|s| s.ridge.is_some()) {
+    if c.search.as_ref().is_none_or(|s| s.ridge.is_none()) {
         return Err("no ridge evidence".into());
     }
     let r = verify(c).map_err(|e| format!("{e:?}"))?;
