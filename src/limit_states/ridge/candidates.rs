@@ -117,11 +117,10 @@ fn parallel(l: &Line, e: &Line) -> bool {
 }
 
 /// Why G1 fails at vertex `v` of Q among the sliding lines `among` (every line, or a
-/// chunk's), if it does. The ridge's theorem
-/// needs G1 only to exclude mechanisms without hinge rates, which need sliding lines
-/// meeting at one point of Q with columns that balance (a pure-sliding mechanism may then
-/// hold over an interval of η, off the ridge), and lines that coincide along an edge (two
-/// sliding rows active along a piece). So more than two lines through a vertex pass where
+/// chunk's), if it does. The ridge's theorem needs G1 only to exclude mechanisms without
+/// hinge rates, which need sliding lines meeting at one point of Q with columns that
+/// balance (a pure-sliding mechanism may then hold over an interval of η, off the ridge),
+/// and lines that coincide along an edge (two sliding rows active along a piece). So more than two lines through a vertex pass where
 /// their columns cannot balance ([`may_slide_purely`]) and none runs along one of the
 /// vertex's edges ([`ALONG_EDGE`]): every limit state there has hinge rates, so it is the
 /// ridge's point at the vertex, which the check decides on every contact active there, the
@@ -489,7 +488,8 @@ mod tests {
     use crate::arch::{Arch, JointLayout, WeightModel};
 
     /// Sliding columns balance with non-negative rates exactly when no open half-plane
-    /// holds them all (or one joint slides both ways); neighbours of one sense never do.
+    /// holds them all (one joint sliding both ways among them does); neighbours of one
+    /// sense never do.
     #[test]
     fn pure_sliding_needs_columns_around_the_origin() {
         use ContactKind::{SlideMinus as M, SlidePlus as P};
@@ -519,7 +519,7 @@ mod tests {
         assert!(!slides(&[(0, P), (1, M), (2, M)]));
         // ... but with a third between them on the short side (gaps π/2 + 0.05 twice, π − 0.1)
         assert!(slides(&[(0, P), (1, M), (5, P)]));
-        // both senses of one joint: its apex beside the vertex, left to the sweep
+        // both senses of one joint balance (a gap of π)
         assert!(slides(&[(0, P), (0, M), (1, P)]));
     }
 
