@@ -1141,3 +1141,68 @@ fn filled_arches_under_pressure_match_the_brute_force() {
     );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+
+/// The ridge's theorem read in λ (docs/design/limit-states-on-boundary.md §2–3 at fixed η,
+/// λ the parameter): where P(λ) has an interior point, a limit state's mechanism has a
+/// sliding rate (a hinge-only one would be active over all of P(λ)), and a mechanism with
+/// hinge rates has an extrados and an intrados rate (rotation balance). Checked on the
+/// sweep's limit states strictly between λ_min and λ_static of random loaded arches. The
+/// premise of a search in (h, v, λ), not built (docs/performance.md): the states with hinge
+/// rates lie where the sliding polyhedron's boundary meets the boundary of the set where
+/// the band of w is not empty, and the purely sliding ones (many here) where three sliding
+/// planes meet, at vertices of the sliding polyhedron.
+#[test]
+fn load_limit_states_below_the_static_maximum_slide_and_hinge_both_ways() {
+    let mut rng = Rng(0x1a5d_0ad5);
+    let (mut below, mut pure_sliding) = (0, 0);
+    let mut odd: Vec<String> = Vec::new();
+    for case in 0..1500 {
+        let c = random_loaded(&mut rng);
+        if c.mu.is_infinite() {
+            continue;
+        }
+        let Ok(Ok(LoadOutcome::Limits(s))) =
+            survey(&c.arch, c.eta, c.mu, &c.load, &Settings::default())
+        else {
+            continue;
+        };
+        let (lo, hi) = (
+            s.lambda_min.0,
+            s.lambda_static.map_or(f64::INFINITY, |m| m.0),
+        );
+        let inside = |t: f64| t > lo + 1e-9 * (1.0 + lo.abs()) && t < hi - 1e-9 * (1.0 + hi.abs());
+        for st in s.limit_states.iter().filter(|st| inside(st.t)) {
+            below += 1;
+            let m = &st.mechanism;
+            let rate = |k: ContactKind| {
+                m.contacts
+                    .iter()
+                    .zip(&m.rates)
+                    .any(|(c, &r)| c.kind == k && r > 1e-9)
+            };
+            let slides = rate(ContactKind::SlidePlus) || rate(ContactKind::SlideMinus);
+            let (e, i) = (
+                rate(ContactKind::HingeExtrados),
+                rate(ContactKind::HingeIntrados),
+            );
+            if slides && !e && !i {
+                pure_sliding += 1;
+            } else if !(slides && e && i) {
+                odd.push(format!(
+                    "case {case}: lambda {} in ({lo}, {hi}): {:?} rates {:?}",
+                    st.t, m.contacts, m.rates
+                ));
+            }
+        }
+    }
+    println!(
+        "{below} limit states below lambda_static, {pure_sliding} purely sliding, {} otherwise",
+        odd.len()
+    );
+    assert!(odd.is_empty(), "{}", odd.join("\n"));
+    assert!(below >= 50, "only {below} limit states below lambda_static");
+    assert!(
+        pure_sliding >= 10 && pure_sliding < below,
+        "{pure_sliding} of {below} purely sliding"
+    );
+}
