@@ -260,6 +260,28 @@ impl Arch {
     pub fn joint_sin_cos(&self) -> &[(f64, f64)] {
         &self.joint_trig
     }
+    /// (sin β, cos β): from [`Arch::joint_sin_cos`] where `beta` is one of a discrete arch's
+    /// joints (the same bits: the cache holds `sin_cos` of the same angle), else computed.
+    #[inline]
+    pub fn sin_cos(&self, beta: Radians) -> (f64, f64) {
+        if let JointLayout::Discrete(joints) = &self.layout {
+            // equal voussoirs: the index from the angle; other joints: bisection
+            let (first, last, n) = (joints[0], joints[joints.len() - 1], joints.len() - 1);
+            let t = (beta - first) / (last - first) * n as f64;
+            if t >= 0.0 && t <= n as f64 {
+                let k = (t + 0.5) as usize;
+                let k = if joints[k] == beta {
+                    k
+                } else {
+                    joints.partition_point(|&j| j < beta)
+                };
+                if joints.get(k) == Some(&beta) {
+                    return self.joint_trig[k];
+                }
+            }
+        }
+        beta.sin_cos()
+    }
     /// (sin β, cos β) at `beta` when it is an angle of the `n`-point scan grid from β_R to
     /// β_L ([`grid_angle`]), from the arch's cache (filled at the first call, for the first
     /// `n` asked for); `None` for any other angle or `n`.

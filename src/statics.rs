@@ -152,7 +152,12 @@ pub struct EtaTerms {
 
 /// The η-derivatives of the internal actions of `arch` at thickness `eta` and angle `beta`.
 pub fn eta_terms(arch: &Arch, eta: f64, beta: Radians) -> EtaTerms {
-    let (s, c) = beta.sin_cos();
+    eta_terms_with(arch, eta, beta, arch.sin_cos(beta))
+}
+
+/// [`eta_terms`] with (sin β, cos β) given.
+#[inline]
+pub fn eta_terms_with(arch: &Arch, eta: f64, beta: Radians, (s, c): (f64, f64)) -> EtaTerms {
     let sr = arch.right_sin_cos().0;
     let drho = arch.weight().drho_deta(eta);
     let d2rho = arch.weight().d2rho_deta2(eta);
@@ -308,7 +313,7 @@ pub fn activation_of<F: Force>(mode: ContactKind, [n, t, m]: &[F; 3], eta: f64, 
 ///
 /// with ρ = 1 (centreline weight) or 1 + η²/12 (true centroid).
 pub fn actions(arch: &Arch, eta: f64, beta: Radians) -> Actions {
-    actions_with(arch, eta, beta, beta.sin_cos())
+    actions_with(arch, eta, beta, arch.sin_cos(beta))
 }
 
 /// [`actions`] with (sin β, cos β) given (a discrete arch's cached

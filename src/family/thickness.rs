@@ -3,7 +3,7 @@
 use super::traits::{Family, Param, ParamDerivative, Rows};
 use crate::arch::{Arch, Radians};
 use crate::contact::ContactKind;
-use crate::statics::{actions, eta_terms, Actions, Affine, EtaTerms, Reactions};
+use crate::statics::{actions_with, eta_terms_with, Actions, Affine, EtaTerms, Reactions};
 
 /// The arch under its self-weight; the parameter is the thickness ratio η.
 #[derive(Debug, Clone, Copy)]
@@ -31,9 +31,10 @@ impl<'a> Family for Thickness<'a> {
     }
 
     fn local(&self, kind: ContactKind, beta: Radians, _: (), eta: f64, mu: f64) -> ThicknessRows {
+        let sc = self.arch.sin_cos(beta);
         ThicknessRows {
-            actions: actions(self.arch, eta, beta),
-            eta_terms: eta_terms(self.arch, eta, beta),
+            actions: actions_with(self.arch, eta, beta, sc),
+            eta_terms: eta_terms_with(self.arch, eta, beta, sc),
             kind,
             eta,
             mu,

@@ -183,27 +183,32 @@ impl Group {
         }
     }
 
-    /// The group's three forms m, n and t at p ([`Forms`]): every row there is a
-    /// combination of them.
-    fn forms(&self, p: [f64; 2]) -> Forms {
+    /// The group's forms m, n and t at p ([`Forms`]): every row there is a combination of
+    /// them. Only the forms marked in `used` are evaluated (the others are left zero: a
+    /// hinge row has no t, a sliding row no m).
+    #[inline]
+    fn forms(&self, p: [f64; 2], used: [bool; 3]) -> Forms {
         let q = [p[0], p[1], 1.0];
-        let at = |c: &[f64; 9]| -> [f64; 3] {
-            std::array::from_fn(|f| (0..3).map(|k| c[3 * f + k] * q[k]).sum::<f64>())
+        let mut out = Forms {
+            first: [0.0; 3],
+            last: [0.0; 3],
+            residual: [[0.0; 2]; 3],
         };
-        let residual = std::array::from_fn(|f| {
-            let mut r = [0.0, 0.0];
+        for f in 0..3 {
+            if !used[f] {
+                continue;
+            }
+            let at = |c: &[f64; 9]| c[3 * f] * q[0] + c[3 * f + 1] * q[1] + c[3 * f + 2] * q[2];
+            out.first[f] = at(&self.first);
+            out.last[f] = at(&self.last);
+            let r = &mut out.residual[f];
             for (res, qk) in self.residual[3 * f..3 * f + 3].iter().zip(q) {
                 let (x, y) = (res[0] * qk, res[1] * qk);
                 r[0] += x.min(y);
                 r[1] += x.max(y);
             }
-            r
-        });
-        Forms {
-            first: at(&self.first),
-            last: at(&self.last),
-            residual,
         }
+        out
     }
 }
 
@@ -221,17 +226,31 @@ impl Forms {
     /// its values at the first and last joints, plus the residual's range of each form
     /// scaled by its coefficient.
     fn range(&self, coef: [f64; 3]) -> [f64; 2] {
-        let dot = |v: &[f64; 3]| (0..3).map(|f| coef[f] * v[f]).sum::<f64>();
-        let (a, b) = (dot(&self.first), dot(&self.last));
+        // (a form with coefficient zero adds nothing: it is skipped, and need not have been
+        // evaluated)
+        let (mut a, mut b) = (0.0, 0.0);
+        for f in 0..3 {
+            if coef[f] != 0.0 {
+                a += coef[f] * self.first[f];
+                b += coef[f] * self.last[f];
+            }
+        }
         let mut r = [a.min(b), a.max(b)];
-        for (res, &c) in self.residual.iter().zip(&coef) {
-            let (x, y) = (res[0] * c, res[1] * c);
+        for f in 0..3 {
+            if coef[f] == 0.0 {
+                continue;
+            }
+            let (x, y) = (self.residual[f][0] * coef[f], self.residual[f][1] * coef[f]);
             r[0] += x.min(y);
             r[1] += x.max(y);
         }
         r
     }
 }
+
+/// The forms a hinge row combines (m, n) and those a sliding row combines (n, t).
+const HINGE_FORMS: [bool; 3] = [true, true, false];
+const SLIDE_FORMS: [bool; 3] = [false, true, true];
 
 /// The extrados row u = −m + η n / 2 and the intrados row l = −m − η n / 2 as
 /// combinations of the forms m, n, t.
@@ -350,7 +369,7 @@ impl References {
         let at = std::array::from_fn(|c| {
             let p = corners[c];
             let [r, s] = [0, 1].map(|k| Group::of(std::slice::from_ref(&js[b.reference[k]]), 0.0));
-            let (r, s) = (r.forms(p), s.forms(p));
+            let (r, s) = (r.forms(p, HINGE_FORMS), s.forms(p, HINGE_FORMS));
             let values = b.eta.map(|eta| {
                 let [u, l] = hinge_rows(eta);
                 [r.range(u)[0], s.range(l)[0]]
@@ -395,7 +414,7 @@ fn hinges(g: &Group, b: &Bounds, refs: &References, stop_near: bool) -> (bool, b
         (off, near)
     };
     for (p, values) in &refs.at {
-        let forms = g.forms(*p);
+        let forms = g.forms(*p, HINGE_FORMS);
         for (eta, [ur, ls]) in b.eta.iter().zip(values) {
             let [hu, hl] = hinge_rows(*eta);
             let (gu, gl) = (forms.range(hu), forms.range(hl));
@@ -418,7 +437,7 @@ fn slides(g: &Group, mu: f64, b: &Bounds) -> bool {
     let margin = MARGIN_REL * b.size() * (1.0 + g.grad);
     let [sp, sm] = slide_rows(mu);
     let most = |p: [f64; 2]| {
-        let forms = g.forms(p);
+        let forms = g.forms(p, SLIDE_FORMS);
         forms.range(sp)[1].max(forms.range(sm)[1])
     };
     b.corners().into_iter().all(|p| most(p) < -margin) || b.ends.iter().all(|&p| most(p) < -margin)
