@@ -169,8 +169,13 @@ impl Case {
         }
     }
 
+    /// Every contact: (section index, kind).
+    pub(crate) fn contacts(&self) -> &[(usize, ContactKind)] {
+        &self.contacts
+    }
+
     /// The activation function of a contact as (a, c): a · (h, v, w, λ) + c.
-    fn row(&self, (s, kind): (usize, ContactKind)) -> ([f64; 4], f64) {
+    pub(crate) fn row(&self, (s, kind): (usize, ContactKind)) -> ([f64; 4], f64) {
         let sec = self.sections[s];
         let br = self.joints[0];
         // a vertical dead load F at the horizontal position S/F on the free body [β_R, β]
@@ -243,7 +248,7 @@ impl Case {
 
     /// The largest live power of compatible rates on `active` (Σ = 1, total power ≥ 0,
     /// one sliding sense per section), or `None` if no such rates exist.
-    fn mechanism(&self, active: &[(usize, ContactKind)], lambda: f64) -> Option<f64> {
+    pub(crate) fn mechanism(&self, active: &[(usize, ContactKind)], lambda: f64) -> Option<f64> {
         let both: Vec<usize> = active
             .iter()
             .filter(|&&(s, k)| {

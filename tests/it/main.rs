@@ -21,6 +21,7 @@ mod limit_states;
 mod load_certificates;
 mod load_continuum_reference;
 mod load_reference;
+mod load_seam;
 mod loads;
 mod model;
 mod modes;

@@ -229,18 +229,18 @@ impl Forms {
         // (a form with coefficient zero adds nothing: it is skipped, and need not have been
         // evaluated)
         let (mut a, mut b) = (0.0, 0.0);
-        for f in 0..3 {
-            if coef[f] != 0.0 {
-                a += coef[f] * self.first[f];
-                b += coef[f] * self.last[f];
+        for ((&c, first), last) in coef.iter().zip(&self.first).zip(&self.last) {
+            if c != 0.0 {
+                a += c * first;
+                b += c * last;
             }
         }
         let mut r = [a.min(b), a.max(b)];
-        for f in 0..3 {
-            if coef[f] == 0.0 {
+        for (&c, res) in coef.iter().zip(&self.residual) {
+            if c == 0.0 {
                 continue;
             }
-            let (x, y) = (self.residual[f][0] * coef[f], self.residual[f][1] * coef[f]);
+            let (x, y) = (res[0] * c, res[1] * c);
             r[0] += x.min(y);
             r[1] += x.max(y);
         }
