@@ -165,6 +165,11 @@ pub struct Settings {
     /// what the sweep in η costs at half the joints. Default 512 (511 voussoirs under a
     /// horizontal load take about 1.6 s, under a point load 0.3 s).
     pub load_sweep_max_joints: usize,
+    /// Beyond `load_sweep_max_joints`, the limit states of a live load are searched by the
+    /// vertices of the admissible (x, λ) on which a sliding row is active (the face search,
+    /// docs/design/load-limit-states-on-the-seam.md §5: work about the square of the
+    /// number of joints) up to this many joints; beyond, not at all. Default 4096.
+    pub load_face_max_joints: usize,
     /// The ridge walk over the friction polygon (in chunks, each with the joints proved
     /// near it: work about linear in the number of joints) is run up to this many joints;
     /// beyond, the sweep's budget decides. Default 16384 (10⁴ joints take about 0.3 s).
@@ -261,6 +266,7 @@ impl Default for Settings {
             carry_almost_rate: 0.2,
             sweep_max_joints: 256,
             load_sweep_max_joints: 512,
+            load_face_max_joints: 4096,
             ridge_max_joints: 16384,
             unbounded_reactions: 1e6,
             sweep_min_eta: 1e-6,
@@ -387,6 +393,12 @@ impl Settings {
         count(
             "settings.load_sweep_max_joints",
             self.load_sweep_max_joints,
+            2,
+            1_000_000,
+        )?;
+        count(
+            "settings.load_face_max_joints",
+            self.load_face_max_joints,
             2,
             1_000_000,
         )?;

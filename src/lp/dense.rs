@@ -481,6 +481,61 @@ pub fn multiplier_extreme(
     }
 }
 
+/// Rows a_j · z + c_j ≤ 0 in z ∈ R⁴, scaled to unit gradients once, for many LPs over the
+/// same polyhedron ([`NormalisedRows::max_row`]).
+pub struct NormalisedRows {
+    a: Vec<[f64; 4]>,
+    b: Vec<f64>,
+}
+
+impl NormalisedRows {
+    /// The rows (a, c), each divided by ‖a‖₂ (a zero row kept as it is).
+    pub fn new(rows: &[([f64; 4], f64)]) -> NormalisedRows {
+        let (mut a, mut b) = (
+            Vec::with_capacity(rows.len()),
+            Vec::with_capacity(rows.len()),
+        );
+        for (g, c) in rows {
+            let n = g.iter().map(|v| v * v).sum::<f64>().sqrt();
+            let n = if n > 0.0 { n } else { 1.0 };
+            a.push(g.map(|v| v / n));
+            b.push(-c / n);
+        }
+        NormalisedRows { a, b }
+    }
+
+    /// Maximises row `s` over the polyhedron (the caller's rows must bound it, a box among
+    /// them) and returns the optimal basis (four row indices); `Ok(None)`: no z satisfies
+    /// the rows. The simplex starts from `warm` where it is dual feasible for this
+    /// objective (a neighbouring LP's optimum), else from row `s` itself and three of the
+    /// rows `axes` (gradients +e_0 … +e_3): the one along the largest component of row s's
+    /// gradient is left out, so the basis is nonsingular, with dual values (1, 0, 0, 0).
+    /// `tol` as in [`dual_simplex`].
+    pub fn max_row(
+        &self,
+        s: usize,
+        axes: [usize; 4],
+        warm: Option<[usize; 4]>,
+        tol: f64,
+    ) -> Result<Option<[usize; 4]>, LpOutcome> {
+        let objective = self.a[s];
+        let skip = (0..4)
+            .max_by(|&i, &j| objective[i].abs().total_cmp(&objective[j].abs()))
+            .unwrap_or(0);
+        let mut cold = [s; 4];
+        for (slot, k) in (0..4).filter(|&k| k != skip).enumerate() {
+            cold[slot + 1] = axes[k];
+        }
+        let start = warm
+            .filter(|w| dual_feasible(&self.a, w, objective))
+            .unwrap_or(cold);
+        match dual_simplex(&self.a, &self.b, objective, start, 4, tol)? {
+            End::Optimal { basis, .. } => Ok(Some(basis)),
+            End::DualUnbounded => Ok(None),
+        }
+    }
+}
+
 /// Whether `basis` indexes four distinct rows of `a` forming a nonsingular B with
 /// B⁻¹c ≥ −[`WARM_DUAL_TOL`].
 fn dual_feasible(a: &[[f64; 4]], basis: &[usize; 4], c: [f64; 4]) -> bool {

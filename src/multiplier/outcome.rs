@@ -44,8 +44,10 @@ pub struct LoadSurvey {
     pub limit_states: Vec<LimitState>,
     /// Events of the sweep.
     pub events: usize,
-    /// How the list was established: `sweep` (discrete arch: every event of P(λ)) or
-    /// `associative` (μ = ∞: the static maximum is the only limit state).
+    /// How the list was established: `sweep` (discrete arch: every event of P(λ)), `faces`
+    /// (a discrete arch beyond the sweep's budget: every vertex of the admissible (x, λ) on
+    /// which a sliding row is active) or `associative` (μ = ∞: the static maximum is the
+    /// only limit state).
     pub method: &'static str,
     /// `sweep` only: every point the sweep checked whose active contacts carry no
     /// mechanism with positive live power (the evidence a certificate carries); empty

@@ -153,7 +153,11 @@ pub fn survey_partial(
         mechanism_at_static,
         limit_states,
         events: sw.events,
-        method: "sweep",
+        method: if joints.len() > settings.load_sweep_max_joints {
+            "faces"
+        } else {
+            "sweep"
+        },
         no_mechanism,
     })))
 }

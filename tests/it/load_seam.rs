@@ -10,8 +10,10 @@
 use crate::load_reference::{random_loaded, Case};
 use crate::search_reference::Rng;
 use arch_enum::contact::ContactKind;
+use arch_enum::limit_states::LimitState;
 use arch_enum::load::LiveLoad;
-use arch_enum::WeightModel;
+use arch_enum::multiplier::{survey, LoadOutcome};
+use arch_enum::{Arch, Settings, WeightModel};
 use itertools::Itertools;
 
 /// A vertex of P̂: z = (h, v, w, λ) and its active rows (ascending).
@@ -340,4 +342,137 @@ fn the_seam_of_a_loaded_arch_is_paths_the_walk_follows() {
     );
     assert!(errors.is_empty(), "{}", errors.join("\n"));
     assert!(arches >= 100 && total.vertices >= 100, "{arches} arches");
+}
+
+/// The survey of one loaded discrete arch with the sweep below λ_static and with the face
+/// search there (the sweep's budget set below the arch's joints), or why they differ;
+/// `None` where the survey gives no limit states to compare.
+fn compare_faces(
+    arch: &Arch,
+    (eta, mu): (f64, f64),
+    load: &LiveLoad,
+) -> Option<Result<usize, String>> {
+    let swept_settings = Settings::default();
+    let faced_settings = Settings {
+        load_sweep_max_joints: 2,
+        ..Settings::default()
+    };
+    let run = |settings: &Settings| match survey(arch, eta, mu, load, settings) {
+        Ok(Ok(LoadOutcome::Limits(s))) => Some(Ok(s)),
+        Ok(Ok(_)) => None,
+        Ok(Err(u)) => Some(Err(u.to_string())),
+        Err(e) => Some(Err(e.to_string())),
+    };
+    let (swept, faced) = (run(&swept_settings)?, run(&faced_settings));
+    let swept = match swept {
+        Ok(s) => s,
+        Err(_) => return None, // the sweep itself undecided: nothing to compare
+    };
+    let faced = match faced {
+        Some(Ok(s)) => s,
+        Some(Err(e)) => return Some(Err(format!("the face search: {e}"))),
+        None => return Some(Err("the face search: no limit states".into())),
+    };
+    let key = |l: &LimitState| {
+        let kinds: Vec<(ContactKind, f64)> = l.pattern.iter().map(|c| (c.kind, c.beta)).collect();
+        (l.t, kinds)
+    };
+    let (a, b): (Vec<_>, Vec<_>) = (
+        swept.limit_states.iter().map(key).collect(),
+        faced.limit_states.iter().map(key).collect(),
+    );
+    // the same states, in any order (two states at one λ may come out in either order)
+    let same_state = |p: &(f64, Vec<(ContactKind, f64)>), q: &(f64, Vec<(ContactKind, f64)>)| {
+        (p.0 - q.0).abs() <= 1e-8 * (1.0 + p.0.abs())
+            && p.1.len() == q.1.len()
+            && p.1
+                .iter()
+                .zip(&q.1)
+                .all(|(x, y)| x.0 == y.0 && (x.1 - y.1).abs() <= 1e-9)
+    };
+    let within = |l: &[(f64, Vec<(ContactKind, f64)>)], m: &[(f64, Vec<(ContactKind, f64)>)]| {
+        l.iter().all(|p| m.iter().any(|q| same_state(p, q)))
+    };
+    let same = a.len() == b.len()
+        && within(&a, &b)
+        && within(&b, &a)
+        && swept.mechanism_at_static == faced.mechanism_at_static
+        && faced.method == "faces";
+    if same {
+        Some(Ok(a.len()))
+    } else {
+        Some(Err(format!(
+            "lambda in ({}, {:?}), method {}:\nsweep {a:?}\nfaces {b:?}",
+            swept.lambda_min.0,
+            swept.lambda_static.map(|m| m.0),
+            faced.method
+        )))
+    }
+}
+
+/// The survey with the face search below λ_static (`sweep::faces_load`, design note §5)
+/// answers as the survey with the sweep: the same limit states (λ and contacts) and the
+/// same verdict at λ_static, on random small loaded arches (`load_reference`'s, finite μ;
+/// `FACE_CASES=N` draws N) and on semicircles of 20–120 equal voussoirs under point and
+/// horizontal loads.
+#[test]
+fn the_face_search_finds_what_the_sweep_finds() {
+    let mut rng = Rng(0xface_0000_0001);
+    let cases: usize = std::env::var("FACE_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(1000);
+    let (mut compared, mut states, mut failures) = (0, 0, Vec::new());
+    let mut run = |name: String, r: Option<Result<usize, String>>| match r {
+        Some(Ok(n)) => {
+            compared += 1;
+            states += n;
+        }
+        Some(Err(e)) => failures.push(format!("{name}: {e}")),
+        None => {}
+    };
+    for case in 0..cases {
+        let c = random_loaded(&mut rng);
+        let only = std::env::var("FACE_ONLY")
+            .ok()
+            .and_then(|v| v.parse::<usize>().ok());
+        if only.is_some_and(|o| o != case) {
+            continue;
+        }
+        if c.mu.is_finite() {
+            run(
+                format!("case {case}"),
+                compare_faces(&c.arch, (c.eta, c.mu), &c.load),
+            );
+        }
+    }
+    for blocks in [20, 60, 120] {
+        let arch = Arch::symmetric(0.0, WeightModel::Centreline)
+            .unwrap()
+            .with_blocks(blocks)
+            .unwrap();
+        for load in [
+            LiveLoad::Horizontal {
+                towards_right: true,
+            },
+            LiveLoad::Point { beta: 0.7 },
+            LiveLoad::Point { beta: 1.3 },
+        ] {
+            for (eta, mu) in [(0.3, 0.6), (0.2, 1.0), (0.4, 0.45)] {
+                run(
+                    format!("{blocks} voussoirs {load:?} eta {eta} mu {mu}"),
+                    compare_faces(&arch, (eta, mu), &load),
+                );
+            }
+        }
+    }
+    println!(
+        "{compared} arches compared, {states} limit states below lambda_static, {} differences",
+        failures.len()
+    );
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(
+        compared >= 150 && states >= 30,
+        "{compared} compared, {states} states"
+    );
 }

@@ -454,7 +454,7 @@ fn malformed_requests_are_refused_with_the_argument_named() {
     );
     refused(
         &server,
-        "/api/load?alpha=0&eta=0.3&mu=1&horizontal&blocks=5001",
+        "/api/load?alpha=0&eta=0.3&mu=1&horizontal&blocks=1001",
         "--blocks",
     );
     refused(&server, "/api/modes?alpha=0&blocks=201", "--blocks");
@@ -465,8 +465,8 @@ fn malformed_requests_are_refused_with_the_argument_named() {
     );
     refused(
         &server,
-        "/api/certify?alpha=0&blocks=5001&eta=0.3&mu=0.8&horizontal",
-        "/api/certify with a live load: 1 to 5000",
+        "/api/certify?alpha=0&blocks=1001&eta=0.3&mu=0.8&horizontal",
+        "/api/certify with a live load: 1 to 1000",
     );
     refused(&server, "/api/curve?alpha=0&points=101", "--points");
     let joints: Vec<String> = (1..=250)

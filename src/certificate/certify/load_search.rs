@@ -19,7 +19,9 @@ use crate::settings::Settings;
 use crate::statics::Reactions;
 
 /// The evidence of the limit states of a survey (`static`: the state at λ_static and its
-/// active contacts, when finite).
+/// active contacts, when finite). The face search's answer (method `faces`, beyond
+/// `settings.load_sweep_max_joints`) goes in as method `found`: each state listed and
+/// checked, the list not claimed complete, no collapse multiplier claimed.
 pub(super) fn evidence(
     arch: &Arch,
     eta: f64,
@@ -28,7 +30,11 @@ pub(super) fn evidence(
     at_static: Option<(f64, Reactions, &[Loaded])>,
     settings: &Settings,
 ) -> Result<LoadSearchEvidence, NotCertified> {
+    // the face search (beyond settings.load_sweep_max_joints) has no evidence format yet:
+    // its states are listed as found (each checked), the list not claimed complete
+    let faces = sv.method == "faces";
     let method = match sv.method {
+        "faces" => LoadSearchMethod::Found,
         "sweep" => LoadSearchMethod::Sweep,
         "associative" => LoadSearchMethod::Associative,
         _ => LoadSearchMethod::Refined,
@@ -50,14 +56,18 @@ pub(super) fn evidence(
     };
     Ok(LoadSearchEvidence {
         method,
-        events: sv.events,
+        events: if faces { 0 } else { sv.events },
         lambda_min: sv.lambda_min.0,
         mechanism_at_static: sv.mechanism_at_static,
-        unique: sv.unique(),
-        lambda: sv.lambda(),
+        unique: sv.unique() && !faces,
+        lambda: sv.lambda().filter(|_| !faces),
         limit_states,
         static_state,
-        no_mechanism: checked(arch, eta, load, &sv.no_mechanism, settings),
+        no_mechanism: if faces {
+            Vec::new()
+        } else {
+            checked(arch, eta, load, &sv.no_mechanism, settings)
+        },
     })
 }
 

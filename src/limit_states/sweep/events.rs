@@ -101,7 +101,7 @@ impl Sweeper<'_> {
     /// What the sweep found after `events` events: its limit states ascending in t, each
     /// once (states at the same root with the same contacts, met from several vertices,
     /// are one).
-    fn found(mut self, events: usize) -> Sweep {
+    pub(super) fn found(mut self, events: usize) -> Sweep {
         let same_root = self.settings.same_root;
         self.states.sort_by(|a, b| a.t.total_cmp(&b.t));
         self.states.dedup_by(|a, b| {

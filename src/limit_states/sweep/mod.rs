@@ -32,6 +32,7 @@
 mod check;
 mod dependent;
 mod events;
+mod facets;
 mod found;
 mod geometry;
 mod start;
@@ -87,6 +88,50 @@ fn too_many(joints: usize, most: usize, name: &str) -> Option<Undecided> {
     })
 }
 
+/// The limit states of a discrete arch under a live load at fixed η strictly between
+/// `lambda_min` and `lambda_static`, as [`sweep_load`] finds them, by the vertices of the
+/// admissible (x, λ) on which a sliding row is active ([`facets`]; the events counted are
+/// those vertices). It needs the admissible (x, λ) to have an interior point (one margin
+/// LP at the middle of the range; the theorem behind it holds only then): without one,
+/// or where the search meets what it does not handle (a vertex with many rows active), it
+/// says so and finds nothing.
+pub fn faces_load(
+    arch: &Arch,
+    (eta, mu): (f64, f64),
+    load: &LiveLoad,
+    (lambda_min, lambda_static): (f64, f64),
+    settings: &Settings,
+) -> Sweep {
+    let JointLayout::Discrete(joints) = arch.layout() else {
+        return Sweep::failed(not_discrete());
+    };
+    let planes = load_planes(arch, joints, eta, mu, load);
+    let middle = 0.5 * (lambda_min + lambda_static);
+    let rows: Vec<crate::statics::Affine> = planes
+        .iter()
+        .filter(|p| p.contact.is_some())
+        .map(|p| p.affine(middle))
+        .collect();
+    match crate::lp::max_margin(&rows, 1.0, settings) {
+        Ok((_, margin)) if margin > settings.lp_tol => {}
+        Ok(_) => {
+            return Sweep::failed(Undecided::NotCovered(
+                "the admissible (x, lambda) has no interior point: the face search does not apply"
+                    .into(),
+            ))
+        }
+        Err(e) => {
+            return Sweep::failed(Undecided::Lp(format!("the face search's margin LP: {e:?}")))
+        }
+    }
+    let param = Param::Multiplier { eta, load };
+    let mut sw = Sweeper::new(arch, mu, param, lambda_static, planes, settings);
+    match facets::search(&mut sw, lambda_min, lambda_static) {
+        Ok(vertices) => sw.found(vertices),
+        Err(e) => Sweep::failed(e),
+    }
+}
+
 /// Follows P(λ) = {x : φ_i(x, λ) ≤ 0} of a discrete arch under a live load at fixed η,
 /// from the least admissible multiplier λ_min (a state `x_min` there) to λ_static, and
 /// returns every limit state met on the way whose mechanism has positive live power (the
@@ -131,9 +176,18 @@ pub fn sweep_load_with_top(
     let JointLayout::Discrete(joints) = arch.layout() else {
         return failure(not_discrete());
     };
-    let budget = settings.load_sweep_max_joints;
-    if let Some(f) = too_many(joints.len(), budget, "load_sweep_max_joints") {
-        return failure(f);
+    if joints.len() > settings.load_sweep_max_joints {
+        // beyond the sweep's budget, the face search (no points at the top: the caller's
+        // walk on the optimal face finds them)
+        let most = settings.load_face_max_joints;
+        if let Some(f) = too_many(joints.len(), most, "load_face_max_joints") {
+            return failure(f);
+        }
+        let range = (lambda_min, lambda_static);
+        return (
+            faces_load(arch, (eta, mu), load, range, settings),
+            Vec::new(),
+        );
     }
     let planes = load_planes(arch, joints, eta, mu, load);
     let param = Param::Multiplier { eta, load };

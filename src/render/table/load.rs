@@ -198,6 +198,10 @@ fn multipliers(s: &mut String, q: &LoadQuestion, sv: &LoadSurvey) {
 fn limit_states(s: &mut String, q: &LoadQuestion, sv: &LoadSurvey) {
     let how = match sv.method {
         "sweep" => format!("{} events of the sweep", sv.events),
+        "faces" => format!(
+            "{} vertices of the admissible (x, lambda) with a sliding row active, each checked: the face search",
+            sv.events
+        ),
         "refined" => format!(
             "two discretisations swept ({} events in the finer) and refined on the continuum",
             sv.events
