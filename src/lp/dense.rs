@@ -510,7 +510,7 @@ impl NormalisedRows {
     /// objective (a neighbouring LP's optimum), else from row `s` itself and three of the
     /// rows `axes` (gradients +e_0 … +e_3): the one along the largest component of row s's
     /// gradient is left out, so the basis is nonsingular, with dual values (1, 0, 0, 0).
-    /// `tol` as in [`dual_simplex`].
+    /// `tol`: the feasibility tolerance, relative to 1 + ‖z‖₁.
     pub fn max_row(
         &self,
         s: usize,

@@ -899,6 +899,7 @@ fn search_budget_is_said_not_hidden() {
         .as_str()
         .unwrap()
         .contains("sweep_max_joints"));
+    // beyond the load sweep's budget (512 joints) the face search: 1000 voussoirs decided
     let (v, code) = crate::cli::json_of(&[
         "load",
         "--alpha",
@@ -911,14 +912,32 @@ fn search_budget_is_said_not_hidden() {
         "0.8",
         "--horizontal",
     ]);
+    assert_eq!(code, 0, "{v}");
+    assert_eq!(v["search"]["method"], "faces");
+    assert!(v["unique"].is_boolean() && v["lambda"].is_f64(), "{v}");
+    // beyond its budget (4096 joints) not searched, and said so
+    let (v, code) = crate::cli::json_of(&[
+        "load",
+        "--alpha",
+        "0",
+        "--blocks",
+        "5000",
+        "--eta",
+        "0.3",
+        "--mu",
+        "0.8",
+        "--horizontal",
+    ]);
     assert_eq!(code, 1);
     assert_eq!(v["status"], "unresolved");
-    assert!(v["message"]
-        .as_str()
-        .unwrap()
-        .contains("lambda_static of these 1001 joints = "));
-    // decided without the sweep: the static maximum and the states there
-    // (the face's state has λ_static to rounding)
+    let message = v["message"].as_str().unwrap();
+    assert!(message.contains("load_face_max_joints"), "{message}");
+    assert!(
+        message.contains("lambda_static of these 5001 joints = "),
+        "{message}"
+    );
+    // decided without the search: the static maximum and the states there (the face's
+    // state has λ_static to rounding)
     let top = v["lambda_static"].as_f64().unwrap();
     let at_most = v["lambda_at_most"].as_f64().unwrap();
     assert!((at_most - top).abs() <= 1e-14 * top, "{at_most} vs {top}");
@@ -962,9 +981,10 @@ fn search_budget_is_said_not_hidden() {
 
 /// A search that reaches no decision says which step stopped it, typed: the sweep over more
 /// joints than its budget is `Undecided::Budget` (for thickness and load alike), its text
-/// naming the setting (the sweep in η `sweep_max_joints`, the sweep in λ
-/// `load_sweep_max_joints`); a smaller budget on the same arch is the same failure, and
-/// each budget bounds its own sweep only.
+/// naming the setting (the sweep in η `sweep_max_joints`; for a load, beyond the sweep's
+/// `load_sweep_max_joints` the face search, and beyond its `load_face_max_joints` nothing);
+/// a smaller budget on the same arch is the same failure, and each budget bounds its own
+/// search only.
 #[test]
 fn undecided_search_names_its_step() {
     use arch_enum::multiplier::{survey as load_survey, LoadOutcome};
@@ -989,13 +1009,25 @@ fn undecided_search_names_its_step() {
         load_survey(&arch, 0.3, 0.8, &load, &settings).unwrap(),
         Ok(LoadOutcome::Limits(_))
     ));
+    // beyond the load sweep's budget the face search decides, with the sweep's answer
+    // (`load_seam::the_face_search_finds_what_the_sweep_finds`); beyond its own budget
+    // nothing does, and the text names that budget
+    let faces = Settings {
+        load_sweep_max_joints: 20,
+        ..Settings::default()
+    };
+    match load_survey(&arch, 0.3, 0.8, &load, &faces).unwrap() {
+        Ok(LoadOutcome::Limits(s)) => assert_eq!(s.method, "faces"),
+        other => panic!("expected the face search's answer, got {other:?}"),
+    }
     let settings = Settings {
         load_sweep_max_joints: 20,
+        load_face_max_joints: 30,
         ..Settings::default()
     };
     match load_survey(&arch, 0.3, 0.8, &load, &settings).unwrap() {
         Err(Undecided::Budget(t)) => {
-            assert!(t.contains("settings.load_sweep_max_joints = 20"), "{t}")
+            assert!(t.contains("settings.load_face_max_joints = 30"), "{t}")
         }
         Err(other) => panic!("expected a budget failure, got {other:?}"),
         Ok(o) => panic!(

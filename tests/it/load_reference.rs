@@ -406,22 +406,8 @@ impl Case {
             }
             p.solve().map_or(0.0, |sol| sol.value(z[3]))
         };
-        for quad in (0..rows.len()).combinations(4) {
-            let a = nalgebra::Matrix4::from_fn(|r, c| rows[quad[r]].0[c]);
-            let b = nalgebra::Vector4::from_fn(|r, _| -rows[quad[r]].1);
-            let Some(z) = a.lu().solve(&b) else { continue };
-            let z = [z[0], z[1], z[2], z[3]];
-            if !z.iter().all(|v| v.is_finite()) || z[3] < -1e-12 || scale(&z) > 1e6 {
-                continue;
-            }
+        for (z, values) in meeting_points(&rows) {
             let tol = 1e-9 * scale(&z);
-            let values: Vec<f64> = rows
-                .iter()
-                .map(|(a, c)| a[0] * z[0] + a[1] * z[1] + a[2] * z[2] + a[3] * z[3] + c)
-                .collect();
-            if values.iter().any(|&v| v > tol) {
-                continue;
-            }
             let lambda = z[3].max(0.0);
             if lambda_min > 1e-12 && lambda <= lambda_min * (1.0 + 1e-9) {
                 continue;
@@ -470,6 +456,32 @@ impl Case {
         found.sort_by(f64::total_cmp);
         found
     }
+}
+
+/// Every point where four of `rows` (a · (h, v, w, λ) + c ≤ 0) meet with every row holding
+/// to 1e-9 of 1 + ‖z‖₁, λ ≥ 0 and ‖z‖₁ < 10⁶: the point and every row's value there (once
+/// per four rows: a point where more rows meet comes once for each four of them).
+pub(crate) fn meeting_points(rows: &[([f64; 4], f64)]) -> Vec<([f64; 4], Vec<f64>)> {
+    let scale = |z: &[f64; 4]| 1.0 + z.iter().map(|v| v.abs()).sum::<f64>();
+    let mut out = Vec::new();
+    for quad in (0..rows.len()).combinations(4) {
+        let a = nalgebra::Matrix4::from_fn(|r, c| rows[quad[r]].0[c]);
+        let b = nalgebra::Vector4::from_fn(|r, _| -rows[quad[r]].1);
+        let Some(z) = a.lu().solve(&b) else { continue };
+        let z = [z[0], z[1], z[2], z[3]];
+        if !z.iter().all(|v| v.is_finite()) || z[3] < -1e-12 || scale(&z) > 1e6 {
+            continue;
+        }
+        let tol = 1e-9 * scale(&z);
+        let values: Vec<f64> = rows
+            .iter()
+            .map(|(a, c)| a[0] * z[0] + a[1] * z[1] + a[2] * z[2] + a[3] * z[3] + c)
+            .collect();
+        if values.iter().all(|&v| v <= tol) {
+            out.push((z, values));
+        }
+    }
+    out
 }
 
 /// The fill's resultant and first moment about the centre's vertical, (F, S), on the extrados

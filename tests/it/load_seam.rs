@@ -7,14 +7,13 @@
 //! with the active set the rule says; it counts the paths of each arch, which decides how a
 //! search must find its starting points.
 
-use crate::load_reference::{random_loaded, Case};
+use crate::load_reference::{meeting_points, random_loaded, Case};
 use crate::search_reference::Rng;
 use arch_enum::contact::ContactKind;
 use arch_enum::limit_states::LimitState;
 use arch_enum::load::LiveLoad;
 use arch_enum::multiplier::{survey, LoadOutcome};
 use arch_enum::{Arch, Settings, WeightModel};
-use itertools::Itertools;
 
 /// A vertex of P̂: z = (h, v, w, λ) and its active rows (ascending).
 type Vertex = ([f64; 4], Vec<usize>);
@@ -41,19 +40,8 @@ fn scale(z: &[f64; 4]) -> f64 {
 /// (the loaded joint's twin rows, or a coincidence: the generic rule does not apply).
 fn vertices(rows: &[([f64; 4], f64)]) -> Option<Vec<Vertex>> {
     let mut out: Vec<Vertex> = Vec::new();
-    for quad in (0..rows.len()).combinations(4) {
-        let a = nalgebra::Matrix4::from_fn(|r, c| rows[quad[r]].0[c]);
-        let b = nalgebra::Vector4::from_fn(|r, _| -rows[quad[r]].1);
-        let Some(z) = a.lu().solve(&b) else { continue };
-        let z = [z[0], z[1], z[2], z[3]];
-        if !z.iter().all(|v| v.is_finite()) || z[3] < -1e-12 || scale(&z) > 1e6 {
-            continue;
-        }
+    for (z, values) in meeting_points(rows) {
         let tol = 1e-9 * scale(&z);
-        let values: Vec<f64> = rows.iter().map(|(a, c)| dot(a, &z) + c).collect();
-        if values.iter().any(|&v| v > tol) {
-            continue;
-        }
         let active: Vec<usize> = (0..rows.len())
             .filter(|&i| values[i].abs() <= tol)
             .collect();

@@ -90,7 +90,8 @@ fn too_many(joints: usize, most: usize, name: &str) -> Option<Undecided> {
 
 /// The limit states of a discrete arch under a live load at fixed η strictly between
 /// `lambda_min` and `lambda_static`, as [`sweep_load`] finds them, by the vertices of the
-/// admissible (x, λ) on which a sliding row is active ([`facets`]; the events counted are
+/// admissible (x, λ) on which a sliding row is active (docs/design/load-limit-states-on-the-seam.md
+/// §5; the events counted are
 /// those vertices). It needs the admissible (x, λ) to have an interior point (one margin
 /// LP at the middle of the range; the theorem behind it holds only then): without one,
 /// or where the search meets what it does not handle (a vertex with many rows active), it
