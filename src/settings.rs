@@ -384,30 +384,14 @@ impl Settings {
         count("settings.curve_samples", self.curve_samples, 2, 10_000)?;
         count("settings.sweep_pieces", self.sweep_pieces, 4, 10_000)?;
         count("settings.sweep_doublings", self.sweep_doublings, 1, 8)?;
-        count(
-            "settings.sweep_max_joints",
-            self.sweep_max_joints,
-            2,
-            1_000_000,
-        )?;
-        count(
-            "settings.load_sweep_max_joints",
-            self.load_sweep_max_joints,
-            2,
-            1_000_000,
-        )?;
-        count(
-            "settings.load_face_max_joints",
-            self.load_face_max_joints,
-            2,
-            1_000_000,
-        )?;
-        count(
-            "settings.ridge_max_joints",
-            self.ridge_max_joints,
-            2,
-            1_000_000,
-        )?;
+        for (name, v) in [
+            ("settings.sweep_max_joints", self.sweep_max_joints),
+            ("settings.load_sweep_max_joints", self.load_sweep_max_joints),
+            ("settings.load_face_max_joints", self.load_face_max_joints),
+            ("settings.ridge_max_joints", self.ridge_max_joints),
+        ] {
+            count(name, v, 2, 1_000_000)?;
+        }
         Ok(())
     }
 }

@@ -153,13 +153,20 @@ pub fn survey_partial(
         mechanism_at_static,
         limit_states,
         events: sw.events,
-        method: if joints.len() > settings.load_sweep_max_joints {
-            "faces"
-        } else {
-            "sweep"
-        },
+        method: search_method(joints.len(), settings),
         no_mechanism,
     })))
+}
+
+/// How the limit states of a discrete arch of `joints` joints below λ_static are searched:
+/// the sweep, or beyond its budget the face search
+/// ([`crate::limit_states::sweep::faces_load`]).
+fn search_method(joints: usize, settings: &Settings) -> &'static str {
+    if joints > settings.load_sweep_max_joints {
+        "faces"
+    } else {
+        "sweep"
+    }
 }
 
 /// An undecided survey of a discrete arch with the states at λ_static, decided without the
