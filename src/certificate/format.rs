@@ -484,6 +484,10 @@ pub enum LoadSearchMethod {
     /// A discrete arch: the sweep of P(λ) from λ_min to λ_static; `no_mechanism` lists
     /// every point it checked without a mechanism with positive live power.
     Sweep,
+    /// A discrete arch beyond the sweep's budget: the face search, every vertex of the
+    /// admissible (x, λ) on which a sliding row is active (docs/loads.md); `no_mechanism`
+    /// lists every point it checked without a mechanism with positive live power.
+    Faces,
     /// μ = ∞: the static maximum is the only limit state (virtual work: a hinge-only
     /// mechanism dissipates nothing, so a limit state at λ* admits no state at λ > λ*).
     Associative,

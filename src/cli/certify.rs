@@ -243,6 +243,7 @@ fn limit_states_text(cert: &Certificate) -> String {
                     if s.mechanism_at_static { ", one at lambda_static" } else { "" },
                     match s.method {
                         LoadSearchMethod::Sweep => "sweep",
+                        LoadSearchMethod::Faces => "face search",
                         LoadSearchMethod::Associative => "associative",
                         LoadSearchMethod::Refined => "refined",
                         LoadSearchMethod::Found => "found (not claimed complete)",

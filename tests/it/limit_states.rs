@@ -900,34 +900,26 @@ fn search_budget_is_said_not_hidden() {
         .unwrap()
         .contains("sweep_max_joints"));
     // beyond the load sweep's budget (512 joints) the face search: 1000 voussoirs decided
-    let (v, code) = crate::cli::json_of(&[
-        "load",
-        "--alpha",
-        "0",
-        "--blocks",
-        "1000",
-        "--eta",
-        "0.3",
-        "--mu",
-        "0.8",
-        "--horizontal",
-    ]);
+    let horizontal = |blocks: &str| {
+        crate::cli::json_of(&[
+            "load",
+            "--alpha",
+            "0",
+            "--blocks",
+            blocks,
+            "--eta",
+            "0.3",
+            "--mu",
+            "0.8",
+            "--horizontal",
+        ])
+    };
+    let (v, code) = horizontal("1000");
     assert_eq!(code, 0, "{v}");
     assert_eq!(v["search"]["method"], "faces");
     assert!(v["unique"].is_boolean() && v["lambda"].is_f64(), "{v}");
     // beyond its budget (4096 joints) not searched, and said so
-    let (v, code) = crate::cli::json_of(&[
-        "load",
-        "--alpha",
-        "0",
-        "--blocks",
-        "5000",
-        "--eta",
-        "0.3",
-        "--mu",
-        "0.8",
-        "--horizontal",
-    ]);
+    let (v, code) = horizontal("5000");
     assert_eq!(code, 1);
     assert_eq!(v["status"], "unresolved");
     let message = v["message"].as_str().unwrap();

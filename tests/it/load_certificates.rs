@@ -37,6 +37,22 @@ fn round_trip(c: &Certificate) -> Certificate {
     back
 }
 
+/// The report proves all `n` points the search (`sweep` or `face search`) checked without a
+/// mechanism, and says what it does not re-prove (`unproved`).
+fn points_proved(r: &Report, n: usize, search: &str, unproved: &str) {
+    let line = format!("proved (interval arithmetic) at {n} of the {n} points the {search}");
+    assert!(
+        r.checks.iter().any(|l| l.starts_with(&line)),
+        "{:?}",
+        r.checks
+    );
+    assert!(
+        r.checks.iter().any(|l| l.contains(unproved)),
+        "{:?}",
+        r.checks
+    );
+}
+
 /// λ_static of the survey.
 fn lambda_static(arch: &Arch, eta: f64, mu: f64, load: &LiveLoad) -> f64 {
     match survey(arch, eta, mu, load, &Settings::default()).unwrap() {
@@ -116,16 +132,35 @@ fn unsymmetric_reduced_non_unique_case_is_certified_with_its_sweep() {
     // every point the sweep checked without a mechanism is proved
     let n = s.no_mechanism.len();
     assert!(n > 10, "{n}");
-    let line = format!("proved (interval arithmetic) at {n} of the {n} points");
-    assert!(
-        r.checks.iter().any(|l| l.starts_with(&line)),
-        "{:?}",
-        r.checks
+    points_proved(
+        &r,
+        n,
+        "sweep",
+        "not re-proved: that the sweep met every event",
     );
-    assert!(r
-        .checks
-        .iter()
-        .any(|l| l.contains("not re-proved: that the sweep met every event")));
+}
+
+/// Beyond the sweep's budget (512 joints) the face search lists the limit states; its
+/// certificate carries its points without a mechanism (method `faces`), each proved, and
+/// says what is not re-proved.
+#[test]
+fn the_face_search_beyond_the_sweeps_budget_is_certified() {
+    let arch = Arch::symmetric(0.0, WeightModel::Centreline)
+        .unwrap()
+        .with_blocks(600)
+        .unwrap();
+    let load = LiveLoad::Point {
+        beta: 40f64.to_radians(),
+    };
+    let c = cert(&arch, 0.3, 0.6, &load, 1e-12);
+    let r = holds(&round_trip(&c));
+    let s = c.load_search.as_ref().unwrap();
+    assert_eq!(s.method, LoadSearchMethod::Faces);
+    assert!(s.unique && s.lambda.is_some());
+    let n = s.no_mechanism.len();
+    assert!(n > 100, "{n}");
+    let unproved = "not re-proved: that the face search visited every vertex";
+    points_proved(&r, n, "face search", unproved);
 }
 
 #[test]

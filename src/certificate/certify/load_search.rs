@@ -19,9 +19,7 @@ use crate::settings::Settings;
 use crate::statics::Reactions;
 
 /// The evidence of the limit states of a survey (`static`: the state at λ_static and its
-/// active contacts, when finite). The face search's answer (method `faces`, beyond
-/// `settings.load_sweep_max_joints`) goes in as method `found`: each state listed and
-/// checked, the list not claimed complete, no collapse multiplier claimed.
+/// active contacts, when finite).
 pub(super) fn evidence(
     arch: &Arch,
     eta: f64,
@@ -30,11 +28,8 @@ pub(super) fn evidence(
     at_static: Option<(f64, Reactions, &[Loaded])>,
     settings: &Settings,
 ) -> Result<LoadSearchEvidence, NotCertified> {
-    // the face search (beyond settings.load_sweep_max_joints) has no evidence format yet:
-    // its states are listed as found (each checked), the list not claimed complete
-    let faces = sv.method == "faces";
     let method = match sv.method {
-        "faces" => LoadSearchMethod::Found,
+        "faces" => LoadSearchMethod::Faces,
         "sweep" => LoadSearchMethod::Sweep,
         "associative" => LoadSearchMethod::Associative,
         _ => LoadSearchMethod::Refined,
@@ -56,18 +51,14 @@ pub(super) fn evidence(
     };
     Ok(LoadSearchEvidence {
         method,
-        events: if faces { 0 } else { sv.events },
+        events: sv.events,
         lambda_min: sv.lambda_min.0,
         mechanism_at_static: sv.mechanism_at_static,
-        unique: sv.unique() && !faces,
-        lambda: sv.lambda().filter(|_| !faces),
+        unique: sv.unique(),
+        lambda: sv.lambda(),
         limit_states,
         static_state,
-        no_mechanism: if faces {
-            Vec::new()
-        } else {
-            checked(arch, eta, load, &sv.no_mechanism, settings)
-        },
+        no_mechanism: checked(arch, eta, load, &sv.no_mechanism, settings),
     })
 }
 
@@ -110,8 +101,9 @@ pub(super) fn found_evidence(
 }
 
 /// Where λ_static is unbounded and no limit state exists (`NoCollapse`): at μ = ∞ the
-/// associative argument; at finite μ on a discrete arch the sweep again (the survey keeps
-/// no list there), its points without a mechanism as evidence.
+/// associative argument; at finite μ on a discrete arch the sweep again (or the face
+/// search, beyond its budget; the survey keeps no list there), its points without a
+/// mechanism as evidence.
 pub(super) fn unbounded_evidence(
     arch: &Arch,
     eta: f64,
@@ -134,9 +126,15 @@ pub(super) fn unbounded_evidence(
     if mu.is_infinite() {
         return Some(empty(LoadSearchMethod::Associative, 0, Vec::new()));
     }
-    if !matches!(arch.layout(), JointLayout::Discrete(_)) {
+    let JointLayout::Discrete(joints) = arch.layout() else {
         return None;
-    }
+    };
+    // beyond the sweep's budget `sweep_load` runs the face search
+    let method = if joints.len() > settings.load_sweep_max_joints {
+        LoadSearchMethod::Faces
+    } else {
+        LoadSearchMethod::Sweep
+    };
     let sw = sweep_load(
         arch,
         eta,
@@ -150,7 +148,7 @@ pub(super) fn unbounded_evidence(
         return None;
     }
     Some(empty(
-        LoadSearchMethod::Sweep,
+        method,
         sw.events,
         checked(arch, eta, load, &sw.no_mechanism, settings),
     ))

@@ -51,7 +51,8 @@ use crate::certificate::format::{
 /// (`hinges_only` or `associative`), or the refinement.
 #[derive(Clone, Copy)]
 enum Method {
-    Sweep,
+    /// The sweep, or a load's face search (`faces`): points checked without a mechanism.
+    Sweep(&'static str),
     Infinite(&'static str),
     Refined,
     Ridge,
@@ -61,7 +62,7 @@ enum Method {
 impl Method {
     fn name(self) -> &'static str {
         match self {
-            Method::Sweep => "sweep",
+            Method::Sweep(name) => name,
             Method::Infinite(name) => name,
             Method::Refined => "refined",
             Method::Ridge => "ridge",
@@ -141,13 +142,13 @@ impl Walk<'_> {
     ) -> Result<(), Rejection> {
         let section = self.section;
         match method {
-            Method::Sweep => {
+            Method::Sweep(name) => {
                 if model.joints.is_none() {
-                    return reject(format!("{section}: method sweep needs a discrete arch"));
+                    return reject(format!("{section}: method {name} needs a discrete arch"));
                 }
                 if self.live.is_some() && mu.is_none() {
                     return reject(
-                        "load_search: method sweep is for finite friction (mu = inf is associative)",
+                        "load_search: methods sweep and faces are for finite friction (mu = inf is associative)",
                     );
                 }
                 let mut proved = 0;
@@ -158,17 +159,18 @@ impl Walk<'_> {
                     }
                 }
                 let n = points.len();
+                let (search, covered) = match (name, self.live) {
+                    ("faces", _) => ("face search", "visited every vertex of the admissible (x, lambda) on which a sliding row is active (docs/loads.md), so that no limit state lies elsewhere"),
+                    (_, Some(_)) => ("sweep", "met every event of P(lambda) (docs/loads.md), so that no limit state lies between them"),
+                    (_, None) => ("sweep", "met every event (docs/limit-states.md)"),
+                };
                 checks.push(format!(
-                    "proved (interval arithmetic) at {proved} of the {n} points the sweep checked without finding a mechanism ({events} events): their active contacts carry no mechanism{} (Farkas); not re-proved: that the sweep met every event{}",
+                    "proved (interval arithmetic) at {proved} of the {n} points the {search} checked without finding a mechanism ({events} events): their active contacts carry no mechanism{} (Farkas); not re-proved: that the {search} {covered}",
                     self.power(),
-                    match self.live {
-                        Some(_) => " of P(lambda) (docs/loads.md), so that no limit state lies between them",
-                        None => " (docs/limit-states.md)",
-                    }
                 ));
                 if proved < n {
                     checks.push(format!(
-                        "not proved: {} points of the sweep have no Farkas certificate covering every sliding sense",
+                        "not proved: {} points of the {search} have no Farkas certificate covering every sliding sense",
                         n - proved
                     ));
                 }
@@ -245,7 +247,7 @@ pub(super) fn verify_search(
         checks.push(walk.states_line(search.limit_states_above.len(), etas));
     }
     let method = match search.method {
-        SearchMethod::Sweep => Method::Sweep,
+        SearchMethod::Sweep => Method::Sweep("sweep"),
         SearchMethod::HingesOnly => Method::Infinite("hinges only"),
         SearchMethod::Refined => Method::Refined,
         SearchMethod::Ridge => Method::Ridge,
@@ -482,7 +484,8 @@ pub(super) fn verify_load_search(
     check_mechanism_at_static(search, lo, hi)?;
     static_state(model, &walk, mu, search, (lo, hi), &mut checks)?;
     let method = match search.method {
-        LoadSearchMethod::Sweep => Method::Sweep,
+        LoadSearchMethod::Sweep => Method::Sweep("sweep"),
+        LoadSearchMethod::Faces => Method::Sweep("faces"),
         LoadSearchMethod::Associative => Method::Infinite("associative"),
         LoadSearchMethod::Refined => Method::Refined,
         LoadSearchMethod::Found => Method::Found,
@@ -490,7 +493,8 @@ pub(super) fn verify_load_search(
     let mut points: Vec<Point> = Vec::new();
     for (i, p) in search.no_mechanism.iter().enumerate() {
         let top = hi.unwrap_or(f64::INFINITY);
-        if matches!(method, Method::Sweep) && !(p.lambda >= search.lambda_min && p.lambda <= top) {
+        if matches!(method, Method::Sweep(_)) && !(p.lambda >= search.lambda_min && p.lambda <= top)
+        {
             return reject(format!(
                 "load_search: no_mechanism {i}: lambda = {} lies outside [lambda_min, lambda_hi]",
                 p.lambda
