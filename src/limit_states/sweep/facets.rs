@@ -63,6 +63,8 @@ pub(super) struct Rows {
     negative_axes: [usize; 4],
     /// The rows scaled for the LPs.
     normalised: NormalisedRows,
+    /// Each row's ‖a‖₁.
+    norms: Vec<f64>,
     /// The rows that are the arch's contacts (not the box, not the λ-range).
     contacts: usize,
 }
@@ -117,6 +119,7 @@ impl Rows {
         let found = axes.iter().chain(&negative_axes).all(|&a| a != usize::MAX);
         (found && contacts == sw.planes.len() - 6).then(|| Rows {
             normalised: NormalisedRows::new(&rows),
+            norms: rows.iter().map(|(a, _)| norm1(a)).collect(),
             rows,
             sliding,
             axes,
@@ -134,9 +137,9 @@ impl Rows {
     fn active(&self, z: &[f64; 4]) -> Vec<usize> {
         let near = 1e-6 * (1.0 + norm1(z));
         let mut out = Vec::new();
-        for (i, (a, c)) in self.rows.iter().enumerate() {
+        for (i, ((a, c), &norm)) in self.rows.iter().zip(&self.norms).enumerate() {
             let v = dot(a, z) + c;
-            if v.abs() > near * norm1(a).max(c.abs()) {
+            if v.abs() > near * norm.max(c.abs()) {
                 continue;
             }
             let terms = (0..4).map(|k| (a[k] * z[k]).abs()).sum::<f64>() + c.abs();
@@ -325,12 +328,12 @@ impl Search<'_> {
     ) -> Result<[f64; 4], Undecided> {
         let rows = self.rows;
         let mut best: Option<(f64, usize)> = None;
-        for i in (0..rows.rows.len()).filter(|i| !act.contains(i)) {
-            let rate = dot(&rows.rows[i].0, &d);
-            if rate <= PIVOT_REL * norm1(&rows.rows[i].0) {
+        for (i, ((a, c), &norm)) in rows.rows.iter().zip(&rows.norms).enumerate() {
+            let rate = dot(a, &d);
+            if rate <= PIVOT_REL * norm || act.contains(&i) {
                 continue;
             }
-            let step = (-rows.value(i, &z) / rate).max(0.0);
+            let step = (-(dot(a, &z) + c) / rate).max(0.0);
             if best.is_none_or(|b| step < b.0) {
                 best = Some((step, i));
             }
