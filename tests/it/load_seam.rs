@@ -455,7 +455,7 @@ fn the_face_search_finds_what_the_sweep_finds() {
         }
     }
     println!(
-        "{compared} arches compared, {states} limit states below lambda_static, {} differences",
+        "{compared} arches compared, {states} limit states (those at lambda_static included), {} differences",
         failures.len()
     );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
