@@ -12,7 +12,7 @@ use crate::contact::Contact;
 use crate::family::Tagged;
 use crate::kinematics::{column, power};
 use crate::limit_states::discretised::{self, agreed, Carried, Part};
-use crate::limit_states::sweep::sweep_load_with_top;
+use crate::limit_states::sweep::{by_faces, sweep_load_with_top};
 use crate::limit_states::LimitState;
 use crate::load::{rows, LiveLoad, LoadRow, Side};
 use crate::lp::{self, LpOutcome};
@@ -162,7 +162,7 @@ pub fn survey_partial(
 /// the sweep, or beyond its budget the face search
 /// ([`crate::limit_states::sweep::faces_load`]).
 fn search_method(joints: usize, settings: &Settings) -> &'static str {
-    if joints > settings.load_sweep_max_joints {
+    if by_faces(joints, settings) {
         "faces"
     } else {
         "sweep"

@@ -11,7 +11,7 @@ use crate::certificate::format::{
     NotCertified,
 };
 use crate::contact::{Contact, ContactKind};
-use crate::limit_states::sweep::{sweep_load, CheckedPoint};
+use crate::limit_states::sweep::{by_faces, sweep_load, CheckedPoint};
 use crate::limit_states::LimitState;
 use crate::load::LiveLoad;
 use crate::multiplier::{LoadSurvey, LoadUnsettled, UNBOUNDED_SEARCH_TOP};
@@ -130,7 +130,7 @@ pub(super) fn unbounded_evidence(
         return None;
     };
     // beyond the sweep's budget `sweep_load` runs the face search
-    let method = if joints.len() > settings.load_sweep_max_joints {
+    let method = if by_faces(joints.len(), settings) {
         LoadSearchMethod::Faces
     } else {
         LoadSearchMethod::Sweep

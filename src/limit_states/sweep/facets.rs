@@ -198,7 +198,7 @@ fn edge_direction(rows: &Rows, t: [usize; 3]) -> Option<[f64; 4]> {
         let minor = Matrix3::from_fn(|r, c| rows.rows[t[r]].0[cols[c]]).determinant();
         *dk = if k % 2 == 0 { minor } else { -minor };
     }
-    let scale = t.iter().map(|&i| norm1(&rows.rows[i].0)).product::<f64>();
+    let scale = t.iter().map(|&i| rows.norms[i]).product::<f64>();
     let n = norm1(&d);
     (n > PIVOT_REL * scale).then(|| d.map(|v| v / n))
 }
@@ -269,7 +269,7 @@ impl Search<'_> {
             };
             for d in [d, d.map(|v| -v)] {
                 let along = |i: usize| dot(&self.rows.rows[i].0, &d);
-                let tol = |i: usize| PIVOT_REL * norm1(&self.rows.rows[i].0);
+                let tol = |i: usize| PIVOT_REL * self.rows.norms[i];
                 // an edge: no active row rises along d, and the rows that stay active
                 // (rank 3) hold a sliding row
                 if act.iter().any(|&i| along(i) > tol(i))

@@ -133,6 +133,14 @@ pub fn faces_load(
     }
 }
 
+/// Whether a load's limit states on a discrete arch of `joints` joints are searched by the
+/// face search ([`faces_load`], beyond the sweep's budget `settings.load_sweep_max_joints`)
+/// rather than by the sweep: the one rule that the survey, its method's name and the
+/// certificate follow.
+pub fn by_faces(joints: usize, settings: &Settings) -> bool {
+    joints > settings.load_sweep_max_joints
+}
+
 /// Follows P(λ) = {x : φ_i(x, λ) ≤ 0} of a discrete arch under a live load at fixed η,
 /// from the least admissible multiplier λ_min (a state `x_min` there) to λ_static, and
 /// returns every limit state met on the way whose mechanism has positive live power (the
@@ -177,7 +185,7 @@ pub fn sweep_load_with_top(
     let JointLayout::Discrete(joints) = arch.layout() else {
         return failure(not_discrete());
     };
-    if joints.len() > settings.load_sweep_max_joints {
+    if by_faces(joints.len(), settings) {
         // beyond the sweep's budget, the face search (no points at the top: the caller's
         // walk on the optimal face finds them)
         let most = settings.load_face_max_joints;
