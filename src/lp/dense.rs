@@ -506,8 +506,9 @@ impl NormalisedRows {
 
     /// Maximises row `s` over the polyhedron (the caller's rows must bound it, a box among
     /// them) and returns the optimal basis (four row indices); `Ok(None)`: no z satisfies
-    /// the rows. The simplex starts from `warm` where it is dual feasible for this
-    /// objective (a neighbouring LP's optimum), else from row `s` itself and three of the
+    /// the rows. `warm`, an optimal basis of an earlier LP over these rows (a neighbouring
+    /// row's), is returned at once where it is dual feasible for this objective (its vertex
+    /// is feasible, so it is optimal); else the simplex starts from row `s` itself and three of the
     /// rows `axes` (gradients +e_0 … +e_3): the one along the largest component of row s's
     /// gradient is left out, so the basis is nonsingular, with dual values (1, 0, 0, 0).
     /// `tol`: the feasibility tolerance, relative to 1 + ‖z‖₁.
@@ -526,9 +527,11 @@ impl NormalisedRows {
         for (slot, k) in (0..4).filter(|&k| k != skip).enumerate() {
             cold[slot + 1] = axes[k];
         }
-        let start = warm
-            .filter(|w| dual_feasible(&self.a, w, objective))
-            .unwrap_or(cold);
+        let start = match warm {
+            // an optimum of these rows, dual feasible for this objective too: optimal
+            Some(w) if dual_feasible(&self.a, &w, objective) => return Ok(Some(w)),
+            _ => cold,
+        };
         match dual_simplex(&self.a, &self.b, objective, start, 4, tol)? {
             End::Optimal { basis, .. } => Ok(Some(basis)),
             End::DualUnbounded => Ok(None),

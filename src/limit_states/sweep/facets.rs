@@ -50,14 +50,18 @@ const TOUCH_REL: f64 = 1e-11;
 /// its LPs' optima are vertices to rounding.
 const BOX_SLACK_REL: f64 = 1e-9;
 
+/// A bound on the relative difference of a row's affine value and its plane's own
+/// evaluation (a few roundings of the terms).
+const ROUNDING_REL: f64 = 1e-12;
+
 /// Feasibility tolerance of the LPs that decide whether a sliding row is ever active.
 const LP_TOL: f64 = 1e-12;
 
 /// The face search's rows and what it knows of them: the planes' rows in z, then the two
-/// rows of the λ-range; which are sliding rows; the rows along +e_k.
+/// rows of the λ-range; which are sliding rows (their kind); the rows along +e_k.
 pub(super) struct Rows {
     rows: Vec<Row>,
-    sliding: Vec<bool>,
+    sliding: Vec<Option<ContactKind>>,
     axes: [usize; 4],
     /// The rows along −e_k.
     negative_axes: [usize; 4],
@@ -106,14 +110,16 @@ impl Rows {
                 }
             }
             contacts += usize::from(p.contact.is_some());
-            sliding.push(p.contact.is_some_and(|c| {
-                matches!(c.kind, ContactKind::SlidePlus | ContactKind::SlideMinus)
-            }));
+            sliding.push(
+                p.contact
+                    .map(|c| c.kind)
+                    .filter(|k| matches!(k, ContactKind::SlidePlus | ContactKind::SlideMinus)),
+            );
             rows.push((a, at(c, 0)));
         }
         rows.push(([0.0, 0.0, 0.0, -1.0], lambda_min));
         rows.push(([0.0, 0.0, 0.0, 1.0], -top));
-        sliding.extend([false, false]);
+        sliding.extend([None, None]);
         axes[3] = rows.len() - 1;
         negative_axes[3] = rows.len() - 2;
         let found = axes.iter().chain(&negative_axes).all(|&a| a != usize::MAX);
@@ -150,11 +156,28 @@ impl Rows {
         out
     }
 
-    /// The box of P̂'s projection onto (h, v, λ) (six LPs), widened by `BOX_SLACK_REL`:
-    /// the largest and least value of each; `None` where an LP fails.
+    /// [`Sweeper::active`] at z, the rows' affine values (exact up to rounding) sparing the
+    /// planes' own evaluation where they are clearly away from their tolerance.
+    fn sweep_active(&self, sw: &Sweeper, z: &[f64; 4]) -> Vec<usize> {
+        let size = z.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        sw.active_where(&[z[0], z[1], z[2]], z[3], |i, tol| {
+            let (_, c) = self.rows[i];
+            // the two evaluations differ by a few roundings of the terms
+            self.value(i, z).abs() <= 2.0 * tol + ROUNDING_REL * (self.norms[i] * size + c.abs())
+        })
+    }
+
+    /// The box of P̂'s projection onto (h, v, λ), widened by `BOX_SLACK_REL`: the least and
+    /// largest h and v (four LPs) and λ's own range [λ_min, top] (rows of P̂; no LP: the
+    /// simplex stalls on λ's, whose optimal face is a whole facet); `None` where an LP
+    /// fails.
     fn projection_box(&self) -> Option<[[f64; 2]; 3]> {
+        let widened = |lo: f64, hi: f64| {
+            let slack = BOX_SLACK_REL * (1.0 + lo.abs().max(hi.abs()));
+            [lo - slack, hi + slack]
+        };
         let mut out = [[0.0; 2]; 3];
-        for (slot, k) in [0, 1, 3].into_iter().enumerate() {
+        for k in [0, 1] {
             // the row along +e_k is x_k + c ≤ 0: its largest value less c is x_k's
             let up = |row: usize| -> Option<f64> {
                 let basis = self
@@ -164,10 +187,13 @@ impl Rows {
                 let z = self.meet(&basis)?;
                 Some(z[k])
             };
-            let (lo, hi) = (up(self.negative_axes[k])?, up(self.axes[k])?);
-            let slack = BOX_SLACK_REL * (1.0 + lo.abs().max(hi.abs()));
-            out[slot] = [lo - slack, hi + slack];
+            out[k] = widened(up(self.negative_axes[k])?, up(self.axes[k])?);
         }
+        // the rows −λ + λ_min ≤ 0 and λ − top ≤ 0
+        out[2] = widened(
+            self.rows[self.negative_axes[3]].1,
+            -self.rows[self.axes[3]].1,
+        );
         Some(out)
     }
 
@@ -243,7 +269,7 @@ impl Search<'_> {
         self.vertices.push(z);
         if z[3] > band.0 && z[3] < band.1 {
             let x = [z[0], z[1], z[2]];
-            let planes = sw.active(&x, z[3]);
+            let planes = self.rows.sweep_active(sw, &z);
             sw.check(x, z[3], &planes);
         }
         self.queue.push_back(act);
@@ -275,7 +301,7 @@ impl Search<'_> {
                 if act.iter().any(|&i| along(i) > tol(i))
                     || !act
                         .iter()
-                        .any(|&i| self.rows.sliding[i] && along(i).abs() <= tol(i))
+                        .any(|&i| self.rows.sliding[i].is_some() && along(i).abs() <= tol(i))
                 {
                     continue;
                 }
@@ -380,20 +406,25 @@ pub(super) fn search(sw: &mut Sweeper, lambda_min: f64, top: f64) -> Result<usiz
     // rows negative over the box of P̂'s projection need no LP (where the box's LPs fail,
     // every row gets its LP)
     let bounds = rows.projection_box();
-    // each LP starts from the last one's optimum where it can (neighbouring joints' rows)
-    let mut warm = None;
+    // each LP starts from the optimum of the last one of its kind where it can (the
+    // neighbouring joint's row)
+    let mut warm = [None; 2];
     for r in 0..rows.rows.len() {
-        if !rows.sliding[r] || s.seen_active[r] || bounds.is_some_and(|b| rows.below_box(r, &b)) {
+        let Some(kind) = rows.sliding[r] else {
+            continue;
+        };
+        if s.seen_active[r] || bounds.is_some_and(|b| rows.below_box(r, &b)) {
             continue;
         }
+        let warm = &mut warm[usize::from(kind == ContactKind::SlidePlus)];
         let lp = rows
             .normalised
-            .max_row(r, rows.axes, warm, LP_TOL)
+            .max_row(r, rows.axes, *warm, LP_TOL)
             .map_err(|e| Undecided::Lp(format!("the face search's LP: {e:?}")))?;
         let Some(basis) = lp else {
             return Ok(0); // P̂ is empty
         };
-        warm = Some(basis);
+        *warm = Some(basis);
         let Some(z) = rows.meet(&basis) else {
             return Err(Undecided::NotCovered(
                 "a singular basis of the face search's LP".into(),

@@ -104,6 +104,17 @@ impl Sweeper<'_> {
     /// Planes active at (x, η): |φ| within `event_tol` of the plane's own magnitude
     /// ([`magnitude`]: shallow arches have φ of order η).
     pub(super) fn active(&self, x: &Reactions, eta: f64) -> Vec<usize> {
+        self.active_where(x, eta, |_, _| true)
+    }
+
+    /// [`Sweeper::active`] with a cheaper first test: `may(i, tol)` is false only where
+    /// plane i's |φ| surely exceeds `tol` (its tolerance), and then φ is not evaluated.
+    pub(super) fn active_where(
+        &self,
+        x: &Reactions,
+        eta: f64,
+        may: impl Fn(usize, f64) -> bool,
+    ) -> Vec<usize> {
         let thickness = match self.param {
             Param::Thickness => eta,
             Param::Multiplier { eta, .. } => eta,
@@ -117,7 +128,8 @@ impl Sweeper<'_> {
                     }
                     None => BOX,
                 };
-                p.value(x, eta).abs() <= self.settings.event_tol * size
+                let tol = self.settings.event_tol * size;
+                may(i, tol) && p.value(x, eta).abs() <= tol
             })
             .collect()
     }
