@@ -506,9 +506,10 @@ impl NormalisedRows {
 
     /// Maximises row `s` over the polyhedron (the caller's rows must bound it, a box among
     /// them) and returns the optimal basis (four row indices); `Ok(None)`: no z satisfies
-    /// the rows. `warm`, an optimal basis of an earlier LP over these rows (a neighbouring
-    /// row's), is returned at once where it is dual feasible for this objective (its vertex
-    /// is feasible, so it is optimal); else the simplex starts from row `s` itself and three of the
+    /// the rows. From `warm`, an optimal basis of an earlier LP over these rows (a
+    /// neighbouring row's; its vertex is feasible), the primal simplex
+    /// ([`primal_simplex`]); without one, or where that fails, the dual simplex from row
+    /// `s` itself and three of the
     /// rows `axes` (gradients +e_0 … +e_3): the one along the largest component of row s's
     /// gradient is left out, so the basis is nonsingular, with dual values (1, 0, 0, 0).
     /// `tol`: the feasibility tolerance, relative to 1 + ‖z‖₁.
@@ -527,16 +528,84 @@ impl NormalisedRows {
         for (slot, k) in (0..4).filter(|&k| k != skip).enumerate() {
             cold[slot + 1] = axes[k];
         }
-        let start = match warm {
-            // an optimum of these rows, dual feasible for this objective too: optimal
-            Some(w) if dual_feasible(&self.a, &w, objective) => return Ok(Some(w)),
-            _ => cold,
-        };
-        match dual_simplex(&self.a, &self.b, objective, start, 4, tol)? {
+        if let Some(w) = warm {
+            // an optimum of these rows is a feasible vertex: the primal simplex goes on
+            // from it (where the objective changed a little, a few steps)
+            if let Ok(basis) = primal_simplex(&self.a, &self.b, objective, w, tol) {
+                return Ok(Some(basis));
+            }
+        }
+        match dual_simplex(&self.a, &self.b, objective, cold, 4, tol)? {
             End::Optimal { basis, .. } => Ok(Some(basis)),
             End::DualUnbounded => Ok(None),
         }
     }
+}
+
+/// The primal simplex method on max cᵀz subject to a_j·z ≤ b_j (z ∈ R⁴), from the
+/// vertex of `basis` (feasible to `tol` × (1 + ‖z‖₁)): while a dual value y = B⁻¹c is
+/// below −[`WARM_DUAL_TOL`] (the most negative; Bland's rule, the lowest row, after more
+/// than 8 degenerate steps), its row leaves along d with a_B·d = −e_k (c·d = −y_k > 0)
+/// until the first row it meets (ratio test over every row, ties to the lowest index).
+/// `Err` where a basis is singular, no row bounds the step, or steps run out: the
+/// caller then starts the dual simplex afresh.
+fn primal_simplex(
+    a: &[[f64; 4]],
+    b: &[f64],
+    c: [f64; 4],
+    mut basis: [usize; 4],
+    tol: f64,
+) -> Result<[usize; 4], LpOutcome> {
+    let m = a.len();
+    if basis.iter().any(|&i| i >= m) || (0..4).any(|p| (p + 1..4).any(|q| basis[p] == basis[q])) {
+        return Err(LpOutcome::Failed("not a basis".into()));
+    }
+    let singular = || LpOutcome::Failed("singular basis".into());
+    let c = Vector4::from_row_slice(&c);
+    let mut degenerate = 0usize;
+    for _ in 0..(2 * m + 100) {
+        let bmat = Matrix4::from_fn(|r, col| a[basis[col]][r]);
+        let y = bmat.lu().solve(&c).ok_or_else(singular)?;
+        let leaving = (0..4).filter(|&k| y[k] < -WARM_DUAL_TOL).min_by(|&p, &q| {
+            if degenerate > 8 {
+                basis[p].cmp(&basis[q])
+            } else {
+                y[p].total_cmp(&y[q])
+            }
+        });
+        let Some(k) = leaving else {
+            return Ok(basis);
+        };
+        let bt = bmat.transpose().lu();
+        let z = bt
+            .solve(&Vector4::from_fn(|i, _| b[basis[i]]))
+            .ok_or_else(singular)?;
+        let d = bt
+            .solve(&Vector4::from_fn(|i, _| if i == k { -1.0 } else { 0.0 }))
+            .ok_or_else(singular)?;
+        let scale = z.iter().fold(1.0, |s, v| s + v.abs());
+        let mut enter: Option<(usize, f64)> = None;
+        for (j, (aj, bj)) in a.iter().zip(b).enumerate() {
+            let rate = aj[0] * d[0] + aj[1] * d[1] + aj[2] * d[2] + aj[3] * d[3];
+            if rate <= PIVOT_TOL || basis.contains(&j) {
+                continue;
+            }
+            let slack = bj - (aj[0] * z[0] + aj[1] * z[1] + aj[2] * z[2] + aj[3] * z[3]);
+            if slack < -tol * scale {
+                return Err(LpOutcome::Failed("the start is not feasible".into()));
+            }
+            let step = slack.max(0.0) / rate;
+            if enter.is_none_or(|(_, best)| step < best - RATIO_TIE) {
+                enter = Some((j, step));
+            }
+        }
+        let Some((j, step)) = enter else {
+            return Err(LpOutcome::Failed("unbounded".into()));
+        };
+        degenerate = if step <= RATIO_TIE { degenerate + 1 } else { 0 };
+        basis[k] = j;
+    }
+    Err(LpOutcome::Failed("iteration limit".into()))
 }
 
 /// Whether `basis` indexes four distinct rows of `a` forming a nonsingular B with
