@@ -581,3 +581,92 @@ fn ring_slopes_agree_with_the_full_evaluation_within_the_scan_bound() {
     assert!(worst > 0.0, "no rounding difference seen");
     assert!(worst <= 1.0, "the largest gap is {worst} of the bound");
 }
+
+/// The dense LP's largest value of each row over a polytope in R⁴
+/// (`NormalisedRows::max_row`), the rows taken in turn as the face search takes them: each
+/// LP from the last one's optimal basis (returned where still optimal, else the primal
+/// simplex from its vertex) gives the value of the dual simplex started afresh, at a
+/// feasible vertex. 300 random polytopes: a box and random rows (the origin inside), and
+/// rows that never bind (far out) as objectives, a smooth family (each a little turned
+/// from the last) and random ones between.
+#[test]
+fn max_row_from_a_neighbours_optimum_is_the_cold_optimum() {
+    use arch_enum::lp::dense::NormalisedRows;
+    use nalgebra::{Matrix4, Vector4};
+    let mut rng = Lcg(7);
+    let (mut moved, mut lps) = (0usize, 0usize);
+    for case in 0..300 {
+        let mut rows: Vec<([f64; 4], f64)> = Vec::new();
+        for sign in [1.0, -1.0] {
+            for k in 0..4 {
+                let mut e = [0.0; 4];
+                e[k] = sign;
+                rows.push((e, -2.0 - rng.next()));
+            }
+        }
+        let axes = [0, 1, 2, 3];
+        for _ in 0..(10 + case % 60) {
+            let a = [0.0; 4].map(|_: f64| 2.0 * rng.next() - 1.0);
+            rows.push((a, -0.05 - rng.next()));
+        }
+        let first = rows.len();
+        let (t0, dt) = (rng.next() * 6.0, 0.01 + 0.1 * rng.next());
+        for i in 0..60 {
+            let t = t0 + dt * i as f64;
+            let a = if i % 7 == 6 {
+                [0.0; 4].map(|_: f64| 2.0 * rng.next() - 1.0)
+            } else {
+                [
+                    t.cos(),
+                    t.sin() * (0.7 * t).cos(),
+                    t.sin() * (0.7 * t).sin(),
+                    0.3 * (1.3 * t).sin(),
+                ]
+            };
+            rows.push((a, -100.0));
+        }
+        let normalised = NormalisedRows::new(&rows);
+        let dot = |a: &[f64; 4], z: &[f64; 4]| a.iter().zip(z).map(|(x, y)| x * y).sum::<f64>();
+        // row s's value at the vertex of `basis`, and the largest normalised row there
+        let value = |s: usize, basis: [usize; 4]| -> (f64, f64) {
+            let m = Matrix4::from_fn(|r, c| rows[basis[r]].0[c]);
+            let b = Vector4::from_fn(|r, _| -rows[basis[r]].1);
+            let z = m.lu().solve(&b).expect("a nonsingular basis");
+            let z = [z[0], z[1], z[2], z[3]];
+            let worst = rows
+                .iter()
+                .map(|(a, c)| (dot(a, &z) + c) / dot(a, a).sqrt())
+                .fold(f64::NEG_INFINITY, f64::max);
+            (dot(&rows[s].0, &z) + rows[s].1, worst)
+        };
+        let mut warm = None;
+        for s in first..rows.len() {
+            let cold = normalised
+                .max_row(s, axes, None, 1e-12)
+                .unwrap()
+                .expect("feasible");
+            let from = normalised
+                .max_row(s, axes, warm, 1e-12)
+                .unwrap()
+                .expect("feasible");
+            let ((vc, fc), (vw, fw)) = (value(s, cold), value(s, from));
+            assert!(
+                fc <= 1e-10 && fw <= 1e-10,
+                "case {case} row {s}: infeasible ({fc:e}, {fw:e})"
+            );
+            assert!(
+                (vc - vw).abs() <= 1e-9 * (1.0 + vc.abs()),
+                "case {case} row {s}: cold {vc} vs warm {vw}"
+            );
+            moved += usize::from(warm.is_some_and(|w| w != from));
+            lps += 1;
+            warm = Some(from);
+        }
+    }
+    // the primal simplex ran: the optimum moved from the warm basis on many LPs
+    assert!(
+        moved > lps / 4,
+        "{moved} of {lps} LPs moved from their warm basis"
+    );
+    println!("{lps} LPs, {moved} moved from their warm basis");
+}
