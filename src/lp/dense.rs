@@ -547,8 +547,9 @@ impl NormalisedRows {
 /// below −[`WARM_DUAL_TOL`] (the most negative; Bland's rule, the lowest row, after more
 /// than 8 degenerate steps), its row leaves along d with a_B·d = −e_k (c·d = −y_k > 0)
 /// until the first row it meets (ratio test over every row, ties to the lowest index).
-/// `Err` where a basis is singular, no row bounds the step, or steps run out: the
-/// caller then starts the dual simplex afresh.
+/// `Err` where a basis is singular, no row bounds the step, steps run out, or the optimal
+/// vertex is not feasible to `tol` (a nearly singular basis): the caller then starts the
+/// dual simplex afresh.
 fn primal_simplex(
     a: &[[f64; 4]],
     b: &[f64],
@@ -565,6 +566,10 @@ fn primal_simplex(
     let mut degenerate = 0usize;
     for _ in 0..(2 * m + 100) {
         let bmat = Matrix4::from_fn(|r, col| a[basis[col]][r]);
+        let bt = bmat.transpose().lu();
+        let z = bt
+            .solve(&Vector4::from_fn(|i, _| b[basis[i]]))
+            .ok_or_else(singular)?;
         let y = bmat.lu().solve(&c).ok_or_else(singular)?;
         let leaving = (0..4).filter(|&k| y[k] < -WARM_DUAL_TOL).min_by(|&p, &q| {
             if degenerate > 8 {
@@ -574,15 +579,17 @@ fn primal_simplex(
             }
         });
         let Some(k) = leaving else {
-            return Ok(basis);
+            // optimal: the vertex must be feasible (a nearly singular basis is not)
+            return feasible(a, b, &z, tol)
+                .then_some(basis)
+                .ok_or_else(|| LpOutcome::Failed("the optimal vertex is not feasible".into()));
         };
-        let bt = bmat.transpose().lu();
-        let z = bt
-            .solve(&Vector4::from_fn(|i, _| b[basis[i]]))
-            .ok_or_else(singular)?;
+        // the direction, scaled to unit largest component (the pivot tolerance is
+        // relative to it)
         let d = bt
             .solve(&Vector4::from_fn(|i, _| if i == k { -1.0 } else { 0.0 }))
             .ok_or_else(singular)?;
+        let d = d / d.amax();
         let scale = z.iter().fold(1.0, |s, v| s + v.abs());
         let mut enter: Option<(usize, f64)> = None;
         for (j, (aj, bj)) in a.iter().zip(b).enumerate() {
@@ -606,6 +613,14 @@ fn primal_simplex(
         basis[k] = j;
     }
     Err(LpOutcome::Failed("iteration limit".into()))
+}
+
+/// Whether z satisfies every row a_j·z ≤ b_j to `tol` × (1 + ‖z‖₁).
+fn feasible(a: &[[f64; 4]], b: &[f64], z: &Vector4<f64>, tol: f64) -> bool {
+    let scale = z.iter().fold(1.0, |s, v| s + v.abs());
+    a.iter().zip(b).all(|(aj, bj)| {
+        aj[0] * z[0] + aj[1] * z[1] + aj[2] * z[2] + aj[3] * z[3] - bj <= tol * scale
+    })
 }
 
 /// Whether `basis` indexes four distinct rows of `a` forming a nonsingular B with

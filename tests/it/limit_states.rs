@@ -918,6 +918,29 @@ fn search_budget_is_said_not_hidden() {
     assert_eq!(code, 0, "{v}");
     assert_eq!(v["search"]["method"], "faces");
     assert!(v["unique"].is_boolean() && v["lambda"].is_f64(), "{v}");
+    // at its budget, a point load (its LPs from neighbours' optima: a nearly singular
+    // basis there once gave a vertex at lambda = -1e13 and no answer)
+    let (v, code) = crate::cli::json_of(&[
+        "load",
+        "--alpha",
+        "0",
+        "--blocks",
+        "4095",
+        "--eta",
+        "0.3",
+        "--mu",
+        "0.6",
+        "--point-load-deg",
+        "40",
+    ]);
+    assert_eq!(code, 0, "{}", v["message"]);
+    assert_eq!(v["search"]["method"], "faces");
+    assert_eq!(v["unique"], true);
+    let (lambda, top) = (
+        v["lambda"].as_f64().unwrap(),
+        v["lambda_static"].as_f64().unwrap(),
+    );
+    assert!((lambda - top).abs() <= 1e-12 * top, "{lambda} vs {top}");
     // beyond its budget (4096 joints) not searched, and said so
     let (v, code) = horizontal("5000");
     assert_eq!(code, 1);

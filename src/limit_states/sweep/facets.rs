@@ -205,6 +205,32 @@ impl Rows {
         most(a[0], b[0]) + most(a[1], b[1]) + most(a[3], b[2]) + c < 0.0
     }
 
+    /// For each direction d from the vertex z with active rows `act`, the first row d
+    /// meets: the least step −(a · z + c) / (a · d) over the rows rising along d and not
+    /// active (the first such row where steps tie); `None` where no row rises. One pass
+    /// over the rows for all directions, each row's value taken once.
+    fn blockers(&self, z: &[f64; 4], act: &[usize], directions: &[[f64; 4]]) -> Vec<Option<usize>> {
+        let mut best: Vec<(f64, Option<usize>)> = vec![(f64::INFINITY, None); directions.len()];
+        for (i, ((a, c), &norm)) in self.rows.iter().zip(&self.norms).enumerate() {
+            let mut value = None;
+            for (d, best) in directions.iter().zip(best.iter_mut()) {
+                let rate = dot(a, d);
+                if rate <= PIVOT_REL * norm {
+                    continue;
+                }
+                let v = *value.get_or_insert_with(|| (!act.contains(&i)).then(|| dot(a, z) + c));
+                let Some(v) = v else {
+                    break; // an active row
+                };
+                let step = (-v / rate).max(0.0);
+                if step < best.0 {
+                    *best = (step, Some(i));
+                }
+            }
+        }
+        best.into_iter().map(|b| b.1).collect()
+    }
+
     /// The point where the four rows `basis` meet.
     fn meet(&self, basis: &[usize; 4]) -> Option<[f64; 4]> {
         let m = Matrix4::from_fn(|r, c| self.rows[basis[r]].0[c]);
@@ -285,9 +311,9 @@ impl Search<'_> {
         band: (f64, f64),
     ) -> Result<(), Undecided> {
         let z = self.vertices[self.index[act]];
-        // each edge once, with the point it ends at (rows equal to one another, as the
-        // loaded joint's twin rows, give it from several triples: each triple is checked)
-        let mut edges: Vec<([f64; 4], [f64; 4])> = Vec::new();
+        // each edge once, with every triple that gives it (rows equal to one another, as
+        // the loaded joint's twin rows, give it from several triples: each is checked)
+        let mut edges: Vec<([f64; 4], Vec<[usize; 3]>)> = Vec::new();
         for t in act.iter().copied().combinations(3) {
             let t = [t[0], t[1], t[2]];
             let Some(d) = edge_direction(self.rows, t) else {
@@ -305,18 +331,20 @@ impl Search<'_> {
                 {
                     continue;
                 }
-                let known = edges
-                    .iter()
+                match edges
+                    .iter_mut()
                     .find(|e| norm1(&[0, 1, 2, 3].map(|k| e.0[k] - d[k])) < 1e-9)
-                    .map(|e| e.1);
-                let next = match known {
-                    Some(next) => next,
-                    None => {
-                        let next = self.follow(sw, (z, act), (t, d), band)?;
-                        edges.push((d, next));
-                        next
-                    }
-                };
+                {
+                    Some(e) => e.1.push(t),
+                    None => edges.push((d, vec![t])),
+                }
+            }
+        }
+        let directions: Vec<[f64; 4]> = edges.iter().map(|e| e.0).collect();
+        let blockers = self.rows.blockers(&z, act, &directions);
+        for ((_, triples), blocker) in edges.iter().zip(blockers) {
+            let next = self.reach(sw, (z, triples[0], blocker), band)?;
+            for &t in triples {
                 self.dependent(sw, t, (z[3], next[3]), band);
             }
         }
@@ -343,33 +371,20 @@ impl Search<'_> {
         }
     }
 
-    /// Follows the edge of the rows `t` from z along d to the first row it meets: that
-    /// vertex (added).
-    fn follow(
+    /// The vertex where the edge of the rows `t` from z ends, on the row `blocker` that
+    /// stops it ([`Rows::blockers`]; `None`: no row does), added.
+    fn reach(
         &mut self,
         sw: &mut Sweeper,
-        (z, act): ([f64; 4], &[usize]),
-        (t, d): ([usize; 3], [f64; 4]),
+        (z, t, blocker): ([f64; 4], [usize; 3], Option<usize>),
         band: (f64, f64),
     ) -> Result<[f64; 4], Undecided> {
-        let rows = self.rows;
-        let mut best: Option<(f64, usize)> = None;
-        for (i, ((a, c), &norm)) in rows.rows.iter().zip(&rows.norms).enumerate() {
-            let rate = dot(a, &d);
-            if rate <= PIVOT_REL * norm || act.contains(&i) {
-                continue;
-            }
-            let step = (-(dot(a, &z) + c) / rate).max(0.0);
-            if best.is_none_or(|b| step < b.0) {
-                best = Some((step, i));
-            }
-        }
-        let Some((_, blocker)) = best else {
+        let Some(blocker) = blocker else {
             return Err(Undecided::NotCovered(
                 "an unbounded edge of the admissible (x, lambda)".into(),
             ));
         };
-        let Some(next) = rows.meet(&[t[0], t[1], t[2], blocker]) else {
+        let Some(next) = self.rows.meet(&[t[0], t[1], t[2], blocker]) else {
             return Err(Undecided::NotCovered(format!(
                 "an edge of the admissible (x, lambda) ends where its rows are dependent (lambda = {})",
                 z[3]
