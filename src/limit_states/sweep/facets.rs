@@ -71,6 +71,10 @@ pub(super) struct Rows {
     norms: Vec<f64>,
     /// The rows that are the arch's contacts (not the box, not the λ-range).
     contacts: usize,
+    /// The rows that are the sweeper's planes (the first ones).
+    planes: usize,
+    /// The planes of the box.
+    boxes: Vec<usize>,
 }
 
 fn dot(a: &[f64; 4], z: &[f64; 4]) -> f64 {
@@ -125,6 +129,10 @@ impl Rows {
         let found = axes.iter().chain(&negative_axes).all(|&a| a != usize::MAX);
         (found && contacts == sw.planes.len() - 6).then(|| Rows {
             normalised: NormalisedRows::new(&rows),
+            planes: sw.planes.len(),
+            boxes: (0..sw.planes.len())
+                .filter(|&i| sw.planes[i].contact.is_none())
+                .collect(),
             norms: rows.iter().map(|(a, _)| norm1(a)).collect(),
             rows,
             sliding,
@@ -139,12 +147,22 @@ impl Rows {
     }
 
     /// The rows active at z, ascending (each row's terms summed only where its value is
-    /// within a millionth of z's size of zero: most rows are far from it).
-    fn active(&self, z: &[f64; 4]) -> Vec<usize> {
+    /// within a millionth of z's size of zero: most rows are far from it); with `wide`
+    /// (the sweeper's largest tolerance for a contact, [`Sweeper::contact_tol`]) also the
+    /// planes [`Sweeper::active`] may find active there, ascending: the box's, and the
+    /// contacts' within twice `wide` of zero and the difference of the two evaluations (a
+    /// few roundings of the terms).
+    fn active(&self, z: &[f64; 4], wide: Option<f64>) -> (Vec<usize>, Vec<usize>) {
         let near = 1e-6 * (1.0 + norm1(z));
-        let mut out = Vec::new();
+        let size = z.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let (mut out, mut candidates) = (Vec::new(), Vec::new());
         for (i, ((a, c), &norm)) in self.rows.iter().zip(&self.norms).enumerate() {
             let v = dot(a, z) + c;
+            if wide.is_some_and(|w| {
+                i < self.planes && v.abs() <= 2.0 * w + ROUNDING_REL * (norm * size + c.abs())
+            }) {
+                candidates.push(i);
+            }
             if v.abs() > near * norm.max(c.abs()) {
                 continue;
             }
@@ -153,18 +171,12 @@ impl Rows {
                 out.push(i);
             }
         }
-        out
-    }
-
-    /// [`Sweeper::active`] at z, the rows' affine values (exact up to rounding) sparing the
-    /// planes' own evaluation where they are clearly away from their tolerance.
-    fn sweep_active(&self, sw: &Sweeper, z: &[f64; 4]) -> Vec<usize> {
-        let size = z.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-        sw.active_where(&[z[0], z[1], z[2]], z[3], |i, tol| {
-            let (_, c) = self.rows[i];
-            // the two evaluations differ by a few roundings of the terms
-            self.value(i, z).abs() <= 2.0 * tol + ROUNDING_REL * (self.norms[i] * size + c.abs())
-        })
+        if wide.is_some() {
+            candidates.extend(&self.boxes);
+            candidates.sort_unstable();
+            candidates.dedup();
+        }
+        (out, candidates)
     }
 
     /// The box of P̂'s projection onto (h, v, λ), widened by `BOX_SLACK_REL`: the least and
@@ -264,6 +276,8 @@ struct Search<'r> {
     queue: VecDeque<Vec<usize>>,
     seen_active: Vec<bool>,
     triples: HashSet<[usize; 3]>,
+    /// The sets of rows whose meeting point was added.
+    met: HashSet<Vec<usize>>,
 }
 
 impl Search<'_> {
@@ -276,7 +290,17 @@ impl Search<'_> {
         (z, defining): ([f64; 4], &[usize]),
         band: (f64, f64),
     ) -> Result<(), Undecided> {
-        let mut act = self.rows.active(&z);
+        // the same rows meet at the same point: known (its active rows, taken at the
+        // first meeting, are those of a nondegenerate vertex met from any side)
+        let mut key = defining.to_vec();
+        key.sort_unstable();
+        if !self.met.insert(key) {
+            return Ok(());
+        }
+        let in_band = z[3] > band.0 && z[3] < band.1;
+        let x = [z[0], z[1], z[2]];
+        let wide = in_band.then(|| sw.contact_tol(&x, z[3]));
+        let (mut act, candidates) = self.rows.active(&z, wide);
         act.extend_from_slice(defining);
         act.sort_unstable();
         act.dedup();
@@ -293,9 +317,8 @@ impl Search<'_> {
         act.iter().for_each(|&i| self.seen_active[i] = true);
         self.index.insert(act.clone(), self.vertices.len());
         self.vertices.push(z);
-        if z[3] > band.0 && z[3] < band.1 {
-            let x = [z[0], z[1], z[2]];
-            let planes = self.rows.sweep_active(sw, &z);
+        if in_band {
+            let planes = sw.active_among(&x, z[3], candidates);
             sw.check(x, z[3], &planes);
         }
         self.queue.push_back(act);
@@ -417,6 +440,7 @@ pub(super) fn search(sw: &mut Sweeper, lambda_min: f64, top: f64) -> Result<usiz
         queue: VecDeque::new(),
         seen_active: vec![false; rows.rows.len()],
         triples: HashSet::new(),
+        met: HashSet::new(),
     };
     // rows negative over the box of P̂'s projection need no LP (where the box's LPs fail,
     // every row gets its LP)

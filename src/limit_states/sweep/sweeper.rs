@@ -4,6 +4,7 @@
 use super::found::{CheckedPoint, LimitState};
 use super::geometry::{Plane, Vertex, BOX};
 use crate::arch::Arch;
+use crate::contact::ContactKind;
 use crate::load::LiveLoad;
 use crate::settings::Settings;
 use crate::statics::{magnitude, reaction_scale, Reactions};
@@ -104,22 +105,40 @@ impl Sweeper<'_> {
     /// Planes active at (x, η): |φ| within `event_tol` of the plane's own magnitude
     /// ([`magnitude`]: shallow arches have φ of order η).
     pub(super) fn active(&self, x: &Reactions, eta: f64) -> Vec<usize> {
-        self.active_where(x, eta, |_, _| true)
+        self.active_among(x, eta, 0..self.planes.len())
     }
 
-    /// [`Sweeper::active`] with a cheaper first test: `may(i, tol)` is false only where
-    /// plane i's |φ| surely exceeds `tol` (its tolerance), and then φ is not evaluated.
-    pub(super) fn active_where(
+    /// The thickness of the planes' magnitudes at sweep parameter `eta`.
+    fn thickness(&self, eta: f64) -> f64 {
+        match self.param {
+            Param::Thickness => eta,
+            Param::Multiplier { eta, .. } => eta,
+        }
+    }
+
+    /// The largest tolerance [`Sweeper::active`] gives a contact plane at (x, η) (the box's
+    /// planes have their own, larger one).
+    pub(super) fn contact_tol(&self, x: &Reactions, eta: f64) -> f64 {
+        let floor = self.settings.magnitude_floor;
+        let t = self.thickness(eta);
+        self.settings.event_tol
+            * [ContactKind::HingeIntrados, ContactKind::SlidePlus]
+                .map(|k| magnitude(k, t, self.mu, x, floor))
+                .into_iter()
+                .fold(0.0, f64::max)
+    }
+
+    /// [`Sweeper::active`] among the planes `candidates` (ascending): the caller knows the
+    /// others are not active.
+    pub(super) fn active_among(
         &self,
         x: &Reactions,
         eta: f64,
-        may: impl Fn(usize, f64) -> bool,
+        candidates: impl IntoIterator<Item = usize>,
     ) -> Vec<usize> {
-        let thickness = match self.param {
-            Param::Thickness => eta,
-            Param::Multiplier { eta, .. } => eta,
-        };
-        (0..self.planes.len())
+        let thickness = self.thickness(eta);
+        candidates
+            .into_iter()
             .filter(|&i| {
                 let p = &self.planes[i];
                 let size = match p.contact {
@@ -128,8 +147,7 @@ impl Sweeper<'_> {
                     }
                     None => BOX,
                 };
-                let tol = self.settings.event_tol * size;
-                may(i, tol) && p.value(x, eta).abs() <= tol
+                p.value(x, eta).abs() <= self.settings.event_tol * size
             })
             .collect()
     }
