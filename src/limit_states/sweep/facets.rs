@@ -37,6 +37,12 @@ const PIVOT_REL: f64 = 1e-10;
 /// vertex are enumerated from every three of its rows).
 const MOST_ACTIVE: usize = 16;
 
+/// The search stops (undecided) after this many vertices per row: a face of P̂ has at most
+/// about twice as many vertices as rows, and the searches measured visit about half a
+/// vertex per row, but near a long stretch of nearly active hinge rows (10⁴ voussoirs
+/// under a point load) one face held more than 55 000 and the search ran for minutes.
+const MOST_VERTICES_PER_ROW: usize = 8;
+
 /// A sliding row whose largest value over P̂ (an LP) is below −this times the size of its
 /// terms is never active; above −`TOUCH_REL` it is met at the LP's vertex; in between the
 /// search says it cannot decide.
@@ -313,6 +319,12 @@ impl Search<'_> {
         }
         if self.index.contains_key(&act) {
             return Ok(());
+        }
+        if self.vertices.len() >= MOST_VERTICES_PER_ROW * self.rows.rows.len() {
+            return Err(Undecided::NotCovered(format!(
+                "the face search met more than {} vertices ({MOST_VERTICES_PER_ROW} per row of the admissible (x, lambda)) and stopped",
+                self.vertices.len()
+            )));
         }
         act.iter().for_each(|&i| self.seen_active[i] = true);
         self.index.insert(act.clone(), self.vertices.len());
