@@ -508,7 +508,7 @@ impl NormalisedRows {
     /// them) and returns the optimal basis (four row indices); `Ok(None)`: no z satisfies
     /// the rows. From `warm`, an optimal basis of an earlier LP over these rows (a
     /// neighbouring row's; its vertex is feasible), the primal simplex
-    /// ([`primal_simplex`]); without one, or where that fails, the dual simplex from row
+    /// (`primal_simplex`); without one, or where that fails, the dual simplex from row
     /// `s` itself and three of the
     /// rows `axes` (gradients +e_0 … +e_3): the one along the largest component of row s's
     /// gradient is left out, so the basis is nonsingular, with dual values (1, 0, 0, 0).
