@@ -900,39 +900,22 @@ fn search_budget_is_said_not_hidden() {
         .unwrap()
         .contains("sweep_max_joints"));
     // beyond the load sweep's budget (512 joints) the face search: 1000 voussoirs decided
-    let horizontal = |blocks: &str| {
-        crate::cli::json_of(&[
-            "load",
-            "--alpha",
-            "0",
-            "--blocks",
-            blocks,
-            "--eta",
-            "0.3",
-            "--mu",
-            "0.8",
-            "--horizontal",
-        ])
+    // `load` of the semicircle at η = 0.3: voussoirs, μ and the load's arguments
+    let semicircle = |blocks: &str, mu: &str, load: &[&str]| {
+        let mut args = vec!["load", "--alpha", "0", "--blocks", blocks, "--eta", "0.3"];
+        args.extend(["--mu", mu]);
+        args.extend(load);
+        crate::cli::json_of(&args)
     };
+    let horizontal = |blocks: &str| semicircle(blocks, "0.8", &["--horizontal"]);
     let (v, code) = horizontal("1000");
     assert_eq!(code, 0, "{v}");
     assert_eq!(v["search"]["method"], "faces");
     assert!(v["unique"].is_boolean() && v["lambda"].is_f64(), "{v}");
     // at its budget, a point load (its LPs from neighbours' optima: a nearly singular
     // basis there once gave a vertex at lambda = -1e13 and no answer)
-    let (v, code) = crate::cli::json_of(&[
-        "load",
-        "--alpha",
-        "0",
-        "--blocks",
-        "4095",
-        "--eta",
-        "0.3",
-        "--mu",
-        "0.6",
-        "--point-load-deg",
-        "40",
-    ]);
+    let point = |blocks: &str| semicircle(blocks, "0.6", &["--point-load-deg", "40"]);
+    let (v, code) = point("4095");
     assert_eq!(code, 0, "{}", v["message"]);
     assert_eq!(v["search"]["method"], "faces");
     assert_eq!(v["unique"], true);
@@ -976,19 +959,7 @@ fn search_budget_is_said_not_hidden() {
     assert_eq!(v["unique"], true);
     // the load's sweep in λ has its own budget, twice the joints (its vertices move along
     // lines): 400 voussoirs under a point load are searched to the end
-    let (v, code) = crate::cli::json_of(&[
-        "load",
-        "--alpha",
-        "0",
-        "--blocks",
-        "400",
-        "--eta",
-        "0.3",
-        "--mu",
-        "0.6",
-        "--point-load-deg",
-        "40",
-    ]);
+    let (v, code) = point("400");
     assert_eq!(code, 0, "{v}");
     assert_eq!(v["search"]["method"], "sweep");
     assert!(v["unique"].is_boolean() && v["lambda"].is_f64(), "{v}");
