@@ -548,8 +548,8 @@ impl NormalisedRows {
 /// than 8 degenerate steps), its row leaves along d with a_B·d = −e_k (c·d = −y_k > 0)
 /// until the first row it meets (ratio test over every row, ties to the lowest index).
 /// `Err` where a basis is singular, no row bounds the step, steps run out, or the optimal
-/// vertex is not feasible to `tol` (a nearly singular basis): the caller then starts the
-/// dual simplex afresh.
+/// basis is nearly singular ([`NEAR_SINGULAR`]) or its vertex not feasible to `tol`: the
+/// caller then starts the dual simplex afresh.
 fn primal_simplex(
     a: &[[f64; 4]],
     b: &[f64],
@@ -579,7 +579,11 @@ fn primal_simplex(
             }
         });
         let Some(k) = leaving else {
-            // optimal: the vertex must be feasible (a nearly singular basis is not)
+            // optimal: the vertex must be feasible and its basis not nearly singular (its
+            // dual values then say little); the dual simplex decides such LPs afresh
+            if bmat.determinant().abs() < NEAR_SINGULAR {
+                return Err(LpOutcome::Failed("a nearly singular optimal basis".into()));
+            }
             return feasible(a, b, &z, tol)
                 .then_some(basis)
                 .ok_or_else(|| LpOutcome::Failed("the optimal vertex is not feasible".into()));
@@ -615,6 +619,11 @@ fn primal_simplex(
     Err(LpOutcome::Failed("iteration limit".into()))
 }
 
+/// The least |det B| of an optimal basis the primal simplex returns (rows of unit norm, so
+/// |det B| ≤ 1): the least measured on loads of 3 000–4 095 voussoirs was 6·10⁻⁸ (rows
+/// of neighbouring joints nearly parallel).
+const NEAR_SINGULAR: f64 = 1e-12;
+
 /// Whether z satisfies every row a_j·z ≤ b_j to `tol` × (1 + ‖z‖₁).
 fn feasible(a: &[[f64; 4]], b: &[f64], z: &Vector4<f64>, tol: f64) -> bool {
     let scale = z.iter().fold(1.0, |s, v| s + v.abs());
@@ -635,4 +644,97 @@ fn dual_feasible(a: &[[f64; 4]], basis: &[usize; 4], c: [f64; 4]) -> bool {
     bmat.lu()
         .solve(&Vector4::from_row_slice(&c))
         .is_some_and(|y| y.iter().all(|&v| v >= -WARM_DUAL_TOL))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn uniform(seed: &mut u64) -> f64 {
+        *seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (*seed >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// The value of row s of `rows` at the vertex of `basis`.
+    fn value(rows: &NormalisedRows, s: usize, basis: [usize; 4]) -> f64 {
+        let bt = Matrix4::from_fn(|r, c| rows.a[basis[r]][c]);
+        let z = bt
+            .lu()
+            .solve(&Vector4::from_fn(|i, _| rows.b[basis[i]]))
+            .expect("a nonsingular basis");
+        (0..4).map(|k| rows.a[s][k] * z[k]).sum::<f64>() - rows.b[s]
+    }
+
+    /// From each row's optimum, the primal simplex reaches the next row's optimum (the
+    /// value of the dual simplex from a cold start) and does not fail, on 300 random
+    /// polytopes in R⁴: a box and random rows, in a third of them each random row twice
+    /// (twin rows, as a loaded joint's), in another third six more rows through one vertex
+    /// (a degenerate vertex); the objectives are rows that never bind, most of them a
+    /// smooth family.
+    #[test]
+    fn primal_simplex_reaches_the_cold_optimum() {
+        let mut seed = 11u64;
+        let (mut moved, mut lps) = (0usize, 0usize);
+        for case in 0..300 {
+            let mut rows: Vec<([f64; 4], f64)> = Vec::new();
+            for sign in [1.0, -1.0] {
+                for k in 0..4 {
+                    let mut e = [0.0; 4];
+                    e[k] = sign;
+                    rows.push((e, -2.0 - uniform(&mut seed)));
+                }
+            }
+            for _ in 0..(10 + case % 40) {
+                let a = [0.0; 4].map(|_: f64| 2.0 * uniform(&mut seed) - 1.0);
+                let c = -0.05 - uniform(&mut seed);
+                rows.push((a, c));
+                if case % 3 == 1 {
+                    rows.push((a, c));
+                }
+            }
+            if case % 3 == 2 {
+                let apex = [0.0; 4].map(|_: f64| 0.01 * (2.0 * uniform(&mut seed) - 1.0));
+                for _ in 0..6 {
+                    let a = [0.0; 4].map(|_: f64| 2.0 * uniform(&mut seed) - 1.0);
+                    rows.push((a, -(0..4).map(|k| a[k] * apex[k]).sum::<f64>()));
+                }
+            }
+            let first = rows.len();
+            let t0 = 6.0 * uniform(&mut seed);
+            for i in 0..40 {
+                let t = t0 + 0.05 * i as f64;
+                let a = if i % 7 == 6 {
+                    [0.0; 4].map(|_: f64| 2.0 * uniform(&mut seed) - 1.0)
+                } else {
+                    [
+                        t.cos(),
+                        t.sin() * (0.7 * t).cos(),
+                        t.sin() * (0.7 * t).sin(),
+                        0.3 * t.sin(),
+                    ]
+                };
+                rows.push((a, -100.0));
+            }
+            let n = NormalisedRows::new(&rows);
+            let mut last: Option<[usize; 4]> = None;
+            for s in first..rows.len() {
+                let cold = n.max_row(s, [0, 1, 2, 3], None, 1e-12).unwrap().unwrap();
+                if let Some(from) = last {
+                    let primal = primal_simplex(&n.a, &n.b, n.a[s], from, 1e-12)
+                        .unwrap_or_else(|e| panic!("case {case} row {s}: {e:?}"));
+                    let (vc, vp) = (value(&n, s, cold), value(&n, s, primal));
+                    assert!(
+                        (vc - vp).abs() <= 1e-9 * (1.0 + vc.abs()),
+                        "case {case} row {s}: cold {vc} vs primal {vp}"
+                    );
+                    moved += usize::from(primal != from);
+                    lps += 1;
+                }
+                last = Some(cold);
+            }
+        }
+        assert!(moved > lps / 4, "{moved} of {lps} moved");
+    }
 }
