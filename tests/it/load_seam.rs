@@ -409,7 +409,7 @@ fn the_face_search_finds_what_the_sweep_finds() {
     let cases: usize = std::env::var("FACE_CASES")
         .ok()
         .and_then(|v| v.parse().ok())
-        .unwrap_or(1000);
+        .unwrap_or(4000);
     let (mut compared, mut states, mut failures) = (0, 0, Vec::new());
     let mut run = |name: String, r: Option<Result<usize, String>>| match r {
         Some(Ok(n)) => {
