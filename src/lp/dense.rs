@@ -667,8 +667,9 @@ mod tests {
         (0..4).map(|k| rows.a[s][k] * z[k]).sum::<f64>() - rows.b[s]
     }
 
-    /// From each row's optimum, the primal simplex reaches the next row's optimum (the
-    /// value of the dual simplex from a cold start) and does not fail, on 300 random
+    /// From each row's optimum, the primal simplex (and `max_row` warm-started there)
+    /// reaches the next row's optimum (the value of the dual simplex from a cold start)
+    /// and the primal simplex does not fail, on 300 random
     /// polytopes in R⁴: a box and random rows, in a third of them each random row twice
     /// (twin rows, as a loaded joint's), in another third six more rows through one vertex
     /// (a degenerate vertex); the objectives are rows that never bind, most of them a
@@ -724,11 +725,21 @@ mod tests {
                 if let Some(from) = last {
                     let primal = primal_simplex(&n.a, &n.b, n.a[s], from, 1e-12)
                         .unwrap_or_else(|e| panic!("case {case} row {s}: {e:?}"));
-                    let (vc, vp) = (value(&n, s, cold), value(&n, s, primal));
-                    assert!(
-                        (vc - vp).abs() <= 1e-9 * (1.0 + vc.abs()),
-                        "case {case} row {s}: cold {vc} vs primal {vp}"
-                    );
+                    // and `max_row` from that warm basis (the path the face search takes)
+                    let warm = n
+                        .max_row(s, [0, 1, 2, 3], Some(from), 1e-12)
+                        .unwrap()
+                        .unwrap();
+                    let vc = value(&n, s, cold);
+                    for (path, v) in [
+                        ("primal", value(&n, s, primal)),
+                        ("warm", value(&n, s, warm)),
+                    ] {
+                        assert!(
+                            (vc - v).abs() <= 1e-9 * (1.0 + vc.abs()),
+                            "case {case} row {s}: cold {vc} vs {path} {v}"
+                        );
+                    }
                     moved += usize::from(primal != from);
                     lps += 1;
                 }
