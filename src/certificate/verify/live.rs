@@ -504,6 +504,7 @@ mod tests {
     fn model_of(arch: &Arch) -> Model {
         Model {
             beta_r: arch.beta_right(),
+            springing: super::super::statics::springing_trig(arch.beta_right()),
             beta_l: arch.beta_left(),
             centroid: arch.weight() == WeightModel::Centroid,
             joints: None,

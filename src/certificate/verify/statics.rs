@@ -14,11 +14,19 @@ pub const LIMIT_STATE_TOL: f64 = 1e-9;
 /// The geometry and weight of the certificate's arch, for interval evaluation.
 pub(super) struct Model {
     pub(super) beta_r: f64,
+    /// sin β_R and cos β_R in intervals ([`springing_trig`]: every N, T, M takes them).
+    pub(super) springing: (I, I),
     pub(super) beta_l: f64,
     pub(super) centroid: bool,
     pub(super) joints: Option<Vec<f64>>,
     /// The fill above the extrados, a dead load beside the weight.
     pub(super) fill: Option<FillModel>,
+}
+
+/// sin β_R and cos β_R in intervals, for [`Model::springing`].
+pub(super) fn springing_trig(beta_r: f64) -> (I, I) {
+    let br = I::point(beta_r);
+    (br.sin(), br.cos())
 }
 
 /// Interval values of N, T, M and their first two β-derivatives at β ∈ `b`.
@@ -93,8 +101,7 @@ impl Model {
     pub(super) fn ntm_weightless(&self, b: I, x: [f64; 3]) -> Ntm {
         let (h, v, w) = (I::point(x[0]), I::point(x[1]), I::point(x[2]));
         let (s, c) = (b.sin(), b.cos());
-        let br = I::point(self.beta_r);
-        let (sr, cr) = (br.sin(), br.cos());
+        let (sr, cr) = self.springing;
         let n0 = h * s + v * c;
         let t0 = h * c - v * s;
         let m0 = -(h * (s - sr)) + v * (cr - c) + w;
@@ -109,7 +116,7 @@ impl Model {
         let (h, v, w) = (I::point(x[0]), I::point(x[1]), I::point(x[2]));
         let (s, c) = (b.sin(), b.cos());
         let br = I::point(self.beta_r);
-        let (sr, cr) = (br.sin(), br.cos());
+        let (sr, cr) = self.springing;
         let d = b - br;
         let rho = self.rho(eta);
         let one = I::point(1.0);
@@ -218,7 +225,7 @@ fn ring_rows(model: &Model, beta: f64, eta: I) -> [([I; 3], I); 3] {
     let b = I::point(beta);
     let (s, c) = (b.sin(), b.cos());
     let br = I::point(model.beta_r);
-    let (sr, cr) = (br.sin(), br.cos());
+    let (sr, cr) = model.springing;
     let d = b - br;
     let rho = model.rho_over(eta);
     let z = I::point(0.0);
