@@ -133,6 +133,7 @@ pub(super) fn model_of(cert: &Certificate) -> Result<Model, Rejection> {
     Ok(Model {
         beta_r: a.beta_right,
         springing: super::statics::springing_trig(a.beta_right),
+        joint_trig: super::statics::joint_trig(a.joint_angles.as_deref()),
         beta_l: a.beta_left,
         centroid: a.weight == WeightModel::Centroid,
         joints: a.joint_angles.clone(),

@@ -253,7 +253,7 @@ impl Live {
     /// sections with the free body `at`; `None` where they are zero (a point load not on
     /// it).
     pub(super) fn ntm(&self, model: &Model, b: I, at: At) -> Option<Ntm> {
-        let (s, c) = (b.sin(), b.cos());
+        let (s, c) = model.trig(b);
         let two = I::point(2.0);
         match &self.kind {
             LiveKind::Horizontal { k } => {
@@ -264,7 +264,7 @@ impl Live {
                 let n = [-(d * s), -(s + d * c), -(two * c - d * s)];
                 let t = [-(d * c), -(c - d * s), two * s + d * c];
                 let m = [
-                    -(rho * (br.cos() - c) - d * s),
+                    -(rho * (model.springing.1 - c) - d * s),
                     -((rho - one) * s - d * c),
                     -((rho - two) * c + d * s),
                 ];
@@ -505,6 +505,7 @@ mod tests {
         Model {
             beta_r: arch.beta_right(),
             springing: super::super::statics::springing_trig(arch.beta_right()),
+            joint_trig: Vec::new(),
             beta_l: arch.beta_left(),
             centroid: arch.weight() == WeightModel::Centroid,
             joints: None,

@@ -16,6 +16,9 @@ pub(super) struct Model {
     pub(super) beta_r: f64,
     /// sin β_R and cos β_R in intervals ([`springing_trig`]: every N, T, M takes them).
     pub(super) springing: (I, I),
+    /// sin β and cos β in intervals at each of `joints` (empty without joints): the
+    /// checks of a state visit every joint, and each of many states ([`joint_trig`]).
+    pub(super) joint_trig: Vec<(I, I)>,
     pub(super) beta_l: f64,
     pub(super) centroid: bool,
     pub(super) joints: Option<Vec<f64>>,
@@ -27,6 +30,15 @@ pub(super) struct Model {
 pub(super) fn springing_trig(beta_r: f64) -> (I, I) {
     let br = I::point(beta_r);
     (br.sin(), br.cos())
+}
+
+/// sin β and cos β in intervals at each joint angle, for [`Model::joint_trig`].
+pub(super) fn joint_trig(joints: Option<&[f64]>) -> Vec<(I, I)> {
+    joints.map_or_else(Vec::new, |j| {
+        j.iter()
+            .map(|&b| (I::point(b).sin(), I::point(b).cos()))
+            .collect()
+    })
 }
 
 /// Interval values of N, T, M and their first two β-derivatives at β ∈ `b`.
@@ -95,12 +107,26 @@ impl Model {
         }
     }
 
+    /// sin b and cos b in intervals: from [`Model::joint_trig`] where b is a joint angle
+    /// (a point), else evaluated (the same values either way).
+    pub(super) fn trig(&self, b: I) -> (I, I) {
+        let cached = (b.lo == b.hi)
+            .then_some(self.joints.as_deref())
+            .flatten()
+            .and_then(|j| j.binary_search_by(|v| v.total_cmp(&b.lo)).ok())
+            .and_then(|k| self.joint_trig.get(k));
+        match cached {
+            Some(&t) => t,
+            None => (b.sin(), b.cos()),
+        }
+    }
+
     /// N, T, M of the reactions x alone (no weight): the linear part of the statics,
     /// N = h sin β + v cos β, T = h cos β − v sin β, M = −h (sin β − sin β_R) +
     /// v (cos β_R − cos β) + w, with dN = T, dT = −N, dM = −T.
     pub(super) fn ntm_weightless(&self, b: I, x: [f64; 3]) -> Ntm {
         let (h, v, w) = (I::point(x[0]), I::point(x[1]), I::point(x[2]));
-        let (s, c) = (b.sin(), b.cos());
+        let (s, c) = self.trig(b);
         let (sr, cr) = self.springing;
         let n0 = h * s + v * c;
         let t0 = h * c - v * s;
@@ -114,7 +140,7 @@ impl Model {
 
     pub(super) fn ntm(&self, b: I, x: [f64; 3], eta: f64) -> Ntm {
         let (h, v, w) = (I::point(x[0]), I::point(x[1]), I::point(x[2]));
-        let (s, c) = (b.sin(), b.cos());
+        let (s, c) = self.trig(b);
         let br = I::point(self.beta_r);
         let (sr, cr) = self.springing;
         let d = b - br;
@@ -223,7 +249,7 @@ fn add_constants(rows: [([I; 3], I); 3], f: &Ntm) -> [([I; 3], I); 3] {
 /// N, T and M at β of the ring's weight and the reactions alone.
 fn ring_rows(model: &Model, beta: f64, eta: I) -> [([I; 3], I); 3] {
     let b = I::point(beta);
-    let (s, c) = (b.sin(), b.cos());
+    let (s, c) = model.trig(b);
     let br = I::point(model.beta_r);
     let (sr, cr) = model.springing;
     let d = b - br;
