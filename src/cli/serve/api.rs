@@ -76,8 +76,8 @@ pub struct Limit {
 /// - `load` at N = 1000 (α = 0, η = 0.3, μ = 0.6; above 511 voussoirs the face search,
 ///   whose work grows like N²): 0.13–0.15 s under a horizontal or a point load since
 ///   2026-12-08, 0.6–0.9 s before (N = 2000: 0.45 s; N = 4095: 1.8–1.9 s); `plot load`
-///   likewise (0.12 s); `certify` with a load ("certify/load") 1.2–1.3 s, most of it the
-///   proofs of the points the search checked (N = 2000: 4.3–4.8 s). Before the face
+///   likewise (0.12 s); `certify` with a load ("certify/load") 0.86–0.91 s, most of it
+///   the proofs of the points the search checked (N = 2000: 2.9–3.4 s). Before the face
 ///   search, N = 5000 took 1.0–1.5 s with the search not done.
 /// - `modes` (centreline weight) at N = 200: 0.4–1.1 s over α ∈ {0, ±0.5, 1, −1.2}
 ///   (N = 400: up to 3.6 s; N = 1000: up to 16 s); the continuous arch 0.05–0.08 s.
