@@ -66,9 +66,9 @@ struct Rows {
 /// The rows of the joint at `beta` (formulation §3, centreline weight).
 fn rows_at(model: &Model, beta: f64) -> Rows {
     let b = I::point(beta);
-    let (s, c) = (b.sin(), b.cos());
+    let (s, c) = model.trig(b);
     let br = I::point(model.beta_r);
-    let (sr, cr) = (br.sin(), br.cos());
+    let (sr, cr) = model.springing;
     let d = b - br;
     Rows {
         n: [s, c, -(d * c)],

@@ -75,12 +75,9 @@ pub(super) struct Rows {
     normalised: NormalisedRows,
     /// Each row's ‖a‖₁.
     norms: Vec<f64>,
-    /// The rows that are the arch's contacts (not the box, not the λ-range).
+    /// The rows that are the arch's contacts: the first ones, then the box's six planes,
+    /// then the λ-range's two rows.
     contacts: usize,
-    /// The rows that are the sweeper's planes (the first ones).
-    planes: usize,
-    /// The planes of the box.
-    boxes: Vec<usize>,
 }
 
 fn dot(a: &[f64; 4], z: &[f64; 4]) -> f64 {
@@ -133,12 +130,9 @@ impl Rows {
         axes[3] = rows.len() - 1;
         negative_axes[3] = rows.len() - 2;
         let found = axes.iter().chain(&negative_axes).all(|&a| a != usize::MAX);
-        (found && contacts == sw.planes.len() - 6).then(|| Rows {
+        let contacts_first = sw.planes[..contacts].iter().all(|p| p.contact.is_some());
+        (found && contacts_first && contacts == sw.planes.len() - 6).then(|| Rows {
             normalised: NormalisedRows::new(&rows),
-            planes: sw.planes.len(),
-            boxes: (0..sw.planes.len())
-                .filter(|&i| sw.planes[i].contact.is_none())
-                .collect(),
             norms: rows.iter().map(|(a, _)| norm1(a)).collect(),
             rows,
             sliding,
@@ -165,7 +159,7 @@ impl Rows {
         for (i, ((a, c), &norm)) in self.rows.iter().zip(&self.norms).enumerate() {
             let v = dot(a, z) + c;
             if wide.is_some_and(|w| {
-                i < self.planes && v.abs() <= 2.0 * w + ROUNDING_REL * (norm * size + c.abs())
+                i < self.contacts && v.abs() <= 2.0 * w + ROUNDING_REL * (norm * size + c.abs())
             }) {
                 candidates.push(i);
             }
@@ -178,9 +172,8 @@ impl Rows {
             }
         }
         if wide.is_some() {
-            candidates.extend(&self.boxes);
-            candidates.sort_unstable();
-            candidates.dedup();
+            // the box's planes, after the contacts (the λ-range's rows are no planes)
+            candidates.extend(self.contacts..self.rows.len() - 2);
         }
         (out, candidates)
     }
