@@ -119,10 +119,7 @@ fn vehicle_certificates_hold_and_agree_with_the_survey() {
 fn random_bridge_certificates_hold() {
     let mut rng = Rng(0x5eed_b41d);
     // BRIDGE_CERT_CASES=N for a longer campaign
-    let cases: usize = std::env::var("BRIDGE_CERT_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(16);
+    let cases = crate::cases_from_env("BRIDGE_CERT_CASES", 16);
     for case in 0..cases {
         let alpha = -0.2 + 0.9 * rng.next();
         let weight = match rng.next() < 0.5 {

@@ -783,10 +783,7 @@ fn draw(rng: &mut Rng, settings: &Settings) -> Case {
 /// reference to 1e-10 relative. `CONT_CASES=N` for more than the default 20.
 #[test]
 fn continuous_arches_match_the_exchange_reference() {
-    let count: usize = std::env::var("CONT_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(20);
+    let count = crate::cases_from_env("CONT_CASES", 20);
     let started = Instant::now();
     let settings = Settings::default();
     let seed: u64 = std::env::var("CONT_SEED")

@@ -152,10 +152,7 @@ fn random_case(rng: &mut Rng) -> Case {
 /// `FILL_ETA_CASES=N` runs more.
 #[test]
 fn least_thickness_with_fill_matches_the_reference() {
-    let count: usize = std::env::var("FILL_ETA_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(30);
+    let count = crate::cases_from_env("FILL_ETA_CASES", 30);
     let mut rng = Rng(0xf111_e7a5_0000_0023);
     let settings = Settings::default();
     let (mut limits, mut none, mut gaps, mut not_interval) = (0, 0, 0, 0);
@@ -505,10 +502,7 @@ fn certificates_with_fill_prove_every_thinner_ring() {
     use arch_enum::certificate::{certify, verify, Claim};
     let settings = Settings::default();
     let mut rng = Rng(0xce27_f111_0000_0031);
-    let cases: usize = std::env::var("FILL_CERT_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(6);
+    let cases = crate::cases_from_env("FILL_CERT_CASES", 6);
     let mut certified = 0;
     for case in 0..cases {
         let c = random_case(&mut rng);

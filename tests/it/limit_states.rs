@@ -93,10 +93,7 @@ fn sweep_matches_brute_force_on_random_discrete_arches() {
     let mut failures = Vec::new();
     let (mut cases, mut nonunique) = (0, 0);
     // SWEEP_CASES=N runs more (the CI runs 40)
-    let count: usize = std::env::var("SWEEP_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(40);
+    let count = crate::cases_from_env("SWEEP_CASES", 40);
     for case in 0..count {
         let n = 3 + (rng.next() * 5.0) as usize;
         let br = -1.0 + 1.6 * rng.next();
@@ -509,10 +506,7 @@ fn infimum_is_not_a_limit_state() {
 #[test]
 fn few_voussoir_arches_match_brute_force() {
     let mut rng = Rng(0x2233_0001);
-    let count: usize = std::env::var("SMALL_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(40);
+    let count = crate::cases_from_env("SMALL_CASES", 40);
     let mut failures = Vec::new();
     let (mut zero, mut zero_above) = (0, 0);
     for case in 0..count {
@@ -1064,10 +1058,7 @@ fn json_eta_is_eta_static_when_the_search_is_incomplete() {
 #[test]
 fn filled_arches_match_brute_force() {
     let mut rng = Rng(0xf111_5ee9_0000_0023);
-    let count: usize = std::env::var("FILL_SWEEP_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(16);
+    let count = crate::cases_from_env("FILL_SWEEP_CASES", 16);
     let mut failures = Vec::new();
     let (mut nonunique, mut compared, mut declined) = (0, 0, 0);
     for case in 0..count {

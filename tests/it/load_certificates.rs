@@ -306,10 +306,7 @@ fn no_equilibrium_and_unbounded_multipliers_are_certified() {
 /// points without a mechanism are proved. `LOADCERT_CASES=N` runs more.
 #[test]
 fn random_discrete_arches_certify_and_verify() {
-    let count: usize = std::env::var("LOADCERT_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(20);
+    let count = crate::cases_from_env("LOADCERT_CASES", 20);
     let mut rng = Rng(0xce47_1f1c_a7e5_0011);
     let settings = Settings::default();
     let (mut bracketed, mut other, mut points, mut proved, mut wide) = (0, 0, 0, 0, 0);
@@ -782,10 +779,7 @@ fn cli_bad_input_names_the_flag() {
 /// more (60: all 60 certified, 3 brackets at a gap of 1e-11 or 1e-10).
 #[test]
 fn random_continuous_arches_certify_and_verify() {
-    let count: usize = std::env::var("LOADCERT_CONT_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(8);
+    let count = crate::cases_from_env("LOADCERT_CONT_CASES", 8);
     let mut rng = Rng(0x5eed_c0de_0000_0003);
     let settings = Settings::default();
     let mut failures = Vec::new();

@@ -1070,10 +1070,7 @@ fn continuous_lambda_static_matches_the_reference() {
     );
     let semicircle_compared = compared;
     // random continuous arches
-    let count: usize = std::env::var("LOADCONT_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(20);
+    let count = crate::cases_from_env("LOADCONT_CASES", 20);
     let seed: u64 = std::env::var("LOADCONT_SEED")
         .ok()
         .and_then(|v| v.parse().ok())

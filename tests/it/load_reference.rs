@@ -629,10 +629,7 @@ pub(crate) fn random_loaded(rng: &mut Rng) -> RandomLoaded {
 /// thickness. `LOAD_CASES=N` runs more (the CI runs 40).
 #[test]
 fn loaded_arches_match_the_brute_force() {
-    let count: usize = std::env::var("LOAD_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(40);
+    let count = crate::cases_from_env("LOAD_CASES", 40);
     let mut rng = Rng(0x10ad_b47e_0000_0001);
     let settings = Settings::default();
     let (mut compared, mut reduced, mut nonunique, mut skipped) = (0, 0, 0, 0);
@@ -693,10 +690,7 @@ fn load_curve_corners_match_the_brute_force() {
     use arch_enum::load::Side;
     use arch_enum::multiplier::curve::branch_key;
     use arch_enum::multiplier::trace;
-    let count: usize = std::env::var("CORNER_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(6);
+    let count = crate::cases_from_env("CORNER_CASES", 6);
     let mut rng = Rng(0xc0_4e45_0000_0002);
     let settings = Settings::default();
     let (mut exact, mut bracketed, mut jumps, mut far, mut clustered, mut chatter) =
@@ -1050,10 +1044,7 @@ fn the_state_at_lambda_static_is_the_faces() {
 fn filled_arches_under_pressure_match_the_brute_force() {
     use arch_enum::bridge::Fill;
     use arch_enum::pressure::{Patch, PointLoad, Pressure};
-    let count: usize = std::env::var("FILL_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(30);
+    let count = crate::cases_from_env("FILL_CASES", 30);
     let mut rng = Rng(0xf111_0000_0000_0023);
     let settings = Settings::default();
     let (mut compared, mut skipped, mut never, mut pressures, mut several) = (0, 0, 0, 0, 0);

@@ -406,10 +406,7 @@ fn compare_faces(
 #[test]
 fn the_face_search_finds_what_the_sweep_finds() {
     let mut rng = Rng(0xface_0000_0001);
-    let cases: usize = std::env::var("FACE_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(4000);
+    let cases = crate::cases_from_env("FACE_CASES", 4000);
     let (mut compared, mut states, mut failures) = (0, 0, Vec::new());
     let mut run = |name: String, r: Option<Result<usize, String>>| match r {
         Some(Ok(n)) => {

@@ -35,3 +35,12 @@ mod ridge;
 mod search_reference;
 mod serve;
 mod warm_start;
+
+/// How many random cases a campaign runs: the environment variable `name` where it holds a
+/// count (`FACE_CASES=20000` and the like, for longer runs by hand), else `default`.
+fn cases_from_env(name: &str, default: usize) -> usize {
+    std::env::var(name)
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(default)
+}
